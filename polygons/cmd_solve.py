@@ -1,0 +1,28 @@
+"""``polygons solve CASE.toml``: the numbers, the construction and the conditioning."""
+from __future__ import annotations
+
+import sys
+
+from .evaluate import solve
+from .report import dumps, table
+from .scene import load_scene
+
+
+def register(sub) -> None:
+    p = sub.add_parser("solve", help="solve a scene: velocities, accelerations, ω, α, steps",
+                       description="Solve a scene file and print the results table "
+                                   "(or JSON with --json).")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
+    p.add_argument("--points", help="comma-separated labels: plan only what these need")
+    p.add_argument("--no-steps", action="store_true", help="leave the construction out of "
+                                                          "the table")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    scene = load_scene(args.scene)
+    targets = [t.strip() for t in args.points.split(",")] if args.points else None
+    sol = solve(scene, targets)
+    sys.stdout.write(dumps(sol) if args.json else table(sol, steps=not args.no_steps))
+    return 0

@@ -1,0 +1,85 @@
+"""Construction lines and their intersection: the only module that imports shapely.
+
+A drawing-board construction ends every dyad by intersecting two lines of unknown length (the
+c line with the slider line, the two tangential lines of a four-bar, the Coriolis offset line
+with the lever's tangential line).  :func:`intersect` does that with shapely geometry and
+reports the angle between the two lines, which is the conditioning of the result: at 90° a
+pencil error moves the intersection by the same amount, at 1° by 57 times as much, at 0° (a
+toggle or change point) there is no intersection and we raise :class:`ParallelLinesError`.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import shapely
+
+from .errors import ParallelLinesError
+
+#: below this angle two construction lines are treated as parallel (the position is a toggle)
+PARALLEL_DEG = 1e-7
+#: below this angle the construction (and the number) is flagged as ill-conditioned
+WARN_DEG = 1.0
+
+
+@dataclass(frozen=True)
+class Line:
+    """An infinite construction line: through ``point`` along unit ``direction``."""
+
+    point: tuple[float, float]
+    direction: tuple[float, float]
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Intersection:
+    point: tuple[float, float]
+    angle_deg: float  # acute angle between the two lines, 0..90
+
+
+def line(point, direction, name: str = "") -> Line:
+    """A :class:`Line` through ``point`` along ``direction`` (normalised here)."""
+    d = np.asarray(direction, dtype=float)
+    n = math.hypot(d[0], d[1])
+    if n == 0.0 or not math.isfinite(n):
+        raise ParallelLinesError(f"construction line {name or '?'} has no direction "
+                                 f"(its defining vector is zero)")
+    return Line((float(point[0]), float(point[1])), (float(d[0] / n), float(d[1] / n)), name)
+
+
+def angle_between(l1: Line, l2: Line) -> float:
+    """Acute angle in degrees between two lines (0 = parallel, 90 = perpendicular)."""
+    cross = abs(l1.direction[0] * l2.direction[1] - l1.direction[1] * l2.direction[0])
+    dot = abs(l1.direction[0] * l2.direction[0] + l1.direction[1] * l2.direction[1])
+    return math.degrees(math.atan2(cross, dot))
+
+
+def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
+    """Intersection point of two construction lines, as shapely computes it.
+
+    Each line is drawn as a segment long enough to contain the intersection: with anchors a
+    distance ``d`` apart and an angle ``θ`` between the lines the intersection lies within
+    ``d / sin θ`` of either anchor, so segments of half-length ``2 d / sin θ`` (plus the scale
+    of the anchors) always cross.  Raises :class:`ParallelLinesError` below ``PARALLEL_DEG``.
+    """
+    angle = angle_between(l1, l2)
+    if angle < PARALLEL_DEG:
+        raise ParallelLinesError(
+            f"the {l1.name or 'first line'} and the {l2.name or 'second line'} are parallel "
+            f"(angle {angle:.2g}°): the mechanism is at a toggle or change point and this "
+            f"point of the polygon is undefined", step=step)
+    p = np.array(l1.point)
+    q = np.array(l2.point)
+    u = np.array(l1.direction)
+    v = np.array(l2.direction)
+    scale = max(float(np.hypot(*p)), float(np.hypot(*q)), float(np.hypot(*(p - q))), 1e-300)
+    half = 2.0 * scale / math.sin(math.radians(angle)) + scale
+    s1 = shapely.LineString([p - half * u, p + half * u])
+    s2 = shapely.LineString([q - half * v, q + half * v])
+    hit = shapely.intersection(s1, s2)
+    if hit.is_empty or hit.geom_type != "Point":
+        raise ParallelLinesError(
+            f"the {l1.name or 'first line'} and the {l2.name or 'second line'} do not meet "
+            f"in a single point (got {hit.geom_type})", step=step)
+    return Intersection((float(hit.x), float(hit.y)), angle)

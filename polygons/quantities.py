@@ -1,0 +1,117 @@
+"""Named result quantities, in textbook notation, read off a :class:`Solution`.
+
+    v(C)        |v_C|, the length oc of the velocity polygon        (m/s)
+    v(C,B)      |(v_C)_B| = |bc|                                    (m/s)
+    a(C), a(C,B)  the same on the acceleration polygon               (m/s²)
+    an(C,B)     centripetal part of (a_C)_B, ω²·BC                  (m/s²)
+    at(C,B)     tangential part of (a_C)_B, |α|·BC                  (m/s²)
+    omega(BC), alpha(BC)   signed, CCW positive                     (rad/s, rad/s²)
+    vs(P), as(P)  sliding velocity / acceleration of P along its guide or slot, signed
+    cor(P)      magnitude of the Coriolis acceleration of pin P     (m/s²)
+    dist(B,A)   distance between two points at this instant         (m)
+    x(C), y(C)  coordinates                                         (m)
+    dir_v(C), dir_a(C)   direction of v_C / a_C, degrees CCW from +x in [0, 360)
+
+Used by the answers table, the tests and ``polygons check``.
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from .errors import SceneError, UnknownLabelError, suggest
+from .evaluate import Solution, link_ends
+
+_CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?\)\s*$")
+
+FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x", "y",
+             "dir_v", "dir_a")
+
+
+def dimension_of_quantity(expr: str) -> str:
+    fn = _parse(expr)[0]
+    return {"v": "velocity", "a": "acceleration", "an": "acceleration", "at": "acceleration",
+            "omega": "angular_velocity", "alpha": "angular_acceleration", "cor": "acceleration",
+            "dist": "length", "x": "length", "y": "length", "dir_v": "angle",
+            "dir_a": "angle"}.get(fn, "velocity" if fn == "vs" else "acceleration")
+
+
+def _parse(expr: str):
+    m = _CALL.match(expr)
+    if not m or m.group(1) not in FUNCTIONS:
+        raise SceneError(f"cannot read quantity {expr!r}: write e.g. 'v(C)', 'v(C,B)', "
+                         f"'omega(BC)', 'alpha(CD)', 'an(C,B)', 'at(C,B)', 'vs(C)', 'cor(A)' "
+                         f"(functions: {', '.join(FUNCTIONS)})")
+    return m.group(1), m.group(2), m.group(3)
+
+
+def quantity(sol: Solution, expr: str) -> float:
+    """The SI value of ``expr`` (see module docstring) in solution ``sol``."""
+    fn, p, q = _parse(expr)
+    scene = sol.scene
+
+    def point(label):
+        if label not in sol.points:
+            raise UnknownLabelError(f"unknown point {label!r} in {expr!r}: "
+                                    f"{suggest(label, sol.points)}", file=scene.file)
+        return sol.points[label]
+
+    def vec(label, kind):
+        value = getattr(point(label), kind)
+        if value is None:
+            raise SceneError(f"{expr!r} needs the {kind} polygon, which this scene does not "
+                             f"solve (solve = {list(scene.solve)})", file=scene.file)
+        return np.array(value)
+
+    def link(name):
+        if name not in sol.links:
+            raise UnknownLabelError(f"unknown link {name!r} in {expr!r}: "
+                                    f"{suggest(name, sol.links)}", file=scene.file)
+        return sol.links[name]
+
+    def link_of(x, y):
+        for name, lr in sol.links.items():
+            ends = set(link_ends(scene, name))
+            body = {bp.label for bp in scene.points.values() if bp.link == name}
+            slot_far = {s.far for s in scene.slots.values() if s.lever == name and s.far}
+            if {x, y} <= ends | body | slot_far:
+                return lr
+        raise SceneError(f"{x} and {y} are not on one link, so {expr!r} has no "
+                         f"centripetal/tangential split", file=scene.file)
+
+    if fn in ("v", "a"):
+        kind = "velocity" if fn == "v" else "acceleration"
+        value = vec(p, kind) - (vec(q, kind) if q else 0.0)
+        return float(np.hypot(*value))
+    if fn in ("an", "at"):
+        lr = link_of(p, q)
+        r = float(np.hypot(*(np.array(point(p).position) - np.array(point(q).position))))
+        if fn == "an":
+            return lr.omega * lr.omega * r
+        return abs(lr.alpha) * r
+    if fn == "omega":
+        return link(p).omega
+    if fn == "alpha":
+        return link(p).alpha
+    if fn in ("vs", "as", "cor"):
+        if p not in sol.slides:
+            raise UnknownLabelError(f"{p!r} in {expr!r} is not a slider or a pin in a slot: "
+                                    f"{suggest(p, sol.slides)}", file=scene.file)
+        sr = sol.slides[p]
+        if fn == "vs":
+            return sr.velocity
+        if fn == "as":
+            return sr.acceleration
+        if sr.coriolis is None:
+            raise SceneError(f"{p} slides on a fixed guide: it has no Coriolis component",
+                             file=scene.file)
+        return float(np.hypot(*sr.coriolis))
+    if fn == "dist":
+        return float(np.hypot(*(np.array(point(p).position) - np.array(point(q).position))))
+    if fn in ("x", "y"):
+        return point(p).position[0 if fn == "x" else 1]
+    kind = "velocity" if fn == "dir_v" else "acceleration"
+    v = vec(p, kind)
+    return math.radians(math.degrees(math.atan2(v[1], v[0])) % 360.0)

@@ -1,0 +1,218 @@
+"""Results as a readable table (units stated, senses named) and as a JSON object."""
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+from . import geometry
+from .evaluate import Solution
+from .quantities import quantity
+from .scene import Answer
+from .units import UNITS
+
+
+@dataclass(frozen=True)
+class AnswerCheck:
+    answer: Answer
+    ours: float             # in answer.unit, signed
+    compared: float         # |ours| for mode abs
+    diff_pct: float | None  # vs tutorial
+    within: bool | None     # tutorial within its drawing tolerance
+    exact_rel: float | None # |ours - exact| / |exact|
+
+
+def to_unit(value: float, unit: str) -> float:
+    if unit in ("-", "1"):
+        return value
+    return value / UNITS[unit][1]
+
+
+def check_answers(sol: Solution) -> list[AnswerCheck]:
+    out = []
+    for ans in sol.scene.answers:
+        ours = to_unit(quantity(sol, ans.quantity), ans.unit)
+        compared = abs(ours) if ans.mode == "abs" else ours
+        diff = within = rel = None
+        if ans.tutorial is not None:
+            base = abs(ans.tutorial) if ans.tutorial != 0 else 1.0
+            diff = (ans.tutorial - compared) / max(abs(compared), 1e-300) * 100.0 \
+                if compared != 0 else (ans.tutorial - compared) * 100.0
+            within = abs(ans.tutorial - compared) <= ans.tolerance * max(base, abs(compared)) \
+                if ans.tutorial != 0 else abs(compared) <= 1e-9 * max(1.0, abs(ans.tutorial))
+        if ans.exact is not None:
+            exact = ans.exact
+            rel = abs(compared - exact) / abs(exact) if exact != 0 else abs(compared)
+        out.append(AnswerCheck(ans, ours, compared, diff, within, rel))
+    return out
+
+
+def sense(value: float | None) -> str:
+    if value is None or value == 0.0:
+        return ""
+    return "CCW" if value > 0 else "CW"
+
+
+def _deg(v) -> float:
+    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+
+
+def _mag(v) -> float:
+    return float(np.hypot(v[0], v[1]))
+
+
+def to_json(sol: Solution) -> dict:
+    scene = sol.scene
+    points = {}
+    for label, pr in sol.points.items():
+        entry = {"position": list(pr.position)}
+        if pr.velocity is not None:
+            entry |= {"velocity": list(pr.velocity), "speed": _mag(pr.velocity),
+                      "velocity_direction_deg": _deg(pr.velocity) if _mag(pr.velocity) else None}
+        if pr.acceleration is not None:
+            entry |= {"acceleration": list(pr.acceleration),
+                      "acceleration_magnitude": _mag(pr.acceleration),
+                      "acceleration_direction_deg":
+                          _deg(pr.acceleration) if _mag(pr.acceleration) else None}
+        points[label] = entry
+    links = {}
+    for name, lr in sol.links.items():
+        pa, pb = sol.points[lr.a], sol.points[lr.b]
+        entry = {"ends": [lr.a, lr.b], "length": lr.length, "omega": lr.omega,
+                 "omega_sense": sense(lr.omega), "alpha": lr.alpha,
+                 "alpha_sense": sense(lr.alpha)}
+        if pa.velocity is not None:
+            rel = np.subtract(pb.velocity, pa.velocity)
+            entry[f"(v_{lr.b})_{lr.a}"] = list(map(float, rel))
+        if pa.acceleration is not None:
+            rel = np.subtract(pb.acceleration, pa.acceleration)
+            r = np.subtract(pb.position, pa.position)
+            u = r / np.hypot(*r)
+            n = float(rel @ u) * u
+            entry[f"(a_{lr.b})_{lr.a}"] = list(map(float, rel))
+            entry[f"(a_{lr.b})_{lr.a}^n"] = list(map(float, n))
+            entry[f"(a_{lr.b})_{lr.a}^t"] = list(map(float, rel - n))
+        links[name] = entry
+    slides = {}
+    for label, sr in sol.slides.items():
+        slides[label] = {"along": sr.along, "direction": list(sr.direction),
+                         "velocity": sr.velocity, "acceleration": sr.acceleration,
+                         "coriolis": list(sr.coriolis) if sr.coriolis else None}
+    steps = []
+    for s in sol.steps:
+        d = asdict(s)
+        for k in ("at", "vector", "point", "direction"):
+            if d[k] is not None:
+                d[k] = list(d[k])
+        d["args"] = list(d["args"])
+        d["lines"] = list(d["lines"])
+        steps.append(d)
+    answers = []
+    for c in check_answers(sol):
+        answers.append({"quantity": c.answer.quantity, "desc": c.answer.desc,
+                        "unit": c.answer.unit, "ours": c.ours, "tutorial": c.answer.tutorial,
+                        "exact": c.answer.exact, "tutorial_diff_pct": c.diff_pct,
+                        "tutorial_within_tolerance": c.within,
+                        "tolerance_pct": c.answer.tolerance * 100.0, "slip": c.answer.slip,
+                        "sense": c.answer.sense, "note": c.answer.note})
+    return {
+        "case": {"file": scene.file, "title": scene.title, "id": scene.source.get("id"),
+                 "synthetic": bool(scene.source.get("synthetic", False))},
+        "units": {"length": "m", "velocity": "m/s", "acceleration": "m/s^2",
+                  "omega": "rad/s (CCW positive)", "alpha": "rad/s^2 (CCW positive)",
+                  "angles": "deg CCW from +x"},
+        "pole": sol.pole,
+        "branches": [{"point": p, "chosen": why} for p, why in sol.placement.branches],
+        "points": points,
+        "links": links,
+        "slides": slides,
+        "steps": steps,
+        "min_intersection_angle_deg": sol.min_intersection_angle_deg,
+        "warnings": list(sol.warnings),
+        "answers": answers,
+    }
+
+
+def dumps(sol: Solution) -> str:
+    return json.dumps(to_json(sol), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def _g(x, digits=5) -> str:
+    if x is None:
+        return "-"
+    if x == 0:
+        return "0"
+    return f"{x:.{digits}g}"
+
+
+def table(sol: Solution, *, steps: bool = True) -> str:
+    scene = sol.scene
+    lines = [f"{scene.title}", f"  scene: {scene.file}"
+             + (f"   [{scene.source['id']}]" if scene.source.get("id") else "")]
+    if scene.source.get("synthetic"):
+        lines.append("  SYNTHETIC geometry: a stand-in, not the tutorial's missing figure")
+    for p, why in sol.placement.branches:
+        lines.append(f"  assembly: {why}")
+    lines.append("")
+    lines.append(f"{'point':<6} {'x mm':>10} {'y mm':>10}   {'|v| m/s':>11} {'dir°':>7}"
+                 f"   {'|a| m/s²':>11} {'dir°':>7}")
+    for label, pr in sol.points.items():
+        row = f"{label:<6} {1e3 * pr.position[0]:>10.4f} {1e3 * pr.position[1]:>10.4f}"
+        for vec in (pr.velocity, pr.acceleration):
+            if vec is None:
+                row += f"   {'':>11} {'':>7}"
+            else:
+                m = _mag(vec)
+                row += f"   {_g(m, 6):>11} {(f'{_deg(vec):.2f}' if m else '-'):>7}"
+        lines.append(row)
+    lines.append("")
+    lines.append(f"{'link':<8} {'length mm':>10}   {'ω rad/s':>12}      {'α rad/s²':>12}")
+    for name, lr in sol.links.items():
+        lines.append(f"{name:<8} {1e3 * lr.length:>10.4f}   {_g(abs(lr.omega) if lr.omega is not None else None, 6):>12} "
+                     f"{sense(lr.omega):<4} {_g(abs(lr.alpha) if lr.alpha is not None else None, 6):>12} "
+                     f"{sense(lr.alpha)}")
+    if sol.slides:
+        lines.append("")
+        for label, sr in sol.slides.items():
+            where = "its guide" if sr.along == "guide" else f"the slot of {sr.along}"
+            text = f"slide {label} along {where}: v = {_g(sr.velocity, 6)} m/s"
+            if sr.acceleration is not None:
+                text += f", a = {_g(sr.acceleration, 6)} m/s²"
+            if sr.coriolis is not None:
+                text += f", Coriolis 2ωv = {_g(_mag(sr.coriolis), 6)} m/s²"
+            lines.append(text + "  (signed along " + (f"{_deg(sr.direction):.2f}°)"))
+    if steps:
+        for diagram in scene.solve:
+            lines.append("")
+            lines.append(f"{diagram} construction (pole {sol.pole}):")
+            for s in sol.steps:
+                if s.diagram != diagram:
+                    continue
+                text = f"  {s.number:>2}. {s.reason}"
+                if s.substituted:
+                    text += f"  [{s.substituted}]"
+                lines.append(text)
+    lines.append("")
+    if sol.min_intersection_angle_deg is not None:
+        lines.append(f"conditioning: smallest angle between intersecting construction lines "
+                     f"{sol.min_intersection_angle_deg:.3f}°"
+                     + ("" if sol.min_intersection_angle_deg >= geometry.WARN_DEG
+                        else "  (NEAR A TOGGLE)"))
+    for w in sol.warnings:
+        lines.append(f"warning: {w}")
+    checks = check_answers(sol)
+    if checks:
+        lines.append("")
+        lines.append(f"{'answer':<34} {'unit':<8} {'polygons':>12} {'tutorial':>10} {'diff %':>8}  note")
+        for c in checks:
+            a = c.answer
+            if a.tutorial is None:
+                continue
+            note = "SLIP in the tutorial (see reference)" if a.slip else (
+                "within drawing tolerance" if c.within else
+                f"outside ±{a.tolerance * 100:g}%")
+            lines.append(f"{a.desc[:34]:<34} {a.unit:<8} {_g(c.compared, 6):>12} "
+                         f"{_g(a.tutorial, 6):>10} {c.diff_pct:>8.2f}  {note}")
+    return "\n".join(lines) + "\n"
