@@ -218,8 +218,7 @@ def _run(st: _State, s: Step) -> Step:
                        substituted=f"{st.names.pole}{s.end} = {_f(_n(p))} {unit.replace('^2', '²')}"
                                    f" (lines meet at {hit.angle_deg:.3g}°)")
     if op == "omega":
-        (L,) = args
-        P, Q = link_ends(scene, L)
+        L, P, Q = args
         r = st.r(P, Q)
         rel = st.of(d, Q) - st.of(d, P)
         w = angular_velocity(r, rel)

@@ -17,8 +17,9 @@ import shapely
 
 from .errors import ParallelLinesError
 
-#: below this angle two construction lines are treated as parallel (the position is a toggle)
-PARALLEL_DEG = 1e-7
+#: below this angle two construction lines are treated as parallel (the position is a toggle);
+#: an exact toggle computed in floating point leaves ~sqrt(eps) ≈ 1e-6° of angle, hence 1e-5°
+PARALLEL_DEG = 1e-5
 #: below this angle the construction (and the number) is flagged as ill-conditioned
 WARN_DEG = 1.0
 

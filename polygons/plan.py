@@ -387,11 +387,11 @@ def _emit(b: _Builder, dyad: Dyad, names: Vertices, taken: set[str]) -> None:
             b.add("intersection", "intersect", (), x, None, x, "intersection", f"v_{X}",
                   f"{x} = intersection of the two lines",
                   f"The two lines meet at {x}: {pole}{x} is the velocity of {X}.", (n1, n2))
-            b.add("measure", "omega", (LP,), f"ω_{LP}", None, None, "angular_velocity",
+            b.add("measure", "omega", (LP, P, X), f"ω_{LP}", None, None, "angular_velocity",
                   f"ω_{LP}", f"ω_{LP} = {p}{x} / {P}{X}",
                   f"The angular velocity of {LP} is the relative velocity divided by its length.")
             if isinstance(dyad, RRR):
-                b.add("measure", "omega", (dyad.link_q,), f"ω_{dyad.link_q}", None, None,
+                b.add("measure", "omega", (dyad.link_q, dyad.q, X), f"ω_{dyad.link_q}", None, None,
                       "angular_velocity", f"ω_{dyad.link_q}",
                       f"ω_{dyad.link_q} = {V(dyad.q)}{x} / {dyad.q}{X}",
                       f"The angular velocity of {dyad.link_q} is its relative velocity divided "
@@ -463,7 +463,7 @@ def _emit(b: _Builder, dyad: Dyad, names: Vertices, taken: set[str]) -> None:
                   f"{a1} = intersection of the two lines",
                   f"They meet at {a1}: {b_}{a1} is the velocity of {A1} and {a1}{a} the "
                   f"sliding velocity.", (n1, n2))
-            b.add("measure", "omega", (lev,), f"ω_{lev}", None, None, "angular_velocity",
+            b.add("measure", "omega", (lev, B, A1), f"ω_{lev}", None, None, "angular_velocity",
                   f"ω_{lev}", f"ω_{lev} = {b_}{a1} / {B}{A}",
                   f"The lever turns at the velocity of {A1} divided by {B}{A}.")
             b.add("measure", "slide_velocity", (A,), f"v_slide", None, None, "sliding",

@@ -394,14 +394,16 @@ def parse_scene(data: dict, *, file: str = "<scene>", extra_keys: tuple[str, ...
         r.table(drv, "driver", ("crank", "angle", "omega", "sense", "alpha", "alpha_sense"),
                 required=("crank", "angle", "omega", "sense"))
         name = r.string(drv["crank"], "driver.crank")
-        if name not in links:
+        pivot, tip = split_link_name(name, file=file, where="driver.crank")
+        if name not in links and f"{tip}{pivot}" in links:
+            name = f"{tip}{pivot}"      # written the other way round in [links]
+        elif name not in links:
             raise UnknownLabelError(f"crank {name!r} is not a link in [links]: "
                                     f"{suggest(name, links)}", file=file, where="driver.crank")
-        pivot, tip = links[name].a, links[name].b
         if pivot not in ground:
-            raise SceneError(f"the crank {name} turns about its first label {pivot}, which must "
-                             f"be a fixed pivot in [ground] ({', '.join(ground)}); write the "
-                             f"link with the pivot first", file=file, where="driver.crank")
+            raise SceneError(f"the crank turns about its first label {pivot}, which must be a "
+                             f"fixed pivot in [ground] ({', '.join(ground)}); write the crank "
+                             f"with its pivot first", file=file, where="driver.crank")
         omega = abs(r.quantity(drv["omega"], "angular_velocity", "driver.omega"))
         omega *= r.sense(drv["sense"], "driver.sense")
         alpha = 0.0

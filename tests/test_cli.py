@@ -1,0 +1,117 @@
+"""The CLI through its real entry point: output, JSON shape, and one-line errors."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from conftest import CASES
+
+EXE = Path(sys.executable).with_name("polygons")
+
+
+def run(*args, cwd=None):
+    cmd = [str(EXE)] if EXE.exists() else [sys.executable, "-m", "polygons"]
+    return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
+                          cwd=cwd, timeout=120)
+
+
+def test_solve_fig7_prints_omega4_alpha4_and_coriolis_with_senses():
+    out = run("solve", CASES / "s003-fig7.toml")
+    assert out.returncode == 0, out.stderr
+    link = next(l for l in out.stdout.splitlines() if l.startswith("O4P4 "))
+    assert "1.2146 CCW" in link and "4.10822 CCW" in link
+    assert "Coriolis 2ωv = 1.9576 m/s²" in out.stdout
+    assert "conditioning" in out.stdout
+
+
+def test_solve_json_has_the_documented_keys():
+    out = run("solve", CASES / "s003-fig7.toml", "--json")
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    assert data["links"]["O4P4"]["omega"] == pytest.approx(1.2145955942749975, rel=1e-12)
+    assert data["links"]["O4P4"]["alpha"] == pytest.approx(4.108215643870321, rel=1e-9)
+    assert len(data["points"]["P2"]["velocity"]) == 2
+    assert len(data["points"]["P4"]["acceleration"]) == 2
+    assert data["min_intersection_angle_deg"] == pytest.approx(90.0)
+    kinds = [s["kind"] for s in data["steps"]]
+    assert "intersection" in kinds and "vector" in kinds
+    assert all(s["formula"] and s["reason"] for s in data["steps"])
+
+
+def test_json_is_byte_identical_across_runs():
+    a = run("solve", CASES / "s003-fig7.toml", "--json").stdout
+    b = run("solve", CASES / "s003-fig7.toml", "--json").stdout
+    assert a == b and a
+
+
+GOOD = """
+title = "test four-bar"
+[ground]
+A = ["0 mm", "0 mm"]
+D = ["200 mm", "0 mm"]
+[links]
+AB = "80 mm"
+BC = "136 mm"
+CD = "160 mm"
+[driver]
+crank = "AB"
+angle = "300 deg"
+omega = "480 rad/s"
+sense = "CW"
+[assembly]
+C = "C below AD"
+"""
+
+
+def test_good_scene_solves(write_scene):
+    out = run("solve", write_scene(GOOD))
+    assert out.returncode == 0, out.stderr
+
+
+@pytest.mark.parametrize("change,expected", [
+    (("omega = ", "omgea = "), "unknown key 'omgea'.*did you mean 'omega'"),
+    (('"80 mm"', "80"), r"\[links.AB\].*missing unit"),
+    (('"80 mm"', '"80 rad/s"'), r"\[links.AB\].*angular velocity"),
+    (('"200 mm", "0 mm"', '"600 mm", "0 mm"'), r"\[C\].*cannot close.*BC \+ CD = 296 mm is shorter than BD"),
+    (('C = "C below AD"', 'C = "C below AE"'), r"unknown point 'E'"),
+    (('C = "C below AD"', ''), r"\[assembly.C\].*two closures.*say which in \[assembly\], e.g. C = \"C (above|below) [A-D]{2}\""),
+    (('crank = "AB"', 'crank = "BA"'), r"first label B.*fixed pivot"),
+    (('sense = "CW"', 'sense = "clockwise-ish"'), r"sense must be 'CW' or 'CCW'"),
+    (("[links]", "[links\n"), r"not valid TOML"),
+])
+def test_bad_scenes_give_one_readable_line(write_scene, change, expected):
+    import re
+    old, new = change
+    assert old in GOOD
+    out = run("solve", write_scene(GOOD.replace(old, new, 1)))
+    assert out.returncode != 0
+    assert "Traceback" not in out.stderr
+    lines = out.stderr.strip().splitlines()
+    assert len(lines) == 1, out.stderr
+    assert "scene.toml" in lines[0]
+    assert re.search(expected, lines[0]), lines[0]
+
+
+def test_toggle_position_names_the_step_and_the_parallel_lines(write_scene):
+    # AB + BC = AC: at 0 deg the crank and coupler are in line with C on the axis
+    # A, B, C, D in one line (AD = AB + BC + CD): the lines ⟂ BC and ⟂ CD are parallel
+    text = GOOD.replace('"300 deg"', '"0 deg"').replace('D = ["200 mm", "0 mm"]',
+                                                      'D = ["376 mm", "0 mm"]')
+    out = run("solve", write_scene(text))
+    assert out.returncode != 0
+    assert "Traceback" not in out.stderr
+    line = out.stderr.strip()
+    assert "\n" not in line
+    assert "step velocity" in line and "parallel" in line and "toggle" in line
+
+
+def test_missing_file_and_unknown_command():
+    out = run("solve", "no/such/file.toml")
+    assert out.returncode != 0 and "no such scene file" in out.stderr
+    out = run("frobnicate")
+    assert out.returncode == 2 and "invalid choice" in out.stderr
+    assert "Traceback" not in out.stderr
