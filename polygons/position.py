@@ -128,14 +128,6 @@ def _circle_line(p, length, guide, dyad: RRP, scene: Scene):
     return [g + (-bq + root) * e, g + (-bq - root) * e]
 
 
-def _describe(x, cand, ref_pts) -> str:
-    if len(ref_pts) == 2:
-        a, b = ref_pts
-        d = b[1] - a[1], b[0] - a[0]
-        return f"({1e3 * cand[0]:.4g}, {1e3 * cand[1]:.4g}) mm"
-    return f"({1e3 * cand[0]:.4g}, {1e3 * cand[1]:.4g}) mm"
-
-
 def satisfies(branch: Branch, cand, pos, scene: Scene) -> bool:
     """Whether candidate position ``cand`` satisfies the scene's wording of the closure."""
     rel = branch.relation
