@@ -48,6 +48,10 @@ _LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
 
 TOP_KEYS = ("title", "source", "ground", "links", "driver", "sliders", "slots", "points",
             "assembly", "answers", "solve")
+#: tables read by extension modules (forces, sweeps, diagrams); stored raw in ``Scene.extra``
+#: and validated by the module that uses them (it must raise SceneError subclasses itself)
+EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics", "sweep",
+                  "diagram", "handout")
 DIAGRAMS = ("velocity", "acceleration")
 
 
@@ -276,8 +280,8 @@ def load_scene(path: str | Path) -> Scene:
     return parse_scene(data, file=file)
 
 
-def parse_scene(data: dict, *, file: str = "<scene>", extra_keys: tuple[str, ...] = ()
-                ) -> Scene:
+def parse_scene(data: dict, *, file: str = "<scene>",
+                extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + extra_keys, required=("ground", "links", "driver"))
