@@ -18,6 +18,10 @@ from .scene import Branch, Crank, Scene
 from .theorems import cross, perp
 
 
+#: a [drawn] position may differ from the assembled one by this fraction of the mechanism size
+DRAWN_TOL = 1e-3
+
+
 @dataclass(frozen=True)
 class Placement:
     """Where every point is, and which closure was taken for each two-closure dyad."""
@@ -66,6 +70,14 @@ def assemble(plan: Plan) -> Placement:
                 pos[dyad.far] = pos[dyad.pivot] + scene.slots[dyad.pin].far_length * d / s
         elif isinstance(dyad, Image):
             pos[dyad.x] = body_point(scene, dyad, pos)
+    for label, xy in scene.drawn.items():
+        if label in pos:
+            off = float(np.hypot(*(pos[label] - np.array(xy))))
+            if off > DRAWN_TOL * size:
+                raise AssemblyError(
+                    f"{label} is drawn at {_fmt(np.array(xy))} but the links put it at "
+                    f"{_fmt(pos[label])} ({1e3 * off:.4g} mm away): the drawing and the lengths "
+                    f"disagree", file=scene.file, where=f"drawn.{label}")
     return Placement({k: (float(v[0]), float(v[1])) for k, v in pos.items()}, tuple(chosen))
 
 
@@ -166,6 +178,8 @@ def _choose(x, cands, scene: Scene, pos, size, default_ref):
         return c1, ""   # a single (double) closure: nothing to choose
     branch = scene.assembly.get(x)
     where = f"assembly.{x}"
+    if branch is None and x in scene.drawn:
+        branch = Branch(x, f"{x} as drawn", "near", near=scene.drawn[x])
     if branch is None:
         raise BranchError(
             f"{x} has two closures, {_fmt(c1)} and {_fmt(c2)}; say which in [assembly], e.g. "

@@ -18,7 +18,9 @@
     [assembly]                # which of the two closures, in words
     C = "right of A"
 
-Also ``[slots.PIN] lever = "BC"`` (a pin sliding in the slot of a lever pivoted at B, the
+Also ``[drawn] B = ["135 mm", "26 mm"]`` (the space diagram as drawn: picks the closure
+nearest to it, gives lengths written ``AB = "drawn"`` and the crank angle when ``angle`` is
+omitted, and is checked against the assembly), ``[slots.PIN] lever = "BC"`` (a pin sliding in the slot of a lever pivoted at B, the
 quick-return / slotted-lever case), ``[points.D] on = "AB", along = "168 mm"`` (extra points of
 a rigid link: coupler points, "BD is a continuation of AB", mid-points with ``fraction``), a
 slider as the driver (``[driver] slider = "C"``), and ``[[answers]]`` (the tutorial's printed
@@ -47,7 +49,7 @@ _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
 _LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
 
 TOP_KEYS = ("title", "source", "ground", "links", "driver", "sliders", "slots", "points",
-            "assembly", "answers", "solve")
+            "assembly", "answers", "solve", "drawn")
 #: tables read by extension modules (forces, sweeps, diagrams); stored raw in ``Scene.extra``
 #: and validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics", "sweep",
@@ -171,6 +173,7 @@ class Scene:
     assembly: Mapping[str, Branch]
     answers: tuple[Answer, ...]
     solve: tuple[str, ...] = DIAGRAMS
+    drawn: Mapping[str, Vec] = field(default_factory=lambda: MappingProxyType({}))
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
 
     @property
@@ -299,11 +302,24 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     if not ground:
         raise SceneError("at least one fixed pivot is needed", file=file, where="ground")
 
+    # the space diagram as drawn: coordinates of moving points at this instant
+    drawn_raw = r.table(data.get("drawn", {}), "drawn", tuple(data.get("drawn", {})))
+    drawn = {r.label(k, f"drawn.{k}"): r.vec(v, f"drawn.{k}") for k, v in drawn_raw.items()}
+    placed = {**drawn, **ground}
+
     # links
     links_raw = r.table(data["links"], "links", tuple(data["links"]))
     links: dict[str, Link] = {}
     for name, value in links_raw.items():
         a, b = split_link_name(name, file=file, where=f"links.{name}")
+        if value == "drawn":
+            missing = [p for p in (a, b) if p not in placed]
+            if missing:
+                raise SceneError(f"length 'drawn' needs the positions of {a} and {b}; "
+                                 f"{' and '.join(missing)} not in [ground] or [drawn]",
+                                 file=file, where=f"links.{name}")
+            links[name] = Link(name, a, b, math.dist(placed[a], placed[b]))
+            continue
         length = r.quantity(value, "length", f"links.{name}")
         if length <= 0:
             raise SceneError(f"length must be positive, got {value!r}", file=file,
@@ -396,7 +412,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     driver: Crank | SliderDrive
     if "crank" in drv:
         r.table(drv, "driver", ("crank", "angle", "omega", "sense", "alpha", "alpha_sense"),
-                required=("crank", "angle", "omega", "sense"))
+                required=("crank", "omega", "sense"))
         name = r.string(drv["crank"], "driver.crank")
         pivot, tip = split_link_name(name, file=file, where="driver.crank")
         if name not in links and f"{tip}{pivot}" in links:
@@ -419,8 +435,14 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                      "angular acceleration, not of the rotation)", file=file,
                                      where="driver.alpha_sense")
                 alpha *= r.sense(drv["alpha_sense"], "driver.alpha_sense")
-        driver = Crank(name, pivot, tip, r.quantity(drv["angle"], "angle", "driver.angle"),
-                       omega, alpha)
+        if "angle" in drv:
+            angle = r.quantity(drv["angle"], "angle", "driver.angle")
+        elif tip in drawn:
+            angle = math.atan2(drawn[tip][1] - ground[pivot][1], drawn[tip][0] - ground[pivot][0])
+        else:
+            raise SceneError(f"give the crank angle (angle = \"30 deg\") or the drawn position "
+                             f"of {tip} in [drawn]", file=file, where="driver.angle")
+        driver = Crank(name, pivot, tip, angle, omega, alpha)
     else:
         r.table(drv, "driver", ("slider", "position", "velocity", "acceleration"),
                 required=("slider", "position", "velocity"))
@@ -440,6 +462,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         where = f"assembly.{label}"
         need_label(r.label(label, where), where)
         assembly[label] = _parse_branch(label, spec, r, need_label, where)
+
+    for label in drawn:
+        need_label(label, f"drawn.{label}")
 
     # solve
     solve = data.get("solve", list(DIAGRAMS))
@@ -464,6 +489,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                  slots=MappingProxyType(slots), points=MappingProxyType(points),
                  assembly=MappingProxyType(assembly), answers=answers,
                  solve=tuple(s for s in DIAGRAMS if s in solve),
+                 drawn=MappingProxyType(drawn),
                  extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}))
 
 

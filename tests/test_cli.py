@@ -115,3 +115,37 @@ def test_missing_file_and_unknown_command():
     out = run("frobnicate")
     assert out.returncode == 2 and "invalid choice" in out.stderr
     assert "Traceback" not in out.stderr
+
+
+DRAWN = """
+title = "SAE4-Q3 style: positions as drawn instead of lengths"
+[ground]
+O = ["0 mm", "0 mm"]
+C = ["135 mm", "-64.01924 mm"]
+[drawn]
+A = ["15 mm", "25.98076 mm"]
+B = ["135 mm", "25.98076 mm"]
+[links]
+OA = "drawn"
+AB = "drawn"
+BC = "drawn"
+[driver]
+crank = "OA"
+omega = "100 rad/s"
+sense = "CCW"
+"""
+
+
+def test_drawn_positions_give_lengths_angle_and_branch(write_scene):
+    from polygons import load_scene, solve
+    sol = solve(load_scene(write_scene(DRAWN)))
+    assert sol.links["OA"].length == pytest.approx(0.03, rel=1e-6)
+    assert sol.points["B"].position == pytest.approx((0.135, 0.02598076), abs=1e-9)
+    assert sol.placement.branches[0][1].startswith("B as drawn")
+
+
+def test_drawn_position_that_contradicts_the_lengths_is_an_error(write_scene):
+    text = DRAWN.replace('AB = "drawn"', 'AB = "110 mm"')
+    out = run("solve", write_scene(text))
+    assert out.returncode != 0 and "Traceback" not in out.stderr
+    assert "[drawn.B]" in out.stderr and "disagree" in out.stderr
