@@ -152,3 +152,24 @@ def test_four_bar_velocity_matches_finite_differences_of_positions(ad, ab, bc, c
     v_fd = (cp - cm) / (2 * h) * omega
     scale = abs(omega) * ab
     assert float(np.hypot(*(np.array(sol.points["C"].velocity) - v_fd))) <= 1e-5 * scale
+
+
+@pytest.mark.parametrize("theta", [0.3, 1.9, 4.0])
+def test_slider_driver_recovers_the_crank_motion(theta):
+    """Drive a slider-crank from its piston with the closed form's s, ṡ, s̈ (crank at constant
+    ω = 7 rad/s): the polygons must give back ω = 7 and α = 0 for the crank."""
+    r, L, omega = 0.05, 0.17, 7.0
+    ref = analytic.slider_crank((0, 0), r, L, theta, omega, 0.0, (0, 0), 0.0, +1)
+    scene = parse_scene({
+        "ground": {"O": ["0 m", "0 m"]},
+        "links": {"OA": m(r), "AB": m(L)},
+        "sliders": {"B": {"through": ["0 m", "0 m"], "direction": "0 deg"}},
+        "driver": {"slider": "B", "position": m(ref["s"]),
+                   "velocity": f"{float(ref['s_dot'])!r} m/s",
+                   "acceleration": f"{float(ref['s_ddot'])!r} m/s^2"},
+        "assembly": {"A": {"near": [m(ref["A"][0]), m(ref["A"][1])]}},
+    })
+    sol = solve(scene)
+    assert sol.links["OA"].omega == pytest.approx(omega, rel=1e-9)
+    assert abs(sol.links["OA"].alpha) <= 1e-9 * omega ** 2
+    assert sol.links["AB"].omega == pytest.approx(ref["omega_AB"], rel=1e-9)
