@@ -9,6 +9,8 @@
     vs(P), as(P)  sliding velocity / acceleration of P along its guide or slot, signed
     cor(P)      magnitude of the Coriolis acceleration of pin P     (m/s²)
     dist(B,A)   distance between two points at this instant         (m)
+    angle(P,Q,R)  angle at Q between QP and QR, 0..180°               (rad in SI)
+    arm(O,P,C)  perpendicular distance from O to the line PC         (m)
     x(C), y(C)  coordinates                                         (m)
     dir_v(C), dir_a(C)   direction of v_C / a_C, degrees CCW from +x in [0, 360)
 
@@ -24,10 +26,11 @@ import numpy as np
 from .errors import SceneError, UnknownLabelError, suggest
 from .evaluate import Solution, link_ends
 
-_CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?\)\s*$")
+_CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
+                   r"(?:,\s*([^,()\s]+)\s*)?\)\s*$")
 
 FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x", "y",
-             "dir_v", "dir_a")
+             "dir_v", "dir_a", "angle", "arm")
 
 
 def dimension_of_quantity(expr: str) -> str:
@@ -35,7 +38,7 @@ def dimension_of_quantity(expr: str) -> str:
     return {"v": "velocity", "a": "acceleration", "an": "acceleration", "at": "acceleration",
             "omega": "angular_velocity", "alpha": "angular_acceleration", "cor": "acceleration",
             "dist": "length", "x": "length", "y": "length", "dir_v": "angle",
-            "dir_a": "angle"}.get(fn, "velocity" if fn == "vs" else "acceleration")
+            "dir_a": "angle", "angle": "angle", "arm": "length"}.get(fn, "velocity" if fn == "vs" else "acceleration")
 
 
 def _parse(expr: str):
@@ -44,12 +47,21 @@ def _parse(expr: str):
         raise SceneError(f"cannot read quantity {expr!r}: write e.g. 'v(C)', 'v(C,B)', "
                          f"'omega(BC)', 'alpha(CD)', 'an(C,B)', 'at(C,B)', 'vs(C)', 'cor(A)' "
                          f"(functions: {', '.join(FUNCTIONS)})")
-    return m.group(1), m.group(2), m.group(3)
+    fn, args = m.group(1), tuple(g for g in m.groups()[1:] if g is not None)
+    counts = _ARITY.get(fn, (1,))
+    if len(args) not in counts:
+        raise SceneError(f"{fn}() takes {' or '.join(map(str, counts))} labels, got {expr!r}")
+    return fn, args
+
+
+_ARITY = {"angle": (3,), "arm": (3,), "v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,),
+          "dist": (2,)}
 
 
 def quantity(sol: Solution, expr: str) -> float:
     """The SI value of ``expr`` (see module docstring) in solution ``sol``."""
-    fn, p, q = _parse(expr)
+    fn, args = _parse(expr)
+    p, q, rest = args[0], (args[1] if len(args) > 1 else None), args[2:]
     scene = sol.scene
 
     def point(label):
@@ -75,7 +87,8 @@ def quantity(sol: Solution, expr: str) -> float:
         for name, lr in sol.links.items():
             ends = set(link_ends(scene, name))
             body = {bp.label for bp in scene.points.values() if bp.link == name}
-            slot_far = {s.far for s in scene.slots.values() if s.lever == name and s.far}
+            slot_far = {x for s in scene.slots.values() if s.lever == name
+                        for x in (s.far, s.coincident, s.pivot) if x}
             if {x, y} <= ends | body | slot_far:
                 return lr
         raise SceneError(f"{x} and {y} are not on one link, so {expr!r} has no "
@@ -110,6 +123,13 @@ def quantity(sol: Solution, expr: str) -> float:
         return float(np.hypot(*sr.coriolis))
     if fn == "dist":
         return float(np.hypot(*(np.array(point(p).position) - np.array(point(q).position))))
+    if fn in ("angle", "arm"):
+        P, Q, R = (np.array(point(lab).position) for lab in (p, q, rest[0]))
+        if fn == "angle":
+            u, w = P - Q, R - Q
+            return math.atan2(abs(u[0] * w[1] - u[1] * w[0]), float(u @ w))
+        d = R - Q
+        return abs(float(d[0] * (P - Q)[1] - d[1] * (P - Q)[0])) / float(np.hypot(*d))
     if fn in ("x", "y"):
         return point(p).position[0 if fn == "x" else 1]
     kind = "velocity" if fn == "dir_v" else "acceleration"
