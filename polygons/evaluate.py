@@ -189,6 +189,9 @@ def _run(st: _State, s: Step) -> Step:
     if op == "line_guide":
         (X,) = args
         return new_line(np.array(scene.sliders[X].direction), start, s.draws)
+    if op == "line_slot":       # the slot of a translating yoke: a fixed direction
+        (X,) = args
+        return new_line(np.array(scene.sliders[X].slot_direction), start, s.draws)
     if op == "coriolis_offset_line":
         (A,) = args
         slot = scene.slots[A]

@@ -118,7 +118,24 @@ class Image:
         return (self.p, self.q)
 
 
-Dyad = CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image
+@dataclass(frozen=True)
+class RPP:
+    """Scotch yoke: placed pin ``pin`` slides in the straight slot of the yoke ``x``, which
+    translates on its fixed guide; places ``x``, the yoke's point on the guide under the slot
+    line through the pin."""
+    pin: str
+    x: str
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.x,)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.pin,)
+
+
+Dyad = CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP
 
 
 @dataclass(frozen=True)
@@ -182,6 +199,9 @@ def make_plan(scene: Scene, targets: Iterable[str] | None = None) -> Plan:
 
 
 def _dyad_for(scene: Scene, x: str, placed: set[str], links) -> Dyad | None:
+    guide = scene.sliders.get(x)
+    if guide is not None and guide.pin is not None:   # a Scotch yoke
+        return RPP(guide.pin, x) if guide.pin in placed else None
     if x in scene.points:
         bp: BodyPoint = scene.points[x]
         link = scene.links.get(bp.link)
@@ -511,6 +531,34 @@ def _emit(b: _Builder, dyad: Dyad, names: Vertices, taken: set[str]) -> None:
 
     if isinstance(dyad, Image):
         _emit_image(b, names, dyad.x, dyad.link, dyad.p, dyad.q)
+        return
+
+    if isinstance(dyad, RPP):
+        A, Y = dyad.pin, dyad.x
+        a, y = V(A), V(Y)
+        q = _vq(b.diagram)
+        what = "velocity" if vel else "acceleration"
+        n1 = b.add("line", "line_guide", (Y,), "slider line", pole, None, "slider_line",
+                   f"{q}_{Y}", f"{q}_{Y} ∥ guide of {Y}",
+                   f"Through {pole} draw a line along the guide of the yoke {Y}: the yoke only "
+                   f"translates along it.")
+        n2 = b.add("line", "line_slot", (Y,), "slot line", a, None, "sliding",
+                   f"({q}_{A})_{Y}", f"({q}_{A})_{Y} ∥ slot of {Y}",
+                   f"Through {a} draw a line parallel to the yoke's slot: {A} slides along it "
+                   f"relative to the yoke, which does not turn (so there is no Coriolis "
+                   f"term).")
+        b.add("intersection", "intersect", (), y, None, y, "intersection", f"{q}_{Y}",
+              f"{y} = intersection of the two lines",
+              f"They meet at {y}: {pole}{y} is the {what} of the yoke and {y}{a} that of {A} "
+              f"sliding in the slot.", (n1, n2))
+        if vel:
+            b.add("measure", "slider_velocity", (Y,), f"v_{Y}", None, None, "slider",
+                  f"v_{Y} along guide", f"v_{Y} = {pole}{y}",
+                  f"The yoke's velocity is {pole}{y}, signed along its guide.")
+        else:
+            b.add("measure", "slider_acceleration", (Y,), f"a_{Y}", None, None, "slider",
+                  f"a_{Y} along guide", f"a_{Y} = {pole}{y}",
+                  f"The yoke's acceleration is {pole}{y}, signed along its guide.")
         return
     raise AssertionError(dyad)
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import AssemblyError, BranchError
-from .plan import RPR, RRP, RRR, CrankDyad, Image, Plan, SliderDriveDyad
+from .plan import RPP, RPR, RRP, RRR, CrankDyad, Image, Plan, SliderDriveDyad
 from .scene import Branch, Crank, Scene
 from .theorems import cross, perp
 
@@ -70,6 +70,11 @@ def assemble(plan: Plan) -> Placement:
                 pos[dyad.far] = pos[dyad.pivot] + scene.slots[dyad.pin].far_length * d / s
         elif isinstance(dyad, Image):
             pos[dyad.x] = body_point(scene, dyad, pos)
+        elif isinstance(dyad, RPP):    # Scotch yoke: guide line ∩ slot line through the pin
+            g = scene.sliders[dyad.x]
+            e, f = np.array(g.direction), np.array(g.slot_direction)
+            t = cross(pos[dyad.pin] - np.array(g.through), f) / cross(e, f)
+            pos[dyad.x] = np.array(g.through) + t * e
     for label, xy in scene.drawn.items():
         if label in pos:
             off = float(np.hypot(*(pos[label] - np.array(xy))))

@@ -70,14 +70,26 @@ class Link:
 
 @dataclass(frozen=True)
 class Guide:
-    """A fixed straight slider guide through ``through`` at ``angle`` (rad, CCW from +x)."""
+    """A fixed straight slider guide through ``through`` at ``angle`` (rad, CCW from +x).
+
+    A slider may carry a straight slot (a Scotch yoke): ``pin`` slides in it, and the slot
+    keeps the fixed direction ``slot_angle`` because the slider only translates.  The
+    slider's label is then the point of the yoke on its guide, under the slot line."""
 
     through: Vec
     angle: float
+    pin: str | None = None
+    slot_angle: float | None = None
 
     @property
     def direction(self) -> Vec:
         return (math.cos(self.angle), math.sin(self.angle))
+
+    @property
+    def slot_direction(self) -> Vec | None:
+        if self.slot_angle is None:
+            return None
+        return (math.cos(self.slot_angle), math.sin(self.slot_angle))
 
 
 @dataclass(frozen=True)
@@ -190,6 +202,9 @@ class Scene:
             seen[slot.coincident] = None
         for p in self.points:
             seen[p] = None
+        for lab, g in self.sliders.items():
+            if g.pin is not None:       # a Scotch yoke's point on its guide
+                seen[lab] = None
         return tuple(seen)
 
     def link_between(self, p: str, q: str) -> Link | None:
@@ -397,10 +412,28 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     for label, spec in r.table(data.get("sliders", {}), "sliders",
                                tuple(data.get("sliders", {}))).items():
         where = f"sliders.{label}"
-        need_label(r.label(label, where), where)
-        r.table(spec, where, ("through", "direction"), required=("through", "direction"))
-        sliders[label] = Guide(r.vec(spec["through"], where + ".through"),
-                               r.quantity(spec["direction"], "angle", where + ".direction"))
+        r.table(spec, where, ("through", "direction", "pin", "slot"),
+                required=("through", "direction"))
+        through = r.vec(spec["through"], where + ".through")
+        angle = r.quantity(spec["direction"], "angle", where + ".direction")
+        if "pin" in spec or "slot" in spec:
+            # a Scotch yoke: this slider carries a straight slot in which a placed pin slides
+            if "pin" not in spec or "slot" not in spec:
+                raise SceneError("a slider carrying a slot (Scotch yoke) needs both pin = "
+                                 "\"P\" (the pin sliding in the slot) and slot = \"0 deg\" "
+                                 "(the slot's direction)", file=file, where=where)
+            r.label(label, where)
+            pin = need_label(r.label(spec["pin"], where + ".pin"), where + ".pin")
+            slot_angle = r.quantity(spec["slot"], "angle", where + ".slot")
+            if abs(math.sin(slot_angle - angle)) < 1e-9:
+                raise SceneError("the slot is parallel to the yoke's guide, so the pin does "
+                                 "not fix the yoke; give the slot another direction",
+                                 file=file, where=where + ".slot")
+            known.add(label)
+            sliders[label] = Guide(through, angle, pin, slot_angle)
+        else:
+            need_label(r.label(label, where), where)
+            sliders[label] = Guide(through, angle)
 
     # driver
     drv = data["driver"]

@@ -1,0 +1,828 @@
+"""Full-cycle sweeps: every position of the input solved at once, vectorised with numpy.
+
+The staged constructor (:mod:`polygons.evaluate`) draws one position at a time, stroke by
+stroke.  A sweep asks the same questions for thousands of input angles, so here the same
+:class:`~polygons.plan.Plan` dyads are evaluated on whole arrays, one numpy expression per
+dyad, with no Python loop over positions.  Each dyad's closed form is the algebra of its
+construction:
+
+* crank ``PX``:        v = ω × PX,  a = α × PX − ω² PX
+* RRR ``P–X–Q``:       v_x = v_p + ω_p × PX = v_q + ω_q × QX, solved for (ω_p, ω_q) by the
+  same two perpendicular lines the polygon intersects (their determinant is
+  ``PX × QX``, zero at a toggle); the accelerations likewise with the centripetal
+  terms known
+* RRP ``P–X`` + guide: v_x = v_p + ω × PX along the guide (determinant ``PX · e``)
+* RPR slotted lever:   ω = (BA × v_A)/BA², sliding ṡ = e·v_A, α with the Coriolis 2ωṡ
+* RPP Scotch yoke:     the yoke point on the guide, v and a along the guide (no rotation)
+* image points:        v = v_p + ω × PX, a = a_p + α × PX − ω² PX
+
+The branch of every two-closure dyad is taken from the staged assembly at the scene's own
+input (the scene's words) and then *followed continuously*: the sign σ of the chosen
+closure relative to its base line is kept, which is continuity as long as the closure
+discriminant stays positive.  Where it reaches zero the mechanism is at a toggle: the
+reachable range ends there (a limit position) or, if the discriminant only touches zero, the
+branches meet (a change point); both are reported in :attr:`Sweep.limits`, never crossed
+silently.
+
+This module must not import shapely (``polygons.geometry`` is the only shapely importer);
+the two angle thresholds below are the same numbers as there (a test checks it).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable, Iterable, Mapping, Sequence
+
+import numpy as np
+
+from .errors import AssemblyError, ConstructionError, PolygonsError
+from .plan import RPR, RRP, RRR, CrankDyad, Image, Plan, SliderDriveDyad, make_plan
+from . import plan as _plan_mod
+from .position import assemble
+from .scene import Crank, Scene
+
+#: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
+PARALLEL_DEG = 1e-5
+WARN_DEG = 1.0
+_SIN_PARALLEL = math.sin(math.radians(PARALLEL_DEG))
+_SIN_WARN = math.sin(math.radians(WARN_DEG))
+#: probe points used to find the reachable range and the toggles inside it
+PROBE = 4096
+#: default chunk of positions evaluated per numpy pass (memory and cache friendly)
+CHUNK = 1 << 16
+
+RPP = getattr(_plan_mod, "RPP", None)   # Scotch-yoke dyad (pin in the slot of a translating yoke)
+
+
+# ---------------------------------------------------------------- results
+@dataclass(frozen=True)
+class Limit:
+    """A limit of the reachable range or a toggle / change point inside it."""
+
+    input: float        # θ in rad (crank driver) or s in m (slider driver)
+    kind: str           # 'limit' (the range ends here) | 'toggle' (branches meet, sweep split)
+                        # | 'near-toggle' (smallest angle below WARN_DEG but not zero)
+    point: str          # the point whose dyad degenerates
+    reason: str         # in words, e.g. "BC and CD in line"
+    angle_deg: float    # intersection angle of the construction there
+
+
+@dataclass
+class Sweep:
+    """All positions of one sweep, SI units.
+
+    ``pos``, ``vel``, ``acc``: label -> array (2, N) (x row, y row);  ``omega``, ``alpha``:
+    link name -> array (N,);  ``slide_v``/``slide_a``: slider or pin label -> array (N,)
+    (signed along the guide, or along the slot away from the lever pivot);  ``travel``: slider
+    label -> position along its guide from its ``through`` point;  ``angle_deg``: the smallest
+    intersection angle of the construction at each position (its conditioning).
+    """
+
+    scene: Scene
+    plan: Plan
+    input_kind: str                 # 'crank' | 'slider'
+    inputs: np.ndarray              # θ (rad) or s (m), shape (N,)
+    omega_in: float                 # input rate (rad/s or m/s)
+    alpha_in: float
+    full_cycle: bool
+    range: tuple[float, float]      # reachable range (closed), in input units
+    limits: tuple[Limit, ...]
+    segments: tuple[tuple[int, int], ...]   # [start, stop) index ranges between toggles
+    branches: Mapping[str, int]     # label -> σ (+1 / −1) followed over the sweep
+    pos: dict
+    vel: dict
+    acc: dict
+    omega: dict
+    alpha: dict
+    slide_v: dict
+    slide_a: dict
+    travel: dict
+    coriolis: dict
+    angle_deg: np.ndarray
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def n(self) -> int:
+        return int(self.inputs.shape[0])
+
+    def position(self, label: str) -> np.ndarray:
+        """(N, 2) positions of ``label``."""
+        return _as_n2(self.pos[label], self.n)
+
+    def velocity(self, label: str) -> np.ndarray:
+        return _as_n2(self.vel[label], self.n)
+
+    def acceleration(self, label: str) -> np.ndarray:
+        return _as_n2(self.acc[label], self.n)
+
+
+def _as_n2(xy, n: int) -> np.ndarray:
+    if xy is None:
+        return np.zeros((n, 2))
+    x, y = xy
+    out = np.empty((n, 2))
+    out[:, 0] = x
+    out[:, 1] = y
+    return out
+
+
+# ---------------------------------------------------------------- the compiled program
+@dataclass(frozen=True)
+class _Op:
+    kind: str
+    label: str                    # point placed (first one for RPR)
+    data: tuple
+
+
+@dataclass(frozen=True)
+class Program:
+    """The plan's dyads with every constant looked up once (lengths, guides, branches)."""
+
+    scene: Scene
+    plan: Plan
+    ops: tuple[_Op, ...]
+    ground: Mapping[str, tuple[float, float]]
+    input_kind: str
+    input0: float
+    rate: float
+    rate2: float
+    branches: Mapping[str, int]
+    links: tuple[tuple[str, str, str], ...]   # (name, a, b) of every link to report
+    scale: float
+
+
+def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
+    """Look every constant up once and take each two-closure branch from the staged assembly
+    at the scene's own input (raises the staged :class:`AssemblyError` / ``BranchError`` if
+    the scene itself cannot be assembled)."""
+    plan = plan or make_plan(scene)
+    placement = assemble(plan)
+    pos0 = {k: np.array(v) for k, v in placement.points.items()}
+    ground = {k: (float(v[0]), float(v[1])) for k, v in scene.ground.items()}
+    ops: list[_Op] = []
+    branches: dict[str, int] = {}
+    drv = scene.driver
+    for d in plan.dyads:
+        if isinstance(d, CrankDyad):
+            ops.append(_Op("crank", d.tip, (d.pivot, scene.links[d.link].length, d.link)))
+        elif isinstance(d, SliderDriveDyad):
+            g = scene.sliders[d.point]
+            ops.append(_Op("drive", d.point, (g.through, g.direction)))
+        elif isinstance(d, RRR):
+            r1 = scene.links[d.link_p].length
+            r2 = scene.links[d.link_q].length
+            p, q, x = pos0[d.p], pos0[d.q], pos0[d.x]
+            side = float((q - p)[0] * (x - p)[1] - (q - p)[1] * (x - p)[0])
+            sigma = _sign_or_toggle(side, d.x, f"{d.link_p} and {d.link_q} are in line", scene)
+            branches[d.x] = sigma
+            ops.append(_Op("rrr", d.x, (d.p, d.q, r1, r2, sigma, d.link_p, d.link_q)))
+        elif isinstance(d, RRP):
+            g = scene.sliders[d.x]
+            L = scene.links[d.link].length
+            e = np.array(g.direction)
+            side = float((pos0[d.x] - pos0[d.p]) @ e)
+            sigma = _sign_or_toggle(side, d.x, f"{d.link} is perpendicular to the guide of "
+                                               f"{d.x}", scene)
+            branches[d.x] = sigma
+            ops.append(_Op("rrp", d.x, (d.p, L, g.through, g.direction, sigma, d.link)))
+        elif isinstance(d, RPR):
+            slot = scene.slots[d.pin]
+            ops.append(_Op("rpr", d.coincident, (d.pin, d.pivot, d.far, slot.far_length,
+                                                 d.lever)))
+        elif isinstance(d, Image):
+            bp = scene.points[d.x]
+            ops.append(_Op("image", d.x, (d.link, d.p, d.q, bp.along, bp.fraction, bp.left)))
+        elif RPP is not None and isinstance(d, RPP):
+            g = scene.sliders[d.x]
+            ops.append(_Op("rpp", d.x, (d.pin, g.through, g.direction, g.slot_direction)))
+        else:  # pragma: no cover - a dyad type this module does not know yet
+            raise PolygonsError(f"sweeps do not support the dyad {type(d).__name__} yet",
+                                file=scene.file)
+    if isinstance(drv, Crank):
+        kind, x0, rate, rate2 = "crank", drv.angle, drv.omega, drv.alpha
+    else:
+        kind, x0, rate, rate2 = "slider", drv.position, drv.velocity, drv.acceleration
+    links = []
+    for name, link in scene.links.items():
+        links.append((name, link.a, link.b))
+    for slot in scene.slots.values():
+        if slot.lever not in scene.links:
+            links.append((slot.lever, slot.pivot, slot.coincident))
+    lengths = [l.length for l in scene.links.values() if l.length]
+    coords = [abs(c) for v in scene.ground.values() for c in v]
+    return Program(scene, plan, tuple(ops), ground, kind, float(x0), float(rate), float(rate2),
+                   branches, tuple(links), max(lengths + coords + [1e-300]))
+
+
+def _sign_or_toggle(side: float, x: str, why: str, scene: Scene) -> int:
+    if side > 0:
+        return 1
+    if side < 0:
+        return -1
+    raise ConstructionError(f"the scene's own position is a toggle for {x} ({why}): the two "
+                            f"closures coincide, so there is no branch to follow; state the "
+                            f"scene at another input", file=scene.file, where=x)
+
+
+# ---------------------------------------------------------------- vectorised evaluation
+def evaluate(prog: Program, inputs, *, rates: bool = True) -> dict:
+    """Solve every position in ``inputs`` (θ in rad or s in m) at once.
+
+    Returns a dict with ``pos``, ``vel``, ``acc`` (label -> (x, y) arrays, ``None`` for a
+    fixed point's velocity/acceleration), ``omega``, ``alpha``, ``slide_v``, ``slide_a``,
+    ``travel``, ``coriolis`` and ``margin`` (the sine of the smallest intersection angle of
+    the construction; negative where a dyad cannot close, NaN downstream of that).
+    """
+    t = np.asarray(inputs, dtype=float)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        return _evaluate(prog, t, rates)
+
+
+def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
+    P: dict = dict(prog.ground)
+    V: dict = {k: None for k in prog.ground}
+    A: dict = {k: None for k in prog.ground}
+    W: dict = {}
+    AL: dict = {}
+    SV: dict = {}
+    SA: dict = {}
+    TR: dict = {}
+    COR: dict = {}
+    margin = None
+    n = t.shape
+
+    def mmin(m):
+        nonlocal margin
+        margin = m if margin is None else np.minimum(margin, m)
+
+    for op in prog.ops:
+        k, X, data = op.kind, op.label, op.data
+        if k == "crank":
+            pivot, r, link = data
+            px, py = P[pivot]
+            c = np.cos(t)
+            s = np.sin(t)
+            rx = r * c
+            ry = r * s
+            P[X] = (px + rx, py + ry)
+            w, al = prog.rate, prog.rate2
+            W[link], AL[link] = w, al
+            if rates:
+                V[X] = (-w * ry, w * rx)
+                w2 = -w * w
+                if al:
+                    A[X] = (w2 * rx - al * ry, w2 * ry + al * rx)
+                else:
+                    A[X] = (w2 * rx, w2 * ry)
+        elif k == "drive":
+            (gx, gy), (ex, ey) = data
+            P[X] = (gx + t * ex, gy + t * ey)
+            TR[X] = t
+            if rates:
+                v, a = prog.rate, prog.rate2
+                V[X] = (np.full(n, v * ex), np.full(n, v * ey))
+                A[X] = (np.full(n, a * ex), np.full(n, a * ey))
+                SV[X] = np.full(n, v)
+                SA[X] = np.full(n, a)
+        elif k == "rrr":
+            p, q, r1, r2, sigma, lp, lq = data
+            px, py = P[p]
+            qx, qy = P[q]
+            dx = qx - px
+            dy = qy - py
+            d2 = dx * dx + dy * dy
+            af = 0.5 + (0.5 * (r1 * r1 - r2 * r2)) / d2
+            h2 = (r1 * r1) / d2 - af * af
+            hf = np.sqrt(h2)
+            if sigma < 0:
+                hf = -hf
+            m1x = af * dx - hf * dy          # PX
+            m1y = af * dy + hf * dx
+            P[X] = (px + m1x, py + m1y)
+            det = hf * d2                    # PX × QX
+            sg = np.abs(det) / (r1 * r2)     # sine of the angle between the two lines
+            mmin(np.where(h2 >= 0, sg, -np.sqrt(-h2) * d2 / (r1 * r2)))
+            if not rates:
+                continue
+            m2x = m1x - dx                   # QX
+            m2y = m1y - dy
+            vp, vq = V[p], V[q]
+            dvx, dvy = _diff(vq, vp)
+            inv = 1.0 / det
+            wp = (dvx * m2x + dvy * m2y) * inv
+            wq = (dvx * m1x + dvy * m1y) * inv
+            vx = -wp * m1y
+            vy = wp * m1x
+            if vp is not None:
+                vx = vx + vp[0]
+                vy = vy + vp[1]
+            V[X] = (vx, vy)
+            W[lp], W[lq] = wp, wq
+            ap, aq = A[p], A[q]
+            wp2 = wp * wp
+            wq2 = wq * wq
+            Rx = wp2 * m1x - wq2 * m2x
+            Ry = wp2 * m1y - wq2 * m2y
+            if aq is not None:
+                Rx = Rx + aq[0]
+                Ry = Ry + aq[1]
+            if ap is not None:
+                Rx = Rx - ap[0]
+                Ry = Ry - ap[1]
+            alp = (Rx * m2x + Ry * m2y) * inv
+            alq = (Rx * m1x + Ry * m1y) * inv
+            ax = -alp * m1y - wp2 * m1x
+            ay = alp * m1x - wp2 * m1y
+            if ap is not None:
+                ax = ax + ap[0]
+                ay = ay + ap[1]
+            A[X] = (ax, ay)
+            AL[lp], AL[lq] = alp, alq
+        elif k == "rrp":
+            p, L, (gx, gy), (ex, ey), sigma, link = data
+            px, py = P[p]
+            wx = gx - px
+            wy = gy - py
+            bq = ex * wx + ey * wy
+            disc = bq * bq - (wx * wx + wy * wy - L * L)
+            root = np.sqrt(disc)
+            me = root if sigma > 0 else -root       # PX · e
+            tt = me - bq
+            mx = wx + tt * ex                        # PX
+            my = wy + tt * ey
+            P[X] = (gx + tt * ex, gy + tt * ey)
+            TR[X] = tt
+            mmin(np.where(disc >= 0, root / L, -np.sqrt(-disc) / L))
+            if not rates:
+                continue
+            vp, ap = V[p], A[p]
+            inv = 1.0 / me
+            cme = mx * ey - my * ex                  # PX × e
+            w = (vp[0] * ey - vp[1] * ex) * inv if vp is not None else 0.0 * me
+            sd = w * cme
+            if vp is not None:
+                sd = sd + (ex * vp[0] + ey * vp[1])
+            V[X] = (sd * ex, sd * ey)
+            w2 = w * w
+            bx = -w2 * mx
+            by = -w2 * my
+            if ap is not None:
+                bx = bx + ap[0]
+                by = by + ap[1]
+            al = (bx * ey - by * ex) * inv
+            sdd = ex * bx + ey * by + al * cme
+            A[X] = (sdd * ex, sdd * ey)
+            W[link], AL[link] = w, al
+            SV[X], SA[X] = sd, sdd
+        elif k == "rpr":
+            pin, pivot, far, far_len, lever = data
+            ax_, ay_ = P[pin]
+            bx_, by_ = P[pivot]
+            rx = ax_ - bx_
+            ry = ay_ - by_
+            rho2 = rx * rx + ry * ry
+            rho = np.sqrt(rho2)
+            P[X] = P[pin]
+            mmin(rho / prog.scale)
+            if far is not None:
+                f = far_len / rho
+                fx, fy = f * rx, f * ry
+                P[far] = (bx_ + fx, by_ + fy)
+            if not rates:
+                continue
+            va, aa = V[pin], A[pin]
+            w = (rx * va[1] - ry * va[0]) / rho2
+            sd = (rx * va[0] + ry * va[1]) / rho
+            al = (rx * aa[1] - ry * aa[0]) / rho2 - 2.0 * w * sd / rho
+            w2 = w * w
+            sdd = (rx * aa[0] + ry * aa[1]) / rho + w2 * rho
+            W[lever], AL[lever] = w, al
+            SV[pin], SA[pin] = sd, sdd
+            c2 = 2.0 * w * sd / rho
+            COR[pin] = (-c2 * ry, c2 * rx)
+            V[X] = (-w * ry, w * rx)
+            A[X] = (-al * ry - w2 * rx, al * rx - w2 * ry)
+            if far is not None:
+                V[far] = (-w * fy, w * fx)
+                A[far] = (-al * fy - w2 * fx, al * fx - w2 * fy)
+        elif k == "image":
+            link, p, q, along, fraction, left = data
+            px, py = P[p]
+            qx, qy = P[q]
+            dx = qx - px
+            dy = qy - py
+            n2 = dx * dx + dy * dy
+            nn = np.sqrt(n2)
+            ux = dx / nn
+            uy = dy / nn
+            al_ = along if along is not None else fraction * nn
+            rx = al_ * ux - left * uy
+            ry = al_ * uy + left * ux
+            P[X] = (px + rx, py + ry)
+            if not rates:
+                continue
+            vp, vq = V[p], V[q]
+            if link not in W:
+                dvx, dvy = _diff(vq, vp)
+                W[link] = (dx * dvy - dy * dvx) / n2
+            w = W[link]
+            vx, vy = -w * ry, w * rx
+            if vp is not None:
+                vx, vy = vx + vp[0], vy + vp[1]
+            V[X] = (vx, vy)
+            ap, aq = A[p], A[q]
+            if link not in AL:
+                dax, day = _diff(aq, ap)
+                AL[link] = (dx * day - dy * dax) / n2
+            al = AL[link]
+            w2 = w * w
+            ax, ay = -al * ry - w2 * rx, al * rx - w2 * ry
+            if ap is not None:
+                ax, ay = ax + ap[0], ay + ap[1]
+            A[X] = (ax, ay)
+        elif k == "rpp":
+            pin, (gx, gy), (ex, ey), (sx, sy) = data
+            den = ex * sy - ey * sx                  # guide × slot
+            ppx, ppy = P[pin]
+            tt = ((ppx - gx) * sy - (ppy - gy) * sx) / den
+            P[X] = (gx + tt * ex, gy + tt * ey)
+            TR[X] = tt
+            mmin(np.full(n, abs(den)))
+            if not rates:
+                continue
+            vp, ap = V[pin], A[pin]
+            sd = (vp[0] * sy - vp[1] * sx) / den
+            sdd = (ap[0] * sy - ap[1] * sx) / den
+            V[X] = (sd * ex, sd * ey)
+            A[X] = (sdd * ex, sdd * ey)
+            SV[X], SA[X] = sd, sdd
+        else:  # pragma: no cover
+            raise AssertionError(k)
+
+    if rates:
+        for name, a, b in prog.links:
+            if name in W or a not in P or b not in P:
+                continue
+            dx, dy = _diff(P[b], P[a])
+            n2 = dx * dx + dy * dy
+            dvx, dvy = _diff(V[b], V[a])
+            dax, day = _diff(A[b], A[a])
+            W[name] = (dx * dvy - dy * dvx) / n2
+            AL[name] = (dx * day - dy * dax) / n2
+    if margin is None:
+        margin = np.ones(n)
+    return {"pos": P, "vel": V, "acc": A, "omega": W, "alpha": AL, "slide_v": SV,
+            "slide_a": SA, "travel": TR, "coriolis": COR, "margin": margin}
+
+
+def _diff(b, a):
+    """b − a for (x, y) pairs where ``None`` is the zero vector."""
+    if b is None and a is None:
+        return 0.0, 0.0
+    if a is None:
+        return b
+    if b is None:
+        return -a[0], -a[1]
+    return b[0] - a[0], b[1] - a[1]
+
+
+# ---------------------------------------------------------------- range and toggles
+def _margin(prog: Program, x) -> np.ndarray:
+    return evaluate(prog, np.atleast_1d(np.asarray(x, dtype=float)), rates=False)["margin"]
+
+
+def _culprit(prog: Program, x: float) -> tuple[str, str]:
+    """The dyad with the smallest margin at input ``x``, and what degenerates there."""
+    P = evaluate(prog, np.array([x], dtype=float), rates=False)["pos"]
+    best = (math.inf, "", "")
+    for op in prog.ops:
+        k, X, data = op.kind, op.label, op.data
+        if k == "rrr":
+            p, q, r1, r2, sigma, lp, lq = data
+            d = math.hypot(_f0(P[q][0]) - _f0(P[p][0]), _f0(P[q][1]) - _f0(P[p][1]))
+            a = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
+            h2 = r1 * r1 - a * a
+            m = math.copysign(math.sqrt(abs(h2)), h2) * d / (r1 * r2)
+            how = ("stretched out" if abs(d - (r1 + r2)) < abs(d - abs(r1 - r2))
+                   else "folded back")
+            best = min(best, (m, X, f"{lp} and {lq} are in line ({p}, {X}, {q} collinear, "
+                                    f"{how})"))
+        elif k == "rrp":
+            p, L, g, e, sigma, link = data
+            wx, wy = g[0] - _f0(P[p][0]), g[1] - _f0(P[p][1])
+            bq = e[0] * wx + e[1] * wy
+            disc = bq * bq - (wx * wx + wy * wy - L * L)
+            m = math.copysign(math.sqrt(abs(disc)), disc) / L
+            best = min(best, (m, X, f"{link} is perpendicular to the guide of {X} (it "
+                                    f"reaches the guide no further)"))
+        elif k == "rpr":
+            pin, pivot, *_ = data
+            m = math.hypot(_f0(P[pin][0]) - _f0(P[pivot][0]),
+                           _f0(P[pin][1]) - _f0(P[pivot][1])) / prog.scale
+            best = min(best, (m, X, f"the pin {pin} is on the lever pivot {pivot}"))
+    return best[1], best[2]
+
+
+def _f0(v) -> float:
+    return float(v[0]) if np.ndim(v) else float(v)
+
+
+def _bisect(prog: Program, good: float, bad: float, iters: int = 200) -> float:
+    """The last input from ``good`` towards ``bad`` where the mechanism still closes."""
+    for _ in range(iters):
+        mid = 0.5 * (good + bad)
+        if mid == good or mid == bad:
+            break
+        m = _margin(prog, mid)[0]
+        if m >= 0:
+            good = mid
+        else:
+            bad = mid
+    return good
+
+
+def _golden_min(prog: Program, a: float, b: float, iters: int = 120) -> tuple[float, float]:
+    """Minimum of the margin on [a, b] (golden section; the margin is unimodal near a toggle)."""
+    g = (math.sqrt(5) - 1) / 2
+    c, d = b - g * (b - a), a + g * (b - a)
+    fc, fd = _margin(prog, c)[0], _margin(prog, d)[0]
+    for _ in range(iters):
+        if not (fc >= fd):    # also when fc is NaN
+            b, d, fd = d, c, fc
+            c = b - g * (b - a)
+            fc = _margin(prog, c)[0]
+        else:
+            a, c, fc = c, d, fd
+            d = a + g * (b - a)
+            fd = _margin(prog, d)[0]
+        if b - a <= 1e-15 * max(1.0, abs(a)):
+            break
+    x = 0.5 * (a + b)
+    return x, float(_margin(prog, x)[0])
+
+
+def _deg_of(m: float) -> float:
+    return math.degrees(math.asin(min(1.0, max(0.0, m))))
+
+
+def find_range(prog: Program, probe: int = PROBE):
+    """(full_cycle, (lo, hi), limits, toggles): the reachable range containing the scene's
+    input, its limit positions, and the toggles / near-toggles inside it."""
+    x0 = prog.input0
+    if prog.input_kind == "crank":
+        period = 2.0 * math.pi
+        xs = x0 + period * np.arange(probe) / probe
+        closed = True
+    else:
+        span = 2.0 * (sum(l.length for l in prog.scene.links.values() if l.length)
+                      + max([math.hypot(*g) for g in prog.ground.values()] + [0.0]))
+        span = max(span, prog.scale)
+        xs = x0 + span * np.linspace(-1.0, 1.0, 2 * (probe // 2) + 1)
+        closed = False
+    m = _margin(prog, xs)
+    ok = m >= 0
+    limits: list[Limit] = []
+    toggles: list[Limit] = []
+    n = len(xs)
+    i0 = 0 if closed else n // 2
+    # refine the local minima that come close to zero: a gap narrower than the probe spacing
+    # is found here, and so is a toggle that only touches zero (a change point)
+    for i in range(n):
+        if not ok[i]:
+            continue
+        l, r = (i - 1) % n, (i + 1) % n
+        if not closed and (i == 0 or i == n - 1):
+            continue
+        if not (m[i] <= m[l] and m[i] <= m[r] and m[i] < _SIN_WARN) or not (ok[l] and ok[r]):
+            continue
+        a = xs[i] - (period / probe if closed else xs[1] - xs[0])
+        b = xs[i] + (period / probe if closed else xs[1] - xs[0])
+        xm, fm = _golden_min(prog, a, b)
+        if fm < 0 or not np.isfinite(fm):
+            # an unreachable sliver between two probe points: split the probe there
+            if closed:
+                ok[i] = ok[i]  # neighbours stay valid; mark the sliver through the limits
+            toggles.append(Limit(xm, "gap", *_culprit(prog, xm), angle_deg=0.0))
+        else:
+            kind = "toggle" if fm < _SIN_PARALLEL else "near-toggle"
+            toggles.append(Limit(xm, kind, *_culprit(prog, xm), angle_deg=_deg_of(fm)))
+    gaps = [t for t in toggles if t.kind == "gap"]
+    toggles = [t for t in toggles if t.kind != "gap"]
+
+    if ok.all() and not gaps and closed:
+        return True, (x0, x0 + period), (), tuple(toggles)
+    if not ok[i0]:
+        # the scene's own input closes (assemble succeeded) but the probe says no: the scene
+        # sits exactly at a limit; treat its input as the range's good end
+        pass
+    # walk from the scene's input to the first bad probe on each side
+    lo_i, hi_i = i0, i0
+    while True:
+        nxt = lo_i - 1
+        if closed:
+            if i0 - nxt >= n:
+                break
+            if not ok[nxt % n]:
+                break
+        elif nxt < 0 or not ok[nxt]:
+            break
+        lo_i = nxt
+    while True:
+        nxt = hi_i + 1
+        if closed:
+            if nxt - i0 >= n:
+                break
+            if not ok[nxt % n]:
+                break
+        elif nxt >= n or not ok[nxt]:
+            break
+        hi_i = nxt
+    step = (period / probe) if closed else (xs[1] - xs[0])
+    x_at = (lambda j: x0 + j * step) if closed else (lambda j: xs[j])
+    lo_good, hi_good = x_at(lo_i), x_at(hi_i)
+    lo_bad, hi_bad = lo_good - step, hi_good + step
+    # gaps (unreachable slivers between probes) inside the walk shorten it
+    for gp in gaps:
+        xg = gp.input
+        if closed:
+            # bring xg into (x0 - period, x0 + period) nearest the walked interval
+            while xg < lo_good:
+                xg += period
+            while xg > hi_good + period:
+                xg -= period
+        if lo_good <= xg <= x0:
+            lo_bad, lo_good = xg, max(lo_good, xg - step)
+        elif x0 <= xg <= hi_good:
+            hi_bad, hi_good = xg, min(hi_good, xg + step)
+    unbounded = []
+    if not closed and lo_i == 0:
+        unbounded.append("lower")
+        lo = lo_good
+    else:
+        lo = _bisect(prog, x0 if lo_good > x0 else lo_good, lo_bad)
+    if not closed and hi_i == n - 1:
+        unbounded.append("upper")
+        hi = hi_good
+    else:
+        hi = _bisect(prog, x0 if hi_good < x0 else hi_good, hi_bad)
+    for x, side in ((lo, "lower"), (hi, "upper")):
+        if side in unbounded:
+            limits.append(Limit(x, "unbounded", "", f"the mechanism still closes here; the "
+                                                     f"probe stopped at ±{span:.3g} m", 90.0))
+        else:
+            pt, why = _culprit(prog, x)
+            limits.append(Limit(x, "limit", pt, why, _deg_of(max(_margin(prog, x)[0], 0.0))))
+    inside = []
+    for tg in toggles:
+        xt = tg.input
+        if closed:
+            while xt < lo:
+                xt += period
+            while xt > hi:
+                xt -= period
+        if lo < xt < hi:
+            inside.append(Limit(xt, tg.kind, tg.point, tg.reason, tg.angle_deg))
+    return False, (lo, hi), tuple(limits), tuple(inside)
+
+
+# ---------------------------------------------------------------- the sweep
+def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = None,
+          chunk: int = CHUNK, progress: Callable[[int], None] | None = None,
+          probe: int = PROBE) -> Sweep:
+    """Solve ``scene`` over a full input revolution (or its reachable range).
+
+    Without ``inputs``: a crank driver is swept over θ = 0 … 360° in ``steps`` equal steps
+    when every angle closes, else over the reachable range around the scene's angle
+    (``steps`` points strictly inside it: the limit positions themselves have infinite
+    rates); a slider driver over its reachable travel.  With ``inputs`` (θ in rad or s in
+    m) exactly those positions are solved, all of them in the branch of the scene's own
+    position.  ``progress(k)`` is called with the number of positions done after each chunk.
+    """
+    prog = compile_plan(scene)
+    limits: tuple[Limit, ...] = ()
+    toggles: tuple[Limit, ...] = ()
+    if inputs is None:
+        if steps < 2:
+            raise PolygonsError(f"a sweep needs at least 2 steps, got {steps}", file=scene.file)
+        full, (lo, hi), limits, toggles = find_range(prog, probe)
+        if full:
+            xs = 2.0 * math.pi * np.arange(steps) / steps
+            rng = (0.0, 2.0 * math.pi)
+        else:
+            xs = lo + (hi - lo) * (np.arange(steps) + 0.5) / steps
+            rng = (lo, hi)
+    else:
+        xs = np.asarray(inputs, dtype=float).reshape(-1)
+        full = False
+        rng = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 0.0)
+    res = run(prog, xs, chunk=chunk, progress=progress)
+    segments = _segments(xs, toggles, full)
+    warnings = []
+    for tg in toggles:
+        where = _fmt_input(prog, tg.input)
+        if tg.kind == "toggle":
+            warnings.append(f"toggle at {where}: {tg.reason}; the branches of {tg.point} meet "
+                            f"here, the sweep is split and the branch on the same side is "
+                            f"followed beyond it")
+        else:
+            warnings.append(f"near toggle at {where}: {tg.reason}; the construction lines "
+                            f"meet at only {tg.angle_deg:.3g}°")
+    bad = ~np.isfinite(res["margin"]) | (res["margin"] < 0)
+    if bad.any():
+        warnings.append(f"{int(bad.sum())} of {len(xs)} positions cannot be assembled in the "
+                        f"followed branch (NaN in the results)")
+    ang = np.degrees(np.arcsin(np.clip(res["margin"], 0.0, 1.0)))
+    return Sweep(scene, prog.plan, prog.input_kind, xs, prog.rate, prog.rate2, full, rng,
+                 tuple(limits) + tuple(toggles), segments, dict(prog.branches),
+                 res["pos"], res["vel"], res["acc"], res["omega"], res["alpha"],
+                 res["slide_v"], res["slide_a"], res["travel"], res["coriolis"], ang,
+                 tuple(warnings))
+
+
+def run(prog: Program, xs: np.ndarray, *, chunk: int = CHUNK,
+        progress: Callable[[int], None] | None = None) -> dict:
+    """:func:`evaluate` in chunks of ``chunk`` positions, results concatenated as (2, N) /
+    (N,) arrays (fixed points keep scalar positions and ``None`` rates)."""
+    n = len(xs)
+    if n <= chunk:
+        out = _materialise(evaluate(prog, xs), n)
+        if progress:
+            progress(n)
+        return out
+    parts = []
+    for s in range(0, n, chunk):
+        parts.append(_materialise(evaluate(prog, xs[s:s + chunk]), min(chunk, n - s)))
+        if progress:
+            progress(min(chunk, n - s))
+    return _concat(parts)
+
+
+def _materialise(res: dict, n: int) -> dict:
+    out = {}
+    for key in ("pos", "vel", "acc", "coriolis"):
+        d = {}
+        for lab, xy in res[key].items():
+            if xy is None:
+                d[lab] = None
+            elif np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0:
+                d[lab] = xy if key == "pos" else _full2(xy, n)
+            else:
+                arr = np.empty((2, n))
+                arr[0] = xy[0]
+                arr[1] = xy[1]
+                d[lab] = arr
+        out[key] = d
+    for key in ("omega", "alpha", "slide_v", "slide_a", "travel"):
+        out[key] = {k: (np.full(n, float(v)) if np.ndim(v) == 0 else np.asarray(v))
+                    for k, v in res[key].items()}
+    out["margin"] = np.broadcast_to(res["margin"], (n,)).copy()
+    return out
+
+
+def _full2(xy, n):
+    arr = np.empty((2, n))
+    arr[0] = xy[0]
+    arr[1] = xy[1]
+    return arr
+
+
+def _concat(parts: list[dict]) -> dict:
+    out = {}
+    first = parts[0]
+    for key in ("pos", "vel", "acc", "coriolis"):
+        out[key] = {}
+        for lab, v in first[key].items():
+            if v is None or isinstance(v, tuple):
+                out[key][lab] = v
+            else:
+                out[key][lab] = np.concatenate([p[key][lab] for p in parts], axis=1)
+    for key in ("omega", "alpha", "slide_v", "slide_a", "travel"):
+        out[key] = {k: np.concatenate([p[key][k] for p in parts]) for k in first[key]}
+    out["margin"] = np.concatenate([p["margin"] for p in parts])
+    return out
+
+
+def _segments(xs: np.ndarray, toggles: Iterable[Limit], full: bool):
+    cuts = []
+    for tg in toggles:
+        if tg.kind != "toggle":
+            continue
+        x = tg.input % (2 * math.pi) if full else tg.input
+        cuts.append(int(np.searchsorted(xs, x)))
+    cuts = sorted(set(c for c in cuts if 0 < c < len(xs)))
+    bounds = [0] + cuts + [len(xs)]
+    return tuple((bounds[i], bounds[i + 1]) for i in range(len(bounds) - 1))
+
+
+def _fmt_input(prog: Program, x: float) -> str:
+    if prog.input_kind == "crank":
+        return f"θ = {math.degrees(x) % 360.0:.6g}°"
+    return f"s = {1e3 * x:.6g} mm"
+
+
+def fmt_input(sw: Sweep, x: float) -> str:
+    return f"θ = {math.degrees(x):.6g}°" if sw.input_kind == "crank" else f"s = {1e3 * x:.6g} mm"
+
+
+__all__ = ["Sweep", "Limit", "Program", "compile_plan", "evaluate", "run", "sweep",
+           "find_range", "PARALLEL_DEG", "WARN_DEG"]
