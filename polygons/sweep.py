@@ -383,7 +383,9 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             rho2 = rx * rx + ry * ry
             rho = np.sqrt(rho2)
             P[X] = P[pin]
-            mmin(rho / prog.scale)
+            # the lines of an RPR construction are always perpendicular; only a pin on the
+            # pivot (no slot direction) degenerates it
+            mmin(np.where(rho > 1e-12 * prog.scale, 1.0, 0.0))
             if far is not None:
                 f = far_len / rho
                 fx, fy = f * rx, f * ry
@@ -820,9 +822,45 @@ def _fmt_input(prog: Program, x: float) -> str:
     return f"s = {1e3 * x:.6g} mm"
 
 
+@dataclass(frozen=True)
+class Harmonic:
+    """The simple-harmonic curve a slider would follow if it were driven by the crank pin's
+    projection on its line of stroke (a Scotch yoke with the same crank): ``travel``,
+    ``velocity``, ``acceleration`` arrays (N,), signed along the slider's guide; ``offset`` is
+    the constant added to the projection so both strokes have the same centre (the harmonic
+    *motion* has no preferred origin)."""
+
+    point: str
+    pin: str
+    travel: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    offset: float
+
+
+def harmonic(sw: Sweep, point: str) -> Harmonic:
+    """The SHM curve for slider ``point``: the crank pin projected on ``point``'s guide."""
+    scene = sw.scene
+    drv = scene.driver
+    if not isinstance(drv, Crank):
+        raise PolygonsError("the simple-harmonic comparison needs a crank driver",
+                            file=scene.file)
+    if point not in scene.sliders or point not in sw.travel:
+        raise PolygonsError(f"the simple-harmonic comparison is for a slider; {point} has no "
+                            f"guide", file=scene.file, where=point)
+    ex, ey = scene.sliders[point].direction
+    px, py = scene.ground[drv.pivot]
+    (ax, ay), (vx, vy), (aax, aay) = sw.pos[drv.tip], sw.vel[drv.tip], sw.acc[drv.tip]
+    proj = (ax - px) * ex + (ay - py) * ey
+    tr = sw.travel[point]
+    offset = float(0.5 * (np.nanmax(tr) + np.nanmin(tr)) - 0.5 * (np.nanmax(proj) + np.nanmin(proj)))
+    return Harmonic(point, drv.tip, proj + offset, vx * ex + vy * ey, aax * ex + aay * ey,
+                    offset)
+
+
 def fmt_input(sw: Sweep, x: float) -> str:
     return f"θ = {math.degrees(x):.6g}°" if sw.input_kind == "crank" else f"s = {1e3 * x:.6g} mm"
 
 
-__all__ = ["Sweep", "Limit", "Program", "compile_plan", "evaluate", "run", "sweep",
+__all__ = ["Sweep", "Limit", "Harmonic", "harmonic", "Program", "compile_plan", "evaluate", "run", "sweep",
            "find_range", "PARALLEL_DEG", "WARN_DEG"]

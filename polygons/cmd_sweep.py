@@ -1,0 +1,373 @@
+"""``polygons sweep CASE.toml --steps N``: a full input revolution (or the reachable range),
+solved at once, written as CSV and plotted (PNG + SVG).
+
+Chosen points and links come from ``--points`` / ``--links`` or the scene's optional
+``[sweep]`` table::
+
+    [sweep]
+    points = ["B"]      # displacement, velocity, acceleration against the input
+    links = ["AB"]      # ω and α against the input
+    steps = 720
+    shm = true          # overlay the simple-harmonic curve (crank pin projected on the guide)
+    unit = "mm"         # display unit of length in the summary and the plots
+"""
+from __future__ import annotations
+
+import csv
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from .errors import SceneError, UnknownKeyError, UnknownLabelError, suggest
+from .scene import Crank, Scene, load_scene
+from .sweep import Sweep, harmonic, sweep
+
+SWEEP_KEYS = ("points", "links", "steps", "shm", "unit")
+#: above this many positions the summary draws a progress bar (on a terminal)
+PROGRESS_FROM = 100_000
+#: most points drawn per curve (the maxima are always taken from every position)
+PLOT_POINTS = 4000
+
+
+def register(sub) -> None:
+    p = sub.add_parser("sweep", help="solve a scene over a full input revolution: CSV + plots",
+                       description="Solve a scene over a full input revolution (or its "
+                                   "reachable range, reporting the limits), all positions at "
+                                   "once; write CSV and plots of displacement, velocity and "
+                                   "acceleration of chosen points and ω/α of chosen links.")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("--steps", type=int, default=None,
+                   help="positions over the cycle (default: [sweep] steps or 360)")
+    p.add_argument("--points", help="comma-separated point labels to plot (default: [sweep] "
+                                    "points, else the sliders, else the last point placed)")
+    p.add_argument("--links", help="comma-separated link names for ω/α (default: [sweep] "
+                                   "links, else every link but the crank)")
+    p.add_argument("--out", default="out", help="output directory (default: out)")
+    p.add_argument("--formats", default="png,svg", help="plot formats (default: png,svg)")
+    p.add_argument("--no-plot", action="store_true", help="write the CSV only")
+    p.add_argument("--shm", action="store_true", default=None,
+                   help="overlay the simple-harmonic curve on each slider (crank pin "
+                        "projected on its guide) and report the difference")
+    p.add_argument("--unit", choices=("mm", "m"), default=None,
+                   help="display unit of length (default: [sweep] unit, else mm when every "
+                        "link is shorter than 1 m)")
+    p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
+                   help=f"progress bar on stderr (auto: on a terminal, from "
+                        f"{PROGRESS_FROM:,} positions)")
+    p.set_defaults(func=run)
+
+
+def _options(scene: Scene, args) -> dict:
+    raw = dict(scene.extra.get("sweep", {}))
+    for key in raw:
+        if key not in SWEEP_KEYS:
+            raise UnknownKeyError(f"unknown key {key!r}: {suggest(key, SWEEP_KEYS)}",
+                                  file=scene.file, where=f"sweep.{key}")
+
+    def labels(value, where):
+        if isinstance(value, str):
+            value = [v.strip() for v in value.split(",") if v.strip()]
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+            raise SceneError("expected a list of labels, e.g. [\"B\", \"C\"]", file=scene.file,
+                             where=where)
+        return value
+
+    points = labels(args.points, "--points") if args.points else (
+        labels(raw["points"], "sweep.points") if "points" in raw else None)
+    links = labels(args.links, "--links") if args.links else (
+        labels(raw["links"], "sweep.links") if "links" in raw else None)
+    steps = args.steps if args.steps is not None else raw.get("steps", 360)
+    if isinstance(steps, bool) or not isinstance(steps, int) or steps < 2:
+        raise SceneError(f"steps must be a whole number ≥ 2, got {steps!r}", file=scene.file,
+                         where="sweep.steps" if args.steps is None else "--steps")
+    shm = args.shm if args.shm is not None else raw.get("shm", False)
+    if not isinstance(shm, bool):
+        raise SceneError("shm must be true or false", file=scene.file, where="sweep.shm")
+    unit = args.unit or raw.get("unit")
+    if unit is None:
+        unit = "mm" if max(l.length for l in scene.links.values() if l.length) < 1.0 else "m"
+    if unit not in ("mm", "m"):
+        raise SceneError(f"unit must be 'mm' or 'm', got {unit!r}", file=scene.file,
+                         where="sweep.unit")
+    return {"points": points, "links": links, "steps": steps, "shm": shm, "unit": unit}
+
+
+def _default_points(sw: Sweep) -> list[str]:
+    scene = sw.scene
+    drv = scene.driver
+    sliders = [s for s in scene.sliders if s in sw.travel
+               and not (not isinstance(drv, Crank) and s == drv.point)]
+    if sliders:
+        return sliders
+    last = sw.plan.dyads[-1].placed
+    return [last[-1]]
+
+
+def _default_links(sw: Sweep) -> list[str]:
+    drv = sw.scene.driver
+    crank = drv.link if isinstance(drv, Crank) else None
+    return [name for name in sw.omega if name != crank]
+
+
+def run(args) -> int:
+    scene = load_scene(args.scene)
+    opt = _options(scene, args)
+    n = opt["steps"]
+    bar = None
+    show = {"on": True, "off": False, "auto": n >= PROGRESS_FROM and sys.stderr.isatty()}[
+        args.progress]
+    if show:
+        from tqdm import tqdm
+        bar = tqdm(total=n, unit="pos", unit_scale=True, desc="sweep", file=sys.stderr,
+                   leave=False)
+    try:
+        sw = sweep(scene, n, progress=bar.update if bar else None)
+    finally:
+        if bar is not None:
+            bar.close()
+
+    for lab in opt["points"] or []:
+        if lab not in sw.pos:
+            raise UnknownLabelError(f"unknown point {lab!r}: {suggest(lab, sw.pos)}",
+                                    file=scene.file, where="sweep.points")
+    for name in opt["links"] or []:
+        if name not in sw.omega:
+            raise UnknownLabelError(f"unknown link {name!r}: {suggest(name, sw.omega)}",
+                                    file=scene.file, where="sweep.links")
+    points = opt["points"] or _default_points(sw)
+    links = opt["links"] if opt["links"] is not None else _default_links(sw)
+    shm = {}
+    if opt["shm"]:
+        for lab in points:
+            if lab in sw.travel and isinstance(scene.driver, Crank):
+                shm[lab] = harmonic(sw, lab)
+
+    out = Path(args.out)
+    stem = out / f"{Path(args.scene).stem}-sweep"
+    written = [write_csv(sw, points, links, stem.with_suffix(".csv"))]
+    if not args.no_plot:
+        formats = [f.strip() for f in args.formats.split(",") if f.strip()]
+        written += plot(sw, points, links, shm, opt["unit"], stem, formats)
+    sys.stdout.write(summary(sw, points, links, shm, opt["unit"], written))
+    return 0
+
+
+# ---------------------------------------------------------------- units and columns
+def _units(unit: str):
+    f = 1e3 if unit == "mm" else 1.0
+    return f, unit, f"{unit}/s", f"{unit}/s²"
+
+
+def _x_axis(sw: Sweep):
+    if sw.input_kind == "crank":
+        return np.degrees(sw.inputs), "crank angle θ (deg, CCW from +x)"
+    return sw.inputs * 1e3, "input slider position s (mm along its guide)"
+
+
+def columns(sw: Sweep, points, links):
+    """(header, unit, array) for every CSV column, SI."""
+    cols = []
+    if sw.input_kind == "crank":
+        cols.append(("theta", "rad", sw.inputs))
+        cols.append(("theta_deg", "deg", np.degrees(sw.inputs)))
+    else:
+        cols.append(("s_input", "m", sw.inputs))
+    for lab in points:
+        P = sw.position(lab)
+        cols += [(f"{lab}.x", "m", P[:, 0]), (f"{lab}.y", "m", P[:, 1])]
+        V, A = sw.velocity(lab), sw.acceleration(lab)
+        cols += [(f"{lab}.vx", "m/s", V[:, 0]), (f"{lab}.vy", "m/s", V[:, 1]),
+                 (f"{lab}.ax", "m/s^2", A[:, 0]), (f"{lab}.ay", "m/s^2", A[:, 1])]
+        if lab in sw.travel:
+            cols += [(f"{lab}.s", "m", sw.travel[lab])]
+        if lab in sw.slide_v:
+            cols += [(f"{lab}.v_s", "m/s", sw.slide_v[lab]),
+                     (f"{lab}.a_s", "m/s^2", sw.slide_a[lab])]
+    for name in links:
+        cols += [(f"{name}.omega", "rad/s", sw.omega[name]),
+                 (f"{name}.alpha", "rad/s^2", sw.alpha[name])]
+    cols.append(("min_angle", "deg", sw.angle_deg))
+    return cols
+
+
+def write_csv(sw: Sweep, points, links, path: Path) -> Path:
+    cols = columns(sw, points, links)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    data = np.column_stack([np.broadcast_to(c[2], (sw.n,)) for c in cols])
+    header = ",".join(f"{name} [{unit}]" for name, unit, _ in cols)
+    np.savetxt(path, data, delimiter=",", header=header, comments="", fmt="%.17g")
+    return path
+
+
+# ---------------------------------------------------------------- plots
+def _decimate(n: int) -> slice:
+    return slice(None, None, max(1, math.ceil(n / PLOT_POINTS)))
+
+
+def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]:
+    from diagrams.plots import Line, Marker, Panel, plot_panels
+
+    f, lu, vu, au = _units(unit)
+    x, xlabel = _x_axis(sw)
+    colors = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink"]
+    disp, vel, acc = Panel(f"displacement ({lu})", zero_line=False), Panel(f"velocity ({vu})"), \
+        Panel(f"acceleration ({au})")
+    for i, lab in enumerate(points):
+        c = colors[i % len(colors)]
+        if lab in sw.travel and lab in sw.slide_v:
+            series = [(f"{lab} along its guide", sw.travel[lab], sw.slide_v[lab],
+                       sw.slide_a[lab], "-")]
+        else:
+            P, V, A = sw.position(lab), sw.velocity(lab), sw.acceleration(lab)
+            series = [(f"{lab} x", P[:, 0], V[:, 0], A[:, 0], "-"),
+                      (f"{lab} y", P[:, 1], V[:, 1], A[:, 1], "--")]
+        for name, s, v, a, style in series:
+            _add(disp, vel, acc, sw, x, name, s * f, v * f, a * f, style, c)
+        if lab in shm:
+            h = shm[lab]
+            _add(disp, vel, acc, sw, x, f"{lab} simple harmonic (pin {h.pin} projected)",
+                 h.travel * f, h.velocity * f, h.acceleration * f, ":", "black")
+    panels = [disp, vel, acc]
+    if links:
+        om, al = Panel("ω (rad/s, CCW +)"), Panel("α (rad/s², CCW +)")
+        for i, name in enumerate(links):
+            c = colors[(i + len(points)) % len(colors)]
+            for seg in sw.segments:
+                sl = slice(*seg)
+                d = _decimate(seg[1] - seg[0])
+                first = seg == sw.segments[0]
+                om.lines.append(Line(f"ω {name}" if first else "", x[sl][d],
+                                     sw.omega[name][sl][d], "-", c))
+                al.lines.append(Line(f"α {name}" if first else "", x[sl][d],
+                                     sw.alpha[name][sl][d], "-", c))
+        panels += [om, al]
+    markers = []
+    for lim in sw.limits:
+        if lim.kind in ("limit", "toggle", "near-toggle"):
+            xm = math.degrees(lim.input) if sw.input_kind == "crank" else lim.input * 1e3
+            if sw.full_cycle and sw.input_kind == "crank":
+                xm %= 360.0
+            markers.append(Marker(xm, f"{lim.kind} ({lim.point})",
+                                  "tab:red" if lim.kind != "near-toggle" else "tab:orange"))
+    if sw.full_cycle and sw.input_kind == "crank":
+        xlim, xticks = (0.0, 360.0), list(range(0, 361, 45))
+    else:
+        lo, hi = sw.range
+        k = (lambda v: math.degrees(v)) if sw.input_kind == "crank" else (lambda v: v * 1e3)
+        xlim, xticks = (k(lo), k(hi)), None
+    drv = sw.scene.driver
+    rate = (f"ω = {abs(drv.omega):.4g} rad/s {'CCW' if drv.omega > 0 else 'CW'}"
+            if isinstance(drv, Crank) else f"v = {drv.velocity:.4g} m/s")
+    title = f"{sw.scene.title}\n{rate}, {sw.n} positions"
+    if not sw.full_cycle:
+        title += " (reachable range)"
+    return plot_panels(title, xlabel, panels, stem, formats, markers, xlim, xticks)
+
+
+def _add(disp, vel, acc, sw, x, name, s, v, a, style, color):
+    from diagrams.plots import Line
+    for seg in sw.segments:
+        sl = slice(*seg)
+        d = _decimate(seg[1] - seg[0])
+        lab = name if seg == sw.segments[0] else ""
+        disp.lines.append(Line(lab, x[sl][d], s[sl][d], style, color))
+        vel.lines.append(Line(lab, x[sl][d], v[sl][d], style, color))
+        acc.lines.append(Line(lab, x[sl][d], a[sl][d], style, color))
+
+
+# ---------------------------------------------------------------- summary
+def _at(sw: Sweep, i: int) -> str:
+    if sw.input_kind == "crank":
+        deg = math.degrees(sw.inputs[i])
+        return f"θ = {deg % 360.0 if sw.full_cycle else deg:.4g}°"
+    return f"s = {sw.inputs[i] * 1e3:.6g} mm"
+
+
+def _inp(sw: Sweep, x: float) -> str:
+    if sw.input_kind == "crank":
+        return f"θ = {math.degrees(x):.6g}°"
+    return f"s = {x * 1e3:.6g} mm"
+
+
+def summary(sw: Sweep, points, links, shm, unit, written) -> str:
+    f, lu, vu, au = _units(unit)
+    scene, drv = sw.scene, sw.scene.driver
+    out = [f"{scene.title}", f"  scene: {scene.file}", ""]
+    if isinstance(drv, Crank):
+        out.append(f"input: crank {drv.link}, ω = {abs(drv.omega):.6g} rad/s "
+                   f"{'CCW' if drv.omega > 0 else 'CW'}"
+                   + (f", α = {drv.alpha:.6g} rad/s² (held at every position)"
+                      if drv.alpha else "") + f"; {sw.n} positions")
+    else:
+        out.append(f"input: slider {drv.point}, v = {drv.velocity:.6g} m/s, "
+                   f"a = {drv.acceleration:.6g} m/s²; {sw.n} positions")
+    if sw.full_cycle:
+        out.append("range: full revolution, θ = 0…360° (every angle assembles)")
+    else:
+        lo, hi = sw.range
+        out.append(f"range: {_inp(sw, lo)} … {_inp(sw, hi)} (reachable range around the "
+                   f"scene's input; positions strictly inside it)")
+    for lim in sw.limits:
+        if lim.kind == "limit":
+            out.append(f"  limit at {_inp(sw, lim.input)}: {lim.reason} — toggle, the input "
+                       f"cannot pass")
+        elif lim.kind == "unbounded":
+            out.append(f"  no limit found at {_inp(sw, lim.input)}: {lim.reason}")
+    if sw.branches:
+        out.append("branch followed from the scene's position: " + ", ".join(
+            f"{lab} ({_branch_words(scene, lab)})" for lab in sw.branches))
+    good = np.isfinite(sw.angle_deg)
+    if good.any():
+        i = int(np.nanargmin(sw.angle_deg))
+        out.append(f"conditioning: smallest construction angle {sw.angle_deg[i]:.4g}° at "
+                   f"{_at(sw, i)}")
+    for w in sw.warnings:
+        out.append(f"warning: {w}")
+    out.append("")
+    for lab in points:
+        if lab in sw.travel and lab in sw.slide_v:
+            s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
+            e = scene.sliders[lab].angle
+            out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
+                       f"{np.nanmin(s) * f:.6g} … {np.nanmax(s) * f:.6g} {lu} "
+                       f"(stroke {(np.nanmax(s) - np.nanmin(s)) * f:.6g} {lu})")
+            iv, ia = int(np.nanargmax(np.abs(v))), int(np.nanargmax(np.abs(a)))
+            out.append(f"  max |v| = {abs(v[iv]) * f:.10g} {vu} at {_at(sw, iv)}")
+            out.append(f"  max |a| = {abs(a[ia]) * f:.16g} {au} at {_at(sw, ia)}")
+        else:
+            V, A = sw.velocity(lab), sw.acceleration(lab)
+            vm, am = np.hypot(V[:, 0], V[:, 1]), np.hypot(A[:, 0], A[:, 1])
+            iv, ia = int(np.nanargmax(vm)), int(np.nanargmax(am))
+            out.append(f"point {lab}:")
+            out.append(f"  max |v| = {vm[iv] * f:.10g} {vu} at {_at(sw, iv)}")
+            out.append(f"  max |a| = {am[ia] * f:.16g} {au} at {_at(sw, ia)}")
+        if lab in shm:
+            h = shm[lab]
+            a = sw.slide_a[lab]
+            d = a - h.acceleration
+            idd = int(np.nanargmax(np.abs(d)))
+            amax = float(np.nanmax(np.abs(a)))
+            hmax = float(np.nanmax(np.abs(h.acceleration)))
+            dv = float(np.nanmax(np.abs(sw.slide_v[lab] - h.velocity)))
+            ds = float(np.nanmax(np.abs(sw.travel[lab] - h.travel)))
+            out.append(f"  simple harmonic (crank pin {h.pin} projected on the guide): max |a| "
+                       f"= {hmax * f:.10g} {au}")
+            out.append(f"  difference from SHM: max |Δa| = {abs(d[idd]) * f:.6g} {au} at "
+                       f"{_at(sw, idd)} ({abs(d[idd]) / amax * 100 if amax else 0:.3g} % of "
+                       f"max |a|), max |Δv| = {dv * f:.6g} {vu}, max |Δs| = {ds * f:.6g} {lu} "
+                       f"(travel offset {h.offset * f:.6g} {lu})")
+    for name in links:
+        w, al = sw.omega[name], sw.alpha[name]
+        iw, ia = int(np.nanargmax(np.abs(w))), int(np.nanargmax(np.abs(al)))
+        out.append(f"link {name}: max |ω| = {abs(w[iw]):.6g} rad/s at {_at(sw, iw)}; "
+                   f"max |α| = {abs(al[ia]):.6g} rad/s² at {_at(sw, ia)}")
+    out.append("")
+    out.append("written: " + ", ".join(str(p) for p in written))
+    return "\n".join(out) + "\n"
+
+
+def _branch_words(scene: Scene, lab: str) -> str:
+    b = scene.assembly.get(lab)
+    return b.text if b is not None else "the only closure at the scene's input"
