@@ -8,7 +8,8 @@ import sys
 from .errors import PolygonsError
 
 #: modules that add a sub-command: each has ``register(subparsers)``
-COMMAND_MODULES = ("polygons.cmd_solve", "polygons.cmd_sweep", "polygons.cmd_draw")
+COMMAND_MODULES = ("polygons.cmd_solve", "polygons.cmd_sweep", "polygons.cmd_draw",
+                   "polygons.cmd_forces")
 
 
 class _Parser(argparse.ArgumentParser):

@@ -519,8 +519,12 @@ def load_model(scene: Scene) -> ForceModel:
             if ("free_length" in spec) == ("extension" in spec):
                 raise SceneError("give exactly one of free_length or extension (at this "
                                  "instant; negative when compressed)", file=file, where=where)
-            e = tuple((lab, point_body(lab, None, f"{where}.between", allow_ground=True))
-                      for lab in ends)
+            on = spec.get("on", ["", ""])
+            if not isinstance(on, list) or len(on) != 2:
+                raise SceneError("on = [\"BC\", \"\"]: the body carrying each end ('' when "
+                                 "there is only one)", file=file, where=where + ".on")
+            e = tuple((lab, point_body(lab, o or None, f"{where}.between", allow_ground=True))
+                      for lab, o in zip(ends, on))
             fl = r.quantity(spec["free_length"], "length", where + ".free_length") \
                 if "free_length" in spec else None
             ext = r.quantity(spec["extension"], "length", where + ".extension") \
@@ -1638,7 +1642,8 @@ def check_force_answers(an: Analysis) -> list[ForceCheck]:
         compared = abs(ours) if ans.mode == "abs" else ours
         diff = within = rel = None
         if ans.tutorial is not None:
-            diff = ((ans.tutorial - compared) / abs(compared) * 100.0) if compared else None
+            diff = ((ans.tutorial - compared) / abs(compared) * 100.0) \
+                if compared and ans.tutorial != 0.0 else None
             if ans.tutorial == 0.0:
                 within = abs(compared) <= 1e-9 * max(1.0, _scale(an))
             else:

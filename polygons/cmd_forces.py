@@ -1,0 +1,354 @@
+"""``polygons forces CASE.toml``: inertia forces, the input torque, every pin reaction.
+
+Also makes ``polygons solve`` append the force results (table, or a ``"forces"`` key in the
+JSON) when the scene has masses or loads: the solve command is wrapped here, at registration,
+so the kinematic command itself stays unaware of forces.
+"""
+from __future__ import annotations
+
+import json
+import math
+import sys
+
+import numpy as np
+
+from .errors import PolygonsError
+from .evaluate import solve
+from .forces import (Analysis, State, analyse, check_force_answers, has_forces, load_model,
+                     section, spring_state)
+from .errors import SceneError
+from .scene import Crank, load_scene
+
+
+def register(sub) -> None:
+    p = sub.add_parser("forces", help="forces: inertia forces, input torque, pin reactions, "
+                                      "torque-driven and released motion",
+                       description="Force analysis of a scene with [masses], [forces], "
+                                   "[torques], [springs], [gravity] and [dynamics] tables: "
+                                   "table, or JSON with --json.")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
+    p.set_defaults(func=run)
+    solve_parser = sub.choices.get("solve")
+    if solve_parser is not None:
+        original = solve_parser.get_default("func")
+        solve_parser.set_defaults(func=_solve_with_forces(original))
+
+
+def _solve_with_forces(original):
+    def run_solve(args) -> int:
+        scene = load_scene(args.scene)
+        if not has_forces(scene):
+            return original(args)
+        an = analyse(scene)
+        from .report import table, to_json
+        targets = [t.strip() for t in args.points.split(",")] if getattr(args, "points", None) \
+            else None
+        sol = solve(scene, targets)
+        if args.json:
+            data = to_json(sol)
+            data["forces"] = to_dict(an)
+            sys.stdout.write(_dumps(data))
+        else:
+            sys.stdout.write(table(sol, steps=not getattr(args, "no_steps", False)))
+            sys.stdout.write("\n" + forces_table(an, header=False))
+        return 0
+    return run_solve
+
+
+def run(args) -> int:
+    scene = load_scene(args.scene)
+    if not has_forces(scene):
+        raise SceneError("this scene has no [masses], [forces], [torques] or [springs]: "
+                            "there is nothing for a force analysis to do", file=scene.file)
+    an = analyse(scene)
+    sys.stdout.write(_dumps(to_dict(an)) if args.json else forces_table(an))
+    return 0
+
+
+def _dumps(data) -> str:
+    return json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+# ---------------------------------------------------------------- words
+def _sense(x: float) -> str:
+    if x == 0.0 or abs(x) < 1e-300:
+        return ""
+    return "CCW" if x > 0 else "CW"
+
+
+def _deg(v) -> float | None:
+    if float(np.hypot(*v)) == 0.0:
+        return None
+    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+
+
+def _g(x, digits=6) -> str:
+    if x is None:
+        return "-"
+    if x == 0:
+        return "0"
+    return f"{x:.{digits}g}"
+
+
+def _mode_words(an: Analysis) -> str:
+    m = an.model.mode
+    if m == "kinetostatic":
+        return ("kinetostatic: the driver's motion is given; the input torque that keeps it is "
+                "found")
+    if m == "torque-driven":
+        return ("torque-driven: the driver's ω is given, its α follows from the applied "
+                "torques (acceleration polygon affine in α: solved at α = 0 and α = 1)")
+    return ("released: no motor; α from the loads at each state, ω from energy (checked by "
+            "RK4 integration)")
+
+
+def _effort_unit(an: Analysis) -> str:
+    return "N m" if isinstance(an.model.scene.driver, Crank) else "N"
+
+
+# ---------------------------------------------------------------- JSON
+def _vec(v) -> list[float]:
+    return [float(v[0]), float(v[1])]
+
+
+def _state_dict(an: Analysis, st: State) -> dict:
+    model = an.model
+    ne = st.ne
+    drv = st.sol.scene.driver
+    out: dict = {"name": st.name}
+    if isinstance(drv, Crank):
+        out["driver"] = {"link": drv.link, "angle_deg": math.degrees(drv.angle),
+                         "omega": st.sol.links[drv.link].omega,
+                         "alpha": st.sol.links[drv.link].alpha}
+    else:
+        out["driver"] = {"slider": drv.point, "velocity": st.sol.slides[drv.point].velocity,
+                         "acceleration": st.sol.slides[drv.point].acceleration}
+    if model.mode == "kinetostatic":
+        out["input"] = {"newton_euler": ne.effort, "virtual_work": st.vw_effort,
+                        "unit": _effort_unit(an), "sense": _sense(ne.effort),
+                        "turning_moment": -ne.effort,
+                        "breakdown": [{"term": k, "value": v} for k, v in st.breakdown]}
+    else:
+        out["alpha_in"] = ne.alpha
+        out["virtual_work_residual"] = st.vw_effort
+        out["breakdown"] = [{"term": k, "value": v} for k, v in st.breakdown]
+    out["inertia"] = [{"item": i.item, "body": i.body, "centre": _vec(i.centre),
+                       "a_G": _vec(i.a), "m_a_G": _vec(i.ma),
+                       "inertia_force": _vec(-i.ma), "I_G_alpha": i.i_alpha,
+                       "inertia_torque": -i.i_alpha}
+                      for i in st.inertia]
+    pins = []
+    for (lab, body), f in ne.pin.items():
+        pins.append({"pin": lab, "on": body, "force": _vec(f), "magnitude": float(np.hypot(*f)),
+                     "direction_deg": _deg(f)})
+    out["pins"] = pins
+    out["ground"] = [{"pin": lab, "force_on_ground": _vec(f)} for lab, f in ne.ground.items()]
+    out["slots"] = [{"pin": pin, "normal_force_on_lever": v, "normal": _vec(n)}
+                    for pin, (v, n) in ne.slot.items()]
+    out["guides"] = [{"slider": lab, "normal_force": v, "normal": _vec(n), "couple": c}
+                     for lab, (v, n, c) in ne.guide.items()]
+    out["springs"] = []
+    for s in model.springs:
+        stt = spring_state(model, st.sol, s)
+        out["springs"].append({k: (float(v) if not isinstance(v, np.ndarray) else _vec(v))
+                               for k, v in stt.items()} | {"name": s.name, "kind": s.kind})
+    out["loads"] = [{"source": ld.source, "kind": ld.kind, "on": ld.body, "at": ld.at,
+                     "force": _vec(ld.force), "couple": ld.couple} for ld in ne.loads]
+    out["sections"] = [{"section": lab, "link": link, "N": n, "S": s, "M": m}
+                       for lab, link, n, s, m in _sections(an, st)]
+    for k in ("kinetic", "potential", "work_nc", "omega_energy", "omega_ode", "time",
+              "energy_vs_ode_rel"):
+        if k in st.extra:
+            out.setdefault("energy", {})[k] = float(st.extra[k])
+    out["newton_euler_residual"] = ne.residual
+    out["unknowns"] = {name: float(x) for name, x in zip(ne.names, ne.values)}
+    return out
+
+
+def to_dict(an: Analysis) -> dict:
+    model = an.model
+    scene = model.scene
+    masses = [{"name": m.name, "body": m.body, "kind": m.kind, "mass": m.mass,
+               "inertia": m.inertia, "inertia_from": m.how, "free": m.free, "spin": m.spin}
+              for m in model.masses]
+    answers = []
+    for c in check_force_answers(an):
+        a = c.answer
+        answers.append({"quantity": a.quantity, "state": a.state, "desc": a.desc,
+                        "unit": a.unit, "positive": "CW" if a.positive < 0 else "CCW",
+                        "ours": c.ours, "tutorial": a.tutorial, "exact": a.exact,
+                        "tutorial_diff_pct": c.diff_pct, "tutorial_within_tolerance": c.within,
+                        "tolerance_pct": a.tolerance * 100.0, "slip": a.slip, "note": a.note})
+    return {
+        "case": {"file": scene.file, "title": scene.title, "id": scene.source.get("id")},
+        "mode": model.mode,
+        "units": {"force": "N", "torque": "N m (CCW positive)", "angles": "deg CCW from +x"},
+        "gravity": _vec(model.gravity),
+        "masses": masses,
+        "states": [_state_dict(an, st) for st in an.states],
+        "dynamics": an.dynamics,
+        "answers": answers,
+    }
+
+
+# ---------------------------------------------------------------- table
+def _sections(an: Analysis, st: State):
+    """N, S, M at the labelled points of rod links that carry no load or joint."""
+    model = an.model
+    out = []
+    loaded = {ld.at for ld in st.ne.loads if ld.at} | {j.label for j in model.joints}
+    loaded |= {s.pin for s in model.slots}
+    for name, body in model.bodies.items():
+        items = model.items_of(name)
+        if body.kind != "link" or not items or any(i.kind == "link" and not i.rod
+                                                    for i in items):
+            continue
+        for lab in body.labels:
+            if lab in (body.a, body.b) or lab in loaded:
+                continue
+            if lab not in model.scene.points:
+                continue
+            try:
+                n, s, m = section(model, st, lab, name)
+            except PolygonsError:
+                continue
+            out.append((lab, name, n, s, m))
+    return out
+
+
+def forces_table(an: Analysis, header: bool = True) -> str:
+    model = an.model
+    scene = model.scene
+    lines = []
+    if header:
+        lines += [scene.title, f"  scene: {scene.file}"
+                  + (f"   [{scene.source['id']}]" if scene.source.get("id") else ""), ""]
+    lines.append(f"forces — {_mode_words(an)}")
+    g = model.gravity
+    lines.append("gravity: " + (f"{np.hypot(*g):.6g} m/s² towards {_deg(g):.6g}°" if g.any()
+                                else "ignored"))
+    if model.masses:
+        lines.append("")
+        lines.append(f"{'mass':<10} {'on':<6} {'m kg':>8} {'I_G kg m²':>12}  inertia from")
+        for m in model.masses:
+            lines.append(f"{m.name:<10} {m.body:<6} {_g(m.mass):>8} {_g(m.inertia):>12}  "
+                         f"{m.how}{' (free, spin ' + _g(m.spin) + ' rad/s)' if m.free else ''}")
+    if model.forces or model.torques or model.frictions or model.springs:
+        lines.append("")
+        lines.append("loads:")
+        for f in model.forces:
+            lines.append(f"  {f.name}: force at {f.at} on {f.body}: {f.how}")
+        for t in model.torques:
+            lines.append(f"  {t.name}: torque on {t.body}: {abs(t.torque):.6g} N m "
+                         f"{_sense(t.torque)}")
+        for fr in model.frictions:
+            lines.append(f"  {fr.name}: friction torque {fr.torque:.6g} N m at {fr.at} "
+                         f"({fr.first} against {fr.second or 'the ground'}), opposing the "
+                         f"relative rotation")
+        for s in model.springs:
+            if s.kind == "torsional":
+                lines.append(f"  {s.name}: torsional spring {s.stiffness:.6g} N m/rad at "
+                             f"{s.at} ({s.first} against {s.second or 'the ground'})")
+            elif s.kind == "linear":
+                lines.append(f"  {s.name}: spring {s.stiffness:.6g} N/m between "
+                             f"{s.ends[0][0]} and {s.ends[1][0]}")
+            else:
+                lines.append(f"  {s.name}: spring {s.stiffness:.6g} N/m at {s.at}, kept "
+                             f"parallel to {_deg(s.direction):.6g}°")
+    for st in an.states:
+        lines += [""] + _state_lines(an, st)
+    if an.dynamics and an.dynamics.get("checks"):
+        lines.append("")
+        lines.append(f"energy vs RK4 integration (motion {an.dynamics['motion']}):")
+        for c in an.dynamics["checks"]:
+            lines.append(f"  {c['state']}: ω energy {c['omega_energy']:.10g} rad/s, RK4 "
+                         f"{c['omega_ode']:.10g} rad/s ({c['rk4_steps']} steps, "
+                         f"t = {c['time_s']:.6g} s), relative difference "
+                         f"{c['relative_difference']:.2e}")
+    checks = check_force_answers(an)
+    if checks:
+        lines.append("")
+        lines.append(f"{'force answer':<40} {'unit':<9} {'polygons':>12} {'tutorial':>10} "
+                     f"{'diff %':>8}  note")
+        for c in checks:
+            a = c.answer
+            if a.tutorial is None:
+                continue
+            note = "SLIP in the tutorial (see reference)" if a.slip else (
+                "within drawing tolerance" if c.within else f"outside ±{a.tolerance * 100:g}%")
+            state = f" [{a.state}]" if a.state else ""
+            desc = (a.desc + state)[:40]
+            diff = f"{c.diff_pct:>8.2f}" if c.diff_pct is not None else f"{'-':>8}"
+            lines.append(f"{desc:<40} {a.unit:<9} {_g(c.compared):>12} {_g(a.tutorial):>10} "
+                         f"{diff}  {note}")
+    return "\n".join(lines) + "\n"
+
+
+def _state_lines(an: Analysis, st: State) -> list[str]:
+    model = an.model
+    ne = st.ne
+    sol = st.sol
+    drv = sol.scene.driver
+    out = []
+    if isinstance(drv, Crank):
+        w = sol.links[drv.link].omega
+        al = sol.links[drv.link].alpha
+        head = (f"state: {st.name} — {drv.link} at {math.degrees(drv.angle) % 360:.6g}°, "
+                f"ω = {abs(w):.6g} rad/s {_sense(w)}, α = {abs(al):.6g} rad/s² {_sense(al)}")
+    else:
+        sr = sol.slides[drv.point]
+        head = (f"state: {st.name} — slider {drv.point}: v = {sr.velocity:.6g} m/s, "
+                f"a = {sr.acceleration:.6g} m/s²")
+    out.append(head)
+    if "omega_energy" in st.extra and st.name != "release":
+        out.append(f"  ω from energy {st.extra['omega_energy']:.10g} rad/s, from RK4 "
+                   f"{st.extra['omega_ode']:.10g} rad/s; T = {st.extra['kinetic']:.6g} J, "
+                   f"V = {st.extra['potential']:.6g} J, W_nc = {st.extra['work_nc']:.6g} J")
+    unit = _effort_unit(an)
+    if model.mode == "kinetostatic":
+        e = ne.effort
+        what = "torque" if unit == "N m" else "force along the guide"
+        out.append(f"  input {what} on {model.driver_body}: {abs(e):.8g} {unit} {_sense(e)}"
+                   f" (Newton–Euler); virtual work {abs(st.vw_effort):.8g} {unit} "
+                   f"{_sense(st.vw_effort)}; difference {abs(e - st.vw_effort):.1e}")
+        if unit == "N m":
+            out.append(f"  the mechanism's turning moment on {model.driver_body}: "
+                       f"{abs(e):.8g} N m {_sense(-e)}")
+        out.append(f"  virtual-work breakdown ({unit} of input {what} per term):")
+    else:
+        a = ne.alpha
+        out.append(f"  input angular acceleration from the loads: {abs(a):.10g} rad/s² "
+                   f"{_sense(a)}; virtual-work check: extra input needed "
+                   f"{st.vw_effort:.2e} {unit}")
+        out.append(f"  virtual-work breakdown ({unit} each term asks of the input; sum 0):")
+    for k, v in st.breakdown:
+        out.append(f"    {k:<44} {v:>14.8g}")
+    if st.inertia:
+        out.append(f"  {'inertia of':<10} {'|a_G| m/s²':>12} {'dir°':>8} {'−m a_G N':>12} "
+                   f"{'dir°':>8} {'−I_G α N m':>12}")
+        for i in st.inertia:
+            fi = -i.ma
+            out.append(f"  {i.item:<10} {_g(float(np.hypot(*i.a))):>12} "
+                       f"{_g(_deg(i.a) if _deg(i.a) is not None else None, 5):>8} "
+                       f"{_g(float(np.hypot(*fi))):>12} "
+                       f"{_g(_deg(fi) if _deg(fi) is not None else None, 5):>8} "
+                       f"{_g(abs(i.i_alpha)):>12} {_sense(-i.i_alpha)}")
+    out.append(f"  {'pin':<5} {'force on':<9} {'Fx N':>12} {'Fy N':>12} {'|F| N':>12} "
+               f"{'dir°':>8}")
+    for (lab, body), f in ne.pin.items():
+        d = _deg(f)
+        out.append(f"  {lab:<5} {body:<9} {_g(f[0]):>12} {_g(f[1]):>12} "
+                   f"{_g(float(np.hypot(*f))):>12} {_g(d, 5) if d is not None else '-':>8}")
+    for pin, (v, n) in ne.slot.items():
+        s = next(x for x in model.slots if x.pin == pin)
+        out.append(f"  slot: the pin {pin} pushes {s.lever} with {abs(v):.6g} N normal to the "
+                   f"slot, towards {_deg(n * v) or 0:.6g}° (and {s.carrier} is pushed back)")
+    for lab, (v, n, c) in ne.guide.items():
+        out.append(f"  guide: on {lab} {abs(v):.6g} N normal to the guide, towards "
+                   f"{_deg(n * v) or 0:.6g}°; couple {abs(c):.3g} N m {_sense(c)}")
+    for lab, link, n, s, m in _sections(an, st):
+        out.append(f"  section {lab} of {link} (on the part from {model.bodies[link].a}): "
+                   f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = {m:.6g} N m (CCW)")
+    out.append(f"  equations: {ne.equations}, residual {ne.residual:.1e}")
+    return out

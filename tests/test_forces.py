@@ -1,0 +1,418 @@
+"""Forces: the five force cases against the reference, virtual work against Newton–Euler on every
+case, energy against RK4 integration, closed forms, and bad force input through the CLI."""
+import json
+import math
+import re
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+from conftest import CASES, REFERENCE, case_files
+from polygons.errors import AssemblyError, PolygonsError
+from polygons.forces import (analyse, check_force_answers, force_quantity, has_forces,
+                             load_model, newton_euler)
+from polygons.scene import load_scene, parse_scene
+
+EXACT_REL = 1e-9
+FORCE_CASES = [f for f in case_files() if has_forces(load_scene(f))]
+IDS = [f.stem for f in FORCE_CASES]
+EXE = Path(sys.executable).with_name("polygons")
+
+
+@pytest.fixture(scope="module")
+def analysed():
+    cache = {}
+
+    def get(path):
+        if path not in cache:
+            cache[path] = analyse(load_scene(path))
+        return cache[path]
+    return get
+
+
+def test_the_five_force_cases_are_there():
+    names = {f.name for f in FORCE_CASES}
+    assert {"s001-we8.toml", "s001-sae5-q1.toml", "s000-d225-2003-q3.toml",
+            "s002-ex3.16.toml", "s002-ex3.17.toml"} <= names
+
+
+# ---------------------------------------------------------------- reference answers
+@pytest.mark.parametrize("path", FORCE_CASES, ids=IDS)
+def test_force_answers_reproduce_the_exact_values(path, analysed):
+    checks = [c for c in check_force_answers(analysed(path)) if c.answer.exact is not None]
+    assert checks, f"{path.name} has no exact force answers"
+    for c in checks:
+        exact = c.answer.exact
+        tol = EXACT_REL * abs(exact) if exact != 0 else 1e-12
+        assert abs(c.compared - exact) <= tol, (
+            f"{c.answer.quantity} [{c.answer.state}] = {c.compared!r}, exact {exact!r}")
+
+
+@pytest.mark.parametrize("path", FORCE_CASES, ids=IDS)
+def test_force_answers_match_the_tutorial_and_do_not_reproduce_its_slips(path, analysed):
+    for c in check_force_answers(analysed(path)):
+        a = c.answer
+        if a.tutorial is None:
+            continue
+        if a.slip:
+            assert not c.within, f"{a.quantity}: we reproduce the tutorial's slip {a.tutorial}"
+        else:
+            assert c.within, (f"{a.quantity}: tutorial {a.tutorial}, ours {c.compared:.6g} "
+                              f"(tolerance ±{a.tolerance * 100:g} %)")
+
+
+@pytest.mark.parametrize("path", FORCE_CASES, ids=IDS)
+def test_force_exact_values_are_the_reference_values_and_slips_its_slips(path):
+    if not REFERENCE.exists():
+        pytest.skip(f"reference {REFERENCE} not present")
+    ref = {c["id"]: c for c in json.loads(REFERENCE.read_text())["cases"]}
+    scene = load_scene(path)
+    case = ref[scene.source["id"]]
+    model = load_model(scene)
+    slips_ref = {v["exact_key"] for v in case["tutorial_answers"].values() if v["slip"]}
+    for a in model.answers:
+        if a.slip:
+            assert a.ref in slips_ref, f"{a.ref} is not a slip in the reference"
+        if a.ref is None or a.exact is None:
+            continue
+        value = case["exact_answers"][a.ref]
+        expected = abs(value) if a.mode == "abs" else value
+        assert a.exact == pytest.approx(expected, rel=1e-12, abs=1e-15), a.ref
+        if a.tutorial is not None and a.ref in case["tutorial_answers"]:
+            assert a.tutorial == case["tutorial_answers"][a.ref]["value"], a.ref
+
+
+def test_we8_slips_are_all_asserted():
+    model = load_model(load_scene(CASES / "s001-we8.toml"))
+    slipped = {a.ref for a in model.answers if a.slip}
+    assert {"F_inertia", "F_net", "F_rod", "T_crank"} <= slipped
+
+
+def test_ex316_part_c_slips_are_asserted():
+    model = load_model(load_scene(CASES / "s002-ex3.16.toml"))
+    assert {a.ref for a in model.answers if a.slip} == {"S_B", "M_B"}
+
+
+# ---------------------------------------------------------------- virtual work vs Newton–Euler
+@pytest.mark.parametrize("path", FORCE_CASES, ids=IDS)
+def test_virtual_work_agrees_with_newton_euler(path, analysed):
+    an = analysed(path)
+    for st_ in an.states:
+        scale = max([abs(v) for _, v in st_.breakdown] + [1.0])
+        if an.model.mode == "kinetostatic":
+            assert st_.vw_effort == pytest.approx(st_.ne.effort, rel=1e-10, abs=1e-12 * scale)
+        else:   # the applied torques are in the loads: no extra input may be needed
+            assert abs(st_.vw_effort) <= 1e-12 * scale, (st_.name, st_.vw_effort)
+        assert st_.ne.residual <= 1e-9 * scale
+
+
+@pytest.mark.parametrize("path", [p for p in FORCE_CASES if "3.1" in p.name],
+                         ids=lambda p: p.stem)
+def test_torque_driven_states_are_consistent_kinetostatically(path, analysed):
+    """At the solved α, a kinetostatic solve needs no extra input and gives the same pins."""
+    an = analysed(path)
+    for st_ in an.states:
+        ne = newton_euler(an.model, st_.sol, st_.vsol, lds=st_.ne.loads)
+        scale = max(float(np.abs(st_.ne.values).max()), 1.0)
+        assert abs(ne.effort) <= 1e-10 * scale
+        for key, f in st_.ne.pin.items():
+            assert np.allclose(ne.pin[key], f, atol=1e-10 * scale), key
+
+
+# ---------------------------------------------------------------- released motion
+def test_ex316_energy_and_integration_agree(analysed):
+    an = analysed(CASES / "s002-ex3.16.toml")
+    (check,) = an.dynamics["checks"]
+    assert check["relative_difference"] < 1e-8
+    assert check["omega_energy"] == pytest.approx(-3.450670895867166, rel=1e-12)
+    assert check["rk4_steps"] >= 50
+
+
+def _scene(text: str, file="t.toml"):
+    return parse_scene(tomllib.loads(text), file=file)
+
+
+PENDULUM = """
+title = "uniform rod released horizontal"
+[ground]
+O = ["0 m", "0 m"]
+[links]
+OA = "1.5 m"
+[driver]
+crank = "OA"
+angle = "0 deg"
+omega = "0 rad/s"
+sense = "CW"
+[masses.OA]
+mass = "2 kg"
+[gravity]
+g = "9.81 m/s^2"
+[dynamics]
+mode = "release"
+after = ["90 deg", "150 deg"]
+steps = 80
+"""
+
+
+def test_pendulum_closed_forms():
+    """Uniform rod from horizontal: α0 = 3g/2L, reaction mg/4 up, ω² = 3g sin θ / L."""
+    an = analyse(_scene(PENDULUM))
+    g, L, m = 9.81, 1.5, 2.0
+    assert force_quantity(an, "alpha(OA)", "release", -1) == pytest.approx(1.5 * g / L,
+                                                                           rel=1e-12)
+    assert force_quantity(an, "Ry(O,OA)", "release") == pytest.approx(m * g / 4, rel=1e-12)
+    for deg in (90, 150):
+        w = force_quantity(an, "omega(OA)", f"{deg} deg", -1)
+        assert w == pytest.approx(math.sqrt(3 * g * math.sin(math.radians(deg)) / L),
+                                  rel=1e-12)
+    for c in an.dynamics["checks"]:
+        assert c["relative_difference"] < 1e-7
+
+
+def test_release_that_cannot_reach_the_angle_says_so():
+    text = PENDULUM.replace('after = ["90 deg", "150 deg"]', 'after = ["200 deg"]')
+    with pytest.raises(PolygonsError, match="energy runs out|turns back"):
+        analyse(_scene(text))
+
+
+# ---------------------------------------------------------------- what-ifs from the reference
+def _s000(extra: str):
+    data = tomllib.loads((CASES / "s000-d225-2003-q3.toml").read_text() + extra)
+    return data
+
+
+def test_s000_with_the_weights_the_tutorial_ignored():
+    an = analyse(parse_scene(_s000('\n[gravity]\ng = "9.81 m/s^2"\n'), file="g.toml"))
+    assert force_quantity(an, "Tin") == pytest.approx(-6.193, abs=5e-4)
+
+
+def test_s000_with_the_20_N_downwards():
+    data = _s000("")
+    data["forces"]["Load"]["force"] = ["0 N", "-20 N"]
+    an = analyse(parse_scene(data, file="down.toml"))
+    assert force_quantity(an, "Tin") == pytest.approx(-6.864, abs=5e-4)
+
+
+# ---------------------------------------------------------------- random mechanisms
+FOURBAR = """
+title = "random four-bar"
+[ground]
+A = ["0 m", "0 m"]
+D = ["{d} m", "0 m"]
+[links]
+AB = "{a} m"
+BC = "{b} m"
+CD = "{c} m"
+[driver]
+crank = "AB"
+angle = "{th} deg"
+omega = "{w} rad/s"
+sense = "CCW"
+alpha = "{al} rad/s^2"
+alpha_sense = "CW"
+[assembly]
+C = "C above AD"
+[points.E]
+on = "BC"
+along = "{e} m"
+left = "0.05 m"
+[masses.AB]
+mass = "{m1} kg"
+[masses.BC]
+mass = "{m2} kg"
+[masses.CD]
+mass = "{m3} kg"
+inertia = "0.01 kg m^2"
+centre = 0.3
+[masses.Pt]
+at = "E"
+mass = "0.2 kg"
+[gravity]
+g = "9.81 m/s^2"
+direction = "{gd} deg"
+[forces.P]
+at = "E"
+magnitude = "{f} N"
+direction = "{fd} deg"
+[torques.Out]
+on = "CD"
+torque = "3 N m"
+sense = "CW"
+[springs.K]
+stiffness = "200 N/m"
+between = ["C", "D"]
+on = ["CD", ""]
+free_length = "0.2 m"
+"""
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(d=st.floats(0.3, 0.6), a=st.floats(0.08, 0.15), b=st.floats(0.3, 0.6),
+       c=st.floats(0.25, 0.5), th=st.floats(0, 359), w=st.floats(1, 50),
+       al=st.floats(0, 200), e=st.floats(0.05, 0.3), m1=st.floats(0.1, 2),
+       m2=st.floats(0.1, 2), m3=st.floats(0.1, 2), gd=st.floats(0, 359),
+       f=st.floats(0, 100), fd=st.floats(0, 359))
+def test_random_four_bars_virtual_work_equals_newton_euler(**p):
+    scene = _scene(FOURBAR.format(**p))
+    try:
+        an = analyse(scene)
+    except AssemblyError:
+        assume(False)
+    except PolygonsError as exc:
+        assume("parallel" not in str(exc) and "singular" not in str(exc))
+        raise
+    st_ = an.states[0]
+    scale = max([abs(v) for _, v in st_.breakdown] + [1.0])
+    assert st_.vw_effort == pytest.approx(st_.ne.effort, rel=1e-8, abs=1e-9 * scale)
+
+
+def test_torque_driven_round_trip_on_a_four_bar():
+    """Kinetostatic at a given α → T_in; torque-driven with T_in applied → the same α."""
+    p = dict(d=0.45, a=0.1, b=0.4, c=0.35, th=40, w=12, al=30, e=0.2, m1=1, m2=0.7, m3=1.1,
+             gd=270, f=20, fd=30)
+    an = analyse(_scene(FOURBAR.format(**p)))
+    tin = an.states[0].ne.effort
+    text = FOURBAR.format(**p).replace('alpha = "30 rad/s^2"\nalpha_sense = "CW"\n', "")
+    text += (f'\n[torques.In]\non = "AB"\ntorque = "{abs(tin)!r} N m"\n'
+             f'sense = "{"CCW" if tin > 0 else "CW"}"\n[dynamics]\nmode = "torque-driven"\n')
+    an2 = analyse(_scene(text))
+    assert an2.states[0].ne.alpha == pytest.approx(-30.0, rel=1e-9)
+    for key, f in an.states[0].ne.pin.items():
+        assert np.allclose(an2.states[0].ne.pin[key], f, rtol=1e-8, atol=1e-8)
+
+
+SLIDER_DRIVEN = """
+title = "slider-driven slider-crank"
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+OA = "50 mm"
+AB = "200 mm"
+[driver]
+slider = "B"
+position = "220 mm"
+velocity = "3 m/s"
+acceleration = "40 m/s^2"
+[sliders.B]
+through = ["0 mm", "0 mm"]
+direction = "0 deg"
+[assembly]
+A = "A above OB"
+[masses.OA]
+mass = "0.3 kg"
+[masses.AB]
+mass = "0.5 kg"
+[masses.B]
+mass = "0.4 kg"
+[gravity]
+g = "9.81 m/s^2"
+[torques.Load]
+on = "OA"
+torque = "2 N m"
+sense = "CW"
+"""
+
+
+def test_slider_driver_input_force_by_both_methods():
+    an = analyse(_scene(SLIDER_DRIVEN))
+    st_ = an.states[0]
+    assert st_.vw_effort == pytest.approx(st_.ne.effort, rel=1e-10)
+
+
+YOKE = (CASES / "scotch-yoke.toml")
+
+
+@pytest.mark.skipif(not YOKE.exists(), reason="no Scotch yoke case")
+def test_scotch_yoke_forces():
+    """Yoke of mass m on a vertical guide: input torque = m a_y v_y / ω (no other load)."""
+    data = tomllib.loads(YOKE.read_text())
+    data["masses"] = {"Y": {"mass": "2 kg"}}
+    an = analyse(parse_scene(data, file="yoke.toml"))
+    st_ = an.states[0]
+    sr = st_.sol.slides["Y"]
+    w = st_.sol.links["OP"].omega
+    assert st_.ne.effort == pytest.approx(2.0 * sr.acceleration * sr.velocity / w, rel=1e-10)
+    assert st_.vw_effort == pytest.approx(st_.ne.effort, rel=1e-10)
+
+
+# ---------------------------------------------------------------- CLI
+def run(*args):
+    cmd = [str(EXE)] if EXE.exists() else [sys.executable, "-m", "polygons"]
+    return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
+                          timeout=120)
+
+
+def test_cli_forces_table_states_units_and_senses():
+    out = run("forces", CASES / "s001-we8.toml")
+    assert out.returncode == 0, out.stderr
+    assert "input torque on OC: 157.75996 N m CCW" in out.stdout
+    assert "turning moment on OC: 157.75996 N m CW" in out.stdout
+    assert "SLIP in the tutorial" in out.stdout
+
+
+def test_cli_forces_json_and_determinism():
+    a = run("forces", CASES / "s002-ex3.17.toml", "--json")
+    b = run("forces", CASES / "s002-ex3.17.toml", "--json")
+    assert a.returncode == 0, a.stderr
+    assert a.stdout == b.stdout
+    data = json.loads(a.stdout)
+    st_ = data["states"][0]
+    assert st_["alpha_in"] == pytest.approx(3.7808823529411772, rel=1e-12)
+    pins = {(p["pin"], p["on"]): p["force"] for p in st_["pins"]}
+    assert pins[("O", "OA")] == pytest.approx([-2.7555555555555555, 29.535147058823533])
+
+
+def test_cli_solve_appends_forces_when_the_scene_has_masses():
+    out = run("solve", CASES / "s000-d225-2003-q3.toml", "--json")
+    assert out.returncode == 0, out.stderr
+    data = json.loads(out.stdout)
+    assert data["forces"]["states"][0]["input"]["newton_euler"] == pytest.approx(
+        -6.029423097089744, rel=1e-12)
+    out = run("solve", CASES / "s000-d225-2003-q3.toml")
+    assert "input torque on OA: 6.0294231 N m CW" in out.stdout
+    out = run("solve", CASES / "s003-fig7.toml", "--json")
+    assert "forces" not in json.loads(out.stdout)
+
+
+def test_cli_release_case_reports_energy_and_rk4():
+    out = run("forces", CASES / "s002-ex3.16.toml")
+    assert out.returncode == 0, out.stderr
+    assert "energy vs RK4" in out.stdout and "after 30 deg" in out.stdout
+
+
+BASE = (CASES / "s001-we8.toml").read_text()
+
+
+@pytest.mark.parametrize("change,expected", [
+    (('mass = "0.5 kg"', 'mass = "-0.5 kg"'), r"\[masses.P.mass\].*must not be negative"),
+    (('mass = "0.5 kg"', 'mass = 0.5'), r"\[masses.P.mass\].*missing unit"),
+    (('at = "P"\npressure', 'at = "Q"\npressure'), r"\[forces.Gas.at\].*unknown point 'Q'"),
+    (('bore = "80 mm"', 'bor = "80 mm"'), r"\[forces.Gas.bor\].*unknown key 'bor'.*did you mean 'bore'"),
+    (('pressure = "1.2 MPa"', 'pressure = "1.2 N"'), r"\[forces.Gas.pressure\].*pressure"),
+    (('[masses.P]', '[masses.PX]'), r"\[masses.PX\].*unknown link or slider 'PX'"),
+])
+def test_bad_force_input_gives_one_readable_line(tmp_path, change, expected):
+    old, new = change
+    assert old in BASE
+    path = tmp_path / "bad.toml"
+    path.write_text(BASE.replace(old, new, 1))
+    for cmd in (("forces", "solve") if "negative" in expected else ("forces",)):
+        out = run(cmd, path)
+        assert out.returncode != 0
+        assert "Traceback" not in out.stderr
+        lines = out.stderr.strip().splitlines()
+        assert len(lines) == 1, out.stderr
+        assert "bad.toml" in lines[0]
+        assert re.search(expected, lines[0]), lines[0]
+
+
+def test_forces_on_a_scene_without_masses_is_an_error():
+    out = run("forces", CASES / "s003-fig7.toml")
+    assert out.returncode != 0 and "nothing for a force analysis" in out.stderr
+    assert "Traceback" not in out.stderr
