@@ -17,6 +17,10 @@ def register(sub) -> None:
     p.add_argument("--points", help="comma-separated labels: plan only what these need")
     p.add_argument("--no-steps", action="store_true", help="leave the construction out of "
                                                           "the table")
+    p.add_argument("--svg", metavar="DIR", help="also write the labelled SVG diagrams (as "
+                                               "'polygons draw -o DIR') to this folder")
+    from .cmd_draw import add_diagram_options
+    add_diagram_options(p)
     p.set_defaults(func=run)
 
 
@@ -24,5 +28,8 @@ def run(args) -> int:
     scene = load_scene(args.scene)
     targets = [t.strip() for t in args.points.split(",")] if args.points else None
     sol = solve(scene, targets)
+    if args.svg:
+        from .cmd_draw import write_diagrams
+        write_diagrams(sol, args, args.svg)
     sys.stdout.write(dumps(sol) if args.json else table(sol, steps=not args.no_steps))
     return 0

@@ -1,0 +1,65 @@
+"""Labelled SVG diagrams in construction order: space, velocity and acceleration diagrams.
+
+    from diagrams import write
+    write(solution, "out/fig7")        # space.svg, velocity.svg, velocity-1.svg ...
+
+Modules: :mod:`diagrams.polygon` (polygons and their stages, from the step records),
+:mod:`diagrams.space` (the mechanism), :mod:`diagrams.scale` (round drawing scales),
+:mod:`diagrams.labels` (overlap-free labels), :mod:`diagrams.layout` (the page),
+:mod:`diagrams.measure` (lengths read back off the SVGs), :mod:`diagrams.svg` (the only
+svgwrite importer).  Nothing here recomputes kinematics: the drawings take their geometry
+from ``Solution.steps`` / ``Solution.vertices`` / ``Solution.placement``.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Mapping
+
+from .scale import DiagramError, Scale, ScaleError
+
+__all__ = ["drawings", "write", "DiagramError", "ScaleError", "Scale", "options"]
+
+
+def options(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
+            stages: bool | None = None) -> dict:
+    """Scene ``[diagram]`` options overridden by the caller's (the command line's)."""
+    from .scale import options_from_scene
+    opts = options_from_scene(sol.scene.extra, sol.scene.file)
+    merged = dict(opts.get("scales", {}))
+    merged.update(scales or {})
+    return {"scales": merged, "paper": paper or opts.get("paper"),
+            "stages": opts.get("stages", True) if stages is None else stages}
+
+
+def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
+             stages: bool | None = None):
+    """Every drawing of a solution, in order: space, then each polygon and its stages."""
+    from . import polygon, space
+    opts = options(sol, scales, paper, stages)
+    sc, paper = opts["scales"], opts["paper"]
+    out = [space.drawing(sol, sc.get("space"), paper)]
+    for diagram in sol.scene.solve:
+        if diagram not in sol.vertices:
+            continue
+        lay = polygon.layout(sol, diagram, sc.get(diagram), paper)
+        out.append(polygon.drawing(sol, lay))
+        if opts["stages"]:
+            for k in range(1, len(lay.con.steps) + 1):
+                out.append(polygon.drawing(sol, lay, k))
+    return out
+
+
+def write(sol, outdir, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
+          stages: bool | None = None) -> list[Path]:
+    """Write every drawing of ``sol`` as ``outdir/<name>.svg``; return the paths."""
+    from .svg import to_svg
+    outdir = Path(outdir)
+    if outdir.exists() and not outdir.is_dir():
+        raise DiagramError(f"{outdir} exists and is not a folder", where=str(outdir))
+    outdir.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for d in drawings(sol, scales, paper, stages):
+        path = outdir / f"{d.name}.svg"
+        path.write_bytes(to_svg(d))
+        paths.append(path)
+    return paths

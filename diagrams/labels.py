@@ -1,0 +1,215 @@
+"""Label placement without overlaps, tested geometrically (paper mm, y up; no svgwrite).
+
+Every label is a box.  A label may not cross a vector (a segment thickened by the arrowhead's
+half-width), another label or another vertex; crossing a construction line is allowed but
+costs.  Candidates are tried around the anchor at growing distances; the cheapest free one
+wins.  :func:`box_hits_segment` is also what the tests use to check the finished drawings.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from .text import ASCENT, DESCENT, width
+
+Pt = tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Box:
+    x0: float
+    y0: float
+    x1: float
+    y1: float
+
+    def grown(self, d: float) -> "Box":
+        return Box(self.x0 - d, self.y0 - d, self.x1 + d, self.y1 + d)
+
+    def overlaps(self, other: "Box") -> bool:
+        return (self.x0 < other.x1 and other.x0 < self.x1 and self.y0 < other.y1
+                and other.y0 < self.y1)
+
+    def contains(self, p: Pt) -> bool:
+        return self.x0 <= p[0] <= self.x1 and self.y0 <= p[1] <= self.y1
+
+    def union(self, other: "Box") -> "Box":
+        return Box(min(self.x0, other.x0), min(self.y0, other.y0), max(self.x1, other.x1),
+                   max(self.y1, other.y1))
+
+    @property
+    def centre(self) -> Pt:
+        return ((self.x0 + self.x1) / 2, (self.y0 + self.y1) / 2)
+
+
+def bounds(points) -> Box:
+    xs = [p[0] for p in points]
+    ys = [p[1] for p in points]
+    return Box(min(xs), min(ys), max(xs), max(ys))
+
+
+def text_box(x: float, baseline: float, text: str, size: float, anchor: str = "start") -> Box:
+    """The box a text occupies given its insertion point, as the SVG places it."""
+    w = width(text, size)
+    x0 = {"start": x, "middle": x - w / 2, "end": x - w}[anchor]
+    return Box(x0, baseline - DESCENT * size, x0 + w, baseline + ASCENT * size)
+
+
+def clip(p0: Pt, p1: Pt, box: Box) -> tuple[Pt, Pt] | None:
+    """Liang–Barsky: the part of segment p0→p1 inside ``box`` (None if none)."""
+    dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, p0[0] - box.x0), (dx, box.x1 - p0[0]),
+                 (-dy, p0[1] - box.y0), (dy, box.y1 - p0[1])):
+        if p == 0:
+            if q < 0:
+                return None
+            continue
+        r = q / p
+        if p < 0:
+            if r > t1:
+                return None
+            t0 = max(t0, r)
+        else:
+            if r < t0:
+                return None
+            t1 = min(t1, r)
+    return ((p0[0] + t0 * dx, p0[1] + t0 * dy), (p0[0] + t1 * dx, p0[1] + t1 * dy))
+
+
+def clip_line(anchor: Pt, direction: Pt, box: Box) -> tuple[Pt, Pt] | None:
+    """The chord of the infinite line through ``anchor`` along ``direction`` in ``box``."""
+    big = 4 * (abs(box.x1 - box.x0) + abs(box.y1 - box.y0) + abs(anchor[0]) + abs(anchor[1]))
+    n = math.hypot(*direction)
+    ux, uy = direction[0] / n, direction[1] / n
+    return clip((anchor[0] - big * ux, anchor[1] - big * uy),
+                (anchor[0] + big * ux, anchor[1] + big * uy), box)
+
+
+def box_hits_segment(box: Box, p0: Pt, p1: Pt, clearance: float = 0.0) -> bool:
+    """True if the segment, thickened by ``clearance`` on each side, meets ``box``."""
+    if clearance <= 0:
+        return clip(p0, p1, box) is not None
+    # Minkowski sum of box and a disc ≈ the box grown by the clearance with cut corners;
+    # the grown box is conservative (a little larger) which is what a label wants
+    return clip(p0, p1, box.grown(clearance)) is not None
+
+
+def point_segment_distance(p: Pt, a: Pt, b: Pt) -> float:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    L2 = dx * dx + dy * dy
+    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / L2))
+    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
+
+
+def box_segment_distance(box: Box, a: Pt, b: Pt) -> float:
+    if clip(a, b, box) is not None:
+        return 0.0
+    corners = [(box.x0, box.y0), (box.x1, box.y0), (box.x1, box.y1), (box.x0, box.y1)]
+    d = min(point_segment_distance(c, a, b) for c in corners)
+    for i in range(4):
+        c0, c1 = corners[i], corners[(i + 1) % 4]
+        d = min(d, point_segment_distance(a, c0, c1), point_segment_distance(b, c0, c1))
+    return d
+
+
+@dataclass
+class Placer:
+    """Obstacles of one drawing; :meth:`place` adds each placed label as a new obstacle."""
+
+    hard_segments: list[tuple[Pt, Pt, float]] = field(default_factory=list)  # a, b, clearance
+    soft_segments: list[tuple[Pt, Pt]] = field(default_factory=list)
+    boxes: list[Box] = field(default_factory=list)
+    frame: Box | None = None     # labels prefer to stay inside (cost otherwise)
+
+    def hard(self, a: Pt, b: Pt, clearance: float = 0.8) -> None:
+        self.hard_segments.append((a, b, clearance))
+
+    def soft(self, a: Pt, b: Pt) -> None:
+        self.soft_segments.append((a, b))
+
+    def block(self, box: Box) -> None:
+        self.boxes.append(box)
+
+    def free(self, box: Box) -> bool:
+        if any(box.overlaps(b) for b in self.boxes):
+            return False
+        return not any(box_hits_segment(box, a, b, c) for a, b, c in self.hard_segments)
+
+    def cost(self, box: Box) -> float:
+        c = 0.0
+        for a, b in self.soft_segments:
+            if box_hits_segment(box, a, b, 0.3):
+                c += 4.0
+        if self.frame is not None and not (self.frame.contains((box.x0, box.y0))
+                                           and self.frame.contains((box.x1, box.y1))):
+            c += 1.5
+        # stay clear of vectors where possible
+        near = min((box_segment_distance(box, a, b) - cl for a, b, cl in self.hard_segments),
+                   default=5.0)
+        c += max(0.0, 1.5 - near) * 0.8
+        return c
+
+    def place(self, text: str, at: Pt, size: float, *, prefer: float | None = None,
+              distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), directions: int = 24,
+              along: float | None = None) -> tuple[float, float, str, Box]:
+        """Place ``text`` near point ``at``: returns (x, baseline, anchor, box).
+
+        ``prefer`` is the preferred direction (radians); ``along`` (radians) restricts the
+        candidates to the two sides of a line through ``at`` in that direction.
+        """
+        if along is not None:
+            dirs = [along + math.pi / 2, along - math.pi / 2]
+        else:
+            dirs = [2 * math.pi * k / directions for k in range(directions)]
+        return self.place_any(text, size, [(at, dirs)], prefer=prefer, distances=distances)
+
+    def place_any(self, text: str, size: float, anchors, *, prefer: float | None = None,
+                  distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), extra_cost=None
+                  ) -> tuple[float, float, str, Box]:
+        """Like :meth:`place` over several (point, directions) anchors; the cheapest wins."""
+        w = width(text, size)
+        h = (ASCENT + DESCENT) * size
+        best = None
+        for rank, d in enumerate(distances):
+            for ai, (at, dirs) in enumerate(anchors):
+                for th in dirs:
+                    ux, uy = math.cos(th), math.sin(th)
+                    # centre so that the box side nearest `at` is d away along (ux, uy)
+                    half = min(abs(w / 2 / ux) if abs(ux) > 1e-12 else math.inf,
+                               abs(h / 2 / uy) if abs(uy) > 1e-12 else math.inf)
+                    cx, cy = at[0] + (d + half) * ux, at[1] + (d + half) * uy
+                    box = Box(round(cx - w / 2, 3), round(cy - h / 2, 3),
+                              round(cx + w / 2, 3), round(cy + h / 2, 3))
+                    if not self.free(box):
+                        continue
+                    c = self.cost(box) + rank * 0.9
+                    if prefer is not None:
+                        diff = abs((th - prefer + math.pi) % (2 * math.pi) - math.pi)
+                        c += diff / math.pi * 1.2
+                    if extra_cost is not None:
+                        c += extra_cost(ai, box)
+                    if best is None or c < best[0] - 1e-9:
+                        best = (c, box)
+            if best is not None and best[0] < (rank + 1) * 0.9:
+                break
+        if best is None:   # nothing free anywhere: park it beside the first anchor, far out
+            at = anchors[0][0]
+            best = (math.inf, Box(at[0] + 14, at[1] + 2, at[0] + 14 + w, at[1] + 2 + h))
+        box = best[1]
+        self.block(box)
+        baseline = box.y0 + DESCENT * size
+        return (box.x0, baseline, "start", box)
+
+
+def largest_gap_direction(at: Pt, others: list[Pt]) -> float | None:
+    """The bisector of the widest angular gap between directions from ``at`` to ``others``."""
+    angs = sorted(math.atan2(o[1] - at[1], o[0] - at[0]) for o in others
+                  if math.hypot(o[0] - at[0], o[1] - at[1]) > 1e-6)
+    if not angs:
+        return None
+    if len(angs) == 1:
+        return angs[0] + math.pi
+    gaps = [(angs[(i + 1) % len(angs)] - angs[i]) % (2 * math.pi) or 2 * math.pi
+            for i in range(len(angs))]
+    i = max(range(len(gaps)), key=lambda k: (gaps[k], -k))
+    return angs[i] + gaps[i] / 2

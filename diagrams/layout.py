@@ -1,0 +1,131 @@
+"""Page composition shared by every diagram: title, drawing, legend, scale bar, caption.
+
+Works in mm with y up (the model's convention); no svgwrite here.
+"""
+from __future__ import annotations
+
+import math
+
+from .labels import Box
+from .model import Drawing, Group, Segment, Text
+from .scale import Scale
+from .text import ASCENT, DESCENT, display, plain, width, wrap
+
+MARGIN = 10.0
+GAP = 8.0
+TITLE_SIZE = 4.2
+SUBTITLE_SIZE = 3.0
+LEGEND_SIZE = 2.8
+CAPTION_SIZE = 3.0
+SCALE_SIZE = 2.6
+LINE = 1.45           # line spacing, × font size
+
+
+def arrow_head(tail, tip, length=3.0, half=1.0, open_head=False):
+    """(head polygon tip-first, shaft end) for an arrow; no head for a zero-length vector."""
+    dx, dy = tip[0] - tail[0], tip[1] - tail[1]
+    L = math.hypot(dx, dy)
+    if L < 0.05:
+        return (), tip
+    hl = min(length, 0.45 * L)
+    hw = half * hl / length
+    ux, uy = dx / L, dy / L
+    bx, by = tip[0] - ux * hl, tip[1] - uy * hl
+    head = ((tip[0], tip[1]), (bx - uy * hw, by + ux * hw), (bx + uy * hw, by - ux * hw))
+    # a filled head hides the shaft's end; an open head must not be crossed by it
+    back = 0.0 if open_head else 0.25 * hl
+    return head, (bx + ux * back, by + uy * back)
+
+
+def scale_bar(scale: Scale, max_len_mm: float) -> tuple[Group, float, float]:
+    """A bar of whole centimetres with ticks and values, and the stated scale.
+
+    Returns (group at origin, width, height).  Its statement text has id 'scale-statement'
+    (the measuring code reads it) and the bar line has id 'scale-bar-line'.
+    """
+    n = int(max(2, min(10, math.floor(max_len_mm / 10.0))))
+    # label every k-th centimetre so the numbers do not collide
+    vals = [plain(round(i * scale.per_cm_display, 12)) for i in range(n + 1)]
+    k = 1
+    while any(width(v, SCALE_SIZE) + 2.0 > 10.0 * k for v in vals) and k < n:
+        k += 1
+    items = [Segment((0.0, 0.0), (10.0 * n, 0.0), "scalebar", cls="scale-bar-line")]
+    tick_y = 1.5
+    for i in range(n + 1):
+        items.append(Segment((10.0 * i, 0.0), (10.0 * i, tick_y if i % k == 0 else 0.8),
+                             "scalebar"))
+        if i % k == 0 or i == n:
+            items.append(Text(10.0 * i, tick_y + 0.8, vals[i], SCALE_SIZE, "middle",
+                              role="scale"))
+    unit_x = 10.0 * n + 2.0
+    items.append(Text(unit_x, -0.4, display(scale.unit), SCALE_SIZE, role="scale"))
+    statement = f"Scale {scale.statement}"
+    sx = unit_x + width(display(scale.unit), SCALE_SIZE) + 4.0
+    items.append(Text(sx, -0.4, statement, SCALE_SIZE + 0.4, role="scale", weight="bold",
+                      ident="scale-statement"))
+    w = sx + width(statement, SCALE_SIZE + 0.4)
+    g = Group("scale-bar", "scale-bar", f"Scale bar: {scale.statement}", tuple(items))
+    return g, w, tick_y + 0.8 + ASCENT * SCALE_SIZE + 1.5
+
+
+def _text_lines(lines, size, role, x, top, weight="normal", faded=False):
+    """Text items for ``lines`` starting with the first baseline below ``top`` (y up)."""
+    out = []
+    y = top - ASCENT * size
+    for i, ln in enumerate(lines):
+        w = weight[i] if isinstance(weight, (list, tuple)) else weight
+        out.append(Text(x, y, ln, size, role=role, weight=w, faded=faded))
+        y -= LINE * size
+    return out
+
+
+def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: str,
+            desc: str, content: list[Group], content_box: Box, legend: list[tuple[str, str]],
+            scale: Scale, caption: list[str], scale_statement: str, meta: dict) -> Drawing:
+    """Put the drawing (``content`` inside ``content_box``, content coordinates) on a page.
+
+    ``legend`` is a list of (text, weight); ``caption`` a list of paragraphs.
+    """
+    cw, ch = content_box.x1 - content_box.x0, content_box.y1 - content_box.y0
+    legend_w = max((width(t, LEGEND_SIZE) for t, _ in legend), default=0.0)
+    legend_h = len(legend) * LINE * LEGEND_SIZE
+    bar, bar_w, bar_h = scale_bar(scale, max(cw, 60.0))
+    title_w = max(width(title, TITLE_SIZE), width(subtitle, SUBTITLE_SIZE))
+    inner_w = max(cw + ((GAP + legend_w) if legend else 0.0), bar_w, title_w, 120.0)
+    cap_lines: list[str] = []
+    for para in caption:
+        cap_lines += wrap(para, inner_w, CAPTION_SIZE)
+    title_h = LINE * TITLE_SIZE + LINE * SUBTITLE_SIZE + 3.0
+    body_h = max(ch, legend_h)
+    cap_h = (len(cap_lines) * LINE * CAPTION_SIZE + 3.0) if cap_lines else 0.0
+    W = round(inner_w + 2 * MARGIN, 1)
+    H = round(MARGIN + title_h + body_h + 4.0 + bar_h + cap_h + MARGIN, 1)
+
+    top = H - MARGIN
+    groups: list[Group] = []
+    groups.append(Group("heading", "heading", "Title", tuple(
+        _text_lines([title], TITLE_SIZE, "title", MARGIN, top, "bold")
+        + _text_lines([subtitle], SUBTITLE_SIZE, "subtitle", MARGIN,
+                      top - LINE * TITLE_SIZE))))
+    body_top = top - title_h
+    dx = MARGIN - content_box.x0
+    dy = body_top - content_box.y1
+    groups += [g.moved(dx, dy) for g in content]
+    if legend:
+        lx = MARGIN + cw + GAP
+        items = []
+        y = body_top - ASCENT * LEGEND_SIZE
+        for text, weight in legend:
+            items.append(Text(lx, y, text, LEGEND_SIZE, role="legend", weight=weight))
+            y -= LINE * LEGEND_SIZE
+        groups.append(Group("legend", "legend", "Legend: values measured on the drawing",
+                            tuple(items)))
+    bar_y = body_top - body_h - 4.0 - bar_h + DESCENT * SCALE_SIZE + 1.0
+    groups.append(bar.moved(MARGIN, bar_y + 1.0))
+    if cap_lines:
+        ctop = bar_y - 3.0
+        groups.append(Group("caption", "caption", "Caption", tuple(
+            _text_lines(cap_lines, CAPTION_SIZE, "caption", MARGIN, ctop))))
+    meta = dict(meta)
+    meta["content_offset"] = (dx, dy)
+    return Drawing(name, kind, stage, W, H, title, desc, tuple(groups), scale_statement, meta)

@@ -1,0 +1,135 @@
+"""The drawing model: what is on the paper, in mm with y up, without svgwrite.
+
+Layout modules (:mod:`diagrams.polygon`, :mod:`diagrams.space`) build a :class:`Drawing` of
+these items; :mod:`diagrams.svg` (the only svgwrite importer) writes it.  Styles are names
+(``'vector'``, ``'construction'``, ``'coriolis'`` ...) whose meaning is carried by line
+weight, dash pattern and arrowhead shape — never by colour alone; see :mod:`diagrams.svg`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+Pt = tuple[float, float]
+
+
+def _mv(p: Pt, dx: float, dy: float) -> Pt:
+    return (p[0] + dx, p[1] + dy)
+
+
+@dataclass(frozen=True)
+class Segment:
+    a: Pt
+    b: Pt
+    style: str
+    faded: bool = False
+    cls: str = ""
+
+    def moved(self, dx, dy):
+        return replace(self, a=_mv(self.a, dx, dy), b=_mv(self.b, dx, dy))
+
+
+@dataclass(frozen=True)
+class Polyline:
+    points: tuple[Pt, ...]
+    style: str
+    closed: bool = False
+    faded: bool = False
+    cls: str = ""
+
+    def moved(self, dx, dy):
+        return replace(self, points=tuple(_mv(p, dx, dy) for p in self.points))
+
+
+@dataclass(frozen=True)
+class Circle:
+    centre: Pt
+    r: float
+    style: str
+    faded: bool = False
+    cls: str = ""
+    ident: str = ""
+
+    def moved(self, dx, dy):
+        return replace(self, centre=_mv(self.centre, dx, dy))
+
+
+@dataclass(frozen=True)
+class Arrow:
+    """A vector: shaft from ``tail`` to ``tip`` and an arrowhead whose first point is the tip.
+
+    ``frm``/``to`` are the polygon vertices (lower case) it joins; ``role`` is 'known',
+    'resolved', 'result', 'coriolis', 'image', 'join' or 'input'.
+    """
+    tail: Pt
+    tip: Pt
+    style: str
+    head: tuple[Pt, ...]          # polygon, tip first ('' when too short to draw)
+    shaft_end: Pt                  # where the shaft stops (base of the head)
+    name: str = ""
+    frm: str = ""
+    to: str = ""
+    role: str = ""
+    title: str = ""
+    faded: bool = False
+    new: bool = False
+
+    def moved(self, dx, dy):
+        return replace(self, tail=_mv(self.tail, dx, dy), tip=_mv(self.tip, dx, dy),
+                       head=tuple(_mv(p, dx, dy) for p in self.head),
+                       shaft_end=_mv(self.shaft_end, dx, dy))
+
+
+@dataclass(frozen=True)
+class Text:
+    x: float
+    baseline: float
+    text: str
+    size: float
+    anchor: str = "start"      # 'start' | 'middle' | 'end'
+    role: str = "label"        # 'vertex', 'line', 'title', 'legend', 'caption', 'scale' ...
+    weight: str = "normal"
+    faded: bool = False
+    cls: str = ""
+    ident: str = ""
+
+    def moved(self, dx, dy):
+        return replace(self, x=self.x + dx, baseline=self.baseline + dy)
+
+
+@dataclass(frozen=True)
+class Group:
+    """A named group (an SVG ``<g>`` with an id, classes and an accessible title)."""
+    ident: str
+    cls: str
+    title: str
+    items: tuple = ()
+
+    def moved(self, dx, dy):
+        return replace(self, items=tuple(i.moved(dx, dy) for i in self.items))
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """One SVG page: ``width`` × ``height`` mm; items in mm with y up from the bottom."""
+    name: str                  # file stem: 'space', 'velocity', 'velocity-2'
+    kind: str                  # 'space' | 'velocity' | 'acceleration'
+    stage: int | None
+    width: float
+    height: float
+    title: str
+    desc: str
+    groups: tuple[Group, ...]
+    scale_statement: str = ""
+    meta: dict = field(default_factory=dict, compare=False, hash=False)
+
+    def items(self, cls: str | None = None):
+        """All items (recursively), optionally only those of groups whose class has ``cls``."""
+        def walk(g):
+            for it in g.items:
+                if isinstance(it, Group):
+                    yield from walk(it)
+                else:
+                    yield it
+        for g in self.groups:
+            if cls is None or cls in g.cls.split():
+                yield from walk(g)

@@ -1,0 +1,452 @@
+"""Velocity and acceleration polygons, final and stage by stage, from the step records.
+
+Nothing here computes kinematics: every vertex, vector and construction line is read from the
+evaluated :class:`~polygons.plan.Step` records (``at``, ``vector``, ``point``, ``direction``)
+and ``Solution.vertices``.  What this module decides is how each record looks on paper:
+
+* a 'vector' or 'image' step is an arrow ``at → point`` (the Coriolis vector drawn heavy with
+  an open head, an image vector with the thin side that closes its image triangle);
+* a 'line' step is a dashed construction line of unknown length through ``at`` along
+  ``direction``, labelled with what the step draws ('c line', 'slider line', 'Coriolis offset
+  line'); the Coriolis offset line also shows its offset from the pin's vertex, dotted;
+* an 'intersection' step fixes a vertex: the parts of its two lines up to the vertex become
+  arrows (anchor → vertex; for the slot line, vertex → anchor: the pin's velocity relative to
+  the lever point) and the absolute vector pole → vertex is added, dotted, if not yet drawn;
+* 'measure' steps draw nothing; their values go to the legend.
+
+Stage k of a diagram shows every drawable step up to the k-th, the k-th in full black and
+heavier, the earlier ones grey, with the step's sentence as the caption.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from polygons.evaluate import Solution
+from polygons.plan import Step
+
+from . import scale as scales
+from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
+from .layout import arrow_head, compose
+from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
+from .text import display, number, token
+
+Pt = tuple[float, float]
+
+LABEL_SIZE = 3.5
+LINE_LABEL_SIZE = 2.7
+FRAME_MARGIN = 10.0     # construction lines run this far (mm) beyond the polygon
+QUANTITY = {"velocity": "velocity", "acceleration": "acceleration"}
+UNIT_SI = {"velocity": "m/s", "acceleration": "m/s²"}
+DRAWABLE = ("vector", "image", "line", "intersection")
+
+
+@dataclass(frozen=True)
+class Stroke:
+    """One thing drawn on the polygon, in polygon coordinates (SI)."""
+    step: int           # the step that draws it
+    kind: str           # 'arrow' | 'line' | 'offset' | 'side'
+    role: str           # arrows: 'known' 'resolved' 'result' 'coriolis' 'join' 'image'
+    a: Pt               # arrow tail / line anchor / segment start
+    b: Pt               # arrow tip / line direction / segment end
+    frm: str = ""
+    to: str = ""
+    label: str = ""     # lines: what the step draws; arrows: the quantity
+    title: str = ""
+
+
+@dataclass(frozen=True)
+class Construction:
+    diagram: str
+    pole: str
+    pole_label: str
+    steps: tuple[Step, ...]          # the drawable steps, in order (stage k = steps[k-1])
+    measures: tuple[Step, ...]
+    strokes: tuple[Stroke, ...]
+    vertices: dict                   # name -> SI polygon coordinates
+    born: dict                       # vertex -> step number that creates it (pole: 0)
+
+
+def construction(sol: Solution, diagram: str) -> Construction:
+    """The strokes of ``diagram`` from the solution's evaluated steps (no recomputation)."""
+    steps = [s for s in sol.steps if s.diagram == diagram]
+    vx = dict(sol.vertices[diagram])
+    pole = sol.pole
+    aliases = [pole] + [g.lower() for g in sol.scene.ground if g.lower() != pole]
+    born = {pole: 0}
+    strokes: list[Stroke] = []
+    lines: dict[int, Step] = {}
+    measures = []
+    unit = UNIT_SI[diagram]
+    for s in steps:
+        if s.kind in ("vector", "image"):
+            role = {"coriolis": "coriolis", "join": "join"}.get(
+                s.op, "image" if s.kind == "image" else "known")
+            strokes.append(Stroke(s.number, "arrow", role, s.at, s.point, s.start, s.end,
+                                  s.quantity, f"{s.start}{s.end}: {s.quantity}"))
+            if s.kind == "image":
+                q = sol.vertex_of(s.args[2])
+                strokes.append(Stroke(s.number, "side", "image-side", vx[q], s.point, q, s.end))
+            born.setdefault(s.end, s.number)
+        elif s.kind == "line":
+            lines[s.number] = s
+            strokes.append(Stroke(s.number, "line", "construction", s.at, s.direction,
+                                  s.start or "", "", s.draws, s.reason))
+            if s.op == "coriolis_offset_line" and s.start is not None:
+                strokes.append(Stroke(s.number, "offset", "offset", vx[s.start], s.at,
+                                      s.start, "", "2ωv"))
+        elif s.kind == "intersection":
+            born.setdefault(s.end, s.number)
+            made = set()
+            for n in s.lines:
+                ln = lines[n]
+                if ln.op == "coriolis_offset_line" or ln.start is None:
+                    continue
+                if _points_back(sol, ln, s.end):   # e.g. the slot line: pin relative to
+                    tail, tip, frm, to = s.point, ln.at, s.end, ln.start   # the lever point
+                else:
+                    tail, tip, frm, to = ln.at, s.point, ln.start, s.end
+                strokes.append(Stroke(s.number, "arrow", "resolved", tail, tip, frm, to,
+                                      ln.quantity, f"{frm}{to}: {ln.quantity}"))
+                made.add((frm, to))
+            if (pole, s.end) not in made:
+                strokes.append(Stroke(s.number, "arrow", "result", vx[pole], s.point, pole,
+                                      s.end, s.quantity, f"{pole}{s.end}: {s.quantity}"))
+        elif s.kind == "measure":
+            measures.append(s)
+    drawable = tuple(s for s in steps if s.kind in DRAWABLE)
+    return Construction(diagram, pole, " = ".join(aliases), drawable, tuple(measures),
+                        tuple(strokes), vx, born)
+
+
+_RELATIVE = re.compile(r"^\((?:v|a)_([^)]+)\)_([^\s^]+)")
+
+
+def _points_back(sol: Solution, line: Step, end: str) -> bool:
+    """True when the vector on ``line`` runs from the new vertex back to the line's anchor.
+
+    A line of unknown length carries a relative vector '(v_X)_Y' (X relative to Y, drawn
+    y → x).  Usually the line goes through y and the intersection makes x; when it goes
+    through x (the slot line through the pin's vertex) the arrow points back at the anchor.
+    """
+    m = _RELATIVE.match(line.quantity)
+    if m:
+        x, ref = m.groups()
+        if line.start == sol.vertex_of(x) and end == sol.vertex_of(ref):
+            return True
+        if line.start == sol.vertex_of(ref):
+            return False
+    return line.op == "line_along"
+
+
+# ---------------------------------------------------------------- layout of the final drawing
+@dataclass(frozen=True)
+class Layout:
+    """The final polygon on paper (content coordinates, mm): shared by all its stages."""
+    con: Construction
+    scale: scales.Scale
+    origin: Pt                       # SI point drawn at content (0, 0)
+    frame: Box
+    vertex_labels: tuple             # (names tuple, x, baseline, box)
+    line_labels: dict                # step number -> (text, x, baseline, box)
+    coriolis_labels: dict            # step number -> (x, baseline, box)
+
+    def P(self, v: Pt) -> Pt:
+        k = self.scale.mm_per_si
+        return (round((v[0] - self.origin[0]) * k, 3), round((v[1] - self.origin[1]) * k, 3))
+
+
+def _extent_points(con: Construction) -> list[Pt]:
+    pts = list(con.vertices.values())
+    for st in con.strokes:
+        if st.kind in ("line", "offset"):
+            pts.append(st.a)
+        if st.kind == "offset":
+            pts.append(st.b)
+    return pts
+
+
+def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
+           paper: str | None = None) -> Layout:
+    con = construction(sol, diagram)
+    pts = _extent_points(con)
+    bb = bounds(pts)
+    extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
+    lengths = [math.hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]) for s in con.strokes
+               if s.kind == "arrow"]
+    if scale is None:
+        scale = scales.choose(QUANTITY[diagram], extent, lengths, paper)
+    scales.check_size(scale, extent, diagram)
+    lay = Layout(con, scale, (bb.x0, bb.y0), Box(0, 0, 0, 0), (), {}, {})
+    k = scale.mm_per_si
+    w, h = extent[0] * k, extent[1] * k
+    frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
+    lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {})
+    return _place_labels(lay)
+
+
+def _geometry(lay: Layout):
+    """Paper geometry of every stroke: arrows (tail, tip), line chords, offsets, sides."""
+    out = []
+    for st in lay.con.strokes:
+        if st.kind == "line":
+            a = lay.P(st.a)
+            chord = clip_line(a, st.b, lay.frame)
+            out.append((st, chord))
+        else:
+            out.append((st, (lay.P(st.a), lay.P(st.b))))
+    return out
+
+
+def _place_labels(lay: Layout) -> Layout:
+    con = lay.con
+    placer = Placer(frame=lay.frame)
+    geo = _geometry(lay)
+    for st, g in geo:
+        if g is None:
+            continue
+        if st.kind == "arrow":
+            placer.hard(g[0], g[1], 1.0)
+        elif st.kind == "line":
+            placer.soft(g[0], g[1])
+        else:
+            placer.hard(g[0], g[1], 0.5)
+    # vertices: group those drawn at the same place
+    order = sorted(con.vertices, key=lambda n: (con.born.get(n, 99), n))
+    groups: list[list[str]] = []
+    for n in order:
+        p = lay.P(con.vertices[n])
+        for gr in groups:
+            q = lay.P(con.vertices[gr[0]])
+            if math.hypot(p[0] - q[0], p[1] - q[1]) < 0.6:
+                gr.append(n)
+                break
+        else:
+            groups.append([n])
+    for gr in groups:
+        p = lay.P(con.vertices[gr[0]])
+        placer.block(Box(p[0] - 0.8, p[1] - 0.8, p[0] + 0.8, p[1] + 0.8))
+    vlabels = []
+    for gr in groups:
+        at = lay.P(con.vertices[gr[0]])
+        others = []
+        for st, g in geo:
+            if g is None:
+                continue
+            if st.kind == "line":
+                if _dist_to_line(at, g) < 0.3:
+                    others += [g[0], g[1]]
+            elif _near(g[0], at):
+                others.append(g[1])
+            elif _near(g[1], at):
+                others.append(g[0])
+        prefer = largest_gap_direction(at, others)
+        text = _vertex_text(con, gr, None)
+        placer.boxes = [b for b in placer.boxes
+                        if not (b.x1 - b.x0 < 1.7 and b.contains(at))]   # own dot
+        x, base, _, box = placer.place(text, at, LABEL_SIZE, prefer=prefer)
+        vlabels.append((tuple(gr), x, base, box))
+        placer.block(Box(at[0] - 0.8, at[1] - 0.8, at[0] + 0.8, at[1] + 0.8))
+    llabels = {}
+    for st, g in geo:
+        if st.kind != "line" or g is None:
+            continue
+        (x0, y0), (x1, y1) = g
+        L = math.hypot(x1 - x0, y1 - y0)
+        ang = math.atan2(y1 - y0, x1 - x0)
+        anchors = []
+        for f in (0.96, 0.04, 0.88, 0.12, 0.75, 0.25):
+            pt = (x0 + f * (x1 - x0), y0 + f * (y1 - y0))
+            anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
+        text = display(st.label)
+        placer.hard(g[0], g[1], 0.4)            # not across its own line
+        x, base, _, box = placer.place_any(text, LINE_LABEL_SIZE, anchors,
+                                           distances=(0.5, 1.0, 2.0, 3.5, 5.5, 8.0))
+        placer.hard_segments.pop()
+        llabels[st.step] = (text, x, base, box)
+    clabels = {}
+    for st, g in geo:
+        if st.kind == "arrow" and st.role == "coriolis":
+            mid = ((g[0][0] + g[1][0]) / 2, (g[0][1] + g[1][1]) / 2)
+            ang = math.atan2(g[1][1] - g[0][1], g[1][0] - g[0][0])
+            x, base, _, box = placer.place_any("2ωv", LINE_LABEL_SIZE + 0.3,
+                                               [(mid, [ang + math.pi / 2, ang - math.pi / 2])],
+                                               distances=(0.8, 1.5, 2.5, 4.0, 6.0, 9.0))
+            clabels[st.step] = (x, base, box)
+    return Layout(con, lay.scale, lay.origin, lay.frame, tuple(vlabels), llabels, clabels)
+
+
+def _near(p: Pt, q: Pt, tol: float = 0.05) -> bool:
+    return abs(p[0] - q[0]) < tol and abs(p[1] - q[1]) < tol
+
+
+def _dist_to_line(p: Pt, chord) -> float:
+    (x0, y0), (x1, y1) = chord
+    L = math.hypot(x1 - x0, y1 - y0)
+    if L == 0:
+        return math.inf
+    return abs((x1 - x0) * (y0 - p[1]) - (x0 - p[0]) * (y1 - y0)) / L
+
+
+def _vertex_text(con: Construction, names, upto: int | None) -> str:
+    shown = [n for n in names if upto is None or con.born.get(n, 0) <= upto]
+    return " = ".join(con.pole_label if n == con.pole else n for n in shown)
+
+
+# ---------------------------------------------------------------- drawing a stage
+ARROW_STYLE = {"known": "vector", "resolved": "vector", "join": "vector", "image": "vector",
+               "result": "result", "coriolis": "coriolis"}
+
+
+def _stage_number(con: Construction, stage: int | None) -> int | None:
+    """Step number shown last in ``stage`` (1-based index into the drawable steps)."""
+    return None if stage is None else con.steps[stage - 1].number
+
+
+def stroke_items(lay: Layout, stage: int | None):
+    """The drawn items of the polygon up to ``stage`` (None: the finished polygon)."""
+    con = lay.con
+    upto = _stage_number(con, stage)
+    lines_g, vec_g, pts_g, lab_g = [], [], [], []
+    for st, g in _geometry(lay):
+        if upto is not None and st.step > upto:
+            continue
+        faded = upto is not None and st.step < upto
+        new = upto is not None and st.step == upto
+        if st.kind == "line":
+            if g is None:
+                continue
+            lines_g.append(Segment(g[0], g[1], "construction-new" if new else "construction",
+                                   faded, cls=f"construction-line step-{st.step}"))
+            text, x, base, _ = lay.line_labels[st.step]
+            lab_g.append(Text(x, base, text, LINE_LABEL_SIZE, role="line", faded=faded,
+                              cls=f"line-label step-{st.step}"))
+        elif st.kind == "offset":
+            lines_g.append(Segment(g[0], g[1], "offset", faded, cls=f"offset step-{st.step}"))
+        elif st.kind == "side":
+            lines_g.append(Segment(g[0], g[1], "image-side", faded,
+                                   cls=f"image-side step-{st.step}"))
+        else:
+            style = ARROW_STYLE[st.role]
+            if new:
+                style += "-new"
+            head, shaft_end = arrow_head(g[0], g[1], open_head=st.role == "coriolis")
+            vec_g.append(Arrow(g[0], g[1], style, head, shaft_end, f"{st.frm}{st.to}",
+                               st.frm, st.to, st.role, display(st.title), faded, new))
+            if st.role == "coriolis":
+                x, base, _ = lay.coriolis_labels[st.step]
+                lab_g.append(Text(x, base, "2ωv", LINE_LABEL_SIZE + 0.3, role="coriolis",
+                                  weight="bold", faded=faded, cls="coriolis-label"))
+    for names, x, base, box in lay.vertex_labels:
+        text = _vertex_text(con, names, upto)
+        if not text:
+            continue
+        at = lay.P(con.vertices[names[0]])
+        visible = [n for n in names if upto is None or con.born.get(n, 0) <= upto]
+        newest = max(con.born.get(n, 0) for n in visible)
+        faded = upto is not None and newest < upto
+        for n in visible:
+            pole = n == con.pole
+            pts_g.append(Circle(at, 0.9 if pole else 0.55, "pole" if pole else "vertex",
+                                faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
+        lab_g.append(Text(x, base, text, LABEL_SIZE, role="vertex", faded=faded,
+                          cls="vertex-label", weight="bold" if not faded else "normal"))
+    return [Group(f"{con.diagram}-construction", "construction", "Construction lines",
+                  tuple(lines_g)),
+            Group(f"{con.diagram}-vectors", "vectors", "Vectors",
+                  tuple(Group(f"{con.diagram}-vec-{i}-{token(a.name)}",
+                              f"vector {a.role} from-{token(a.frm)} to-{token(a.to)}",
+                              f"{a.title} — {number(lay.scale.si(_len(a)) / lay.scale.factor)}"
+                              f" {display(lay.scale.unit)} at {lay.scale.statement}",
+                              (a,)) for i, a in enumerate(vec_g))),
+            Group(f"{con.diagram}-vertices", "vertices", "Polygon vertices", tuple(pts_g)),
+            Group(f"{con.diagram}-labels", "labels", "Labels", tuple(lab_g))]
+
+
+def _len(a: Arrow) -> float:
+    return math.hypot(a.tip[0] - a.tail[0], a.tip[1] - a.tail[1])
+
+
+def _content_box(lay: Layout) -> Box:
+    box = lay.frame
+    for _, _, _, b in lay.vertex_labels:
+        box = box.union(b)
+    for _, _, _, b in lay.line_labels.values():
+        box = box.union(b)
+    for _, _, b in lay.coriolis_labels.values():
+        box = box.union(b)
+    return box.grown(1.0)
+
+
+def legend(lay: Layout) -> list[tuple[str, str]]:
+    """Vector lengths read off the drawing (mm ÷ scale) and the step's measured values."""
+    sc = lay.scale
+    out = [(f"Scaled from the drawing ({sc.statement}):", "bold")]
+    seen = set()
+    for st, g in _geometry(lay):
+        if st.kind != "arrow":
+            continue
+        name = f"{st.frm}{st.to}"
+        if name in seen:
+            continue
+        seen.add(name)
+        mm = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
+        val = sc.si(mm) / sc.factor
+        what = "Coriolis 2ωv" if st.role == "coriolis" else display(st.label)
+        out.append((f"{name} = {number(val, 4)} {display(sc.unit)}  ({mm:.1f} mm)  {what}",
+                    "normal"))
+    if lay.con.measures:
+        out.append(("", "normal"))
+        out.append(("From the construction:", "bold"))
+        for m in lay.con.measures:
+            out.append((measure_text(m), "normal"))
+    return out
+
+
+def measure_text(m: Step) -> str:
+    """'ω_BC = 45.62 rad/s CW  (bc / BC)': a measure step's value, its sense, its formula."""
+    unit = display(m.unit)
+    if m.value is None:
+        return display(m.draws)
+    if m.unit.startswith("rad"):
+        sense = "" if m.value == 0 else (" CCW" if m.value > 0 else " CW")
+        val = f"{number(abs(m.value))} {unit}{sense}"
+    else:
+        val = f"{number(m.value)} {unit}"
+    rhs = m.formula.split("=", 1)[1].strip() if "=" in m.formula else ""
+    return display(f"{m.draws} = {val}" + (f"  (= {rhs})" if rhs else ""))
+
+
+def _letter(i: int) -> str:
+    return chr(ord("a") + i - 1) if i <= 26 else str(i)
+
+
+def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
+    con = lay.con
+    what = "Velocity" if con.diagram == "velocity" else "Acceleration"
+    sid = sol.scene.source.get("id", "")
+    subtitle = f"{sid}: {sol.scene.title}" if sid else sol.scene.title
+    n = len(con.steps)
+    if stage is None:
+        name = con.diagram
+        title = f"{what} diagram (pole {con.pole_label})"
+        caption = []
+        legend_lines = legend(lay)
+        desc = (f"{what} polygon of {sol.scene.title}, drawn to scale {lay.scale.statement}. "
+                + " ".join(f"{i}. {s.reason}" for i, s in enumerate(con.steps, 1)))
+    else:
+        s = con.steps[stage - 1]
+        name = f"{con.diagram}-{stage}"
+        title = f"{what} diagram, Fig. {_letter(stage)} (stage {stage} of {n})"
+        caption = [f"Fig. {_letter(stage)}. {display(s.reason)}"]
+        if s.substituted:
+            caption.append(display(s.substituted))
+        legend_lines = []
+        desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {s.reason}"
+    content = stroke_items(lay, stage)
+    return compose(name=name, kind=con.diagram, stage=stage, title=title, subtitle=subtitle,
+                   desc=desc, content=content, content_box=_content_box(lay),
+                   legend=legend_lines, scale=lay.scale, caption=caption,
+                   scale_statement=lay.scale.statement,
+                   meta={"layout": lay})

@@ -1,0 +1,212 @@
+"""Drawing-board scales: '1 cm = 2 m/s', chosen from 1, 2, 2.5, 5 × 10ⁿ units per cm.
+
+:func:`choose` picks the largest drawing whose polygon still fits the paper area (A5 first,
+A4 when A5 would leave the shortest vector too short to draw and read), :func:`parse` reads a
+scale forced by the user (``--scale velocity="2 m/s"`` or ``[diagram] velocity_scale``).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Mapping
+
+from polygons.errors import PolygonsError, SceneError, UnknownKeyError, suggest
+from polygons.units import UNITS, parse_quantity
+
+from .text import plain
+
+
+class DiagramError(PolygonsError):
+    """A diagram cannot be drawn as asked (bad scale, paper, output folder...)."""
+
+
+class ScaleError(DiagramError):
+    """A forced scale that cannot be used."""
+
+
+#: the mantissas of a round drawing scale (units per cm)
+ROUND = (1.0, 2.0, 2.5, 5.0)
+#: the area (mm) the polygon or mechanism must fit, by paper size (landscape, less margins,
+#: title, scale bar and legend)
+PAPER = {"A5": (150.0, 100.0), "A4": (230.0, 150.0)}
+#: below this drawn length (mm) a vector is too short to draw an arrowhead and read a length
+MIN_VECTOR_MM = 5.0
+#: largest drawing accepted with a forced scale (mm)
+MAX_DRAWING_MM = 2000.0
+
+QUANTITY_OF = {"space": "length", "velocity": "velocity", "acceleration": "acceleration"}
+_DISPLAY = {  # quantity -> ((unit, SI factor) for ordinary scales, (unit, factor) for small)
+    "length": (("mm", 1e-3), ("m", 1.0)),
+    "velocity": (("m/s", 1.0), ("mm/s", 1e-3)),
+    "acceleration": (("m/s²", 1.0), ("mm/s²", 1e-3)),
+}
+
+
+@dataclass(frozen=True)
+class Scale:
+    """``per_cm`` SI units are drawn as 1 cm; ``unit``/``factor`` are the unit stated."""
+
+    quantity: str        # 'length' | 'velocity' | 'acceleration'
+    per_cm: float        # SI units per cm of paper
+    unit: str            # unit written on the drawing ('m/s', 'mm', 'm/s²' ...)
+    factor: float        # SI value of one `unit`
+    forced: bool = False
+
+    @property
+    def mm_per_si(self) -> float:
+        return 10.0 / self.per_cm
+
+    def mm(self, si: float) -> float:
+        """Drawn length (mm) of an SI magnitude."""
+        return si * self.mm_per_si
+
+    def si(self, mm: float) -> float:
+        """SI magnitude of a drawn length (mm): what a ruler reading means."""
+        return mm / self.mm_per_si
+
+    @property
+    def per_cm_display(self) -> float:
+        return self.per_cm / self.factor
+
+    @property
+    def statement(self) -> str:
+        return f"1 cm = {plain(self.per_cm_display)} {self.unit}"
+
+
+def make(quantity: str, per_cm: float, forced: bool = False) -> Scale:
+    """A :class:`Scale` with the stated unit chosen for readability."""
+    big, small = _DISPLAY[quantity]
+    if quantity == "length":
+        unit, factor = (big if per_cm < 1.0 else small)    # mm below 1 m per cm
+    else:
+        unit, factor = (big if per_cm >= 0.1 - 1e-12 else small)
+    return Scale(quantity, per_cm, unit, factor, forced)
+
+
+def round_up(x: float) -> float:
+    """The smallest round scale value (1, 2, 2.5, 5 × 10ⁿ) ≥ ``x``."""
+    if not (x > 0 and math.isfinite(x)):
+        return 1.0
+    n = math.floor(math.log10(x))
+    for k in (n - 1, n, n + 1):
+        for m in ROUND:
+            v = float(f"{m}e{k}")
+            if v >= x * (1 - 1e-12):
+                return v
+    raise AssertionError(x)  # pragma: no cover
+
+
+def choose(quantity: str, extent: tuple[float, float], vectors: list[float] = (),
+           paper: str | None = None, pad_mm: float = 0.0) -> Scale:
+    """Round scale for a drawing whose SI extent is ``extent`` (width, height).
+
+    With ``paper`` None: A5 unless the shortest non-zero vector would be drawn shorter than
+    :data:`MIN_VECTOR_MM`, then A4 if that lengthens it.  ``pad_mm`` is room the drawing needs
+    beyond its scaled extent (symbols, labels).
+    """
+    if paper is not None and paper not in PAPER:
+        raise ScaleError(f"unknown paper {paper!r}: {suggest(paper, PAPER)}")
+    sizes = [paper] if paper else ["A5", "A4"]
+    best = None
+    for name in sizes:
+        need = math.inf
+        for aw, ah in (PAPER[name], PAPER[name][::-1]):     # landscape or portrait
+            aw, ah = aw - pad_mm, ah - pad_mm
+            need = min(need, max(extent[0] * 10.0 / aw if extent[0] > 0 else 0.0,
+                                 extent[1] * 10.0 / ah if extent[1] > 0 else 0.0))
+        best = make(quantity, round_up(need))
+        shortest = min((v for v in vectors if v > 0), default=None)
+        if shortest is None or best.mm(shortest) >= MIN_VECTOR_MM:
+            break
+    return best
+
+
+def parse(text, quantity: str, *, file: str | None = None, where: str | None = None
+          ) -> Scale:
+    """Read a forced scale: '2 m/s', '1 cm = 2 m/s', '20 mm' (per cm of paper)."""
+    dims = {"length": "length", "velocity": "velocity", "acceleration": "acceleration"}
+    err = SceneError if file else ScaleError
+    if not isinstance(text, str):
+        raise err(f"a scale is text such as '1 cm = 2 m/s', got {text!r}", file=file,
+                  where=where)
+    s = " ".join(text.split())
+    lhs = None
+    if "=" in s:
+        lhs, s = (part.strip() for part in s.split("=", 1))
+    per = 0.01
+    if lhs is not None:
+        try:
+            per = parse_quantity(lhs, "length")
+        except PolygonsError:
+            raise err(f"cannot read the paper length {lhs!r} in the scale {text!r}; write "
+                      f"'1 cm = 2 m/s'", file=file, where=where) from None
+        if per <= 0:
+            raise err(f"the paper length in {text!r} must be positive", file=file, where=where)
+    try:
+        value = parse_quantity(s, dims[quantity])
+    except PolygonsError as exc:
+        raise err(f"bad {quantity} scale {text!r}: {exc.reason}", file=file,
+                  where=where) from None
+    if not (value > 0 and math.isfinite(value)):
+        raise err(f"a scale must be positive, got {text!r}", file=file, where=where)
+    return make(quantity, value * 0.01 / per, forced=True)
+
+
+def check_size(scale: Scale, extent: tuple[float, float], kind: str) -> None:
+    w, h = scale.mm(extent[0]), scale.mm(extent[1])
+    if max(w, h) > MAX_DRAWING_MM:
+        raise ScaleError(f"the {kind} diagram at {scale.statement} would be "
+                         f"{w:.0f} × {h:.0f} mm; choose a larger value per cm "
+                         f"(automatic: leave --scale out)")
+
+
+DIAGRAM_KEYS = ("space_scale", "velocity_scale", "acceleration_scale", "paper", "stages")
+
+
+def options_from_scene(extra: Mapping, file: str | None) -> dict:
+    """Validate the scene's optional ``[diagram]`` table: forced scales, paper, stages."""
+    table = extra.get("diagram")
+    if table is None:
+        return {}
+    if not isinstance(table, dict):
+        raise SceneError("[diagram] must be a table", file=file, where="diagram")
+    out: dict = {"scales": {}}
+    for key, value in table.items():
+        if key not in DIAGRAM_KEYS:
+            raise UnknownKeyError(f"unknown key {key!r}: {suggest(key, DIAGRAM_KEYS)}",
+                                  file=file, where=f"diagram.{key}")
+        if key.endswith("_scale"):
+            kind = key[:-len("_scale")]
+            out["scales"][kind] = parse(value, QUANTITY_OF[kind], file=file,
+                                        where=f"diagram.{key}")
+        elif key == "paper":
+            if value not in PAPER:
+                raise SceneError(f"paper must be one of {', '.join(PAPER)}, got {value!r}",
+                                 file=file, where="diagram.paper")
+            out["paper"] = value
+        elif key == "stages":
+            if not isinstance(value, bool):
+                raise SceneError(f"stages must be true or false, got {value!r}", file=file,
+                                 where="diagram.stages")
+            out["stages"] = value
+    return out
+
+
+def parse_cli(items: list[str] | None) -> dict[str, Scale]:
+    """``--scale velocity='2 m/s'`` (repeatable) → {'velocity': Scale}."""
+    out: dict[str, Scale] = {}
+    for item in items or ():
+        if "=" not in item:
+            raise ScaleError(f"--scale {item!r}: write KIND=VALUE, e.g. "
+                             f"--scale velocity='2 m/s' (KIND: {', '.join(QUANTITY_OF)})")
+        kind, value = item.split("=", 1)
+        kind = kind.strip()
+        if kind not in QUANTITY_OF:
+            raise ScaleError(f"--scale {item!r}: unknown diagram {kind!r}: "
+                             f"{suggest(kind, QUANTITY_OF)}")
+        out[kind] = parse(value, QUANTITY_OF[kind])
+    return out
+
+
+__all__ = ["Scale", "DiagramError", "ScaleError", "choose", "parse", "parse_cli", "make",
+           "round_up", "PAPER", "MIN_VECTOR_MM", "UNITS"]

@@ -1,0 +1,375 @@
+"""The space diagram: the mechanism at the instant solved, to a round scale.
+
+Positions come from ``Solution.placement.points`` and the scene (guides, slots, body points);
+nothing is computed here but where the symbols go.  Links are heavy lines, pins open circles,
+fixed pivots carry a hatched ground symbol, sliders a block between hatched guides, slotted
+levers an open slot around the pin, and the input crank an arc arrow with its sense (ω, and
+α dashed with an open head when given).  Point labels are upper case, as in the tutorial.
+"""
+from __future__ import annotations
+
+import math
+
+from polygons.evaluate import Solution, link_ends
+from polygons.scene import Crank
+
+from . import scale as scales
+from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
+from .layout import arrow_head, compose
+from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
+from .text import display, number, token
+
+Pt = tuple[float, float]
+LABEL_SIZE = 3.8
+NOTE_SIZE = 2.8
+PIN_R = 1.1
+PAD_MM = 30.0            # room (mm) around the mechanism for symbols and labels
+
+
+def _add(p, q, k=1.0):
+    return (p[0] + k * q[0], p[1] + k * q[1])
+
+
+def _unit(v):
+    n = math.hypot(*v)
+    return (v[0] / n, v[1] / n) if n else (1.0, 0.0)
+
+
+def _rot(v, ang):
+    c, s = math.cos(ang), math.sin(ang)
+    return (c * v[0] - s * v[1], s * v[0] + c * v[1])
+
+
+def _r(p):
+    return (round(p[0], 3), round(p[1], 3))
+
+
+def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
+    """Short 45° strokes on ``side`` of the ground line a–b (the 'fixed' symbol)."""
+    L = math.hypot(b[0] - a[0], b[1] - a[1])
+    u = _unit((b[0] - a[0], b[1] - a[1]))
+    n = int(L // step)
+    out = []
+    slant = _unit(_add(side, u, -1.0))
+    for i in range(n + 1):
+        p = _add(a, u, i * L / max(n, 1))
+        out.append(Segment(_r(p), _r(_add(p, slant, length)), "hatch"))
+    return out
+
+
+def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | None = None):
+    scene = sol.scene
+    pos = {k: tuple(v) for k, v in sol.placement.points.items()}
+    bb = bounds(list(pos.values()))
+    extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
+    if scale is None:
+        scale = scales.choose("length", extent, [], paper, pad_mm=PAD_MM)
+    scales.check_size(scale, extent, "space")
+    k = scale.mm_per_si
+    P = {lab: (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3))
+         for lab, p in pos.items()}
+    frame = Box(-15.0, -15.0, extent[0] * k + 15.0, extent[1] * k + 15.0)
+    placer = Placer(frame=frame)
+    back, links, symbols, pins, inputs = [], [], [], [], []
+    neighbours: dict[str, list[Pt]] = {lab: [] for lab in P}
+
+    def link(a: Pt, b: Pt, style="link", cls=""):
+        links.append(Segment(_r(a), _r(b), style, cls=cls))
+        placer.hard(a, b, 1.0)
+
+    # line of centres between the fixed pivots
+    ground = [g for g in scene.ground if g in P]
+    if len(ground) >= 2:
+        back.append(Segment(P[ground[0]], P[ground[1]], "centre", cls="line-of-centres"))
+        placer.soft(P[ground[0]], P[ground[1]])
+
+    # slotted levers
+    slotted = set()
+    for slot in scene.slots.values():
+        if slot.pin not in P or slot.pivot not in P:
+            continue
+        piv, pin = P[slot.pivot], P[slot.pin]
+        e = _unit((pin[0] - piv[0], pin[1] - piv[1]))
+        n = (-e[1], e[0])
+        end = P[slot.far] if slot.far and slot.far in P else _add(pin, e, 12.0)
+        s0, s1 = _add(pin, e, -9.0), _add(pin, e, 9.0)
+        link(piv, s0, cls=f"link {slot.lever}")
+        if math.hypot(end[0] - s1[0], end[1] - s1[1]) > 0.5 and \
+                (end[0] - pin[0]) * e[0] + (end[1] - pin[1]) * e[1] > 9.0:
+            link(s1, end, cls=f"link {slot.lever}")
+        w = 1.9
+        outline = (_add(s0, n, w), _add(s1, n, w), _add(s1, n, -w), _add(s0, n, -w))
+        links.append(Polyline(tuple(_r(p) for p in outline), "slot", closed=True,
+                              cls=f"slot {slot.lever}"))
+        for p, q in zip(outline, outline[1:] + outline[:1]):
+            placer.hard(p, q, 0.6)
+        blk = (_add(_add(pin, e, -2.6), n, 1.5), _add(_add(pin, e, 2.6), n, 1.5),
+               _add(_add(pin, e, 2.6), n, -1.5), _add(_add(pin, e, -2.6), n, -1.5))
+        symbols.append(Polyline(tuple(_r(p) for p in blk), "block", closed=True,
+                                cls="slot-block"))
+        slotted.add(slot.lever)
+        neighbours[slot.pivot].append(pin)
+        neighbours[slot.pin] += [piv, end]
+        if slot.coincident in neighbours:
+            neighbours[slot.coincident] += [piv, end]
+        if slot.far and slot.far in neighbours:
+            neighbours[slot.far].append(piv)
+
+    # binary links
+    for name, ln in scene.links.items():
+        if name in slotted or ln.a not in P or ln.b not in P:
+            continue
+        link(P[ln.a], P[ln.b], cls=f"link {name}")
+        neighbours[ln.a].append(P[ln.b])
+        neighbours[ln.b].append(P[ln.a])
+
+    # points rigid with a link: continuation or plate
+    for lab, bp in scene.points.items():
+        if lab not in P:
+            continue
+        try:
+            a, b = link_ends(scene, bp.link)
+        except KeyError:
+            continue
+        if a not in P or b not in P:
+            continue
+        pa, pb, px = P[a], P[b], P[lab]
+        ab = (pb[0] - pa[0], pb[1] - pa[1])
+        L2 = ab[0] ** 2 + ab[1] ** 2
+        off = abs(ab[0] * (px[1] - pa[1]) - ab[1] * (px[0] - pa[0])) / math.sqrt(L2)
+        if off < 0.05:
+            t = ((px[0] - pa[0]) * ab[0] + (px[1] - pa[1]) * ab[1]) / L2
+            if t > 1:
+                link(pb, px, cls=f"link {bp.link}")
+                neighbours[b].append(px)
+                neighbours[lab].append(pb)
+            elif t < 0:
+                link(pa, px, cls=f"link {bp.link}")
+                neighbours[a].append(px)
+                neighbours[lab].append(pa)
+            else:
+                neighbours[lab] += [pa, pb]
+        else:
+            links.append(Polyline((pa, pb, px), "plate", closed=True, cls=f"plate {bp.link}"))
+            placer.hard(pa, px, 1.0)
+            placer.hard(pb, px, 1.0)
+            neighbours[lab] += [pa, pb]
+            neighbours[a].append(px)
+            neighbours[b].append(px)
+
+    # slider guides and blocks
+    for lab, g in scene.sliders.items():
+        if lab not in P:
+            continue
+        c = P[lab]
+        e = (math.cos(g.angle), math.sin(g.angle))
+        n = (-e[1], e[0])
+        path = clip_line(c, e, frame)
+        if path:
+            back.append(Segment(_r(path[0]), _r(path[1]), "guide-path", cls="guide-path"))
+            placer.soft(*path)
+        hw, hh, L = 5.5, 3.2, 17.0
+        for side in (1, -1):
+            a = _add(_add(c, e, -L), n, side * (hh + 0.2))
+            b = _add(_add(c, e, L), n, side * (hh + 0.2))
+            symbols.append(Segment(_r(a), _r(b), "ground", cls="guide"))
+            symbols += _hatch(a, b, (n[0] * side, n[1] * side))
+            placer.hard(a, b, 0.4)
+            placer.hard(_add(a, n, side * 1.8), _add(b, n, side * 1.8), 0.2)
+        pin = getattr(g, "pin", None)
+        sd = getattr(g, "slot_direction", None)
+        if pin and sd and pin in P:      # a yoke: the slider carries a straight slot
+            q = P[pin]
+            t = (q[0] - c[0]) * sd[0] + (q[1] - c[1]) * sd[1]
+            lo, hi = min(0.0, t) - 8.0, max(0.0, t) + 8.0
+            sn = (-sd[1], sd[0])
+            w = 1.9
+            outline = (_add(_add(c, sd, lo), sn, w), _add(_add(c, sd, hi), sn, w),
+                       _add(_add(c, sd, hi), sn, -w), _add(_add(c, sd, lo), sn, -w))
+            links.append(Polyline(tuple(_r(p) for p in outline), "slot", closed=True,
+                                  cls=f"slot yoke {lab}"))
+            for p0, p1 in zip(outline, outline[1:] + outline[:1]):
+                placer.hard(p0, p1, 0.6)
+            pb = (_add(_add(q, sd, -2.6), sn, 1.5), _add(_add(q, sd, 2.6), sn, 1.5),
+                  _add(_add(q, sd, 2.6), sn, -1.5), _add(_add(q, sd, -2.6), sn, -1.5))
+            symbols.append(Polyline(tuple(_r(p) for p in pb), "block", closed=True,
+                                    cls="slot-block"))
+            neighbours[pin] += [_add(c, sd, lo), _add(c, sd, hi)]
+            neighbours[lab] += [q]
+        blk = (_add(_add(c, e, -hw), n, hh), _add(_add(c, e, hw), n, hh),
+               _add(_add(c, e, hw), n, -hh), _add(_add(c, e, -hw), n, -hh))
+        symbols.append(Polyline(tuple(_r(p) for p in blk), "block", closed=True,
+                                cls=f"slider {lab}"))
+        placer.block(bounds(blk))
+        neighbours[lab] += [_add(c, e, L), _add(c, e, -L)]
+
+    # fixed pivots: triangle and hatched base, away from the links
+    for gl in scene.ground:
+        if gl not in P:
+            continue
+        p = P[gl]
+        d = largest_gap_direction(p, neighbours.get(gl, []))
+        u = (math.cos(d), math.sin(d)) if d is not None else (0.0, -1.0)
+        if d is not None and len(neighbours.get(gl, [])) == 1:
+            u = (0.0, -1.0) if abs(u[0]) < 0.9 or True else u
+            nb = neighbours[gl][0]
+            v = _unit((nb[0] - p[0], nb[1] - p[1]))
+            if v[1] < -0.7:     # link goes down: put the ground up or to the side
+                u = _unit((-v[0], -v[1]))
+        n = (-u[1], u[0])
+        base = _add(p, u, 5.0)
+        tri = (_add(p, u, PIN_R), _add(base, n, 3.0), _add(base, n, -3.0))
+        symbols.append(Polyline(tuple(_r(q) for q in tri), "ground", closed=True,
+                                cls=f"ground {gl}"))
+        a, b = _add(base, n, -4.5), _add(base, n, 4.5)
+        symbols.append(Segment(_r(a), _r(b), "ground", cls="ground-base"))
+        symbols += _hatch(a, b, u)
+        placer.block(bounds([p, _add(base, n, 4.5), _add(base, n, -4.5),
+                             _add(_add(base, u, 1.8), n, 4.5), _add(_add(base, u, 1.8), n, -4.5)])
+                     .grown(0.3))
+        neighbours[gl].append(_add(p, u, 6.0))
+
+    # pins (one per place) and labels
+    groups: list[list[str]] = []
+    for lab in scene.labels:
+        if lab not in P:
+            continue
+        for gr in groups:
+            q = P[gr[0]]
+            if math.hypot(P[lab][0] - q[0], P[lab][1] - q[1]) < 0.3:
+                gr.append(lab)
+                break
+        else:
+            groups.append([lab])
+    body = set(scene.points)
+    for gr in groups:
+        p = P[gr[0]]
+        at = " ".join(f"at-{token(lab)}" for lab in gr)
+        if all(lab in body for lab in gr):
+            pins.append(Circle(p, 0.7, "vertex", cls=f"point {at}",
+                               ident=f"space-point-{token(gr[0])}"))
+        else:
+            pins.append(Circle(p, PIN_R, "pin", cls=f"point pin {at}",
+                               ident=f"space-point-{token(gr[0])}"))
+        placer.block(Box(p[0] - PIN_R, p[1] - PIN_R, p[0] + PIN_R, p[1] + PIN_R))
+
+    # the input: arc arrows for a crank, straight arrows beside a driven slider
+    drv = scene.driver
+    notes = []
+    if isinstance(drv, Crank) and drv.pivot in P and drv.tip in P:
+        c = P[drv.pivot]
+        L = math.hypot(P[drv.tip][0] - c[0], P[drv.tip][1] - c[1])
+        sense = 1.0 if drv.omega >= 0 else -1.0
+        arcs = [(drv.omega, "ω", "rad/s", "input", False)]
+        if drv.alpha:
+            arcs.append((drv.alpha, "α", "rad/s²", "input-alpha", True))
+        for i, (val, sym, unit, style, open_head) in enumerate(arcs):
+            R = max(5.5, min(0.5 * L, 13.0)) + 3.2 * i
+            sgn = 1.0 if val >= 0 else -1.0
+            mid = drv.angle
+            span = math.radians(110)
+            angs = [mid - sgn * span / 2 + sgn * span * j / 24 for j in range(25)]
+            pts = [(c[0] + R * math.cos(a), c[1] + R * math.sin(a)) for a in angs]
+            tip = pts[-1]
+            tang = (-math.sin(angs[-1]) * sgn, math.cos(angs[-1]) * sgn)
+            tail = _add(tip, tang, -3.0)
+            head, _ = arrow_head(tail, tip, 2.6, 1.0, open_head)
+            inputs.append(Polyline(tuple(_r(q) for q in pts[:-2]), style,
+                                   cls=f"input-arc {sym}"))
+            inputs.append(Arrow(_r(tail), _r(tip), style, tuple(_r(q) for q in head), _r(tail),
+                                role="input", title=f"{sym} {'CCW' if val > 0 else 'CW'}"))
+            for q0, q1 in zip(pts, pts[1:]):
+                placer.hard(q0, q1, 0.5)
+            text = f"{sym} = {number(abs(val))} {unit} {'CCW' if val > 0 else 'CW'}"
+            notes.append((text, [tip, pts[12], pts[0]],
+                          math.atan2(tip[1] - c[1], tip[0] - c[0])))
+    elif not isinstance(drv, Crank) and drv.point in P:
+        g = scene.sliders[drv.point]
+        c = P[drv.point]
+        e = (math.cos(g.angle), math.sin(g.angle))
+        n = (-e[1], e[0])
+        for i, (val, sym, unit, style) in enumerate(
+                [(drv.velocity, "v", "m/s", "input"), (drv.acceleration, "a", "m/s²",
+                                                       "input-alpha")]):
+            if val == 0 and sym == "a":
+                continue
+            sgn = 1.0 if val >= 0 else -1.0
+            base = _add(c, n, 9.0 + 4.0 * i)
+            tail, tip = _add(base, e, -6.0 * sgn), _add(base, e, 6.0 * sgn)
+            head, shaft = arrow_head(tail, tip, 2.6, 1.0, sym == "a")
+            inputs.append(Arrow(_r(tail), _r(tip), style, tuple(_r(q) for q in head),
+                                _r(shaft), role="input", title=f"{sym} of {drv.point}"))
+            placer.hard(tail, tip, 0.8)
+            notes.append((f"{sym}_{drv.point} = {number(abs(val))} {unit}", [tip, tail],
+                          math.atan2(n[1], n[0])))
+
+    labels = []
+    for gr in groups:
+        p = P[gr[0]]
+        text = ", ".join(gr)
+        prefer = largest_gap_direction(p, neighbours.get(gr[0], []))
+        x, base, _, box = placer.place(text, p, LABEL_SIZE, prefer=prefer,
+                                       distances=(1.5, 2.5, 3.5, 5.0, 7.0, 10.0))
+        labels.append(Text(x, base, text, LABEL_SIZE, role="point", weight="bold",
+                           cls="point-label"))
+    for text, anchors, prefer in notes:
+        dirs = [2 * math.pi * k / 24 for k in range(24)]
+        x, base, _, box = placer.place_any(display(text), NOTE_SIZE,
+                                           [(a, dirs) for a in anchors], prefer=prefer,
+                                           distances=(0.8, 1.5, 2.5, 4.0, 6.0, 9.0))
+        labels.append(Text(x, base, display(text), NOTE_SIZE, role="input", cls="input-label"))
+
+    content = [Group("space-background", "centre-lines", "Centre lines and guide paths",
+                     tuple(back)),
+               Group("space-links", "links", "Links", tuple(links)),
+               Group("space-symbols", "symbols", "Fixed pivots, guides and sliders",
+                     tuple(symbols)),
+               Group("space-pins", "pins", "Pins and points", tuple(pins)),
+               Group("space-input", "input", "Input motion", tuple(inputs)),
+               Group("space-labels", "labels", "Labels", tuple(labels))]
+    box = frame
+    for g in content:
+        for it in g.items:
+            if isinstance(it, Text):
+                from .labels import text_box
+                box = box.union(text_box(it.x, it.baseline, it.text, it.size))
+    return content, box.grown(1.0), scale, placer
+
+
+def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None = None
+            ) -> Drawing:
+    scene = sol.scene
+    content, box, sc, _ = space_layout(sol, scale, paper)
+    legend = [("Links:", "bold")]
+    for name, ln in scene.links.items():
+        if ln.a in sol.placement.points and ln.b in sol.placement.points:
+            legend.append((f"{name} = {number(ln.length * 1000)} mm", "normal"))
+    for slot in scene.slots.values():
+        legend.append((f"{slot.pin} slides in the slot of {slot.lever} "
+                       f"(pivot {slot.pivot})", "normal"))
+    for lab, g in scene.sliders.items():
+        legend.append((f"{lab} slides on a guide at {number(math.degrees(g.angle), 4)}°",
+                       "normal"))
+    drv = scene.driver
+    legend.append(("", "normal"))
+    legend.append(("Input:", "bold"))
+    if isinstance(drv, Crank):
+        legend.append((f"crank {drv.link} at {number(math.degrees(drv.angle), 4)}°, "
+                       f"ω = {number(abs(drv.omega))} rad/s {'CCW' if drv.omega > 0 else 'CW'}",
+                       "normal"))
+        if drv.alpha:
+            legend.append((f"α = {number(abs(drv.alpha))} rad/s² "
+                           f"{'CCW' if drv.alpha > 0 else 'CW'}", "normal"))
+    else:
+        legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
+                       f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))
+    sid = scene.source.get("id", "")
+    subtitle = f"{sid}: {scene.title}" if sid else scene.title
+    desc = (f"Space diagram of {scene.title} at the instant solved, drawn to scale "
+            f"{sc.statement}. Points: " +
+            ", ".join(f"{lab} ({number(p[0] * 1000)} mm, {number(p[1] * 1000)} mm)"
+                      for lab, p in sol.placement.points.items()) + ".")
+    return compose(name="space", kind="space", stage=None, title="Space diagram",
+                   subtitle=subtitle, desc=desc, content=content, content_box=box,
+                   legend=legend, scale=sc, caption=[], scale_statement=sc.statement,
+                   meta={"positions": {k: tuple(v) for k, v in sol.placement.points.items()}})

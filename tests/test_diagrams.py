@@ -1,0 +1,438 @@
+"""Labelled SVG diagrams: construction order, scale, labels, scaled lengths, valid output.
+
+Everything is checked on the drawings themselves: the model's geometry (labels against
+vectors), the written SVG parsed back (vertices, arrows, the stated scale), and one case
+rendered to PNG by cairosvg, a real renderer.
+"""
+import io
+import math
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+import diagrams
+from conftest import CASES, case_files
+from diagrams import measure, polygon, scale
+from diagrams.labels import Box, box_hits_segment, text_box
+from diagrams.model import Arrow, Segment, Text
+from diagrams.svg import to_svg
+from polygons.cli import main
+from polygons.errors import PolygonsError, SceneError, UnknownKeyError
+from polygons.evaluate import solve
+from polygons.scene import load_scene, parse_scene
+
+FILES = case_files()
+IDS = [f.stem for f in FILES]
+SVG = "{http://www.w3.org/2000/svg}"
+ROOT = Path(__file__).resolve().parents[1]
+
+_cache = {}
+
+
+def solved(path):
+    if path not in _cache:
+        sol = solve(load_scene(path))
+        _cache[path] = (sol, diagrams.drawings(sol))
+    return _cache[path]
+
+
+def finals(drawings):
+    return {d.kind: d for d in drawings if d.stage is None}
+
+
+def drawable_steps(sol, diagram):
+    return [s for s in sol.steps if s.diagram == diagram
+            and s.kind in ("vector", "image", "line", "intersection")]
+
+
+# ---------------------------------------------------------------- what is produced
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_every_case_has_the_three_diagrams_and_every_stage(path):
+    sol, ds = solved(path)
+    names = [d.name for d in ds]
+    assert names[0] == "space"
+    for diagram in sol.scene.solve:
+        n = len(drawable_steps(sol, diagram))
+        assert n >= 1
+        assert diagram in names
+        assert [x for x in names if x.startswith(diagram + "-")] == \
+            [f"{diagram}-{k}" for k in range(1, n + 1)]
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_every_svg_parses_with_title_desc_and_mm_page(path):
+    sol, ds = solved(path)
+    for d in ds:
+        data = to_svg(d)
+        root = ET.fromstring(data)
+        assert root.tag == SVG + "svg"
+        assert root.get("width").endswith("mm") and root.get("height").endswith("mm")
+        vb = [float(x) for x in root.get("viewBox").split()]
+        assert vb[2] == pytest.approx(float(root.get("width")[:-2]))
+        title, desc = root.find(SVG + "title"), root.find(SVG + "desc")
+        assert title is not None and title.text.strip()
+        assert desc is not None and desc.text.strip()
+        texts = [t.text for t in root.iter(SVG + "text")]
+        assert any("Scale 1 cm = " in (t or "") for t in texts)   # text as text
+        for g in root.iter(SVG + "g"):
+            if (g.get("class") or "").startswith("vector"):
+                assert g.find(SVG + "title") is not None     # every vector says what it is
+
+
+# ---------------------------------------------------------------- construction order
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_stage_k_adds_exactly_step_k(path):
+    sol, ds = solved(path)
+    by_name = {d.name: d for d in ds}
+    for diagram in sol.scene.solve:
+        steps = drawable_steps(sol, diagram)
+        prev_vectors = set()
+        for k, step in enumerate(steps, 1):
+            d = by_name[f"{diagram}-{k}"]
+            arrows = [a for a in d.items() if isinstance(a, Arrow)]
+            vectors = {(a.frm, a.to) for a in arrows}
+            new = {(a.frm, a.to) for a in arrows if a.new}
+            assert prev_vectors <= vectors
+            assert vectors - prev_vectors == new
+            if step.kind in ("vector", "image"):
+                assert (step.start, step.end) in new
+            if step.kind == "line":
+                assert not new
+                assert any(isinstance(s, Segment) and f"step-{step.number}" in s.cls
+                           and s.style == "construction-new" for s in d.items())
+            if step.kind == "intersection":
+                assert new and all(to == step.end or frm == step.end for frm, to in new)
+            caption = " ".join(t.text for t in d.items("caption"))
+            assert caption.startswith(f"Fig. {chr(96 + k)}." if k <= 26 else "Fig.")
+            words = step.reason.replace("⟂", "⊥").split()
+            assert " ".join(words[:6]) in caption
+            prev_vectors = vectors
+
+
+def test_fig7_stages_follow_the_tutorial_with_coriolis_and_offset_line():
+    sol, ds = solved(CASES / "s003-fig7.toml")
+    by = {d.name: d for d in ds}
+    caps = [" ".join(t.text for t in by[f"acceleration-{k}"].items("caption"))
+            for k in range(1, 8)]
+    assert "centripetal acceleration of P2" in caps[0]
+    assert "centripetal acceleration of P4" in caps[1]
+    assert "Coriolis" in caps[3] and "parallel to the slot" in caps[3]
+    assert "Coriolis" in caps[5]
+    final = by["acceleration"]
+    labels = [t.text for t in final.items() if isinstance(t, Text)]
+    assert "Coriolis offset line" in labels and "2ωv" in labels and "p4 line" in labels
+    cor = [a for a in final.items() if isinstance(a, Arrow) and a.role == "coriolis"]
+    assert len(cor) == 1 and (cor[0].frm, cor[0].to) == ("p4", "p2_1")
+    assert cor[0].style == "coriolis"
+
+
+def test_we4_has_the_c_line_and_slider_line_as_the_tutorial_draws():
+    sol, ds = solved(CASES / "s001-we4.toml")
+    acc = finals(ds)["acceleration"]
+    labels = {t.text for t in acc.items() if isinstance(t, Text)}
+    assert {"c line", "slider line", "a", "b", "c1", "c"} <= labels
+    vecs = {(a.frm, a.to): a.role for a in acc.items() if isinstance(a, Arrow)}
+    assert vecs[("a", "b")] == "known" and vecs[("b", "c1")] == "known"
+    assert vecs[("c1", "c")] == "resolved" and vecs[("a", "c")] == "resolved"
+
+
+# ---------------------------------------------------------------- arrows are the step vectors
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_arrows_join_their_vertices_in_the_sense_of_the_step_vectors(path):
+    sol, ds = solved(path)
+    for kind, d in finals(ds).items():
+        if kind == "space":
+            continue
+        r = measure.read_svg(to_svg(d))
+        drawn = {(v.frm, v.to): v for v in r.vectors}
+        for v in r.vectors:          # tail at `frm`, tip at `to`
+            for end, name in ((v.tail, v.frm), (v.tip, v.to)):
+                assert math.dist(end, r.vertices[name]) < 0.01, (kind, v)
+        for s in sol.steps:
+            if s.diagram != kind or s.kind not in ("vector", "image"):
+                continue
+            v = drawn[(s.start, s.end)]
+            mag = math.hypot(*s.vector)
+            if mag == 0 or v.mm < 0.05:
+                continue
+            ang_step = math.atan2(s.vector[1], s.vector[0])
+            ang_drawn = math.atan2(v.tip[1] - v.tail[1], v.tip[0] - v.tail[0])
+            diff = abs((ang_step - ang_drawn + math.pi) % (2 * math.pi) - math.pi)
+            assert math.degrees(diff) < 0.1 + math.degrees(0.002 / max(v.mm, 1e-9)), s.draws
+            assert r.si(v.mm) == pytest.approx(mag, rel=1e-3, abs=r.si(0.002))
+
+
+# ---------------------------------------------------------------- labels do not overlap
+def _label_boxes(d):
+    out = []
+    for t in d.items():
+        if isinstance(t, Text) and t.role in ("vertex", "line", "coriolis", "point", "input"):
+            out.append((t.text, text_box(t.x, t.baseline, t.text, t.size, t.anchor)))
+    return out
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_labels_overlap_neither_vectors_nor_each_other(path):
+    sol, ds = solved(path)
+    for d in ds:
+        boxes = _label_boxes(d)
+        for i, (ta, a) in enumerate(boxes):
+            for tb, b in boxes[i + 1:]:
+                assert not a.overlaps(b), f"{d.name}: labels {ta!r} and {tb!r} overlap"
+        for t, b in boxes:
+            for it in d.items():
+                if isinstance(it, Arrow) and it.role != "input":
+                    assert not box_hits_segment(b, it.tail, it.tip, 0.5), \
+                        f"{d.name}: label {t!r} lies on vector {it.name}"
+                if isinstance(it, Segment) and it.style == "link":
+                    assert not box_hits_segment(b, it.a, it.b, 0.3), \
+                        f"{d.name}: label {t!r} lies on a link"
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_legend_caption_and_drawing_do_not_overlap(path):
+    sol, ds = solved(path)
+    for d in ds:
+        regions = {}
+        for g in d.groups:
+            boxes = [text_box(t.x, t.baseline, t.text, t.size, t.anchor)
+                     for t in g.items if isinstance(t, Text)]
+            if boxes and g.cls in ("legend", "caption", "heading"):
+                bx = boxes[0]
+                for b in boxes[1:]:
+                    bx = bx.union(b)
+                regions[g.cls] = bx
+        drawn = [(it.tail, it.tip) if isinstance(it, Arrow) else (it.a, it.b)
+                 for it in d.items() if isinstance(it, Arrow)
+                 or (isinstance(it, Segment) and it.style != "scalebar")]
+        for name, region in regions.items():
+            assert 0 <= region.x0 and region.x1 <= d.width + 0.5, (d.name, name)
+            for a, b in drawn:
+                assert not box_hits_segment(region, a, b), (d.name, name)
+
+
+# ---------------------------------------------------------------- scale
+def test_round_scales():
+    assert scale.round_up(0.0137) == 0.02
+    assert scale.round_up(2.1) == 2.5
+    assert scale.round_up(2.5) == 2.5
+    assert scale.round_up(7) == 10
+    assert scale.parse("1 cm = 2 m/s", "velocity").statement == "1 cm = 2 m/s"
+    assert scale.parse("500 m/s^2", "acceleration").statement == "1 cm = 500 m/s²"
+    assert scale.parse("2 cm = 1 m/s", "velocity").per_cm == pytest.approx(0.5)
+    assert scale.parse("20 mm", "length").statement == "1 cm = 20 mm"
+    assert scale.make("velocity", 0.05).statement == "1 cm = 50 mm/s"
+
+
+@pytest.mark.parametrize("bad", ["2", "2 m", "-1 m/s", "0 m/s", "1 cm = x", "fast"])
+def test_bad_scales_are_polygons_errors(bad):
+    with pytest.raises(scale.ScaleError) as exc:
+        scale.parse(bad, "velocity")
+    assert isinstance(exc.value, PolygonsError)
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_scales_are_round_and_polygons_fit_the_paper(path):
+    sol, ds = solved(path)
+    for kind, d in finals(ds).items():
+        m = re.fullmatch(r"1 cm = ([0-9.]+) (\S+)", d.scale_statement)
+        value = float(m.group(1))
+        mant = value / 10 ** math.floor(math.log10(value))
+        assert any(math.isclose(mant, r) for r in scale.ROUND), d.scale_statement
+        if kind == "space":
+            continue
+        lay = d.meta["layout"]
+        f = lay.frame
+        w, h = f.x1 - f.x0 - 2 * polygon.FRAME_MARGIN, f.y1 - f.y0 - 2 * polygon.FRAME_MARGIN
+        a4 = scale.PAPER["A4"]
+        assert (w <= a4[0] + 1e-6 and h <= a4[1] + 1e-6) or \
+               (w <= a4[1] + 1e-6 and h <= a4[0] + 1e-6), (kind, w, h)
+        # not needlessly small (unless everything is at rest: a polygon of one point)
+        assert max(w, h) > 0.3 * a4[1] or max(w, h) == 0, (kind, w, h)
+
+
+def test_a_forced_scale_is_used_and_stated():
+    sol, _ = solved(CASES / "s003-fig7.toml")
+    forced = {"velocity": scale.parse("0.05 m/s", "velocity")}
+    ds = diagrams.drawings(sol, forced, stages=False)
+    vel = finals(ds)["velocity"]
+    assert vel.scale_statement == "1 cm = 50 mm/s"
+    r = measure.read_svg(to_svg(vel))
+    v = next(v for v in r.vectors if (v.frm, v.to) == ("o2", "p2"))
+    assert v.mm == pytest.approx(1.0471975511965979 / 0.05 * 10, abs=0.01)
+
+
+def test_scene_diagram_table_forces_scale_and_rejects_typos():
+    text = (CASES / "s001-we4.toml").read_text()
+    data = __import__("tomllib").loads(text)
+    data["diagram"] = {"acceleration_scale": "1 cm = 250 m/s^2", "paper": "A4"}
+    sol = solve(parse_scene(data, file="we4.toml"))
+    acc = finals(diagrams.drawings(sol, stages=False))["acceleration"]
+    assert acc.scale_statement == "1 cm = 250 m/s²"
+    data["diagram"] = {"acceleration_scal": "250 m/s^2"}
+    sol = solve(parse_scene(data, file="we4.toml"))
+    with pytest.raises(UnknownKeyError, match="acceleration_scale"):
+        diagrams.drawings(sol)
+    data["diagram"] = {"velocity_scale": "250 m/s^2"}
+    sol = solve(parse_scene(data, file="we4.toml"))
+    with pytest.raises(SceneError, match=r"diagram\.velocity_scale"):
+        diagrams.drawings(sol)
+
+
+# ---------------------------------------------------------------- scaled lengths
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_scaled_lengths_agree_with_the_tutorial_within_drawing_tolerance(path):
+    sol, ds = solved(path)
+    rows = measure.compare(sol, measure.readings_of(ds))
+    for row in rows:
+        if row.scaled is None or row.tutorial is None:
+            continue
+        if row.slip:
+            assert not row.within, f"{row.quantity}: the drawing reproduces the slip"
+        else:
+            assert row.within, (f"{row.quantity}: scaled {row.scaled:.5g}, tutorial "
+                                f"{row.tutorial} ({row.diff_pct:+.2f} %, ±{row.tolerance:.0%}"
+                                f" + ruler {row.resolution:.3g})")
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_scaled_lengths_are_the_exact_values_to_a_ruler_division(path):
+    sol, ds = solved(path)
+    for row in measure.compare(sol, measure.readings_of(ds)):
+        if row.scaled is None or row.exact is None:
+            continue
+        assert abs(row.scaled - row.exact) <= row.resolution + 1e-6 * abs(row.exact) + 1e-12, \
+            (row.quantity, row.scaled, row.exact)
+    # without the ruler's rounding the drawing gives the exact numbers to 0.01 %
+    for row in measure.compare(sol, measure.readings_of(ds), ruler=None):
+        if row.scaled is None or row.exact is None or row.exact == 0:
+            continue
+        if not row.quantity.startswith(("dir_", "angle")):
+            assert row.scaled == pytest.approx(row.exact, rel=2e-4, abs=1e-9), row.quantity
+
+
+def test_fig7_scaled_values():
+    sol, ds = solved(CASES / "s003-fig7.toml")
+    got = {(r.quantity, r.tutorial): r.scaled
+           for r in measure.compare(sol, measure.readings_of(ds))}
+    assert got[("v(P2)", 1.048)] == pytest.approx(1.045, abs=0.006)
+    assert got[("cor(P2)", 1.96)] == pytest.approx(1.96, abs=0.015)
+    assert got[("omega(O4P4)", 1.216)] == pytest.approx(1.216, rel=0.01)
+    assert got[("alpha(O4P4)", 4.12)] == pytest.approx(4.12, rel=0.015)
+
+
+# ---------------------------------------------------------------- determinism and rendering
+def test_output_is_deterministic(tmp_path):
+    path = CASES / "s003-fig7.toml"
+    a = diagrams.write(solve(load_scene(path)), tmp_path / "a")
+    b = diagrams.write(solve(load_scene(path)), tmp_path / "b")
+    assert [p.name for p in a] == [p.name for p in b]
+    for p, q in zip(a, b):
+        assert p.read_bytes() == q.read_bytes(), p.name
+
+
+def test_cairosvg_renders_the_fig7_diagrams_with_the_arrows_where_the_svg_says():
+    cairosvg = pytest.importorskip("cairosvg")
+    from PIL import Image
+    sol, ds = solved(CASES / "s003-fig7.toml")
+    for kind, d in finals(ds).items():
+        data = to_svg(d)
+        dpi = 254                       # 10 px per mm
+        png = cairosvg.svg2png(bytestring=data, dpi=dpi)
+        img = Image.open(io.BytesIO(png)).convert("L")
+        assert img.size == (round(d.width * 10), round(d.height * 10))
+        assert img.getextrema() == (0, 255)
+        if kind == "space":
+            continue
+        r = measure.read_svg(data)
+        for v in r.vectors:
+            if v.mm < 6:
+                continue
+            dark = 0      # points on the shaft, away from the vertices and arrowheads
+            for k in range(10):
+                t = 0.3 + 0.03 * k
+                x = v.tail[0] + t * (v.tip[0] - v.tail[0])
+                y = v.tail[1] + t * (v.tip[1] - v.tail[1])
+                px, py = x * 10, (d.height - y) * 10
+                window = [img.getpixel((round(px) + i, round(py) + j))
+                          for i in (-1, 0, 1) for j in (-1, 0, 1)]
+                dark += min(window) < 100
+            assert dark >= (3 if v.role == "result" else 10), (kind, v)   # dotted or solid
+
+
+def test_styles_carry_meaning_without_colour():
+    sol, ds = solved(CASES / "s003-fig7.toml")
+    root = ET.fromstring(to_svg(finals(ds)["acceleration"]))
+    def widths(role):
+        out = []
+        for g in root.iter(SVG + "g"):
+            cls = (g.get("class") or "").split()
+            if cls[:2] == ["vector", role]:
+                line = next(g.iter(SVG + "line"))
+                out.append((float(line.get("stroke-width")), line.get("stroke-dasharray")))
+        return out
+    assert all(w > 0.8 and dash is None for w, dash in widths("coriolis"))
+    assert all(w < 0.6 and dash is None for w, dash in widths("known"))
+    assert all(dash for _, dash in widths("result"))       # the absolute vector is dotted
+    heads = [g for g in root.iter(SVG + "g") if "coriolis" in (g.get("class") or "")]
+    assert heads[0].find(f".//{SVG}polygon").get("fill") == "#ffffff"   # open head
+    dashed = [l for l in root.iter(SVG + "line") if "construction-line" in (l.get("class") or "")]
+    assert dashed and all(l.get("stroke-dasharray") for l in dashed)
+
+
+# ---------------------------------------------------------------- architecture
+def test_svgwrite_is_imported_by_one_module_and_diagrams_do_not_redo_kinematics():
+    importers = []
+    for p in list((ROOT / "diagrams").glob("*.py")) + list((ROOT / "polygons").glob("*.py")):
+        src = p.read_text()
+        if re.search(r"^\s*(import svgwrite|from svgwrite)", src, re.M):
+            importers.append(p.relative_to(ROOT).as_posix())
+        if p.parent.name == "diagrams" and p.name != "plots.py":
+            assert "theorems" not in src, p.name
+    assert importers == ["diagrams/svg.py"]
+
+
+# ---------------------------------------------------------------- command line
+def test_cli_draw_writes_every_file_and_measures(tmp_path, capsys):
+    out = tmp_path / "fig7"
+    assert main(["draw", str(CASES / "s003-fig7.toml"), "-o", str(out)]) == 0
+    names = sorted(p.name for p in out.iterdir())
+    assert "space.svg" in names and "velocity.svg" in names and "acceleration.svg" in names
+    assert "velocity-4.svg" in names and "acceleration-7.svg" in names
+    capsys.readouterr()
+    assert main(["draw", str(CASES / "s003-fig7.toml"), "-o", str(out), "--measure"]) == 0
+    text = capsys.readouterr().out
+    assert "velocity diagram: Scale 1 cm = " in text
+    assert "within drawing tolerance" in text and "OUTSIDE" not in text
+
+
+def test_cli_solve_svg_keeps_stdout_json(tmp_path, capsys):
+    out = tmp_path / "we4"
+    assert main(["solve", str(CASES / "s001-we4.toml"), "--json", "--svg", str(out),
+                 "--no-stages"]) == 0
+    import json
+    json.loads(capsys.readouterr().out)
+    assert sorted(p.name for p in out.iterdir()) == ["acceleration.svg", "space.svg",
+                                                     "velocity.svg"]
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--scale", "velocity=2"], "missing unit"),
+    (["--scale", "speed=2 m/s"], "unknown diagram 'speed'"),
+    (["--scale", "velocity"], "KIND=VALUE"),
+    (["--scale", "velocity=1e-9 m/s"], "would be"),
+])
+def test_cli_bad_scale_is_one_line(tmp_path, capsys, args, words):
+    code = main(["draw", str(CASES / "s003-fig7.toml"), "-o", str(tmp_path / "x")] + args)
+    err = capsys.readouterr().err
+    assert code == 1
+    assert err.startswith("polygons: error: ") and err.count("\n") == 1 and words in err
+
+
+def test_cli_output_folder_that_is_a_file(tmp_path, capsys):
+    f = tmp_path / "file"
+    f.write_text("x")
+    assert main(["draw", str(CASES / "s003-fig7.toml"), "-o", str(f)]) == 1
+    assert "not a folder" in capsys.readouterr().err
