@@ -6,6 +6,7 @@ so the kinematic command itself stays unaware of forces.
 """
 from __future__ import annotations
 
+import io
 import json
 import math
 import sys
@@ -36,22 +37,28 @@ def register(sub) -> None:
 
 
 def _solve_with_forces(original):
+    """``polygons solve`` as before (every option of its own), then the forces: its output is
+    captured and the force table appended, or a ``"forces"`` key added to its JSON object."""
     def run_solve(args) -> int:
         scene = load_scene(args.scene)
         if not has_forces(scene):
             return original(args)
-        an = analyse(scene)
-        from .report import table, to_json
-        targets = [t.strip() for t in args.points.split(",")] if getattr(args, "points", None) \
-            else None
-        sol = solve(scene, targets)
-        if args.json:
-            data = to_json(sol)
+        an = analyse(scene)          # bad force tables fail before anything is printed
+        buf = io.StringIO()
+        saved, sys.stdout = sys.stdout, buf
+        try:
+            code = original(args)
+        finally:
+            sys.stdout = saved
+        if code:
+            sys.stdout.write(buf.getvalue())
+            return code
+        if getattr(args, "json", False):
+            data = json.loads(buf.getvalue())
             data["forces"] = to_dict(an)
             sys.stdout.write(_dumps(data))
         else:
-            sys.stdout.write(table(sol, steps=not getattr(args, "no_steps", False)))
-            sys.stdout.write("\n" + forces_table(an, header=False))
+            sys.stdout.write(buf.getvalue() + "\n" + forces_table(an, header=False))
         return 0
     return run_solve
 
@@ -225,6 +232,9 @@ def forces_table(an: Analysis, header: bool = True) -> str:
         lines += [scene.title, f"  scene: {scene.file}"
                   + (f"   [{scene.source['id']}]" if scene.source.get("id") else ""), ""]
     lines.append(f"forces — {_mode_words(an)}")
+    if not header and model.mode != "kinetostatic":
+        lines.append("  (the kinematic table above is the scene as written, input α = 0; the "
+                     "states below are at the α the loads give)")
     g = model.gravity
     lines.append("gravity: " + (f"{np.hypot(*g):.6g} m/s² towards {_deg(g):.6g}°" if g.any()
                                 else "ignored"))
