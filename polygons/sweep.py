@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Callable, Iterable, Mapping, Sequence
 
 import numpy as np
@@ -49,7 +50,7 @@ _SIN_WARN = math.sin(math.radians(WARN_DEG))
 #: probe points used to find the reachable range and the toggles inside it
 PROBE = 4096
 #: default chunk of positions evaluated per numpy pass (memory and cache friendly)
-CHUNK = 1 << 16
+CHUNK = 1 << 13
 
 RPP = getattr(_plan_mod, "RPP", None)   # Scotch-yoke dyad (pin in the slot of a translating yoke)
 
@@ -98,8 +99,16 @@ class Sweep:
     slide_a: dict
     travel: dict
     coriolis: dict
-    angle_deg: np.ndarray
+    margin: np.ndarray              # sine of the smallest intersection angle, per position
     warnings: tuple[str, ...] = ()
+
+    @cached_property
+    def angle_deg(self) -> np.ndarray:
+        """The smallest intersection angle of the construction at each position (degrees):
+        its conditioning (NaN where the mechanism cannot be assembled)."""
+        with np.errstate(invalid="ignore"):
+            return np.degrees(np.arcsin(np.where(self.margin >= 0,
+                                                 np.minimum(self.margin, 1.0), np.nan)))
 
     @property
     def n(self) -> int:
@@ -248,35 +257,31 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
     SA: dict = {}
     TR: dict = {}
     COR: dict = {}
-    margin = None
+    margins: list = []
     n = t.shape
-
-    def mmin(m):
-        nonlocal margin
-        margin = m if margin is None else np.minimum(margin, m)
 
     for op in prog.ops:
         k, X, data = op.kind, op.label, op.data
         if k == "crank":
             pivot, r, link = data
             px, py = P[pivot]
-            c = np.cos(t)
-            s = np.sin(t)
-            rx = r * c
-            ry = r * s
-            P[X] = (px + rx, py + ry)
+            rx = np.cos(t)
+            rx *= r
+            ry = np.sin(t)
+            ry *= r
+            P[X] = (_plus(px, rx), _plus(py, ry))
             w, al = prog.rate, prog.rate2
             W[link], AL[link] = w, al
             if rates:
-                V[X] = (-w * ry, w * rx)
+                V[X] = (ry * -w, rx * w)
                 w2 = -w * w
                 if al:
-                    A[X] = (w2 * rx - al * ry, w2 * ry + al * rx)
+                    A[X] = (rx * w2 - ry * al, ry * w2 + rx * al)
                 else:
-                    A[X] = (w2 * rx, w2 * ry)
+                    A[X] = (rx * w2, ry * w2)
         elif k == "drive":
             (gx, gy), (ex, ey) = data
-            P[X] = (gx + t * ex, gy + t * ey)
+            P[X] = (_plus(gx, t * ex), _plus(gy, t * ey))
             TR[X] = t
             if rates:
                 v, a = prog.rate, prog.rate2
@@ -290,52 +295,77 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             qx, qy = P[q]
             dx = qx - px
             dy = qy - py
-            d2 = dx * dx + dy * dy
-            af = 0.5 + (0.5 * (r1 * r1 - r2 * r2)) / d2
-            h2 = (r1 * r1) / d2 - af * af
+            d2 = dx * dx
+            d2 += dy * dy
+            inv_d2 = 1.0 / d2
+            af = inv_d2 * (0.5 * (r1 * r1 - r2 * r2))
+            af += 0.5
+            h2 = inv_d2 * (r1 * r1)
+            h2 -= af * af
             hf = np.sqrt(h2)
+            if _has_nan(hf):
+                # a double closure within the staged assembly's tolerance is a toggle, not a
+                # failure; beyond it the position stays NaN (and the margin negative)
+                hf = np.sqrt(np.where(h2 >= -1e-12 * (r1 * r1 + r2 * r2 + d2) * inv_d2,
+                                      np.maximum(h2, 0.0), np.nan))
             if sigma < 0:
-                hf = -hf
-            m1x = af * dx - hf * dy          # PX
-            m1y = af * dy + hf * dx
+                np.negative(hf, out=hf)
+            m1x = af * dx                    # PX
+            m1x -= hf * dy
+            m1y = af * dy
+            m1y += hf * dx
             P[X] = (px + m1x, py + m1y)
-            det = hf * d2                    # PX × QX
-            sg = np.abs(det) / (r1 * r2)     # sine of the angle between the two lines
-            mmin(np.where(h2 >= 0, sg, -np.sqrt(-h2) * d2 / (r1 * r2)))
-            if not rates:
+            det = hf * d2                    # PX × QX: zero at a toggle
+            if rates:
+                margins.append(np.abs(det) * (1.0 / (r1 * r2)))   # sine of the lines' angle
+            else:
+                margins.append(np.where(h2 >= 0, np.abs(det),
+                                        -np.sqrt(np.abs(h2)) * d2) * (1.0 / (r1 * r2)))
                 continue
             m2x = m1x - dx                   # QX
             m2y = m1y - dy
             vp, vq = V[p], V[q]
             dvx, dvy = _diff(vq, vp)
             inv = 1.0 / det
-            wp = (dvx * m2x + dvy * m2y) * inv
-            wq = (dvx * m1x + dvy * m1y) * inv
-            vx = -wp * m1y
-            vy = wp * m1x
+            wp = dvx * m2x
+            wp += dvy * m2y
+            wp *= inv
+            wq = dvx * m1x
+            wq += dvy * m1y
+            wq *= inv
+            vx = m1y * -wp
+            vy = m1x * wp
             if vp is not None:
-                vx = vx + vp[0]
-                vy = vy + vp[1]
+                vx += vp[0]
+                vy += vp[1]
             V[X] = (vx, vy)
             W[lp], W[lq] = wp, wq
             ap, aq = A[p], A[q]
             wp2 = wp * wp
             wq2 = wq * wq
-            Rx = wp2 * m1x - wq2 * m2x
-            Ry = wp2 * m1y - wq2 * m2y
+            Rx = wp2 * m1x
+            Rx -= wq2 * m2x
+            Ry = wp2 * m1y
+            Ry -= wq2 * m2y
             if aq is not None:
-                Rx = Rx + aq[0]
-                Ry = Ry + aq[1]
+                Rx += aq[0]
+                Ry += aq[1]
             if ap is not None:
-                Rx = Rx - ap[0]
-                Ry = Ry - ap[1]
-            alp = (Rx * m2x + Ry * m2y) * inv
-            alq = (Rx * m1x + Ry * m1y) * inv
-            ax = -alp * m1y - wp2 * m1x
-            ay = alp * m1x - wp2 * m1y
+                Rx -= ap[0]
+                Ry -= ap[1]
+            alp = Rx * m2x
+            alp += Ry * m2y
+            alp *= inv
+            alq = Rx * m1x
+            alq += Ry * m1y
+            alq *= inv
+            ax = alp * -m1y
+            ax -= wp2 * m1x
+            ay = alp * m1x
+            ay -= wp2 * m1y
             if ap is not None:
-                ax = ax + ap[0]
-                ay = ay + ap[1]
+                ax += ap[0]
+                ay += ap[1]
             A[X] = (ax, ay)
             AL[lp], AL[lq] = alp, alq
         elif k == "rrp":
@@ -343,34 +373,55 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             px, py = P[p]
             wx = gx - px
             wy = gy - py
-            bq = ex * wx + ey * wy
-            disc = bq * bq - (wx * wx + wy * wy - L * L)
+            bq = ex * wx
+            bq += ey * wy
+            disc = bq * bq
+            disc -= wx * wx
+            disc -= wy * wy
+            disc += L * L
             root = np.sqrt(disc)
-            me = root if sigma > 0 else -root       # PX · e
-            tt = me - bq
-            mx = wx + tt * ex                        # PX
-            my = wy + tt * ey
-            P[X] = (gx + tt * ex, gy + tt * ey)
+            if _has_nan(root):
+                root = np.sqrt(np.where(disc >= -1e-12 * L * L, np.maximum(disc, 0.0), np.nan))
+            me = root if sigma > 0 else -root       # PX · e: zero at a toggle
+            tt = me - bq                            # travel along the guide
+            mx = tt * ex                            # PX
+            mx += wx
+            my = tt * ey
+            my += wy
+            P[X] = (_plus(gx, tt * ex), _plus(gy, tt * ey))
             TR[X] = tt
-            mmin(np.where(disc >= 0, root / L, -np.sqrt(-disc) / L))
-            if not rates:
+            if rates:
+                margins.append(root * (1.0 / L))
+            else:
+                margins.append(np.where(disc >= 0, root, -np.sqrt(np.abs(disc))) * (1.0 / L))
                 continue
             vp, ap = V[p], A[p]
             inv = 1.0 / me
-            cme = mx * ey - my * ex                  # PX × e
-            w = (vp[0] * ey - vp[1] * ex) * inv if vp is not None else 0.0 * me
-            sd = w * cme
+            cme = mx * ey                            # PX × e
+            cme -= my * ex
             if vp is not None:
-                sd = sd + (ex * vp[0] + ey * vp[1])
+                w = vp[0] * ey
+                w -= vp[1] * ex
+                w *= inv
+                sd = w * cme
+                sd += ex * vp[0]
+                sd += ey * vp[1]
+            else:
+                w = 0.0 * me
+                sd = 0.0 * me
             V[X] = (sd * ex, sd * ey)
             w2 = w * w
-            bx = -w2 * mx
-            by = -w2 * my
+            bx = mx * -w2
+            by = my * -w2
             if ap is not None:
-                bx = bx + ap[0]
-                by = by + ap[1]
-            al = (bx * ey - by * ex) * inv
-            sdd = ex * bx + ey * by + al * cme
+                bx += ap[0]
+                by += ap[1]
+            al = bx * ey
+            al -= by * ex
+            al *= inv
+            sdd = al * cme
+            sdd += ex * bx
+            sdd += ey * by
             A[X] = (sdd * ex, sdd * ey)
             W[link], AL[link] = w, al
             SV[X], SA[X] = sd, sdd
@@ -380,33 +431,55 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             bx_, by_ = P[pivot]
             rx = ax_ - bx_
             ry = ay_ - by_
-            rho2 = rx * rx + ry * ry
+            rho2 = rx * rx
+            rho2 += ry * ry
             rho = np.sqrt(rho2)
             P[X] = P[pin]
             # the lines of an RPR construction are always perpendicular; only a pin on the
             # pivot (no slot direction) degenerates it
-            mmin(np.where(rho > 1e-12 * prog.scale, 1.0, 0.0))
+            margins.append(np.where(rho > 1e-12 * prog.scale, 1.0, 0.0))
             if far is not None:
                 f = far_len / rho
                 fx, fy = f * rx, f * ry
-                P[far] = (bx_ + fx, by_ + fy)
+                P[far] = (_plus(bx_, fx), _plus(by_, fy))
             if not rates:
                 continue
             va, aa = V[pin], A[pin]
-            w = (rx * va[1] - ry * va[0]) / rho2
-            sd = (rx * va[0] + ry * va[1]) / rho
-            al = (rx * aa[1] - ry * aa[0]) / rho2 - 2.0 * w * sd / rho
+            inv2 = 1.0 / rho2
+            inv1 = 1.0 / rho
+            w = rx * va[1]
+            w -= ry * va[0]
+            w *= inv2
+            sd = rx * va[0]
+            sd += ry * va[1]
+            sd *= inv1
+            c2 = w * sd
+            c2 *= 2.0 * inv1                             # 2ωṡ / ρ
+            al = rx * aa[1]
+            al -= ry * aa[0]
+            al *= inv2
+            al -= c2                                     # α = (BA × a_A)/BA² − 2ωṡ/BA
             w2 = w * w
-            sdd = (rx * aa[0] + ry * aa[1]) / rho + w2 * rho
+            sdd = rx * aa[0]
+            sdd += ry * aa[1]
+            sdd *= inv1
+            sdd += w2 * rho
             W[lever], AL[lever] = w, al
             SV[pin], SA[pin] = sd, sdd
-            c2 = 2.0 * w * sd / rho
-            COR[pin] = (-c2 * ry, c2 * rx)
-            V[X] = (-w * ry, w * rx)
-            A[X] = (-al * ry - w2 * rx, al * rx - w2 * ry)
+            COR[pin] = (ry * -c2, rx * c2)
+            V[X] = (ry * -w, rx * w)
+            ax1 = al * -ry
+            ax1 -= w2 * rx
+            ay1 = al * rx
+            ay1 -= w2 * ry
+            A[X] = (ax1, ay1)
             if far is not None:
-                V[far] = (-w * fy, w * fx)
-                A[far] = (-al * fy - w2 * fx, al * fx - w2 * fy)
+                V[far] = (fy * -w, fx * w)
+                ax2 = al * -fy
+                ax2 -= w2 * fx
+                ay2 = al * fx
+                ay2 -= w2 * fy
+                A[far] = (ax2, ay2)
         elif k == "image":
             link, p, q, along, fraction, left = data
             px, py = P[p]
@@ -447,9 +520,9 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             den = ex * sy - ey * sx                  # guide × slot
             ppx, ppy = P[pin]
             tt = ((ppx - gx) * sy - (ppy - gy) * sx) / den
-            P[X] = (gx + tt * ex, gy + tt * ey)
+            P[X] = (_plus(gx, tt * ex), _plus(gy, tt * ey))
             TR[X] = tt
-            mmin(np.full(n, abs(den)))
+            margins.append(np.full(n, abs(den)))
             if not rates:
                 continue
             vp, ap = V[pin], A[pin]
@@ -471,10 +544,24 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             dax, day = _diff(A[b], A[a])
             W[name] = (dx * dvy - dy * dvx) / n2
             AL[name] = (dx * day - dy * dax) / n2
-    if margin is None:
+    if not margins:
         margin = np.ones(n)
+    else:
+        margin = margins[0]
+        for m in margins[1:]:
+            margin = np.minimum(margin, m)
     return {"pos": P, "vel": V, "acc": A, "omega": W, "alpha": AL, "slide_v": SV,
             "slide_a": SA, "travel": TR, "coriolis": COR, "margin": margin}
+
+
+def _plus(c: float, arr):
+    """c + arr, without the pass over the array when c is 0 (a pivot at the origin)."""
+    return arr if c == 0.0 else c + arr
+
+
+def _has_nan(a) -> bool:
+    m = np.min(a)
+    return m != m
 
 
 def _diff(b, a):
@@ -568,123 +655,85 @@ def _deg_of(m: float) -> float:
 
 
 def find_range(prog: Program, probe: int = PROBE):
-    """(full_cycle, (lo, hi), limits, toggles): the reachable range containing the scene's
-    input, its limit positions, and the toggles / near-toggles inside it."""
+    """(full_cycle, (lo, hi), limits, events) for the scene's input: the reachable range
+    around it, its limit positions, and the toggles / near-toggles inside it.
+
+    The margin (sine of the smallest construction angle; negative where a dyad cannot close)
+    is probed at ``probe`` inputs; every local minimum below ``WARN_DEG`` is refined by a
+    golden-section search, which finds change points that only touch zero and unreachable
+    slivers narrower than the probe spacing; every end of the range is refined by bisection.
+    """
     x0 = prog.input0
-    if prog.input_kind == "crank":
+    closed = prog.input_kind == "crank"
+    if closed:
         period = 2.0 * math.pi
-        xs = x0 + period * np.arange(probe) / probe
-        closed = True
+        step = period / probe
+        xs = x0 + step * np.arange(probe)
+        span = period
     else:
         span = 2.0 * (sum(l.length for l in prog.scene.links.values() if l.length)
                       + max([math.hypot(*g) for g in prog.ground.values()] + [0.0]))
         span = max(span, prog.scale)
-        xs = x0 + span * np.linspace(-1.0, 1.0, 2 * (probe // 2) + 1)
-        closed = False
+        half = probe // 2
+        step = span / half
+        xs = x0 + step * np.arange(-half, half + 1)
     m = _margin(prog, xs)
     ok = m >= 0
-    limits: list[Limit] = []
-    toggles: list[Limit] = []
     n = len(xs)
-    i0 = 0 if closed else n // 2
-    # refine the local minima that come close to zero: a gap narrower than the probe spacing
-    # is found here, and so is a toggle that only touches zero (a change point)
-    for i in range(n):
-        if not ok[i]:
-            continue
-        l, r = (i - 1) % n, (i + 1) % n
-        if not closed and (i == 0 or i == n - 1):
-            continue
-        if not (m[i] <= m[l] and m[i] <= m[r] and m[i] < _SIN_WARN) or not (ok[l] and ok[r]):
-            continue
-        a = xs[i] - (period / probe if closed else xs[1] - xs[0])
-        b = xs[i] + (period / probe if closed else xs[1] - xs[0])
-        xm, fm = _golden_min(prog, a, b)
-        if fm < 0 or not np.isfinite(fm):
-            # an unreachable sliver between two probe points: split the probe there
-            if closed:
-                ok[i] = ok[i]  # neighbours stay valid; mark the sliver through the limits
-            toggles.append(Limit(xm, "gap", *_culprit(prog, xm), angle_deg=0.0))
+    # local minima below the warning angle, refined
+    left = np.roll(m, 1)
+    right = np.roll(m, -1)
+    cand = ok & (m < _SIN_WARN) & (m <= left) & (m <= right) & np.roll(ok, 1) & np.roll(ok, -1)
+    if not closed:
+        cand[0] = cand[-1] = False
+    events: list[Limit] = []
+    gaps: list[float] = []
+    for i in np.flatnonzero(cand):
+        xm, fm = _golden_min(prog, xs[i] - step, xs[i] + step)
+        if not np.isfinite(fm) or fm < 0:
+            gaps.append(xm)
         else:
             kind = "toggle" if fm < _SIN_PARALLEL else "near-toggle"
-            toggles.append(Limit(xm, kind, *_culprit(prog, xm), angle_deg=_deg_of(fm)))
-    gaps = [t for t in toggles if t.kind == "gap"]
-    toggles = [t for t in toggles if t.kind != "gap"]
-
-    if ok.all() and not gaps and closed:
-        return True, (x0, x0 + period), (), tuple(toggles)
-    if not ok[i0]:
-        # the scene's own input closes (assemble succeeded) but the probe says no: the scene
-        # sits exactly at a limit; treat its input as the range's good end
-        pass
-    # walk from the scene's input to the first bad probe on each side
-    lo_i, hi_i = i0, i0
-    while True:
-        nxt = lo_i - 1
-        if closed:
-            if i0 - nxt >= n:
-                break
-            if not ok[nxt % n]:
-                break
-        elif nxt < 0 or not ok[nxt]:
-            break
-        lo_i = nxt
-    while True:
-        nxt = hi_i + 1
-        if closed:
-            if nxt - i0 >= n:
-                break
-            if not ok[nxt % n]:
-                break
-        elif nxt >= n or not ok[nxt]:
-            break
-        hi_i = nxt
-    step = (period / probe) if closed else (xs[1] - xs[0])
-    x_at = (lambda j: x0 + j * step) if closed else (lambda j: xs[j])
-    lo_good, hi_good = x_at(lo_i), x_at(hi_i)
-    lo_bad, hi_bad = lo_good - step, hi_good + step
-    # gaps (unreachable slivers between probes) inside the walk shorten it
-    for gp in gaps:
-        xg = gp.input
-        if closed:
-            # bring xg into (x0 - period, x0 + period) nearest the walked interval
-            while xg < lo_good:
-                xg += period
-            while xg > hi_good + period:
-                xg -= period
-        if lo_good <= xg <= x0:
-            lo_bad, lo_good = xg, max(lo_good, xg - step)
-        elif x0 <= xg <= hi_good:
-            hi_bad, hi_good = xg, min(hi_good, xg + step)
-    unbounded = []
-    if not closed and lo_i == 0:
-        unbounded.append("lower")
-        lo = lo_good
+            events.append(Limit(xm, kind, *_culprit(prog, xm), angle_deg=_deg_of(fm)))
+    bad = [float(x) for x in xs[~ok]] + gaps
+    if closed and not bad:
+        return True, (x0, x0 + period), (), tuple(events)
+    # the nearest unreachable input on each side of the scene's input (unwrapped for a crank)
+    if closed:
+        rel = [(b - x0) % period for b in bad]
+        rel = [r for r in rel if r > 0] or [period]
+        hi_bad = x0 + min(rel)
+        lo_bad = x0 - min(period - r for r in rel)
     else:
-        lo = _bisect(prog, x0 if lo_good > x0 else lo_good, lo_bad)
-    if not closed and hi_i == n - 1:
-        unbounded.append("upper")
-        hi = hi_good
-    else:
-        hi = _bisect(prog, x0 if hi_good < x0 else hi_good, hi_bad)
-    for x, side in ((lo, "lower"), (hi, "upper")):
-        if side in unbounded:
-            limits.append(Limit(x, "unbounded", "", f"the mechanism still closes here; the "
-                                                     f"probe stopped at ±{span:.3g} m", 90.0))
-        else:
-            pt, why = _culprit(prog, x)
-            limits.append(Limit(x, "limit", pt, why, _deg_of(max(_margin(prog, x)[0], 0.0))))
+        above = [b for b in bad if b > x0]
+        below = [b for b in bad if b < x0]
+        hi_bad = min(above) if above else None
+        lo_bad = max(below) if below else None
+    limits: list[Limit] = []
+    ends = []
+    for bad_x, sign in ((lo_bad, -1), (hi_bad, 1)):
+        if bad_x is None:
+            edge = xs[0] if sign < 0 else xs[-1]
+            ends.append(float(edge))
+            limits.append(Limit(float(edge), "unbounded", "", f"the mechanism still closes "
+                                f"here; the probe stopped {span:.3g} m from the scene's "
+                                f"input", 90.0))
+            continue
+        k = math.floor(abs(bad_x - x0) / step - 1e-9)      # probes strictly before bad_x
+        good = x0 + sign * k * step
+        x = _bisect(prog, good, bad_x)
+        ends.append(x)
+        pt, why = _culprit(prog, x)
+        limits.append(Limit(x, "limit", pt, why, _deg_of(max(float(_margin(prog, x)[0]), 0.0))))
+    lo, hi = ends
     inside = []
-    for tg in toggles:
-        xt = tg.input
+    for ev in events:
+        x = ev.input
         if closed:
-            while xt < lo:
-                xt += period
-            while xt > hi:
-                xt -= period
-        if lo < xt < hi:
-            inside.append(Limit(xt, tg.kind, tg.point, tg.reason, tg.angle_deg))
-    return False, (lo, hi), tuple(limits), tuple(inside)
+            x = lo + (x - lo) % period
+        if lo < x < hi:
+            inside.append(Limit(x, ev.kind, ev.point, ev.reason, ev.angle_deg))
+    return False, (lo, hi), tuple(limits), tuple(sorted(inside, key=lambda e: e.input))
 
 
 # ---------------------------------------------------------------- the sweep
@@ -723,85 +772,116 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
     for tg in toggles:
         where = _fmt_input(prog, tg.input)
         if tg.kind == "toggle":
-            warnings.append(f"toggle at {where}: {tg.reason}; the branches of {tg.point} meet "
-                            f"here, the sweep is split and the branch on the same side is "
-                            f"followed beyond it")
+            warnings.append(f"toggle at {where}: {tg.reason}; the two closures of {tg.point} "
+                            f"meet here, so the sweep is split there and beyond it follows the "
+                            f"closure on the same side (the mechanism itself may take either)")
         else:
             warnings.append(f"near toggle at {where}: {tg.reason}; the construction lines "
                             f"meet at only {tg.angle_deg:.3g}°")
-    bad = ~np.isfinite(res["margin"]) | (res["margin"] < 0)
-    if bad.any():
-        warnings.append(f"{int(bad.sum())} of {len(xs)} positions cannot be assembled in the "
-                        f"followed branch (NaN in the results)")
-    ang = np.degrees(np.arcsin(np.clip(res["margin"], 0.0, 1.0)))
+    margin = res["margin"]
+    lowest = float(np.min(margin)) if len(margin) else 1.0
+    if not lowest >= _SIN_PARALLEL:          # one pass when all is well (NaN compares False)
+        bad = ~np.isfinite(margin) | (margin < 0)
+        if bad.any():
+            warnings.append(f"{int(bad.sum())} of {len(xs)} positions cannot be assembled in "
+                            f"the followed branch (NaN in the results)")
+        at = ~bad & (margin < _SIN_PARALLEL)
+        if at.any():
+            _undefine(res, at)
+            warnings.append(f"{int(at.sum())} of {len(xs)} positions lie on a toggle "
+                            f"(construction lines parallel within {PARALLEL_DEG:g}°): their "
+                            f"velocities and accelerations are undefined and left as NaN")
     return Sweep(scene, prog.plan, prog.input_kind, xs, prog.rate, prog.rate2, full, rng,
                  tuple(limits) + tuple(toggles), segments, dict(prog.branches),
                  res["pos"], res["vel"], res["acc"], res["omega"], res["alpha"],
-                 res["slide_v"], res["slide_a"], res["travel"], res["coriolis"], ang,
+                 res["slide_v"], res["slide_a"], res["travel"], res["coriolis"], margin,
                  tuple(warnings))
+
+
+def _undefine(res: dict, mask: np.ndarray) -> None:
+    """Rates at the positions in ``mask`` (toggles) are undefined: NaN, not huge numbers."""
+    for key in ("vel", "acc", "coriolis"):
+        for arr in res[key].values():
+            if arr is not None and not isinstance(arr, tuple):
+                arr[:, mask] = np.nan
+    for key in ("omega", "alpha", "slide_v", "slide_a"):
+        for lab, arr in res[key].items():
+            if not arr.flags.writeable:
+                arr = res[key][lab] = np.array(arr)
+            arr[mask] = np.nan
 
 
 def run(prog: Program, xs: np.ndarray, *, chunk: int = CHUNK,
         progress: Callable[[int], None] | None = None) -> dict:
-    """:func:`evaluate` in chunks of ``chunk`` positions, results concatenated as (2, N) /
-    (N,) arrays (fixed points keep scalar positions and ``None`` rates)."""
+    """:func:`evaluate` in chunks of ``chunk`` positions (small enough for the CPU caches),
+    each written straight into preallocated (2, N) / (N,) result arrays; fixed points keep
+    their scalar positions and ``None`` rates."""
+    xs = np.asarray(xs, dtype=float)
     n = len(xs)
-    if n <= chunk:
-        out = _materialise(evaluate(prog, xs), n)
+    out: dict | None = None
+    for s in range(0, max(n, 1), chunk):
+        e = min(n, s + chunk)
+        res = evaluate(prog, xs[s:e])
+        if out is None:
+            out = _allocate(res, n)
+        _store(out, res, s, e)
         if progress:
-            progress(n)
-        return out
-    parts = []
-    for s in range(0, n, chunk):
-        parts.append(_materialise(evaluate(prog, xs[s:s + chunk]), min(chunk, n - s)))
-        if progress:
-            progress(min(chunk, n - s))
-    return _concat(parts)
+            progress(e - s)
+    return out
 
 
-def _materialise(res: dict, n: int) -> dict:
+_VEC_KEYS = ("pos", "vel", "acc", "coriolis")
+_SCALAR_KEYS = ("omega", "alpha", "slide_v", "slide_a", "travel")
+
+
+def _allocate(res: dict, n: int) -> dict:
+    """Result arrays for ``n`` positions, shaped after one evaluated chunk ``res``: views into
+    one block (one allocation, which the allocator can hand back whole to the next sweep).
+    Constant results (the crank's ω and α) are read-only broadcasts, not filled arrays."""
+    rows = 1
+    for key in _VEC_KEYS:
+        for lab, xy in res[key].items():
+            if not (xy is None or (key == "pos" and np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0)):
+                rows += 2
+    for key in _SCALAR_KEYS:
+        rows += sum(1 for v in res[key].values() if np.ndim(v) != 0)
+    block = np.empty((rows, n))
+    i = 0
     out = {}
-    for key in ("pos", "vel", "acc", "coriolis"):
+    for key in _VEC_KEYS:
         d = {}
         for lab, xy in res[key].items():
-            if xy is None:
-                d[lab] = None
-            elif np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0:
-                d[lab] = xy if key == "pos" else _full2(xy, n)
+            if xy is None or (key == "pos" and np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0):
+                d[lab] = xy
             else:
-                arr = np.empty((2, n))
-                arr[0] = xy[0]
-                arr[1] = xy[1]
-                d[lab] = arr
+                d[lab] = block[i:i + 2]
+                i += 2
         out[key] = d
-    for key in ("omega", "alpha", "slide_v", "slide_a", "travel"):
-        out[key] = {k: (np.full(n, float(v)) if np.ndim(v) == 0 else np.asarray(v))
-                    for k, v in res[key].items()}
-    out["margin"] = np.broadcast_to(res["margin"], (n,)).copy()
-    return out
-
-
-def _full2(xy, n):
-    arr = np.empty((2, n))
-    arr[0] = xy[0]
-    arr[1] = xy[1]
-    return arr
-
-
-def _concat(parts: list[dict]) -> dict:
-    out = {}
-    first = parts[0]
-    for key in ("pos", "vel", "acc", "coriolis"):
-        out[key] = {}
-        for lab, v in first[key].items():
-            if v is None or isinstance(v, tuple):
-                out[key][lab] = v
+    for key in _SCALAR_KEYS:
+        d = {}
+        for lab, v in res[key].items():
+            if np.ndim(v) == 0:
+                d[lab] = np.broadcast_to(np.float64(v), (n,))
             else:
-                out[key][lab] = np.concatenate([p[key][lab] for p in parts], axis=1)
-    for key in ("omega", "alpha", "slide_v", "slide_a", "travel"):
-        out[key] = {k: np.concatenate([p[key][k] for p in parts]) for k in first[key]}
-    out["margin"] = np.concatenate([p["margin"] for p in parts])
+                d[lab] = block[i]
+                i += 1
+        out[key] = d
+    out["margin"] = block[i]
     return out
+
+
+def _store(out: dict, res: dict, s: int, e: int) -> None:
+    for key in _VEC_KEYS:
+        for lab, arr in out[key].items():
+            if isinstance(arr, np.ndarray):
+                x, y = res[key][lab]
+                arr[0, s:e] = x
+                arr[1, s:e] = y
+    for key in _SCALAR_KEYS:
+        for lab, arr in out[key].items():
+            if arr.flags.writeable:
+                arr[s:e] = res[key][lab]
+    out["margin"][s:e] = res["margin"]
 
 
 def _segments(xs: np.ndarray, toggles: Iterable[Limit], full: bool):
