@@ -29,6 +29,8 @@ def register(sub) -> None:
                                    "table, or JSON with --json.")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
+    p.add_argument("--svg", metavar="DIR", help="also write a free-body diagram and a force "
+                                               "polygon (SVG) per body and state to DIR")
     p.set_defaults(func=run)
     solve_parser = sub.choices.get("solve")
     if solve_parser is not None:
@@ -69,7 +71,14 @@ def run(args) -> int:
         raise SceneError("this scene has no [masses], [forces], [torques] or [springs]: "
                             "there is nothing for a force analysis to do", file=scene.file)
     an = analyse(scene)
-    sys.stdout.write(_dumps(to_dict(an)) if args.json else forces_table(an))
+    paths = []
+    if args.svg:
+        from .fbd import write
+        paths = write(an, args.svg)
+    text = _dumps(to_dict(an)) if args.json else forces_table(an)
+    if paths and not args.json:
+        text += f"\ndiagrams: {len(paths)} SVG files in {args.svg}\n"
+    sys.stdout.write(text)
     return 0
 
 

@@ -416,3 +416,29 @@ def test_forces_on_a_scene_without_masses_is_an_error():
     out = run("forces", CASES / "s003-fig7.toml")
     assert out.returncode != 0 and "nothing for a force analysis" in out.stderr
     assert "Traceback" not in out.stderr
+
+
+# ---------------------------------------------------------------- free-body diagrams
+@pytest.mark.parametrize("name", ["s002-ex3.17.toml", "s001-we8.toml", "s000-d225-2003-q3.toml"])
+def test_force_polygons_close_and_svgs_are_deterministic(name, analysed):
+    from diagrams.svg import to_svg
+    from polygons.fbd import drawings
+    an = analysed(CASES / name)
+    first = drawings(an)
+    assert any(stem.startswith("fbd-") for stem, _ in first)
+    for stem, d in first:
+        if stem.startswith("forces-"):
+            scale = max(abs(float(v)) for v in an.states[0].ne.values) + 1.0
+            assert d.meta["gap_N"] <= 1e-9 * scale, stem
+    second = drawings(an)
+    assert [to_svg(d) for _, d in first] == [to_svg(d) for _, d in second]
+
+
+def test_cli_forces_svg_writes_valid_files(tmp_path):
+    import cairosvg
+    out = run("forces", CASES / "s002-ex3.16.toml", "--svg", tmp_path / "fbd")
+    assert out.returncode == 0, out.stderr
+    files = sorted((tmp_path / "fbd").glob("*.svg"))
+    assert {f.name for f in files} >= {"fbd-release-oa.svg", "forces-after-30-deg-oa.svg"}
+    for f in files:
+        assert cairosvg.svg2png(url=str(f))[:4] == b"\x89PNG"

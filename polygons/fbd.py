@@ -1,0 +1,295 @@
+"""Free-body diagrams and force polygons of every moving body, in the style of the polygons'
+SVGs (:mod:`diagrams`: same line styles, page, scale bar and writer).
+
+For each state and body: ``fbd-<state>-<body>.svg``, the body to a length scale with every
+force on it as an arrow of fixed length drawn from its point (labelled with its value and
+direction), the inertia force −m a_G at each centre of mass dotted, couples as arcs; and
+``forces-<state>-<body>.svg``, the force polygon to a round force scale: the same forces head
+to tail, which close because the body is in (d'Alembert) equilibrium.  Every number comes from
+the :class:`~polygons.forces.Analysis`; nothing is recomputed.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .forces import Analysis, State, _pos, centre, contact_force
+from .errors import PolygonsError, UnknownLabelError
+
+
+@dataclass(frozen=True)
+class Vector:
+    name: str          # 'R_O', 'Gas', 'W_OA', '−m a_G (OA)'
+    at: np.ndarray     # SI position of the point of application
+    force: np.ndarray  # N
+    kind: str          # 'contact' | 'load' | 'weight' | 'inertia' | 'input'
+
+
+@dataclass(frozen=True)
+class Couple:
+    name: str
+    at: np.ndarray
+    value: float       # N m, CCW positive
+
+
+def body_forces(an: Analysis, st: State, body: str) -> tuple[list[Vector], list[Couple]]:
+    """Every force and couple on ``body`` at ``st`` (reactions, loads, weights, inertia)."""
+    model = an.model
+    b = model.bodies[body]
+    sol, ne = st.sol, st.ne
+    vecs: list[Vector] = []
+    couples: list[Couple] = []
+    seen = {model.scene.slots[s.pin].coincident for s in model.slots
+            if s.lever == body and s.pin in model.scene.slots}   # reported under the pin
+    for lab in b.labels + tuple(s.pin for s in model.slots if s.lever == body):
+        if lab in seen:
+            continue
+        try:
+            f = contact_force(model, ne, lab, body)
+        except UnknownLabelError:
+            continue
+        seen.add(lab)
+        vecs.append(Vector(f"R_{lab}", _pos(sol, lab), f, "contact"))
+    if body in ne.guide:
+        v, n, c = ne.guide[body]
+        vecs.append(Vector(f"N_{body} (guide)", _pos(sol, body), v * n, "contact"))
+        if c:
+            couples.append(Couple(f"guide couple on {body}", _pos(sol, body), c))
+    for ld in ne.loads:
+        if ld.body != body:
+            continue
+        if ld.force.any() and ld.pos is not None:
+            name = f"W_{ld.item}" if ld.kind == "gravity" else ld.source
+            vecs.append(Vector(name, ld.pos, ld.force, "weight" if ld.kind == "gravity"
+                               else "load"))
+        if ld.couple:
+            at = _pos(sol, ld.at) if ld.at else _pos(sol, b.a)
+            couples.append(Couple(ld.source, at, ld.couple))
+    drv = model.scene.driver
+    if body == model.driver_body and ne.effort is not None:
+        if b.kind == "block":
+            e = np.array(model.scene.sliders[body].direction)
+            vecs.append(Vector("input force", _pos(sol, body), ne.effort * e, "input"))
+        else:
+            couples.append(Couple("input torque", _pos(sol, drv.pivot), ne.effort))
+    for i in st.inertia:
+        if i.body != body:
+            continue
+        if i.ma.any():
+            vecs.append(Vector(f"−m a_G ({i.item})", i.centre, -i.ma, "inertia"))
+        if i.i_alpha:
+            couples.append(Couple(f"−I_G α ({i.item})", i.centre, -i.i_alpha))
+    return vecs, couples
+
+
+def _slug(text: str) -> str:
+    return "".join(ch if ch.isalnum() else "-" for ch in text).strip("-").lower()
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.4g}"
+
+
+def _dir(v) -> float:
+    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+
+
+def drawings(an: Analysis):
+    """(file stem, Drawing) for every state and body that carries a force."""
+    from diagrams.labels import bounds, text_box
+    from diagrams.layout import arrow_head, compose
+    from diagrams.model import Arrow, Circle, Group, Polyline, Segment, Text
+    from diagrams.scale import Scale, round_up
+
+    out = []
+    model = an.model
+    for st in an.states:
+        for name, body in model.bodies.items():
+            vecs, couples = body_forces(an, st, name)
+            if not any(float(np.hypot(*v.force)) > 0 for v in vecs) and not couples:
+                continue
+            pts = {lab: _pos(st.sol, lab) for lab in body.labels}
+            pts.update({f"G:{i.item}": i.centre for i in st.inertia if i.body == name})
+            allp = list(pts.values()) + [v.at for v in vecs]
+            bb = bounds([tuple(p) for p in allp])
+            ext = max(bb.x1 - bb.x0, bb.y1 - bb.y0, 1e-9)
+            lscale = Scale("length", round_up(ext * 10.0 / 90.0), "mm", 1e-3)
+            k = lscale.mm_per_si
+
+            def P(p):
+                return (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3))
+
+            items = []
+            if body.kind == "block":
+                c = P(pts[body.a])
+                e = np.array(model.scene.sliders[body.a].direction)
+                n = np.array([-e[1], e[0]])
+                corners = [np.array(c) + sx * 6 * e + sy * 4 * n
+                           for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+                items.append(Polyline(tuple(tuple(map(float, q)) for q in corners), "block",
+                                      closed=True, cls=f"body {name}"))
+            else:
+                a, bq = P(pts[body.a]), P(pts[body.b])
+                items.append(Segment(a, bq, "link", cls=f"body {name}"))
+                for lab, p in pts.items():
+                    if lab not in (body.a, body.b):
+                        items.append(Segment(a, P(p), "link-thin", cls=f"body {name}"))
+            for lab, p in pts.items():
+                q = P(p)
+                if lab.startswith("G:"):
+                    items.append(Circle(q, 0.7, "vertex", cls="centre-of-mass"))
+                    items.append(Text(q[0] + 1.2, q[1] - 3.2, "G " + lab[2:], 2.6,
+                                      role="vertex"))
+                else:
+                    items.append(Circle(q, 1.1, "pin", cls="point"))
+                    items.append(Text(q[0] + 1.5, q[1] + 1.5, lab, 3.2, role="vertex",
+                                      weight="bold"))
+            arrows, labels = [], []
+            placed: list = []
+
+            def label(x, y, text, size=2.5, anchor="start"):
+                """A label at (x, y), moved down/up in steps until it overlaps no other."""
+                for k in range(40):
+                    dy = (k + 1) // 2 * (1.5 * size) * (1 if k % 2 else -1)
+                    bx = text_box(x, y + dy, text, size, anchor)
+                    if not any(bx.overlaps(o) for o in placed):
+                        break
+                placed.append(bx)
+                labels.append(Text(x, y + dy, text, size, anchor=anchor, role="label"))
+
+            L = 16.0
+            for v in vecs:
+                mag = float(np.hypot(*v.force))
+                if mag == 0.0:
+                    continue
+                u = v.force / mag
+                tail = P(v.at)
+                tip = (tail[0] + L * u[0], tail[1] + L * u[1])
+                head, shaft = arrow_head(tail, tip)
+                style = "result" if v.kind == "inertia" else "vector"
+                arrows.append(Arrow(tail, tip, style, head, shaft, name=v.name,
+                                    role="known", title=f"{v.name} = {_fmt(mag)} N"))
+                label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0,
+                      f"{v.name} {_fmt(mag)} N ∠{_dir(v.force):.1f}°",
+                      anchor="start" if u[0] >= -0.2 else "end")
+            for cpl in couples:
+                c = P(cpl.at)
+                r = 6.0
+                sgn = 1.0 if cpl.value > 0 else -1.0
+                angs = [math.radians(200) + sgn * math.radians(t) for t in range(0, 241, 20)]
+                arc = tuple((c[0] + r * math.cos(t), c[1] + r * math.sin(t)) for t in angs)
+                items.append(Polyline(arc[:-1], "vector", cls="couple"))
+                head, shaft = arrow_head(arc[-2], arc[-1], length=2.2, half=0.8)
+                arrows.append(Arrow(arc[-2], arc[-1], "vector", head, shaft, name=cpl.name,
+                                    role="known", title=f"{cpl.name} {_fmt(abs(cpl.value))} N m"))
+                label(c[0], c[1] - r - 3.5, f"{cpl.name} {_fmt(abs(cpl.value))} N m "
+                      f"{'CCW' if cpl.value > 0 else 'CW'}", anchor="middle")
+            content = [Group("body", "body", f"{name}", tuple(items)),
+                       Group("forces", "forces", "forces on the body", tuple(arrows)),
+                       Group("labels", "labels", "values", tuple(labels))]
+            xs = [q for it in items + arrows for q in _pts(it)]
+            box = bounds(xs)
+            for o in placed:
+                box = box.union(o)
+            box = box.grown(6.0)
+            legend = [("solid: forces on the body", "normal"),
+                      ("dotted: inertia force −m a_G", "normal"),
+                      ("arcs: couples", "normal"),
+                      ("arrows drawn 16 mm long;", "normal"),
+                      ("lengths in the force polygon", "normal")]
+            stem = f"fbd-{_slug(st.name)}-{_slug(name)}"
+            out.append((stem, compose(
+                name=stem, kind="free-body", stage=None,
+                title=f"Free body: {name} ({st.name})",
+                subtitle="forces on the body from its pins, guides, slots and loads",
+                desc=f"Free-body diagram of {name}", content=content, content_box=box,
+                legend=legend, scale=lscale,
+                caption=[f"{model.scene.title}. Body drawn to scale; each arrow starts at "
+                         f"the point the force acts on. The force polygon "
+                         f"(forces-{_slug(st.name)}-{_slug(name)}.svg) draws them to "
+                         f"scale."],
+                scale_statement=lscale.statement, meta={})))
+
+            # force polygon
+            drawn = [v for v in vecs if float(np.hypot(*v.force)) > 0]
+            if not drawn:
+                continue
+            big = max(float(np.hypot(*v.force)) for v in drawn)
+            fscale = Scale("force", round_up(big * 10.0 / 100.0), "N", 1.0)
+            kf = fscale.mm_per_si
+            cur = np.zeros(2)
+            parr, plab = [], []
+            for v in drawn:
+                tail = (float(cur[0] * kf), float(cur[1] * kf))
+                cur = cur + v.force
+                tip = (float(cur[0] * kf), float(cur[1] * kf))
+                head, shaft = arrow_head(tail, tip)
+                style = "result" if v.kind == "inertia" else "vector"
+                parr.append(Arrow(tail, tip, style, head, shaft, name=v.name, role="known",
+                                  title=f"{v.name} = {_fmt(float(np.hypot(*v.force)))} N"))
+                mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
+                u = v.force / float(np.hypot(*v.force))
+                side = 1.0 if -u[1] >= 0 else -1.0
+                plab.append(Text(mid[0] - 2.5 * u[1], mid[1] + 2.5 * u[0] - 1.0, v.name, 2.8,
+                                 anchor="start" if side > 0 else "end", role="label"))
+            gap = float(np.hypot(*cur))
+            start = Circle((0.0, 0.0), 0.8, "pole", cls="start")
+            pts2 = [(0.0, 0.0)] + [q for a in parr for q in (a.tail, a.tip)]
+            box2 = bounds(pts2)
+            for t in plab:
+                box2 = box2.union(text_box(t.x, t.baseline, t.text, t.size, t.anchor))
+            box2 = box2.grown(6.0)
+            stem2 = f"forces-{_slug(st.name)}-{_slug(name)}"
+            couple_words = "; ".join(f"{c.name} {_fmt(abs(c.value))} N m "
+                                     f"{'CCW' if c.value > 0 else 'CW'}" for c in couples)
+            out.append((stem2, compose(
+                name=stem2, kind="force", stage=None,
+                title=f"Force polygon: {name} ({st.name})",
+                subtitle="the forces on the body head to tail, inertia force included",
+                desc=f"Force polygon of {name}",
+                content=[Group("polygon", "force-polygon", f"forces on {name}",
+                               tuple([start] + parr)),
+                         Group("labels", "labels", "names", tuple(plab))],
+                content_box=box2,
+                legend=[(f"{v.name}: {_fmt(float(np.hypot(*v.force)))} N ∠"
+                         f"{_dir(v.force):.2f}°", "normal") for v in drawn],
+                scale=fscale,
+                caption=[f"The polygon closes (gap {gap:.2g} N): the body is in equilibrium "
+                         f"with its inertia force (d'Alembert)."
+                         + (f" Couples (not in the polygon): {couple_words}."
+                            if couples else "")],
+                scale_statement=fscale.statement, meta={"gap_N": gap})))
+    return out
+
+
+def _pts(it):
+    from diagrams.model import Arrow, Circle, Polyline, Segment, Text
+    if isinstance(it, Segment):
+        return [it.a, it.b]
+    if isinstance(it, Polyline):
+        return list(it.points)
+    if isinstance(it, Circle):
+        return [it.centre]
+    if isinstance(it, Arrow):
+        return [it.tail, it.tip]
+    if isinstance(it, Text):
+        return [(it.x, it.baseline)]
+    return []
+
+
+def write(an: Analysis, outdir) -> list[Path]:
+    """Write every free-body diagram and force polygon as ``outdir/<name>.svg``."""
+    from diagrams.svg import to_svg
+    outdir = Path(outdir)
+    if outdir.exists() and not outdir.is_dir():
+        raise PolygonsError(f"{outdir} exists and is not a folder", where=str(outdir))
+    outdir.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for stem, d in drawings(an):
+        p = outdir / f"{stem}.svg"
+        p.write_bytes(to_svg(d))
+        paths.append(p)
+    return paths
