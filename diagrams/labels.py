@@ -120,6 +120,7 @@ class Placer:
     soft_segments: list[tuple[Pt, Pt]] = field(default_factory=list)
     boxes: list[Box] = field(default_factory=list)
     frame: Box | None = None     # labels prefer to stay inside (cost otherwise)
+    soft_cost: float = 4.0       # cost of crossing a soft line (≈ 4 steps further out)
 
     def hard(self, a: Pt, b: Pt, clearance: float = 0.8) -> None:
         self.hard_segments.append((a, b, clearance))
@@ -138,8 +139,8 @@ class Placer:
     def cost(self, box: Box) -> float:
         c = 0.0
         for a, b in self.soft_segments:
-            if box_hits_segment(box, a, b, 0.3):
-                c += 4.0
+            if box_hits_segment(box, a, b, 0.8):
+                c += self.soft_cost
         if self.frame is not None and not (self.frame.contains((box.x0, box.y0))
                                            and self.frame.contains((box.x1, box.y1))):
             c += 1.5

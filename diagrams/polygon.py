@@ -260,9 +260,9 @@ def _place_labels(lay: Layout) -> Layout:
             pt = (x0 + f * (x1 - x0), y0 + f * (y1 - y0))
             anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
         text = display(st.label)
-        placer.hard(g[0], g[1], 0.4)            # not across its own line
+        placer.hard(g[0], g[1], 0.7)            # not across its own line
         x, base, _, box = placer.place_any(text, LINE_LABEL_SIZE, anchors,
-                                           distances=(0.5, 1.0, 2.0, 3.5, 5.5, 8.0))
+                                           distances=(0.3, 0.8, 1.8, 3.3, 5.3, 8.0))
         placer.hard_segments.pop()
         llabels[st.step] = (text, x, base, box)
     clabels = {}

@@ -106,19 +106,25 @@ def choose(quantity: str, extent: tuple[float, float], vectors: list[float] = ()
     """
     if paper is not None and paper not in PAPER:
         raise ScaleError(f"unknown paper {paper!r}: {suggest(paper, PAPER)}")
-    sizes = [paper] if paper else ["A5", "A4"]
-    best = None
-    for name in sizes:
+
+    def fit(name: str) -> Scale:
         need = math.inf
         for aw, ah in (PAPER[name], PAPER[name][::-1]):     # landscape or portrait
             aw, ah = aw - pad_mm, ah - pad_mm
             need = min(need, max(extent[0] * 10.0 / aw if extent[0] > 0 else 0.0,
                                  extent[1] * 10.0 / ah if extent[1] > 0 else 0.0))
-        best = make(quantity, round_up(need))
-        shortest = min((v for v in vectors if v > 0), default=None)
-        if shortest is None or best.mm(shortest) >= MIN_VECTOR_MM:
-            break
-    return best
+        return make(quantity, round_up(need))
+
+    if paper:
+        return fit(paper)
+    small = fit("A5")
+    longest = max(vectors, default=0.0)
+    # vectors that are zero but for rounding (1e-16 of the longest) cannot be drawn anyway
+    shortest = min((v for v in vectors if v > 1e-9 * longest), default=None)
+    if shortest is None or small.mm(shortest) >= MIN_VECTOR_MM:
+        return small
+    large = fit("A4")
+    return large if large.mm(shortest) >= MIN_VECTOR_MM else small
 
 
 def parse(text, quantity: str, *, file: str | None = None, where: str | None = None

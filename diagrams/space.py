@@ -69,7 +69,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     P = {lab: (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3))
          for lab, p in pos.items()}
     frame = Box(-15.0, -15.0, extent[0] * k + 15.0, extent[1] * k + 15.0)
-    placer = Placer(frame=frame)
+    placer = Placer(frame=frame, soft_cost=8.0)
     back, links, symbols, pins, inputs = [], [], [], [], []
     neighbours: dict[str, list[Pt]] = {lab: [] for lab in P}
 
