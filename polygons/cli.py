@@ -9,7 +9,8 @@ from .errors import PolygonsError
 
 #: modules that add a sub-command: each has ``register(subparsers)``
 COMMAND_MODULES = ("polygons.cmd_solve", "polygons.cmd_sweep", "polygons.cmd_draw",
-                   "polygons.cmd_forces")
+                   "polygons.cmd_forces", "polygons.cmd_check", "polygons.cmd_handout",
+                   "polygons.cmd_gallery")
 
 
 class _Parser(argparse.ArgumentParser):

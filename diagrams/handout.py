@@ -1,0 +1,833 @@
+"""Teaching handouts: one self-contained, printable HTML document per case.
+
+    from diagrams.handout import handout
+    html = handout(solution)                   # the answer key
+    html = handout(solution, worksheet=True)   # the student's version
+
+The handout reads, in order: the problem statement and its data; the space diagram; the
+velocity construction narrated step by step (the tutorial's sentence, the stage figure and the
+formula with its numbers); the same for the acceleration diagram, with the centripetal,
+tangential and Coriolis components explained where they first occur; the results with units
+and senses; and the comparison with the tutorial's printed answers, with the slips the
+reference found in plain words.
+
+The worksheet is the same document without a single result: the narration keeps its
+sentences and symbolic formulas, the polygon figures are replaced by empty drawing areas at
+the scale the key is drawn to (true size when printed), and the answers become blanks to fill
+in, with the ``polygons check`` command that grades them.
+
+Every figure is inline SVG from :mod:`diagrams` (``diagrams.drawings`` / ``diagrams.svg``);
+the document loads nothing from the network and runs no script.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from polygons.evaluate import Solution
+from polygons.plan import Step
+from polygons.report import check_answers, sense
+from polygons.scene import Crank
+
+from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
+
+DRAWABLE = ("vector", "image", "line", "intersection")
+#: printable area (mm) of an A4 page with the margins of the stylesheet below
+PORTRAIT = (180.0, 262.0)
+LANDSCAPE = (267.0, 175.0)
+#: width (mm) of a stage figure inside the narration
+STAGE_WIDTH = 110.0
+#: paper area (mm) each polygon is fitted to by diagrams.scale.choose
+PAPER_AREAS = {"A5": (150.0, 100.0), "A4": (230.0, 150.0)}
+
+UNIT_OF = {"velocity": "m/s", "acceleration": "m/s²"}
+WHAT = {"velocity": "velocity", "acceleration": "acceleration"}
+
+
+# ---------------------------------------------------------------- figures
+@dataclass
+class Figures:
+    """The diagrams of one solution: SVG bytes and the drawing records, by name
+    ('space', 'velocity', 'velocity-1', ...)."""
+    svg: dict = field(default_factory=dict)
+    drawing: dict = field(default_factory=dict)
+    error: str = ""
+
+
+def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
+    """Every diagram of ``sol`` with its stages, through the public API of :mod:`diagrams`."""
+    import diagrams
+    from .svg import to_svg
+    out = Figures()
+    for d in diagrams.drawings(sol, scales, paper, True):
+        out.drawing[d.name] = d
+        out.svg[d.name] = to_svg(trimmed(d) if d.stage is not None else d)
+    return out
+
+
+def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3.0):
+    """A copy of drawing ``d`` without the groups named in ``drop`` (their ident or class),
+    cropped to what is left: the stage figures inside the narration need neither their own
+    title nor their caption, since the handout's text says both."""
+    from dataclasses import replace
+
+    from .labels import text_box
+    from .model import Arrow, Circle, Polyline, Segment, Text
+
+    groups = tuple(g for g in d.groups if g.ident not in drop
+                   and not set(g.cls.split()) & set(drop))
+    xs: list[float] = []
+    ys: list[float] = []
+
+    def walk(items):
+        for it in items:
+            if hasattr(it, "items") and not isinstance(it, (Segment, Polyline, Circle, Arrow,
+                                                            Text)):
+                walk(it.items)
+            elif isinstance(it, Segment):
+                xs.extend((it.a[0], it.b[0]))
+                ys.extend((it.a[1], it.b[1]))
+            elif isinstance(it, Polyline):
+                xs.extend(p[0] for p in it.points)
+                ys.extend(p[1] for p in it.points)
+            elif isinstance(it, Circle):
+                xs.extend((it.centre[0] - it.r, it.centre[0] + it.r))
+                ys.extend((it.centre[1] - it.r, it.centre[1] + it.r))
+            elif isinstance(it, Arrow):
+                pts = [it.tail, it.tip, *it.head]
+                xs.extend(p[0] for p in pts)
+                ys.extend(p[1] for p in pts)
+            elif isinstance(it, Text):
+                b = text_box(it.x, it.baseline, it.text, it.size, it.anchor)
+                xs.extend((b.x0, b.x1))
+                ys.extend((b.y0, b.y1))
+    walk(groups)
+    if not xs:
+        return d
+    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    dx, dy = margin - x0, margin - y0
+    return replace(d, width=round(x1 - x0 + 2 * margin, 1),
+                   height=round(y1 - y0 + 2 * margin, 1),
+                   groups=tuple(g.moved(dx, dy) for g in groups))
+
+
+def stage_of(sol: Solution, step: Step) -> int | None:
+    """Stage number (1, 2 ...) of a drawn step in its diagram's stage figures, else None."""
+    if step.kind not in DRAWABLE:
+        return None
+    k = 0
+    for s in sol.steps:
+        if s.diagram == step.diagram and s.kind in DRAWABLE:
+            k += 1
+            if s.number == step.number:
+                return k
+    return None
+
+
+def letter(k: int) -> str:
+    return chr(ord("a") + k - 1) if k <= 26 else str(k)
+
+
+# ---------------------------------------------------------------- words
+EXPLAIN = {
+    "relative_velocity": (
+        "Relative velocity",
+        "Two points of one rigid link keep their distance, so the only way one can move "
+        "relative to the other is by turning about it: the relative velocity is ω × length, "
+        "at right angles to the line joining them. A fixed point has no velocity, so every "
+        "fixed point is the pole."),
+    "slider_line": (
+        "A slider on a guide",
+        "A slider can only move along its guide, so its velocity (and its acceleration) lie "
+        "along the guide: the line through the pole parallel to the guide."),
+    "sliding": (
+        "A pin in a slot",
+        "Where a pin slides in the slot of a turning lever, its velocity is the velocity of "
+        "the point of the lever under it (at right angles to the lever) plus the sliding "
+        "velocity along the slot."),
+    "centripetal": (
+        "Centripetal acceleration",
+        "A point turning about another point of the same link at angular velocity ω, at "
+        "radius r, accelerates towards it by ω²r = v²/r, where v is their relative velocity "
+        "from the velocity diagram. It is always known once the velocity diagram is drawn, "
+        "so it is drawn first: parallel to the link, pointing towards the centre it turns "
+        "about."),
+    "tangential": (
+        "Tangential acceleration",
+        "If the link's angular velocity is changing (angular acceleration α), the point "
+        "also accelerates by αr at right angles to the link. Its size is not known until "
+        "the diagram closes, so only its line is drawn; where two such lines cross fixes "
+        "the point, and the length of the tangential vector divided by r gives α."),
+    "coriolis": (
+        "Coriolis acceleration",
+        "When a point slides along a link that is itself turning, its acceleration relative "
+        "to the coincident point of the link has, besides the sliding acceleration along "
+        "the slot, a component 2ωv at right angles to the slot (ω the link's angular "
+        "velocity, v the sliding velocity from the velocity diagram). Its sense is that of "
+        "v turned through 90° in the sense of ω. It is known, so it is drawn as a known "
+        "vector, and the unknown sliding acceleration lies along the slot from its end."),
+    "image": (
+        "Velocity and acceleration images",
+        "The points of one rigid link make, on the velocity or the acceleration diagram, a "
+        "figure similar to the link itself (turned, and scaled by the diagram): once two "
+        "points of the link are on the diagram, any third point follows by copying the "
+        "shape."),
+}
+
+
+def quantity_words(expr: str) -> str:
+    """'v(C,B)' → 'velocity of C relative to B' (for the worksheet's blanks)."""
+    fn, _, rest = expr.replace(" ", "").partition("(")
+    args = [a for a in rest.rstrip(")").split(",") if a]
+    a0 = args[0] if args else ""
+    rel = f" relative to {args[1]}" if len(args) > 1 else ""
+    return {
+        "v": f"velocity of {a0}{rel}",
+        "a": f"acceleration of {a0}{rel}",
+        "an": f"centripetal acceleration of {a0}{rel}",
+        "at": f"tangential acceleration of {a0}{rel}",
+        "omega": f"angular velocity of {a0} and its sense",
+        "alpha": f"angular acceleration of {a0} and its sense",
+        "cor": f"Coriolis acceleration of {a0}",
+        "vs": f"sliding velocity of {a0}",
+        "as": f"sliding acceleration of {a0}",
+    }.get(fn, "")
+
+
+def textbook_name(expr: str) -> str:
+    """'v(C,B)' → 'v_CB', the name ``polygons check --measured`` takes."""
+    fn, _, rest = expr.replace(" ", "").partition("(")
+    args = [a for a in rest.rstrip(")").split(",") if a]
+    return f"{fn}_{''.join(args)}"
+
+
+_E = re.compile(r"(\d(?:\.\d+)?)e\+?(-?)0*(\d+)")
+_NEG_SQ = re.compile(r"(?<![\w)])-(\d[\d.]*)²")
+
+
+def _tidy(text: str) -> str:
+    """Substituted numbers as a person writes them: '-480²' → '480²'."""
+    return _NEG_SQ.sub(r"\1²", plain_text(text))
+
+
+def _sym_numbers(text: str) -> str:
+    """``sym`` plus '1.561e+05' written as 1.561 × 10⁵."""
+    out = sym(text)
+    return _E.sub(lambda m: f"{m.group(1)} × 10<sup>{m.group(2)}{m.group(3)}</sup>", out)
+
+
+def formula_with_numbers(step: Step) -> str:
+    """The step's formula with its numbers, as one line of text (not escaped)."""
+    sub = _tidy(step.substituted or "")
+    if not sub:
+        return ""
+    formula = plain_text(step.formula)
+    lhs, _, rhs = formula.partition(" = ")
+    if sub.startswith(lhs + " = "):
+        first = sub[len(lhs) + 3:].split(" = ")[0]
+        if rhs and first[:1].isdigit() and rhs not in sub:
+            return f"{lhs} = {rhs} = {sub[len(lhs) + 3:]}"
+        return sub
+    if sub.startswith("2ωv"):
+        return f"a_cor = {sub}"
+    q = plain_text(step.quantity)
+    if step.op in ("slider_velocity", "slider_acceleration", "slide_velocity",
+                   "slide_acceleration"):
+        return f"{q} = {sub}"
+    return f"{q} = {sub}"
+
+
+def _paragraphs(text: str) -> list[str]:
+    """A statement written with hard line breaks → its paragraphs / list items."""
+    out: list[str] = []
+    marker = re.compile(r"^(\s*[-•]\s|\s*\d+\.\s|\s*\([ivx]+\)\s|\s*\([a-z]\)\s|\s*\(Ans|"
+                        r"\s*\(Answer)")
+    for line in text.strip().splitlines():
+        if not line.strip():
+            out.append("")
+            continue
+        if out and out[-1] and not marker.match(line):
+            out[-1] += " " + line.strip()
+        else:
+            out.append(line.strip())
+    return [p for p in out if p]
+
+
+_ANSWER_UNITS = r"(?:m/s\^?2|m/s²|m/s|rad/s\^?2|rad/s²|rad/s|N\b|kN\b|N ?m\b|W\b)"
+_PAREN = re.compile(r"\(([^()]*)\)")
+
+
+def redact_answers(text: str) -> str:
+    """The statement without the printed answers: '(Ans. 76 rad/s clockwise.)', '(Answer 34
+    m/s ...)' and parentheses quoting results in m/s, rad/s, N ... become '(answer on the
+    key)'.  Given data in words ('(alpha is 21.052 deg at this position)') stays."""
+    def repl(m):
+        inner = m.group(1).strip()
+        if re.match(r"(?i)ans(wer)?s?\b", inner) or re.search(
+                r"\d\s*" + _ANSWER_UNITS, inner):
+            return "(answer on the key)"
+        return m.group(0)
+    return _PAREN.sub(repl, text)
+
+
+# ---------------------------------------------------------------- the document
+CSS = """
+@page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
+@page wide { size: A4 landscape; margin: 12mm 15mm 12mm 15mm; }
+html { background: #ffffff; }
+body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 10.5pt;
+       line-height: 1.42; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
+h1, h2, h3, .figure-note, table, .formula, .explain h4, .badge, footer, .data dt {
+       font-family: "DejaVu Sans", Verdana, Arial, sans-serif; }
+h1 { font-size: 17pt; line-height: 1.2; margin: 0 0 2mm 0; }
+h2 { font-size: 13pt; margin: 7mm 0 2mm 0; border-bottom: 0.4mm solid #000;
+     break-after: avoid; page-break-after: avoid; }
+h3 { font-size: 11pt; margin: 4mm 0 1.5mm 0; break-after: avoid; page-break-after: avoid; }
+p { margin: 1.2mm 0 1.8mm 0; }
+.sub { font-size: 9.5pt; color: #333; margin: 0 0 3mm 0; }
+.badge { display: inline-block; border: 0.3mm solid #000; padding: 0 1.5mm; font-size: 8.5pt;
+         font-weight: bold; margin-right: 1.5mm; }
+.statement { border-left: 1mm solid #999; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
+.statement p { margin: 0.8mm 0; }
+table { border-collapse: collapse; font-size: 9pt; margin: 2mm 0 3mm 0;
+        break-inside: avoid; page-break-inside: avoid; }
+th, td { border-bottom: 0.2mm solid #999; padding: 0.8mm 2.2mm; text-align: left;
+         vertical-align: top; }
+th { border-bottom: 0.4mm solid #000; font-weight: bold; }
+td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
+ol.steps { list-style: none; padding: 0; margin: 0; }
+li.step { margin: 0 0 4mm 0; break-inside: avoid; page-break-inside: avoid; }
+li.step .say { margin: 0.5mm 0; }
+li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
+               display: inline-block; min-width: 8mm; }
+.formula { font-size: 9.5pt; margin: 0.5mm 0 1mm 8mm; }
+.formula.symbolic { color: #333; }
+.explain { border: 0.3mm solid #000; padding: 1.5mm 3mm; margin: 2mm 0 3mm 8mm;
+           break-inside: avoid; page-break-inside: avoid; font-size: 9.5pt; }
+.explain h4 { margin: 0 0 0.8mm 0; font-size: 9.5pt; }
+.explain p { margin: 0; }
+figure { margin: 1.5mm 0 1mm 8mm; break-inside: avoid; page-break-inside: avoid; }
+figure svg { display: block; max-width: 100%; height: auto; }
+figure svg.drawing-area { max-width: none; }
+figcaption, .figure-note { font-size: 8.5pt; color: #333; }
+section.plate { page: wide; break-before: page; page-break-before: always; }
+section.plate figure { margin: 0; }
+section.plate h3 { margin-top: 0; }
+section.plate.portrait { page: auto; }
+.note { font-size: 9.5pt; }
+.slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
+.about p { font-size: 9pt; color: #222; white-space: pre-line; margin: 0.5mm 0 2mm 0; }
+.about h3 { font-size: 9.5pt; margin-bottom: 0.5mm; }
+footer { font-size: 8pt; color: #333; margin-top: 6mm; border-top: 0.2mm solid #999;
+         padding-top: 1.5mm; }
+code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
+.ok { font-weight: normal; }
+.off { font-weight: bold; }
+@media print {
+  body { max-width: none; padding: 0; }
+}
+table.wide { width: 100%; }
+table.wide td.q { width: 30%; }
+@media screen {
+  body { padding: 8mm 6mm; }
+  section.plate { border-top: 0.3mm dashed #999; margin-top: 8mm; padding-top: 4mm;
+                  overflow-x: auto; }
+}
+"""
+
+
+class _Doc:
+    def __init__(self):
+        self.parts: list[str] = []
+        self.explained: set[str] = set()
+        self.section = 0
+
+    def sec(self) -> int:
+        self.section += 1
+        return self.section
+
+    def add(self, *html: str):
+        self.parts.extend(html)
+
+    def text(self) -> str:
+        return "".join(self.parts)
+
+
+def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = None,
+            source_name: str | None = None) -> str:
+    """The handout (answer key) or, with ``worksheet``, the student's version, as HTML."""
+    scene = sol.scene
+    figs = figures(sol) if figs is None else figs
+    src = scene.source
+    sid = src.get("id", "")
+    file = source_name or scene.file
+    doc = _Doc()
+    kind = "Worksheet" if worksheet else "Handout"
+    title = f"{sid}: {scene.title}" if sid else scene.title
+    doc.add("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n",
+            f"<meta name=\"generator\" content=\"polygons\">\n",
+            f"<meta name=\"polygons-kind\" content=\"{kind.lower()}\">\n",
+            f"<title>{esc(kind)} — {esc(title)}</title>\n<style>{CSS}</style>\n</head>\n",
+            f"<body class=\"{kind.lower()}\">\n")
+    _header(doc, sol, worksheet, kind)
+    _problem(doc, sol, worksheet)
+    _space(doc, sol, figs, worksheet)
+    for diagram in scene.solve:
+        if diagram in sol.vertices:
+            _construction(doc, sol, figs, diagram, worksheet)
+    if worksheet:
+        _blanks(doc, sol, file)
+    else:
+        _results(doc, sol)
+        _comparison(doc, sol)
+        _about(doc, sol)
+    _footer(doc, sol, worksheet, file)
+    doc.add("</body>\n</html>\n")
+    return doc.text()
+
+
+def _header(doc: _Doc, sol: Solution, worksheet: bool, kind: str) -> None:
+    scene, src = sol.scene, sol.scene.source
+    doc.add("<header>\n")
+    badges = [f'<span class="badge">{esc(kind.upper())}</span>']
+    if src.get("id"):
+        badges.append(f'<span class="badge">{esc(src["id"])}</span>')
+    if src.get("synthetic"):
+        badges.append('<span class="badge">SYNTHETIC GEOMETRY</span>')
+    doc.add(f"<div>{''.join(badges)}</div>\n", f"<h1>{esc(scene.title)}</h1>\n")
+    bits = [src.get("example"), src.get("mechanism")]
+    line = " · ".join(esc(b) for b in bits if b)
+    if line:
+        doc.add(f'<p class="sub">{line}</p>\n')
+    if src.get("synthetic"):
+        doc.add('<p class="note"><strong>Note.</strong> The tutorial\'s figure for this example '
+                'is missing; the geometry below is a stand-in that the reference proposes, so '
+                'the numbers are those of the stand-in.</p>\n')
+    if worksheet:
+        doc.add('<p class="note">Draw each diagram in the empty area provided, at the scale '
+                'stated under it (print at 100 %: the grid squares are 5 mm). Measure your '
+                'answers off your drawings and write them in the table at the end.</p>\n')
+    doc.add("</header>\n")
+
+
+def _g(x: float) -> str:
+    """A given datum as written: up to 6 significant figures, no trailing zeros."""
+    if x == 0:
+        return "0"
+    return f"{x:.6g}".replace("-", "−")
+
+
+def _fmt_len(si: float) -> str:
+    return f"{_g(si * 1000.0)} mm"
+
+
+def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
+    scene = sol.scene
+    doc.add(f'<section id="problem">\n<h2>{doc.sec()}. The problem</h2>\n')
+    statement = scene.source.get("statement", "")
+    if statement:
+        if worksheet:
+            statement = redact_answers(statement)
+        doc.add('<div class="statement">\n')
+        for para in _paragraphs(statement):
+            doc.add(f"<p>{esc(plain_text(para))}</p>\n")
+        doc.add("</div>\n")
+    doc.add("<h3>Data</h3>\n<table class=\"data\">\n<tbody>\n")
+    rows: list[tuple[str, str]] = []
+    for lab, p in scene.ground.items():
+        rows.append((f"fixed point {lab}", f"({_g(p[0] * 1000)}, {_g(p[1] * 1000)}) mm"))
+    drv = scene.driver
+    for name, ln in scene.links.items():
+        if ln.length is not None:
+            rows.append((f"link {name}", _fmt_len(ln.length)))
+    for pin, slot in scene.slots.items():
+        txt = (f"{pin} slides in the slot of the lever {slot.lever}, which turns about "
+               f"{slot.pivot}; {slot.coincident} is the point of the lever under {pin}")
+        if slot.far and slot.far_length:
+            txt += f"; {slot.pivot}{slot.far} = {_fmt_len(slot.far_length)}"
+        rows.append((f"slot {slot.lever}", txt))
+    for lab, g in scene.sliders.items():
+        txt = (f"slides on a fixed guide through ({_g(g.through[0] * 1000)}, "
+               f"{_g(g.through[1] * 1000)}) mm at {_g(math.degrees(g.angle))}°")
+        if g.pin:
+            txt += (f"; it carries a slot at {_g(math.degrees(g.slot_angle))}° in which "
+                    f"{g.pin} slides")
+        rows.append((f"slider {lab}", txt))
+    for lab, bp in scene.points.items():
+        if bp.along is not None:
+            where = f"{_fmt_len(bp.along)} along {bp.link}"
+        else:
+            where = f"at {_g(bp.fraction)} of {bp.link}"
+        if bp.left:
+            where += f", {_fmt_len(bp.left)} to the left"
+        rows.append((f"point {lab}", f"rigid with {bp.link}: {where}"))
+    if isinstance(drv, Crank):
+        rows.append((f"input crank {drv.link}",
+                     f"turns about {drv.pivot}; at this instant {drv.link} is at "
+                     f"{_g(math.degrees(drv.angle))}° (CCW from the +x axis)"))
+        rpm = abs(drv.omega) * 60.0 / (2 * math.pi)
+        rows.append(("ω of the crank", f"{_g(abs(drv.omega))} rad/s {sense(drv.omega)} "
+                                       f"(= {_g(rpm)} rev/min)"))
+        rows.append(("α of the crank", "0 (constant speed)" if drv.alpha == 0 else
+                     f"{_g(abs(drv.alpha))} rad/s² {sense(drv.alpha)}"))
+    else:
+        rows.append((f"input slider {drv.point}",
+                     f"v = {_g(drv.velocity)} m/s, a = {_g(drv.acceleration)} m/s² along its "
+                     f"guide"))
+    for lab, br in scene.assembly.items():
+        rows.append((f"assembly of {lab}", br.text))
+    for a, b in rows:
+        doc.add(f"<tr><th scope=\"row\">{esc(a)}</th><td>{esc(plain_text(b))}</td></tr>\n")
+    doc.add("</tbody>\n</table>\n")
+    doc.add('<p class="note">Coordinates: x to the right, y up; angles counter-clockwise (CCW) '
+            'from +x; CW = clockwise.</p>\n')
+    doc.add("</section>\n")
+
+
+def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
+           intro: str = "", ident: str | None = None, level: str = "h3",
+           head_room: float = 16.0) -> None:
+    """A finished diagram on a page of its own, full size when it fits A4 either way round
+    (below ``head_room`` mm of heading and ``intro`` HTML)."""
+    svg = figs.svg.get(name)
+    if svg is None:
+        return
+    w, h = svg_size(svg)
+    if w <= PORTRAIT[0] and h <= PORTRAIT[1] - head_room:
+        cls, width, reduced = "plate portrait", w, None
+    elif w <= LANDSCAPE[0] and h <= LANDSCAPE[1] - head_room:
+        cls, width, reduced = "plate", w, None
+    else:
+        k_land = min(LANDSCAPE[0] / w, (LANDSCAPE[1] - head_room) / h)
+        k_port = min(PORTRAIT[0] / w, (PORTRAIT[1] - head_room) / h)
+        if k_port >= k_land:
+            cls, k = "plate portrait", k_port
+        else:
+            cls, k = "plate", k_land
+        width, reduced = w * k, k
+    doc.add(f'<section class="{cls}" id="{esc(ident or "plate-" + name)}">\n'
+            f"<{level}>{esc(heading)}</{level}>\n{intro}")
+    doc.add(f'<figure class="diagram full">{inline_svg(svg, name, "figure", width, label)}'
+            f"</figure>\n")
+    scale_txt = figs.drawing[name].scale_statement if name in figs.drawing else ""
+    if reduced is None:
+        msg = (f"Full size: printed at 100 % this drawing is at its stated scale "
+               f"({scale_txt})." if scale_txt else "Full size.")
+    else:
+        msg = (f"Reduced to {math.floor(reduced * 100)} % to fit the page: measure with its "
+               f"scale bar, "
+               f"not with the stated scale.")
+    doc.add(f'<p class="figure-note">{esc(msg)}</p>\n</section>\n')
+
+
+def _space(doc: _Doc, sol: Solution, figs: Figures, worksheet: bool) -> None:
+    d = figs.drawing.get("space")
+    sc = d.scale_statement if d is not None else ""
+    intro = ("<p>The mechanism frozen at the instant asked about, drawn to scale"
+             + (f" ({esc(sc)})" if sc else "") + ". Every direction in the velocity and "
+             "acceleration diagrams is taken from it: a relative velocity is at right angles "
+             "to the link, a centripetal acceleration parallel to it.</p>\n")
+    if worksheet:
+        intro = intro.replace("</p>\n", " If the tutorial asks you to, draw it yourself "
+                              "first from the data and check it against this one.</p>\n")
+    _plate(doc, figs, "space", f"{doc.sec()}. The space diagram", "Space diagram of the "
+           "mechanism", intro, ident="space", level="h2", head_room=34.0)
+
+
+def _explain(doc: _Doc, key: str) -> None:
+    if key in doc.explained or key not in EXPLAIN:
+        return
+    doc.explained.add(key)
+    head, body = EXPLAIN[key]
+    doc.add(f'<aside class="explain" data-explains="{esc(key)}"><h4>{esc(head)}</h4>'
+            f"<p>{esc(body)}</p></aside>\n")
+
+
+def _explains_for(step: Step) -> list[str]:
+    keys = []
+    if step.op == "crank_velocity" or step.op == "line_perp" and step.diagram == "velocity":
+        keys.append("relative_velocity")
+    if step.op == "line_guide":
+        keys.append("slider_line")
+    if step.op == "line_along":
+        keys.append("sliding")
+    if step.theorem in ("centripetal", "tangential", "coriolis", "image"):
+        keys.append(step.theorem)
+    if step.op == "crank_tangential":
+        keys.append("tangential")
+    return keys
+
+
+def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
+                  worksheet: bool) -> None:
+    scene = sol.scene
+    n_sec = doc.sec()
+    what = WHAT[diagram]
+    final = figs.drawing.get(diagram)
+    lay = final.meta.get("layout") if final is not None else None
+    scale = lay.scale if lay is not None else None
+    doc.add(f'<section id="{diagram}" class="construction">\n'
+            f"<h2>{n_sec}. The {what} diagram</h2>\n")
+    pole_alias = " = ".join([sol.pole] + [g.lower() for g in scene.ground
+                                          if g.lower() != sol.pole])
+    intro = (f"Lower-case letters are the points of the {what} diagram: the vector from "
+             f"<em>b</em> to <em>c</em> is the {what} of C relative to B. The pole "
+             f"<em>{esc(pole_alias)}</em> stands for every fixed point, which has no "
+             f"{what}.")
+    if scale is not None:
+        intro += f" Scale <strong>{esc(scale.statement)}</strong>."
+    doc.add(f"<p>{intro}</p>\n")
+    if not worksheet:
+        doc.add(f'<p class="figure-note">Each step below shows the drawing so far, the new '
+                f"line in black and the earlier ones in grey, with the scale bar it is drawn "
+                f"to (the stage figures may be reduced: measure on the finished {what} "
+                f"diagram that follows them, printed full size when the page allows).</p>\n")
+    doc.add(f'<ol class="steps" id="{diagram}-steps">\n')
+    for step in sol.steps:
+        if step.diagram != diagram:
+            continue
+        for key in _explains_for(step):
+            _explain(doc, key)
+        k = stage_of(sol, step)
+        fig_ref = f" (Fig. {letter(k)})" if k is not None and not worksheet else ""
+        doc.add(f'<li class="step" id="{diagram}-step-{step.number}" '
+                f'data-step="{step.number}">\n'
+                f'<p class="say"><span class="num">{step.number}.</span>'
+                f"{sym(step.reason)}{esc(fig_ref)}</p>\n")
+        if worksheet:
+            if step.kind != "intersection":
+                doc.add(f'<p class="formula symbolic">{sym(step.formula)}</p>\n')
+        else:
+            f = formula_with_numbers(step)
+            if f:
+                doc.add(f'<p class="formula answer">{_sym_numbers(f)}</p>\n')
+            name = f"{diagram}-{k}" if k is not None else None
+            if name and name in figs.svg:
+                svg = figs.svg[name]
+                w, _ = svg_size(svg)
+                doc.add(f'<figure class="diagram stage">'
+                        f"{inline_svg(svg, name, 'figure', min(w, STAGE_WIDTH), f'{what} diagram, Fig. {letter(k)}')}"
+                        f"<figcaption>Fig. {letter(k)}: {what} diagram, stage {k}"
+                        f"</figcaption></figure>\n")
+        doc.add("</li>\n")
+    doc.add("</ol>\n")
+    if sol.min_intersection_angle_deg is not None and not worksheet:
+        angles = [s.angle_deg for s in sol.steps if s.diagram == diagram and s.angle_deg]
+        if angles:
+            doc.add(f'<p class="note">The construction lines of this diagram cross at '
+                    f"{num(min(angles), 3)}° or more"
+                    + (" — a clean intersection." if min(angles) >= 20 else
+                       " — a shallow crossing: draw carefully, small errors in direction move "
+                       "the point a long way.") + "</p>\n")
+    doc.add("</section>\n")
+    if worksheet:
+        _area(doc, sol, figs, diagram)
+    else:
+        _plate(doc, figs, diagram, f"The finished {what} diagram",
+               f"Finished {what} diagram")
+
+
+def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
+    """The worksheet's empty drawing area for ``diagram``, true size, at the key's scale."""
+    final = figs.drawing.get(diagram)
+    lay = final.meta.get("layout") if final is not None else None
+    if lay is None:
+        return
+    scale = lay.scale
+    frame = lay.frame
+    fw, fh = frame.x1 - frame.x0, frame.y1 - frame.y0
+    # the paper area the scale was chosen for, or the drawing itself if it is larger
+    aw, ah = PAPER_AREAS["A5"]
+    if fw > aw or fh > ah:
+        aw, ah = PAPER_AREAS["A4"]
+    aw, ah = max(aw, math.ceil(fw / 10) * 10), max(ah, math.ceil(fh / 10) * 10)
+    # where the key puts the pole, with the key's drawing centred in the area (y down)
+    px, py = lay.P(lay.con.vertices[sol.pole])
+    cx, cy = (frame.x0 + frame.x1) / 2, (frame.y0 + frame.y1) / 2
+    pole = (aw / 2 + (px - cx), ah / 2 - (py - cy))
+    what = WHAT[diagram]
+    svg = grid_svg(aw, ah, scale.statement, scale.per_cm_display, plain_text(scale.unit),
+                   f"area-{diagram}", f"Empty drawing area for the {what} diagram, "
+                   f"scale {scale.statement}", pole, f"pole {sol.pole}: start here")
+    w, h = aw + 8.0, ah + 14.0
+    cls = "plate portrait" if w <= PORTRAIT[0] and h <= PORTRAIT[1] - 16 else "plate"
+    doc.add(f'<section class="{cls}" id="plate-area-{diagram}">\n'
+            f"<h3>Draw the {what} diagram here</h3>\n"
+            f'<figure class="area">{svg}</figure>\n'
+            f'<p class="figure-note">True size at 100 % print scale: '
+            f"{esc(scale.statement)}; grid squares 5 mm. The ring marks a pole position that "
+            f"leaves room for the whole diagram.</p>\n</section>\n")
+
+
+def _results(doc: _Doc, sol: Solution) -> None:
+    scene = sol.scene
+    doc.add(f'<section id="results">\n<h2>{doc.sec()}. Results</h2>\n')
+    doc.add('<p class="note">Read off the constructions above (exact to the precision of the '
+            "arithmetic; a drawing gives them to about 1–2 %). Directions are angles CCW from "
+            "+x; senses of rotation CW/CCW.</p>\n")
+    doc.add('<table class="answer" id="results-points">\n<thead><tr><th>point</th>'
+            '<th class="n">x mm</th><th class="n">y mm</th><th class="n">velocity m/s</th>'
+            '<th class="n">direction</th><th class="n">acceleration m/s²</th>'
+            '<th class="n">direction</th></tr></thead>\n<tbody>\n')
+    for lab, pr in sol.points.items():
+        cells = [f"<td>{esc(lab)}</td>", f'<td class="n">{num(pr.position[0] * 1000)}</td>',
+                 f'<td class="n">{num(pr.position[1] * 1000)}</td>']
+        for vec in (pr.velocity, pr.acceleration):
+            if vec is None:
+                cells += ['<td class="n"></td>', '<td class="n"></td>']
+                continue
+            m = math.hypot(*vec)
+            d = math.degrees(math.atan2(vec[1], vec[0])) % 360.0 if m else None
+            cells += [f'<td class="n">{num(m)}</td>',
+                      f'<td class="n">{(num(d, 4) + "°") if d is not None else "–"}</td>']
+        doc.add("<tr>" + "".join(cells) + "</tr>\n")
+    doc.add("</tbody>\n</table>\n")
+    doc.add('<table class="answer" id="results-links">\n<thead><tr><th>link</th>'
+            '<th class="n">length mm</th><th class="n">ω rad/s</th><th>sense</th>'
+            '<th class="n">α rad/s²</th><th>sense</th></tr></thead>\n<tbody>\n')
+    for name, lr in sol.links.items():
+        w = lr.omega
+        a = lr.alpha
+        doc.add(f"<tr><td>{esc(name)}</td><td class=\"n\">{num(lr.length * 1000)}</td>"
+                f"<td class=\"n\">{num(abs(w)) if w is not None else ''}</td>"
+                f"<td>{sense(w) if w is not None else ''}</td>"
+                f"<td class=\"n\">{num(abs(a)) if a is not None else ''}</td>"
+                f"<td>{sense(a) if a is not None else ''}</td></tr>\n")
+    doc.add("</tbody>\n</table>\n")
+    if sol.slides:
+        doc.add('<table class="answer" id="results-slides">\n<thead><tr><th>sliding</th>'
+                '<th>along</th><th class="n">velocity m/s</th>'
+                '<th class="n">acceleration m/s²</th><th class="n">Coriolis 2ωv m/s²</th>'
+                "</tr></thead>\n<tbody>\n")
+        for lab, sr in sol.slides.items():
+            along = "its guide" if sr.along == "guide" else f"the slot of {sr.along}"
+            d = num(math.degrees(math.atan2(sr.direction[1], sr.direction[0])) % 360.0)
+            cor = num(math.hypot(*sr.coriolis)) if sr.coriolis is not None else "–"
+            doc.add(f"<tr><td>{esc(lab)}</td><td>{esc(along)} (+ towards {d}°)</td>"
+                    f"<td class=\"n\">{num(sr.velocity)}</td>"
+                    f"<td class=\"n\">{num(sr.acceleration)}</td>"
+                    f"<td class=\"n\">{cor}</td></tr>\n")
+        doc.add("</tbody>\n</table>\n")
+    for w in sol.warnings:
+        doc.add(f'<p class="note"><strong>Warning:</strong> {esc(w)}</p>\n')
+    doc.add("</section>\n")
+
+
+def _comparison(doc: _Doc, sol: Solution) -> None:
+    src = sol.scene.source
+    checks = [c for c in check_answers(sol) if c.answer.tutorial is not None]
+    doc.add(f'<section id="comparison">\n<h2>{doc.sec()}. Comparison with the tutorial\'s '
+            f"answers</h2>\n")
+    if not checks:
+        doc.add("<p>The tutorial prints no numerical answer for this example.</p>\n")
+    else:
+        doc.add('<p class="note">Difference = (tutorial − polygons) / polygons. A drawing '
+                "is expected to agree within the stated drawing tolerance.</p>\n")
+        doc.add('<table class="answer wide" id="comparison-table">\n<thead><tr><th>quantity</th>'
+                '<th>unit</th><th class="n">polygons</th><th class="n">tutorial</th>'
+                '<th class="n">difference</th><th>verdict</th></tr></thead>\n<tbody>\n')
+        for c in checks:
+            a = c.answer
+            ours = num(c.compared, 5)
+            if a.sense and a.mode == "abs":
+                ours_sense = sense(c.ours) if a.quantity.startswith(("omega", "alpha")) else ""
+                ours += f" {ours_sense}" if ours_sense else ""
+            tut = f"{a.tutorial:g}" + (f" {esc(a.sense)}" if a.sense else "")
+            if c.diff_pct is None:
+                diff = "–"
+            elif abs(c.diff_pct) < 0.005:
+                diff = "0.00 %"
+            else:
+                diff = f"{c.diff_pct:+.2f} %".replace("-", "−")
+            if a.slip:
+                verdict = "<strong>slip in the tutorial</strong>" + (
+                    f": {esc(plain_text(a.note))}" if a.note else "")
+            elif c.within:
+                verdict = f"within ±{a.tolerance * 100:g} %"
+                if a.note:
+                    verdict += f" ({esc(plain_text(a.note))})"
+            else:
+                verdict = f"<strong>outside ±{a.tolerance * 100:g} %</strong>" + (
+                    f": {esc(plain_text(a.note))}" if a.note else "")
+            doc.add(f"<tr><td class=\"q\">{sym(a.desc)}</td><td>{unit(a.unit)}</td>"
+                    f'<td class="n">{ours}</td><td class="n">{tut}</td>'
+                    f'<td class="n">{diff}</td><td>{verdict}</td></tr>\n')
+        doc.add("</tbody>\n</table>\n")
+    slips = src.get("slips", "")
+    if slips:
+        doc.add("<h3>Slips in the printed working</h3>\n<div class=\"slip\">\n")
+        for para in _paragraphs(slips):
+            doc.add(f"<p>{esc(plain_text(para))}</p>\n")
+        doc.add("</div>\n<p class=\"note\">polygons does not reproduce these slips: its "
+                "numbers come from the construction with the data as stated.</p>\n")
+    doc.add("</section>\n")
+
+
+def _about(doc: _Doc, sol: Solution) -> None:
+    src = sol.scene.source
+    parts = [("Where this example comes from", " · ".join(
+        str(x) for x in (src.get("example"), src.get("seed"), src.get("category")) if x)),
+        ("Conventions", src.get("conventions", "")),
+        ("What was reconstructed", src.get("backsolved", "")),
+        ("Notes", src.get("notes", ""))]
+    parts = [(h, t.strip()) for h, t in parts if t and t.strip()]
+    if not parts:
+        return
+    doc.add(f'<section id="about" class="about">\n<h2>{doc.sec()}. About this case</h2>\n')
+    for head, text in parts:
+        doc.add(f"<h3>{esc(head)}</h3>\n<p>{esc(plain_text(text))}</p>\n")
+    doc.add("</section>\n")
+
+
+def worksheet_questions(sol: Solution) -> list[str]:
+    """The quantities the tutorial asks for (those with a printed answer), gradeable by
+    ``polygons check``, in order, without repeats."""
+    seen: list[str] = []
+    for a in sol.scene.answers:
+        if a.tutorial is None or a.quantity in seen:
+            continue
+        fn = a.quantity.split("(")[0]
+        if fn in ("v", "a", "an", "at", "omega", "alpha", "cor", "vs", "as"):
+            seen.append(a.quantity)
+    return seen
+
+
+def _blanks(doc: _Doc, sol: Solution, file: str) -> None:
+    qs = worksheet_questions(sol)
+    doc.add(f'<section id="your-answers">\n<h2>{doc.sec()}. Your answers</h2>\n')
+    if not qs:
+        doc.add("<p>Write down the velocities and accelerations your diagrams give.</p>\n")
+    else:
+        doc.add("<p>Measure these off your diagrams (with their senses of rotation where "
+                "asked):</p>\n<table id=\"blanks\">\n<thead><tr><th>name</th><th>what</th>"
+                "<th>unit</th><th>your value</th></tr></thead>\n<tbody>\n")
+        for q in qs:
+            dim = q.split("(")[0]
+            u = {"v": "m/s", "vs": "m/s", "omega": "rad/s", "alpha": "rad/s²"}.get(dim, "m/s²")
+            doc.add(f"<tr><td><code>{esc(textbook_name(q))}</code></td>"
+                    f"<td>{esc(quantity_words(q))}</td><td>{esc(u)}</td>"
+                    f'<td class="blank"></td></tr>\n')
+        doc.add("</tbody>\n</table>\n")
+        example = " ".join(f"{textbook_name(q)}=…" for q in qs[:3])
+        doc.add(f'<p class="note">Check your values: <code>polygons check {esc(file)} '
+                f"--measured {esc(example)}</code></p>\n")
+    doc.add("</section>\n")
+
+
+def _footer(doc: _Doc, sol: Solution, worksheet: bool, file: str) -> None:
+    try:
+        from importlib.metadata import version
+        v = version("polygons")
+    except Exception:   # pragma: no cover - not installed
+        v = ""
+    cmd = f"polygons handout {file}" + (" --worksheet" if worksheet else "")
+    doc.add(f"<footer>Generated by polygons {esc(v)} from <code>{esc(file)}</code> "
+            f"(regenerate: <code>{esc(cmd)} -o FILE.html</code>)."
+            + ("" if worksheet else " The answer key's worksheet: add --worksheet.")
+            + "</footer>\n")
+
+
+__all__ = ["handout", "figures", "Figures", "redact_answers", "worksheet_questions",
+           "textbook_name", "formula_with_numbers", "stage_of"]

@@ -1,0 +1,532 @@
+"""``polygons check CASE.toml --measured v_C=7.1 alpha_CD=150000``: grade a student's drawing.
+
+Each measured value is compared with the construction's value.  A careful drawing is expected
+to be within the larger of
+
+* the case's stated drawing tolerance (``[source] drawing_tolerance``, default 2 %; override
+  with ``--tolerance``), and
+* a ruler reading of ±0.5 mm on the line of the polygon the value is read from, at the scale
+  the diagrams are drawn to (``1 cm = 2.5 m/s``): a short vector cannot be read to 2 %.
+
+(The drawing-board emulation of the benchmark issue, when it exists, is the better source of
+this tolerance; until then it is the stated ± % above.)  Every value that is off gets a hint:
+the construction step that produces it (diagram, number, figure letter and its sentence).
+
+Measured names are the textbook's: ``v_C``, ``v_CB`` (velocity of C relative to B),
+``omega_BC``, ``alpha_CD``, ``a_C``, ``a_CB``, ``an_CB`` / ``at_CB`` (centripetal / tangential
+part of a_CB), ``cor_A`` (Coriolis 2ωv of pin A), ``vs_C`` / ``as_C`` (sliding velocity /
+acceleration); a quantity expression of :mod:`polygons.quantities` (``v(C,B)``) also works.
+Values are SI (m/s, m/s², rad/s, rad/s²) unless a unit is written (``v_C="7.1 m/s"``,
+``omega_BC=2000rpm``); ``CW``/``CCW`` after ω or α (``alpha_CD=150000CW``) also checks the
+sense, and so does a negative ω or α (CCW positive).
+
+Exit status: 0 when every value is within tolerance, 3 when some are off, 1 on an error
+(unknown name, bad value), 2 on a usage error.
+"""
+from __future__ import annotations
+
+import json
+import math
+import re
+import sys
+from dataclasses import dataclass
+
+from .errors import PolygonsError, SceneError
+from .evaluate import Solution, link_ends, solve
+from .plan import Step
+from .quantities import dimension_of_quantity, quantity
+from .scene import load_scene
+from .units import parse_quantity
+
+#: textbook prefix -> quantities function
+PREFIX = {"v": "v", "a": "a", "omega": "omega", "w": "omega", "alpha": "alpha", "an": "an",
+          "at": "at", "cor": "cor", "vs": "vs", "as": "as"}
+#: how many point labels each function takes after the prefix (links take a link name)
+_POINTS = {"v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,), "cor": (1,), "vs": (1,),
+           "as": (1,)}
+UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
+        "angular_acceleration": "rad/s²"}
+SIGNED = ("omega", "alpha", "vs", "as")
+DEFAULT_TOLERANCE = 0.02
+READING_MM = 0.5
+
+_VALUE = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+class MeasuredError(SceneError):
+    """A measured value that cannot be read or names no quantity of the case."""
+
+
+@dataclass(frozen=True)
+class Grade:
+    name: str               # as the student wrote it
+    expr: str               # quantities expression
+    unit: str               # SI unit shown
+    measured: float         # SI, as given (signed if the student signed it)
+    expected: float         # SI, signed for ω, α and sliding values
+    tolerance: float        # absolute, SI
+    tolerance_pct: float    # the same, as % of |expected|
+    diff_pct: float | None  # (|measured| - |expected|) / |expected| × 100
+    ok: bool
+    sense_given: str | None
+    sense_ok: bool | None
+    step: Step | None
+    hint: str
+    tutorial_note: str
+
+
+# ---------------------------------------------------------------- names
+def _labels(sol: Solution) -> list[str]:
+    return sorted(sol.points, key=len, reverse=True)
+
+
+def _split_labels(sol: Solution, text: str) -> list[str] | None:
+    """'CB' -> ['C', 'B'], 'P2P4' -> ['P2', 'P4'], 'P2_P4' likewise; None if impossible."""
+    labels = _labels(sol)
+
+    def go(rest):
+        rest = rest.lstrip("_,")
+        if not rest:
+            return []
+        for lab in labels:
+            if rest.startswith(lab):
+                tail = go(rest[len(lab):])
+                if tail is not None:
+                    return [lab] + tail
+        return None
+    return go(text)
+
+
+def _link_named(sol: Solution, text: str) -> str | None:
+    if text in sol.links:
+        return text
+    parts = _split_labels(sol, text)
+    if parts and len(parts) == 2:
+        for name in sol.links:
+            if set(link_ends(sol.scene, name)) == set(parts):
+                return name
+    return None
+
+
+def offered(sol: Solution) -> list[tuple[str, str]]:
+    """(textbook name, expression) of every quantity this case can grade, in drawing order."""
+    scene = sol.scene
+    out: list[tuple[str, str]] = []
+    moving = [lab for lab in sol.points if lab not in scene.ground]
+    pairs = []
+    for name in sol.links:
+        a, b = link_ends(scene, name)
+        pairs.append((b, a))
+    for bp in scene.points.values():
+        if bp.link in sol.links:
+            a, _ = link_ends(scene, bp.link)
+            pairs.append((bp.label, a))
+    if "velocity" in scene.solve:
+        out += [(f"v_{x}", f"v({x})") for x in moving]
+        out += [(f"v_{x}{y}", f"v({x},{y})") for x, y in pairs]
+        out += [(f"omega_{n}", f"omega({n})") for n in sol.links]
+    if "acceleration" in scene.solve:
+        out += [(f"a_{x}", f"a({x})") for x in moving]
+        out += [(f"a_{x}{y}", f"a({x},{y})") for x, y in pairs]
+        out += [(f"an_{x}{y}", f"an({x},{y})") for x, y in pairs]
+        out += [(f"at_{x}{y}", f"at({x},{y})") for x, y in pairs]
+        out += [(f"alpha_{n}", f"alpha({n})") for n in sol.links]
+    for label, sr in sol.slides.items():
+        if sr.velocity is not None:
+            out.append((f"vs_{label}", f"vs({label})"))
+        if sr.acceleration is not None:
+            out.append((f"as_{label}", f"as({label})"))
+        if sr.coriolis is not None:
+            out.append((f"cor_{label}", f"cor({label})"))
+    return out
+
+
+def _unknown(sol: Solution, name: str, why: str = "") -> MeasuredError:
+    names = ", ".join(n for n, _ in offered(sol))
+    return MeasuredError(f"unknown measured quantity {name!r}{why}; this case offers: {names}",
+                         file=sol.scene.file)
+
+
+def resolve(sol: Solution, name: str) -> str:
+    """The :mod:`polygons.quantities` expression for a textbook name such as ``v_CB``."""
+    name = name.strip()
+    if "(" in name:
+        expr = name
+    else:
+        if "_" not in name:
+            raise _unknown(sol, name)
+        prefix, rest = name.split("_", 1)
+        fn = PREFIX.get(prefix.lower())
+        if fn is None or not rest:
+            raise _unknown(sol, name)
+        if fn in ("omega", "alpha"):
+            link = _link_named(sol, rest)
+            if link is None:
+                raise _unknown(sol, name, f" (no link {rest})")
+            expr = f"{fn}({link})"
+        else:
+            parts = _split_labels(sol, rest)
+            if not parts or len(parts) not in _POINTS[fn]:
+                raise _unknown(sol, name)
+            expr = f"{fn}({','.join(parts)})"
+    try:
+        quantity(sol, expr)
+    except PolygonsError as exc:
+        raise _unknown(sol, name, f" ({exc.reason})") from None
+    return expr
+
+
+# ---------------------------------------------------------------- values
+def parse_value(text: str, dimension: str, name: str, file: str | None) -> tuple[float, str | None]:
+    """'7.1', '7.1 m/s', '150000CW', '2000 rpm CCW' -> (SI value, sense or None)."""
+    s = text.strip()
+    sense = None
+    m = re.search(r"(?<![A-Za-z/])(CCW|ACW|CW)\s*$", s, re.IGNORECASE)
+    if m:
+        sense = "CCW" if m.group(1).upper() in ("CCW", "ACW") else "CW"
+        s = s[:m.start()].strip()
+    m = _VALUE.match(s)
+    if not m:
+        raise MeasuredError(f"cannot read the measured value {name}={text!r}: write a number, "
+                            f"e.g. {name}=7.1 (SI) or {name}='7.1 {UNIT.get(dimension, '')}'",
+                            file=file)
+    number, unit = float(m.group(1)), m.group(2)
+    if unit:
+        try:
+            value = parse_quantity(f"{number} {unit}", dimension)
+        except PolygonsError as exc:
+            raise MeasuredError(f"{name}={text!r}: {exc.reason}", file=file) from None
+    else:
+        value = number
+    if not math.isfinite(value):
+        raise MeasuredError(f"{name}={text!r} is not a finite number", file=file)
+    if sense and dimension not in ("angular_velocity", "angular_acceleration"):
+        raise MeasuredError(f"{name}={text!r}: a sense (CW/CCW) only goes with ω or α",
+                            file=file)
+    return value, sense
+
+
+def parse_measured(sol: Solution, items: list[str]) -> list[tuple[str, str, float, str | None]]:
+    out = []
+    seen = set()
+    for item in items:
+        if "=" not in item:
+            raise MeasuredError(f"--measured {item!r}: write NAME=VALUE, e.g. v_C=7.1",
+                                file=sol.scene.file)
+        name, text = (part.strip() for part in item.split("=", 1))
+        expr = resolve(sol, name)
+        if expr in seen:
+            raise MeasuredError(f"{name} is given twice", file=sol.scene.file)
+        seen.add(expr)
+        value, sense = parse_value(text, dimension_of_quantity(expr), name, sol.scene.file)
+        out.append((name, expr, value, sense))
+    return out
+
+
+# ---------------------------------------------------------------- where a value comes from
+def _fn_args(expr: str) -> tuple[str, tuple[str, ...]]:
+    """'v(C,B)' -> ('v', ('C', 'B'))."""
+    fn, _, rest = expr.replace(" ", "").partition("(")
+    return fn, tuple(a for a in rest.rstrip(")").split(",") if a)
+
+
+def producing_step(sol: Solution, expr: str) -> Step | None:
+    """The construction step that fixes ``expr`` on the drawing (None: given data)."""
+    fn, args = _fn_args(expr)
+    scene = sol.scene
+    vel = [s for s in sol.steps if s.diagram == "velocity"]
+    acc = [s for s in sol.steps if s.diagram == "acceleration"]
+
+    def creates(steps, label):
+        if label in scene.ground:
+            return None
+        v = sol.vertex_of(label)
+        return next((s for s in steps if s.end == v and s.kind != "measure"), None)
+
+    def later(steps, labels):
+        made = [s for s in (creates(steps, lab) for lab in labels) if s is not None]
+        return max(made, key=lambda s: s.number) if made else None
+
+    def measure(steps, op, first):
+        return next((s for s in steps if s.kind == "measure" and s.op in op
+                     and s.args and s.args[0] == first), None)
+
+    if fn == "v":
+        return later(vel, args)
+    if fn == "a":
+        return later(acc, args)
+    if fn == "omega":
+        return measure(vel, ("omega",), args[0])
+    if fn == "alpha":
+        return (measure(acc, ("alpha",), args[0])
+                or next((s for s in acc if s.op == "crank_tangential" and s.args[0] == args[0]),
+                        None))
+    if fn == "an":
+        hit = next((s for s in acc if s.op == "centripetal" and set(s.args[1:3]) == set(args)),
+                   None)
+        return hit or later(acc, args)
+    if fn == "at":
+        for s in acc:
+            if s.op == "crank_tangential" and set(s.args[1:3]) == set(args):
+                return s
+        for s in acc:
+            if s.kind == "measure" and s.op == "alpha":
+                try:
+                    if set(link_ends(scene, s.args[0])) == set(args) or set(s.args[1:3]) == set(args):
+                        return s
+                except KeyError:
+                    pass
+        return later(acc, args)
+    if fn == "cor":
+        return next((s for s in acc if s.op == "coriolis_offset_line" and s.args[0] == args[0]),
+                    None)
+    if fn in ("vs", "as"):
+        steps = vel if fn == "vs" else acc
+        return next((s for s in steps if s.kind == "measure" and s.args[:1] == (args[0],)
+                     and s.op in ("slider_velocity", "slide_velocity", "slider_acceleration",
+                                  "slide_acceleration")), None)
+    return None
+
+
+def figure_letter(sol: Solution, step: Step) -> str | None:
+    """'Fig. c' for a drawn step (the stage figures letter the drawable steps a, b, c ...)."""
+    drawable = [s for s in sol.steps if s.diagram == step.diagram
+                and s.kind in ("vector", "image", "line", "intersection")]
+    for i, s in enumerate(drawable, 1):
+        if s.number == step.number:
+            return chr(ord("a") + i - 1) if i <= 26 else str(i)
+    return None
+
+
+def describe_step(sol: Solution, step: Step) -> str:
+    letter = figure_letter(sol, step)
+    where = f"{step.diagram} step {step.number}" + (f" (Fig. {letter})" if letter else "")
+    text = f"{where}: \u201c{step.reason}\u201d"
+    if step.kind == "intersection" and step.lines:
+        text += (f" Check the lines of steps {step.lines[0]} and {step.lines[1]} and where "
+                 f"they cross.")
+    elif step.kind == "measure":
+        text += f" [{step.formula}]"
+        if step.op in ("omega", "alpha") and len(step.args) == 3:
+            drawn = next((s for s in sol.steps if s.diagram == step.diagram
+                          and s.end == sol.vertex_of(step.args[2]) and s.kind != "measure"),
+                         None)
+            if drawn is not None:
+                letter = figure_letter(sol, drawn)
+                text += (f" The line it is read from ends at {drawn.end}, fixed in step "
+                         f"{drawn.number}" + (f" (Fig. {letter})" if letter else "") + ".")
+    return text
+
+
+# ---------------------------------------------------------------- grading
+def diagram_scales(sol: Solution) -> dict:
+    """The scale each polygon is drawn to (the diagrams' own choice), by diagram name."""
+    out = {}
+    try:
+        from diagrams import polygon
+        for d in sol.scene.solve:
+            out[d] = polygon.layout(sol, d).scale
+    except Exception:       # diagrams not available: choose as they would, from the vertices
+        try:
+            from diagrams import scale as scales
+        except Exception:
+            return {}
+        for d in sol.scene.solve:
+            pts = list(sol.vertices[d].values())
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            out[d] = scales.choose(d, (max(xs) - min(xs), max(ys) - min(ys)))
+    return out
+
+
+def _drawn_si(sol: Solution, expr: str, expected: float) -> tuple[str, float]:
+    """(diagram, length on that polygon in SI) of the line ``expr`` is read from."""
+    fn, args = _fn_args(expr)
+    if fn in ("omega", "alpha"):
+        length = sol.links[args[0]].length
+        return ("velocity" if fn == "omega" else "acceleration"), abs(expected) * length
+    diagram = "velocity" if fn in ("v", "vs") else "acceleration"
+    return diagram, abs(expected)
+
+
+def tolerance_for(sol: Solution, expr: str, expected: float, pct: float,
+                  scales: dict) -> float:
+    tol = pct * abs(expected)
+    diagram, drawn = _drawn_si(sol, expr, expected)
+    sc = scales.get(diagram)
+    if sc is not None:
+        reading = READING_MM / sc.mm_per_si          # SI value of 0.5 mm of paper
+        if drawn > 0:
+            tol = max(tol, reading * abs(expected) / drawn)
+        else:
+            tol = max(tol, reading)
+    return tol
+
+
+def stated_tolerance(sol: Solution) -> float:
+    text = sol.scene.source.get("drawing_tolerance")
+    if text is None:
+        return DEFAULT_TOLERANCE
+    return parse_quantity(text, "fraction")
+
+
+def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
+          tolerance: float | None = None, scales: dict | None = None) -> list[Grade]:
+    pct = stated_tolerance(sol) if tolerance is None else tolerance
+    scales = diagram_scales(sol) if scales is None else scales
+    out = []
+    for name, expr, value, sense in measured:
+        fn = _fn_args(expr)[0]
+        expected = quantity(sol, expr)
+        tol = tolerance_for(sol, expr, expected, pct, scales)
+        signed = fn in SIGNED and (value < 0 or sense is not None)
+        if fn in ("omega", "alpha") and sense is not None:
+            value = abs(value) if sense == "CCW" else -abs(value)
+        if signed and fn in ("vs", "as"):
+            err = value - expected
+        else:               # ω, α: the magnitude here, the sense separately
+            err = abs(value) - abs(expected)
+        diff = err / abs(expected) * 100.0 if expected != 0 else None
+        sense_ok = None
+        if fn in ("omega", "alpha") and (sense is not None or value < 0) and expected != 0:
+            sense_ok = (value > 0) == (expected > 0)
+        ok = abs(err) <= tol * (1 + 1e-12) and sense_ok is not False
+        step = producing_step(sol, expr)
+        hint = ""
+        if not ok:
+            hint = (describe_step(sol, step) if step is not None
+                    else "this value is given data: recheck the problem statement and units")
+        out.append(Grade(name, expr, UNIT[dimension_of_quantity(expr)], value, expected, tol,
+                         tol / abs(expected) * 100.0 if expected else math.inf, diff, ok,
+                         sense, sense_ok, step, hint, _tutorial_note(sol, expr, value)))
+    return out
+
+
+def _tutorial_note(sol: Solution, expr: str, value: float) -> str:
+    """When the value matches the tutorial's printed answer that differs from the exact one."""
+    from .report import to_unit
+    for ans in sol.scene.answers:
+        if ans.quantity != expr or ans.tutorial is None or ans.mode != "abs":
+            continue
+        printed = ans.tutorial / to_unit(1.0, ans.unit)   # SI
+        exact = abs(quantity(sol, expr))
+        if exact == 0 or printed == 0:
+            continue
+        off = (printed - exact) / exact
+        if abs(off) > 0.005 and abs(abs(value) - printed) <= 0.005 * printed:
+            what = "a slip the reference found" if ans.slip else "the tutorial's drawing"
+            return (f"your value matches the tutorial's printed {ans.tutorial:g} {ans.unit}, "
+                    f"which is {off * 100:+.1f} % from the exact value ({what}"
+                    + (f": {ans.note}" if ans.note else "") + ")")
+    return ""
+
+
+# ---------------------------------------------------------------- output
+def _num(x: float) -> str:
+    if x == 0:
+        return "0"
+    mag = abs(x)
+    if 1e-3 <= mag < 1e7:
+        decimals = max(0, 4 - 1 - int(math.floor(math.log10(mag))))
+        return f"{x:.{decimals}f}"
+    return f"{x:.4g}"
+
+
+def _sense(v: float) -> str:
+    return "" if v == 0 else (" CCW" if v > 0 else " CW")
+
+
+def report(sol: Solution, grades: list[Grade], pct: float, scales: dict) -> str:
+    scene = sol.scene
+    sid = scene.source.get("id")
+    lines = [f"{scene.title}" + (f"   [{sid}]" if sid else ""),
+             f"  scene: {scene.file}"]
+    sc = ", ".join(f"{d} {s.statement}" for d, s in scales.items())
+    lines.append(f"  tolerance: the larger of ±{pct * 100:g} % and a {READING_MM:g} mm ruler "
+                 f"reading at the diagram's scale" + (f" ({sc})" if sc else ""))
+    lines.append("")
+    wn = max(len(g.name) for g in grades)
+    for g in grades:
+        fn = g.expr.split("(")[0]
+        if fn in ("omega", "alpha"):
+            shown = f"{_num(abs(g.measured))} {g.unit}" + (
+                _sense(g.measured) if g.sense_given or g.measured < 0 else "")
+            exp = f"{_num(abs(g.expected))} {g.unit}{_sense(g.expected)}"
+        elif fn in ("vs", "as"):
+            shown, exp = f"{_num(g.measured)} {g.unit}", f"{_num(g.expected)} {g.unit}"
+        else:
+            shown = f"{_num(abs(g.measured))} {g.unit}"
+            exp = f"{_num(abs(g.expected))} {g.unit}"
+        verdict = "ok " if g.ok else "OFF"
+        diff = f"{g.diff_pct:+.1f} %" if g.diff_pct is not None else "-"
+        lines.append(f"  {verdict}  {g.name:<{wn}}  measured {shown}, expected {exp} "
+                     f"± {_num(g.tolerance)} (±{g.tolerance_pct:.2g} %): {diff}")
+        if g.sense_ok is False:
+            lines.append(f"       the sense is wrong: it turns{_sense(g.expected)}")
+        if g.hint:
+            lines.append(f"       hint: {g.hint}")
+        if g.tutorial_note:
+            lines.append(f"       note: {g.tutorial_note}")
+    off = [g for g in grades if not g.ok]
+    lines.append("")
+    lines.append(f"{len(grades) - len(off)} of {len(grades)} within tolerance"
+                 + (f"; off: {', '.join(g.name for g in off)}" if off else "."))
+    return "\n".join(lines) + "\n"
+
+
+def to_json(sol: Solution, grades: list[Grade], pct: float, scales: dict) -> dict:
+    return {
+        "case": {"file": sol.scene.file, "id": sol.scene.source.get("id"),
+                 "title": sol.scene.title},
+        "tolerance_pct": pct * 100.0,
+        "reading_mm": READING_MM,
+        "scales": {d: s.statement for d, s in scales.items()},
+        "grades": [{"name": g.name, "quantity": g.expr, "unit": g.unit, "measured": g.measured,
+                    "expected": g.expected, "tolerance": g.tolerance,
+                    "tolerance_pct": g.tolerance_pct, "diff_pct": g.diff_pct, "ok": g.ok,
+                    "sense": g.sense_given, "sense_ok": g.sense_ok,
+                    "step": ({"diagram": g.step.diagram, "number": g.step.number,
+                              "reason": g.step.reason} if g.step else None),
+                    "hint": g.hint, "note": g.tutorial_note} for g in grades],
+        "all_ok": all(g.ok for g in grades),
+    }
+
+
+def register(sub) -> None:
+    p = sub.add_parser(
+        "check", help="grade a student's measured values against the construction",
+        description="Grade measured values (textbook names: v_C, v_CB, omega_BC, alpha_CD, "
+                    "a_C, an_CB, at_CB, cor_A, vs_C) against the construction, each within "
+                    "the tolerance of a careful drawing; hints name the step to recheck. "
+                    "Exit 0: all within tolerance; 3: some off; 1: error.")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("--measured", nargs="+", required=True, metavar="NAME=VALUE",
+                   help="measured values, SI unless a unit is written: v_C=7.1 "
+                        "alpha_CD=150000CW omega_BC='230 rad/s'")
+    p.add_argument("--tolerance", help="relative tolerance instead of the case's stated "
+                                       "drawing tolerance, e.g. '3 %%'")
+    p.add_argument("--json", action="store_true", help="print a JSON object")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    scene = load_scene(args.scene)
+    sol = solve(scene)
+    measured = parse_measured(sol, args.measured)
+    pct = None
+    if args.tolerance is not None:
+        try:
+            pct = parse_quantity(args.tolerance.strip(), "fraction")
+        except PolygonsError as exc:
+            raise MeasuredError(f"--tolerance {args.tolerance!r}: {exc.reason}") from None
+        if not (0 < pct < 1):
+            raise MeasuredError(f"--tolerance {args.tolerance!r}: give a percentage such as "
+                                f"'3 %'")
+    scales = diagram_scales(sol)
+    pct_used = stated_tolerance(sol) if pct is None else pct
+    grades = grade(sol, measured, pct_used, scales)
+    if args.json:
+        sys.stdout.write(json.dumps(to_json(sol, grades, pct_used, scales), indent=2,
+                                    ensure_ascii=False) + "\n")
+    else:
+        sys.stdout.write(report(sol, grades, pct_used, scales))
+    return 0 if all(g.ok for g in grades) else 3

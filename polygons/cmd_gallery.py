@@ -1,0 +1,118 @@
+"""``polygons gallery cases/ -o DIR``: every case's handout and worksheet, and an index page.
+
+Writes ``DIR/<case>.html`` (the answer key), ``DIR/<case>-worksheet.html`` and
+``DIR/index.html`` linking them, with one line per case: its title, mechanism and how the
+tutorial's printed answers compare.  ``--pdf`` also prints every handout and worksheet.  A case
+that cannot be solved is listed with its one-line error; the command then exits 1.
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from .errors import PolygonsError
+from .evaluate import solve
+from .report import check_answers
+from .scene import load_scene
+
+
+def register(sub) -> None:
+    p = sub.add_parser("gallery", help="write every case's handout and worksheet and an "
+                                       "index page linking them",
+                       description="Write a handout and a worksheet for every *.toml case in "
+                                   "a folder, and DIR/index.html linking them.")
+    p.add_argument("cases", help="folder of scene files (*.toml), or one scene file")
+    p.add_argument("-o", "--out", required=True, metavar="DIR", help="output folder")
+    p.add_argument("--pdf", action="store_true", help="also print every page to PDF "
+                                                      "(needs headless Chromium)")
+    p.set_defaults(func=run)
+
+
+def _summary(sol) -> str:
+    checks = [c for c in check_answers(sol) if c.answer.tutorial is not None]
+    if not checks:
+        return "no printed answers"
+    slips = sum(1 for c in checks if c.answer.slip)
+    within = sum(1 for c in checks if c.within and not c.answer.slip)
+    text = f"{within} of {len(checks)} printed answers within tolerance"
+    if slips:
+        text += f", {slips} slip{'s' if slips > 1 else ''} in the tutorial"
+    return text
+
+
+def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path], list[str]]:
+    from diagrams.handout import figures, handout
+    from diagrams.html import esc
+    files = sorted(cases.glob("*.toml")) if cases.is_dir() else [cases]
+    if not files:
+        raise PolygonsError(f"no *.toml scene files in {cases}")
+    out.mkdir(parents=True, exist_ok=True)
+    rows, written, errors = [], [], []
+    for path in files:
+        stem = path.stem
+        try:
+            sol = solve(load_scene(str(path)))
+            figs = figures(sol)
+            pages = {}
+            for kind, worksheet in (("handout", False), ("worksheet", True)):
+                name = f"{stem}.html" if kind == "handout" else f"{stem}-worksheet.html"
+                target = out / name
+                target.write_text(handout(sol, worksheet=worksheet, figs=figs),
+                                  encoding="utf-8")
+                written.append(target)
+                pages[kind] = name
+                if pdf:
+                    from diagrams.browser import print_pdf
+                    written.append(print_pdf(target, target.with_suffix(".pdf")))
+                    pages[kind + "-pdf"] = target.with_suffix(".pdf").name
+        except PolygonsError as exc:
+            errors.append(f"{path}: {exc}")
+            rows.append(f'<tr class="failed"><td>{esc(stem)}</td><td colspan="4">could not be '
+                        f"solved: {esc(str(exc))}</td></tr>")
+            continue
+        src = sol.scene.source
+        links = [f'<a href="{esc(pages["handout"])}">handout</a>',
+                 f'<a href="{esc(pages["worksheet"])}">worksheet</a>']
+        if pdf:
+            links += [f'<a href="{esc(pages["handout-pdf"])}">PDF</a>',
+                      f'<a href="{esc(pages["worksheet-pdf"])}">worksheet PDF</a>']
+        tags = " <em>(synthetic geometry)</em>" if src.get("synthetic") else ""
+        rows.append(f"<tr><td>{esc(src.get('id', stem))}</td>"
+                    f'<td><a href="{esc(pages["handout"])}">{esc(sol.scene.title)}</a>{tags}'
+                    f"</td><td>{esc(src.get('mechanism', ''))}</td>"
+                    f"<td>{esc(_summary(sol))}</td><td>{' · '.join(links)}</td></tr>")
+    index = out / "index.html"
+    index.write_text(_index(rows, cases), encoding="utf-8")
+    written.append(index)
+    return written, errors
+
+
+def _index(rows: list[str], cases: Path) -> str:
+    from diagrams.html import esc
+    return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+            "<title>polygons — handouts</title>\n<style>\n"
+            "body { font-family: 'DejaVu Sans', Verdana, Arial, sans-serif; font-size: 10pt; "
+            "max-width: 260mm; margin: 8mm auto; padding: 0 6mm; }\n"
+            "h1 { font-size: 16pt; } table { border-collapse: collapse; width: 100%; }\n"
+            "th, td { border-bottom: 0.2mm solid #999; padding: 1mm 2mm; text-align: left; "
+            "vertical-align: top; } th { border-bottom: 0.4mm solid #000; }\n"
+            "tr.failed td { font-style: italic; } a { color: #003a8c; }\n"
+            "@page { size: A4 landscape; margin: 12mm; }\n</style>\n</head>\n<body>\n"
+            "<h1>Velocity and acceleration polygons: handouts</h1>\n"
+            f"<p>One handout (the answer key, constructions narrated step by step) and one "
+            f"worksheet (no answers, empty drawing areas at scale) per case of "
+            f"<code>{esc(str(cases))}</code>. Regenerate: <code>polygons gallery "
+            f"{esc(str(cases))} -o DIR</code>.</p>\n"
+            "<table>\n<thead><tr><th>case</th><th>title</th><th>mechanism</th>"
+            "<th>tutorial's answers</th><th>pages</th></tr></thead>\n<tbody>\n"
+            + "\n".join(rows) + "\n</tbody>\n</table>\n</body>\n</html>\n")
+
+
+def run(args) -> int:
+    written, errors = build_gallery(Path(args.cases), Path(args.out), args.pdf)
+    n_html = sum(1 for p in written if p.suffix == ".html")
+    print(f"wrote {n_html} pages ({len(written)} files) to {args.out}; open "
+          f"{Path(args.out) / 'index.html'}")
+    for e in errors:
+        print(f"polygons: error: {e}", file=sys.stderr)
+    return 1 if errors else 0

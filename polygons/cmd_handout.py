@@ -1,0 +1,75 @@
+"""``polygons handout CASE.toml -o FILE.html``: a printable teaching handout (or worksheet).
+
+The answer key narrates the construction step by step with its figures and numbers and
+compares the results with the tutorial's printed answers; ``--worksheet`` writes the student's
+version (no answers, empty drawing areas at the key's scale).  ``--pdf`` also prints it to
+PDF with headless Chromium (``-o FILE.pdf`` writes only the PDF).
+"""
+from __future__ import annotations
+
+import sys
+import tempfile
+from pathlib import Path
+
+from .evaluate import solve
+from .scene import load_scene
+
+
+def register(sub) -> None:
+    p = sub.add_parser("handout", help="write a printable handout (HTML, optional PDF) or "
+                                       "a worksheet for a case",
+                       description="Write a self-contained HTML handout: the problem, the "
+                                   "space diagram, the velocity and acceleration constructions "
+                                   "step by step with figures and numbers, the results and "
+                                   "the comparison with the tutorial. --worksheet: the "
+                                   "student's version without answers.")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("-o", "--out", required=True, metavar="FILE",
+                   help="output file (.html; .pdf writes only the PDF)")
+    p.add_argument("--worksheet", action="store_true",
+                   help="no answers, empty drawing areas at the chosen scale")
+    p.add_argument("--pdf", action="store_true",
+                   help="also print FILE.pdf next to FILE.html (needs headless Chromium)")
+    p.add_argument("--scale", action="append", metavar="KIND=VALUE",
+                   help="force a scale per cm of paper, as for 'polygons draw' "
+                        "(--scale velocity='2 m/s')")
+    p.add_argument("--paper", choices=("A5", "A4"),
+                   help="fit the diagrams to this paper (default: A5, or A4 when needed)")
+    p.set_defaults(func=run)
+
+
+def build(scene_path: str, *, worksheet: bool = False, scale=None, paper=None) -> str:
+    from diagrams.handout import figures, handout
+    from diagrams.scale import parse_cli
+    sol = solve(load_scene(scene_path))
+    figs = figures(sol, parse_cli(scale), paper)
+    return handout(sol, worksheet=worksheet, figs=figs)
+
+
+def write(scene_path: str, out: str | Path, *, worksheet: bool = False, pdf: bool = False,
+          scale=None, paper=None) -> list[Path]:
+    """Write the handout; return the files written (HTML and/or PDF)."""
+    text = build(scene_path, worksheet=worksheet, scale=scale, paper=paper)
+    out = Path(out)
+    written = []
+    if out.suffix.lower() == ".pdf":
+        from diagrams.browser import print_pdf
+        with tempfile.TemporaryDirectory(prefix="polygons-handout-") as tmp:
+            html = Path(tmp) / (out.stem + ".html")
+            html.write_text(text, encoding="utf-8")
+            written.append(print_pdf(html, out))
+        return written
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(text, encoding="utf-8")
+    written.append(out)
+    if pdf:
+        from diagrams.browser import print_pdf
+        written.append(print_pdf(out, out.with_suffix(".pdf")))
+    return written
+
+
+def run(args) -> int:
+    paths = write(args.scene, args.out, worksheet=args.worksheet, pdf=args.pdf,
+                  scale=args.scale, paper=args.paper)
+    print("wrote " + " ".join(str(p) for p in paths))
+    return 0

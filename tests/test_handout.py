@@ -1,0 +1,295 @@
+"""Handouts, worksheets, ``polygons check`` and ``polygons gallery`` (no browser needed)."""
+import html as htmllib
+import json
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from conftest import CASES, case_files
+from polygons.cmd_check import grade, offered, parse_measured, resolve
+from polygons.evaluate import solve
+from polygons.quantities import quantity
+from polygons.report import to_unit
+from polygons.scene import load_scene
+
+from diagrams.handout import (figures, formula_with_numbers, handout, redact_answers,
+                              textbook_name, worksheet_questions)
+
+EXE = Path(sys.executable).with_name("polygons")
+
+
+def run(*args, cwd=None):
+    cmd = [str(EXE)] if EXE.exists() else [sys.executable, "-m", "polygons"]
+    return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
+                          cwd=cwd, timeout=120)
+
+
+def text_of(page: str) -> str:
+    """What a reader sees: tags and the inline SVGs' markup removed, entities decoded."""
+    page = re.sub(r"<style>.*?</style>", " ", page, flags=re.S)
+    page = re.sub(r"<(sub|sup)>(.*?)</\1>", r"\2", page)
+    page = re.sub(r"<[^>]+>", " ", page)
+    return re.sub(r"\s+", " ", htmllib.unescape(page))
+
+
+_CACHE = {}
+
+
+def pages(path):
+    if path not in _CACHE:
+        sol = solve(load_scene(str(path)))
+        figs = figures(sol)
+        _CACHE[path] = (sol, handout(sol, figs=figs), handout(sol, worksheet=True, figs=figs))
+    return _CACHE[path]
+
+
+IDS = [p.stem for p in case_files()]
+
+
+# ---------------------------------------------------------------- the answer key
+@pytest.mark.parametrize("path", case_files(), ids=IDS)
+def test_handout_narrates_every_step_with_its_figure_and_numbers(path):
+    sol, key, _ = pages(path)
+    text = text_of(key)
+    assert sol.scene.title in htmllib.unescape(key)
+    for step in sol.steps:
+        li = re.search(rf'<li class="step" id="{step.diagram}-step-{step.number}".*?</li>',
+                       key, re.S)
+        assert li, (step.diagram, step.number)
+        body = li.group(0)
+        if step.kind in ("vector", "image", "line", "intersection"):
+            assert "<svg" in body, f"{step.diagram} {step.number} has no stage figure"
+        if step.substituted:
+            assert 'class="formula answer"' in body
+    # every finished diagram and the space diagram, inline
+    for name in ("space", *sol.scene.solve):
+        assert f'id="plate-{name}"' in key or f'id="{name}"' in key
+    assert "Results" in text and "Comparison with the tutorial" in text
+    # self-contained: nothing fetched, nothing run
+    assert "<script" not in key and "<link" not in key and " src=" not in key
+    assert not re.search(r"""(href|src)=["']https?:""", key)
+    assert not re.search(r"url\((?!#)", key)
+
+
+def test_formula_with_numbers_reads_like_the_tutorial():
+    sol, key, _ = pages(CASES / "s001-we2.toml")
+    first = next(s for s in sol.steps if s.diagram == "velocity")
+    assert formula_with_numbers(first) == "(v_A)_O = ω × OA = 209.44 × 0.05 = 10.472 m/s"
+    assert "(vA)O = ω × OA = 209.44 × 0.05 = 10.472 m/s" in text_of(key)
+    sol, key, _ = pages(CASES / "s001-we6.toml")
+    text = text_of(key)
+    # centripetal with the square of a CW (negative) ω written as a person writes it
+    assert "(aB)An = ω² × AB = 480² × 0.08 = 18432 m/s²" in text
+    assert "−480²" not in text and "-480²" not in text
+    assert "ωBC = bc / BC = 31 / 0.136 = 227.94 rad/s CCW" in text
+    assert "e+05" not in text
+
+
+def test_acceleration_components_are_explained_where_they_occur():
+    _, key, ws = pages(CASES / "s003-fig7.toml")
+    for page in (key, ws):
+        for what in ("centripetal", "tangential", "coriolis"):
+            assert page.count(f'data-explains="{what}"') == 1, what
+    # the Coriolis box comes just before the step that draws 2ωv
+    box = key.index('data-explains="coriolis"')
+    assert key.index('id="acceleration-step-4"') > box > key.index('id="acceleration-step-3"')
+    _, key, _ = pages(CASES / "s001-we6.toml")
+    assert 'data-explains="coriolis"' not in key
+
+
+def test_comparison_gives_percent_differences_and_names_the_slips():
+    sol, key, _ = pages(CASES / "s001-we8.toml")
+    text = text_of(key)
+    table = re.search(r'<table class="answer wide" id="comparison-table">.*?</table>', key,
+                      re.S).group(0)
+    slips = [a for a in sol.scene.answers if a.slip and a.tutorial is not None]
+    assert slips, "WE8 has slips in the reference"
+    assert table.count("slip in the tutorial") == len(slips)
+    assert "Slips in the printed working" in text
+    first = " ".join(sol.scene.source["slips"].split()[:6])
+    assert first in text
+    assert re.search(r"[−+]\d+\.\d\d %", text_of(table))
+
+
+# ---------------------------------------------------------------- the worksheet
+UNIT_RE = {"velocity": r"\s*(m/s|mm/s)(?![²^])", "acceleration": r"\s*(m/s|mm/s)(²|\^2)",
+           "angular_velocity": r"\s*rad/s(?![²^])", "angular_acceleration": r"\s*rad/s(²|\^2)"}
+
+
+def _answer_strings(sol):
+    """Every answer as it could be printed, (number, unit pattern): the tutorial's and ours."""
+    from polygons.quantities import dimension_of_quantity
+    out = set()
+    drv = sol.scene.driver
+    given = {f"omega({getattr(drv, 'link', '')})", f"alpha({getattr(drv, 'link', '')})"}
+    for a in sol.scene.answers:
+        fn = a.quantity.split("(")[0]
+        if fn not in ("v", "a", "an", "at", "omega", "alpha", "cor", "vs", "as"):
+            continue
+        if a.quantity in given:
+            continue
+        values = [abs(to_unit(quantity(sol, a.quantity), a.unit))]
+        if a.tutorial is not None:
+            values.append(abs(a.tutorial))
+        for v in values:
+            if v == 0:
+                continue
+            unit = UNIT_RE[dimension_of_quantity(a.quantity)]
+            for text in {f"{v:.3g}", f"{v:.4g}", f"{v:.5g}", f"{v:g}"}:
+                if len(text.replace(".", "")) >= 2:
+                    out.add((text, unit))
+    return out
+
+
+@pytest.mark.parametrize("path", case_files(), ids=IDS)
+def test_worksheet_contains_no_answers(path):
+    sol, key, ws = pages(path)
+    # the empty drawing areas' scale bars are multiples of the scale, not answers
+    text = text_of(re.sub(r'<svg[^>]*class="drawing-area".*?</svg>', " ", ws, flags=re.S))
+    # no results, no comparison, no stage figures, no substituted numbers
+    assert 'class="answer' not in ws and "formula answer" not in ws
+    assert "Comparison with the tutorial" not in text and "Results" not in text
+    assert not re.search(r'id="(velocity|acceleration)-\d+-', ws)
+    assert not re.search(r'id="plate-(velocity|acceleration)"', ws)
+    for s, units in _answer_strings(sol):
+        hit = re.search(r"(?<![\d.])" + re.escape(s) + units, text)
+        assert not hit, f"answer {s} shows in the worksheet: ...{text[max(0, hit.start() - 60):hit.end() + 20]}..."
+    # the drawing areas, at the key's scales
+    for diagram in sol.scene.solve:
+        assert f'id="area-{diagram}"' in ws
+        lay = figures(sol).drawing[diagram].meta["layout"]
+        area = re.search(rf'<svg[^>]*id="area-{diagram}".*?</svg>', ws, re.S).group(0)
+        assert f"Scale {htmllib.escape(lay.scale.statement)}" in area
+    # blanks to fill in, gradeable by polygons check
+    for q in worksheet_questions(sol):
+        assert f"<code>{textbook_name(q)}</code>" in ws
+        assert resolve(sol, textbook_name(q)) == q.replace(" ", "")
+
+
+def test_worksheet_statement_keeps_the_data_but_not_the_printed_answers():
+    s = ("Find the velocity of the piston.\n1. The crank rotates at 3000 rev/min.\n"
+         "(Answer 34 m/s and 21.25 rad/s)\n- points A, B and D (1.5 m/s, 2.6 m/s and 2.7 m/s)\n"
+         "(Ans. 76 rad/s clockwise.)  (alpha is 21.052 deg at this position)")
+    out = redact_answers(s)
+    for gone in ("34 m/s", "21.25", "1.5 m/s", "2.7 m/s", "76 rad/s"):
+        assert gone not in out
+    assert "3000 rev/min" in out and "(alpha is 21.052 deg at this position)" in out
+    assert out.count("(answer on the key)") == 3
+
+
+def test_worksheet_drawing_area_is_true_size():
+    sol, _, ws = pages(CASES / "s001-we6.toml")
+    area = re.search(r'<svg[^>]*id="area-velocity"[^>]*>', ws).group(0)
+    vb = [float(v) for v in re.search(r'viewBox="([^"]+)"', area).group(1).split()]
+    width = float(re.search(r'width="([\d.]+)mm"', area).group(1))
+    assert width == pytest.approx(vb[2])          # 1 user unit = 1 mm on paper
+    # grid lines every 5 mm, the scale bar in whole centimetres
+    assert "M5 0V" in ws and "M10 0V" in ws
+
+
+# ---------------------------------------------------------------- polygons check
+def test_check_accepts_good_measurements():
+    out = run("check", CASES / "s001-we6.toml", "--measured", "v_C=15.1", "v_CB=30.7",
+              "omega_BC=228CCW", "alpha_CD=155000", "a_C=25.2e3", "an_CB=7066")
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert out.stdout.count("ok ") == 6 and "OFF" not in out.stdout
+    assert "6 of 6 within tolerance" in out.stdout
+
+
+def test_check_flags_bad_measurements_with_the_step_to_recheck():
+    out = run("check", CASES / "s001-we6.toml", "--measured", "v_C=7.1",
+              "alpha_CD=150000", "v_CB=31.2", "omega_CD=93.75CCW")
+    assert out.returncode == 3, out.stderr
+    lines = out.stdout.splitlines()
+    vc = next(i for i, l in enumerate(lines) if "v_C " in l)
+    assert lines[vc].lstrip().startswith("OFF") and "-52.7 %" in lines[vc]
+    assert "hint: velocity step 4 (Fig. d)" in lines[vc + 1]
+    assert "The two lines meet at c" in lines[vc + 1]
+    al = next(i for i, l in enumerate(lines) if "alpha_CD" in l)
+    assert lines[al].lstrip().startswith("OFF") and "-3.9 %" in lines[al]
+    assert "hint: acceleration step 8" in lines[al + 1]
+    assert any("matches the tutorial's printed 150000" in l for l in lines[al:al + 4])
+    assert next(l for l in lines if "v_CB" in l).lstrip().startswith("ok")
+    om = next(i for i, l in enumerate(lines) if "omega_CD" in l)
+    assert lines[om].lstrip().startswith("OFF") and "sense is wrong" in lines[om + 1]
+    assert "1 of 4 within tolerance; off: v_C, alpha_CD, omega_CD" in out.stdout
+
+
+def test_check_grades_coriolis_and_sliding_on_the_quick_return():
+    sol = solve(load_scene(str(CASES / "s003-fig7.toml")))
+    ms = parse_measured(sol, ["cor_P2=1.95", "v_P2P4=0.81", "omega_O4P4=1.2",
+                              "alpha_O4P4=4.11 rad/s^2", "vs_P2=0.806", "as_P2=-2.69"])
+    g = {x.name: x for x in grade(sol, ms)}
+    assert g["cor_P2"].ok and g["v_P2P4"].ok and g["vs_P2"].ok and g["as_P2"].ok
+    assert g["alpha_O4P4"].ok
+    assert not g["omega_O4P4"].ok                      # -1.2 % with a 1 % tolerance
+    assert g["omega_O4P4"].step.diagram == "velocity" and g["omega_O4P4"].step.op == "omega"
+    assert g["cor_P2"].step.op == "coriolis_offset_line"
+
+
+def test_check_tolerance_is_at_least_half_a_millimetre_at_the_scale():
+    sol = solve(load_scene(str(CASES / "s001-we6.toml")))
+    from polygons.cmd_check import diagram_scales
+    sc = diagram_scales(sol)
+    [g] = grade(sol, parse_measured(sol, ["v_B=38.4"]), 0.0001, sc)
+    assert g.tolerance == pytest.approx(0.5 / sc["velocity"].mm_per_si)
+
+
+def test_check_unknown_name_is_one_line_listing_the_names():
+    out = run("check", CASES / "s001-we6.toml", "--measured", "v_Q=3")
+    assert out.returncode == 1
+    assert out.stdout == ""
+    err = out.stderr.strip().splitlines()
+    assert len(err) == 1
+    assert err[0].startswith("polygons: error: ") and "'v_Q'" in err[0]
+    assert "v_C" in err[0] and "omega_BC" in err[0] and "alpha_CD" in err[0]
+    bad = run("check", CASES / "s001-we6.toml", "--measured", "v_C=fast")
+    assert bad.returncode == 1 and len(bad.stderr.strip().splitlines()) == 1
+
+
+def test_check_names_cover_what_the_case_offers():
+    sol = solve(load_scene(str(CASES / "s001-sae4-q3.toml")))
+    for name, expr in offered(sol):
+        assert resolve(sol, name) == expr
+    assert resolve(sol, "v_BA") == "v(B,A)" and resolve(sol, "omega_BA") == "omega(AB)"
+    assert resolve(sol, "v(D)") == "v(D)"
+
+
+def test_check_json():
+    out = run("check", CASES / "s003-fig7.toml", "--measured", "cor_P2=1.96", "--json")
+    data = json.loads(out.stdout)
+    assert out.returncode == 0 and data["all_ok"] and data["grades"][0]["quantity"] == "cor(P2)"
+
+
+# ---------------------------------------------------------------- commands
+def test_handout_and_worksheet_commands(tmp_path):
+    out = run("handout", CASES / "s003-fig7.toml", "-o", tmp_path / "fig7.html")
+    assert out.returncode == 0, out.stderr
+    page = (tmp_path / "fig7.html").read_text(encoding="utf-8")
+    assert 'content="handout"' in page and "Coriolis" in page
+    out = run("handout", CASES / "s003-fig7.toml", "-o", tmp_path / "ws.html", "--worksheet",
+              "--scale", "velocity=0.05 m/s")
+    assert out.returncode == 0, out.stderr
+    ws = (tmp_path / "ws.html").read_text(encoding="utf-8")
+    assert 'content="worksheet"' in ws and "Scale 1 cm = 50 mm/s" in ws
+
+
+def test_gallery_links_every_case(tmp_path):
+    cases = tmp_path / "cases"
+    cases.mkdir()
+    for name in ("s001-we4.toml", "s003-fig7.toml"):
+        shutil.copy(CASES / name, cases / name)
+    (cases / "broken.toml").write_text('title = "x"\n[ground]\nA = [0, 0]\n', encoding="utf-8")
+    out = run("gallery", cases, "-o", tmp_path / "site")
+    assert out.returncode == 1          # the broken case is reported, the others written
+    assert "broken.toml" in out.stderr and len(out.stderr.strip().splitlines()) == 1
+    index = (tmp_path / "site" / "index.html").read_text(encoding="utf-8")
+    for stem in ("s001-we4", "s003-fig7"):
+        assert f'href="{stem}.html"' in index and f'href="{stem}-worksheet.html"' in index
+        assert (tmp_path / "site" / f"{stem}.html").stat().st_size > 10000
+        assert (tmp_path / "site" / f"{stem}-worksheet.html").exists()
+    assert "could not be solved" in index
