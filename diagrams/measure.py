@@ -133,6 +133,8 @@ class Scaled:
     resolution: float             # what the ruler's resolution is worth, in `unit`
     how: str                      # which drawn lengths were used
     slip: bool
+    signed: float | None = None   # the reading with its sign (ω, α: CCW positive)
+    sense: str | None = None      # the tutorial's direction word, if any
 
     @property
     def diff_pct(self) -> float | None:
@@ -301,14 +303,14 @@ def compare(sol, readings: dict, ruler: float | None = RULER_MM) -> list[Scaled]
         f = _unit_factor(ans.unit)
         if got is None or got[0] is None:
             out.append(Scaled(ans.quantity, ans.unit, None, ans.tutorial, ans.exact,
-                              ans.tolerance, 0.0, "not a length on the drawings", ans.slip))
+                              ans.tolerance, 0.0, "not a length on the drawings", ans.slip,
+                              None, ans.sense))
             continue
         val, res, how = got
-        val /= f
-        if ans.mode == "abs":
-            val = abs(val)
+        signed = val / f
+        val = abs(signed) if ans.mode == "abs" else signed
         out.append(Scaled(ans.quantity, ans.unit, val, ans.tutorial, ans.exact, ans.tolerance,
-                          res / f, how, ans.slip))
+                          res / f, how, ans.slip, signed, ans.sense))
     return out
 
 

@@ -313,6 +313,16 @@ def test_scaled_lengths_are_the_exact_values_to_a_ruler_division(path):
             assert row.scaled == pytest.approx(row.exact, rel=2e-4, abs=1e-9), row.quantity
 
 
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_senses_read_off_the_drawings_agree_with_the_tutorial(path):
+    sol, ds = solved(path)
+    rows = [r for r in measure.compare(sol, measure.readings_of(ds))
+            if r.signed is not None and r.sense in ("CW", "CCW") and not r.slip
+            and r.quantity.startswith(("omega", "alpha"))]
+    for r in rows:
+        assert (r.signed > 0) == (r.sense == "CCW"), (r.quantity, r.signed, r.sense)
+
+
 def test_fig7_scaled_values():
     sol, ds = solved(CASES / "s003-fig7.toml")
     got = {(r.quantity, r.tutorial): r.scaled
