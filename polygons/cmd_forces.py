@@ -13,11 +13,9 @@ import sys
 
 import numpy as np
 
-from .errors import PolygonsError
-from .evaluate import solve
-from .forces import (Analysis, State, analyse, check_force_answers, has_forces, load_model,
-                     section, spring_state)
-from .errors import SceneError
+from .errors import PolygonsError, SceneError
+from .forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
+                     spring_state)
 from .scene import Crank, load_scene
 
 
@@ -178,6 +176,7 @@ def _state_dict(an: Analysis, st: State) -> dict:
         if k in st.extra:
             out.setdefault("energy", {})[k] = float(st.extra[k])
     out["newton_euler_residual"] = ne.residual
+    out["warnings"] = list(st.warnings)
     out["unknowns"] = {name: float(x) for name, x in zip(ne.names, ne.values)}
     return out
 
@@ -370,4 +369,6 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
         out.append(f"  section {lab} of {link} (on the part from {model.bodies[link].a}): "
                    f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = {m:.6g} N m (CCW)")
     out.append(f"  equations: {ne.equations}, residual {ne.residual:.1e}")
+    for w in st.warnings:
+        out.append(f"  warning: {w}")
     return out

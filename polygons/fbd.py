@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .forces import Analysis, State, _pos, centre, contact_force
+from .forces import Analysis, State, _pos, contact_force
 from .errors import PolygonsError, UnknownLabelError
 
 

@@ -48,13 +48,12 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field, replace
-from typing import Any, Callable
 
 import numpy as np
 
 from . import quantities as kq
-from .errors import (PolygonsError, SceneError, UnitError, UnknownKeyError, UnknownLabelError,
-                     UnsupportedError, suggest)
+from .errors import (PolygonsError, SceneError, UnitError, UnknownLabelError, UnsupportedError,
+                     suggest)
 from .evaluate import Solution, solve
 from .scene import Crank, Scene, SliderDrive, _Reader
 from .units import UNITS
@@ -961,7 +960,7 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
     order = list(bodies)
     idx = {n: i for i, n in enumerate(order)}
     ref = {n: _pos(sol, bodies[n].a) for n in order}
-    cols: list[tuple[str, Callable]] = []
+    cols: list[str] = []
     neq = 3 * len(order)
     entries: list[tuple[int, int, float]] = []
 
@@ -1150,9 +1149,10 @@ class State:
     applied_driver: float            # torque (force) applied to the driver by [torques]/[forces]
     rotation: float = 0.0            # release: the driver's rotation from the release position
     extra: dict = field(default_factory=dict)
+    warnings: list = field(default_factory=list)
 
 
-def driver_state(scene: Scene, *, angle=None, omega=None, alpha=None, targets=None) -> Scene:
+def driver_state(scene: Scene, *, angle=None, omega=None, alpha=None) -> Scene:
     drv = scene.driver
     if isinstance(drv, Crank):
         d = replace(drv, angle=drv.angle if angle is None else angle,
@@ -1183,7 +1183,14 @@ def kinetostatic(model: ForceModel, scene: Scene, name: str = "instant",
     ne = newton_euler(model, sol, vsol, motion=motion)
     vw, parts = virtual_work(model, sol, vsol, ne.loads)
     return State(name, sol, vsol, ne, inertias(model, sol), vw, parts,
-                 driver_applied(model, ne, vsol))
+                 driver_applied(model, ne, vsol), warnings=_friction_warnings(model, sol, vsol,
+                                                                             motion))
+
+
+def _friction_warnings(model, sol, vsol, motion) -> list[str]:
+    return [f"the pin {fr.at} ({fr.name}) does not turn at this instant: its friction torque "
+            f"is taken as 0 (its sense is undefined)" for fr in model.frictions
+            if friction_sense(model, sol, vsol, fr, motion) == 0]
 
 
 def torque_driven(model: ForceModel, scene: Scene, name: str = "instant",
@@ -1201,7 +1208,8 @@ def torque_driven(model: ForceModel, scene: Scene, name: str = "instant",
     sol = solve(driver_state(scene, alpha=alpha))
     vw, parts = virtual_work(model, sol, vsol, ne.loads)
     st = State(name, sol, vsol, ne, inertias(model, sol), vw, parts,
-               driver_applied(model, ne, vsol))
+               driver_applied(model, ne, vsol),
+               warnings=_friction_warnings(model, sol, vsol, motion))
     st.extra["alpha_in"] = alpha
     return st
 

@@ -249,6 +249,13 @@ stiffness = "200 N/m"
 between = ["C", "D"]
 on = ["CD", ""]
 free_length = "0.2 m"
+[springs.Kt]
+stiffness = "5 N m/rad"
+at = "C"
+twist = "10 deg"
+[torques.Fb]
+at = "B"
+friction = "0.3 N m"
 """
 
 
