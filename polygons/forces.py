@@ -450,6 +450,11 @@ def load_model(scene: Scene) -> ForceModel:
         if ("torque" in spec) == ("friction" in spec):
             raise SceneError("give either torque = \"6 N m\" (with on = LINK and sense) or "
                              "friction = \"0.1 N m\" (with at = PIN)", file=file, where=where)
+        for bad in (("between",) if "torque" in spec else ("sense", "on")):
+            if bad in spec:
+                raise SceneError(f"{bad!r} does not apply to "
+                                 f"{'an applied torque' if 'torque' in spec else 'a friction torque (it opposes the relative rotation at its pin)'}",
+                                 file=file, where=f"{where}.{bad}")
         if "torque" in spec:
             if "on" not in spec:
                 raise SceneError("missing key 'on' (the link the torque acts on)", file=file,

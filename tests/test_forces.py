@@ -419,6 +419,13 @@ def test_bad_force_input_gives_one_readable_line(tmp_path, change, expected):
         assert re.search(expected, lines[0]), lines[0]
 
 
+def test_friction_with_a_sense_is_refused():
+    text = (CASES / "s002-ex3.16.toml").read_text().replace(
+        'friction = "0.1 N m"', 'friction = "0.1 N m"\nsense = "CW"')
+    with pytest.raises(PolygonsError, match=r"\[torques.Friction.sense\].*does not apply"):
+        analyse(_scene(text, "f.toml"))
+
+
 def test_forces_on_a_scene_without_masses_is_an_error():
     out = run("forces", CASES / "s003-fig7.toml")
     assert out.returncode != 0 and "nothing for a force analysis" in out.stderr
