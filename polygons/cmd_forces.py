@@ -1,12 +1,10 @@
 """``polygons forces CASE.toml``: inertia forces, the input torque, every pin reaction.
 
-Also makes ``polygons solve`` append the force results (table, or a ``"forces"`` key in the
-JSON) when the scene has masses or loads: the solve command is wrapped here, at registration,
-so the kinematic command itself stays unaware of forces.
+``polygons solve`` appends the same results (:func:`forces_table`, or a ``"forces"`` key made
+by :func:`to_dict` in its JSON) when the scene has masses or loads.
 """
 from __future__ import annotations
 
-import io
 import json
 import math
 import sys
@@ -16,6 +14,7 @@ import numpy as np
 from .errors import PolygonsError, SceneError
 from .forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
                      spring_state)
+from .report import json_text
 from .scene import Crank, load_scene
 
 
@@ -30,37 +29,6 @@ def register(sub) -> None:
     p.add_argument("--svg", metavar="DIR", help="also write a free-body diagram and a force "
                                                "polygon (SVG) per body and state to DIR")
     p.set_defaults(func=run)
-    solve_parser = sub.choices.get("solve")
-    if solve_parser is not None:
-        original = solve_parser.get_default("func")
-        solve_parser.set_defaults(func=_solve_with_forces(original))
-
-
-def _solve_with_forces(original):
-    """``polygons solve`` as before (every option of its own), then the forces: its output is
-    captured and the force table appended, or a ``"forces"`` key added to its JSON object."""
-    def run_solve(args) -> int:
-        scene = load_scene(args.scene)
-        if not has_forces(scene):
-            return original(args)
-        an = analyse(scene)          # bad force tables fail before anything is printed
-        buf = io.StringIO()
-        saved, sys.stdout = sys.stdout, buf
-        try:
-            code = original(args)
-        finally:
-            sys.stdout = saved
-        if code:
-            sys.stdout.write(buf.getvalue())
-            return code
-        if getattr(args, "json", False):
-            data = json.loads(buf.getvalue())
-            data["forces"] = to_dict(an)
-            sys.stdout.write(_dumps(data))
-        else:
-            sys.stdout.write(buf.getvalue() + "\n" + forces_table(an, header=False))
-        return 0
-    return run_solve
 
 
 def run(args) -> int:
@@ -73,15 +41,13 @@ def run(args) -> int:
     if args.svg:
         from .fbd import write
         paths = write(an, args.svg)
-    text = _dumps(to_dict(an)) if args.json else forces_table(an)
+    text = json_text(to_dict(an)) if args.json else forces_table(an)
     if paths and not args.json:
         text += f"\ndiagrams: {len(paths)} SVG files in {args.svg}\n"
     sys.stdout.write(text)
     return 0
 
 
-def _dumps(data) -> str:
-    return json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 
 # ---------------------------------------------------------------- words

@@ -3,8 +3,10 @@ from __future__ import annotations
 
 import sys
 
+from .cmd_forces import forces_table, to_dict
 from .evaluate import solve
-from .report import dumps, table
+from .forces import analyse, has_forces
+from .report import json_text, table, to_json
 from .scene import load_scene
 
 
@@ -28,8 +30,19 @@ def run(args) -> int:
     scene = load_scene(args.scene)
     targets = [t.strip() for t in args.points.split(",")] if args.points else None
     sol = solve(scene, targets)
+    forces = None
+    if has_forces(scene):            # bad force tables fail before anything is written
+        forces = analyse(scene)
     if args.svg:
         from .cmd_draw import write_diagrams
         write_diagrams(sol, args, args.svg)
-    sys.stdout.write(dumps(sol) if args.json else table(sol, steps=not args.no_steps))
+    if args.json:
+        data = to_json(sol)
+        if forces is not None:
+            data["forces"] = to_dict(forces)
+        sys.stdout.write(json_text(data))
+    else:
+        sys.stdout.write(table(sol, steps=not args.no_steps))
+        if forces is not None:
+            sys.stdout.write("\n" + forces_table(forces, header=False))
     return 0

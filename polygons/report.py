@@ -135,8 +135,13 @@ def to_json(sol: Solution) -> dict:
     }
 
 
+def json_text(data: dict) -> str:
+    """The one JSON formatting of every command (deterministic, no NaN)."""
+    return json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
 def dumps(sol: Solution) -> str:
-    return json.dumps(to_json(sol), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+    return json_text(to_json(sol))
 
 
 def _g(x, digits=5) -> str:

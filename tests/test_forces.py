@@ -14,7 +14,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from conftest import CASES, REFERENCE, case_files
-from polygons.errors import AssemblyError, PolygonsError
+from polygons.errors import BranchError, AssemblyError, PolygonsError
 from polygons.forces import (analyse, check_force_answers, force_quantity, has_forces,
                              load_model, newton_euler)
 from polygons.scene import load_scene, parse_scene
@@ -269,7 +269,7 @@ def test_random_four_bars_virtual_work_equals_newton_euler(**p):
     scene = _scene(FOURBAR.format(**p))
     try:
         an = analyse(scene)
-    except AssemblyError:
+    except (AssemblyError, BranchError):   # cannot close, or both closures below AD
         assume(False)
     except PolygonsError as exc:
         assume("parallel" not in str(exc) and "singular" not in str(exc))
