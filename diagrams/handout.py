@@ -35,11 +35,12 @@ from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, uni
 DRAWABLE = ("vector", "image", "line", "intersection")
 #: printable area (mm) of an A4 page with the margins of the stylesheet below
 PORTRAIT = (180.0, 262.0)
-LANDSCAPE = (267.0, 175.0)
+LANDSCAPE = (277.0, 188.0)
 #: width (mm) of a stage figure inside the narration
 STAGE_WIDTH = 110.0
-#: paper area (mm) each polygon is fitted to by diagrams.scale.choose
-PAPER_AREAS = {"A5": (150.0, 100.0), "A4": (230.0, 150.0)}
+#: empty drawing areas of the worksheet (mm, inside their 4 mm side margins and above their
+#: 14 mm scale bar): A5 when the key's drawing fits it, else as large as a page allows
+AREAS = {"A5": (150.0, 100.0), "landscape": (268.0, 150.0), "portrait": (172.0, 222.0)}
 
 UNIT_OF = {"velocity": "m/s", "acceleration": "m/s²"}
 WHAT = {"velocity": "velocity", "acceleration": "acceleration"}
@@ -64,6 +65,12 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
         out.drawing[d.name] = d
         out.svg[d.name] = to_svg(trimmed(d) if d.stage is not None else d)
     return out
+
+
+def stage_width(natural: float) -> float:
+    """Printed width (mm) of a stage figure ``natural`` mm wide: at most the column, at least
+    60 % of full size for wide drawings so their labels stay legible."""
+    return min(natural, max(STAGE_WIDTH, 0.6 * natural), 172.0)
 
 
 def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3.0):
@@ -274,7 +281,7 @@ def redact_answers(text: str) -> str:
 # ---------------------------------------------------------------- the document
 CSS = """
 @page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
-@page wide { size: A4 landscape; margin: 12mm 15mm 12mm 15mm; }
+@page wide { size: A4 landscape; margin: 10mm; }
 html { background: #ffffff; }
 body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 10.5pt;
        line-height: 1.42; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
@@ -318,7 +325,7 @@ section.plate h3 { margin-top: 0; }
 section.plate.portrait { page: auto; }
 .note { font-size: 9.5pt; }
 .slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
-.about p { font-size: 9pt; color: #222; white-space: pre-line; margin: 0.5mm 0 2mm 0; }
+.about p { font-size: 9pt; color: #222; margin: 0.5mm 0 1.5mm 0; }
 .about h3 { font-size: 9.5pt; margin-bottom: 0.5mm; }
 footer { font-size: 8pt; color: #333; margin-top: 6mm; border-top: 0.2mm solid #999;
          padding-top: 1.5mm; }
@@ -572,8 +579,10 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
             f"<h2>{n_sec}. The {what} diagram</h2>\n")
     pole_alias = " = ".join([sol.pole] + [g.lower() for g in scene.ground
                                           if g.lower() != sol.pole])
+    P, Q = _example_pair(sol)
     intro = (f"Lower-case letters are the points of the {what} diagram: the vector from "
-             f"<em>b</em> to <em>c</em> is the {what} of C relative to B. The pole "
+             f"<em>{esc(sol.vertex_of(P))}</em> to <em>{esc(sol.vertex_of(Q))}</em> is the "
+             f"{what} of {esc(Q)} relative to {esc(P)}. The pole "
              f"<em>{esc(pole_alias)}</em> stands for every fixed point, which has no "
              f"{what}.")
     if scale is not None:
@@ -608,7 +617,7 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                 svg = figs.svg[name]
                 w, _ = svg_size(svg)
                 doc.add(f'<figure class="diagram stage">'
-                        f"{inline_svg(svg, name, 'figure', min(w, STAGE_WIDTH), f'{what} diagram, Fig. {letter(k)}')}"
+                        f"{inline_svg(svg, name, 'figure', stage_width(w), f'{what} diagram, Fig. {letter(k)}')}"
                         f"<figcaption>Fig. {letter(k)}: {what} diagram, stage {k}"
                         f"</figcaption></figure>\n")
         doc.add("</li>\n")
@@ -629,8 +638,27 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                f"Finished {what} diagram")
 
 
+def _example_pair(sol: Solution) -> tuple[str, str]:
+    """Two labels of one link, both moving if possible (B, C of BC), for the intro."""
+    from polygons.evaluate import link_ends
+    ground = set(sol.scene.ground)
+    pairs = [link_ends(sol.scene, n) for n in sol.links]
+    for a, b in pairs:
+        if a not in ground and b not in ground:
+            return a, b
+    return pairs[0] if pairs else ("A", "B")
+
+
 def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
-    """The worksheet's empty drawing area for ``diagram``, true size, at the key's scale."""
+    """The worksheet's empty drawing area for ``diagram``: true size, at the key's scale.
+
+    The area is A5 when the key's drawing (its frame: the polygon and its construction lines)
+    fits, else a whole landscape or portrait page; its size depends on the page, not on the
+    answer.  If the key's drawing is larger than any A4 page, the next round scale that fits
+    is used and the note says so.  A ring marks where the key's pole falls with its drawing
+    centred in the area, so the student's diagram stays on the paper.
+    """
+    from .scale import make, round_up
     final = figs.drawing.get(diagram)
     lay = final.meta.get("layout") if final is not None else None
     if lay is None:
@@ -638,27 +666,33 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     scale = lay.scale
     frame = lay.frame
     fw, fh = frame.x1 - frame.x0, frame.y1 - frame.y0
-    # the paper area the scale was chosen for, or the drawing itself if it is larger
-    aw, ah = PAPER_AREAS["A5"]
-    if fw > aw or fh > ah:
-        aw, ah = PAPER_AREAS["A4"]
-    aw, ah = max(aw, math.ceil(fw / 10) * 10), max(ah, math.ceil(fh / 10) * 10)
-    # where the key puts the pole, with the key's drawing centred in the area (y down)
+    k = 1.0
+    for name in ("A5", "landscape", "portrait"):
+        aw, ah = AREAS[name]
+        if fw <= aw and fh <= ah:
+            break
+    else:
+        name = "landscape"
+        aw, ah = AREAS[name]
+        scale = make(scale.quantity, round_up(scale.per_cm * max(fw / aw, fh / ah)))
+        k = lay.scale.per_cm / scale.per_cm
     px, py = lay.P(lay.con.vertices[sol.pole])
     cx, cy = (frame.x0 + frame.x1) / 2, (frame.y0 + frame.y1) / 2
-    pole = (aw / 2 + (px - cx), ah / 2 - (py - cy))
+    pole = (aw / 2 + k * (px - cx), ah / 2 - k * (py - cy))
     what = WHAT[diagram]
     svg = grid_svg(aw, ah, scale.statement, scale.per_cm_display, plain_text(scale.unit),
                    f"area-{diagram}", f"Empty drawing area for the {what} diagram, "
                    f"scale {scale.statement}", pole, f"pole {sol.pole}: start here")
-    w, h = aw + 8.0, ah + 14.0
-    cls = "plate portrait" if w <= PORTRAIT[0] and h <= PORTRAIT[1] - 16 else "plate"
+    cls = "plate" if name == "landscape" else "plate portrait"
+    note = (f"True size at 100 % print scale: {scale.statement}; grid squares 5 mm. The ring "
+            f"marks a pole position that leaves room for the whole diagram.")
+    if k != 1.0:
+        note += (f" (The answer key is drawn at {lay.scale.statement}, which needs a sheet "
+                 f"larger than A4.)")
     doc.add(f'<section class="{cls}" id="plate-area-{diagram}">\n'
             f"<h3>Draw the {what} diagram here</h3>\n"
             f'<figure class="area">{svg}</figure>\n'
-            f'<p class="figure-note">True size at 100 % print scale: '
-            f"{esc(scale.statement)}; grid squares 5 mm. The ring marks a pole position that "
-            f"leaves room for the whole diagram.</p>\n</section>\n")
+            f'<p class="figure-note">{esc(note)}</p>\n</section>\n')
 
 
 def _results(doc: _Doc, sol: Solution) -> None:
@@ -742,15 +776,16 @@ def _comparison(doc: _Doc, sol: Solution) -> None:
             else:
                 diff = f"{c.diff_pct:+.2f} %".replace("-", "−")
             if a.slip:
+                note = re.sub(r"(?i)^\s*slip\s*[:,-]\s*", "", a.note or "")
                 verdict = "<strong>slip in the tutorial</strong>" + (
-                    f": {esc(plain_text(a.note))}" if a.note else "")
+                    f": {sym(note)}" if note else "")
             elif c.within:
                 verdict = f"within ±{a.tolerance * 100:g} %"
                 if a.note:
-                    verdict += f" ({esc(plain_text(a.note))})"
+                    verdict += f" ({sym(a.note)})"
             else:
                 verdict = f"<strong>outside ±{a.tolerance * 100:g} %</strong>" + (
-                    f": {esc(plain_text(a.note))}" if a.note else "")
+                    f": {sym(a.note)}" if a.note else "")
             doc.add(f"<tr><td class=\"q\">{sym(a.desc)}</td><td>{unit(a.unit)}</td>"
                     f'<td class="n">{ours}</td><td class="n">{tut}</td>'
                     f'<td class="n">{diff}</td><td>{verdict}</td></tr>\n')
@@ -768,7 +803,7 @@ def _comparison(doc: _Doc, sol: Solution) -> None:
 def _about(doc: _Doc, sol: Solution) -> None:
     src = sol.scene.source
     parts = [("Where this example comes from", " · ".join(
-        str(x) for x in (src.get("example"), src.get("seed"), src.get("category")) if x)),
+        str(x) for x in (src.get("example"), src.get("category")) if x)),
         ("Conventions", src.get("conventions", "")),
         ("What was reconstructed", src.get("backsolved", "")),
         ("Notes", src.get("notes", ""))]
@@ -777,7 +812,9 @@ def _about(doc: _Doc, sol: Solution) -> None:
         return
     doc.add(f'<section id="about" class="about">\n<h2>{doc.sec()}. About this case</h2>\n')
     for head, text in parts:
-        doc.add(f"<h3>{esc(head)}</h3>\n<p>{esc(plain_text(text))}</p>\n")
+        doc.add(f"<h3>{esc(head)}</h3>\n")
+        for para in _paragraphs(text):
+            doc.add(f"<p>{esc(plain_text(para))}</p>\n")
     doc.add("</section>\n")
 
 

@@ -34,6 +34,8 @@ def sym(text: str) -> str:
     names such as 'p4_1' are left alone.
     """
     out = esc(plain_text(text))
+    out = re.sub(r"(?<![A-Za-z])omega_(?=[A-Z])", "ω_", out)
+    out = re.sub(r"(?<![A-Za-z])alpha_(?=[A-Z])", "α_", out)
     out = _SUB.sub(lambda m: f"{m.group(1)}<sub>{m.group(2)}</sub>", out)
     out = _PAREN_SUB.sub(lambda m: f")<sub>{m.group(1)}</sub>", out)
     out = _SUP.sub(lambda m: f"<sup>{m.group(1)}</sup>", out)
