@@ -369,26 +369,31 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             A[X] = (ax, ay)
             AL[lp], AL[lq] = alp, alq
         elif k == "rrp":
+            # in the guide's frame (u along e, n across): the pin P at (pu, pn) relative to
+            # the guide's point g; X = g + t e with (t - pu)² + pn² = L²
             p, L, (gx, gy), (ex, ey), sigma, link = data
             px, py = P[p]
-            wx = gx - px
-            wy = gy - py
-            bq = ex * wx
-            bq += ey * wy
-            disc = bq * bq
-            disc -= wx * wx
-            disc -= wy * wy
-            disc += L * L
+            wx = px - gx if gx else px
+            wy = py - gy if gy else py
+            aligned = ey == 0.0 and ex == 1.0
+            if aligned:
+                pu, pn = wx, wy
+            else:
+                pu = ex * wx
+                pu += ey * wy
+                pn = ex * wy
+                pn -= ey * wx
+            disc = pn * pn
+            np.subtract(L * L, disc, out=disc)
             root = np.sqrt(disc)
             if _has_nan(root):
                 root = np.sqrt(np.where(disc >= -1e-12 * L * L, np.maximum(disc, 0.0), np.nan))
             me = root if sigma > 0 else -root       # PX · e: zero at a toggle
-            tt = me - bq                            # travel along the guide
-            mx = tt * ex                            # PX
-            mx += wx
-            my = tt * ey
-            my += wy
-            P[X] = (_plus(gx, tt * ex), _plus(gy, tt * ey))
+            tt = pu + me                            # travel along the guide from g
+            if aligned:
+                P[X] = (_plus(gx, tt), np.full(n, gy))
+            else:
+                P[X] = (_plus(gx, tt * ex), _plus(gy, tt * ey))
             TR[X] = tt
             if rates:
                 margins.append(root * (1.0 / L))
@@ -396,33 +401,45 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
                 margins.append(np.where(disc >= 0, root, -np.sqrt(np.abs(disc))) * (1.0 / L))
                 continue
             vp, ap = V[p], A[p]
-            inv = 1.0 / me
-            cme = mx * ey                            # PX × e
-            cme -= my * ex
-            if vp is not None:
-                w = vp[0] * ey
-                w -= vp[1] * ex
-                w *= inv
-                sd = w * cme
-                sd += ex * vp[0]
-                sd += ey * vp[1]
-            else:
+            ninv = -1.0 / me
+            if vp is None:
                 w = 0.0 * me
                 sd = 0.0 * me
-            V[X] = (sd * ex, sd * ey)
+            else:
+                if aligned:
+                    vu, vn = vp
+                else:
+                    vu = ex * vp[0]
+                    vu += ey * vp[1]
+                    vn = ex * vp[1]
+                    vn -= ey * vp[0]
+                w = vn * ninv                       # ω = (v_p × e) / (PX · e)
+                sd = w * pn
+                sd += vu                            # ṡ = v_p·e + ω (PX × e)
             w2 = w * w
-            bx = mx * -w2
-            by = my * -w2
-            if ap is not None:
-                bx += ap[0]
-                by += ap[1]
-            al = bx * ey
-            al -= by * ex
-            al *= inv
-            sdd = al * cme
-            sdd += ex * bx
-            sdd += ey * by
-            A[X] = (sdd * ex, sdd * ey)
+            if ap is None:
+                bu = w2 * -me
+                bn = w2 * pn
+            else:
+                if aligned:
+                    au, an = ap
+                else:
+                    au = ex * ap[0]
+                    au += ey * ap[1]
+                    an = ex * ap[1]
+                    an -= ey * ap[0]
+                bu = au - w2 * me                   # (a_p − ω² PX)·e
+                bn = w2 * pn
+                bn += an                            # (a_p − ω² PX)·n
+            al = bn * ninv
+            sdd = al * pn
+            sdd += bu
+            if aligned:
+                V[X] = (sd, np.zeros(n))
+                A[X] = (sdd, np.zeros(n))
+            else:
+                V[X] = (sd * ex, sd * ey)
+                A[X] = (sdd * ex, sdd * ey)
             W[link], AL[link] = w, al
             SV[X], SA[X] = sd, sdd
         elif k == "rpr":

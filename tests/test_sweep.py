@@ -414,3 +414,15 @@ def test_random_slotted_levers_sweep_like_the_closed_form(r, h, theta, omega, al
     assert abs(sw.omega["BA1"][0] - ref["omega_lever"]) <= 1e-9 * vs / s
     assert abs(sw.alpha["BA1"][0] - ref["alpha_lever"]) <= 1e-9 * (as_ / s + (vs / s) ** 2)
     assert abs(sw.slide_a["A"][0] - ref["s_ddot"]) <= 1e-9 * (as_ + vs * vs / s)
+
+
+def test_benchmark_command_runs_and_reports_the_targets(tmp_path):
+    """A smoke run of benchmarks/run.py (tiny sizes, without the optional packages)."""
+    out = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "run.py"), "--quick",
+                          "--no-others", "--sizes", "4096", "--out", str(tmp_path)],
+                         capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert "targets (ratios measured in this run):" in out.stdout
+    assert "error ≤ 1e-12 relative" in out.stdout and "pylinkage: not compared" in out.stdout
+    for name in ("bench.json", "speed-vs-error.png", "speed-vs-error.svg"):
+        assert (tmp_path / name).exists()

@@ -1,0 +1,459 @@
+"""Speed against error, in one run: ``python benchmarks/run.py``.
+
+For four seed mechanisms -- a four-bar (S001-WE6), an in-line slider-crank (S001-WE4), an offset
+slider-crank (S001-WE2) and a slotted-lever quick return (S003-Fig7) -- this measures, on the
+same crank angles:
+
+  (a) the staged constructor, one position at a time with every step recorded: warm (scene
+      loaded), cold (TOML load + solve) and the first solve of a fresh process;
+  (b) the vectorised sweep (polygons.sweep) for N = 1e5 and 1e6 positions;
+  (c) a closed-form numpy baseline (benchmarks/closed_form.py, textbook angle form);
+  (d) central finite differences of the vectorised positions on the same grid;
+  (e) the drawing board: the construction with a pencil (±0.25 mm) and protractor (±0.25°)
+      at a sensible scale, Monte Carlo (benchmarks/drawing.py);
+  (f) pylinkage (numba fast path for sweeps; its fastest single-position solve with
+      derivatives) and (g) mechanism (fsolve per position), when installed
+      (pip install -e .[bench]); each is skipped with the reason when it is not.
+
+Every error is measured against the closed forms evaluated in extended precision
+(np.longdouble), at the positions whose smallest construction angle is above 1°, as the largest
+deviation of each output over the positions divided by that output's largest magnitude (a
+point's vectors by their largest length).  Timings are the best of several repetitions,
+interleaved so that every method sees the same machine load.
+
+Prints a table and the targets (met or not), writes benchmarks/results/bench.json and
+benchmarks/results/speed-vs-error.{png,svg}.
+"""
+from __future__ import annotations
+
+import argparse
+import gc
+import json
+import math
+import platform
+import subprocess
+import sys
+import time
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(ROOT))
+
+import closed_form as cf  # noqa: E402
+import drawing  # noqa: E402
+import others  # noqa: E402
+from polygons.evaluate import solve  # noqa: E402
+from polygons.scene import Branch, load_scene  # noqa: E402
+from polygons.sweep import compile_plan, evaluate, sweep  # noqa: E402
+
+MECHANISMS = [
+    ("four-bar", "four-bar", "cases/s001-we6.toml"),
+    ("slider-crank (in-line)", "slider-crank", "cases/s001-we4.toml"),
+    ("slider-crank (offset)", "slider-crank", "cases/s001-we2.toml"),
+    ("quick return (slotted lever)", "slotted-lever", "cases/s003-fig7.toml"),
+]
+STUDENT_MIN_PER_POSITION = 15.0     # assumed, not measured: one careful construction by hand
+MIN_ANGLE = 1.0
+
+
+# ---------------------------------------------------------------- errors
+def rel_error(out: dict, ref: dict, mask=None):
+    """(max relative error, worst output) over the outputs both dicts have."""
+    worst, name = 0.0, ""
+    groups = {}
+    for key in ref:
+        if key not in out:
+            continue
+        lab, q = key.split(".")
+        if q in ("x", "y", "vx", "vy", "ax", "ay"):
+            groups.setdefault((lab, q[:-1] or "p"), []).append(key)
+        else:
+            groups.setdefault((lab, q), []).append(key)
+    for (lab, q), keys in groups.items():
+        r = [np.asarray(ref[k], dtype=np.longdouble) for k in keys]
+        o = [np.asarray(out[k], dtype=np.longdouble) for k in keys]
+        if mask is not None:
+            r = [v[mask] for v in r]
+            o = [v[mask] for v in o]
+        if q == "p":
+            scale = max(float(np.max(np.sqrt(sum(v * v for v in r)))), 1e-300)
+            scale = max(scale, 1.0 * float(np.max([np.max(np.abs(v)) for v in r])))
+        else:
+            scale = float(np.max(np.sqrt(sum(v * v for v in r))))
+        if scale == 0.0:
+            continue
+        dev = float(np.max(np.sqrt(sum((a - b) ** 2 for a, b in zip(o, r)))))
+        e = dev / scale
+        if not math.isfinite(e):
+            e = math.inf
+        if e > worst:
+            worst, name = e, f"{lab}.{q}"
+    return worst, name
+
+
+def best_of(fns: dict, repeat: int) -> dict:
+    """Interleaved repetitions; the best time of each function (seconds)."""
+    best = {k: math.inf for k in fns}
+    for _ in range(repeat):
+        for k, fn in fns.items():
+            gc.collect()
+            t = time.perf_counter()
+            fn()
+            best[k] = min(best[k], time.perf_counter() - t)
+    return best
+
+
+# ---------------------------------------------------------------- finite differences
+def finite_differences(prog, p, xs, keys):
+    """Positions on the uniform periodic grid ``xs``, differentiated by central differences
+    (h = the grid step): v = ω dP/dθ, a = ω² d²P/dθ² (constant ω, as in these scenes)."""
+    res = evaluate(prog, xs, rates=False)
+    h = xs[1] - xs[0]
+    w = p["omega"]
+    out = {}
+
+    def d1(f):
+        return (np.roll(f, -1) - np.roll(f, 1)) * (w / (2 * h))
+
+    def d2(f):
+        return (np.roll(f, -1) - 2 * f + np.roll(f, 1)) * (w * w / (h * h))
+
+    pos = res["pos"]
+    for key in keys:
+        lab, q = key.split(".")
+        if q in ("vx", "vy", "ax", "ay") and lab in pos and lab != p.get("A1"):
+            f = pos[lab][0 if q[1] == "x" else 1]
+            out[key] = d1(f) if q[0] == "v" else d2(f)
+        elif q in ("x", "y") and lab in pos:
+            out[key] = pos[lab][0 if q == "x" else 1]
+    for name, a, b in prog.links:
+        if f"{name}.omega" in keys and a in pos and b in pos:
+            ax_, ay_ = (np.broadcast_to(v, xs.shape) for v in pos[a])
+            bx_, by_ = (np.broadcast_to(v, xs.shape) for v in pos[b])
+            phi = np.unwrap(np.arctan2(by_ - ay_, bx_ - ax_))
+            out[f"{name}.omega"] = d1(phi)
+            out[f"{name}.alpha"] = d2(phi)
+    for key in keys:
+        lab, q = key.split(".")
+        if q in ("v_s", "a_s"):
+            if lab in res["travel"]:
+                s = res["travel"][lab]
+            else:                                   # a pin in a slot: distance from the pivot
+                (ax_, ay_), (bx_, by_) = pos[lab], p["B"]
+                s = np.hypot(ax_ - bx_, ay_ - by_)
+            out[key] = d1(s) if q == "v_s" else d2(s)
+    return out
+
+
+# ---------------------------------------------------------------- one mechanism
+def bench_mechanism(title, kind, path, sizes, avail, quick, log):
+    scene = load_scene(ROOT / path)
+    p = cf.params(kind, scene)
+    prog = compile_plan(scene)
+    th0 = p["theta0"]
+    first = sweep(scene, inputs=[th0])
+    start = {lab: (float(np.ravel(v[0])[0]), float(np.ravel(v[1])[0]))
+             for lab, v in first.pos.items()}
+    rows = []
+    keys = list(cf.solve(p, np.array([th0])).keys())
+
+    # positions checked for error: every sweep is compared on a subsample of 2048 angles
+    def sub(n):
+        step = max(1, n // 2048)
+        return np.arange(0, n, step)
+
+    # ---- (a) staged constructor, one position at a time
+    K = 16 if quick else 64
+    thetas = th0 + 2 * np.pi * np.arange(K) / K
+    probe = sweep(scene, inputs=thetas)
+    scenes = []
+    for i, t in enumerate(thetas):
+        drv = replace(scene.driver, angle=float(t))
+        asm = {lab: Branch(lab, "near", "near", near=(float(probe.pos[lab][0][i]),
+                                                         float(probe.pos[lab][1][i])))
+               for lab in probe.branches}
+        scenes.append(replace(scene, driver=drv, assembly=asm))
+    sols = [solve(s) for s in scenes]
+    staged = {k: np.array([_read(sol, k, p) for sol in sols]) for k in keys}
+    ref_a = cf.solve(p, thetas.astype(np.longdouble))
+    mask_a = probe.angle_deg > MIN_ANGLE
+    err_a, worst_a = rel_error(staged, ref_a, mask_a)
+    reps = 3 if quick else 8
+    t_warm = best_of({"warm": lambda: [solve(s) for s in scenes]}, reps)["warm"] / K
+    t_cold = best_of({"cold": lambda: solve(load_scene(ROOT / path))}, 5 if quick else 30)["cold"]
+    code = (f"import time; t = time.perf_counter(); from polygons import load_scene, solve; "
+            f"solve(load_scene({str(ROOT / path)!r})); print(time.perf_counter() - t)")
+    t0 = time.perf_counter()
+    inproc = float(subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                                  check=True, cwd=ROOT).stdout)
+    t_fresh = time.perf_counter() - t0
+    n_steps = len(sols[0].steps)
+    rows.append(dict(method="staged constructor, warm", n=1, time=t_warm, error=err_a,
+                     worst=worst_a, note=f"scene loaded; all {n_steps} steps recorded"))
+    rows.append(dict(method="staged constructor, cold", n=1, time=t_cold, error=err_a,
+                     worst=worst_a, note="load_scene (TOML) + solve"))
+    rows.append(dict(method="staged, fresh process", n=1, time=t_fresh, error=err_a,
+                     worst=worst_a, note=f"interpreter + imports + load + solve "
+                                         f"({inproc * 1e3:.0f} ms of it in Python)"))
+    log(f"  staged: warm {t_warm * 1e6:.0f} µs, cold {t_cold * 1e6:.0f} µs, "
+        f"error {err_a:.2g}")
+
+    # ---- pylinkage single position (with derivatives): its fastest of two paths
+    pl = None
+    if avail.get("pylinkage") is None:
+        pl = others.PyLinkage(p, start)
+        pl.single_python(thetas[1])
+        pl.single_fast(thetas[1])
+        t = best_of({"py": lambda: [pl.single_python(x) for x in thetas],
+                     "fast": lambda: [pl.single_fast(x) for x in thetas]}, reps)
+        single = [pl.single_python(x) for x in thetas]
+        so = pl.outputs(*(np.array([s[j] for s in single], dtype=float) for j in range(3)))
+        err_pls = rel_error(so, ref_a, mask_a)
+        t_py, t_fast = t["py"] / K, t["fast"] / K
+        rows.append(dict(method="pylinkage, single position", n=1, time=min(t_py, t_fast),
+                         error=err_pls[0], worst=err_pls[1],
+                         note=f"fastest of step_with_derivatives ({t_py * 1e6:.0f} µs) and "
+                              f"step_fast_with_kinematics ({t_fast * 1e6:.0f} µs)"))
+
+    # ---- (b) (c) (d) (f) sweeps on the same grid
+    for n in sizes:
+        xs = th0 + 2 * np.pi * np.arange(n) / n
+        idx = sub(n)
+        ref = cf.solve(p, xs[idx].astype(np.longdouble))
+        mask = probe_mask(scene, xs[idx])
+        fns = {"sweep": lambda: sweep(scene, inputs=xs),
+               "closed": lambda: cf.solve(p, xs),
+               "fd": lambda: finite_differences(prog, p, xs, keys)}
+        if pl is not None:
+            pl.sweep_fast(xs[0], 16, 2 * np.pi / n)             # compile outside the timing
+            fns["pylinkage"] = lambda: pl.sweep_fast(xs[0], n, 2 * np.pi / n)
+        t = best_of(fns, 3 if quick else (7 if n <= 100_000 else 4))
+        sw = sweep(scene, inputs=xs)
+        ours = {k: v[idx] for k, v in cf.outputs_of_sweep(sw, keys).items()}
+        e_sw = rel_error(ours, ref, mask)
+        cfo = {k: np.asarray(v)[idx] for k, v in cf.solve(p, xs).items()}
+        e_cf = rel_error(cfo, ref, mask)
+        fdo = {k: np.asarray(v)[idx] for k, v in finite_differences(prog, p, xs, keys).items()}
+        e_fd = rel_error(fdo, ref, mask)
+        tag = f"N = {n:.0e}".replace("e+0", "e")
+        rows.append(dict(method=f"vectorised sweep, {tag}", n=n, time=t["sweep"], error=e_sw[0],
+                         worst=e_sw[1], note="polygons.sweep: v, a, ω, α, slides, conditioning"))
+        rows.append(dict(method=f"closed form (numpy), {tag}", n=n, time=t["closed"],
+                         error=e_cf[0], worst=e_cf[1], note="benchmarks/closed_form.py"))
+        rows.append(dict(method=f"finite differences, {tag}", n=n, time=t["fd"], error=e_fd[0],
+                         worst=e_fd[1], note=f"central, h = 2π/N, of the vectorised positions"))
+        if pl is not None:
+            pos, vel, acc = pl.sweep_fast(xs[0], n, 2 * np.pi / n)
+            plo = {k: np.asarray(v)[idx] for k, v in pl.outputs(pos, vel, acc).items()}
+            e_pl = rel_error(plo, ref, mask)
+            rows.append(dict(method=f"pylinkage numba, {tag}", n=n, time=t["pylinkage"],
+                             error=e_pl[0], worst=e_pl[1],
+                             note="step_fast_with_kinematics (crank stepped by 2π/N)"))
+        log(f"  N={n}: sweep {n / t['sweep'] / 1e6:.1f} M/s, closed {n / t['closed'] / 1e6:.1f}"
+            f" M/s, fd {n / t['fd'] / 1e6:.1f} M/s"
+            + (f", pylinkage {n / t['pylinkage'] / 1e6:.2f} M/s" if pl is not None else ""))
+        del sw, ours, cfo, fdo
+
+    # ---- (g) mechanism: fsolve at every position
+    if avail.get("mechanism") is None:
+        M = 20 if quick else 100
+        xs = th0 + 2 * np.pi * np.arange(M) / M
+        mp = others.MechanismPkg(p, start)
+        t0 = time.perf_counter()
+        mech = mp.run(xs)
+        tm = (time.perf_counter() - t0) / M
+        ref = cf.solve(p, xs.astype(np.longdouble))
+        e = rel_error(mp.outputs(mech), ref, probe_mask(scene, xs))
+        rows.append(dict(method="mechanism (fsolve)", n=M, time=tm * M, error=e[0],
+                         worst=e[1], note=f"Mechanism.iterate over {M} positions"))
+
+    # ---- (e) the drawing board
+    D = 36
+    xs = th0 + 2 * np.pi * np.arange(D) / D
+    trials = 100 if quick else 1000
+    t0 = time.perf_counter()
+    res = drawing.emulate(scene, xs, trials=trials, seed=7)
+    t_em = time.perf_counter() - t0
+    summ = drawing.summary(res, MIN_ANGLE)
+    worst_med = max(summ.items(), key=lambda kv: kv[1]["median"])
+    worst_p95 = max(summ.items(), key=lambda kv: kv[1]["p95"])
+    rows.append(dict(method="drawing board (student)", n=1,
+                     time=STUDENT_MIN_PER_POSITION * 60.0, error=worst_med[1]["median"],
+                     worst=worst_med[0],
+                     note=(f"pencil ±{drawing.PENCIL_MM} mm, protractor ±{drawing.PROTRACTOR_DEG}°;"
+                           f" median of the worst answer; 95 % of answers within "
+                           f"{worst_p95[1]['p95'] * 100:.1f} % ({worst_p95[0]}); time assumed "
+                           f"{STUDENT_MIN_PER_POSITION:g} min/position"),
+                     drawing=summ, emulation_s=t_em, trials=trials, positions=D))
+    return {"title": title, "kind": kind, "scene": path, "rows": rows,
+            "min_angle_deg": float(np.nanmin(probe.angle_deg))}
+
+
+def probe_mask(scene, xs):
+    return sweep(scene, inputs=xs).angle_deg > MIN_ANGLE
+
+
+def _read(sol, key, p):
+    lab, q = key.split(".")
+    if q in ("x", "y"):
+        return sol.points[lab].position[0 if q == "x" else 1]
+    if q in ("vx", "vy"):
+        return sol.points[lab].velocity[0 if q == "vx" else 1]
+    if q in ("ax", "ay"):
+        return sol.points[lab].acceleration[0 if q == "ax" else 1]
+    if q == "omega":
+        return sol.links[lab].omega
+    if q == "alpha":
+        return sol.links[lab].alpha
+    if q == "v_s":
+        return sol.slides[lab].velocity
+    if q == "a_s":
+        return sol.slides[lab].acceleration
+    raise KeyError(key)
+
+
+# ---------------------------------------------------------------- report
+def fmt_time(s):
+    if s >= 60:
+        return f"{s / 60:.0f} min"
+    if s >= 1:
+        return f"{s:.2f} s"
+    if s >= 1e-3:
+        return f"{s * 1e3:.2f} ms"
+    if s >= 1e-6:
+        return f"{s * 1e6:.1f} µs"
+    return f"{s * 1e9:.1f} ns"
+
+
+def table(results) -> str:
+    lines = []
+    head = f"{'mechanism':<29} {'method':<31} {'positions/s':>12} {'time/position':>14} " \
+           f"{'max rel. error':>15}  worst output / note"
+    lines.append(head)
+    lines.append("-" * len(head))
+    for mech in results:
+        for i, r in enumerate(mech["rows"]):
+            per = r["time"] / r["n"]
+            rate = 1.0 / per
+            err = "—" if r["error"] is None else (f"{r['error']:.1e}" if r["error"] < 1e-3
+                                                  else f"{r['error'] * 100:.2f} %")
+            lines.append(f"{mech['title'] if i == 0 else '':<29} {r['method']:<31} "
+                         f"{rate:>12.3g} {fmt_time(per):>14} {err:>15}  "
+                         f"{(r['worst'] + '; ') if r['worst'] else ''}{r['note']}")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def targets(results, sizes):
+    out = []
+    for mech in results:
+        rows = {r["method"]: r for r in mech["rows"]}
+        for n in sizes:
+            tag = f"N = {n:.0e}".replace("e+0", "e")
+            s = rows[f"vectorised sweep, {tag}"]
+            c = rows[f"closed form (numpy), {tag}"]
+            ratio = (s["n"] / s["time"]) / (c["n"] / c["time"])
+            out.append(dict(target=f"sweep ≥ 1.0× closed-form throughput ({mech['title']}, {tag})",
+                            value=ratio, goal=1.0, met=ratio >= 1.0))
+            pl = rows.get(f"pylinkage numba, {tag}")
+            if pl is not None:
+                ratio = (s["n"] / s["time"]) / (pl["n"] / pl["time"])
+                out.append(dict(target=f"sweep ≥ 2× pylinkage's fastest path ({mech['title']}, "
+                                       f"{tag})", value=ratio, goal=2.0, met=ratio >= 2.0))
+        pls = rows.get("pylinkage, single position")
+        warm = rows["staged constructor, warm"]
+        if pls is not None:
+            ratio = pls["time"] / warm["time"]
+            out.append(dict(target=f"staged single solve ≥ 5× faster than pylinkage's single "
+                                   f"position with derivatives ({mech['title']})", value=ratio,
+                            goal=5.0, met=ratio >= 5.0))
+        ours = [r for r in mech["rows"] if r["method"].startswith(("staged constructor, warm",
+                                                                    "vectorised sweep"))]
+        worst = max(r["error"] for r in ours)
+        out.append(dict(target=f"error ≤ 1e-12 relative where the smallest angle > 1° "
+                               f"({mech['title']}: staged and sweep)", value=worst,
+                        goal=1e-12, met=worst <= 1e-12))
+    return out
+
+
+def plot(results, stem):
+    from diagrams.plots import Line, plot_xy
+
+    series = {}
+    for mech in results:
+        for r in mech["rows"]:
+            if r["error"] is None or r["method"] in ("staged constructor, cold",
+                                                     "staged, fresh process"):
+                continue
+            method = r["method"]
+            series.setdefault(method, ([], []))
+            series[method][0].append(r["n"] / r["time"])
+            series[method][1].append(max(r["error"], 1e-17))
+    colors = {"vectorised": "tab:blue", "staged": "tab:green", "closed": "tab:orange",
+              "finite": "tab:purple", "pylinkage": "tab:red", "mechanism": "tab:brown",
+              "drawing": "black"}
+    lines = []
+    for method, (x, y) in series.items():
+        c = next((v for k, v in colors.items() if method.startswith(k)), None)
+        lines.append(Line(method, x, y, "", c, 1.0))
+    return plot_xy("Speed against error (4 mechanisms per method; errors floored at 1e-17)",
+                   "positions per second (drawing board: assumed 15 min per position)",
+                   "max relative error (angle > 1°; drawing board: median)", lines, stem,
+                   logx=True, logy=True, annotate=False)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--quick", action="store_true", help="smaller sizes and fewer repetitions")
+    ap.add_argument("--sizes", help="comma-separated sweep sizes (default 100000,1000000; "
+                                    "--quick: 20000,100000)")
+    ap.add_argument("--no-others", action="store_true", help="skip pylinkage and mechanism")
+    ap.add_argument("--out", default=str(HERE / "results"), help="output directory")
+    args = ap.parse_args(argv)
+    sizes = ([int(s) for s in args.sizes.split(",")] if args.sizes else
+             ([20_000, 100_000] if args.quick else [100_000, 1_000_000]))
+    avail = ({"pylinkage": "skipped (--no-others)", "mechanism": "skipped (--no-others)"}
+             if args.no_others else others.available())
+    log = lambda s: print(s, file=sys.stderr, flush=True)  # noqa: E731
+    for name, why in avail.items():
+        if why:
+            log(f"{name}: {why}")
+    results = []
+    for title, kind, path in MECHANISMS:
+        log(f"{title} ({path})")
+        results.append(bench_mechanism(title, kind, path, sizes, avail, args.quick, log))
+    goals = targets(results, sizes)
+    print(table(results))
+    print("targets (ratios measured in this run):")
+    for g in goals:
+        val = f"{g['value']:.3g}" if g["goal"] != 1e-12 else f"{g['value']:.2g}"
+        print(f"  [{'met' if g['met'] else 'NOT met'}] {g['target']}: {val}")
+    for name, why in avail.items():
+        if why:
+            print(f"  {name}: not compared — {why}")
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    info = {"python": sys.version.split()[0], "numpy": np.__version__,
+            "machine": platform.machine(), "processor": platform.processor(),
+            "cpus": __import__("os").cpu_count(), "sizes": sizes, "quick": args.quick,
+            "others": {k: (v or "compared") for k, v in avail.items()}}
+    for name in ("pylinkage", "mechanism", "shapely"):
+        try:
+            from importlib.metadata import version
+            info[f"{name}_version"] = version(name)
+        except Exception:
+            pass
+    (out / "bench.json").write_text(json.dumps({"info": info, "results": results,
+                                                "targets": goals}, indent=1, default=float))
+    written = plot(results, out / "speed-vs-error")
+    print(f"written: {out / 'bench.json'}, " + ", ".join(str(w) for w in written))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
