@@ -302,6 +302,7 @@ table { border-collapse: collapse; font-size: 9pt; margin: 2mm 0 3mm 0;
 th, td { border-bottom: 0.2mm solid #999; padding: 0.8mm 2.2mm; text-align: left;
          vertical-align: top; }
 th { border-bottom: 0.4mm solid #000; font-weight: bold; }
+table.data th { border-bottom: 0.2mm solid #999; }
 td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
