@@ -494,22 +494,34 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
     doc.add("</section>\n")
 
 
+def _room(intro: str, page_width: float, level: str) -> float:
+    """Height (mm) taken on a plate's page by its heading, ``intro`` HTML and figure note."""
+    text = re.sub(r"<[^>]+>", "", intro)
+    paragraphs = [p for p in intro.split("</p>") if p.strip()]
+    chars_per_line = page_width / 1.85             # 10.5 pt serif, average advance
+    lines = sum(math.ceil(len(re.sub(r"<[^>]+>", "", p)) / chars_per_line)
+                for p in paragraphs) if text.strip() else 0
+    heading = 14.0 if level == "h2" else 9.0
+    return heading + 5.4 * lines + 3.0 * len(paragraphs) + 8.0 + 6.0   # note + slack
+
+
 def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
-           intro: str = "", ident: str | None = None, level: str = "h3",
-           head_room: float = 16.0) -> None:
+           intro: str = "", ident: str | None = None, level: str = "h3") -> None:
     """A finished diagram on a page of its own, full size when it fits A4 either way round
-    (below ``head_room`` mm of heading and ``intro`` HTML)."""
+    below its heading and ``intro`` HTML, else reduced to fit."""
     svg = figs.svg.get(name)
     if svg is None:
         return
     w, h = svg_size(svg)
-    if w <= PORTRAIT[0] and h <= PORTRAIT[1] - head_room:
+    room_p = _room(intro, PORTRAIT[0], level)
+    room_l = _room(intro, LANDSCAPE[0], level)
+    if w <= PORTRAIT[0] and h <= PORTRAIT[1] - room_p:
         cls, width, reduced = "plate portrait", w, None
-    elif w <= LANDSCAPE[0] and h <= LANDSCAPE[1] - head_room:
+    elif w <= LANDSCAPE[0] and h <= LANDSCAPE[1] - room_l:
         cls, width, reduced = "plate", w, None
     else:
-        k_land = min(LANDSCAPE[0] / w, (LANDSCAPE[1] - head_room) / h)
-        k_port = min(PORTRAIT[0] / w, (PORTRAIT[1] - head_room) / h)
+        k_land = min(LANDSCAPE[0] / w, (LANDSCAPE[1] - room_l) / h)
+        k_port = min(PORTRAIT[0] / w, (PORTRAIT[1] - room_p) / h)
         if k_port >= k_land:
             cls, k = "plate portrait", k_port
         else:
@@ -541,7 +553,7 @@ def _space(doc: _Doc, sol: Solution, figs: Figures, worksheet: bool) -> None:
         intro = intro.replace("</p>\n", " If the tutorial asks you to, draw it yourself "
                               "first from the data and check it against this one.</p>\n")
     _plate(doc, figs, "space", f"{doc.sec()}. The space diagram", "Space diagram of the "
-           "mechanism", intro, ident="space", level="h2", head_room=34.0)
+           "mechanism", intro, ident="space", level="h2")
 
 
 def _explain(doc: _Doc, key: str) -> None:
@@ -850,7 +862,9 @@ def _blanks(doc: _Doc, sol: Solution, file: str) -> None:
         doc.add("</tbody>\n</table>\n")
         example = " ".join(f"{textbook_name(q)}=…" for q in qs[:3])
         doc.add(f'<p class="note">Check your values: <code>polygons check {esc(file)} '
-                f"--measured {esc(example)}</code></p>\n")
+                f"--measured {esc(example)}</code> (numbers in the units above, or write the "
+                f"unit: <code>{esc(textbook_name(qs[0]))}='…'</code> with e.g. "
+                f"<code>mm/s</code>; add CW or CCW after an ω or α).</p>\n")
     doc.add("</section>\n")
 
 

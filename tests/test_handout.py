@@ -69,6 +69,8 @@ def test_handout_narrates_every_step_with_its_figure_and_numbers(path):
     for name in ("space", *sol.scene.solve):
         assert f'id="plate-{name}"' in key or f'id="{name}"' in key
     assert "Results" in text and "Comparison with the tutorial" in text
+    ids = re.findall(r'\bid="([^"]+)"', key)
+    assert len(ids) == len(set(ids)), "duplicate ids between the inline figures"
     # self-contained: nothing fetched, nothing run
     assert "<script" not in key and "<link" not in key and " src=" not in key
     assert not re.search(r"""(href|src)=["']https?:""", key)
