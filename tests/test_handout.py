@@ -282,6 +282,15 @@ def test_check_names_cover_what_the_case_offers():
     assert resolve(sol, "v(D)") == "v(D)"
 
 
+def test_check_reading_limit_follows_the_students_scale():
+    coarse = run("check", CASES / "s001-we6.toml", "--measured", "v_B=38",
+                 "--scale", "velocity=10 m/s")          # 0.5 mm = 0.5 m/s at 1 cm = 10 m/s
+    assert coarse.returncode == 0, coarse.stdout + coarse.stderr
+    assert "0.5 mm reading" in coarse.stdout and "1 cm = 10 m/s" in coarse.stdout
+    fine = run("check", CASES / "s001-we6.toml", "--measured", "v_B=38")
+    assert fine.returncode == 3
+
+
 def test_check_json():
     out = run("check", CASES / "s003-fig7.toml", "--measured", "cor_P2=1.96", "--json")
     data = json.loads(out.stdout)
