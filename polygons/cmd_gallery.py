@@ -76,8 +76,9 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
         if pdf:
             links += [f'<a href="{esc(pages["handout-pdf"])}">PDF</a>',
                       f'<a href="{esc(pages["worksheet-pdf"])}">worksheet PDF</a>']
-        tags = " <em>(synthetic geometry)</em>" if src.get("synthetic") else ""
-        rows.append(f"<tr><td>{esc(src.get('id', stem))}</td>"
+        tags = (" <em>(synthetic geometry)</em>" if src.get("synthetic")
+                and "SYNTHETIC" not in sol.scene.title.upper() else "")
+        rows.append(f"<tr><td class=\"id\">{esc(src.get('id', stem))}</td>"
                     f'<td><a href="{esc(pages["handout"])}">{esc(sol.scene.title)}</a>{tags}'
                     f"</td><td>{esc(src.get('mechanism', ''))}</td>"
                     f"<td>{esc(_summary(sol))}</td><td>{' · '.join(links)}</td></tr>")
@@ -97,6 +98,7 @@ def _index(rows: list[str], cases: Path) -> str:
             "th, td { border-bottom: 0.2mm solid #999; padding: 1mm 2mm; text-align: left; "
             "vertical-align: top; } th { border-bottom: 0.4mm solid #000; }\n"
             "tr.failed td { font-style: italic; } a { color: #003a8c; }\n"
+            "td.id { white-space: nowrap; }\n"
             "@page { size: A4 landscape; margin: 12mm; }\n</style>\n</head>\n<body>\n"
             "<h1>Velocity and acceleration polygons: handouts</h1>\n"
             f"<p>One handout (the answer key, constructions narrated step by step) and one "
