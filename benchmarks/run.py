@@ -400,11 +400,14 @@ def plot(results, stem):
     lines = []
     for method, (x, y) in series.items():
         c = next((v for k, v in colors.items() if method.startswith(k)), None)
-        lines.append(Line(method, x, y, "", c, 1.0))
-    return plot_xy("Speed against error (4 mechanisms per method; errors floored at 1e-17)",
+        marker = "s" if "1e6" in method else ("^" if "single" in method or "warm" in method
+                                               else "o")
+        lines.append(Line(method, x, y, "none", c, 1.0, marker))
+    return plot_xy("Speed against error: one point per mechanism (errors floored at 1e-17)",
                    "positions per second (drawing board: assumed 15 min per position)",
                    "max relative error (angle > 1°; drawing board: median)", lines, stem,
-                   logx=True, logy=True, annotate=False)
+                   logx=True, logy=True, annotate=False, width=10.0, height=5.5,
+                   legend_outside=True)
 
 
 def main(argv=None) -> int:

@@ -32,6 +32,7 @@ class Line:
     style: str = "-"          # matplotlib line style: '-', '--', ':'
     color: str | None = None
     width: float = 1.5
+    marker: str | None = None  # plot_xy: the marker ('o', 's', ...); style 'none' for no line
 
 
 @dataclass
@@ -130,7 +131,7 @@ def _robust_ylim(ax, panel: Panel) -> None:
 def plot_xy(title: str, xlabel: str, ylabel: str, series: Sequence[Line], stem: str | Path,
             formats: Sequence[str] = ("png", "svg"), logx: bool = False, logy: bool = False,
             annotate: bool = True, width: float = 7.5, height: float = 5.0,
-            dpi: int = 110) -> list[Path]:
+            dpi: int = 110, legend_outside: bool = False) -> list[Path]:
     """A single scatter/line chart (used by the benchmark's speed-vs-error plot): each
     :class:`Line` is drawn with markers; ``annotate`` writes its label next to its points."""
     stem = Path(stem)
@@ -141,8 +142,8 @@ def plot_xy(title: str, xlabel: str, ylabel: str, series: Sequence[Line], stem: 
         FigureCanvasAgg(fig)
         ax = fig.subplots()
         for ln in series:
-            ax.plot(ln.x, ln.y, ln.style, color=ln.color, lw=ln.width, label=ln.label,
-                    marker="o", ms=5)
+            ax.plot(ln.x, ln.y, linestyle=ln.style, color=ln.color, lw=ln.width,
+                    label=ln.label, marker=ln.marker or "o", ms=5)
             if annotate and len(ln.x):
                 ax.annotate(ln.label, xy=(ln.x[-1], ln.y[-1]), xytext=(4, 3),
                             textcoords="offset points", fontsize=7)
@@ -153,7 +154,10 @@ def plot_xy(title: str, xlabel: str, ylabel: str, series: Sequence[Line], stem: 
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel)
         ax.set_title(title, fontsize=10)
-        ax.legend(fontsize=7, loc="best", framealpha=0.85)
+        if legend_outside:
+            ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), framealpha=0.85)
+        else:
+            ax.legend(fontsize=7, loc="best", framealpha=0.85)
         fig.tight_layout()
         written = []
         for fmt in formats:
