@@ -50,7 +50,7 @@ _SIN_WARN = math.sin(math.radians(WARN_DEG))
 #: probe points used to find the reachable range and the toggles inside it
 PROBE = 4096
 #: default chunk of positions evaluated per numpy pass (memory and cache friendly)
-CHUNK = 1 << 13
+CHUNK = 1 << 12
 
 RPP = getattr(_plan_mod, "RPP", None)   # Scotch-yoke dyad (pin in the slot of a translating yoke)
 
