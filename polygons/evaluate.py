@@ -119,7 +119,14 @@ def _unit_of(r: np.ndarray) -> np.ndarray:
 
 
 def _f(x: float) -> str:
-    return f"{x:.5g}"
+    """Five significant figures written out in full, trailing zeros dropped, as a tutorial
+    would (156105, 0.80587, 0.05)."""
+    x = float(x)
+    if x == 0.0 or not 1e-4 <= abs(x) < 1e9:
+        return f"{x:.5g}"
+    decimals = max(0, 4 - math.floor(math.log10(abs(x))))
+    text = f"{x:.{decimals}f}"
+    return text.rstrip("0").rstrip(".") if "." in text else text
 
 
 def evaluate(plan: Plan, placement: Placement, steps: tuple[Step, ...]) -> Solution:
@@ -171,7 +178,7 @@ def _run(st: _State, s: Step) -> Step:
         w = st.omega[L]
         r = st.r(P, X)
         vec = centripetal(w, r)
-        return vector(vec, f"ω² × {P}{X} = {_f(w)}² × {_f(_n(r))} = {_f(_n(vec))} m/s²",
+        return vector(vec, f"ω² × {P}{X} = {_f(abs(w))}² × {_f(_n(r))} = {_f(_n(vec))} m/s²",
                       "m/s^2")
     if op == "crank_tangential":
         L, P, X = args
