@@ -30,15 +30,14 @@ the two angle thresholds below are the same numbers as there (a test checks it).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import cached_property
 from typing import Callable, Iterable, Mapping, Sequence
 
 import numpy as np
 
-from .errors import AssemblyError, ConstructionError, PolygonsError
-from .plan import RPR, RRP, RRR, CrankDyad, Image, Plan, SliderDriveDyad, make_plan
-from . import plan as _plan_mod
+from .errors import ConstructionError, PolygonsError
+from .plan import RPP, RPR, RRP, RRR, CrankDyad, Image, Plan, SliderDriveDyad, make_plan
 from .position import assemble
 from .scene import Crank, Scene
 
@@ -51,8 +50,6 @@ _SIN_WARN = math.sin(math.radians(WARN_DEG))
 PROBE = 4096
 #: default chunk of positions evaluated per numpy pass (memory and cache friendly)
 CHUNK = 1 << 12
-
-RPP = getattr(_plan_mod, "RPP", None)   # Scotch-yoke dyad (pin in the slot of a translating yoke)
 
 
 # ---------------------------------------------------------------- results
@@ -201,7 +198,7 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
         elif isinstance(d, Image):
             bp = scene.points[d.x]
             ops.append(_Op("image", d.x, (d.link, d.p, d.q, bp.along, bp.fraction, bp.left)))
-        elif RPP is not None and isinstance(d, RPP):
+        elif isinstance(d, RPP):
             g = scene.sliders[d.x]
             ops.append(_Op("rpp", d.x, (d.pin, g.through, g.direction, g.slot_direction)))
         else:  # pragma: no cover - a dyad type this module does not know yet
