@@ -10,7 +10,7 @@ same crank angles:
   (c) a closed-form numpy baseline (benchmarks/closed_form.py, textbook angle form);
   (d) central finite differences of the vectorised positions on the same grid;
   (e) the drawing board: the construction with a pencil (±0.25 mm) and protractor (±0.25°)
-      at a sensible scale, Monte Carlo (benchmarks/drawing.py);
+      at a sensible scale, Monte Carlo (polygons/drawing_board.py);
   (f) pylinkage (numba fast path for sweeps; its fastest single-position solve with
       derivatives) and (g) mechanism (fsolve per position), when installed
       (pip install -e .[bench]); each is skipped with the reason when it is not.
@@ -45,7 +45,7 @@ sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(ROOT))
 
 import closed_form as cf  # noqa: E402
-import drawing  # noqa: E402
+from polygons import drawing_board as drawing  # noqa: E402
 import others  # noqa: E402
 from polygons.evaluate import solve  # noqa: E402
 from polygons.scene import Branch, load_scene  # noqa: E402

@@ -4,7 +4,7 @@ Each measured value is compared with the construction's value.  A careful drawin
 to be within the larger of
 
 * what a careful drawing achieves: the 95th percentile of the error of that quantity in the
-  drawing-board emulation (``benchmarks/drawing.py``: pencil and rule ±0.25 mm, protractor
+  drawing-board emulation (``polygons/drawing_board.py``: pencil and rule ±0.25 mm, protractor
   ±0.25°, at this crank angle, fixed seed) for |v|, |a|, ω and α of the points and links it
   covers; for anything else, or when the emulation is not available (it lives in a source
   checkout), the case's stated drawing tolerance (``[source] drawing_tolerance``, default 2 %);
@@ -34,7 +34,7 @@ import re
 import sys
 from dataclasses import dataclass
 
-from .errors import PolygonsError, SceneError
+from .errors import UnsupportedError, PolygonsError, SceneError
 from .evaluate import Solution, link_ends, solve
 from .plan import Step
 from .quantities import dimension_of_quantity, quantity
@@ -371,25 +371,18 @@ def tolerance_for(sol: Solution, expr: str, expected: float, pct: float,
 
 def emulated_tolerances(sol: Solution, trials: int = 400) -> dict[str, float]:
     """{expression: relative tolerance}: the 95th percentile of a careful drawing's error from
-    the drawing-board emulation (``benchmarks/drawing.py`` in a source checkout: pencil and
-    rule ±0.25 mm, protractor ±0.25°), at this case's crank angle; {} when the emulation is
-    not available or does not cover the case.  Fixed seed, so the grading is reproducible."""
-    import importlib.util
-    from pathlib import Path
-
+    the drawing-board emulation (:mod:`polygons.drawing_board`: pencil and rule ±0.25 mm,
+    protractor ±0.25°), at this case's crank angle; {} when the emulation does not cover the
+    case (a slider driver, or a dyad it does not draw).  Fixed seed, so the grading is reproducible."""
+    from . import drawing_board
     from .scene import Crank
     drv = sol.scene.driver
     if not isinstance(drv, Crank):
         return {}
-    path = Path(__file__).resolve().parents[1] / "benchmarks" / "drawing.py"
-    if not path.is_file():
-        return {}
     try:
-        spec = importlib.util.spec_from_file_location("_polygons_drawing_board", path)
-        mod = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(mod)
-        result = mod.summary(mod.emulate(sol.scene, [drv.angle], trials=trials, seed=1))
-    except Exception:       # the emulation is optional: any failure falls back to the ± %
+        result = drawing_board.summary(drawing_board.emulate(sol.scene, [drv.angle],
+                                                             trials=trials, seed=1))
+    except UnsupportedError:  # a dyad the emulation does not draw: the stated ± % applies
         return {}
     out = {}
     for name, stats in result.items():
@@ -513,7 +506,7 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
                      f"(quantities the emulation does not cover)")
     else:
         lines.append(f"    stated           the case's drawing tolerance ±{pct * 100:g} % "
-                     f"(the drawing-board emulation, benchmarks/drawing.py, is not available)")
+                     f"(the drawing-board emulation does not cover this mechanism)")
     lines.append(f"    0.5 mm reading   a ruler reading at the scale drawn"
                  + (f" ({sc})" if sc else ""))
     lines.append("")

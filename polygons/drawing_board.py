@@ -23,7 +23,8 @@ import math
 
 import numpy as np
 
-from polygons.sweep import Program, compile_plan, run
+from .errors import UnsupportedError
+from .sweep import Program, compile_plan, run
 
 PENCIL_MM = 0.25
 PROTRACTOR_DEG = 0.25
@@ -151,7 +152,7 @@ def emulate(scene, thetas, trials: int = 200, seed: int = 1) -> dict:
                 a = paper.direction(_ang(_sub(S[pin], S[pivot])))
                 S[far] = paper.mark(_add(S[pivot], _polar(paper.length(far_len, ks), a)), ks)
         else:
-            raise ValueError(f"the drawing emulation has no {k} dyad")
+            raise UnsupportedError(f"the drawing-board emulation does not draw {k} dyads yet")
 
     def link_dir(a, b):          # the direction of a drawn link, transferred with a set square
         return paper.direction(_ang(_sub(S[b], S[a])))
