@@ -55,7 +55,7 @@ from . import quantities as kq
 from .errors import (PolygonsError, SceneError, UnitError, UnknownLabelError, UnsupportedError,
                      suggest)
 from .evaluate import Solution, solve
-from .scene import Crank, Scene, SliderDrive, _Reader
+from .scene import Crank, Scene, SliderDrive, _Reader, answer_fields, drawing_tolerance
 from .units import UNITS
 
 Vec = tuple[float, float]
@@ -668,48 +668,19 @@ def _answers(scene: Scene, r: _Reader) -> tuple[ForceAnswer, ...]:
     if not isinstance(raw, list):
         raise SceneError("write force answers as [[force_answers]] tables", file=scene.file,
                          where="force_answers")
-    default_tol = 0.03
-    if "drawing_tolerance" in scene.source:
-        default_tol = r.quantity(scene.source["drawing_tolerance"], "fraction",
-                                 "source.drawing_tolerance")
+    default_tol = drawing_tolerance(scene.source, r)
     out = []
     for i, spec in enumerate(raw):
         where = f"force_answers[{i}]"
-        r.table(spec, where, ("quantity", "unit", "tutorial", "exact", "mode", "positive",
-                              "state", "tolerance", "slip", "ref", "desc", "note", "sense"),
-                required=("quantity", "unit"))
-        unit = r.string(spec["unit"], where + ".unit")
-        if unit not in UNITS and unit not in EXTRA_UNITS:
-            raise UnitError(f"unknown unit {unit!r}", file=r.file, where=where + ".unit")
-
-        def number(key):
-            if key not in spec:
-                return None
-            v = spec[key]
-            if isinstance(v, bool) or not isinstance(v, (int, float)):
-                raise SceneError(f"{key} must be a plain number in {unit!r}, got {v!r}",
-                                 file=r.file, where=f"{where}.{key}")
-            return float(v)
-        mode = spec.get("mode", "abs")
-        if mode not in ("abs", "signed"):
-            raise SceneError(f"mode must be 'abs' or 'signed', got {mode!r}", file=r.file,
-                             where=where + ".mode")
+        fields = answer_fields(spec, r, where, default_tol, extra_keys=("positive", "state"),
+                               extra_units=EXTRA_UNITS)
         positive = r.sense(spec.get("positive", "CCW"), where + ".positive")
-        tol = default_tol
-        if "tolerance" in spec:
-            tol = r.quantity(spec["tolerance"], "fraction", where + ".tolerance")
-        slip = spec.get("slip", False)
-        if not isinstance(slip, bool):
-            raise SceneError("slip must be true or false", file=r.file, where=where + ".slip")
         state = spec.get("state")
         if state is not None and not isinstance(state, str):
             raise SceneError("state must be text ('release' or a rotation such as '30 deg')",
                              file=r.file, where=where + ".state")
-        q = r.string(spec["quantity"], where + ".quantity")
-        _check_expr(q, unit, scene, where)
-        out.append(ForceAnswer(q, unit, number("tutorial"), number("exact"), mode, positive,
-                               state, tol, slip, spec.get("ref"), spec.get("desc", q),
-                               spec.get("note", ""), spec.get("sense")))
+        _check_expr(fields["quantity"], fields["unit"], scene, where)
+        out.append(ForceAnswer(positive=positive, state=state, **fields))
     return tuple(out)
 
 

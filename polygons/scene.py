@@ -509,10 +509,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         raise SceneError("the acceleration polygon needs the velocity polygon: "
                          "solve = ['velocity', 'acceleration']", file=file, where="solve")
 
-    default_tol = 0.03
-    if "drawing_tolerance" in source:
-        default_tol = r.quantity(source["drawing_tolerance"], "fraction",
-                                 "source.drawing_tolerance")
+    default_tol = drawing_tolerance(source, r)
     answers = tuple(_parse_answer(i, a, r, default_tol) for i, a in
                     enumerate(data.get("answers", [])))
 
@@ -557,13 +554,24 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
                       file=r.file, where=where)
 
 
-def _parse_answer(i: int, spec, r: _Reader, default_tol: float) -> Answer:
-    where = f"answers[{i}]"
-    r.table(spec, where, ("quantity", "unit", "tutorial", "exact", "mode", "sense",
-                          "tolerance", "slip", "ref", "desc", "note"),
-            required=("quantity", "unit"))
+def drawing_tolerance(source, r: _Reader) -> float:
+    """The case's stated drawing tolerance (``[source] drawing_tolerance``), default 3 %."""
+    if "drawing_tolerance" in source:
+        return r.quantity(source["drawing_tolerance"], "fraction", "source.drawing_tolerance")
+    return 0.03
+
+
+ANSWER_KEYS = ("quantity", "unit", "tutorial", "exact", "mode", "sense", "tolerance", "slip",
+               "ref", "desc", "note")
+
+
+def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
+                  extra_keys: tuple[str, ...] = (), extra_units=()) -> dict:
+    """The fields every answer table shares (``[[answers]]``, ``[[force_answers]]``), checked:
+    unknown keys, units, plain numbers for tutorial/exact, mode, tolerance, slip."""
+    r.table(spec, where, ANSWER_KEYS + extra_keys, required=("quantity", "unit"))
     unit = r.string(spec["unit"], where + ".unit")
-    if unit not in UNITS and unit not in ("-", "1"):
+    if unit not in UNITS and unit not in ("-", "1") and unit not in extra_units:
         raise UnitError(f"unknown unit {unit!r}", file=r.file, where=where + ".unit")
 
     def number(key):
@@ -585,10 +593,15 @@ def _parse_answer(i: int, spec, r: _Reader, default_tol: float) -> Answer:
     slip = spec.get("slip", False)
     if not isinstance(slip, bool):
         raise SceneError("slip must be true or false", file=r.file, where=where + ".slip")
-    return Answer(quantity=r.string(spec["quantity"], where + ".quantity"), unit=unit,
-                  tutorial=number("tutorial"), exact=number("exact"), mode=mode,
-                  sense=spec.get("sense"), tolerance=tol, slip=slip, ref=spec.get("ref"),
-                  desc=spec.get("desc", spec["quantity"]), note=spec.get("note", ""))
+    quantity = r.string(spec["quantity"], where + ".quantity")
+    return dict(quantity=quantity, unit=unit, tutorial=number("tutorial"),
+                exact=number("exact"), mode=mode, sense=spec.get("sense"), tolerance=tol,
+                slip=slip, ref=spec.get("ref"), desc=spec.get("desc", quantity),
+                note=spec.get("note", ""))
+
+
+def _parse_answer(i: int, spec, r: _Reader, default_tol: float) -> Answer:
+    return Answer(**answer_fields(spec, r, f"answers[{i}]", default_tol))
 
 
 def unit_dimension(unit: str) -> str:
