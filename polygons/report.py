@@ -37,11 +37,13 @@ def check_answers(sol: Solution) -> list[AnswerCheck]:
         compared = abs(ours) if ans.mode == "abs" else ours
         diff = within = rel = None
         if ans.tutorial is not None:
-            base = abs(ans.tutorial) if ans.tutorial != 0 else 1.0
-            diff = (ans.tutorial - compared) / max(abs(compared), 1e-300) * 100.0 \
-                if compared != 0 else (ans.tutorial - compared) * 100.0
-            within = abs(ans.tutorial - compared) <= ans.tolerance * max(base, abs(compared)) \
-                if ans.tutorial != 0 else abs(compared) <= 1e-9 * max(1.0, abs(ans.tutorial))
+            if ans.tutorial == 0:      # a printed zero: no percentage; ours must vanish too
+                within = abs(compared) <= 1e-9
+            else:
+                if compared != 0:
+                    diff = (ans.tutorial - compared) / abs(compared) * 100.0
+                within = (abs(ans.tutorial - compared)
+                          <= ans.tolerance * max(abs(ans.tutorial), abs(compared)))
         if ans.exact is not None:
             exact = ans.exact
             rel = abs(compared - exact) / abs(exact) if exact != 0 else abs(compared)
@@ -219,5 +221,6 @@ def table(sol: Solution, *, steps: bool = True) -> str:
                 "within drawing tolerance" if c.within else
                 f"outside ±{a.tolerance * 100:g}%")
             lines.append(f"{a.desc[:34]:<34} {a.unit:<8} {_g(c.compared, 6):>12} "
-                         f"{_g(a.tutorial, 6):>10} {c.diff_pct:>8.2f}  {note}")
+                         f"{_g(a.tutorial, 6):>10} "
+                         f"{(f'{c.diff_pct:.2f}' if c.diff_pct is not None else '-'):>8}  {note}")
     return "\n".join(lines) + "\n"
