@@ -66,16 +66,21 @@ def test_case_senses_agree_with_tutorial(path, solved):
             assert (c.ours > 0) == (a.sense == "CCW"), f"{a.quantity}: tutorial says {a.sense}"
 
 
-@pytest.mark.parametrize("path", FILES, ids=IDS)
-def test_case_exact_values_are_the_reference_values(path):
-    """The `exact` numbers in the scene files are copied from the reference, not from us."""
+def reference_case(scene, path):
+    """The reference record of ``scene`` (skips when the reference or the record is absent)."""
     if not REFERENCE.exists():
         pytest.skip(f"reference {REFERENCE} not present")
     ref = {c["id"]: c for c in json.loads(REFERENCE.read_text())["cases"]}
-    scene = load_scene(path)
     if scene.source.get("id") not in ref and scene.source.get("synthetic"):
         pytest.skip(f"{path.name}: a synthetic scene with no reference record")
-    case = ref[scene.source["id"]]
+    return ref[scene.source["id"]]
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_case_exact_values_are_the_reference_values(path):
+    """The `exact` numbers in the scene files are copied from the reference, not from us."""
+    scene = load_scene(path)
+    case = reference_case(scene, path)
     for a in scene.answers:
         if a.ref is None or a.exact is None:
             continue
@@ -90,13 +95,8 @@ def test_case_exact_values_are_the_reference_values(path):
 
 @pytest.mark.parametrize("path", FILES, ids=IDS)
 def test_case_slips_are_those_of_the_reference(path):
-    if not REFERENCE.exists():
-        pytest.skip(f"reference {REFERENCE} not present")
-    ref = {c["id"]: c for c in json.loads(REFERENCE.read_text())["cases"]}
     scene = load_scene(path)
-    if scene.source.get("id") not in ref and scene.source.get("synthetic"):
-        pytest.skip(f"{path.name}: a synthetic scene with no reference record")
-    case = ref[scene.source["id"]]
+    case = reference_case(scene, path)
     slips_ref = {k for k, v in case["tutorial_answers"].items() if v["slip"]}
     slips_ref |= {v["exact_key"] for v in case["tutorial_answers"].values() if v["slip"]}
     slips_ours = {a.ref for a in scene.answers if a.slip}
