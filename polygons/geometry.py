@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
-from .errors import ParallelLinesError
+from .errors import ConstructionError, ParallelLinesError
 
 #: below this angle two construction lines are treated as parallel (the position is a toggle);
 #: an exact toggle computed in floating point leaves ~sqrt(eps) ≈ 1e-6° of angle, hence 1e-5°
@@ -70,17 +70,30 @@ def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
             f"the {l1.name or 'first line'} and the {l2.name or 'second line'} are parallel "
             f"(angle {angle:.2g}°): the mechanism is at a toggle or change point and this "
             f"point of the polygon is undefined", step=step)
-    p = np.array(l1.point)
-    q = np.array(l2.point)
-    u = np.array(l1.direction)
-    v = np.array(l2.direction)
+    p, q, u, v = (_flush(np.array(x)) for x in (l1.point, l2.point, l1.direction,
+                                                 l2.direction))
     scale = max(float(np.hypot(*p)), float(np.hypot(*q)), float(np.hypot(*(p - q))), 1e-300)
     half = 2.0 * scale / math.sin(math.radians(angle)) + scale
-    s1 = shapely.LineString([p - half * u, p + half * u])
-    s2 = shapely.LineString([q - half * v, q + half * v])
+    s1 = shapely.LineString(_flush(np.array([p - half * u, p + half * u])))
+    s2 = shapely.LineString(_flush(np.array([q - half * v, q + half * v])))
     hit = shapely.intersection(s1, s2)
     if hit.is_empty or hit.geom_type != "Point":
         raise ParallelLinesError(
             f"the {l1.name or 'first line'} and the {l2.name or 'second line'} do not meet "
             f"in a single point (got {hit.geom_type})", step=step)
-    return Intersection((float(hit.x), float(hit.y)), angle)
+    x = np.array([hit.x, hit.y])
+    # the point must lie on both lines (to rounding of the segments' length)
+    off = max(abs(float(u[0] * (x - p)[1] - u[1] * (x - p)[0])),
+              abs(float(v[0] * (x - q)[1] - v[1] * (x - q)[0])))
+    if not off <= 1e-9 * half:
+        raise ConstructionError(
+            f"the intersection of the {l1.name or 'first line'} and the "
+            f"{l2.name or 'second line'} came back {off:.3g} off the lines", step=step)
+    return Intersection((float(x[0]), float(x[1])), angle)
+
+
+def _flush(a: np.ndarray) -> np.ndarray:
+    """Zero the components below 1e-200 in magnitude: GEOS mishandles subnormal coordinates
+    (a vertical segment at x = -5e-314 met a horizontal one at its end point), and nothing a
+    scene can state is that small (a 1 µm link at 1e-3 rad/s moves at 1e-9 m/s)."""
+    return np.where(np.abs(a) < 1e-200, 0.0, a)

@@ -62,6 +62,14 @@ def test_intersect_far_away_point_of_nearly_parallel_lines():
     assert hit.angle_deg == pytest.approx(0.01, rel=1e-9)
 
 
+def test_subnormal_coordinates_do_not_derail_the_intersection():
+    # found by hypothesis: a crank at 2e-313 rad put a vertical line at x = -5e-314, and GEOS
+    # returned the segment's end point instead of the crossing
+    hit = geometry.intersect(geometry.line((-5.215016856e-314, 0.234375), (-0.0, 1.0)),
+                             geometry.line((0.0, 0.0), (1.0, 0.0)))
+    assert hit.point == pytest.approx((0.0, 0.0), abs=1e-300)
+
+
 def test_parallel_lines_raise_a_named_error():
     with pytest.raises(ParallelLinesError, match="c line.*slider line.*parallel"):
         geometry.intersect(geometry.line((0, 0), (1, 0), "c line"),
