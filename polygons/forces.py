@@ -1454,12 +1454,15 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
         raise UnknownLabelError(f"unknown link or slider {name!r} in {term!r}: "
                                 f"{suggest(name, model.bodies)}", file=file)
 
+    def named(items, kind, name):
+        for x in items:
+            if x.name == name:
+                return x
+        raise UnknownLabelError(f"unknown {kind} {name!r} in {term!r}: "
+                                f"{suggest(name, [x.name for x in items])}", file=file)
+
     def item(name):
-        for m in model.masses:
-            if m.name == name:
-                return m
-        raise UnknownLabelError(f"unknown mass {name!r} in {term!r}: "
-                                f"{suggest(name, [m.name for m in model.masses])}", file=file)
+        return named(model.masses, "mass", name)
 
     def point(label):
         if label not in sol.points:
@@ -1468,18 +1471,10 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
         return _pos(sol, label)
 
     def applied(name):
-        for f in model.forces:
-            if f.name == name:
-                return f
-        raise UnknownLabelError(f"unknown force {name!r} in {term!r}: "
-                                f"{suggest(name, [f.name for f in model.forces])}", file=file)
+        return named(model.forces, "force", name)
 
     def spring(name):
-        for s in model.springs:
-            if s.name == name:
-                return s
-        raise UnknownLabelError(f"unknown spring {name!r} in {term!r}: "
-                                f"{suggest(name, [s.name for s in model.springs])}", file=file)
+        return named(model.springs, "spring", name)
 
     def inert(name) -> Inertia:
         item(name)

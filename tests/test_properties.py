@@ -9,6 +9,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import analytic
+from scenes import crank_driver, m, rad, slider_crank_case
 from polygons.errors import AssemblyError, ParallelLinesError
 from polygons.evaluate import solve
 from polygons.scene import parse_scene
@@ -24,22 +25,6 @@ settings_ = settings(max_examples=150, deadline=None,
                      suppress_health_check=[HealthCheck.filter_too_much])
 
 
-def m(x):
-    return f"{float(x)!r} m"
-
-
-def rad(x):
-    return f"{float(x)!r} rad"
-
-
-def crank_driver(link, theta, omega, alpha):
-    d = {"crank": link, "angle": rad(theta), "omega": f"{abs(omega)!r} rad/s",
-         "sense": "CCW" if omega > 0 else "CW"}
-    if alpha:
-        d |= {"alpha": f"{abs(alpha)!r} rad/s^2", "alpha_sense": "CCW" if alpha > 0 else "CW"}
-    return d
-
-
 def close(ours, ref, scale):
     return float(np.hypot(*(np.asarray(ours) - np.asarray(ref)))) <= TOL * scale
 
@@ -48,20 +33,8 @@ def close(ours, ref, scale):
 @given(r=lengths, ratio=st.floats(1.2, 6.0), theta=angles, omega=omegas, alpha=alphas,
        line_dir=angles, offset=st.floats(-0.8, 0.8), branch=st.sampled_from([1, -1]))
 def test_slider_crank_matches_closed_form(r, ratio, theta, omega, alpha, line_dir, offset, branch):
+    scene, ref = slider_crank_case(r, ratio, theta, omega, alpha, line_dir, offset, branch)
     L = r * ratio
-    e = np.array([math.cos(line_dir), math.sin(line_dir)])
-    through = offset * r * np.array([-e[1], e[0]])
-    try:
-        ref = analytic.slider_crank((0, 0), r, L, theta, omega, alpha, through, line_dir, branch)
-    except ValueError:
-        assume(False)
-    scene = parse_scene({
-        "ground": {"O": ["0 m", "0 m"]},
-        "links": {"OA": m(r), "AB": m(L)},
-        "driver": crank_driver("OA", theta, omega, alpha),
-        "sliders": {"B": {"through": [m(through[0]), m(through[1])], "direction": rad(line_dir)}},
-        "assembly": {"B": {"near": [m(ref["B"][0]), m(ref["B"][1])]}},
-    })
     sol = solve(scene)
     assume(sol.min_intersection_angle_deg > MIN_ANGLE)
     vs, as_ = abs(omega) * r, (omega ** 2 + abs(alpha)) * r

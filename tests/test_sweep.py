@@ -12,6 +12,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import analytic
+from scenes import crank_driver, slider_crank_case
 from conftest import CASES, ROOT, case_files
 from polygons import sweep as sweep_mod
 from polygons.cli import main
@@ -314,11 +315,7 @@ props = settings(max_examples=60, deadline=None, suppress_health_check=[HealthCh
 
 
 def _driver(theta, omega, alpha, link="AB"):
-    d = {"crank": link, "angle": f"{theta!r} rad", "omega": f"{abs(omega)!r} rad/s",
-         "sense": "CCW" if omega > 0 else "CW"}
-    if alpha:
-        d |= {"alpha": f"{abs(alpha)!r} rad/s^2", "alpha_sense": "CCW" if alpha > 0 else "CW"}
-    return d
+    return crank_driver(link, theta, omega, alpha)
 
 
 @props
@@ -369,21 +366,8 @@ def test_random_four_bars_sweep_like_the_closed_form(ad, ab, bc, cd, theta, omeg
        line_dir=angles, offset=st.floats(-0.8, 0.8), branch=st.sampled_from([1, -1]))
 def test_random_slider_cranks_sweep_like_the_closed_form(r, ratio, theta, omega, alpha,
                                                           line_dir, offset, branch):
+    scene, ref = slider_crank_case(r, ratio, theta, omega, alpha, line_dir, offset, branch)
     L = r * ratio
-    e = np.array([math.cos(line_dir), math.sin(line_dir)])
-    through = offset * r * np.array([-e[1], e[0]])
-    try:
-        ref = analytic.slider_crank((0, 0), r, L, theta, omega, alpha, through, line_dir, branch)
-    except ValueError:
-        assume(False)
-    scene = parse_scene({
-        "ground": {"O": ["0 m", "0 m"]},
-        "links": {"OA": f"{r!r} m", "AB": f"{L!r} m"},
-        "driver": _driver(theta, omega, alpha, "OA"),
-        "sliders": {"B": {"through": [f"{float(through[0])!r} m", f"{float(through[1])!r} m"],
-                          "direction": f"{line_dir!r} rad"}},
-        "assembly": {"B": {"near": [f"{float(ref['B'][0])!r} m", f"{float(ref['B'][1])!r} m"]}},
-    })
     sw = sweep(scene, inputs=[theta])
     assume(sw.angle_deg[0] > 1.0)
     vs, as_ = abs(omega) * r, (omega ** 2 + abs(alpha)) * r
