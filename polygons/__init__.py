@@ -1,15 +1,40 @@
 """polygons: planar mechanisms solved the way a drawing board does.
 
-    scene (TOML) → plan (dyads → construction steps) → evaluate (numbers) → render
+    scene (TOML) → plan (dyads → construction steps) → interpreters (numbers) → render
 
 >>> from polygons import load_scene, solve
 >>> sol = solve(load_scene("cases/s003-fig7.toml"))      # doctest: +SKIP
 >>> sol.links["O4P4"].omega                                # doctest: +SKIP
 1.2145955942749975
-"""
-from .errors import PolygonsError
-from .evaluate import Solution, solve
-from .scene import Scene, load_scene
 
-__all__ = ["load_scene", "solve", "Scene", "Solution", "PolygonsError"]
+Nothing is imported until it is used (``import polygons`` stays cheap, so the command line
+starts fast): the names below are resolved on first access.
+"""
+from __future__ import annotations
+
+import importlib
+
+#: public name -> module that defines it
+_EXPORTS = {
+    "load_scene": "polygons.scene",
+    "Scene": "polygons.scene",
+    "solve": "polygons.evaluate",
+    "Solution": "polygons.evaluate",
+    "PolygonsError": "polygons.errors",
+}
+
+__all__ = sorted(_EXPORTS)
 __version__ = "0.1.0"
+
+
+def __getattr__(name: str):
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'polygons' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(list(globals()) + list(_EXPORTS))

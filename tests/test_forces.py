@@ -436,7 +436,7 @@ def test_forces_on_a_scene_without_masses_is_an_error():
 @pytest.mark.parametrize("name", ["s002-ex3.17.toml", "s001-we8.toml", "s000-d225-2003-q3.toml"])
 def test_force_polygons_close_and_svgs_are_deterministic(name, analysed):
     from diagrams.svg import to_svg
-    from polygons.fbd import drawings
+    from diagrams.fbd import drawings
     an = analysed(CASES / name)
     first = drawings(an)
     assert any(stem.startswith("fbd-") for stem, _ in first)

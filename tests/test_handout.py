@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from conftest import CASES, case_files
-from polygons.cmd_check import grade, offered, parse_measured, resolve
+from polygons.cli.check import grade, offered, parse_measured, resolve
 from polygons.evaluate import solve
 from polygons.quantities import quantity
 from polygons.report import to_unit
@@ -235,7 +235,7 @@ def test_check_grades_coriolis_and_sliding_on_the_quick_return():
 
 def test_check_tolerance_is_at_least_half_a_millimetre_at_the_scale():
     sol = solve(load_scene(str(CASES / "s001-we6.toml")))
-    from polygons.cmd_check import diagram_scales
+    from polygons.cli.check import diagram_scales
     sc = diagram_scales(sol)
     [g] = grade(sol, parse_measured(sol, ["v_B=38.4"]), 0.0001, sc)
     assert g.tolerance == pytest.approx(0.5 / sc["velocity"].mm_per_si)
@@ -252,7 +252,7 @@ def test_check_uses_the_emulated_tolerance_where_there_is_one():
 
 
 def test_check_uses_the_drawing_board_emulation():
-    from polygons.cmd_check import emulated_tolerances
+    from polygons.cli.check import emulated_tolerances
     sol = solve(load_scene(str(CASES / "s001-we6.toml")))
     tol = emulated_tolerances(sol, trials=100)
     assert "v(C)" in tol and "alpha(CD)" in tol

@@ -10,10 +10,10 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from .errors import PolygonsError
-from .evaluate import solve
-from .report import check_answers
-from .scene import load_scene
+from ..errors import PolygonsError
+from ..evaluate import solve
+from ..report import check_answers
+from ..scene import load_scene
 
 
 def register(sub) -> None:

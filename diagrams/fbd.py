@@ -16,8 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .forces import Analysis, State, _pos, contact_force
-from .errors import PolygonsError, UnknownLabelError
+from polygons.forces import Analysis, State, _pos, contact_force
+from polygons.errors import PolygonsError, UnknownLabelError
 
 
 @dataclass(frozen=True)
@@ -99,10 +99,10 @@ def _dir(v) -> float:
 
 def drawings(an: Analysis):
     """(file stem, Drawing) for every state and body that carries a force."""
-    from diagrams.labels import bounds, text_box
-    from diagrams.layout import arrow_head, compose
-    from diagrams.model import Arrow, Circle, Group, Polyline, Segment, Text
-    from diagrams.scale import Scale, round_up
+    from .labels import bounds, text_box
+    from .layout import arrow_head, compose
+    from .model import Arrow, Circle, Group, Polyline, Segment, Text
+    from .scale import Scale, round_up
 
     out = []
     model = an.model
@@ -266,7 +266,7 @@ def drawings(an: Analysis):
 
 
 def _pts(it):
-    from diagrams.model import Arrow, Circle, Polyline, Segment, Text
+    from .model import Arrow, Circle, Polyline, Segment, Text
     if isinstance(it, Segment):
         return [it.a, it.b]
     if isinstance(it, Polyline):
@@ -282,7 +282,7 @@ def _pts(it):
 
 def write(an: Analysis, outdir) -> list[Path]:
     """Write every free-body diagram and force polygon as ``outdir/<name>.svg``."""
-    from diagrams.svg import to_svg
+    from .svg import to_svg
     outdir = Path(outdir)
     if outdir.exists() and not outdir.is_dir():
         raise PolygonsError(f"{outdir} exists and is not a folder", where=str(outdir))

@@ -11,11 +11,11 @@ import sys
 
 import numpy as np
 
-from .errors import PolygonsError, SceneError
-from .forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
+from ..errors import PolygonsError, SceneError
+from ..forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
                      spring_state)
-from .report import json_text
-from .scene import Crank, load_scene
+from ..report import json_text
+from ..scene import Crank, load_scene
 
 
 def register(sub) -> None:
@@ -39,7 +39,7 @@ def run(args) -> int:
     an = analyse(scene)
     paths = []
     if args.svg:
-        from .fbd import write
+        from diagrams.fbd import write
         paths = write(an, args.svg)
     text = json_text(to_dict(an)) if args.json else forces_table(an)
     if paths and not args.json:

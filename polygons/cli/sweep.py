@@ -20,9 +20,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import SceneError, UnknownKeyError, UnknownLabelError, suggest
-from .scene import Crank, Scene, load_scene
-from .sweep import Sweep, harmonic, sweep
+from ..errors import SceneError, UnknownKeyError, UnknownLabelError, suggest
+from ..scene import Crank, Scene, load_scene
+from ..sweep import Sweep, harmonic, sweep
 
 SWEEP_KEYS = ("points", "links", "steps", "shm", "unit")
 #: above this many positions the summary draws a progress bar (on a terminal)

@@ -34,12 +34,12 @@ import re
 import sys
 from dataclasses import dataclass
 
-from .errors import UnsupportedError, PolygonsError, SceneError
-from .evaluate import Solution, link_ends, solve
-from .plan import Step
-from .quantities import dimension_of_quantity, quantity
-from .scene import load_scene
-from .units import parse_quantity
+from ..errors import UnsupportedError, PolygonsError, SceneError
+from ..evaluate import Solution, link_ends, solve
+from ..plan import Step
+from ..quantities import dimension_of_quantity, quantity
+from ..scene import load_scene
+from ..units import parse_quantity
 
 #: textbook prefix -> quantities function
 PREFIX = {"v": "v", "a": "a", "omega": "omega", "w": "omega", "alpha": "alpha", "an": "an",
@@ -374,8 +374,8 @@ def emulated_tolerances(sol: Solution, trials: int = 400) -> dict[str, float]:
     the drawing-board emulation (:mod:`polygons.drawing_board`: pencil and rule ±0.25 mm,
     protractor ±0.25°), at this case's crank angle; {} when the emulation does not cover the
     case (a slider driver, or a dyad it does not draw).  Fixed seed, so the grading is reproducible."""
-    from . import drawing_board
-    from .scene import Crank
+    from .. import drawing_board
+    from ..scene import Crank
     drv = sol.scene.driver
     if not isinstance(drv, Crank):
         return {}
@@ -453,7 +453,7 @@ def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
 
 def _tutorial_note(sol: Solution, expr: str, value: float) -> str:
     """When the value matches the tutorial's printed answer that differs from the exact one."""
-    from .report import to_unit
+    from ..report import to_unit
     for ans in sol.scene.answers:
         if ans.quantity != expr or ans.tutorial is None or ans.mode != "abs":
             continue

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import sys
 
-from .evaluate import solve
-from .scene import load_scene
+from ..evaluate import solve
+from ..scene import load_scene
 
 
 def add_diagram_options(p) -> None:

@@ -3,11 +3,11 @@ from __future__ import annotations
 
 import sys
 
-from .cmd_forces import forces_table, to_dict
-from .evaluate import solve
-from .forces import analyse, has_forces
-from .report import json_text, table, to_json
-from .scene import load_scene
+from .forces import forces_table, to_dict
+from ..evaluate import solve
+from ..forces import analyse, has_forces
+from ..report import json_text, table, to_json
+from ..scene import load_scene
 
 
 def register(sub) -> None:
@@ -21,7 +21,7 @@ def register(sub) -> None:
                                                           "the table")
     p.add_argument("--svg", metavar="DIR", help="also write the labelled SVG diagrams (as "
                                                "'polygons draw -o DIR') to this folder")
-    from .cmd_draw import add_diagram_options
+    from .draw import add_diagram_options
     add_diagram_options(p)
     p.set_defaults(func=run)
 
@@ -34,7 +34,7 @@ def run(args) -> int:
     if has_forces(scene):            # bad force tables fail before anything is written
         forces = analyse(scene)
     if args.svg:
-        from .cmd_draw import write_diagrams
+        from .draw import write_diagrams
         write_diagrams(sol, args, args.svg)
     if args.json:
         data = to_json(sol)

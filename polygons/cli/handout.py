@@ -11,8 +11,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from .evaluate import solve
-from .scene import load_scene
+from ..evaluate import solve
+from ..scene import load_scene
 
 
 def register(sub) -> None:

@@ -1,0 +1,74 @@
+"""``polygons`` command line.  Every bad input ends in one readable line and a non-zero exit.
+
+Each command lives in its own module of this package with ``register(subparsers)``.  Only the
+module of the command being run is imported (``polygons --help`` imports none of them, so it
+starts without numpy); the table below gives the one-line help shown in the command list.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+#: command -> (module, one-line help for the command list)
+COMMANDS = {
+    "solve": ("polygons.cli.solve", "solve a scene: velocities, accelerations, ω, α, steps"),
+    "sweep": ("polygons.cli.sweep", "solve a scene over a full input revolution: CSV + plots"),
+    "draw": ("polygons.cli.draw", "draw the space, velocity and acceleration diagrams (SVG)"),
+    "forces": ("polygons.cli.forces", "forces: inertia forces, input torque, pin reactions, "
+                                      "free-body diagrams"),
+    "check": ("polygons.cli.check", "grade a student's measured values against the "
+                                    "construction"),
+    "handout": ("polygons.cli.handout", "write a printable handout (HTML, optional PDF) or "
+                                        "worksheet"),
+    "gallery": ("polygons.cli.gallery", "write every case's handout and worksheet and an "
+                                        "index page"),
+}
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit 2, like every other error
+        self.exit(2, f"polygons: error: {message}\n")
+
+
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The argument parser; only ``command``'s module is imported (all of them when None)."""
+    parser = _Parser(prog="polygons",
+                     description="Velocity and acceleration polygons of planar mechanisms, "
+                                 "constructed step by step as on a drawing board.")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+    for name, (module, help_text) in COMMANDS.items():
+        if command is None or name == command:
+            importlib.import_module(module).register(sub)
+        else:
+            sub.add_parser(name, help=help_text, add_help=False)
+    return parser
+
+
+def _command_of(argv: list[str]) -> str | None:
+    for arg in argv:
+        if not arg.startswith("-"):
+            return arg if arg in COMMANDS else ""
+    return ""
+
+
+def main(argv=None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser(_command_of(argv))
+    args = parser.parse_args(argv)
+    from ..errors import PolygonsError
+    try:
+        return int(args.func(args) or 0)
+    except PolygonsError as exc:
+        print(f"polygons: error: {exc}", file=sys.stderr)
+        return 1
+    except BrokenPipeError:
+        return 0
+    except OSError as exc:
+        print(f"polygons: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
