@@ -14,12 +14,14 @@ from typing import Iterable, Mapping
 import numpy as np
 
 from . import geometry
-from .errors import ConstructionError, PolygonsError
-from .plan import Plan, Step, Vertices, construction, make_plan
+from .errors import PolygonsError
+from .interpret import Backend, Kernel, terms_of
+from .narrate import substitute
+from .plan import Plan, construction, make_plan
 from .position import Placement, assemble
 from .scene import Crank, Scene
-from .theorems import (angular_acceleration, angular_velocity, centripetal, coriolis, cross,
-                       perp, relative_velocity, tangential)
+from .steps import Step, Vertices
+from .theorems import angular_acceleration, angular_velocity
 
 Vec = tuple[float, float]
 
@@ -86,199 +88,50 @@ def link_ends(scene: Scene, name: str) -> tuple[str, str]:
     raise KeyError(name)
 
 
-class _State:
-    def __init__(self, plan: Plan, placement: Placement):
-        self.scene = plan.scene
-        self.pos = {k: np.array(v) for k, v in placement.points.items()}
-        self.names = Vertices(self.scene)
-        self.vx = {"velocity": {self.names.pole: np.zeros(2)},
-                   "acceleration": {self.names.pole: np.zeros(2)}}
-        self.omega: dict[str, float] = {}
-        self.alpha: dict[str, float] = {}
-        self.lines: dict[tuple[str, int], geometry.Line] = {}
-        self.slide_v: dict[str, float] = {}
-        self.slide_a: dict[str, float] = {}
-        self.cor: dict[str, np.ndarray] = {}
-        drv = self.scene.driver
-        if isinstance(drv, Crank):
-            self.omega[drv.link] = drv.omega
-            self.alpha[drv.link] = drv.alpha
+class Exact(Backend):
+    """The staged solver's backend: construction lines as :class:`geometry.Line` and their
+    intersections by shapely on paper-sized segments (:func:`geometry.intersect`)."""
 
-    def r(self, p: str, x: str) -> np.ndarray:
-        return self.pos[x] - self.pos[p]
+    def line(self, anchor, direction, name):
+        ln = geometry.line(anchor, direction, name)
+        return np.array(ln.point), np.array(ln.direction), ln
 
-    def vertex(self, diagram: str, name: str) -> np.ndarray:
-        return self.vx[diagram][name]
-
-    def of(self, diagram: str, label: str) -> np.ndarray:
-        return self.vx[diagram][self.names.of(label)]
+    def intersect(self, l1, l2, s: Step):
+        hit = geometry.intersect(l1[2], l2[2], step=f"{s.diagram} {s.number} ({s.draws})")
+        return np.array(hit.point), math.sin(math.radians(hit.angle_deg)), hit.angle_deg
 
 
-def _unit_of(r: np.ndarray) -> np.ndarray:
-    return r / float(np.hypot(*r))
-
-
-def _f(x: float) -> str:
-    """Five significant figures written out in full, trailing zeros dropped, as a tutorial
-    would (156105, 0.80587, 0.05)."""
-    x = float(x)
-    if x == 0.0 or not 1e-4 <= abs(x) < 1e9:
-        return f"{x:.5g}"
-    decimals = max(0, 4 - math.floor(math.log10(abs(x))))
-    text = f"{x:.{decimals}f}"
-    return text.rstrip("0").rstrip(".") if "." in text else text
+def start_kernel(plan: Plan, placement: Placement, backend: Backend) -> Kernel:
+    """A kernel at the placed position, with the driver's ω and α known."""
+    scene = plan.scene
+    pos = {k: np.array(v) for k, v in placement.points.items()}
+    omega, alpha = {}, {}
+    drv = scene.driver
+    if isinstance(drv, Crank):
+        omega[drv.link] = drv.omega
+        alpha[drv.link] = drv.alpha
+    return Kernel(scene, pos, Vertices(scene), backend, omega, alpha)
 
 
 def evaluate(plan: Plan, placement: Placement, steps: tuple[Step, ...]) -> Solution:
-    st = _State(plan, placement)
-    scene = st.scene
+    """Run ``steps`` with the exact backend and put the numbers into every step."""
+    k = start_kernel(plan, placement, Exact())
+    scene = plan.scene
     done: list[Step] = []
     for step in steps:
         try:
-            done.append(_run(st, step))
+            at, vec, point, direction, value, unit, angle, terms = k.run(step)
         except PolygonsError as exc:
             raise exc.located(file=scene.file,
                               step=f"{step.diagram} {step.number} ({step.draws})") from None
-    return _collect(plan, placement, st, tuple(done))
-
-
-def _run(st: _State, s: Step) -> Step:
-    scene, d = st.scene, s.diagram
-    vel = d == "velocity"
-    vx = st.vx[d]
-    start = vx[s.start] if s.start is not None else None
-    op, args = s.op, s.args
-
-    def vector(vec, substituted, unit):
-        end = start + vec
-        vx[s.end] = end
-        return replace(s, at=_t(start), vector=_t(vec), point=_t(end),
-                       substituted=substituted, unit=unit)
-
-    def new_line(direction, anchor, name):
-        ln = geometry.line(anchor, direction, name)
-        st.lines[(d, s.number)] = ln
-        return replace(s, at=_t(ln.point), direction=ln.direction)
-
-    if op == "crank_velocity":
-        L, P, X = args
-        w = st.omega[L]
-        r = st.r(P, X)
-        vec = relative_velocity(w, r)
-        return vector(vec, f"(v_{X})_{P} = ω × {P}{X} = {_f(abs(w))} × {_f(_n(r))} = "
-                           f"{_f(_n(vec))} m/s", "m/s")
-    if op == "slider_drive":
-        (X,) = args
-        e = np.array(scene.sliders[X].direction)
-        val = scene.driver.velocity if vel else scene.driver.acceleration
-        return vector(val * e, f"{_f(val)} {'m/s' if vel else 'm/s²'} along the guide",
-                      "m/s" if vel else "m/s^2")
-    if op == "centripetal":
-        L, P, X = args
-        w = st.omega[L]
-        r = st.r(P, X)
-        vec = centripetal(w, r)
-        return vector(vec, f"ω² × {P}{X} = {_f(abs(w))}² × {_f(_n(r))} = {_f(_n(vec))} m/s²",
-                      "m/s^2")
-    if op == "crank_tangential":
-        L, P, X = args
-        al = st.alpha[L]
-        r = st.r(P, X)
-        vec = tangential(al, r)
-        return vector(vec, f"α × {P}{X} = {_f(abs(al))} × {_f(_n(r))} = {_f(_n(vec))} m/s²",
-                      "m/s^2")
-    if op == "line_perp":
-        P, X = args
-        return new_line(perp(st.r(P, X)), start, s.draws)
-    if op == "line_along":
-        P, X = args
-        return new_line(st.r(P, X), start, s.draws)
-    if op == "line_guide":
-        (X,) = args
-        return new_line(np.array(scene.sliders[X].direction), start, s.draws)
-    if op == "line_slot":       # the slot of a translating yoke: a fixed direction
-        (X,) = args
-        return new_line(np.array(scene.sliders[X].slot_direction), start, s.draws)
-    if op == "coriolis_offset_line":
-        (A,) = args
-        slot = scene.slots[A]
-        e = _unit_of(st.r(slot.pivot, A))
-        w = st.omega[slot.lever]
-        a_cor = coriolis(w, st.slide_v[A] * e)
-        st.cor[A] = a_cor
-        out = new_line(e, st.of(d, A) - a_cor, s.draws)
-        return replace(out, vector=_t(-a_cor), substituted=(
-            f"2ωv = 2 × {_f(abs(w))} × {_f(abs(st.slide_v[A]))} = {_f(_n(a_cor))} m/s²"),
-            unit="m/s^2")
-    if op == "coriolis":
-        (A,) = args
-        a_cor = st.cor[A]
-        return vector(a_cor, f"2ωv = {_f(_n(a_cor))} m/s²", "m/s^2")
-    if op == "join":
-        vec = vx[s.end] - start
-        return replace(s, at=_t(start), vector=_t(vec), point=_t(vx[s.end]),
-                       substituted=f"{s.start}{s.end} = {_f(_n(vec))} m/s²", unit="m/s^2")
-    if op == "intersect":
-        l1, l2 = (st.lines[(d, n)] for n in s.lines)
-        hit = geometry.intersect(l1, l2, step=f"{d} {s.number} ({s.draws})")
-        p = np.array(hit.point)
-        vx[s.end] = p
-        unit = "m/s" if vel else "m/s^2"
-        return replace(s, point=hit.point, angle_deg=hit.angle_deg, unit=unit,
-                       substituted=f"{st.names.pole}{s.end} = {_f(_n(p))} {unit.replace('^2', '²')}"
-                                   f" (lines meet at {hit.angle_deg:.3g}°)")
-    if op == "omega":
-        L, P, Q = args
-        r = st.r(P, Q)
-        rel = st.of(d, Q) - st.of(d, P)
-        w = angular_velocity(r, rel)
-        st.omega[L] = w
-        return replace(s, value=w, unit="rad/s", substituted=(
-            f"ω_{L} = {_f(_n(rel))} / {_f(_n(r))} = {_f(abs(w))} rad/s {_sense(w)}"))
-    if op == "alpha":
-        L, P, X = args
-        r = st.r(P, X)
-        rel = st.of(d, X) - st.of(d, P)
-        al = angular_acceleration(r, rel)
-        st.alpha[L] = al
-        at = abs(cross(_unit_of(r), rel))
-        return replace(s, value=al, unit="rad/s^2", substituted=(
-            f"α_{L} = {_f(at)} / {_f(_n(r))} = {_f(abs(al))} rad/s² {_sense(al)}"))
-    if op in ("slider_velocity", "slider_acceleration"):
-        (X,) = args
-        e = np.array(scene.sliders[X].direction)
-        val = float(st.of(d, X) @ e)
-        unit = "m/s" if vel else "m/s^2"
-        return replace(s, value=val, unit=unit,
-                       substituted=f"{_f(val)} {unit} along the guide ({_f(math.degrees(scene.sliders[X].angle))}°)")
-    if op in ("slide_velocity", "slide_acceleration"):
-        (A,) = args
-        slot = scene.slots[A]
-        e = _unit_of(st.r(slot.pivot, A))
-        if vel:
-            val = float((st.of(d, A) - st.of(d, slot.coincident)) @ e)
-            st.slide_v[A] = val
-            unit = "m/s"
-        else:
-            val = float((st.of(d, A) - st.of(d, slot.coincident) - st.cor[A]) @ e)
-            st.slide_a[A] = val
-            unit = "m/s^2"
-        return replace(s, value=val, unit=unit, substituted=(
-            f"{_f(val)} {unit} ({'away from' if val >= 0 else 'towards'} {slot.pivot})"))
-    if op == "image":
-        L, P, Q, X = args
-        if L not in st.omega:
-            st.omega[L] = angular_velocity(st.r(P, Q), st.of("velocity", Q) - st.of("velocity", P))
-        r = st.r(P, X)
-        if vel:
-            vec = relative_velocity(st.omega[L], r)
-        else:
-            if L not in st.alpha:
-                st.alpha[L] = angular_acceleration(st.r(P, Q), st.of(d, Q) - st.of(d, P))
-            vec = tangential(st.alpha[L], r) + centripetal(st.omega[L], r)
-        unit = "m/s" if vel else "m/s^2"
-        return vector(vec, f"{s.start}{s.end} = {_f(_n(vec))} {unit}", unit)
-    raise ConstructionError(f"unknown construction operation {op!r}")
+        filled = replace(step, at=_t(at) if at is not None else None,
+                         vector=_t(vec) if vec is not None else None,
+                         point=_t(point) if point is not None else None,
+                         direction=_t(direction) if direction is not None else None,
+                         value=float(value) if value is not None else None, unit=unit,
+                         angle_deg=angle, terms=terms_of(terms))
+        done.append(replace(filled, substituted=substitute(filled, scene)))
+    return _collect(plan, placement, k, tuple(done))
 
 
 def _n(v) -> float:
@@ -289,13 +142,11 @@ def _t(v) -> Vec:
     return (float(v[0]), float(v[1]))
 
 
-def _sense(w: float) -> str:
-    if w == 0.0:
-        return ""
-    return "CCW" if w > 0 else "CW"
+def _unit_of(r: np.ndarray) -> np.ndarray:
+    return r / float(np.hypot(*r))
 
 
-def _collect(plan: Plan, placement: Placement, st: _State, steps: tuple[Step, ...]) -> Solution:
+def _collect(plan: Plan, placement: Placement, st: Kernel, steps: tuple[Step, ...]) -> Solution:
     scene = st.scene
     solved = scene.solve
     points = {}

@@ -12,10 +12,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .dyads.base import size_of
 from .errors import AssemblyError, BranchError
-from .plan import RPP, RPR, RRP, RRR, CrankDyad, Image, Plan, SliderDriveDyad
+from .plan import Plan
 from .scene import Branch, Crank, Scene
-from .theorems import cross, perp
+from .theorems import cross
 
 
 #: a [drawn] position may differ from the assembled one by this fraction of the mechanism size
@@ -31,50 +32,30 @@ class Placement:
 
 
 def assemble(plan: Plan) -> Placement:
+    """Place every dyad of ``plan`` at the scene's input, in order; each two-closure dyad's
+    closure is chosen by the scene's words (:func:`_choose`)."""
     scene = plan.scene
     pos: dict[str, np.ndarray] = {k: np.array(v, dtype=float) for k, v in scene.ground.items()}
     chosen: list[tuple[str, str]] = []
-    size = _size(scene)
+    size = size_of(scene)
+    x_in = driver_input(scene)
     for dyad in plan.dyads:
-        if isinstance(dyad, CrankDyad):
-            drv: Crank = scene.driver  # type: ignore[assignment]
-            length = scene.links[dyad.link].length
-            pos[dyad.tip] = pos[dyad.pivot] + length * np.array([math.cos(drv.angle),
-                                                                 math.sin(drv.angle)])
-        elif isinstance(dyad, SliderDriveDyad):
-            g = scene.sliders[dyad.point]
-            pos[dyad.point] = np.array(g.through) + scene.driver.position * np.array(g.direction)
-        elif isinstance(dyad, RRR):
-            r1 = scene.links[dyad.link_p].length
-            r2 = scene.links[dyad.link_q].length
-            cands = _circle_circle(pos[dyad.p], r1, pos[dyad.q], r2, dyad, scene)
-            pos[dyad.x], why = _choose(dyad.x, cands, scene, pos, size,
-                                       default_ref=(dyad.p, dyad.q))
+        if dyad.two_closures:
+            x = dyad.placed[0]
+            c1, m1 = dyad.locate(scene, pos, 1.0, x_in)
+            if not m1 >= 0:
+                raise AssemblyError(dyad.why_not(scene, pos), file=scene.file, where=x)
+            c2, _ = dyad.locate(scene, pos, -1.0, x_in)
+            pos[x], why = _choose(x, (c1[x], c2[x]), scene, pos, size,
+                                  default_ref=dyad.default_ref)
             if why:
-                chosen.append((dyad.x, why))
-        elif isinstance(dyad, RRP):
-            g = scene.sliders[dyad.x]
-            cands = _circle_line(pos[dyad.p], scene.links[dyad.link].length, g, dyad, scene)
-            pos[dyad.x], why = _choose(dyad.x, cands, scene, pos, size, default_ref=(dyad.p,))
-            if why:
-                chosen.append((dyad.x, why))
-        elif isinstance(dyad, RPR):
-            d = pos[dyad.pin] - pos[dyad.pivot]
-            s = float(np.hypot(*d))
-            if s <= 1e-12 * size:
-                raise AssemblyError(f"the pin {dyad.pin} is on the pivot {dyad.pivot} of lever "
-                                    f"{dyad.lever}: the slot direction is undefined",
-                                    file=scene.file, where=dyad.lever)
-            pos[dyad.coincident] = pos[dyad.pin].copy()
-            if dyad.far:
-                pos[dyad.far] = pos[dyad.pivot] + scene.slots[dyad.pin].far_length * d / s
-        elif isinstance(dyad, Image):
-            pos[dyad.x] = body_point(scene, dyad, pos)
-        elif isinstance(dyad, RPP):    # Scotch yoke: guide line ∩ slot line through the pin
-            g = scene.sliders[dyad.x]
-            e, f = np.array(g.direction), np.array(g.slot_direction)
-            t = cross(pos[dyad.pin] - np.array(g.through), f) / cross(e, f)
-            pos[dyad.x] = np.array(g.through) + t * e
+                chosen.append((x, why))
+            continue
+        pts, margin = dyad.locate(scene, pos, None, x_in)
+        if margin is not None and not margin > 0:
+            raise AssemblyError(dyad.why_not(scene, pos), file=scene.file,
+                                where=getattr(dyad, "lever", None) or dyad.placed[0])
+        pos.update(pts)
     for label, xy in scene.drawn.items():
         if label in pos:
             off = float(np.hypot(*(pos[label] - np.array(xy))))
@@ -86,63 +67,10 @@ def assemble(plan: Plan) -> Placement:
     return Placement({k: (float(v[0]), float(v[1])) for k, v in pos.items()}, tuple(chosen))
 
 
-def body_point(scene: Scene, dyad: Image, pos) -> np.ndarray:
-    bp = scene.points[dyad.x]
-    d = pos[dyad.q] - pos[dyad.p]
-    n = float(np.hypot(*d))
-    if n == 0.0:
-        raise AssemblyError(f"link {dyad.link} has zero length at this instant, so {dyad.x} "
-                            f"cannot be placed on it", file=scene.file, where=dyad.x)
-    u = d / n
-    along = bp.along if bp.along is not None else bp.fraction * n
-    return pos[dyad.p] + along * u + bp.left * perp(u)
-
-
-def _size(scene: Scene) -> float:
-    lengths = [l.length for l in scene.links.values() if l.length]
-    coords = [abs(c) for v in scene.ground.values() for c in v]
-    return max(lengths + coords + [1e-300])
-
-
-def _circle_circle(p, r1, q, r2, dyad: RRR, scene: Scene):
-    d = q - p
-    dist = float(np.hypot(*d))
-    if dist == 0.0:
-        raise AssemblyError(f"{dyad.p} and {dyad.q} coincide, so {dyad.x} is not fixed by "
-                            f"{dyad.link_p} and {dyad.link_q}", file=scene.file, where=dyad.x)
-    a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
-    h2 = r1 * r1 - a * a
-    tol = 1e-12 * max(r1, r2, dist) ** 2
-    if h2 < -tol:
-        if dist > r1 + r2:
-            why = (f"{dyad.link_p} + {dyad.link_q} = {1e3 * (r1 + r2):.6g} mm is shorter than "
-                   f"{dyad.p}{dyad.q} = {1e3 * dist:.6g} mm")
-        else:
-            why = (f"|{dyad.link_p} − {dyad.link_q}| = {1e3 * abs(r1 - r2):.6g} mm is longer "
-                   f"than {dyad.p}{dyad.q} = {1e3 * dist:.6g} mm")
-        raise AssemblyError(f"the links cannot close at this input: {why}, so {dyad.x} "
-                            f"cannot be placed", file=scene.file, where=dyad.x)
-    h = math.sqrt(max(h2, 0.0))
-    u = d / dist
-    base = p + a * u
-    return [base + h * perp(u), base - h * perp(u)]
-
-
-def _circle_line(p, length, guide, dyad: RRP, scene: Scene):
-    e = np.array(guide.direction)
-    g = np.array(guide.through)
-    w = g - p
-    bq = float(e @ w)
-    c = float(w @ w) - length * length
-    disc = bq * bq - c
-    if disc < -1e-12 * length * length:
-        dist = abs(cross(e, -w))
-        raise AssemblyError(f"the links cannot close at this input: {dyad.link} = "
-                            f"{1e3 * length:.6g} mm cannot reach the guide of {dyad.x}, which "
-                            f"is {1e3 * dist:.6g} mm from {dyad.p}", file=scene.file,
-                            where=dyad.x)
-    root = math.sqrt(max(disc, 0.0))
-    return [g + (-bq + root) * e, g + (-bq - root) * e]
+def driver_input(scene: Scene) -> float:
+    """The driver's input at the scene's instant: θ (rad) of a crank, s (m) of a slider."""
+    drv = scene.driver
+    return drv.angle if isinstance(drv, Crank) else drv.position
 
 
 def satisfies(branch: Branch, cand, pos, scene: Scene) -> bool:

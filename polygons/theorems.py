@@ -16,9 +16,22 @@ def perp(r) -> np.ndarray:
     return np.array([-r[1], r[0]])
 
 
-def cross(a, b) -> float:
-    """z-component of a × b."""
-    return float(a[0] * b[1] - a[1] * b[0])
+def dot(a, b):
+    """a · b for plane vectors, or column-wise for (2, N) arrays of them."""
+    if np.ndim(a) == 1 and np.ndim(b) == 1:
+        return float(np.asarray(a, dtype=float) @ np.asarray(b, dtype=float))
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def norm(a):
+    """|a| for a plane vector, or column-wise for a (2, N) array of them."""
+    return np.hypot(a[0], a[1]) if np.ndim(a) > 1 else float(np.hypot(a[0], a[1]))
+
+
+def cross(a, b):
+    """z-component of a × b (column-wise for (2, N) arrays of vectors)."""
+    c = a[0] * b[1] - a[1] * b[0]
+    return float(c) if np.ndim(c) == 0 else c
 
 
 def relative_velocity(omega: float, r) -> np.ndarray:
@@ -63,7 +76,7 @@ def angular_velocity(r, v_rel) -> float:
     ``r`` is AB, ``v_rel`` the measured velocity of B relative to A (the vector ab).
     """
     r = np.asarray(r, dtype=float)
-    return cross(r, v_rel) / float(r @ r)
+    return cross(r, v_rel) / dot(r, r)
 
 
 def angular_acceleration(r, a_rel) -> float:
@@ -73,4 +86,4 @@ def angular_acceleration(r, a_rel) -> float:
     part is parallel to AB and drops out of the cross product.
     """
     r = np.asarray(r, dtype=float)
-    return cross(r, a_rel) / float(r @ r)
+    return cross(r, a_rel) / dot(r, r)

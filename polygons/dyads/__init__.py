@@ -1,0 +1,31 @@
+"""The dyad kinds: one module each, the only place that knows a dyad's geometry.
+
+``DRIVERS`` place the input; ``SLOT_KINDS`` are tried first in each pass of the planner (they
+are found from the scene's slots, not from a point); ``POINT_KINDS`` are tried for each point
+not yet placed, in order: the first kind that *claims* the point (by how the scene declares
+it) decides whether it can be placed now.  Adding a dyad kind = one module here with its
+record (``placed``, ``needs``, ``locate``, ``why_not``, ``emit``) and ``claims``/``match``,
+its scene key in :mod:`polygons.scene`, and its tests.
+"""
+from __future__ import annotations
+
+from . import crank, image, rpp, rpr, rrp, rrr, slider_drive
+from .crank import CrankDyad
+from .image import Image
+from .rpp import RPP
+from .rpr import RPR
+from .rrp import RRP
+from .rrr import RRR
+from .slider_drive import SliderDriveDyad
+
+#: modules with ``driver(scene) -> dyad | None``
+DRIVERS = (crank, slider_drive)
+#: modules with ``matches(scene, placed) -> iterable of dyads`` (tried first in every pass)
+SLOT_KINDS = (rpr,)
+#: modules with ``claims(scene, x)`` and ``match(scene, x, placed, known) -> dyad | None``
+POINT_KINDS = (rpp, image, rrp, rrr)
+
+Dyad = CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP
+
+__all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad",
+           "DRIVERS", "SLOT_KINDS", "POINT_KINDS"]

@@ -1,0 +1,77 @@
+"""What every dyad module provides, and the vectorised geometry they share.
+
+A dyad is a frozen record naming the points it places (``placed``) and the points it needs
+placed first (``needs``).  Its module is the only place that knows its geometry:
+
+* ``match`` (a module function): whether the dyad can be placed now, given the placed labels;
+* ``locate(scene, pos, sigma, x)``: where its points go, written with numpy broadcasting so the
+  same code places one position (arrays of shape (2,)) or a whole sweep ((2, N)).  A
+  two-closure dyad takes ``sigma`` = +1 or −1 for its closure; ``x`` is the input of a driver.
+  It returns ``(points, margin)``: ``margin`` is the conditioning of the closure (negative
+  where the dyad cannot close, positions NaN there);
+* ``why_not(scene, pos)``: the sentence a textbook says when it cannot close or degenerates;
+* ``emit(b)``: the velocity or acceleration steps it adds to the construction
+  (:class:`polygons.steps.Builder`).
+
+The planner orders dyads; the interpreters execute their steps; neither knows their insides.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..theorems import perp
+
+#: a closure discriminant within this fraction of the squared size is a double closure
+CLOSE_TOL = 1e-12
+
+
+def circle_circle(p, r1, q, r2, sigma):
+    """The point X with |PX| = r1, |QX| = r2, left of P→Q for sigma = +1 (right for −1).
+
+    X = P + a u + σ h perp(u),  a = (r1² − r2² + d²) / 2d,  h = √(r1² − a²),  u = PQ/d.
+    Returns (X, margin) with margin = σ-free sine of the angle PX, QX (h d / r1 r2), negative
+    (−√|h²| d / r1 r2) where the circles do not meet (X is NaN there).
+    """
+    d = q - p
+    dist = np.hypot(d[0], d[1])
+    a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
+    h2 = r1 * r1 - a * a
+    tol = CLOSE_TOL * np.maximum(np.maximum(r1, r2), dist) ** 2
+    ok = h2 >= -tol
+    h = np.sqrt(np.where(ok, np.maximum(h2, 0.0), np.nan))
+    u = d / dist
+    x = p + a * u + (sigma * h) * perp(u)
+    margin = np.where(ok, h * dist, -np.sqrt(np.abs(h2)) * dist) / (r1 * r2)
+    return x, margin
+
+
+def circle_line(p, length, through, e, sigma):
+    """The point X on the line ``through`` + t e with |PX| = length, (X − P)·e of sign σ.
+
+    t = −b + σ √(b² − c),  b = e·(g − p),  c = |g − p|² − L².  Returns (X, margin) with
+    margin = |PX·e| / L (negative where the line is out of reach; X NaN there).
+    """
+    g = np.asarray(through, dtype=float)
+    g = g.reshape((2,) + (1,) * (np.ndim(p) - 1))
+    e = np.asarray(e, dtype=float).reshape(g.shape)
+    w = g - p
+    bq = e[0] * w[0] + e[1] * w[1]
+    c = w[0] * w[0] + w[1] * w[1] - length * length
+    disc = bq * bq - c
+    ok = disc >= -CLOSE_TOL * length * length
+    root = np.sqrt(np.where(ok, np.maximum(disc, 0.0), np.nan))
+    x = g + (-bq + sigma * root) * e
+    margin = np.where(ok, root, -np.sqrt(np.abs(disc))) / length
+    return x, margin
+
+
+def as_col(v, like):
+    """A constant plane vector shaped to broadcast against ``like`` ((2,) or (2, N))."""
+    return np.asarray(v, dtype=float).reshape((2,) + (1,) * (np.ndim(like) - 1))
+
+
+def size_of(scene) -> float:
+    """The mechanism's size: its longest link or ground coordinate (for relative tolerances)."""
+    lengths = [l.length for l in scene.links.values() if l.length]
+    coords = [abs(c) for v in scene.ground.values() for c in v]
+    return max(lengths + coords + [1e-300])

@@ -1,0 +1,79 @@
+"""The input crank: its tip turns about a fixed pivot at the given ω and α.
+
+Position: X = P + r (cos θ, sin θ).  Velocity: (v_X)_P = ω × PX.  Acceleration:
+(a_X)_P = −ω² PX (+ α × PX when the crank accelerates).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import math
+
+import numpy as np
+
+from ..steps import Builder, Component, Kind, Op
+
+
+@dataclass(frozen=True)
+class CrankDyad:
+    """The input crank ``link``: ``tip`` turns about fixed ``pivot``."""
+    link: str
+    pivot: str
+    tip: str
+    two_closures = False
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.tip,)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.pivot,)
+
+    def locate(self, scene, pos, sigma, x):
+        r = scene.links[self.link].length
+        p = pos[self.pivot]
+        if np.ndim(x) == 0:
+            tip = p + r * np.array([math.cos(x), math.sin(x)])
+        else:
+            tip = p.reshape(2, 1) + r * np.array([np.cos(x), np.sin(x)])
+        return {self.tip: tip}, None
+
+    def why_not(self, scene, pos) -> str:
+        return ""
+
+    def emit(self, b: Builder) -> None:
+        P, X, L = self.pivot, self.tip, self.link
+        p, x = b.names.of(P), b.names.of(X)
+        if b.velocity:
+            b.add(Kind.VECTOR, Op.CRANK_VELOCITY, (L, P, X), f"{p}{x}", p, x,
+                  "relative_velocity", f"(v_{X})_{P}", f"(v_{X})_{P} = ω_{L} × {P}{X}",
+                  f"Draw {p}{x} = ω × {P}{X} perpendicular to {P}{X}, in the sense of rotation "
+                  f"of the crank, starting at the pole {b.names.alias()} (fixed points have "
+                  f"no velocity).", component=Component.RELATIVE, link=L)
+            return
+        has_t = scene_alpha(b.scene) != 0.0
+        x1 = b.fresh(X) if has_t else x
+        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, X), f"{p}{x1}", p, x1, "centripetal",
+              f"(a_{X})_{P}^n", f"(a_{X})_{P}^n = ω_{L}² × {P}{X}",
+              f"Draw the centripetal acceleration of {X} about {P}, ω² × {P}{X}, from {p} "
+              f"parallel to {X}{P}, pointing from {X} towards {P}."
+              + ("" if has_t else f" The crank has no angular acceleration, so this "
+                                  f"ends at {x}."), component=Component.CENTRIPETAL, link=L)
+        if has_t:
+            b.add(Kind.VECTOR, Op.CRANK_TANGENTIAL, (L, P, X), f"{x1}{x}", x1, x,
+                  "tangential", f"(a_{X})_{P}^t", f"(a_{X})_{P}^t = α_{L} × {P}{X}",
+                  f"Add the tangential acceleration α × {P}{X} from {x1}, perpendicular to "
+                  f"{P}{X} in the sense of α; it ends at {x}.", component=Component.TANGENTIAL,
+                  link=L)
+
+
+def scene_alpha(scene) -> float:
+    return getattr(scene.driver, "alpha", 0.0)
+
+
+def driver(scene):
+    """The crank dyad when the scene is driven by a crank, else None."""
+    from ..scene import Crank
+    drv = scene.driver
+    return CrankDyad(drv.link, drv.pivot, drv.tip) if isinstance(drv, Crank) else None

@@ -1,0 +1,78 @@
+"""Image: a point rigid with a link whose two ends are placed (a coupler point, a ternary
+link's third pin, "BD is a continuation of AB").
+
+Position: X = P + along·u + left·perp(u), u = PQ/|PQ|.  Velocity: v_X = v_P + ω × PX (the
+velocity image pqx is similar to PQX).  Acceleration: a_X = a_P + α × PX − ω² PX.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..steps import Builder, Component, Kind, Op
+from ..theorems import perp
+
+
+@dataclass(frozen=True)
+class Image:
+    """Point ``x`` rigid with link ``link`` whose ends ``p`` and ``q`` are placed."""
+    x: str
+    link: str
+    p: str
+    q: str
+    two_closures = False
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.x,)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.p, self.q)
+
+    def locate(self, scene, pos, sigma, x):
+        bp = scene.points[self.x]
+        d = pos[self.q] - pos[self.p]
+        n = np.hypot(d[0], d[1])
+        u = d / n
+        along = bp.along if bp.along is not None else bp.fraction * n
+        return {self.x: pos[self.p] + along * u + bp.left * perp(u)}, np.where(n > 0, 1.0, -1.0)
+
+    def why_not(self, scene, pos) -> str:
+        return (f"link {self.link} has zero length at this instant, so {self.x} cannot be "
+                f"placed on it")
+
+    def emit(self, b: Builder) -> None:
+        emit_image(b, self.x, self.link, self.p, self.q)
+
+
+def emit_image(b: Builder, X: str, link: str, P: str, Q: str) -> None:
+    V = b.names.of
+    p, q, x = V(P), V(Q), V(X)
+    formula = (f"{x} = {p} + ω_{link} × {P}{X}" if b.velocity
+               else f"{x} = {p} + α_{link} × {P}{X} − ω_{link}² {P}{X}")
+    b.add(Kind.IMAGE, Op.IMAGE, (link, P, Q, X), f"{p}{x}", p, x, "image", f"{b.q}_{X}",
+          formula,
+          f"{X} is a point of the rigid link {link}: {p}{q}{x} is the {b.what} image of "
+          f"{P}{Q}{X} (similar to it, turned), so {x} follows from {p} and {q}.",
+          component=Component.IMAGE, link=link)
+
+
+def match(scene, x, placed, known):
+    """A point declared in [points] on a link (or slotted lever) whose ends are placed."""
+    if x not in scene.points:
+        return None
+    bp = scene.points[x]
+    link = scene.links.get(bp.link)
+    if link is not None:
+        p, q = link.a, link.b
+    else:  # a point on a slotted lever
+        slot = next(s for s in scene.slots.values() if s.lever == bp.link)
+        p, q = slot.pivot, slot.coincident
+    return Image(x, bp.link, p, q) if p in placed and q in placed else None
+
+
+def claims(scene, x) -> bool:
+    """Whether the scene declares ``x`` as this kind's point."""
+    return x in scene.points

@@ -1,0 +1,86 @@
+"""RPP: the Scotch yoke — a placed pin slides in the straight slot of a yoke that translates
+on a fixed guide (no rotation, so no Coriolis term).
+
+Position: the yoke's point Y on the guide under the slot line through the pin:
+Y = G + t e, t = ((A − G) × f) / (e × f).  Velocity and acceleration: the line along the
+guide through the pole meets the line along the slot through a (or a's acceleration) at y.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..steps import Builder, Component, Kind, Op
+from .base import as_col
+
+
+@dataclass(frozen=True)
+class RPP:
+    """Scotch yoke: placed pin ``pin`` slides in the slot of the yoke ``x`` on its guide."""
+    pin: str
+    x: str
+    two_closures = False
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.x,)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.pin,)
+
+    def locate(self, scene, pos, sigma, x):
+        g = scene.sliders[self.x]
+        a = pos[self.pin]
+        e, f = np.array(g.direction), np.array(g.slot_direction)
+        through = as_col(g.through, a)
+        den = e[0] * f[1] - e[1] * f[0]
+        w = a - through
+        t = (w[0] * f[1] - w[1] * f[0]) / den
+        return {self.x: through + t * as_col(e, a)}, abs(den) + 0.0 * t
+
+    def why_not(self, scene, pos) -> str:
+        return f"the slot of the yoke {self.x} is parallel to its guide"
+
+    def emit(self, b: Builder) -> None:
+        A, Y = self.pin, self.x
+        V = b.names.of
+        a, y, pole, q = V(A), V(Y), b.names.pole, b.q
+        C = Component
+        n1 = b.add(Kind.LINE, Op.LINE_GUIDE, (Y,), "slider line", pole, None, "slider_line",
+                   f"{q}_{Y}", f"{q}_{Y} ∥ guide of {Y}",
+                   f"Through {pole} draw a line along the guide of the yoke {Y}: the yoke "
+                   f"only translates along it.", component=C.CONSTRUCTION)
+        n2 = b.add(Kind.LINE, Op.LINE_SLOT, (Y,), "slot line", a, None, "sliding",
+                   f"({q}_{A})_{Y}", f"({q}_{A})_{Y} ∥ slot of {Y}",
+                   f"Through {a} draw a line parallel to the yoke's slot: {A} slides along "
+                   f"it relative to the yoke, which does not turn (so there is no Coriolis "
+                   f"term).", component=C.CONSTRUCTION)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), y, None, y, "intersection", f"{q}_{Y}",
+              f"{y} = intersection of the two lines",
+              f"They meet at {y}: {pole}{y} is the {b.what} of the yoke and {y}{a} that of "
+              f"{A} sliding in the slot.", (n1, n2), component=C.RESULTANT)
+        if b.velocity:
+            b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (Y,), f"v_{Y}", None, None, "slider",
+                  f"v_{Y} along guide", f"v_{Y} = {pole}{y}",
+                  f"The yoke's velocity is {pole}{y}, signed along its guide.",
+                  component=C.RESULTANT)
+        else:
+            b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (Y,), f"a_{Y}", None, None, "slider",
+                  f"a_{Y} along guide", f"a_{Y} = {pole}{y}",
+                  f"The yoke's acceleration is {pole}{y}, signed along its guide.",
+                  component=C.RESULTANT)
+
+
+def match(scene, x, placed, known):
+    """x is a yoke (a slider with a slot) whose pin is placed."""
+    g = scene.sliders.get(x)
+    if g is None or g.pin is None:
+        return None
+    return RPP(g.pin, x) if g.pin in placed else None
+
+
+def claims(scene, x) -> bool:
+    """Whether the scene declares ``x`` as this kind's point."""
+    return x in scene.sliders and scene.sliders[x].pin is not None

@@ -1,0 +1,73 @@
+"""RRP: point X joined by a link to placed P and sliding on a fixed straight guide (the
+slider-crank's piston).
+
+Position: X on the guide with |PX| = L (two closures).  Velocity: v_X = v_P + ω × PX, and
+v_X ∥ guide: the line ⟂ PX through p meets the slider line through the pole at x.
+Acceleration: a_X = a_P − ω² PX + α × PX ∥ guide.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..steps import Builder
+from .base import circle_line
+from . import pinned
+
+
+@dataclass(frozen=True)
+class RRP:
+    """Point ``x`` joined by ``link`` to placed ``p`` and sliding on a fixed straight guide."""
+    p: str
+    x: str
+    link: str
+    two_closures = True
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.x,)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.p,)
+
+    @property
+    def default_ref(self) -> tuple[str, ...]:
+        return (self.p,)
+
+    def locate(self, scene, pos, sigma, x):
+        g = scene.sliders[self.x]
+        X, margin = circle_line(pos[self.p], scene.links[self.link].length, g.through,
+                                g.direction, sigma)
+        return {self.x: X}, margin
+
+    def why_not(self, scene, pos) -> str:
+        from ..theorems import cross
+        g = scene.sliders[self.x]
+        L = scene.links[self.link].length
+        w = np.array(g.through) - pos[self.p]
+        e = np.array(g.direction)
+        dist = abs(cross(e, -w))
+        if dist > L:
+            return (f"the links cannot close at this input: {self.link} = {1e3 * L:.6g} mm "
+                    f"cannot reach the guide of {self.x}, which is {1e3 * dist:.6g} mm from "
+                    f"{self.p}")
+        return (f"{self.link} is perpendicular to the guide of {self.x} (it reaches the guide "
+                f"no further)")
+
+    def emit(self, b: Builder) -> None:
+        pinned.emit_two_lines(b, self.p, self.x, self.link, other=None)
+
+
+def match(scene, x, placed, known):
+    """A link of known length from x to a placed point, and x on a fixed guide."""
+    g = scene.sliders.get(x)
+    if g is None or g.pin is not None or not known:
+        return None
+    return RRP(known[0][0], x, known[0][1])
+
+
+def claims(scene, x) -> bool:
+    """Whether the scene declares ``x`` as this kind's point."""
+    return x in scene.sliders

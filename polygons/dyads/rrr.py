@@ -1,0 +1,81 @@
+"""RRR: point X joined by two links to two placed points P and Q (the four-bar's coupler pin).
+
+Position: X on both circles |PX| = r₁, |QX| = r₂ (two closures, named in the scene's words).
+Velocity: v_X = v_P + ω_p × PX = v_Q + ω_q × QX: lines ⟂ PX through p and ⟂ QX through q meet
+at x.  Acceleration: a_X = a_P − ω_p² PX + α_p × PX = a_Q − ω_q² QX + α_q × QX: the two
+centripetal vectors are known, the two tangential lines meet at x.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..steps import Builder, Component, Kind, Op
+from .base import circle_circle
+from . import pinned
+
+
+@dataclass(frozen=True)
+class RRR:
+    """Point ``x`` joined by link ``link_p`` to placed ``p`` and by ``link_q`` to placed ``q``."""
+    p: str
+    x: str
+    q: str
+    link_p: str
+    link_q: str
+    two_closures = True
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.x,)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.p, self.q)
+
+    @property
+    def default_ref(self) -> tuple[str, ...]:
+        return (self.p, self.q)
+
+    def locate(self, scene, pos, sigma, x):
+        r1 = scene.links[self.link_p].length
+        r2 = scene.links[self.link_q].length
+        X, margin = circle_circle(pos[self.p], r1, pos[self.q], r2, sigma)
+        return {self.x: X}, margin
+
+    def why_not(self, scene, pos) -> str:
+        import math
+        r1 = scene.links[self.link_p].length
+        r2 = scene.links[self.link_q].length
+        d = pos[self.q] - pos[self.p]
+        dist = math.hypot(float(d[0]), float(d[1]))
+        if dist == 0.0:
+            return (f"{self.p} and {self.q} coincide, so {self.x} is not fixed by "
+                    f"{self.link_p} and {self.link_q}")
+        if dist > r1 + r2:
+            why = (f"{self.link_p} + {self.link_q} = {1e3 * (r1 + r2):.6g} mm is shorter than "
+                   f"{self.p}{self.q} = {1e3 * dist:.6g} mm")
+        elif dist < abs(r1 - r2):
+            why = (f"|{self.link_p} − {self.link_q}| = {1e3 * abs(r1 - r2):.6g} mm is longer "
+                   f"than {self.p}{self.q} = {1e3 * dist:.6g} mm")
+        else:
+            how = ("stretched out" if abs(dist - (r1 + r2)) < abs(dist - abs(r1 - r2))
+                   else "folded back")
+            return (f"{self.link_p} and {self.link_q} are in line ({self.p}, {self.x}, "
+                    f"{self.q} collinear, {how})")
+        return (f"the links cannot close at this input: {why}, so {self.x} cannot be placed")
+
+    def emit(self, b: Builder) -> None:
+        pinned.emit_two_lines(b, self.p, self.x, self.link_p, other=(self.q, self.link_q))
+
+
+def match(scene, x, placed, known):
+    """Two links of known length from x to placed points (and x on no guide)."""
+    if x in scene.sliders or len(known) < 2:
+        return None
+    (p, lp), (q, lq) = known[0], known[1]
+    return RRR(p, x, q, lp, lq)
+
+
+def claims(scene, x) -> bool:
+    """Whether the scene declares ``x`` as this kind's point."""
+    return True

@@ -1,0 +1,51 @@
+"""The input slider: a point moving along its fixed guide at a given speed and acceleration.
+
+Position: X = G + s e.  Velocity: v_X = ṡ e.  Acceleration: a_X = s̈ e (given).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..steps import Builder, Component, Kind, Op
+from .base import as_col
+
+
+@dataclass(frozen=True)
+class SliderDriveDyad:
+    """The input slider ``point`` on its fixed guide."""
+    point: str
+    two_closures = False
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.point,)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return ()
+
+    def locate(self, scene, pos, sigma, x):
+        g = scene.sliders[self.point]
+        through, e = np.array(g.through), np.array(g.direction)
+        if np.ndim(x) == 0:
+            return {self.point: through + x * e}, None
+        return {self.point: as_col(through, x[None]) + x * as_col(e, x[None])}, None
+
+    def why_not(self, scene, pos) -> str:
+        return ""
+
+    def emit(self, b: Builder) -> None:
+        X = self.point
+        x, pole, q = b.names.of(X), b.names.pole, b.q
+        b.add(Kind.VECTOR, Op.SLIDER_DRIVE, (X,), f"{pole}{x}", pole, x, "input",
+              f"{q}_{X}", f"{q}_{X} (given, along the guide)",
+              f"Draw the given {b.what} of the slider {X} from the pole along its guide.",
+              component=Component.GIVEN)
+
+
+def driver(scene):
+    from ..scene import SliderDrive
+    drv = scene.driver
+    return SliderDriveDyad(drv.point) if isinstance(drv, SliderDrive) else None

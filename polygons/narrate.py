@@ -1,0 +1,57 @@
+"""The one formatter of substituted formulas: a step's terms written into its theorem.
+
+``substitute(step, scene)`` reads only the step's fields (``op``, ``args``, ``quantity``,
+``start``/``end`` and its :class:`~polygons.steps.Term` records) and writes the line a
+tutorial prints under the figure ("ω² × AB = 300² × 0.05 = 4500 m/s²").  Numbers go through
+:func:`polygons.steps.number`, senses through :func:`polygons.steps.sense`.
+"""
+from __future__ import annotations
+
+import math
+
+from .steps import Op, Step, number as f, sense, unit_text
+
+
+def substitute(s: Step, scene) -> str:
+    t = s.terms
+    op = s.op
+    if op is Op.CRANK_VELOCITY:
+        L, P, X = s.args
+        return (f"{s.quantity} = ω × {P}{X} = {f(t[0].value)} × {f(t[1].value)} = "
+                f"{f(t[2].value)} m/s")
+    if op is Op.SLIDER_DRIVE:
+        return f"{f(t[0].value)} {unit_text(t[0].unit)} along the guide"
+    if op is Op.CENTRIPETAL:
+        L, P, X = s.args
+        return (f"ω² × {P}{X} = {f(t[0].value)}² × {f(t[1].value)} = {f(t[2].value)} m/s²")
+    if op is Op.CRANK_TANGENTIAL:
+        L, P, X = s.args
+        return f"α × {P}{X} = {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
+    if op is Op.CORIOLIS_OFFSET_LINE:
+        return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
+    if op is Op.CORIOLIS:
+        return f"2ωv = {f(t[0].value)} m/s²"
+    if op is Op.JOIN:
+        return f"{s.start}{s.end} = {f(t[0].value)} m/s²"
+    if op is Op.INTERSECT:
+        return (f"{t[1].symbol} = {f(t[1].value)} {unit_text(t[1].unit)} (lines meet at "
+                f"{t[0].value:.3g}°)")
+    if op is Op.OMEGA:
+        w = t[2].value
+        return f"{t[2].symbol} = {f(t[0].value)} / {f(t[1].value)} = {f(abs(w))} rad/s {sense(w)}"
+    if op is Op.ALPHA:
+        al = t[2].value
+        return (f"{t[2].symbol} = {f(t[0].value)} / {f(t[1].value)} = {f(abs(al))} rad/s² "
+                f"{sense(al)}")
+    if op in (Op.SLIDER_VELOCITY, Op.SLIDER_ACCELERATION):
+        (X,) = s.args
+        deg = math.degrees(scene.sliders[X].angle)
+        return f"{f(t[0].value)} {t[0].unit} along the guide ({f(deg)}°)"
+    if op in (Op.SLIDE_VELOCITY, Op.SLIDE_ACCELERATION):
+        (A,) = s.args
+        val = t[0].value
+        return (f"{f(val)} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
+                f"{scene.slots[A].pivot})")
+    if op is Op.IMAGE:
+        return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"
+    return ""

@@ -1,0 +1,217 @@
+"""Typed construction steps: the single currency between the solver and everything drawn.
+
+A :class:`Step` is one stroke of a tutorial's construction ("from o draw oa = ω·OA ⟂ OA",
+"through b1 draw the b line ⟂ AB", "the lines meet at b").  The dyad modules
+(:mod:`polygons.dyads`) plan steps with no numbers in them; an interpreter
+(:mod:`polygons.interpret`) executes them and returns copies with the numbers filled in:
+the vertex it creates, the vector it draws, the direction of a line, a measured value, and the
+:class:`Term` records substituted into the formula.  Renderers, narrators and graders read
+these fields; nobody parses the prose (``reason``, ``substituted``) back.
+
+The enums are ``StrEnum``: they compare equal to the strings written in JSON.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from enum import StrEnum
+
+
+class Diagram(StrEnum):
+    VELOCITY = "velocity"
+    ACCELERATION = "acceleration"
+
+
+class Kind(StrEnum):
+    """What the stroke puts on paper."""
+    VECTOR = "vector"              # a known vector from ``start`` to the new vertex ``end``
+    LINE = "line"                  # a line of unknown length through ``start``
+    INTERSECTION = "intersection"  # two earlier lines meet: a new vertex
+    MEASURE = "measure"            # a number read off the polygon (ω, α, a sliding speed)
+    IMAGE = "image"                # a vertex by the velocity/acceleration image of a link
+
+
+class Op(StrEnum):
+    """The operation an interpreter performs (one implementation per op, per interpreter)."""
+    CRANK_VELOCITY = "crank_velocity"            # ω × r
+    SLIDER_DRIVE = "slider_drive"                # the given value along a unit direction
+    CENTRIPETAL = "centripetal"                  # −ω² r
+    CRANK_TANGENTIAL = "crank_tangential"        # α × r
+    SLIDE_DRIVE = "slide_drive"                  # a prescribed sliding rate along a link
+    CORIOLIS_DRIVE = "coriolis_drive"            # 2 ω × ṡ e with ṡ prescribed
+    LINE_PERP = "line_perp"                      # a line ⟂ a link
+    LINE_ALONG = "line_along"                    # a line ∥ a link
+    LINE_GUIDE = "line_guide"                    # a line ∥ a fixed guide
+    LINE_SLOT = "line_slot"                      # a line ∥ a translating yoke's slot
+    CORIOLIS_OFFSET_LINE = "coriolis_offset_line"  # a line ∥ the slot, stepped back by 2ωv
+    CORIOLIS = "coriolis"                        # the Coriolis vector 2 ω × v
+    JOIN = "join"                                # the vector between two known vertices
+    INTERSECT = "intersect"                      # two lines meet
+    OMEGA = "omega"                              # ω = (r × v_rel) / r²
+    ALPHA = "alpha"                              # α = (r × a_rel) / r²
+    SLIDER_VELOCITY = "slider_velocity"          # v · e along a fixed guide
+    SLIDER_ACCELERATION = "slider_acceleration"
+    SLIDE_VELOCITY = "slide_velocity"            # sliding velocity along a rotating slot
+    SLIDE_ACCELERATION = "slide_acceleration"
+    IMAGE = "image"                              # v = v_p + ω × r; a = a_p + α × r − ω² r
+
+
+class Component(StrEnum):
+    """The kind of component a stroke is: one colour and line style each on the drawings."""
+    GIVEN = "given"                # an input stated by the question
+    RELATIVE = "relative"          # ω × r: a relative velocity
+    CENTRIPETAL = "centripetal"    # ω² r towards the centre
+    TANGENTIAL = "tangential"      # α × r
+    SLIDING = "sliding"            # along a slot or guide
+    CORIOLIS = "coriolis"          # 2 ω × v
+    IMAGE = "image"                # by the image of a rigid link
+    RESULTANT = "resultant"        # an absolute quantity, from the pole
+    CONSTRUCTION = "construction"  # a line of unknown length
+
+
+@dataclass(frozen=True)
+class Term:
+    """One number substituted into a step's formula: ``symbol`` (textbook notation, e.g.
+    ``ω_BC``, ``AB``, ``v_C``), its SI ``value`` (signed where the sign means a sense) and
+    ``unit`` ('rad/s', 'm', 'm/s', 'm/s^2', ...).  The step's result is the last term."""
+    symbol: str
+    value: float
+    unit: str
+
+
+@dataclass(frozen=True)
+class Step:
+    """One stroke of the construction, as a tutorial figure adds it.
+
+    Planned with ``op``/``args`` and words only; an interpreter returns a copy with the
+    numbers (``at``, ``vector``, ``point``, ``direction``, ``value``, ``angle_deg``,
+    ``terms`` and the text ``substituted`` made from them) filled in.  The diagrams draw these
+    records and never recompute them.
+    """
+
+    diagram: Diagram        # velocity | acceleration
+    number: int             # 1, 2, ... within its diagram (stage 1, 2, 3 ...)
+    kind: Kind
+    op: Op
+    args: tuple[str, ...]   # space labels / link names the operation uses
+    draws: str              # what appears on paper: 'oa', 'c line', 'b', 'ω_BC'
+    start: str | None       # polygon vertex the vector starts at / the line passes through
+    end: str | None         # polygon vertex this step creates
+    theorem: str            # 'relative_velocity', 'centripetal', 'coriolis', ...
+    quantity: str           # '(v_A)_O', '(a_C)_B^t', 'ω_BC'
+    formula: str            # symbolic formula
+    reason: str             # the sentence a tutorial would write
+    lines: tuple[int, ...] = ()          # for an intersection: the step numbers of its lines
+    component: Component = Component.CONSTRUCTION
+    link: str | None = None              # the link whose ω/α this step gives or uses
+    # -- filled by an interpreter -----------------------------------------------------------
+    at: tuple[float, float] | None = None         # start vertex / line anchor, polygon coords
+    vector: tuple[float, float] | None = None     # for vectors and images: end - start
+    point: tuple[float, float] | None = None      # vertex created
+    direction: tuple[float, float] | None = None  # for lines: unit direction
+    value: float | None = None                    # for measures (SI, signed)
+    unit: str = ""
+    angle_deg: float | None = None                # for intersections: angle between the lines
+    substituted: str = ""                         # formula with the numbers put in
+    terms: tuple[Term, ...] = ()                  # the numbers of ``substituted``, as data
+
+    @property
+    def gives(self) -> str | None:
+        """The symbol this step determines ('ω_BC', 'α_BC', 'v_C', ...) or None."""
+        return self.terms[-1].symbol if self.terms else None
+
+
+# ---------------------------------------------------------------- vertex names
+class Vertices:
+    """Polygon vertex names: lower-case space labels; every fixed point is the pole."""
+
+    def __init__(self, scene):
+        self.scene = scene
+        self.pole = pole_of(scene)
+        self.taken = {lab.lower() for lab in scene.labels} | {self.pole}
+
+    def of(self, label: str) -> str:
+        return self.pole if label in self.scene.ground else label.lower()
+
+    def fresh(self, label: str, diagram_taken: set[str]) -> str:
+        """A new vertex near ``label``'s: b1, b2, ... (p2_1 for a label ending in a digit)."""
+        base = label.lower()
+        sep = "_" if base[-1].isdigit() else ""
+        k = 1
+        while True:
+            name = f"{base}{sep}{k}"
+            if name not in self.taken and name not in diagram_taken:
+                diagram_taken.add(name)
+                return name
+            k += 1
+
+    def alias(self) -> str:
+        """'o = a = d': every name of the pole (fixed points have no velocity)."""
+        g = [g.lower() for g in self.scene.ground if g.lower() != self.pole]
+        return " = ".join([self.pole] + g)
+
+
+def pole_of(scene) -> str:
+    """The pole's name: the driving crank's pivot, else the first fixed point, lower-case."""
+    drv = scene.driver
+    first = getattr(drv, "pivot", None) or next(iter(scene.ground))
+    return first.lower()
+
+
+@dataclass
+class Builder:
+    """Collects one diagram's steps, numbering them; dyad modules call :meth:`add`."""
+
+    scene: object
+    diagram: Diagram
+    names: Vertices
+    steps: list[Step] = field(default_factory=list)
+    taken: set[str] = field(default_factory=set)
+
+    @property
+    def velocity(self) -> bool:
+        return self.diagram is Diagram.VELOCITY
+
+    @property
+    def q(self) -> str:
+        """'v' or 'a': the symbol of this diagram's quantity."""
+        return "v" if self.velocity else "a"
+
+    @property
+    def what(self) -> str:
+        return "velocity" if self.velocity else "acceleration"
+
+    def add(self, kind: Kind, op: Op, args, draws, start, end, theorem, quantity, formula,
+            reason, lines=(), *, component: Component, link: str | None = None) -> int:
+        n = len(self.steps) + 1
+        self.steps.append(Step(self.diagram, n, kind, op, tuple(args), draws, start, end,
+                               theorem, quantity, formula, reason, tuple(lines), component,
+                               link))
+        return n
+
+    def fresh(self, label: str) -> str:
+        return self.names.fresh(label, self.taken)
+
+
+# ---------------------------------------------------------------- the one number formatter
+def number(x: float) -> str:
+    """Five significant figures written out in full, trailing zeros dropped, as a tutorial
+    would (156105, 0.80587, 0.05)."""
+    x = float(x)
+    if x == 0.0 or not 1e-4 <= abs(x) < 1e9:
+        return f"{x:.5g}"
+    decimals = max(0, 4 - math.floor(math.log10(abs(x))))
+    text = f"{x:.{decimals}f}"
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
+def sense(w: float) -> str:
+    """'CCW' for a positive angular quantity, 'CW' for a negative one, '' for zero."""
+    if w == 0.0:
+        return ""
+    return "CCW" if w > 0 else "CW"
+
+
+def unit_text(unit: str) -> str:
+    """'m/s^2' → 'm/s²' for prose."""
+    return unit.replace("^2", "²")
