@@ -58,12 +58,14 @@ class Kernel:
     ``omega``/``alpha``: link → value; ``slide_v``/``slide_a``/``cor``: sliding pin → value.
     """
 
-    def __init__(self, scene, pos, names, backend: Backend, omega=None, alpha=None):
+    def __init__(self, scene, pos, names, backend: Backend, omega=None, alpha=None,
+                 arrays: bool = False):
         self.scene = scene
         self.pos = pos
         self.names = names
         self.b = backend
-        zero = np.zeros(2)
+        self.arrays = arrays      # positions are (2, N) columns: constants become (2, 1)
+        zero = self.const((0.0, 0.0))
         self.vx = {Diagram.VELOCITY: {names.pole: zero}, Diagram.ACCELERATION: {names.pole: zero}}
         self.omega = dict(omega or {})
         self.alpha = dict(alpha or {})
@@ -74,6 +76,11 @@ class Kernel:
         self.margins: list = []
 
     # -- helpers ------------------------------------------------------------------------
+    def const(self, v):
+        """A constant plane vector, as a (2, 1) column when the kernel runs on arrays."""
+        v = np.array(v, dtype=float)
+        return v.reshape(2, 1) if self.arrays else v
+
     def r(self, p: str, x: str):
         return self.pos[x] - self.pos[p]
 
@@ -126,7 +133,7 @@ def _crank_velocity(k: Kernel, s: Step):
 
 def _slider_drive(k: Kernel, s: Step):
     (X,) = s.args
-    e = np.array(k.scene.sliders[X].direction)
+    e = k.const(k.scene.sliders[X].direction)
     vel = s.diagram == Diagram.VELOCITY
     val = k.scene.driver.velocity if vel else k.scene.driver.acceleration
     unit = _unit_of(s.diagram)
@@ -168,13 +175,13 @@ def _line_along(k: Kernel, s: Step):
 
 def _line_guide(k: Kernel, s: Step):
     (X,) = s.args
-    return _line_result(s, k._line(s, np.array(k.scene.sliders[X].direction),
+    return _line_result(s, k._line(s, k.const(k.scene.sliders[X].direction),
                                    k.vx[s.diagram][s.start]))
 
 
 def _line_slot(k: Kernel, s: Step):
     (X,) = s.args
-    return _line_result(s, k._line(s, np.array(k.scene.sliders[X].slot_direction),
+    return _line_result(s, k._line(s, k.const(k.scene.sliders[X].slot_direction),
                                    k.vx[s.diagram][s.start]))
 
 
@@ -241,7 +248,7 @@ def _alpha(k: Kernel, s: Step):
 
 def _slider_value(k: Kernel, s: Step):
     (X,) = s.args
-    e = np.array(k.scene.sliders[X].direction)
+    e = k.const(k.scene.sliders[X].direction)
     val = dot(k.of(s.diagram, X), e)
     unit = _unit_of(s.diagram)
     return None, None, None, None, val, unit, None, ((s.quantity, val, unit),)

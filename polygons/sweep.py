@@ -36,10 +36,14 @@ from typing import Callable, Iterable, Mapping, Sequence
 
 import numpy as np
 
+from .dyads.base import size_of
 from .errors import ConstructionError, PolygonsError
-from .plan import RPP, RPR, RRP, RRR, CrankDyad, Image, Plan, SliderDriveDyad, make_plan
-from .position import assemble
+from .interpret import Backend, Kernel
+from .plan import Plan, construction, make_plan
+from .position import assemble, driver_input
 from .scene import Crank, Scene
+from .steps import Diagram, Step, Vertices
+from .theorems import angular_acceleration, angular_velocity
 
 #: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
 PARALLEL_DEG = 1e-5
@@ -132,102 +136,62 @@ def _as_n2(xy, n: int) -> np.ndarray:
     return out
 
 
-# ---------------------------------------------------------------- the compiled program
-@dataclass(frozen=True)
-class _Op:
-    kind: str
-    label: str                    # point placed (first one for RPR)
-    data: tuple
-
-
+# ---------------------------------------------------------------- the program
 @dataclass(frozen=True)
 class Program:
-    """The plan's dyads with every constant looked up once (lengths, guides, branches)."""
+    """The plan's dyads with the closure of every two-closure dyad taken from the staged
+    assembly at the scene's own input, and the step program of both diagrams."""
 
     scene: Scene
     plan: Plan
-    ops: tuple[_Op, ...]
+    steps: tuple[Step, ...]
+    sigma: Mapping[str, float]                # label -> closure followed (+1 / −1)
     ground: Mapping[str, tuple[float, float]]
     input_kind: str
     input0: float
     rate: float
     rate2: float
-    branches: Mapping[str, int]
     links: tuple[tuple[str, str, str], ...]   # (name, a, b) of every link to report
     scale: float
 
+    @property
+    def branches(self) -> Mapping[str, int]:
+        return {k: int(v) for k, v in self.sigma.items()}
+
 
 def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
-    """Look every constant up once and take each two-closure branch from the staged assembly
-    at the scene's own input (raises the staged :class:`AssemblyError` / ``BranchError`` if
-    the scene itself cannot be assembled)."""
+    """Plan once, and take each two-closure branch from the staged assembly at the scene's own
+    input (raises the staged :class:`AssemblyError` / ``BranchError`` if the scene itself
+    cannot be assembled)."""
     plan = plan or make_plan(scene)
     placement = assemble(plan)
     pos0 = {k: np.array(v) for k, v in placement.points.items()}
-    ground = {k: (float(v[0]), float(v[1])) for k, v in scene.ground.items()}
-    ops: list[_Op] = []
-    branches: dict[str, int] = {}
-    drv = scene.driver
+    sigma: dict[str, float] = {}
     for d in plan.dyads:
-        if isinstance(d, CrankDyad):
-            ops.append(_Op("crank", d.tip, (d.pivot, scene.links[d.link].length, d.link)))
-        elif isinstance(d, SliderDriveDyad):
-            g = scene.sliders[d.point]
-            ops.append(_Op("drive", d.point, (g.through, g.direction)))
-        elif isinstance(d, RRR):
-            r1 = scene.links[d.link_p].length
-            r2 = scene.links[d.link_q].length
-            p, q, x = pos0[d.p], pos0[d.q], pos0[d.x]
-            side = float((q - p)[0] * (x - p)[1] - (q - p)[1] * (x - p)[0])
-            sigma = _sign_or_toggle(side, d.x, f"{d.link_p} and {d.link_q} are in line", scene)
-            branches[d.x] = sigma
-            ops.append(_Op("rrr", d.x, (d.p, d.q, r1, r2, sigma, d.link_p, d.link_q)))
-        elif isinstance(d, RRP):
-            g = scene.sliders[d.x]
-            L = scene.links[d.link].length
-            e = np.array(g.direction)
-            side = float((pos0[d.x] - pos0[d.p]) @ e)
-            sigma = _sign_or_toggle(side, d.x, f"{d.link} is perpendicular to the guide of "
-                                               f"{d.x}", scene)
-            branches[d.x] = sigma
-            ops.append(_Op("rrp", d.x, (d.p, L, g.through, g.direction, sigma, d.link)))
-        elif isinstance(d, RPR):
-            slot = scene.slots[d.pin]
-            ops.append(_Op("rpr", d.coincident, (d.pin, d.pivot, d.far, slot.far_length,
-                                                 d.lever)))
-        elif isinstance(d, Image):
-            bp = scene.points[d.x]
-            ops.append(_Op("image", d.x, (d.link, d.p, d.q, bp.along, bp.fraction, bp.left)))
-        elif isinstance(d, RPP):
-            g = scene.sliders[d.x]
-            ops.append(_Op("rpp", d.x, (d.pin, g.through, g.direction, g.slot_direction)))
-        else:  # pragma: no cover - a dyad type this module does not know yet
-            raise PolygonsError(f"sweeps do not support the dyad {type(d).__name__} yet",
-                                file=scene.file)
+        if d.two_closures:
+            x = d.placed[0]
+            c1, m1 = d.locate(scene, pos0, 1.0, driver_input(scene))
+            c2, _ = d.locate(scene, pos0, -1.0, driver_input(scene))
+            if float(np.hypot(*(c1[x] - c2[x]))) <= 1e-12 * size_of(scene) or not m1 > 0:
+                raise ConstructionError(
+                    f"the scene's own position is a toggle for {x} ({d.toggle_reason(scene, pos0)}"
+                    f"): the two closures coincide, so there is no branch to follow; state the "
+                    f"scene at another input", file=scene.file, where=x)
+            d1 = float(np.hypot(*(c1[x] - pos0[x])))
+            d2 = float(np.hypot(*(c2[x] - pos0[x])))
+            sigma[x] = 1.0 if d1 <= d2 else -1.0
+    drv = scene.driver
     if isinstance(drv, Crank):
         kind, x0, rate, rate2 = "crank", drv.angle, drv.omega, drv.alpha
     else:
         kind, x0, rate, rate2 = "slider", drv.position, drv.velocity, drv.acceleration
-    links = []
-    for name, link in scene.links.items():
-        links.append((name, link.a, link.b))
+    links = [(name, link.a, link.b) for name, link in scene.links.items()]
     for slot in scene.slots.values():
         if slot.lever not in scene.links:
             links.append((slot.lever, slot.pivot, slot.coincident))
-    lengths = [l.length for l in scene.links.values() if l.length]
-    coords = [abs(c) for v in scene.ground.values() for c in v]
-    return Program(scene, plan, tuple(ops), ground, kind, float(x0), float(rate), float(rate2),
-                   branches, tuple(links), max(lengths + coords + [1e-300]))
-
-
-def _sign_or_toggle(side: float, x: str, why: str, scene: Scene) -> int:
-    if side > 0:
-        return 1
-    if side < 0:
-        return -1
-    raise ConstructionError(f"the scene's own position is a toggle for {x} ({why}): the two "
-                            f"closures coincide, so there is no branch to follow; state the "
-                            f"scene at another input", file=scene.file, where=x)
+    ground = {k: (float(v[0]), float(v[1])) for k, v in scene.ground.items()}
+    return Program(scene, plan, construction(plan, tuple(Diagram)), sigma, ground, kind,
+                   float(x0), float(rate), float(rate2), tuple(links), size_of(scene))
 
 
 # ---------------------------------------------------------------- vectorised evaluation
@@ -244,349 +208,89 @@ def evaluate(prog: Program, inputs, *, rates: bool = True) -> dict:
         return _evaluate(prog, t, rates)
 
 
+def place(prog: Program, t: np.ndarray):
+    """Every point at the inputs ``t`` (each dyad's ``locate`` on arrays), and each dyad's
+    margin: ``(pos, [(dyad, margin), ...])``."""
+    scene = prog.scene
+    pos = {k: np.array(v).reshape((2,) + (1,) * np.ndim(t)) for k, v in prog.ground.items()}
+    margins = []
+    for d in prog.plan.dyads:
+        pts, m = d.locate(scene, pos, prog.sigma.get(d.placed[0]), t)
+        pos.update(pts)
+        if m is not None:
+            margins.append((d, m))
+    return pos, margins
+
+
 def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
-    P: dict = dict(prog.ground)
-    V: dict = {k: None for k in prog.ground}
-    A: dict = {k: None for k in prog.ground}
-    W: dict = {}
-    AL: dict = {}
-    SV: dict = {}
-    SA: dict = {}
-    TR: dict = {}
-    COR: dict = {}
-    margins: list = []
+    scene = prog.scene
     n = t.shape
-
-    for op in prog.ops:
-        k, X, data = op.kind, op.label, op.data
-        if k == "crank":
-            pivot, r, link = data
-            px, py = P[pivot]
-            rx = np.cos(t)
-            rx *= r
-            ry = np.sin(t)
-            ry *= r
-            P[X] = (_plus(px, rx), _plus(py, ry))
-            w, al = prog.rate, prog.rate2
-            W[link], AL[link] = w, al
-            if rates:
-                V[X] = (ry * -w, rx * w)
-                w2 = -w * w
-                if al:
-                    A[X] = (rx * w2 - ry * al, ry * w2 + rx * al)
-                else:
-                    A[X] = (rx * w2, ry * w2)
-        elif k == "drive":
-            (gx, gy), (ex, ey) = data
-            P[X] = (_plus(gx, t * ex), _plus(gy, t * ey))
-            TR[X] = t
-            if rates:
-                v, a = prog.rate, prog.rate2
-                V[X] = (np.full(n, v * ex), np.full(n, v * ey))
-                A[X] = (np.full(n, a * ex), np.full(n, a * ey))
-                SV[X] = np.full(n, v)
-                SA[X] = np.full(n, a)
-        elif k == "rrr":
-            p, q, r1, r2, sigma, lp, lq = data
-            px, py = P[p]
-            qx, qy = P[q]
-            dx = qx - px
-            dy = qy - py
-            d2 = dx * dx
-            d2 += dy * dy
-            inv_d2 = 1.0 / d2
-            af = inv_d2 * (0.5 * (r1 * r1 - r2 * r2))
-            af += 0.5
-            h2 = inv_d2 * (r1 * r1)
-            h2 -= af * af
-            hf = np.sqrt(h2)
-            if _has_nan(hf):
-                # a double closure within the staged assembly's tolerance is a toggle, not a
-                # failure; beyond it the position stays NaN (and the margin negative)
-                hf = np.sqrt(np.where(h2 >= -1e-12 * (r1 * r1 + r2 * r2 + d2) * inv_d2,
-                                      np.maximum(h2, 0.0), np.nan))
-            if sigma < 0:
-                np.negative(hf, out=hf)
-            m1x = af * dx                    # PX
-            m1x -= hf * dy
-            m1y = af * dy
-            m1y += hf * dx
-            P[X] = (px + m1x, py + m1y)
-            det = hf * d2                    # PX × QX: zero at a toggle
-            if rates:
-                margins.append(np.abs(det) * (1.0 / (r1 * r2)))   # sine of the lines' angle
-            else:
-                margins.append(np.where(h2 >= 0, np.abs(det),
-                                        -np.sqrt(np.abs(h2)) * d2) * (1.0 / (r1 * r2)))
-                continue
-            m2x = m1x - dx                   # QX
-            m2y = m1y - dy
-            vp, vq = V[p], V[q]
-            dvx, dvy = _diff(vq, vp)
-            inv = 1.0 / det
-            wp = dvx * m2x
-            wp += dvy * m2y
-            wp *= inv
-            wq = dvx * m1x
-            wq += dvy * m1y
-            wq *= inv
-            vx = m1y * -wp
-            vy = m1x * wp
-            if vp is not None:
-                vx += vp[0]
-                vy += vp[1]
-            V[X] = (vx, vy)
-            W[lp], W[lq] = wp, wq
-            ap, aq = A[p], A[q]
-            wp2 = wp * wp
-            wq2 = wq * wq
-            Rx = wp2 * m1x
-            Rx -= wq2 * m2x
-            Ry = wp2 * m1y
-            Ry -= wq2 * m2y
-            if aq is not None:
-                Rx += aq[0]
-                Ry += aq[1]
-            if ap is not None:
-                Rx -= ap[0]
-                Ry -= ap[1]
-            alp = Rx * m2x
-            alp += Ry * m2y
-            alp *= inv
-            alq = Rx * m1x
-            alq += Ry * m1y
-            alq *= inv
-            ax = alp * -m1y
-            ax -= wp2 * m1x
-            ay = alp * m1x
-            ay -= wp2 * m1y
-            if ap is not None:
-                ax += ap[0]
-                ay += ap[1]
-            A[X] = (ax, ay)
-            AL[lp], AL[lq] = alp, alq
-        elif k == "rrp":
-            # in the guide's frame (u along e, n across): the pin P at (pu, pn) relative to
-            # the guide's point g; X = g + t e with (t - pu)² + pn² = L²
-            p, L, (gx, gy), (ex, ey), sigma, link = data
-            px, py = P[p]
-            wx = px - gx if gx else px
-            wy = py - gy if gy else py
-            aligned = ey == 0.0 and ex == 1.0
-            if aligned:
-                pu, pn = wx, wy
-            else:
-                pu = ex * wx
-                pu += ey * wy
-                pn = ex * wy
-                pn -= ey * wx
-            disc = pn * pn
-            np.subtract(L * L, disc, out=disc)
-            root = np.sqrt(disc)
-            if _has_nan(root):
-                root = np.sqrt(np.where(disc >= -1e-12 * L * L, np.maximum(disc, 0.0), np.nan))
-            me = root if sigma > 0 else -root       # PX · e: zero at a toggle
-            tt = pu + me                            # travel along the guide from g
-            if aligned:
-                P[X] = (_plus(gx, tt), np.full(n, gy))
-            else:
-                P[X] = (_plus(gx, tt * ex), _plus(gy, tt * ey))
-            TR[X] = tt
-            if rates:
-                margins.append(root * (1.0 / L))
-            else:
-                margins.append(np.where(disc >= 0, root, -np.sqrt(np.abs(disc))) * (1.0 / L))
-                continue
-            vp, ap = V[p], A[p]
-            ninv = -1.0 / me
-            if vp is None:
-                w = 0.0 * me
-                sd = 0.0 * me
-            else:
-                if aligned:
-                    vu, vn = vp
-                else:
-                    vu = ex * vp[0]
-                    vu += ey * vp[1]
-                    vn = ex * vp[1]
-                    vn -= ey * vp[0]
-                w = vn * ninv                       # ω = (v_p × e) / (PX · e)
-                sd = w * pn
-                sd += vu                            # ṡ = v_p·e + ω (PX × e)
-            w2 = w * w
-            if ap is None:
-                bu = w2 * -me
-                bn = w2 * pn
-            else:
-                if aligned:
-                    au, an = ap
-                else:
-                    au = ex * ap[0]
-                    au += ey * ap[1]
-                    an = ex * ap[1]
-                    an -= ey * ap[0]
-                bu = au - w2 * me                   # (a_p − ω² PX)·e
-                bn = w2 * pn
-                bn += an                            # (a_p − ω² PX)·n
-            al = bn * ninv
-            sdd = al * pn
-            sdd += bu
-            if aligned:
-                V[X] = (sd, np.zeros(n))
-                A[X] = (sdd, np.zeros(n))
-            else:
-                V[X] = (sd * ex, sd * ey)
-                A[X] = (sdd * ex, sdd * ey)
-            W[link], AL[link] = w, al
-            SV[X], SA[X] = sd, sdd
-        elif k == "rpr":
-            pin, pivot, far, far_len, lever = data
-            ax_, ay_ = P[pin]
-            bx_, by_ = P[pivot]
-            rx = ax_ - bx_
-            ry = ay_ - by_
-            rho2 = rx * rx
-            rho2 += ry * ry
-            rho = np.sqrt(rho2)
-            P[X] = P[pin]
-            # the lines of an RPR construction are always perpendicular; only a pin on the
-            # pivot (no slot direction) degenerates it
-            margins.append(np.where(rho > 1e-12 * prog.scale, 1.0, 0.0))
-            if far is not None:
-                f = far_len / rho
-                fx, fy = f * rx, f * ry
-                P[far] = (_plus(bx_, fx), _plus(by_, fy))
-            if not rates:
-                continue
-            va, aa = V[pin], A[pin]
-            inv2 = 1.0 / rho2
-            inv1 = 1.0 / rho
-            w = rx * va[1]
-            w -= ry * va[0]
-            w *= inv2
-            sd = rx * va[0]
-            sd += ry * va[1]
-            sd *= inv1
-            c2 = w * sd
-            c2 *= 2.0 * inv1                             # 2ωṡ / ρ
-            al = rx * aa[1]
-            al -= ry * aa[0]
-            al *= inv2
-            al -= c2                                     # α = (BA × a_A)/BA² − 2ωṡ/BA
-            w2 = w * w
-            sdd = rx * aa[0]
-            sdd += ry * aa[1]
-            sdd *= inv1
-            sdd += w2 * rho
-            W[lever], AL[lever] = w, al
-            SV[pin], SA[pin] = sd, sdd
-            COR[pin] = (ry * -c2, rx * c2)
-            V[X] = (ry * -w, rx * w)
-            ax1 = al * -ry
-            ax1 -= w2 * rx
-            ay1 = al * rx
-            ay1 -= w2 * ry
-            A[X] = (ax1, ay1)
-            if far is not None:
-                V[far] = (fy * -w, fx * w)
-                ax2 = al * -fy
-                ax2 -= w2 * fx
-                ay2 = al * fx
-                ay2 -= w2 * fy
-                A[far] = (ax2, ay2)
-        elif k == "image":
-            link, p, q, along, fraction, left = data
-            px, py = P[p]
-            qx, qy = P[q]
-            dx = qx - px
-            dy = qy - py
-            n2 = dx * dx + dy * dy
-            nn = np.sqrt(n2)
-            ux = dx / nn
-            uy = dy / nn
-            al_ = along if along is not None else fraction * nn
-            rx = al_ * ux - left * uy
-            ry = al_ * uy + left * ux
-            P[X] = (px + rx, py + ry)
-            if not rates:
-                continue
-            vp, vq = V[p], V[q]
-            if link not in W:
-                dvx, dvy = _diff(vq, vp)
-                W[link] = (dx * dvy - dy * dvx) / n2
-            w = W[link]
-            vx, vy = -w * ry, w * rx
-            if vp is not None:
-                vx, vy = vx + vp[0], vy + vp[1]
-            V[X] = (vx, vy)
-            ap, aq = A[p], A[q]
-            if link not in AL:
-                dax, day = _diff(aq, ap)
-                AL[link] = (dx * day - dy * dax) / n2
-            al = AL[link]
-            w2 = w * w
-            ax, ay = -al * ry - w2 * rx, al * rx - w2 * ry
-            if ap is not None:
-                ax, ay = ax + ap[0], ay + ap[1]
-            A[X] = (ax, ay)
-        elif k == "rpp":
-            pin, (gx, gy), (ex, ey), (sx, sy) = data
-            den = ex * sy - ey * sx                  # guide × slot
-            ppx, ppy = P[pin]
-            tt = ((ppx - gx) * sy - (ppy - gy) * sx) / den
-            P[X] = (_plus(gx, tt * ex), _plus(gy, tt * ey))
-            TR[X] = tt
-            margins.append(np.full(n, abs(den)))
-            if not rates:
-                continue
-            vp, ap = V[pin], A[pin]
-            sd = (vp[0] * sy - vp[1] * sx) / den
-            sdd = (ap[0] * sy - ap[1] * sx) / den
-            V[X] = (sd * ex, sd * ey)
-            A[X] = (sdd * ex, sdd * ey)
-            SV[X], SA[X] = sd, sdd
-        else:  # pragma: no cover
-            raise AssertionError(k)
-
-    if rates:
-        for name, a, b in prog.links:
-            if name in W or a not in P or b not in P:
-                continue
-            dx, dy = _diff(P[b], P[a])
-            n2 = dx * dx + dy * dy
-            dvx, dvy = _diff(V[b], V[a])
-            dax, day = _diff(A[b], A[a])
-            W[name] = (dx * dvy - dy * dvx) / n2
-            AL[name] = (dx * day - dy * dax) / n2
-    if not margins:
-        margin = np.ones(n)
-    else:
-        margin = margins[0]
-        for m in margins[1:]:
-            margin = np.minimum(margin, m)
-    return {"pos": P, "vel": V, "acc": A, "omega": W, "alpha": AL, "slide_v": SV,
-            "slide_a": SA, "travel": TR, "coriolis": COR, "margin": margin}
+    pos, margins = place(prog, t)
+    margin = np.ones(n)
+    for _, m in margins:
+        margin = np.minimum(margin, m)
+    P = {k: (v[0], v[1]) if k not in prog.ground else prog.ground[k] for k, v in pos.items()}
+    travel = {}
+    for label, g in scene.sliders.items():
+        if label in pos and label not in prog.ground:
+            e = g.direction
+            travel[label] = ((pos[label][0] - g.through[0]) * e[0]
+                             + (pos[label][1] - g.through[1]) * e[1])
+    out = {"pos": P, "travel": travel, "margin": margin}
+    if not rates:
+        return out
+    drv = scene.driver
+    omega, alpha = {}, {}
+    if isinstance(drv, Crank):
+        omega[drv.link], alpha[drv.link] = prog.rate, prog.rate2
+    k = Kernel(scene, pos, Vertices(scene), _ARRAYS, omega, alpha, arrays=True)
+    for step in prog.steps:
+        k.run(step)
+    full = (2,) + n
+    V, A = {}, {}
+    for label in pos:
+        if label in prog.ground:
+            V[label] = A[label] = None
+            continue
+        v, a = k.of(Diagram.VELOCITY, label), k.of(Diagram.ACCELERATION, label)
+        V[label] = tuple(np.broadcast_to(_col(v, n), full))
+        A[label] = tuple(np.broadcast_to(_col(a, n), full))
+    W, AL = dict(k.omega), dict(k.alpha)
+    for name, a, b in prog.links:
+        if name in W or a not in pos or b not in pos:
+            continue
+        r = pos[b] - pos[a]
+        W[name] = angular_velocity(r, _diff(V[b], V[a]))
+        AL[name] = angular_acceleration(r, _diff(A[b], A[a]))
+    SV, SA = {}, {}
+    for label, g in scene.sliders.items():
+        if label in travel:
+            e = g.direction
+            SV[label] = V[label][0] * e[0] + V[label][1] * e[1]
+            SA[label] = A[label][0] * e[0] + A[label][1] * e[1]
+    SV.update(k.slide_v)
+    SA.update(k.slide_a)
+    COR = {pin: (c[0], c[1]) for pin, c in k.cor.items()}
+    out.update(vel=V, acc=A, omega=W, alpha=AL, slide_v=SV, slide_a=SA, coriolis=COR)
+    return out
 
 
-def _plus(c: float, arr):
-    """c + arr, without the pass over the array when c is 0 (a pivot at the origin)."""
-    return arr if c == 0.0 else c + arr
+_ARRAYS = Backend()
 
 
-def _has_nan(a) -> bool:
-    m = np.min(a)
-    return m != m
+def _col(v, n):
+    return v if np.ndim(v) > 1 else np.reshape(v, (2,) + (1,) * len(n))
 
 
 def _diff(b, a):
     """b − a for (x, y) pairs where ``None`` is the zero vector."""
     if b is None and a is None:
-        return 0.0, 0.0
+        return np.zeros(2)
     if a is None:
-        return b
+        return np.array(b)
     if b is None:
-        return -a[0], -a[1]
-    return b[0] - a[0], b[1] - a[1]
+        return -np.array(a)
+    return np.array(b) - np.array(a)
 
 
 # ---------------------------------------------------------------- range and toggles
@@ -596,38 +300,13 @@ def _margin(prog: Program, x) -> np.ndarray:
 
 def _culprit(prog: Program, x: float) -> tuple[str, str]:
     """The dyad with the smallest margin at input ``x``, and what degenerates there."""
-    P = evaluate(prog, np.array([x], dtype=float), rates=False)["pos"]
-    best = (math.inf, "", "")
-    for op in prog.ops:
-        k, X, data = op.kind, op.label, op.data
-        if k == "rrr":
-            p, q, r1, r2, sigma, lp, lq = data
-            d = math.hypot(_f0(P[q][0]) - _f0(P[p][0]), _f0(P[q][1]) - _f0(P[p][1]))
-            a = (r1 * r1 - r2 * r2 + d * d) / (2 * d)
-            h2 = r1 * r1 - a * a
-            m = math.copysign(math.sqrt(abs(h2)), h2) * d / (r1 * r2)
-            how = ("stretched out" if abs(d - (r1 + r2)) < abs(d - abs(r1 - r2))
-                   else "folded back")
-            best = min(best, (m, X, f"{lp} and {lq} are in line ({p}, {X}, {q} collinear, "
-                                    f"{how})"))
-        elif k == "rrp":
-            p, L, g, e, sigma, link = data
-            wx, wy = g[0] - _f0(P[p][0]), g[1] - _f0(P[p][1])
-            bq = e[0] * wx + e[1] * wy
-            disc = bq * bq - (wx * wx + wy * wy - L * L)
-            m = math.copysign(math.sqrt(abs(disc)), disc) / L
-            best = min(best, (m, X, f"{link} is perpendicular to the guide of {X} (it "
-                                    f"reaches the guide no further)"))
-        elif k == "rpr":
-            pin, pivot, *_ = data
-            m = math.hypot(_f0(P[pin][0]) - _f0(P[pivot][0]),
-                           _f0(P[pin][1]) - _f0(P[pivot][1])) / prog.scale
-            best = min(best, (m, X, f"the pin {pin} is on the lever pivot {pivot}"))
-    return best[1], best[2]
-
-
-def _f0(v) -> float:
-    return float(v[0]) if np.ndim(v) else float(v)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        pos, margins = place(prog, np.array([x], dtype=float))
+    if not margins:
+        return "", ""
+    d, _ = min(margins, key=lambda dm: float(dm[1][0]) if np.isfinite(dm[1][0]) else -math.inf)
+    at = {k: (v[:, 0] if np.ndim(v) > 1 else v) for k, v in pos.items()}
+    return d.placed[0], d.toggle_reason(prog.scene, at)
 
 
 def _bisect(prog: Program, good: float, bad: float, iters: int = 200) -> float:
@@ -806,7 +485,7 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
                             f"(construction lines parallel within {PARALLEL_DEG:g}°): their "
                             f"velocities and accelerations are undefined and left as NaN")
     return Sweep(scene, prog.plan, prog.input_kind, xs, prog.rate, prog.rate2, full, rng,
-                 tuple(limits) + tuple(toggles), segments, dict(prog.branches),
+                 tuple(limits) + tuple(toggles), segments, prog.branches,
                  res["pos"], res["vel"], res["acc"], res["omega"], res["alpha"],
                  res["slide_v"], res["slide_a"], res["travel"], res["coriolis"], margin,
                  tuple(warnings))

@@ -36,11 +36,14 @@ class CrankDyad:
         if np.ndim(x) == 0:
             tip = p + r * np.array([math.cos(x), math.sin(x)])
         else:
-            tip = p.reshape(2, 1) + r * np.array([np.cos(x), np.sin(x)])
+            tip = p + r * np.array([np.cos(x), np.sin(x)])
         return {self.tip: tip}, None
 
     def why_not(self, scene, pos) -> str:
         return ""
+
+    def toggle_reason(self, scene, pos) -> str:
+        return self.why_not(scene, pos)
 
     def emit(self, b: Builder) -> None:
         P, X, L = self.pivot, self.tip, self.link

@@ -43,6 +43,9 @@ class Image:
         return (f"link {self.link} has zero length at this instant, so {self.x} cannot be "
                 f"placed on it")
 
+    def toggle_reason(self, scene, pos) -> str:
+        return self.why_not(scene, pos)
+
     def emit(self, b: Builder) -> None:
         emit_image(b, self.x, self.link, self.p, self.q)
 

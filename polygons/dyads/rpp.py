@@ -43,6 +43,9 @@ class RPP:
     def why_not(self, scene, pos) -> str:
         return f"the slot of the yoke {self.x} is parallel to its guide"
 
+    def toggle_reason(self, scene, pos) -> str:
+        return self.why_not(scene, pos)
+
     def emit(self, b: Builder) -> None:
         A, Y = self.pin, self.x
         V = b.names.of

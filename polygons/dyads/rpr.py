@@ -52,6 +52,9 @@ class RPR:
         return (f"the pin {self.pin} is on the pivot {self.pivot} of lever {self.lever}: the "
                 f"slot direction is undefined")
 
+    def toggle_reason(self, scene, pos) -> str:
+        return self.why_not(scene, pos)
+
     def emit(self, b: Builder) -> None:
         A, B, A1, lev = self.pin, self.pivot, self.coincident, self.lever
         V = b.names.of

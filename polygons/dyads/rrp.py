@@ -56,6 +56,10 @@ class RRP:
         return (f"{self.link} is perpendicular to the guide of {self.x} (it reaches the guide "
                 f"no further)")
 
+    def toggle_reason(self, scene, pos) -> str:
+        return (f"{self.link} is perpendicular to the guide of {self.x} (it reaches the guide "
+                f"no further)")
+
     def emit(self, b: Builder) -> None:
         pinned.emit_two_lines(b, self.p, self.x, self.link, other=None)
 

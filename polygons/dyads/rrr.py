@@ -58,11 +58,19 @@ class RRR:
             why = (f"|{self.link_p} − {self.link_q}| = {1e3 * abs(r1 - r2):.6g} mm is longer "
                    f"than {self.p}{self.q} = {1e3 * dist:.6g} mm")
         else:
-            how = ("stretched out" if abs(dist - (r1 + r2)) < abs(dist - abs(r1 - r2))
-                   else "folded back")
-            return (f"{self.link_p} and {self.link_q} are in line ({self.p}, {self.x}, "
-                    f"{self.q} collinear, {how})")
+            return self.toggle_reason(scene, pos)
         return (f"the links cannot close at this input: {why}, so {self.x} cannot be placed")
+
+    def toggle_reason(self, scene, pos) -> str:
+        import math
+        r1 = scene.links[self.link_p].length
+        r2 = scene.links[self.link_q].length
+        d = pos[self.q] - pos[self.p]
+        dist = math.hypot(float(d[0]), float(d[1]))
+        how = ("stretched out" if abs(dist - (r1 + r2)) < abs(dist - abs(r1 - r2))
+               else "folded back")
+        return (f"{self.link_p} and {self.link_q} are in line ({self.p}, {self.x}, {self.q} "
+                f"collinear, {how})")
 
     def emit(self, b: Builder) -> None:
         pinned.emit_two_lines(b, self.p, self.x, self.link_p, other=(self.q, self.link_q))

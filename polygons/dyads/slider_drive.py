@@ -36,6 +36,9 @@ class SliderDriveDyad:
     def why_not(self, scene, pos) -> str:
         return ""
 
+    def toggle_reason(self, scene, pos) -> str:
+        return self.why_not(scene, pos)
+
     def emit(self, b: Builder) -> None:
         X = self.point
         x, pole, q = b.names.of(X), b.names.pole, b.q
