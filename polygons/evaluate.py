@@ -191,6 +191,11 @@ def _collect(plan: Plan, placement: Placement, st: Kernel, steps: tuple[Step, ..
             warnings.append(f"{s.diagram} step {s.number}: the lines meeting at {s.end} cross at "
                             f"only {s.angle_deg:.3g}° — close to a toggle; the drawing and this "
                             f"number are unreliable")
+    if "velocity" in solved and all(v == 0.0 for vec in st.vx["velocity"].values()
+                                    for v in np.ravel(vec)):
+        warnings.append("the mechanism is at rest at this instant: every velocity is zero, so "
+                        "the velocity polygon collapses to the pole and the acceleration "
+                        "polygon has tangential (and given) components only")
     vertices = {d: MappingProxyType({k: _t(v) for k, v in st.vx[d].items()}) for d in solved}
     return Solution(scene, plan, placement, steps, st.names.pole, MappingProxyType(vertices),
                     MappingProxyType(points), MappingProxyType(links),

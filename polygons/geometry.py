@@ -70,6 +70,10 @@ def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
             f"the {l1.name or 'first line'} and the {l2.name or 'second line'} are parallel "
             f"(angle {angle:.2g}°): the mechanism is at a toggle or change point and this "
             f"point of the polygon is undefined", step=step)
+    if l1.point == l2.point:
+        # both lines through one point (an instant at rest: every relative velocity is zero,
+        # so the lines of unknown length all start at the pole): they meet there, exactly
+        return Intersection(l1.point, angle)
     p, q, u, v = (_flush(np.array(x)) for x in (l1.point, l2.point, l1.direction,
                                                  l2.direction))
     scale = max(float(np.hypot(*p)), float(np.hypot(*q)), float(np.hypot(*(p - q))), 1e-300)

@@ -445,7 +445,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     driver: Crank | SliderDrive
     if "crank" in drv:
         r.table(drv, "driver", ("crank", "angle", "omega", "sense", "alpha", "alpha_sense"),
-                required=("crank", "omega", "sense"))
+                required=("crank", "omega"))
         name = r.string(drv["crank"], "driver.crank")
         pivot, tip = split_link_name(name, file=file, where="driver.crank")
         if name not in links and f"{tip}{pivot}" in links:
@@ -458,7 +458,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                              f"fixed pivot in [ground] ({', '.join(ground)}); write the crank "
                              f"with its pivot first", file=file, where="driver.crank")
         omega = abs(r.quantity(drv["omega"], "angular_velocity", "driver.omega"))
-        omega *= r.sense(drv["sense"], "driver.sense")
+        if "sense" in drv:
+            omega *= r.sense(drv["sense"], "driver.sense")
+        elif omega != 0.0:   # a crank at rest has no sense of rotation
+            raise SceneError("missing key 'sense' (required: crank, omega, sense; only a crank "
+                             "at rest, omega = 0, may leave it out)", file=file,
+                             where="driver")
         alpha = 0.0
         if "alpha" in drv:
             alpha = abs(r.quantity(drv["alpha"], "angular_acceleration", "driver.alpha"))

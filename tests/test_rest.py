@@ -1,0 +1,91 @@
+"""Instants at rest (ω = 0, with or without α): the velocity polygon collapses to the pole, the
+acceleration polygon holds tangential (and given) components only, and the lines through the
+pole are met there, not refused as a toggle.  Exact values from tests/analytic.py."""
+import math
+
+import numpy as np
+import pytest
+
+import analytic as an
+from conftest import CASES
+from polygons.evaluate import solve
+from polygons.scene import load_scene
+import tomllib
+
+from polygons.scene import parse_scene
+
+
+def scene_from_text(text):
+    return parse_scene(tomllib.loads(text))
+
+REL = 1e-9
+
+
+def test_the_shipped_rest_case_agrees_with_the_loop_closure():
+    sol = solve(load_scene(CASES / "rest-slider-crank.toml"))
+    ref = an.slider_crank((0, 0), 0.1, 0.4, math.radians(45), 0.0, 200.0, (0, 0), 0.0, +1)
+    for label in ("A", "B"):
+        assert sol.points[label].velocity == (0.0, 0.0)
+    np.testing.assert_allclose(sol.points["B"].acceleration, ref["aB"], rtol=REL, atol=1e-12)
+    np.testing.assert_allclose(sol.points["A"].acceleration, ref["aA"], rtol=REL, atol=1e-12)
+    assert sol.links["AB"].alpha == pytest.approx(ref["alpha_AB"], rel=REL)
+    assert any("at rest" in w for w in sol.warnings)
+    # every centripetal component is zero: each centripetal step's vector vanishes
+    cen = [s for s in sol.steps if s.op == "centripetal"]
+    assert cen and all(s.vector == (0.0, 0.0) for s in cen)
+
+
+FOURBAR = """
+[ground]
+A = ["0 mm", "0 mm"]
+D = ["200 mm", "0 mm"]
+[links]
+AB = "80 mm"
+BC = "136 mm"
+CD = "160 mm"
+[driver]
+crank = "AB"
+angle = "{angle} deg"
+omega = "0 rad/s"
+alpha = "{alpha} rad/s^2"
+alpha_sense = "CW"
+[assembly]
+C = "C below AD"
+"""
+
+
+@pytest.mark.parametrize("angle,alpha", [(300, 200), (30, 1), (123.4, 5e3)])
+def test_a_four_bar_at_rest_matches_the_loop_closure(angle, alpha):
+    sol = solve(scene_from_text(FOURBAR.format(angle=angle, alpha=alpha)))
+    C = np.array(sol.points["C"].position)
+    branch = 1 if 0.2 * C[1] > 0 else -1          # cross(D − A, C − A) with A at O
+    ref = an.four_bar((0, 0), (0.2, 0), 0.08, 0.136, 0.16, math.radians(angle), 0.0, -alpha,
+                      branch)
+    assert sol.points["C"].velocity == (0.0, 0.0)
+    np.testing.assert_allclose(sol.points["C"].acceleration, ref["aC"], rtol=REL)
+    assert sol.links["BC"].alpha == pytest.approx(ref["alpha_BC"], rel=REL)
+    assert sol.links["CD"].alpha == pytest.approx(ref["alpha_CD"], rel=REL)
+    assert sol.links["BC"].omega == 0.0 and sol.links["CD"].omega == 0.0
+
+
+def test_a_slotted_lever_at_rest_has_no_coriolis_and_exact_alpha():
+    text = """
+[ground]
+O4 = ["0 m", "0 m"]
+O2 = ["0 m", "0.45 m"]
+[links]
+O2P2 = "0.20 m"
+[driver]
+crank = "O2P2"
+angle = "19.7 deg"
+omega = "0 rad/s"
+alpha = "10 rad/s^2"
+alpha_sense = "CCW"
+[slots.P2]
+lever = "O4P4"
+"""
+    sol = solve(scene_from_text(text))
+    ref = an.slotted_lever((0, 0.45), 0.2, math.radians(19.7), 0.0, 10.0, (0, 0))
+    assert sol.slides["P2"].coriolis == (0.0, 0.0) or np.allclose(sol.slides["P2"].coriolis, 0)
+    assert sol.links["O4P4"].alpha == pytest.approx(ref["alpha_lever"], rel=REL)
+    assert sol.links["O4P4"].omega == 0.0
