@@ -17,6 +17,7 @@ from typing import Iterable
 from . import dyads as kinds
 from .dyads import RPP, RPR, RRP, RRR, CrankDyad, Dyad, Image, SliderDriveDyad  # noqa: F401
 from .errors import UnknownLabelError, UnsupportedError, suggest
+from .mobility import check_mobility, used_links
 from .scene import Scene
 from .steps import Builder, Diagram, Step, Vertices  # noqa: F401  (re-exported)
 
@@ -29,7 +30,24 @@ class Plan:
 
 
 def make_plan(scene: Scene, targets: Iterable[str] | None = None) -> Plan:
-    """Order the scene into dyads; keep only those the ``targets`` (labels) depend on."""
+    """Order the scene into dyads; keep only those the ``targets`` (labels) depend on.
+
+    The scene's mobility is checked first (:func:`polygons.mobility.check_mobility`): a
+    locked, over-constrained or under-driven scene is refused before any dyad is ordered."""
+    dyads = _order(scene)
+    check_mobility(scene, redundant=tuple(sorted(set(scene.links) - used_links(dyads))))
+    if targets is None:
+        return Plan(scene, tuple(dyads), tuple(scene.labels))
+    targets = tuple(targets)
+    for t in targets:
+        if t not in scene.labels:
+            raise UnknownLabelError(f"unknown point {t!r}: {suggest(t, scene.labels)}",
+                                    file=scene.file)
+    return Plan(scene, _prune(dyads, targets, scene), targets)
+
+
+def _order(scene: Scene) -> list[Dyad]:
+    """The driver, then pass by pass every dyad that can be placed."""
     placed: set[str] = set(scene.ground)
     dyads: list[Dyad] = []
     for module in kinds.DRIVERS:
@@ -61,6 +79,7 @@ def make_plan(scene: Scene, targets: Iterable[str] | None = None) -> Plan:
 
     missing = [lab for lab in labels if lab not in placed]
     if missing:
+        check_mobility(scene)      # an under-driven scene is said so before "cannot place"
         x = missing[0]
         joined = [l.name for l in links if x in (l.a, l.b)]
         raise UnsupportedError(
@@ -68,15 +87,7 @@ def make_plan(scene: Scene, targets: Iterable[str] | None = None) -> Plan:
             f"is placed by two links to placed points, a link plus a slider guide "
             f"([sliders.{x}]), a slot, or [points.{x}] on a placed link", file=scene.file,
             where=x)
-
-    if targets is None:
-        return Plan(scene, tuple(dyads), tuple(scene.labels))
-    targets = tuple(targets)
-    for t in targets:
-        if t not in scene.labels:
-            raise UnknownLabelError(f"unknown point {t!r}: {suggest(t, scene.labels)}",
-                                    file=scene.file)
-    return Plan(scene, _prune(dyads, targets, scene), targets)
+    return dyads
 
 
 def _point_dyad(scene: Scene, x: str, placed: set[str], links) -> Dyad | None:

@@ -14,6 +14,7 @@ import numpy as np
 
 from .dyads.base import size_of
 from .errors import AssemblyError, BranchError
+from .mobility import check_redundant_lengths
 from .plan import Plan
 from .scene import Branch, Crank, Scene
 from .theorems import cross
@@ -64,7 +65,9 @@ def assemble(plan: Plan) -> Placement:
                     f"{label} is drawn at {_fmt(np.array(xy))} but the links put it at "
                     f"{_fmt(pos[label])} ({1e3 * off:.4g} mm away): the drawing and the lengths "
                     f"disagree", file=scene.file, where=f"drawn.{label}")
-    return Placement({k: (float(v[0]), float(v[1])) for k, v in pos.items()}, tuple(chosen))
+    points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
+    check_redundant_lengths(scene, plan, points)
+    return Placement(points, tuple(chosen))
 
 
 def driver_input(scene: Scene) -> float:

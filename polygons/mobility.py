@@ -1,0 +1,183 @@
+"""Mobility: does the scene move, and with how many inputs?  Checked before anything is solved.
+
+Grübler–Kutzbach for plane mechanisms::
+
+    F = 3 (n − 1) − 2 j₁ − j₂
+
+with n the number of bodies including the frame, j₁ the lower pairs (each pin joining k bodies
+counts k − 1 revolutes; each sliding pair one prismatic) and j₂ the higher pairs (none here: a
+pin in a slot is modelled, as the textbooks draw it, by a sliding block pinned to the pin and
+sliding in the slot).  The scene must have exactly as many degrees of freedom as it states
+inputs: F = 0 is a locked structure (a frame), F < 0 an over-constrained one, F > inputs needs
+more inputs.  After assembly, a link whose two ends were placed by other links (a redundant
+link) must have its stated length.
+
+The body model read from the scene: the frame holds every [ground] point and every fixed guide;
+each [links] entry is a body with its two end points plus the [points] declared on it; a slotted
+lever not in [links] is a body (pivot, far end, its points); each slider on a fixed guide, each
+slot's pin and each Scotch-yoke pin is a sliding block (a body pinned at its point, sliding on
+its guide, lever or yoke); a yoke is a body sliding on the frame.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import SceneError
+
+#: the frame's name in the body model
+FRAME = "frame"
+
+
+class MobilityError(SceneError):
+    """The scene does not move with its stated inputs: locked, over-constrained, too few
+    inputs, or a redundant link of the wrong length.  Carries the count as data."""
+
+    def __init__(self, message: str, *, dof: int | None = None, links: tuple[str, ...] = (),
+                 file: str | None = None, where: str | None = None):
+        super().__init__(message, file=file, where=where)
+        self.dof = dof
+        self.links = links
+
+
+@dataclass(frozen=True)
+class Mobility:
+    """The Grübler–Kutzbach count of a scene."""
+    bodies: tuple[str, ...]       # moving bodies (the frame not included)
+    revolutes: int                # j₁ from pins
+    prismatics: int               # j₁ from sliding pairs
+    inputs: tuple[str, ...]       # what the scene drives
+    dof: int                      # F
+
+    @property
+    def formula(self) -> str:
+        n = len(self.bodies) + 1
+        j = self.revolutes + self.prismatics
+        return f"F = 3({n} − 1) − 2 × {j} = {self.dof}"
+
+
+def bodies_at(scene) -> tuple[dict[str, set[str]], int, tuple[str, ...]]:
+    """(label → the bodies pinned there, number of sliding pairs, moving bodies)."""
+    at: dict[str, set[str]] = {}
+    moving: list[str] = []
+
+    def put(label, body):
+        at.setdefault(label, set()).add(body)
+
+    for g in scene.ground:
+        put(g, FRAME)
+    for name, link in scene.links.items():
+        moving.append(name)
+        put(link.a, name)
+        put(link.b, name)
+    prismatic = 0
+    for pin, slot in scene.slots.items():
+        lever = slot.lever
+        if lever not in scene.links:
+            moving.append(lever)
+        put(slot.pivot, lever)
+        if slot.far:
+            put(slot.far, lever)
+        block = f"block {pin}"
+        moving.append(block)
+        put(pin, block)           # the block turns on the pin ...
+        prismatic += 1            # ... and slides in the lever's slot
+    for label, guide in scene.sliders.items():
+        if guide.pin is not None:            # a Scotch yoke
+            yoke = f"yoke {label}"
+            moving.append(yoke)
+            put(label, yoke)
+            block = f"block {guide.pin}"
+            moving.append(block)
+            put(guide.pin, block)
+            prismatic += 2                   # yoke on the frame, block in the yoke's slot
+        else:
+            block = f"slider {label}"
+            moving.append(block)
+            put(label, block)
+            prismatic += 1                   # on its fixed guide
+    for label, bp in scene.points.items():
+        put(label, bp.link)
+    return at, prismatic, tuple(moving)
+
+
+def inputs_of(scene) -> tuple[str, ...]:
+    drv = scene.driver
+    names = [getattr(drv, "link", None) or f"slider {getattr(drv, 'point', '?')}"]
+    extra = getattr(scene, "inputs", ())
+    return tuple(names) + tuple(extra)
+
+
+def mobility(scene) -> Mobility:
+    """F = 3(n − 1) − 2 j₁ − j₂ for the scene's body model."""
+    at, prismatic, moving = bodies_at(scene)
+    revolutes = sum(len(bodies) - 1 for bodies in at.values())
+    n = len(moving) + 1
+    dof = 3 * (n - 1) - 2 * (revolutes + prismatic)
+    return Mobility(moving, revolutes, prismatic, inputs_of(scene), dof)
+
+
+def check_mobility(scene, redundant: tuple[str, ...] = ()) -> Mobility:
+    """Refuse a scene whose degrees of freedom differ from its stated inputs; ``redundant``
+    names the links no dyad needs (the planner's), blamed first when the scene is locked."""
+    m = mobility(scene)
+    k = len(m.inputs)
+    links = tuple(b for b in m.bodies if b in scene.links)
+    named = ", ".join(links)
+    if m.dof == k:
+        return m
+    blame = (f"{', '.join(redundant)} {'is' if len(redundant) == 1 else 'are'} redundant "
+             f"(both ends already placed by the other links)" if redundant else
+             "remove the redundant link")
+    if m.dof == 0:
+        raise MobilityError(
+            f"the links {named} form a locked structure (a frame), not a mechanism: "
+            f"Grübler–Kutzbach gives {m.formula} degrees of freedom, so the input "
+            f"{m.inputs[0]} cannot move; {blame}", dof=m.dof, links=redundant or links,
+            file=scene.file, where=f"links.{redundant[0]}" if redundant else "links")
+    if m.dof < 0:
+        raise MobilityError(
+            f"the links {named} are over-constrained (a statically indeterminate structure): "
+            f"Grübler–Kutzbach gives {m.formula} degrees of freedom; {blame}", dof=m.dof,
+            links=redundant or links, file=scene.file,
+            where=f"links.{redundant[0]}" if redundant else "links")
+    if m.dof > k:
+        raise MobilityError(
+            f"the mechanism has {m.dof} degrees of freedom ({m.formula}) but {k} input"
+            f"{'' if k == 1 else 's'} ({', '.join(m.inputs)}): it needs {m.dof - k} more "
+            f"input{'' if m.dof - k == 1 else 's'} (a second driver) before it is "
+            f"constrained; the links are {named}", dof=m.dof, links=links, file=scene.file,
+            where="driver")
+    raise MobilityError(
+        f"the mechanism has {m.dof} degree of freedom ({m.formula}) but {k} inputs "
+        f"({', '.join(m.inputs)}): the inputs fight each other", dof=m.dof, links=links,
+        file=scene.file, where="driver")
+
+
+def used_links(dyads) -> set[str]:
+    """The links the ``dyads`` place a point with (all others are redundant)."""
+    used: set[str] = set()
+    for d in dyads:
+        for attr in ("link", "link_p", "link_q", "lever"):
+            name = getattr(d, attr, None)
+            if name:
+                used.add(name)
+    return used
+
+
+def check_redundant_lengths(scene, plan, points, rel: float = 1e-9) -> None:
+    """A link whose two ends are placed by other means must have its stated length."""
+    used = used_links(plan.dyads)
+    for name, link in scene.links.items():
+        if name in used or link.length is None:
+            continue
+        if link.a not in points or link.b not in points:
+            continue
+        (ax, ay), (bx, by) = points[link.a], points[link.b]
+        actual = math.hypot(bx - ax, by - ay)
+        if abs(actual - link.length) > rel * max(link.length, actual):
+            raise MobilityError(
+                f"link {name} is {1e3 * link.length:.6g} mm in [links], but its ends {link.a} "
+                f"and {link.b} are placed {1e3 * actual:.6g} mm apart by the other links: a "
+                f"redundant link must fit exactly (or remove it)", links=(name,),
+                file=scene.file, where=f"links.{name}")
