@@ -59,12 +59,13 @@ class Kernel:
     """
 
     def __init__(self, scene, pos, names, backend: Backend, omega=None, alpha=None,
-                 arrays: bool = False):
+                 arrays: bool = False, detail: bool = True):
         self.scene = scene
         self.pos = pos
         self.names = names
         self.b = backend
         self.arrays = arrays      # positions are (2, N) columns: constants become (2, 1)
+        self.detail = detail      # compute each step's terms (the sweep does not need them)
         zero = self.const((0.0, 0.0))
         self.vx = {Diagram.VELOCITY: {names.pole: zero}, Diagram.ACCELERATION: {names.pole: zero}}
         self.omega = dict(omega or {})
@@ -74,6 +75,7 @@ class Kernel:
         self.slide_a: dict = {}
         self.cor: dict = {}
         self.margins: list = []
+        self._r: dict = {}
 
     # -- helpers ------------------------------------------------------------------------
     def const(self, v):
@@ -82,7 +84,12 @@ class Kernel:
         return v.reshape(2, 1) if self.arrays else v
 
     def r(self, p: str, x: str):
-        return self.pos[x] - self.pos[p]
+        """The space vector PX (computed once per pair: the steps ask for it repeatedly)."""
+        key = (p, x)
+        v = self._r.get(key)
+        if v is None:
+            v = self._r[key] = self.pos[x] - self.pos[p]
+        return v
 
     def of(self, diagram, label: str):
         return self.vx[diagram][self.names.of(label)]
@@ -103,12 +110,17 @@ class Kernel:
         return op(self, s)
 
     def _vector(self, s: Step, vec, unit, terms):
+        terms = terms() if self.detail else ()
         vx = self.vx[s.diagram]
         start = vx[s.start]
         vec = self.b.vector(s.diagram, vec)
         end = start + vec
         vx[s.end] = end
         return start, vec, end, None, None, unit, None, terms
+
+    def terms(self, make):
+        """``make()`` when the interpreter wants each step's terms, else ()."""
+        return make() if self.detail else ()
 
     def _line(self, s: Step, direction, anchor):
         direction = self.b.direction(s.diagram, direction)
@@ -127,7 +139,7 @@ def _crank_velocity(k: Kernel, s: Step):
     w = k.omega[L]
     r = k.r(P, X)
     vec = relative_velocity(w, r)
-    return k._vector(s, vec, "m/s", ((f"ω_{L}", abs(w), "rad/s"), (f"{P}{X}", norm(r), "m"),
+    return k._vector(s, vec, "m/s", lambda: ((f"ω_{L}", abs(w), "rad/s"), (f"{P}{X}", norm(r), "m"),
                                      (s.quantity, norm(vec), "m/s")))
 
 
@@ -137,7 +149,7 @@ def _slider_drive(k: Kernel, s: Step):
     vel = s.diagram == Diagram.VELOCITY
     val = k.scene.driver.velocity if vel else k.scene.driver.acceleration
     unit = _unit_of(s.diagram)
-    return k._vector(s, val * e, unit, ((s.quantity, val, unit),))
+    return k._vector(s, val * e, unit, lambda: ((s.quantity, val, unit),))
 
 
 def _centripetal(k: Kernel, s: Step):
@@ -145,7 +157,7 @@ def _centripetal(k: Kernel, s: Step):
     w = k.omega[L]
     r = k.r(P, X)
     vec = centripetal(w, r)
-    return k._vector(s, vec, "m/s^2", ((f"ω_{L}", abs(w), "rad/s"), (f"{P}{X}", norm(r), "m"),
+    return k._vector(s, vec, "m/s^2", lambda: ((f"ω_{L}", abs(w), "rad/s"), (f"{P}{X}", norm(r), "m"),
                                        (s.quantity, norm(vec), "m/s^2")))
 
 
@@ -154,7 +166,7 @@ def _crank_tangential(k: Kernel, s: Step):
     al = k.alpha[L]
     r = k.r(P, X)
     vec = tangential(al, r)
-    return k._vector(s, vec, "m/s^2", ((f"α_{L}", abs(al), "rad/s^2"),
+    return k._vector(s, vec, "m/s^2", lambda: ((f"α_{L}", abs(al), "rad/s^2"),
                                        (f"{P}{X}", norm(r), "m"),
                                        (s.quantity, norm(vec), "m/s^2")))
 
@@ -194,22 +206,22 @@ def _coriolis_offset_line(k: Kernel, s: Step):
     k.cor[A] = a_cor
     a_cor_drawn = k.b.vector(s.diagram, a_cor)
     ln = k._line(s, e, k.of(s.diagram, A) - a_cor_drawn)
-    return ln[0], -a_cor, None, ln[1], None, "m/s^2", None, (
+    return ln[0], -a_cor, None, ln[1], None, "m/s^2", None, k.terms(lambda: (
         (f"ω_{slot.lever}", abs(w), "rad/s"), (f"(v_{A})_{slot.coincident}", abs(v_s), "m/s"),
-        ("2ωv", norm(a_cor), "m/s^2"))
+        ("2ωv", norm(a_cor), "m/s^2")))
 
 
 def _coriolis(k: Kernel, s: Step):
     (A,) = s.args
     a_cor = k.cor[A]
-    return k._vector(s, a_cor, "m/s^2", (("2ωv", norm(a_cor), "m/s^2"),))
+    return k._vector(s, a_cor, "m/s^2", lambda: (("2ωv", norm(a_cor), "m/s^2"),))
 
 
 def _join(k: Kernel, s: Step):
     vx = k.vx[s.diagram]
     vec = vx[s.end] - vx[s.start]
-    return vx[s.start], vec, vx[s.end], None, None, "m/s^2", None, (
-        (f"{s.start}{s.end}", norm(vec), "m/s^2"),)
+    return vx[s.start], vec, vx[s.end], None, None, "m/s^2", None, k.terms(lambda: (
+        (f"{s.start}{s.end}", norm(vec), "m/s^2"),))
 
 
 def _intersect(k: Kernel, s: Step):
@@ -220,8 +232,8 @@ def _intersect(k: Kernel, s: Step):
     if s.diagram == Diagram.VELOCITY:
         k.margins.append(sine)
     unit = _unit_of(s.diagram)
-    return None, None, p, None, None, unit, angle, (
-        ("angle", angle, "deg"), (f"{k.names.pole}{s.end}", norm(p), unit))
+    return None, None, p, None, None, unit, angle, k.terms(lambda: (
+        ("angle", angle, "deg"), (f"{k.names.pole}{s.end}", norm(p), unit)))
 
 
 def _omega(k: Kernel, s: Step):
@@ -230,9 +242,9 @@ def _omega(k: Kernel, s: Step):
     rel = k.of(s.diagram, Q) - k.of(s.diagram, P)
     w = angular_velocity(r, rel)
     k.omega[L] = w
-    return None, None, None, None, w, "rad/s", None, (
+    return None, None, None, None, w, "rad/s", None, k.terms(lambda: (
         (f"{k.names.of(P)}{k.names.of(Q)}", norm(rel), "m/s"), (f"{P}{Q}", norm(r), "m"),
-        (f"ω_{L}", w, "rad/s"))
+        (f"ω_{L}", w, "rad/s")))
 
 
 def _alpha(k: Kernel, s: Step):
@@ -241,9 +253,9 @@ def _alpha(k: Kernel, s: Step):
     rel = k.of(s.diagram, X) - k.of(s.diagram, P)
     al = angular_acceleration(r, rel)
     k.alpha[L] = al
-    at = np.abs(cross(r / norm(r), rel))
-    return None, None, None, None, al, "rad/s^2", None, (
-        ("tangential", at, "m/s^2"), (f"{P}{X}", norm(r), "m"), (f"α_{L}", al, "rad/s^2"))
+    return None, None, None, None, al, "rad/s^2", None, k.terms(lambda: (
+        ("tangential", np.abs(cross(r / norm(r), rel)), "m/s^2"), (f"{P}{X}", norm(r), "m"),
+        (f"α_{L}", al, "rad/s^2")))
 
 
 def _slider_value(k: Kernel, s: Step):
@@ -251,7 +263,7 @@ def _slider_value(k: Kernel, s: Step):
     e = k.const(k.scene.sliders[X].direction)
     val = dot(k.of(s.diagram, X), e)
     unit = _unit_of(s.diagram)
-    return None, None, None, None, val, unit, None, ((s.quantity, val, unit),)
+    return None, None, None, None, val, unit, None, k.terms(lambda: ((s.quantity, val, unit),))
 
 
 def _slide_value(k: Kernel, s: Step):
@@ -265,7 +277,7 @@ def _slide_value(k: Kernel, s: Step):
         val = dot(rel - k.cor[A], e)
         k.slide_a[A] = val
     unit = _unit_of(s.diagram)
-    return None, None, None, None, val, unit, None, ((s.quantity, val, unit),)
+    return None, None, None, None, val, unit, None, k.terms(lambda: ((s.quantity, val, unit),))
 
 
 def _image(k: Kernel, s: Step):
@@ -281,7 +293,7 @@ def _image(k: Kernel, s: Step):
             k.alpha[L] = angular_acceleration(k.r(P, Q), k.of(A, Q) - k.of(A, P))
         vec = tangential(k.alpha[L], r) + centripetal(k.omega[L], r)
     unit = _unit_of(s.diagram)
-    return k._vector(s, vec, unit, ((f"{s.start}{s.end}", norm(vec), unit),))
+    return k._vector(s, vec, unit, lambda: ((f"{s.start}{s.end}", norm(vec), unit),))
 
 
 _OPS = {

@@ -53,7 +53,7 @@ _SIN_WARN = math.sin(math.radians(WARN_DEG))
 #: probe points used to find the reachable range and the toggles inside it
 PROBE = 4096
 #: default chunk of positions evaluated per numpy pass (memory and cache friendly)
-CHUNK = 1 << 12
+CHUNK = 1 << 14
 
 
 # ---------------------------------------------------------------- results
@@ -243,7 +243,7 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
     omega, alpha = {}, {}
     if isinstance(drv, Crank):
         omega[drv.link], alpha[drv.link] = prog.rate, prog.rate2
-    k = Kernel(scene, pos, Vertices(scene), _ARRAYS, omega, alpha, arrays=True)
+    k = Kernel(scene, pos, Vertices(scene), _ARRAYS, omega, alpha, arrays=True, detail=False)
     for step in prog.steps:
         k.run(step)
     full = (2,) + n
