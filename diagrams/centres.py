@@ -201,3 +201,8 @@ def svg(sol, centres: Centres | None = None, paper: str | None = None) -> str:
     """The drawing as SVG text."""
     from .svg import to_svg
     return to_svg(drawing(sol, centres, paper)).decode()
+
+
+def centres_figure(solution) -> str:
+    """The instant-centre figure of a solved scene as SVG text (for the handout's stage)."""
+    return svg(solution)

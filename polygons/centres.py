@@ -162,14 +162,14 @@ def bodies(solution) -> tuple[Body, ...]:
             labels = (name,)
             label_name = f"slider {name}"
         else:
-            if name in scene.links:
-                link = scene.links[name]
-                ends = (link.a, link.b)
-            else:
-                slot = next(s for s in scene.slots.values() if s.lever == name)
+            slot = next((s for s in scene.slots.values() if s.lever == name), None)
+            if slot is not None:
                 ends = (slot.pivot, slot.coincident)
                 if slot.far is not None:
                     ends += (slot.far,)
+            else:
+                link = scene.links[name]
+                ends = (link.a, link.b)
             extra = tuple(p for p, bp in scene.points.items() if bp.link == name)
             labels = tuple(x for x in ends + extra if x in placed)
             label_name = name
