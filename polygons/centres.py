@@ -426,9 +426,12 @@ def _omega_from(i, j, mi, found, names, size):
         if math.sqrt(rr) <= _SAME_LINE * size:
             return None                 # I_ij on I_1j: this pair does not fix ω_j
         wj = (r[0] * v[1] - r[1] * v[0]) / rr
+        if found[(1, i)].point is None:
+            vi = f"v_I{nij} = v of link {i} (it translates) = {_f(math.hypot(*v))} m/s"
+        else:
+            vi = f"v_I{nij} = ω{i} × I{pair_name(1, i)}I{nij} = {_f(math.hypot(*v))} m/s"
         return (wj, _v0(wj, c1j.point)), Omega(j, names[j], wj, None, (
-            f"v_I{nij} = ω{i} × I{pair_name(1, i) if i != 1 else ''}I{nij} = "
-            f"{_f(math.hypot(*v))} m/s; ω{j} = v_I{nij} / I{n1j}I{nij} = {_f(math.hypot(*v))} / "
+            f"{vi}; ω{j} = v_I{nij} / I{n1j}I{nij} = {_f(math.hypot(*v))} / "
             f"{_f(math.sqrt(rr))} = {_f(abs(wj))} rad/s {_sense(wj)}"))
     # I_ij at infinity: links i and j translate relative to each other, ω_j = ω_i
     if c1j.point is None:

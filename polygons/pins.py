@@ -10,7 +10,8 @@
 
 Rubbing velocity at a pin of radius r joining links 1 and 2: v_r = |ω₁ − ω₂| · r, which is
 (ω₁ + ω₂) · r in magnitudes when the two links turn in opposite senses; at a fixed pivot the
-frame does not turn, v_r = |ω| · r; a slider block does not turn either.
+frame does not turn, v_r = |ω| · r; a slider block does not turn either.  A pin sliding in
+a slot carries a block that turns with the slotted lever (or translates with a Scotch yoke).
 
 Least velocity on link PQ: the foot g of the perpendicular from the pole o to the link's
 velocity image pq; the point G divides PQ as g divides pq (PG/PQ = pg/pq), and v_G = og.
@@ -188,6 +189,12 @@ def _turning(solution) -> dict[str, tuple[float, tuple[str, ...]]]:
     for label, g in scene.sliders.items():
         if g.pin is None:
             out[f"slider {label}"] = (0.0, (label,))
+        else:                         # the block on the pin, in the yoke's slot, translates
+            out[f"block at {g.pin}"] = (0.0, (g.pin,))
+    for pin, slot in scene.slots.items():   # the block on the pin turns with the lever
+        lr = solution.links.get(slot.lever)
+        if lr is not None and lr.omega is not None:
+            out[f"block at {pin}"] = (lr.omega, (pin,))
     return out
 
 
@@ -316,4 +323,4 @@ def to_dict(solution) -> dict:
 
 
 def _g(x: float) -> str:
-    return f"{x:.5g}"
+    return f"{(x if x != 0 else 0.0):.5g}"      # no '-0'

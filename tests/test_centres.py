@@ -344,3 +344,44 @@ def test_centres_drawing_marks_every_centre_and_the_circle_diagram():
     assert svg.count("chord known") == known == 4
     assert svg.count("chord found") == len(cs.centres) - known == 2
     assert svg == centres_figure(sol)
+
+
+def test_six_link_mechanism_fifteen_centres():
+    """A six-link mechanism with three links at one pin (crank OA, AB, lever CB, rod BD,
+    slider D; the layout of Khurmi's Fig. 7.9): 15 centres, three of them at the pin B, the
+    rest by Kennedy in textbook order, velocities equal to the polygon's."""
+    sol = solve(parse_scene({
+        "ground": {"O": ["0 mm", "0 mm"], "C": ["0 mm", "65 mm"]},
+        "links": {"OA": "28 mm", "AB": "44 mm", "CB": "49 mm", "BD": "46 mm"},
+        "driver": {"crank": "OA", "angle": "165 deg", "omega": "600 rev/min", "sense": "CW"},
+        "sliders": {"D": {"through": ["0 mm", "54 mm"], "direction": "0 deg"}},
+        "assembly": {"B": "B left of C", "D": "D right of B"},
+    }))
+    cs = instant_centres(sol)
+    assert len(cs.centres) == 15
+    at_b = [c.label for c in cs.centres if c.how == "pin B"]
+    assert at_b == ["I34", "I35", "I45"]
+    found = sorted((c for c in cs.centres if not c.primary), key=lambda c: c.order)
+    assert [c.order for c in found] == list(range(1, len(found) + 1))
+    assert all(len(c.lines) == 2 and c.how.startswith("Kennedy: ") for c in found)
+    for label, pv in cs.velocities.items():
+        assert math.dist(pv.velocity, sol.points[label].velocity) <= REL * _scale(sol)
+    for name, lr in sol.links.items():
+        assert cs.omega(name) == pytest.approx(lr.omega, rel=REL)
+    n = len(cs.bodies)
+    for i in range(1, n + 1):
+        for j in range(i + 1, n + 1):
+            for k in range(j + 1, n + 1):
+                assert _collinear(cs.centre(i, j), cs.centre(j, k), cs.centre(i, k), cs.size)
+
+
+def test_rubbing_at_a_slot_pin_uses_the_block_turning_with_the_lever():
+    """Figure 7: the block on P2 turns with the slotted lever, so v_r = |ω2 − ω4|·r."""
+    import tomllib
+    data = tomllib.loads((ROOT / "cases/s003-fig7.toml").read_text(encoding="utf-8"))
+    data["pins"] = {"P2": {"diameter": "20 mm"}}
+    sol = solve(parse_scene(data, file="fig7-pins.toml"))
+    (r,) = rubbing_velocities(sol)
+    assert r.links == ("O2P2", "block at P2")
+    w2, w4 = sol.scene.driver.omega, sol.links["O4P4"].omega
+    assert r.velocity == pytest.approx(abs(w2 - w4) * 0.010, rel=1e-12)
