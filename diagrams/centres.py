@@ -84,10 +84,10 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
             start = _start_of(c, cs, pos, mid)
             text = f"{c.label} → ∞"
         else:
-            d = (c.point[0] - mid[0], c.point[1] - mid[1])
+            start = _toward(c, by, nearset, mid)
+            d = (c.point[0] - start[0], c.point[1] - start[1])
             n = math.hypot(*d)
             d = (d[0] / n, d[1] / n)
-            start = mid
             text = f"{c.label} (off the page)"
         s = P(start)
         tip = (s[0] + 14.0 * d[0], s[1] + 14.0 * d[1])
@@ -165,6 +165,22 @@ def _extreme(pts) -> tuple[Pt, Pt]:
             if math.dist(a, b) > math.dist(*best):
                 best = (a, b)
     return best
+
+
+def _toward(c, by, nearset, mid) -> Pt:
+    """Where the arrow to a far centre starts: the drawn centre on one of its lines of
+    centres nearest to it (the arrow then runs along that line), else the mechanism's middle."""
+    best = None
+    for pair in c.lines:
+        for lab in pair:
+            if not lab.startswith("I"):
+                continue
+            o = by[_pair(lab, by)]
+            if o.point is not None and (o.i, o.j) in nearset:
+                dist = math.dist(o.point, c.point)
+                if best is None or dist < best[0]:
+                    best = (dist, o.point)
+    return best[1] if best is not None else mid
 
 
 def _start_of(c, cs: Centres, pos, mid) -> Pt:
