@@ -3,7 +3,7 @@
     [pins.B]                 # the pin at B has a diameter: its rubbing velocity is reported
     diameter = "60 mm"
     [least_velocity]         # the point of these links that moves slowest, and its speed
-    links = ["BC"]
+    links = ["BC"]           # (or, at the top of the file: least_velocity = "BC")
     [[pin_answers]]          # printed / exact answers for these (like [[answers]])
     quantity = "rub(B)"      # or "least(BC)" (its speed), "least_at(BC)" (distance from B)
     unit = "m/s"
@@ -127,9 +127,12 @@ def spec(scene: Scene) -> PinSpec:
         diameters[label] = d
     least: tuple[str, ...] = ()
     if "least_velocity" in extra:
-        tab = r.table(extra["least_velocity"], "least_velocity", ("links",),
-                      required=("links",))
-        links = tab["links"]
+        raw_least = extra["least_velocity"]
+        if isinstance(raw_least, (str, list)):    # least_velocity = "BC" at the top level
+            links = raw_least
+        else:
+            links = r.table(raw_least, "least_velocity", ("links",),
+                            required=("links",))["links"]
         if isinstance(links, str):
             links = [links]
         if not isinstance(links, list) or not all(isinstance(x, str) for x in links):

@@ -294,6 +294,13 @@ def test_bad_pin_tables_are_one_line_errors(tables, where):
     assert where in str(err.value) and "\n" not in str(err.value)
 
 
+@pytest.mark.parametrize("form", ["BC", ["BC"], {"links": ["BC"]}, {"links": "BC"}])
+def test_least_velocity_key_forms(form):
+    from polygons.pins import spec
+    scene = parse_scene({**SLIDER_DRIVEN, "least_velocity": form}, file="t.toml")
+    assert spec(scene).least == ("BC",)
+
+
 def test_report_lines_only_with_the_tables():
     assert report_lines(solve(parse_scene(SLIDER_DRIVEN))) == []
     lines = report_lines(solve(load_scene(ROOT / "cases/khurmi-ex7.2.toml")))

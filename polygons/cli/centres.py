@@ -61,6 +61,8 @@ def run(args) -> int:
 def to_json(sol, cs) -> dict:
     return {
         "scene": sol.scene.file,
+        "units": {"length": "m", "velocity": "m/s", "omega": "rad/s (CCW positive)",
+                  "direction": "unit vector of a centre at infinity (no sense)"},
         "links": [{"number": b.number, "name": b.name, "kind": b.kind, "labels": list(b.labels)}
                   for b in cs.bodies],
         "centres": [{"label": c.label, "i": c.i, "j": c.j, "names": list(c.names),
