@@ -98,6 +98,26 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
         x, base, _, _ = placer.place(text, tip, NOTE, distances=(0.8, 1.5, 2.5, 4.0, 6.0))
         labels.append(Text(x, base, text, NOTE, role="centre", cls="centre-label"))
 
+    # the point of least velocity on each link asked for ([least_velocity]): the foot of the
+    # perpendicular from the link's centre I_1j, the same point as og ⟂ ab on the polygon
+    from polygons.pins import has_pins, least_velocity, spec
+    least_notes: list[str] = []
+    if has_pins(sol.scene):
+        for link in spec(sol.scene).least:
+            lv = least_velocity(sol, link)
+            c = cs.centre(1, cs.body(link).number)
+            if lv.fraction is None or c.point is None or (c.i, c.j) not in nearset:
+                continue
+            g = P(lv.point)
+            lines.append(Segment(_r(P(c.point)), _r(g), "offset", cls=f"least {link}"))
+            dots.append(Circle(_r(g), 0.8, "pin", cls=f"least-point {link}"))
+            x, base, _, _ = placer.place("G", g, LABEL_SIZE - 0.6,
+                                         distances=(1.0, 2.0, 3.5, 5.0, 8.0))
+            labels.append(Text(x, base, "G", LABEL_SIZE - 0.6, role="centre",
+                               weight="bold", cls="least-label"))
+            least_notes.append(f"G on {link}: {lv.a}G = {number(lv.along * 1000)} mm, "
+                               f"least v = {number(lv.speed)} m/s (⟂ from {c.label})")
+
     # the circle diagram, to the right of everything drawn so far
     for g in content:
         for it in g.items:
@@ -133,6 +153,9 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
     for o in cs.omegas[1:]:
         legend.append((f"ω{o.number} ({o.name}) = {number(abs(o.omega))} rad/s "
                        f"{'' if o.omega == 0 else ('CCW' if o.omega > 0 else 'CW')}", "normal"))
+    if least_notes:
+        legend += [("", "normal"), ("Least velocity:", "bold")]
+        legend += [(t, "normal") for t in least_notes]
     scene = sol.scene
     sid = scene.source.get("id", "")
     desc = ("Instant centres by Kennedy's theorem: " +

@@ -351,6 +351,7 @@ def test_centres_drawing_marks_every_centre_and_the_circle_diagram():
     assert svg.count("chord known") == known == 4
     assert svg.count("chord found") == len(cs.centres) - known == 2
     assert svg == centres_figure(sol)
+    assert 'class="least-point BP"' in svg and "least v = 7.737 m/s" in svg
 
 
 def test_six_link_mechanism_fifteen_centres():
