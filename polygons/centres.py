@@ -25,7 +25,7 @@ from types import MappingProxyType
 from typing import Mapping
 
 from . import geometry
-from .errors import ConstructionError, ParallelLinesError, UnsupportedError
+from .errors import ParallelLinesError, UnsupportedError
 from .plan import RPP, RPR, RRP, RRR, CrankDyad, SliderDriveDyad
 from .scene import Crank
 
@@ -478,4 +478,4 @@ def _sense(w: float) -> str:
 
 
 __all__ = ["Body", "Centre", "Omega", "PointVelocity", "Centres", "bodies", "find_centres",
-           "instant_centres", "pair_name", "ConstructionError"]
+           "instant_centres", "pair_name"]

@@ -326,6 +326,7 @@ def test_centres_command_table_json_and_svg(tmp_path):
     assert data["centres"][2]["point"] is None and data["centres"][2]["direction"] == [0.0, 1.0]
     assert data["pins"]["least_velocity"]["BP"]["speed"] == pytest.approx(7.737465102290866)
     again = _run("centres", "cases/khurmi-ex7.2.toml", "-o", tmp_path / "b")
+    assert again.returncode == 0 and again.stdout.replace("/b/", "/") == out.stdout
     assert (tmp_path / "b" / "centres.svg").read_bytes() == svg1       # deterministic
 
 
