@@ -11,8 +11,13 @@ import subprocess
 import sys
 
 import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
 
+import analytic
 from conftest import ROOT, case_files
+from scenes import crank_driver, slider_crank_case
+from polygons.errors import ParallelLinesError
 from polygons.centres import instant_centres
 from polygons.errors import SceneError
 from polygons.evaluate import solve
@@ -394,3 +399,55 @@ def test_rubbing_at_a_slot_pin_uses_the_block_turning_with_the_lever():
     assert r.links == ("O2P2", "block at P2")
     w2, w4 = sol.scene.driver.omega, sol.links["O4P4"].omega
     assert r.velocity == pytest.approx(abs(w2 - w4) * 0.010, rel=1e-12)
+
+
+# ---------------------------------------------------------------- random mechanisms
+_hyp = settings(max_examples=120, deadline=None,
+                suppress_health_check=[HealthCheck.filter_too_much])
+_omegas = st.floats(0.5, 500.0) | st.floats(-500.0, -0.5)
+
+
+def _well_conditioned(sol, cs):
+    angles = [c.angle_deg for c in cs.centres if not c.primary]
+    return sol.min_intersection_angle_deg > 1.0 and min(angles, default=90.0) > 1.0
+
+
+@_hyp
+@given(r=st.floats(0.01, 1.0), ratio=st.floats(1.2, 6.0), theta=st.floats(0, 2 * math.pi),
+       omega=_omegas, line_dir=st.floats(0, 2 * math.pi), offset=st.floats(-0.8, 0.8),
+       branch=st.sampled_from([1, -1]))
+def test_random_slider_cranks_centres_match_the_closed_form(r, ratio, theta, omega, line_dir,
+                                                           offset, branch):
+    """Velocities by the centres against tests/analytic.py's loop solution (no polygon)."""
+    scene, ref = slider_crank_case(r, ratio, theta, omega, 0.0, line_dir, offset, branch)
+    sol = solve(scene)
+    cs = instant_centres(sol)
+    assume(_well_conditioned(sol, cs))
+    assert math.dist(cs.velocities["B"].velocity, ref["vB"]) <= REL * abs(omega) * r
+    assert abs(cs.omega("AB") - ref["omega_AB"]) <= REL * abs(omega) / ratio
+
+
+@_hyp
+@given(ad=st.floats(0.2, 1.0), ab=st.floats(0.01, 1.0), bc=st.floats(0.01, 1.0),
+       cd=st.floats(0.01, 1.0), theta=st.floats(0, 2 * math.pi), omega=_omegas)
+def test_random_four_bars_centres_match_the_closed_form(ad, ab, bc, cd, theta, omega):
+    try:
+        ref = analytic.four_bar((0, 0), (ad, 0), ab, bc, cd, theta, omega, 0.0, +1)
+    except ValueError:
+        assume(False)
+    scene = parse_scene({
+        "ground": {"A": ["0 m", "0 m"], "D": [f"{ad!r} m", "0 m"]},
+        "links": {"AB": f"{ab!r} m", "BC": f"{bc!r} m", "CD": f"{cd!r} m"},
+        "driver": crank_driver("AB", theta, omega, 0.0),
+        "assembly": {"C": "C above AD"},
+    })
+    try:
+        sol = solve(scene)
+    except ParallelLinesError:
+        assume(False)
+    cs = instant_centres(sol)
+    assume(_well_conditioned(sol, cs))
+    vs = abs(omega) * ab
+    assert math.dist(cs.velocities["C"].velocity, ref["vC"]) <= REL * vs
+    for link in ("BC", "CD"):
+        assert abs(cs.omega(link) - ref[f"omega_{link}"]) <= REL * vs / min(bc, cd)
