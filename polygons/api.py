@@ -102,6 +102,16 @@ class Result:
         from .centres import instant_centres
         return instant_centres(self.solution, points)
 
+    def rubbing(self):
+        """Rubbing velocities at the scene's [pins] (:func:`polygons.pins.rubbing_velocities`)."""
+        from .pins import rubbing_velocities
+        return rubbing_velocities(self.solution)
+
+    def least_velocity(self, link: str):
+        """The point of ``link`` with least velocity (:func:`polygons.pins.least_velocity`)."""
+        from .pins import least_velocity
+        return least_velocity(self.solution, link)
+
     # ---------------------------------------------------------------- drawings
     def svg(self, diagram: str = "space") -> str:
         """One finished diagram as SVG text: 'space', 'velocity', 'acceleration' or

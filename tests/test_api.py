@@ -115,3 +115,12 @@ def test_import_polygons_stays_lazy():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          cwd=ROOT)
     assert out.stdout.strip() == "ok", out.stderr
+
+
+def test_result_rubbing_and_least_velocity():
+    res = polygons.solve(ROOT / "cases" / "khurmi-ex7.2.toml")
+    assert {r.pin for r in res.rubbing()} == {"O", "B", "P"}
+    lv = res.least_velocity("BP")
+    assert lv.on_link and 0 < lv.fraction < 1
+    assert "rubbing velocities" in res.table() and '"pins"' in res.to_json()
+    assert res.centres().centre(1, 3).how == "Kennedy: 13 on 12–23 and 14–43"
