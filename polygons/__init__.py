@@ -2,10 +2,14 @@
 
     scene (TOML) → plan (dyads → construction steps) → interpreters (numbers) → render
 
->>> from polygons import load_scene, solve
->>> sol = solve(load_scene("cases/s003-fig7.toml"))      # doctest: +SKIP
->>> sol.links["O4P4"].omega                                # doctest: +SKIP
+>>> import polygons
+>>> res = polygons.solve("cases/s003-fig7.toml")          # doctest: +SKIP
+>>> res.links["O4P4"].omega                                # doctest: +SKIP
 1.2145955942749975
+
+``solve`` and ``load`` are the Python API (:mod:`polygons.api`): a path, TOML text or a
+:class:`Scene` in, a :class:`~polygons.api.Result` out (the core ``Solution``'s attributes
+plus ``to_json()``, ``table()``, ``svg()`` and the notebook displays).
 
 Nothing is imported until it is used (``import polygons`` stays cheap, so the command line
 starts fast): the names below are resolved on first access.
@@ -18,7 +22,9 @@ import importlib
 _EXPORTS = {
     "load_scene": "polygons.scene",
     "Scene": "polygons.scene",
-    "solve": "polygons.evaluate",
+    "load": "polygons.api",
+    "solve": "polygons.api",
+    "Result": "polygons.api",
     "Solution": "polygons.evaluate",
     "PolygonsError": "polygons.errors",
 }

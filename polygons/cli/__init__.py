@@ -21,6 +21,8 @@ COMMANDS = {
                                     "construction"),
     "handout": ("polygons.cli.handout", "write a printable handout (HTML, optional PDF) or "
                                         "worksheet"),
+    "centres": ("polygons.cli.centres", "instantaneous centres (Kennedy), rubbing and least "
+                                        "velocities"),
     "gallery": ("polygons.cli.gallery", "write every case's handout and worksheet and an "
                                         "index page"),
 }

@@ -1,0 +1,112 @@
+"""``polygons centres CASE.toml``: every instantaneous centre by Kennedy's theorem, the angular
+velocities and point velocities by the centres, rubbing velocities and least velocities."""
+from __future__ import annotations
+
+import math
+import sys
+
+
+def register(sub) -> None:
+    p = sub.add_parser("centres", help="instantaneous centres (Kennedy), velocities by the "
+                                       "centres, rubbing and least velocities",
+                       description="Find every instantaneous centre of a scene by Kennedy's "
+                                   "theorem, the velocities by the centres, the rubbing "
+                                   "velocities at [pins] and the least velocities; print a "
+                                   "table (or JSON with --json); -o DIR also writes "
+                                   "centres.svg.")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
+    p.add_argument("--points", help="comma-separated labels whose velocities to report "
+                                    "(default: every point)")
+    p.add_argument("-o", "--out", metavar="DIR", help="write centres.svg to this folder")
+    p.add_argument("--paper", choices=("A5", "A4"), help="paper for the drawing (default A4)")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from ..centres import instant_centres
+    from ..evaluate import solve
+    from ..pins import report_lines, spec, to_dict
+    from ..report import json_text
+    from ..scene import load_scene
+    scene = load_scene(args.scene)
+    spec(scene)                            # bad [pins] tables fail before anything is written
+    sol = solve(scene)
+    pts = [t.strip() for t in args.points.split(",")] if args.points else None
+    if pts is not None:
+        from ..errors import UnknownLabelError, suggest
+        for t in pts:
+            if t not in sol.placement.points:
+                raise UnknownLabelError(f"unknown point {t!r}: "
+                                        f"{suggest(t, list(sol.placement.points))}",
+                                        file=scene.file, where="--points")
+    cs = instant_centres(sol, pts)
+    if args.out:
+        from pathlib import Path
+        from diagrams.centres import svg
+        out = Path(args.out)
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "centres.svg").write_bytes(svg(sol, cs, args.paper).encode())
+    if args.json:
+        sys.stdout.write(json_text(to_json(sol, cs) | ({"pins": to_dict(sol)}
+                                                        if to_dict(sol) else {})))
+    else:
+        sys.stdout.write(table(sol, cs) + "".join(
+            ln + "\n" for ln in (["", *report_lines(sol)] if report_lines(sol) else [])))
+        if args.out:
+            sys.stdout.write(f"wrote {args.out}/centres.svg\n")
+    return 0
+
+
+def to_json(sol, cs) -> dict:
+    return {
+        "scene": sol.scene.file,
+        "units": {"length": "m", "velocity": "m/s", "omega": "rad/s (CCW positive)",
+                  "direction": "unit vector of a centre at infinity (no sense)"},
+        "links": [{"number": b.number, "name": b.name, "kind": b.kind, "labels": list(b.labels)}
+                  for b in cs.bodies],
+        "centres": [{"label": c.label, "i": c.i, "j": c.j, "names": list(c.names),
+                     "point": list(c.point) if c.point is not None else None,
+                     "direction": list(c.direction) if c.direction is not None else None,
+                     "how": c.how, "primary": c.primary, "order": c.order,
+                     "lines": [list(x) for x in c.lines], "angle_deg": c.angle_deg}
+                    for c in cs.centres],
+        "omegas": [{"number": o.number, "name": o.name, "omega": o.omega,
+                    "velocity": list(o.velocity) if o.velocity is not None else None,
+                    "how": o.how} for o in cs.omegas],
+        "velocities": {x: {"link": v.number, "velocity": list(v.velocity), "speed": v.speed,
+                           "radius": v.radius, "how": v.how}
+                       for x, v in cs.velocities.items()},
+    }
+
+
+def _g(x: float) -> str:
+    return "0" if x == 0 else f"{x:.5g}"
+
+
+def table(sol, cs) -> str:
+    scene = sol.scene
+    size = cs.size
+    lines = [scene.title, f"  scene: {scene.file}", "",
+             "links: " + ", ".join(f"{b.number} {b.name}" for b in cs.bodies), "",
+             f"{'centre':<7} {'links':<22} {'x mm':>10} {'y mm':>10}   how"]
+
+    def mm(x):
+        return _g(0.0 if abs(x) < 1e-9 * size else x * 1000)
+
+    for c in cs.centres:
+        if c.point is not None:
+            x, y = mm(c.point[0]), mm(c.point[1])
+        else:
+            ang = round(math.degrees(math.atan2(c.direction[1], c.direction[0])), 6) + 0.0
+            x, y = "∞", f"∞ {_g(ang)}°"
+        lines.append(f"{c.label:<7} {c.names[0] + ' / ' + c.names[1]:<22} {x:>10} {y:>10}   "
+                     f"{c.how}")
+    lines += ["", "angular velocities by the centres:"]
+    for o in cs.omegas[1:]:
+        sense = "" if o.omega == 0 else ("CCW" if o.omega > 0 else "CW")
+        lines.append(f"  ω{o.number} ({o.name}) = {_g(abs(o.omega))} rad/s {sense}   [{o.how}]")
+    lines += ["", "velocities by the centres (v = ω × I1j X):"]
+    for x, v in cs.velocities.items():
+        lines.append(f"  v_{x} = {_g(v.speed)} m/s   [{v.how}]")
+    return "\n".join(lines) + "\n"
