@@ -39,6 +39,7 @@ undefined).
 
 from __future__ import annotations
 
+import cmath
 import math
 from typing import Callable
 
@@ -541,3 +542,49 @@ def slotted_lever_fd(O, r, theta, omega, alpha, B, h=1e-3):
         "vA1": _vec(1j * s * w4 * e),
         "aA1": _vec((1j * a4 - w4 * w4) * s * e),
     }
+
+
+# ----------------------------------------------------------------------------
+# rigid points and the Scotch yoke (closed forms by hand)
+# ----------------------------------------------------------------------------
+def coupler_point(B, vB, aB, phi, w, a, along, left):
+    """A point P rigid with a link through B at angle ``phi`` (turning at w, a)::
+
+        P = B + (along + i left) e^{i phi}
+        v_P = v_B + i w (along + i left) e^{i phi}
+        a_P = a_B + (i a - w^2) (along + i left) e^{i phi}
+
+    Symbols -> parameters: B, v_B, a_B = ``B``, ``vB``, ``aB`` (2-vectors); phi = ``phi``
+    (the link's angle, e.g. ``phi_BC`` of :func:`four_bar`), w, a = ``w``, ``a`` (its
+    ``omega_BC``, ``alpha_BC``); (along, left) = the point's coordinates along the link from B
+    and to its left.
+    """
+    rho = complex(_finite(along, "along"), _finite(left, "left")) * cmath.exp(1j * phi)
+    b, vb, ab = (complex(x[0], x[1]) for x in (B, vB, aB))
+    return {"P": _vec(b + rho), "vP": _vec(vb + 1j * w * rho),
+            "aP": _vec(ab + (1j * a - w * w) * rho)}
+
+
+def scotch_yoke(O, r, theta, omega, alpha, G, guide_dir, slot_dir):
+    """Scotch yoke: crank pin P = O + r e^{i theta} slides in the yoke's slot (direction f);
+    the yoke translates on its guide through G (direction e).  Its point on the guide::
+
+        Y = G + t e,  t = ((P − G) × f) / (e × f)
+        ṫ = (v_P × f) / (e × f),  ẗ = (a_P × f) / (e × f)
+
+    with v_P = i w r e^{i theta}, a_P = (i a − w²) r e^{i theta}.  Symbols -> parameters:
+    O, r, theta, w, a = ``O``, ``r``, ``theta``, ``omega``, ``alpha``; G = ``G``; e, f = unit
+    vectors at ``guide_dir`` and ``slot_dir`` (radians).
+    """
+    o = _pt(O, "O")
+    g = _pt(G, "G")
+    p = o + r * cmath.exp(1j * theta)
+    vp = 1j * omega * r * cmath.exp(1j * theta)
+    ap = (1j * alpha - omega * omega) * r * cmath.exp(1j * theta)
+    e, f = cmath.exp(1j * guide_dir), cmath.exp(1j * slot_dir)
+    den = _cross(e, f)
+    t = _cross(p - g, f) / den
+    t_dot = _cross(vp, f) / den
+    t_ddot = _cross(ap, f) / den
+    return {"P": _vec(p), "Y": _vec(g + t * e), "t": t, "t_dot": t_dot, "t_ddot": t_ddot,
+            "vY": _vec(t_dot * e), "aY": _vec(t_ddot * e)}

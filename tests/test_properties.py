@@ -146,3 +146,60 @@ def test_slider_driver_recovers_the_crank_motion(theta):
     assert sol.links["OA"].omega == pytest.approx(omega, rel=1e-9)
     assert abs(sol.links["OA"].alpha) <= 1e-9 * omega ** 2
     assert sol.links["AB"].omega == pytest.approx(ref["omega_AB"], rel=1e-9)
+
+
+@settings_
+@given(ad=st.floats(0.2, 1.0), ab=lengths, bc=lengths, cd=lengths, theta=angles,
+       omega=omegas, alpha=alphas, along=st.floats(-1.0, 2.0), left=st.floats(-1.0, 1.0))
+def test_coupler_point_image_matches_closed_form(ad, ab, bc, cd, theta, omega, alpha, along,
+                                                 left):
+    """Image dyad: a point rigid with the coupler ([points.P] on BC), against the loop
+    closure's ω₃, α₃ carried to the point by hand (analytic.coupler_point)."""
+    try:
+        ref4 = analytic.four_bar((0, 0), (ad, 0), ab, bc, cd, theta, omega, alpha, +1)
+    except ValueError:
+        assume(False)
+    ref = analytic.coupler_point(ref4["B"], ref4["vB"], ref4["aB"], ref4["phi_BC"],
+                                 ref4["omega_BC"], ref4["alpha_BC"], along * bc, left * bc)
+    scene = parse_scene({
+        "ground": {"A": ["0 m", "0 m"], "D": [m(ad), "0 m"]},
+        "links": {"AB": m(ab), "BC": m(bc), "CD": m(cd)},
+        "points": {"P": {"on": "BC", "along": m(along * bc), "left": m(left * bc)}},
+        "driver": crank_driver("AB", theta, omega, alpha),
+        "assembly": {"C": "C above AD"},
+    })
+    try:
+        sol = solve(scene)
+    except ParallelLinesError:
+        assume(False)
+    assume(sol.min_intersection_angle_deg > MIN_ANGLE)
+    bp = bc * math.hypot(along, left)
+    w3, a3 = abs(ref4["omega_BC"]), abs(ref4["alpha_BC"])
+    vscale = np.hypot(*ref4["vB"]) + abs(ref4["omega_CD"]) * cd + w3 * bp   # the terms' sizes
+    ascale = (np.hypot(*ref4["aB"]) + (abs(ref4["alpha_CD"]) + ref4["omega_CD"] ** 2) * cd
+              + (a3 + w3 * w3) * bp)
+    assert close(sol.points["P"].position, ref["P"], ad + bc + bp)
+    assert close(sol.points["P"].velocity, ref["vP"], vscale)
+    assert close(sol.points["P"].acceleration, ref["aP"], ascale)
+
+
+@settings_
+@given(r=lengths, theta=angles, omega=omegas, alpha=alphas, guide=angles,
+       slot=st.floats(0.2, math.pi - 0.2), gx=st.floats(-1, 1), gy=st.floats(-1, 1))
+def test_scotch_yoke_matches_closed_form(r, theta, omega, alpha, guide, slot, gx, gy):
+    """RPP dyad (Scotch yoke) on a guide at any angle, its slot at any angle to it."""
+    slot_dir = guide + slot
+    ref = analytic.scotch_yoke((0, 0), r, theta, omega, alpha, (gx, gy), guide, slot_dir)
+    scene = parse_scene({
+        "ground": {"O": ["0 m", "0 m"]},
+        "links": {"OP": m(r)},
+        "driver": crank_driver("OP", theta, omega, alpha),
+        "sliders": {"Y": {"through": [m(gx), m(gy)], "direction": rad(guide), "pin": "P",
+                          "slot": rad(slot_dir)}},
+    })
+    sol = solve(scene)
+    vs, as_ = abs(omega) * r / math.sin(slot), (omega ** 2 + abs(alpha)) * r / math.sin(slot)
+    assert close(sol.points["Y"].position, ref["Y"], 2 + r / math.sin(slot))
+    assert close(sol.points["Y"].velocity, ref["vY"], vs)
+    assert close(sol.points["Y"].acceleration, ref["aY"], as_)
+    assert abs(sol.slides["Y"].velocity - ref["t_dot"]) <= TOL * vs
