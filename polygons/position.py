@@ -40,6 +40,23 @@ def assemble(plan: Plan) -> Placement:
     chosen: list[tuple[str, str]] = []
     size = size_of(scene)
     x_in = driver_input(scene)
+    with np.errstate(all="ignore"):   # a degenerate dyad gives NaN and says why below
+        _place(plan, scene, pos, chosen, size, x_in)
+    for label, xy in scene.drawn.items():
+        if label in pos:
+            off = float(np.hypot(*(pos[label] - np.array(xy))))
+            if off > DRAWN_TOL * size:
+                raise AssemblyError(
+                    f"{label} is drawn at {_fmt(np.array(xy))} but the links put it at "
+                    f"{_fmt(pos[label])} ({1e3 * off:.4g} mm away): the drawing and the lengths "
+                    f"disagree", file=scene.file, where=f"drawn.{label}")
+    points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
+    check_redundant_lengths(scene, plan, points)
+    return Placement(points, tuple(chosen))
+
+
+def _place(plan: Plan, scene: Scene, pos, chosen, size, x_in) -> None:
+    """Each dyad's ``locate`` in order; a closure that fails says why in the dyad's words."""
     for dyad in plan.dyads:
         if dyad.two_closures:
             x = dyad.placed[0]
@@ -57,17 +74,6 @@ def assemble(plan: Plan) -> Placement:
             raise AssemblyError(dyad.why_not(scene, pos), file=scene.file,
                                 where=getattr(dyad, "lever", None) or dyad.placed[0])
         pos.update(pts)
-    for label, xy in scene.drawn.items():
-        if label in pos:
-            off = float(np.hypot(*(pos[label] - np.array(xy))))
-            if off > DRAWN_TOL * size:
-                raise AssemblyError(
-                    f"{label} is drawn at {_fmt(np.array(xy))} but the links put it at "
-                    f"{_fmt(pos[label])} ({1e3 * off:.4g} mm away): the drawing and the lengths "
-                    f"disagree", file=scene.file, where=f"drawn.{label}")
-    points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
-    check_redundant_lengths(scene, plan, points)
-    return Placement(points, tuple(chosen))
 
 
 def driver_input(scene: Scene) -> float:

@@ -170,8 +170,9 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
     for d in plan.dyads:
         if d.two_closures:
             x = d.placed[0]
-            c1, m1 = d.locate(scene, pos0, 1.0, driver_input(scene))
-            c2, _ = d.locate(scene, pos0, -1.0, driver_input(scene))
+            with np.errstate(all="ignore"):
+                c1, m1 = d.locate(scene, pos0, 1.0, driver_input(scene))
+                c2, _ = d.locate(scene, pos0, -1.0, driver_input(scene))
             if float(np.hypot(*(c1[x] - c2[x]))) <= 1e-12 * size_of(scene) or not m1 > 0:
                 raise ConstructionError(
                     f"the scene's own position is a toggle for {x} ({d.toggle_reason(scene, pos0)}"
