@@ -55,3 +55,28 @@ def substitute(s: Step, scene) -> str:
     if op is Op.IMAGE:
         return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"
     return ""
+
+
+def worked(s: Step, scene) -> str:
+    """The worked line a tutorial prints under a figure: the asked symbol, the theorem in
+    symbols, then the numbers ("ω_BC = bc / BC = 7.8 / 0.17 = 45.9 rad/s CW",
+    "(a_C)_B^n = ω² × BC = 45.9² × 0.17 = 358 m/s²").  Empty for a line of unknown length.
+    Built from the step's fields and terms only."""
+    sub = substitute(s, scene)
+    if not sub:
+        return ""
+    op, t = s.op, s.terms
+    if op is Op.CRANK_VELOCITY:
+        return sub
+    if op in (Op.CORIOLIS_OFFSET_LINE, Op.CORIOLIS):
+        return f"a_cor = {sub}"
+    if op is Op.OMEGA:
+        w = t[2].value
+        return (f"{t[2].symbol} = {t[0].symbol} / {t[1].symbol} = {f(t[0].value)} / "
+                f"{f(t[1].value)} = {f(abs(w))} rad/s {sense(w)}").rstrip()
+    if op is Op.ALPHA:
+        L, P, X = s.args
+        al = t[2].value
+        return (f"{t[2].symbol} = (a_{X})_{P}^t / {t[1].symbol} = {f(t[0].value)} / "
+                f"{f(t[1].value)} = {f(abs(al))} rad/s² {sense(al)}").rstrip()
+    return f"{s.quantity} = {sub}"

@@ -104,6 +104,7 @@ class Step:
     lines: tuple[int, ...] = ()          # for an intersection: the step numbers of its lines
     component: Component = Component.CONSTRUCTION
     link: str | None = None              # the link whose ω/α this step gives or uses
+    relative: tuple[str, str] | None = None  # (X, Y): the step carries X relative to Y
     # -- filled by an interpreter -----------------------------------------------------------
     at: tuple[float, float] | None = None         # start vertex / line anchor, polygon coords
     vector: tuple[float, float] | None = None     # for vectors and images: end - start
@@ -182,11 +183,12 @@ class Builder:
         return "velocity" if self.velocity else "acceleration"
 
     def add(self, kind: Kind, op: Op, args, draws, start, end, theorem, quantity, formula,
-            reason, lines=(), *, component: Component, link: str | None = None) -> int:
+            reason, lines=(), *, component: Component, link: str | None = None,
+            relative: tuple[str, str] | None = None) -> int:
         n = len(self.steps) + 1
         self.steps.append(Step(self.diagram, n, kind, op, tuple(args), draws, start, end,
                                theorem, quantity, formula, reason, tuple(lines), component,
-                               link))
+                               link, relative))
         return n
 
     def fresh(self, label: str) -> str:

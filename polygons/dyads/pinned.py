@@ -18,7 +18,8 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
         n1 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", p, None,
                    "relative_velocity", f"(v_{X})_{P}", f"(v_{X})_{P} ⟂ {P}{X}",
                    f"Through {p} draw a line perpendicular to {P}{X}: the velocity of {X} "
-                   f"relative to {P}, of unknown length.", component=C.CONSTRUCTION, link=LP)
+                   f"relative to {P}, of unknown length.", component=C.CONSTRUCTION, link=LP,
+                   relative=(X, P))
         if other is not None:
             Q, LQ = other
             q_ = V(Q)
@@ -26,7 +27,7 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
                        "relative_velocity", f"(v_{X})_{Q}", f"(v_{X})_{Q} ⟂ {Q}{X}",
                        f"Through {q_} draw a line perpendicular to {Q}{X}: the velocity of "
                        f"{X} relative to {Q}, of unknown length.", component=C.CONSTRUCTION,
-                       link=LQ)
+                       link=LQ, relative=(X, Q))
         else:
             n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None,
                        "slider_line", f"v_{X}", f"v_{X} ∥ guide of {X}",
@@ -63,7 +64,7 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
                "tangential", f"(a_{X})_{P}^t", f"(a_{X})_{P}^t = α_{LP} × {P}{X} ⟂ {P}{X}",
                f"Through {x1} draw a line perpendicular to {P}{X} for the tangential "
                f"acceleration of unknown length: the {x} line.", component=C.CONSTRUCTION,
-               link=LP)
+               link=LP, relative=(X, P))
     if other is not None:
         Q, LQ = other
         q_ = V(Q)
@@ -77,7 +78,7 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
                    f"(a_{X})_{Q}^t", f"(a_{X})_{Q}^t = α_{LQ} × {Q}{X} ⟂ {Q}{X}",
                    f"Through {x2} draw a line perpendicular to {Q}{X} for the tangential "
                    f"acceleration of {X} relative to {Q}, of unknown length.",
-                   component=C.CONSTRUCTION, link=LQ)
+                   component=C.CONSTRUCTION, link=LQ, relative=(X, Q))
     else:
         n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None, "slider_line",
                    f"a_{X}", f"a_{X} ∥ guide of {X}",

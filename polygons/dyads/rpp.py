@@ -59,7 +59,7 @@ class RPP:
                    f"({q}_{A})_{Y}", f"({q}_{A})_{Y} ∥ slot of {Y}",
                    f"Through {a} draw a line parallel to the yoke's slot: {A} slides along "
                    f"it relative to the yoke, which does not turn (so there is no Coriolis "
-                   f"term).", component=C.CONSTRUCTION)
+                   f"term).", component=C.CONSTRUCTION, relative=(A, Y))
         b.add(Kind.INTERSECTION, Op.INTERSECT, (), y, None, y, "intersection", f"{q}_{Y}",
               f"{y} = intersection of the two lines",
               f"They meet at {y}: {pole}{y} is the {b.what} of the yoke and {y}{a} that of "

@@ -65,11 +65,12 @@ class RPR:
                        "relative_velocity", f"v_{A1}", f"v_{A1} = ω_{lev} × {B}{A1} ⟂ {B}{A}",
                        f"Through {b_} draw a line perpendicular to the lever {B}{A}: the "
                        f"velocity of {A1}, the point of the lever under the pin.",
-                       component=C.CONSTRUCTION, link=lev)
+                       component=C.CONSTRUCTION, link=lev, relative=(A1, B))
             n2 = b.add(Kind.LINE, Op.LINE_ALONG, (B, A1), f"slot line ∥ {B}{A}", a, None,
                        "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{A}",
                        f"Through {a} draw a line parallel to the slot {B}{A}: the velocity of "
-                       f"{A} sliding relative to {A1}.", component=C.CONSTRUCTION)
+                       f"{A} sliding relative to {A1}.", component=C.CONSTRUCTION,
+                       relative=(A, A1))
             b.add(Kind.INTERSECTION, Op.INTERSECT, (), a1, None, a1, "intersection",
                   f"v_{A1}", f"{a1} = intersection of the two lines",
                   f"They meet at {a1}: {b_}{a1} is the velocity of {A1} and {a1}{a} the "
@@ -93,13 +94,13 @@ class RPR:
                        f"(a_{A1})^t", f"(a_{A1})^t = α_{lev} × {B}{A} ⟂ {B}{A}",
                        f"Through {k1} draw a line perpendicular to {B}{A} for the tangential "
                        f"acceleration of {A1}, of unknown length.", component=C.CONSTRUCTION,
-                       link=lev)
+                       link=lev, relative=(A1, B))
             n2 = b.add(Kind.LINE, Op.CORIOLIS_OFFSET_LINE, (A,), "Coriolis offset line", a,
                        None, "coriolis", "2ω×v", f"2 ω_{lev} v = 2 × ω_{lev} × (v_{A})_{A1}",
                        f"The Coriolis acceleration 2ωv is known (ω × v turns v through 90° "
                        f"in the sense of ω). Step back from {a} by it and through that point "
                        f"draw a line parallel to the slot: the sliding acceleration lies on "
-                       f"it.", component=C.CORIOLIS, link=lev)
+                       f"it.", component=C.CORIOLIS, link=lev, relative=(A, A1))
             b.add(Kind.INTERSECTION, Op.INTERSECT, (), a1, None, a1, "intersection",
                   f"a_{A1}", f"{a1} = intersection of the two lines",
                   f"The lines meet at {a1}: {b_}{a1} is the acceleration of {A1}.", (n1, n2),
