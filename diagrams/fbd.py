@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from polygons.forces import Analysis, State, _pos, contact_force
+from polygons.forces import Analysis, State, contact_force, position as _pos
 from polygons.errors import PolygonsError, UnknownLabelError
 
 
