@@ -112,6 +112,23 @@ class ForceAnswer:
 
 
 @dataclass(frozen=True)
+class Flywheel:
+    """A flywheel on the crank shaft: I = m k² (or given) and the resisting torque T_R (given,
+    or from the power taken off, T_R = P/ω)."""
+    inertia: float
+    how: str
+    resisting_torque: float | None
+    power: float | None
+
+
+@dataclass(frozen=True)
+class Efficiency:
+    """The mechanism's efficiency η and, optionally, the effort applied at the driver."""
+    eta: float
+    input_effort: float | None        # N m for a crank driver, N for a slider driver
+
+
+@dataclass(frozen=True)
 class Loads:
     """Everything the force tables say, in SI, checked against the scene's topology."""
     file: str
@@ -132,6 +149,31 @@ class Loads:
     answers: tuple[ForceAnswer, ...]
     driver_body: str
     active: bool                # the scene has masses, forces, torques or springs
+    flywheel: Flywheel | None = None
+    efficiency: Efficiency | None = None
 
     def items_of(self, body: str) -> list[MassItem]:
         return [m for m in self.masses if m.body == body]
+
+
+def bodies_of(scene) -> dict[str, Body]:
+    """The moving bodies of a scene: its links, its slotted levers, its slider blocks."""
+    bodies: dict[str, Body] = {}
+    levers = {s.lever: s for s in scene.slots.values()}
+    for name, link in scene.links.items():
+        labels = [link.a, link.b]
+        if name in levers:
+            labels.append(levers[name].coincident)
+        labels += [p for p, bp in scene.points.items() if bp.link == name]
+        bodies[name] = Body(name, "link", link.a, link.b, tuple(dict.fromkeys(labels)),
+                            link.length)
+    for name, slot in levers.items():
+        if name in bodies:
+            continue
+        labels = [slot.pivot, slot.coincident]
+        labels += [p for p, bp in scene.points.items() if bp.link == name]
+        bodies[name] = Body(name, "link", slot.pivot, slot.coincident,
+                            tuple(dict.fromkeys(labels)), None)
+    for label in scene.sliders:
+        bodies[label] = Body(label, "block", label, None, (label,), None)
+    return bodies

@@ -44,8 +44,8 @@ from typing import Any, Callable, Mapping
 
 from .errors import (SceneError, UnitError, UnknownKeyError, UnknownLabelError, UnsupportedError,
                      suggest)
-from .loadmodel import (AppliedForce, AppliedTorque, Body, ForceAnswer, Friction, Joint, Loads,
-                        MassItem, SlotContact, Spring)
+from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
+                        Friction, Joint, Loads, MassItem, SlotContact, Spring, bodies_of)
 from .schema import Key, Table
 from .units import parse_quantity
 
@@ -93,6 +93,13 @@ TABLES: tuple[Table, ...] = (
         Key("pressure", _Q, "pressure on a piston (× π bore²/4)", "1.2 MPa", "pressure"),
         Key("bore", _Q, "piston diameter (with pressure)", "80 mm", "length"),
         Key("diameter", _Q, "same as bore", "80 mm", "length"),
+        Key("back_pressure", _Q, "double-acting cylinder: the pressure on the other side of "
+            "the piston (it pushes back)", "70 kPa", "pressure"),
+        Key("rod", _Q, "diameter of the piston rod, on the back-pressure side unless "
+            "rod_side = 'front' (that side's area is the annulus π(D² − d²)/4)", "50 mm",
+            "length"),
+        Key("rod_side", "string", "'back' (default) or 'front': the side the piston rod is on",
+            "back", default="back"),
     ), many=True),
     Table("torques", "An applied couple on a link, or a constant friction torque at a pin.", (
         Key("on", "link", "the link the couple acts on", "DB"),
@@ -127,6 +134,25 @@ TABLES: tuple[Table, ...] = (
             "[\"30 deg\"]", "angle"),
         Key("steps", "number", "release: RK4 steps per interval", "200", default=200),
     )),
+    Table("flywheel", "A flywheel on the crank shaft: its angular acceleration from the torque "
+          "surplus, α = (T − T_R)/I (kinetostatic: the crank's ω as given).", (
+              Key("mass", _Q, "mass of the flywheel (with radius_of_gyration)", "60 kg", "mass"),
+              Key("radius_of_gyration", _Q, "I = m k²", "600 mm", "length"),
+              Key("inertia", _Q, "or the moment of inertia itself", "21.6 kg m^2", "inertia"),
+              Key("power", _Q, "power taken off at the mean speed: T_R = P/ω", "20 kW",
+                  "power"),
+              Key("resisting_torque", _Q, "or the resisting torque T_R itself", "1590 N m",
+                  "torque"),
+          )),
+    Table("efficiency", "The mechanism's efficiency η: input torque T_in/η when the input "
+          "drives; output effort η × ideal; mechanical advantage η ω_in/ω_out.", (
+              Key("eta", _Q, "efficiency (a fraction or a percentage)", "80 %", "fraction",
+                  required=True),
+              Key("input_torque", _Q, "the torque applied to the crank driver (or "
+                  "input_force for a slider driver), for Tout_eta / Fout_eta", "20 N m",
+                  "torque"),
+              Key("input_force", _Q, "the force applied to a slider driver", "200 N", "force"),
+          )),
     Table("force_answers", "Printed and exact answers of the force analysis (as [[answers]], "
           "plus state and positive).", (
               Key("quantity", "string", "e.g. 'Tin', 'Rx(O,OA)', 'Rx(B,AB) + Rx(A,OA)'", "Tin",
@@ -194,28 +220,6 @@ def has_loads(extra: Mapping[str, Any]) -> bool:
     return any(k in extra for k in LOAD_TABLES)
 
 
-def _bodies(scene) -> dict[str, Body]:
-    bodies: dict[str, Body] = {}
-    levers = {s.lever: s for s in scene.slots.values()}
-    for name, link in scene.links.items():
-        labels = [link.a, link.b]
-        if name in levers:
-            labels.append(levers[name].coincident)
-        labels += [p for p, bp in scene.points.items() if bp.link == name]
-        bodies[name] = Body(name, "link", link.a, link.b, tuple(dict.fromkeys(labels)),
-                            link.length)
-    for name, slot in levers.items():
-        if name in bodies:
-            continue
-        labels = [slot.pivot, slot.coincident]
-        labels += [p for p, bp in scene.points.items() if bp.link == name]
-        bodies[name] = Body(name, "link", slot.pivot, slot.coincident,
-                            tuple(dict.fromkeys(labels)), None)
-    for label in scene.sliders:
-        bodies[label] = Body(label, "block", label, None, (label,), None)
-    return bodies
-
-
 #: reads the fields every answer table shares (``scene.answer_fields`` bound to its reader)
 AnswerFields = Callable[..., dict]
 
@@ -229,7 +233,7 @@ def parse(scene, answer_fields: AnswerFields) -> Loads:
     r = _Values(file)
     ex = scene.extra
     active = has_loads(ex)
-    bodies = _bodies(scene)
+    bodies = bodies_of(scene)
     members: dict[str, list[str]] = {lab: [] for lab in scene.labels}
     for b in bodies.values():
         for lab in b.labels:
@@ -303,6 +307,8 @@ def parse(scene, answer_fields: AnswerFields) -> Loads:
     torques, frictions = _torques(ctx, ex.get("torques", {}))
     springs = _springs(ctx, ex.get("springs", {}))
     mode, after, steps = _dynamics(r, scene, ex.get("dynamics", {}), active)
+    flywheel = _flywheel(r, scene, ex.get("flywheel"), mode)
+    efficiency = _efficiency(r, scene, ex.get("efficiency"))
     answers = _answers(r, ex.get("force_answers", []), answer_fields)
     drv = scene.driver
     driver_body = drv.link if _is_crank(drv) else drv.point
@@ -310,7 +316,7 @@ def parse(scene, answer_fields: AnswerFields) -> Loads:
                  MappingProxyType({k: tuple(v) for k, v in members.items()}), tuple(joints),
                  tuple(slots), tuple(scene.sliders), tuple(masses), tuple(forces),
                  tuple(torques), tuple(frictions), tuple(springs), gravity, mode, after, steps,
-                 answers, driver_body, active)
+                 answers, driver_body, active, flywheel, efficiency)
 
 
 @dataclass(frozen=True)
@@ -452,7 +458,8 @@ def _forces(ctx: _Context, raw) -> list[AppliedForce]:
 
 
 def _pressure_force(r: _Values, spec, where) -> tuple[float, str]:
-    """F = p π d²/4 on a piston of diameter d (the bore)."""
+    """F = p π D²/4 on a piston of diameter D (the bore); double-acting, F = p A − p_b A_b
+    with the annulus A = π(D² − d²)/4 on the side of the piston rod (diameter d)."""
     p = r.quantity(spec["pressure"], "pressure", where + ".pressure")
     key = "bore" if "bore" in spec else "diameter"
     if key not in spec:
@@ -462,8 +469,23 @@ def _pressure_force(r: _Values, spec, where) -> tuple[float, str]:
     if dia <= 0:
         raise SceneError(f"{key} must be positive", file=r.file, where=f"{where}.{key}")
     area = math.pi * dia * dia / 4.0
-    mag = p * area
-    return mag, f"p × π d²/4 = {p:.6g} Pa × π × {dia:.6g}²/4 = {mag:.6g} N"
+    if not any(k in spec for k in ("back_pressure", "rod", "rod_side")):
+        mag = p * area
+        return mag, f"p × π d²/4 = {p:.6g} Pa × π × {dia:.6g}²/4 = {mag:.6g} N"
+    pb = r.quantity(spec.get("back_pressure", "0 Pa"), "pressure", where + ".back_pressure")
+    rod = r.quantity(spec.get("rod", "0 m"), "length", where + ".rod")
+    side = spec.get("rod_side", "back")
+    if side not in ("back", "front"):
+        raise SceneError(f"rod_side must be 'back' or 'front', got {side!r}", file=r.file,
+                         where=where + ".rod_side")
+    if not 0 <= rod < dia:
+        raise SceneError(f"the piston rod ({rod:.6g} m) must be thinner than the bore",
+                         file=r.file, where=where + ".rod")
+    annulus = math.pi * (dia * dia - rod * rod) / 4.0
+    front, back = (area, annulus) if side == "back" else (annulus, area)
+    mag = p * front - pb * back
+    return mag, (f"p A − p_b A_b = {p:.6g} Pa × {front:.6g} m² − {pb:.6g} Pa × {back:.6g} m² "
+                 f"(rod {rod:.6g} m on the {side} side: π(D² − d²)/4) = {mag:.6g} N")
 
 
 def _torques(ctx: _Context, raw) -> tuple[list[AppliedTorque], list[Friction]]:
@@ -687,6 +709,62 @@ def _inertia(r: _Values, spec, mass, length, where, default) -> tuple[float, str
         return i, "given"
     raise SceneError(f"inertia must be 'rod', 'disc', 'point' or a value such as "
                      f"'0.002 kg m^2'; got {how!r}", file=r.file, where=where + ".inertia")
+
+
+def _flywheel(r: _Values, scene, raw, mode: str) -> Flywheel | None:
+    """I = m k² (or inertia); T_R = P/ω (or resisting_torque)."""
+    if raw is None:
+        return None
+    r.table(raw, "flywheel", _keys("flywheel"))
+    if not _is_crank(scene.driver):
+        raise SceneError("a flywheel turns with a crank driver", file=r.file, where="flywheel")
+    if mode != "kinetostatic":
+        raise SceneError("the flywheel's α = (T − T_R)/I is for mode = \"kinetostatic\" (the "
+                         "crank's ω as given)", file=r.file, where="flywheel")
+    if ("inertia" in raw) == ("mass" in raw or "radius_of_gyration" in raw):
+        raise SceneError("give mass + radius_of_gyration (I = m k²) or inertia", file=r.file,
+                         where="flywheel")
+    if "inertia" in raw:
+        inertia = r.quantity(raw["inertia"], "inertia", "flywheel.inertia")
+        how = "given"
+    else:
+        if "mass" not in raw or "radius_of_gyration" not in raw:
+            raise SceneError("I = m k² needs both mass and radius_of_gyration", file=r.file,
+                             where="flywheel")
+        m = r.quantity(raw["mass"], "mass", "flywheel.mass")
+        k = r.quantity(raw["radius_of_gyration"], "length", "flywheel.radius_of_gyration")
+        inertia, how = m * k * k, f"m k² = {m:.6g} × {k:.6g}²"
+    if inertia <= 0:
+        raise SceneError("the flywheel's moment of inertia must be positive", file=r.file,
+                         where="flywheel")
+    if ("power" in raw) == ("resisting_torque" in raw):
+        raise SceneError("give the power taken off (T_R = P/ω) or the resisting_torque",
+                         file=r.file, where="flywheel")
+    power = r.quantity(raw["power"], "power", "flywheel.power") if "power" in raw else None
+    tr = (r.quantity(raw["resisting_torque"], "torque", "flywheel.resisting_torque")
+          if "resisting_torque" in raw else None)
+    if power is not None and scene.driver.omega == 0.0:
+        raise SceneError("T_R = P/ω needs the crank turning (omega is 0)", file=r.file,
+                         where="flywheel.power")
+    return Flywheel(inertia, how, tr, power)
+
+
+def _efficiency(r: _Values, scene, raw) -> Efficiency | None:
+    if raw is None:
+        return None
+    r.table(raw, "efficiency", _keys("efficiency"), required=("eta",))
+    eta = r.quantity(raw["eta"], "fraction", "efficiency.eta")
+    if not 0.0 < eta <= 1.0:
+        raise SceneError(f"an efficiency is a fraction in (0, 1], got {raw['eta']!r}",
+                         file=r.file, where="efficiency.eta")
+    crank = _is_crank(scene.driver)
+    key, dim = ("input_torque", "torque") if crank else ("input_force", "force")
+    wrong = "input_force" if crank else "input_torque"
+    if wrong in raw:
+        raise SceneError(f"the driver is a {'crank' if crank else 'slider'}: give {key}",
+                         file=r.file, where=f"efficiency.{wrong}")
+    effort = abs(r.quantity(raw[key], dim, f"efficiency.{key}")) if key in raw else None
+    return Efficiency(eta, effort)
 
 
 #: units a force answer may be stated in beyond polygons.units (answer_fields checks the rest)

@@ -54,7 +54,7 @@ TOP_KEYS = ("title", "source", "ground", "links", "driver", "sliders", "slots", 
 #: tables read by extension modules (forces, sweeps, diagrams); stored raw in ``Scene.extra``
 #: and validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics", "sweep",
-                  "diagram", "handout", "force_answers")
+                  "diagram", "handout", "force_answers", "flywheel", "efficiency")
 DIAGRAMS = ("velocity", "acceleration")
 
 

@@ -14,6 +14,7 @@ from ..errors import PolygonsError, SceneError, UnitError, UnknownLabelError, su
 from ..scene import Scene, unit_dimension
 from ..units import UNITS
 from ..loadmodel import ForceAnswer
+from . import machine
 from .model import (Inertia, centre, cross, perp, position as _pos, spring_state, unit_r)
 from .newton_euler import contact_force, section
 from .states import Analysis, State
@@ -41,6 +42,11 @@ FORCE_FUNCTIONS: dict[str, tuple[str, bool, tuple[int, int]]] = {
     "Hdot": ("torque", True, (2, 2)),
     "N": ("force", False, (2, 2)), "S": ("force", True, (2, 2)), "M": ("torque", True, (2, 2)),
     "T": ("energy", False, (0, 0)), "V": ("energy", False, (0, 0)),
+    "TR": ("torque", False, (0, 0)), "Ifw": ("inertia", False, (0, 0)),
+    "Tturn": ("torque", False, (0, 0)), "alpha_fw": ("angular_acceleration", False, (0, 0)),
+    "Tin_eta": ("torque", True, (0, 0)), "VR": ("fraction", False, (1, 1)),
+    "MA": ("fraction", False, (1, 1)), "Tout_eta": ("torque", False, (1, 1)),
+    "Fout_eta": ("force", False, (1, 1)),
 }
 _KIN_FLIP = ("omega", "alpha")
 _NAME = frozenset(string.ascii_letters + "_")
@@ -277,6 +283,33 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
         if key not in st.extra:
             raise SceneError(f"{fn} is reported for mode = 'release' states", file=file)
         return st.extra[key]
+    if fn in ("TR", "Ifw", "Tturn", "alpha_fw"):
+        if fn == "Ifw":
+            return machine._flywheel(model).inertia
+        if model.mode != "kinetostatic":
+            raise SceneError(f"{fn} needs mode = 'kinetostatic' (the crank's ω as given)",
+                             file=file)
+        return {"TR": machine.resisting_torque, "Tturn": lambda m, s: machine.turning_moment(s),
+                "alpha_fw": machine.flywheel_alpha}[fn](model, st)
+    if fn == "Tin_eta":
+        if model.mode != "kinetostatic":
+            raise SceneError("Tin_eta is the input torque a kinetostatic analysis finds",
+                             file=file)
+        return flip * machine.input_with_efficiency(model, st)
+    if fn in ("VR", "MA", "Tout_eta", "Fout_eta"):
+        out = body(args[0])
+        if fn == "VR":
+            if out.kind == "block":
+                raise SceneError(f"VR({out.name}): a slider's ratio has a unit (1/m); ask for "
+                                 f"Fout_eta", file=file)
+            return machine.velocity_ratio(model, st, out)
+        if fn == "MA":
+            return machine.mechanical_advantage(model, st, out)
+        if (fn == "Fout_eta") != (out.kind == "block"):
+            raise SceneError(f"{fn} is for {'a slider' if fn == 'Fout_eta' else 'a link'}; "
+                             f"{out.name} is {'a slider' if out.kind == 'block' else 'a link'}",
+                             file=file)
+        return machine.output_effort(model, st, out)
     raise SceneError(f"unknown quantity {fn!r}", file=file)  # pragma: no cover
 
 
