@@ -107,7 +107,7 @@ def test_ex316_part_c_slips_are_asserted():
 def test_virtual_work_agrees_with_newton_euler(path, analysed):
     an = analysed(path)
     for st_ in an.states:
-        scale = max([abs(v) for _, v in st_.breakdown] + [1.0])
+        scale = max([abs(t.value) for t in st_.breakdown] + [1.0])
         if an.model.mode == "kinetostatic":
             assert st_.vw_effort == pytest.approx(st_.ne.effort, rel=1e-10, abs=1e-12 * scale)
         else:   # the applied torques are in the loads: no extra input may be needed
@@ -278,7 +278,7 @@ def test_random_four_bars_virtual_work_equals_newton_euler(**p):
         assume("parallel" not in str(exc) and "singular" not in str(exc))
         raise
     st_ = an.states[0]
-    scale = max([abs(v) for _, v in st_.breakdown] + [1.0])
+    scale = max([abs(t.value) for t in st_.breakdown] + [1.0])
     assert st_.vw_effort == pytest.approx(st_.ne.effort, rel=1e-8, abs=1e-9 * scale)
 
 
@@ -481,7 +481,7 @@ def _engine_exact(N, D, stroke, l, m, beta_deg, p1, p2, d, sense=-1):
     pc = np.array([r * c - x, r * s])
     Q = F / (abs(pc[0]) / np.hypot(*pc))
     FB = Q * float(pc @ np.array([c, s])) / float(np.hypot(*pc))
-    return dict(w=w, FL=FL, x=x, v=v, a=acc, T=F * v / abs(w), FB=FB)
+    return dict(w=w, FL=FL, x=x, v=v, a=acc, T=F * v / abs(w), FB=FB, Q=Q)
 
 
 def test_khurmi_flywheel_case_against_the_closed_form():
@@ -577,3 +577,44 @@ def test_efficiency_when_the_load_drives_back(write_scene):
     assert force_quantity(an, "Tin_eta") == pytest.approx(-30.0 / vr * 0.8, rel=1e-9)
     with pytest.raises(PolygonsError, match=r"\[efficiency.eta\].*fraction"):
         load_scene(write_scene(text.replace('eta = "80 %"', 'eta = "120 %"'), "bad.toml"))
+
+
+def test_json_pin_components_and_identifier_keys(tmp_path):
+    """Khurmi's engine: on the crank at C, tangential × r = T and radial = F_B (closed form);
+    along the rod = −Q (compression); every key an identifier with its words beside it."""
+    path = CASES / "khurmi-flywheel-steam-engine.toml"
+    out_file = tmp_path / "forces.json"
+    out = run("forces", path, "--json", "-o", out_file)
+    assert out.returncode == 0 and out.stdout == "", out.stderr
+    data = json.loads(out_file.read_text())
+    st_ = data["states"][0]
+    e = _engine_exact(120, 0.25, 0.4, 0.6, 60, 135, 550e3, 70e3, 0.05)
+    pins = {p["key"]: p for p in st_["pins"]}
+    comps = {c["key"]: c["value"] for c in pins["pin_C_on_OC"]["components"]}
+    assert comps["crank_tangential"] * 0.2 == pytest.approx(e["T"], rel=1e-9)
+    assert comps["crank_radial"] == pytest.approx(e["FB"], rel=1e-9)
+    rod = {c["key"]: c["value"] for c in pins["pin_C_on_PC"]["components"]}
+    assert rod["PC_along"] == pytest.approx(-e["Q"], rel=1e-9)   # pushes C away from P
+    machine = {m["key"]: m["value"] for m in st_["machine"]}
+    assert machine["flywheel_alpha"] == pytest.approx((e["T"] - 20e3 / abs(e["w"])) / 21.6,
+                                                      rel=1e-9)
+    keyed = [p for p in st_["pins"]] + st_["input"]["breakdown"] + st_["unknowns"]
+    keyed += [c for p in st_["pins"] for c in p["components"]] + st_["machine"]
+    for item in keyed:
+        assert item["key"].isidentifier(), item["key"]
+    for item in st_["input"]["breakdown"] + st_["unknowns"] + st_["machine"]:
+        assert item["words"] and item["words"] != item["key"]
+    assert {t["key"] for t in st_["input"]["breakdown"]} == {"force_Steam", "inertia_force_P"}
+
+
+def test_solve_out_writes_the_same_as_stdout(tmp_path):
+    case = CASES / "s001-we8.toml"
+    for extra in ((), ("--json",)):
+        shown = run("solve", case, *extra)
+        written = tmp_path / "solve.out"
+        quiet = run("solve", case, *extra, "--out", written)
+        assert quiet.returncode == 0 and quiet.stdout == "", quiet.stderr
+        assert written.read_text() == shown.stdout
+    bad = run("forces", case, "-o", tmp_path)
+    assert bad.returncode != 0 and "is a folder" in bad.stderr
+    assert len(bad.stderr.strip().splitlines()) == 1

@@ -23,6 +23,7 @@ from .model import (ForceModel, Load, body_alpha, centre, cross, image, inertias
 class NEResult:
     """Newton–Euler at one state."""
     names: list[str]                  # the unknowns, in words
+    keys: list[str]                   # the unknowns, as identifiers (pin_O_on_OA_x, ...)
     values: np.ndarray
     pin: dict                         # (label, body) -> force on body at label (from the pin)
     ground: dict                      # label -> force on the ground at the pin
@@ -48,10 +49,12 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
     idx = {n: i for i, n in enumerate(order)}
     ref = {n: _pos(sol, bodies[n].a) for n in order}
     cols: list[str] = []
+    keys: list[str] = []
     neq = 3 * len(order)
     entries: list[tuple[int, int, float]] = []
 
-    def col(name):
+    def col(key, name):
+        keys.append(key)
         cols.append(name)
         return len(cols) - 1
 
@@ -71,7 +74,8 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
         free = j.members if j.ground else j.members[:-1]
         cs = []
         for m in free:
-            cx, cy = col(f"pin {j.label} on {m}, x"), col(f"pin {j.label} on {m}, y")
+            cx = col(f"pin_{j.label}_on_{m}_x", f"pin {j.label} on {m}, x")
+            cy = col(f"pin_{j.label}_on_{m}_y", f"pin {j.label} on {m}, y")
             add_force(cx, m, r, ex)
             add_force(cy, m, r, ey)
             if not j.ground:
@@ -84,7 +88,7 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
         rp = _pos(sol, s.pin)
         u = np.array(s.direction) if s.direction else rp - _pos(sol, s.pivot)
         n = perp(u / float(np.hypot(*u)))
-        c = col(f"slot force on {s.lever} at {s.pin} (⟂ slot)")
+        c = col(f"slot_{s.pin}_on_{s.lever}", f"slot force on {s.lever} at {s.pin} (⟂ slot)")
         add_force(c, s.lever, rp, n)
         add_force(c, s.carrier, rp, -n)
         slot_cols.append((s, c, n))
@@ -92,14 +96,14 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
     for lab in model.guides:
         n = perp(np.array(scene.sliders[lab].direction))
         r = _pos(sol, lab)
-        cn = col(f"guide force on {lab} (⟂ guide)")
+        cn = col(f"guide_force_{lab}", f"guide force on {lab} (⟂ guide)")
         add_force(cn, lab, r, n)
-        cm = col(f"guide couple on {lab}")
+        cm = col(f"guide_couple_{lab}", f"guide couple on {lab}")
         add_couple(cm, lab, 1.0)
         guide_cols.append((lab, cn, cm, n))
     drv = scene.driver
-    cdrv = col("input torque on " + model.driver_body if isinstance(drv, Crank)
-               else "input force on " + model.driver_body)
+    what = "torque" if isinstance(drv, Crank) else "force"
+    cdrv = col(f"input_{what}_{model.driver_body}", f"input {what} on {model.driver_body}")
     lds = loads(model, sol, vsol, motion) if lds is None else lds
 
     def inertia_rhs(s: Solution) -> np.ndarray:
@@ -126,6 +130,7 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
     else:
         cols[cdrv] = ("input angular acceleration" if isinstance(drv, Crank)
                       else "input acceleration")
+        keys[cdrv] = "input_alpha" if isinstance(drv, Crank) else "input_acceleration"
     A = np.zeros((neq, len(cols)))
     for i, c, v in entries:
         A[i, c] += v
@@ -159,7 +164,7 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
             pin[(j.label, j.members[-1])] = -total
     slot = {s.pin: (float(x[c]), n) for s, c, n in slot_cols}
     guide = {lab: (float(x[cn]), n, float(x[cm])) for lab, cn, cm, n in guide_cols}
-    return NEResult(cols, x, pin, ground, slot, guide,
+    return NEResult(cols, keys, x, pin, ground, slot, guide,
                     None if sol1 is not None else float(x[cdrv]),
                     float(x[cdrv]) if sol1 is not None else None, lds, residual, neq)
 

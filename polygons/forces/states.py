@@ -9,7 +9,7 @@ from ..evaluate import Solution, solve
 from ..scene import Crank, Scene
 from .model import ForceModel, Inertia, friction_sense, inertias
 from .newton_euler import NEResult, newton_euler
-from .virtual_work import virtual_work
+from .virtual_work import Share, virtual_work
 
 
 @dataclass
@@ -21,7 +21,7 @@ class State:
     ne: NEResult
     inertia: list[Inertia]
     vw_effort: float | None
-    breakdown: list[tuple[str, float]]
+    breakdown: list[Share]            # the virtual-work terms (key, words, value)
     applied_driver: float            # torque (force) applied to the driver by [torques]/[forces]
     rotation: float = 0.0            # release: the driver's rotation from the release position
     extra: dict = field(default_factory=dict)
