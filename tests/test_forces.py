@@ -546,16 +546,16 @@ def test_flywheel_from_resisting_torque_and_given_inertia(write_scene):
             load_scene(write_scene(bad, "bad.toml"))
 
 
-def _four_bar_120():
+def _four_bar_case():
     from analytic import four_bar
-    return four_bar((0, 0), (0.45, 0), 0.1, 0.4, 0.35, math.radians(120), 12.0, 0.0, 1)
+    return four_bar((0, 0), (0.45, 0), 0.1, 0.4, 0.35, math.radians(90), 12.0, 0.0, 1)
 
 
 def test_efficiency_case_against_the_closed_form():
     """VR = ω_AB/ω_CD from the closed-form four-bar; MA = η VR; T_out = η T_in VR;
     T_in for a load T_L on CD: T_L ω_CD/ω_AB, and T_in/η with the losses."""
     path = CASES / "efficiency-four-bar.toml"
-    r = _four_bar_120()
+    r = _four_bar_case()
     vr, eta = 12.0 / r["omega_CD"], 0.8
     expected = {"VR(CD)": vr, "MA(CD)": eta * vr, "Tout_eta(CD)": eta * 20.0 * vr,
                 "Tin": 30.0 / vr, "Tin_eta": 30.0 / vr / eta}
@@ -572,7 +572,7 @@ def test_efficiency_when_the_load_drives_back(write_scene):
     text = (CASES / "efficiency-four-bar.toml").read_text().replace(
         'torque = "30 N m"\nsense = "CW"', 'torque = "30 N m"\nsense = "CCW"')
     an = analyse(load_scene(write_scene(text)))
-    vr = 12.0 / _four_bar_120()["omega_CD"]
+    vr = 12.0 / _four_bar_case()["omega_CD"]
     assert force_quantity(an, "Tin") == pytest.approx(-30.0 / vr, rel=1e-9)
     assert force_quantity(an, "Tin_eta") == pytest.approx(-30.0 / vr * 0.8, rel=1e-9)
     with pytest.raises(PolygonsError, match=r"\[efficiency.eta\].*fraction"):
