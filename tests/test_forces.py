@@ -618,3 +618,32 @@ def test_solve_out_writes_the_same_as_stdout(tmp_path):
     bad = run("forces", case, "-o", tmp_path)
     assert bad.returncode != 0 and "is a folder" in bad.stderr
     assert len(bad.stderr.strip().splitlines()) == 1
+
+
+def test_fbd_forces_on_a_two_force_member_are_drawn_beside_it(analysed):
+    """WE8's massless rod PC: the pin forces act along it; their arrows are drawn parallel to
+    the rod but off it (≥ 2 mm), and each value hangs from a leader, clear of the rod."""
+    from diagrams.fbd import drawings
+    from diagrams.labels import text_box
+    from diagrams.model import Arrow, Segment, Text
+    an = analysed(CASES / "s001-we8.toml")
+    d = dict(drawings(an))["fbd-instant-pc"]
+    (rod,) = [s for s in d.items("body") if isinstance(s, Segment) and s.style == "link"]
+    a, b = np.array(rod.a), np.array(rod.b)
+    e = (b - a) / np.hypot(*(b - a))
+    n = np.array([-e[1], e[0]])
+    arrows = [x for x in d.items("forces") if isinstance(x, Arrow)]
+    assert len(arrows) == 2
+    for arr in arrows:
+        off = [abs(float((np.array(p) - a) @ n)) for p in (arr.tail, arr.tip)]
+        assert min(off) >= 2.0, off                       # beside the rod, not on it
+        assert abs(float((np.array(arr.tip) - arr.tail) @ n)) < 5e-3   # parallel (0.001 mm grid)
+    leaders = [x for x in d.items("leaders") if isinstance(x, Segment)]
+    assert len(leaders) == 2
+    for t in (x for x in d.items("labels") if isinstance(x, Text)):
+        box = text_box(t.x, t.baseline, t.text, t.size, t.anchor)
+        corners = [(box.x0, box.y0), (box.x0, box.y1), (box.x1, box.y0), (box.x1, box.y1)]
+        sides = {np.sign(float((np.array(c) - a) @ n)) for c in corners}
+        along = [float((np.array(c) - a) @ e) for c in corners]
+        clear = len(sides) == 1 or max(along) < 0 or min(along) > np.hypot(*(b - a))
+        assert clear, t.text                              # the value does not sit on the rod
