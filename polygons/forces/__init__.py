@@ -10,10 +10,12 @@ model on ``Scene.loads``); this package reads them against the kinematic solutio
 * :mod:`.virtual_work` — the input effort from the power balance, term by term;
 * :mod:`.states` — one analysed instant, kinetostatic or torque-driven;
 * :mod:`.release` — a mechanism released from rest: energy against RK4 integration;
+* :mod:`.machine` — a flywheel on the crank shaft (α = (T − T_R)/I) and the efficiency;
 * :mod:`.answers` — named force quantities and the check of ``[[force_answers]]``;
 * :mod:`.analysis` — the model of a scene and every state it asks for.
 
-Imports go one way: model → newton_euler, virtual_work → states → release, answers → analysis.
+Imports go one way: model → newton_euler, virtual_work → states → release, machine →
+answers → analysis.
 """
 from __future__ import annotations
 
