@@ -20,7 +20,7 @@ from ..evaluate import Solution
 from ..loadmodel import (AppliedForce, AppliedTorque, Body, Friction, ForceAnswer, Joint, Loads,
                      MassItem, SlotContact, Spring)
 from ..scene import Scene
-from ..theorems import cross, perp
+from ..theorems import centripetal, cross, perp, relative_velocity, tangential
 
 __all__ = ["ForceModel", "Load", "Inertia", "has_forces", "position", "image",
            "body_omega", "body_alpha", "body_angle", "unit_r", "centre", "loads",
@@ -118,20 +118,18 @@ def _kin(sol: Solution, label: str, kind: str) -> np.ndarray:
     return np.zeros(2) if v is None else np.array(v)
 
 
-def _c(v) -> complex:
-    return complex(v[0], v[1])
-
-
 def image(sol: Solution, body: Body, r: np.ndarray, kind: str) -> np.ndarray:
-    """Velocity or acceleration of the point at ``r`` of ``body``: the image of the body in the
-    polygon is similar to the body, so the point's vertex is where ``r`` sits relative to the
-    body's two labelled vertices (complex ratio).  A slider block translates."""
+    """Velocity or acceleration of the point at ``r`` of ``body``, from its first labelled point
+    A by the theorems of the polygons: v = v_A + ω × AR, a = a_A + α × AR − ω² AR (the image
+    of the body in the polygon is similar to the body).  A slider block translates."""
     if body.kind == "block":
         return _kin(sol, body.a, kind)
-    pa, pb = _c(position(sol, body.a)), _c(position(sol, body.b))
-    va, vb = _c(_kin(sol, body.a, kind)), _c(_kin(sol, body.b, kind))
-    z = va + (vb - va) * ((_c(r) - pa) / (pb - pa))
-    return np.array([z.real, z.imag])
+    ar = np.asarray(r, dtype=float) - position(sol, body.a)
+    link = sol.links[body.name]
+    if kind == "velocity":
+        return _kin(sol, body.a, kind) + relative_velocity(link.omega or 0.0, ar)
+    return (_kin(sol, body.a, kind) + tangential(link.alpha or 0.0, ar)
+            + centripetal(link.omega or 0.0, ar))
 
 
 def body_omega(sol: Solution, body: Body) -> float:
