@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from polygons.forces import Analysis, State, _pos, contact_force
+from polygons.forces import Analysis, State, contact_force, position as _pos
 from polygons.errors import PolygonsError, UnknownLabelError
 
 
@@ -159,8 +159,11 @@ def drawings(an: Analysis):
                         break
                 placed.append(bx)
                 labels.append(Text(x, y + dy, text, size, anchor=anchor, role="label"))
+                return y + dy
 
             L = 16.0
+            leaders = []
+            segments = [(it.a, it.b) for it in items if isinstance(it, Segment)]
             for v in vecs:
                 mag = float(np.hypot(*v.force))
                 if mag == 0.0:
@@ -168,13 +171,29 @@ def drawings(an: Analysis):
                 u = v.force / mag
                 tail = P(v.at)
                 tip = (tail[0] + L * u[0], tail[1] + L * u[1])
+                text = f"{v.name} {_fmt(mag)} N ∠{_dir(v.force):.1f}°"
+                side = _along_member(tail, tip, segments)
+                if side is not None:
+                    # beside a two-force member: the arrow parallel to the rod, off it, and
+                    # its label further out with a leader to the arrow's middle
+                    tail = (tail[0] + BESIDE * side[0], tail[1] + BESIDE * side[1])
+                    tip = (tip[0] + BESIDE * side[0], tip[1] + BESIDE * side[1])
+                    mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
+                    at = (mid[0] + LEADER * side[0], mid[1] + LEADER * side[1])
+                    anchor = "start" if side[0] >= -0.2 else "end"
+                    y = label(at[0], at[1] + (2.0 if side[1] > 0 else -0.5), text,
+                              anchor=anchor)
+                    leaders.append(Segment((round(mid[0] + 0.8 * side[0], 3),
+                                            round(mid[1] + 0.8 * side[1], 3)),
+                                           (round(at[0], 3), round(y - 0.8, 3)), "hatch",
+                                           cls="leader"))
+                else:
+                    label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0, text,
+                          anchor="start" if u[0] >= -0.2 else "end")
                 head, shaft = arrow_head(tail, tip)
                 style = "result" if v.kind == "inertia" else "vector"
                 arrows.append(Arrow(tail, tip, style, head, shaft, name=v.name,
                                     role="known", title=f"{v.name} = {_fmt(mag)} N"))
-                label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0,
-                      f"{v.name} {_fmt(mag)} N ∠{_dir(v.force):.1f}°",
-                      anchor="start" if u[0] >= -0.2 else "end")
             for cpl in couples:
                 c = P(cpl.at)
                 r = 6.0
@@ -190,7 +209,10 @@ def drawings(an: Analysis):
             content = [Group("body", "body", f"{name}", tuple(items)),
                        Group("forces", "forces", "forces on the body", tuple(arrows)),
                        Group("labels", "labels", "values", tuple(labels))]
-            xs = [q for it in items + arrows for q in _pts(it)]
+            if leaders:
+                content.append(Group("leaders", "leaders", "leaders from the values to the "
+                                     "forces beside a two-force member", tuple(leaders)))
+            xs = [q for it in items + arrows + leaders for q in _pts(it)]
             box = bounds(xs)
             for o in placed:
                 box = box.union(o)
@@ -263,6 +285,34 @@ def drawings(an: Analysis):
                             if couples else "")],
                 scale_statement=fscale.statement, meta={"gap_N": gap})))
     return out
+
+
+#: a force along a member is drawn this far beside it (mm of paper); its label this much further
+BESIDE = 3.0
+LEADER = 9.0
+
+
+def _along_member(tail, tip, segments) -> tuple[float, float] | None:
+    """The unit normal (paper) to step a force arrow off the member it would lie on — a force at
+    a pin of a two-force member acts along the member — or None when the arrow is clear of it.
+    The side is the one away from the point labels (set up and to the right of their points),
+    the same for both ends."""
+    for a, b in segments:
+        d = np.subtract(b, a, dtype=float)
+        length = float(np.hypot(*d))
+        if length < 1e-9:
+            continue
+        e = d / length
+        n = np.array([-e[1], e[0]])
+        arrow = np.subtract(tip, tail, dtype=float)
+        slant = abs(float(arrow @ n)) / max(float(np.hypot(*arrow)), 1e-9)   # |sin| to it
+        off = abs(float(np.subtract(tail, a) @ n))
+        along = [float(np.subtract(p, a) @ e) for p in (tail, tip)]
+        if off < 0.6 and slant < 0.1 and min(along) > -1.0 and max(along) < length + 1.0:
+            if n[0] + n[1] > 0:
+                n = -n
+            return float(n[0]), float(n[1])
+    return None
 
 
 def _pts(it):

@@ -34,13 +34,14 @@ from __future__ import annotations
 import math
 import re
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownKeyError, UnknownLabelError, UnitError, suggest)
+from .loads import parse as parse_loads
 from .units import UNITS, dimension_of, parse_quantity
 
 Vec = tuple[float, float]
@@ -53,7 +54,8 @@ TOP_KEYS = ("title", "source", "ground", "links", "driver", "sliders", "slots", 
 #: tables read by extension modules (forces, sweeps, diagrams); stored raw in ``Scene.extra``
 #: and validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics", "sweep",
-                  "diagram", "handout", "force_answers", "pins", "least_velocity", "pin_answers")
+                  "diagram", "handout", "force_answers", "pins", "least_velocity", "pin_answers",
+                  "flywheel", "efficiency")
 DIAGRAMS = ("velocity", "acceleration")
 
 
@@ -187,6 +189,7 @@ class Scene:
     solve: tuple[str, ...] = DIAGRAMS
     drawn: Mapping[str, Vec] = field(default_factory=lambda: MappingProxyType({}))
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
+    loads: Any = None           # polygons.loads.Loads: the force tables, parsed and checked
 
     @property
     def labels(self) -> tuple[str, ...]:
@@ -518,7 +521,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     answers = tuple(_parse_answer(i, a, r, default_tol) for i, a in
                     enumerate(data.get("answers", [])))
 
-    return Scene(file=file, title=title, source=MappingProxyType(dict(source)),
+    scene = Scene(file=file, title=title, source=MappingProxyType(dict(source)),
                  ground=MappingProxyType(ground), links=MappingProxyType(links),
                  driver=driver, sliders=MappingProxyType(sliders),
                  slots=MappingProxyType(slots), points=MappingProxyType(points),
@@ -526,6 +529,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                  solve=tuple(s for s in DIAGRAMS if s in solve),
                  drawn=MappingProxyType(drawn),
                  extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}))
+    # the force tables ([masses], [forces], ...), parsed and checked now: polygons.loads
+    return replace(scene, loads=parse_loads(scene, lambda spec, where, **kw: answer_fields(
+        spec, r, where, default_tol, **kw)))
 
 
 def path_stem(file: str) -> str:

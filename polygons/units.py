@@ -28,6 +28,9 @@ SI_UNIT = {
     "stiffness": "N/m",
     "torsional_stiffness": "N m/rad",
     "time": "s",
+    "energy": "J",
+    "power": "W",
+    "angular_momentum": "kg m^2/s",
     "fraction": "",
 }
 
@@ -57,6 +60,8 @@ UNITS: dict[str, tuple[str, float]] = {
     "N/m": ("stiffness", 1.0), "N/mm": ("stiffness", 1e3),
     "N m/rad": ("torsional_stiffness", 1.0), "Nm/rad": ("torsional_stiffness", 1.0),
     "s": ("time", 1.0), "ms": ("time", 1e-3),
+    "J": ("energy", 1.0), "kJ": ("energy", 1e3), "W": ("power", 1.0), "kW": ("power", 1e3),
+    "kg m^2/s": ("angular_momentum", 1.0), "kg m²/s": ("angular_momentum", 1.0),
     "%": ("fraction", 0.01),
 }
 

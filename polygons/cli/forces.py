@@ -5,17 +5,20 @@ by :func:`to_dict` in its JSON) when the scene has masses or loads.
 """
 from __future__ import annotations
 
-import json
 import math
 import sys
+from pathlib import Path
 
 import numpy as np
 
 from ..errors import PolygonsError, SceneError
 from ..forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
-                     spring_state)
+                      spring_state)
+from ..forces import machine
+from ..forces.model import position, unit_r
 from ..report import json_text
 from ..scene import Crank, load_scene
+from ..theorems import perp
 
 
 def register(sub) -> None:
@@ -26,9 +29,31 @@ def register(sub) -> None:
                                    "table, or JSON with --json.")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
+    add_out_option(p)
     p.add_argument("--svg", metavar="DIR", help="also write a free-body diagram and a force "
                                                "polygon (SVG) per body and state to DIR")
     p.set_defaults(func=run)
+
+
+def add_out_option(p) -> None:
+    """``-o/--out FILE``: the table (or JSON) goes to FILE instead of standard output."""
+    p.add_argument("-o", "--out", metavar="FILE",
+                   help="write the table (or the JSON with --json) to FILE instead of standard "
+                        "output")
+
+
+def emit(text: str, out: str | None) -> None:
+    """Write ``text`` to standard output, or to the file ``out``."""
+    if not out:
+        sys.stdout.write(text)
+        return
+    path = Path(out)
+    if path.is_dir():
+        raise PolygonsError(f"{path} is a folder: -o takes a file name", where=str(path))
+    try:
+        path.write_text(text, encoding="utf-8")
+    except OSError as exc:
+        raise PolygonsError(f"cannot write {path} ({exc.strerror})", where=str(path)) from None
 
 
 def run(args) -> int:
@@ -44,7 +69,7 @@ def run(args) -> int:
     text = json_text(to_dict(an)) if args.json else forces_table(an)
     if paths and not args.json:
         text += f"\ndiagrams: {len(paths)} SVG files in {args.svg}\n"
-    sys.stdout.write(text)
+    emit(text, args.out)
     return 0
 
 
@@ -108,11 +133,11 @@ def _state_dict(an: Analysis, st: State) -> dict:
         out["input"] = {"newton_euler": ne.effort, "virtual_work": st.vw_effort,
                         "unit": _effort_unit(an), "sense": _sense(ne.effort),
                         "turning_moment": -ne.effort,
-                        "breakdown": [{"term": k, "value": v} for k, v in st.breakdown]}
+                        "breakdown": _shares(st)}
     else:
         out["alpha_in"] = ne.alpha
         out["virtual_work_residual"] = st.vw_effort
-        out["breakdown"] = [{"term": k, "value": v} for k, v in st.breakdown]
+        out["breakdown"] = _shares(st)
     out["inertia"] = [{"item": i.item, "body": i.body, "centre": _vec(i.centre),
                        "a_G": _vec(i.a), "m_a_G": _vec(i.ma),
                        "inertia_force": _vec(-i.ma), "I_G_alpha": i.i_alpha,
@@ -120,8 +145,9 @@ def _state_dict(an: Analysis, st: State) -> dict:
                       for i in st.inertia]
     pins = []
     for (lab, body), f in ne.pin.items():
-        pins.append({"pin": lab, "on": body, "force": _vec(f), "magnitude": float(np.hypot(*f)),
-                     "direction_deg": _deg(f)})
+        pins.append({"key": f"pin_{lab}_on_{body}", "pin": lab, "on": body, "force": _vec(f),
+                     "magnitude": float(np.hypot(*f)), "direction_deg": _deg(f),
+                     "components": _components(an, st, lab, body, f)})
     out["pins"] = pins
     out["ground"] = [{"pin": lab, "force_on_ground": _vec(f)} for lab, f in ne.ground.items()]
     out["slots"] = [{"pin": pin, "normal_force_on_lever": v, "normal": _vec(n)}
@@ -143,7 +169,71 @@ def _state_dict(an: Analysis, st: State) -> dict:
             out.setdefault("energy", {})[k] = float(st.extra[k])
     out["newton_euler_residual"] = ne.residual
     out["warnings"] = list(st.warnings)
-    out["unknowns"] = {name: float(x) for name, x in zip(ne.names, ne.values)}
+    out["unknowns"] = [{"key": k, "words": name, "value": float(x)}
+                       for k, name, x in zip(ne.keys, ne.names, ne.values)]
+    if model.parsed.flywheel is not None or model.parsed.efficiency is not None:
+        out["machine"] = _machine(an, st)
+    return out
+
+
+def _shares(st: State) -> list[dict]:
+    return [{"key": t.key, "words": t.words, "value": t.value} for t in st.breakdown]
+
+
+def _components(an: Analysis, st: State, lab: str, body: str, f) -> list[dict]:
+    """The pin force on ``body`` along and across it (a slider block: its guide); at the crank
+    pin, on the crank, also radial (outwards) and tangential (in the sense of rotation)."""
+    model, sol = an.model, st.sol
+    b = model.bodies[body]
+    f = np.asarray(f)
+    if b.kind == "link":
+        u = unit_r(sol, b)
+        out = [{"key": f"{body}_along", "words": f"component along {body} (from {b.a} to "
+                f"{b.b})", "value": float(f @ u)},
+               {"key": f"{body}_across", "words": f"component across {body} (90° CCW from "
+                f"{b.a}→{b.b})", "value": float(f @ perp(u))}]
+    else:
+        u = np.array(model.scene.sliders[body].direction)
+        out = [{"key": f"{body}_along_guide", "words": f"component along the guide of {body} "
+                f"(towards {_deg(u):.6g}°)", "value": float(f @ u)},
+               {"key": f"{body}_across_guide", "words": f"component across the guide of "
+                f"{body} (90° CCW of it)", "value": float(f @ perp(u))}]
+    drv = sol.scene.driver
+    if isinstance(drv, Crank) and body == drv.link and lab == drv.tip:
+        radial = position(sol, drv.tip) - position(sol, drv.pivot)
+        radial = radial / float(np.hypot(*radial))
+        w = sol.links[drv.link].omega or 0.0
+        tangential = perp(radial) * (1.0 if w >= 0 else -1.0)
+        out += [{"key": "crank_radial", "words": f"radial component at the crank pin {lab} "
+                 f"(along {drv.pivot}→{lab}, outwards)", "value": float(f @ radial)},
+                {"key": "crank_tangential", "words": f"tangential component at the crank pin "
+                 f"{lab} (in the sense of rotation, {_sense(w) or 'CCW'})",
+                 "value": float(f @ tangential)}]
+    return out
+
+
+def _machine(an: Analysis, st: State) -> list[dict]:
+    """The flywheel and efficiency results of one state, each with an identifier key."""
+    model = an.model
+    out = []
+
+    def add(key, words, value, unit):
+        out.append({"key": key, "words": words, "value": value, "unit": unit})
+    if model.parsed.flywheel is not None and model.mode == "kinetostatic":
+        fw = model.parsed.flywheel
+        add("turning_moment", "turning moment T on the crank, in the sense of rotation",
+            machine.turning_moment(st), "N m")
+        add("resisting_torque", "resisting torque T_R (= P/ω)" if fw.power is not None
+            else "resisting torque T_R (given)", machine.resisting_torque(model, st), "N m")
+        add("flywheel_inertia", f"flywheel I ({fw.how})", fw.inertia, "kg m^2")
+        add("flywheel_alpha", "flywheel angular acceleration (T − T_R)/I (positive: speeding "
+            "up)", machine.flywheel_alpha(model, st), "rad/s^2")
+    eff = model.parsed.efficiency
+    if eff is not None:
+        add("efficiency", "efficiency η", eff.eta, "-")
+        if model.mode == "kinetostatic":
+            add("input_with_efficiency", "input effort with the losses (T_in/η when driving)",
+                machine.input_with_efficiency(model, st), _effort_unit(an))
     return out
 
 
@@ -251,7 +341,16 @@ def forces_table(an: Analysis, header: bool = True) -> str:
                          f"t = {c['time_s']:.6g} s), relative difference "
                          f"{c['relative_difference']:.2e}")
     checks = check_force_answers(an)
-    if checks:
+    if checks and all(c.answer.tutorial is None for c in checks):
+        lines.append("")        # no printed values: the exact ones (a synthetic case)
+        lines.append(f"{'force answer':<40} {'unit':<9} {'polygons':>12} {'exact':>12} "
+                     f"{'rel. diff':>9}")
+        for c in checks:
+            a = c.answer
+            rel = f"{c.exact_rel:>9.1e}" if c.exact_rel is not None else f"{'-':>9}"
+            lines.append(f"{(a.desc + (f' [{a.state}]' if a.state else ''))[:40]:<40} "
+                         f"{a.unit:<9} {_g(c.compared):>12} {_g(a.exact):>12} {rel}")
+    elif checks:
         lines.append("")
         lines.append(f"{'force answer':<40} {'unit':<9} {'polygons':>12} {'tutorial':>10} "
                      f"{'diff %':>8}  note")
@@ -306,8 +405,8 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
                    f"{_sense(a)}; virtual-work check: extra input needed "
                    f"{st.vw_effort:.2e} {unit}")
         out.append(f"  virtual-work breakdown ({unit} each term asks of the input; sum 0):")
-    for k, v in st.breakdown:
-        out.append(f"    {k:<44} {v:>14.8g}")
+    for t in st.breakdown:
+        out.append(f"    {t.words:<44} {t.value:>14.8g}")
     if st.inertia:
         out.append(f"  {'inertia of':<10} {'|a_G| m/s²':>12} {'dir°':>8} {'−m a_G N':>12} "
                    f"{'dir°':>8} {'−I_G α N m':>12}")
@@ -334,6 +433,8 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     for lab, link, n, s, m in _sections(an, st):
         out.append(f"  section {lab} of {link} (on the part from {model.bodies[link].a}): "
                    f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = {m:.6g} N m (CCW)")
+    for m in (_machine(an, st) if (model.parsed.flywheel or model.parsed.efficiency) else ()):
+        out.append(f"  {m['words']}: {m['value']:.8g} {m['unit']}")
     out.append(f"  equations: {ne.equations}, residual {ne.residual:.1e}")
     for w in st.warnings:
         out.append(f"  warning: {w}")

@@ -1,9 +1,7 @@
 """``polygons solve CASE.toml``: the numbers, the construction and the conditioning."""
 from __future__ import annotations
 
-import sys
-
-from .forces import forces_table, to_dict
+from .forces import add_out_option, emit, forces_table, to_dict
 from ..evaluate import solve
 from ..forces import analyse, has_forces
 from ..report import json_text, table, to_json
@@ -16,6 +14,7 @@ def register(sub) -> None:
                                    "(or JSON with --json).")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
+    add_out_option(p)
     p.add_argument("--points", help="comma-separated labels: plan only what these need")
     p.add_argument("--no-steps", action="store_true", help="leave the construction out of "
                                                           "the table")
@@ -40,9 +39,10 @@ def run(args) -> int:
         data = to_json(sol)
         if forces is not None:
             data["forces"] = to_dict(forces)
-        sys.stdout.write(json_text(data))
+        text = json_text(data)
     else:
-        sys.stdout.write(table(sol, steps=not args.no_steps))
+        text = table(sol, steps=not args.no_steps)
         if forces is not None:
-            sys.stdout.write("\n" + forces_table(forces, header=False))
+            text += "\n" + forces_table(forces, header=False)
+    emit(text, args.out)
     return 0

@@ -2,9 +2,9 @@
 "release"``): its state at the release and after each rotation in ``after``.
 
 The crank driver's angle is the coordinate θ.  At any (θ, ω) the angular acceleration comes
-from the torque-driven Newton–Euler solve of :mod:`polygons.forces` (two kinematic solutions,
-α = 0 and α = 1, the acceleration polygon being affine in α), so the same code serves every
-mechanism the kinematics can draw.  The state after a rotation is found twice:
+from the torque-driven Newton–Euler solve (:mod:`polygons.forces.newton_euler`: two kinematic
+solutions, α = 0 and α = 1, the acceleration polygon being affine in α), so the same code
+serves every mechanism the kinematics can draw.  The state after a rotation is found twice:
 
 * energy:  T(θ) + V(θ) = T₀ + V₀ + W_nc, with T = ½ ω² Σ(m v*_G² + I_G ω*²) from the velocity
   polygon of a unit input rate, V from gravity and the springs, and W_nc the work of the applied
@@ -21,12 +21,13 @@ import math
 
 import numpy as np
 
-from .errors import UnsupportedError
-from .evaluate import Solution, solve
-from .forces import (Analysis, ForceModel, _pos, _rel_angle, _wrap, body_angle, body_omega,
-                     centre, driver_state, image, newton_euler, spring_state, torque_driven,
-                     virtual_solution)
-from .scene import Crank, Scene
+from ..errors import UnsupportedError
+from ..evaluate import Solution, solve
+from ..scene import Crank, Scene
+from .model import (ForceModel, body_angle, body_omega, centre, image, position as _pos,
+                    rel_angle as _rel_angle, spring_state, wrap as _wrap)
+from .newton_euler import newton_euler
+from .states import Analysis, driver_state, torque_driven, virtual_solution
 
 
 def kinetic_per_unit_rate(model: ForceModel, vsol: Solution) -> float:

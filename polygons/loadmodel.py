@@ -1,0 +1,179 @@
+"""The frozen records of a scene's force tables (built by :mod:`polygons.loads`), all SI."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+Vec = tuple[float, float]
+
+
+@dataclass(frozen=True)
+class Body:
+    """A moving rigid body: a link (or slotted lever) with frame ``a`` → ``b``, or the block of a
+    slider point (``b`` None, translating along its guide)."""
+    name: str
+    kind: str                   # 'link' | 'block'
+    a: str
+    b: str | None
+    labels: tuple[str, ...]
+    length: float | None        # stated length of a link
+
+
+@dataclass(frozen=True)
+class Joint:
+    """A pin at ``label`` joining ``members`` (bodies), and the ground when ``ground``."""
+    label: str
+    members: tuple[str, ...]
+    ground: bool
+
+
+@dataclass(frozen=True)
+class SlotContact:
+    pin: str            # the pin label (on ``carrier``)
+    lever: str          # the slotted body (a lever, or a Scotch yoke's slider block)
+    pivot: str | None   # the lever's pivot (the slot runs through it); None for a yoke
+    carrier: str
+    direction: Vec | None = None   # a yoke's slot keeps this direction
+
+
+@dataclass(frozen=True)
+class MassItem:
+    name: str
+    body: str
+    kind: str                   # 'link' | 'block' | 'point'
+    mass: float
+    inertia: float              # about its own centre of mass
+    how: str                    # how the inertia was obtained, in words
+    along: float | None = None  # link items: centre along a → b
+    left: float = 0.0
+    at: str | None = None       # point items
+    rod: bool = False           # uniform slender rod between the link's ends
+    free: bool = False          # turns freely on a frictionless pin: no rotational coupling
+    spin: float | None = None   # free disc: its constant spin (rad/s)
+
+
+@dataclass(frozen=True)
+class AppliedForce:
+    name: str
+    body: str
+    at: str
+    force: Vec
+    how: str
+
+
+@dataclass(frozen=True)
+class AppliedTorque:
+    name: str
+    body: str
+    at: str | None
+    torque: float               # CCW positive
+
+
+@dataclass(frozen=True)
+class Friction:
+    name: str
+    at: str
+    first: str
+    second: str | None          # None: the ground
+    torque: float               # magnitude
+
+
+@dataclass(frozen=True)
+class Spring:
+    name: str
+    kind: str                   # 'linear' | 'directional' | 'torsional'
+    stiffness: float
+    ends: tuple = ()            # linear: ((label, body|None), (label, body|None))
+    free_length: float | None = None
+    extension: float | None = None   # at the scene's instant (linear / directional)
+    at: str | None = None
+    body: str | None = None          # directional: the body carrying ``at``
+    direction: Vec | None = None     # directional: from ``at`` towards the far end
+    first: str | None = None         # torsional
+    second: str | None = None
+    twist: float = 0.0               # torsional: at the scene's instant, CCW of first rel. second
+
+
+@dataclass(frozen=True)
+class ForceAnswer:
+    quantity: str
+    unit: str
+    tutorial: float | None
+    exact: float | None
+    mode: str
+    positive: int               # +1 CCW, -1 CW: sense of positive normal components / moments
+    state: str | None
+    tolerance: float
+    slip: bool
+    ref: str | None
+    desc: str
+    note: str
+    sense: str | None
+
+
+@dataclass(frozen=True)
+class Flywheel:
+    """A flywheel on the crank shaft: I = m k² (or given) and the resisting torque T_R (given,
+    or from the power taken off, T_R = P/ω)."""
+    inertia: float
+    how: str
+    resisting_torque: float | None
+    power: float | None
+
+
+@dataclass(frozen=True)
+class Efficiency:
+    """The mechanism's efficiency η and, optionally, the effort applied at the driver."""
+    eta: float
+    input_effort: float | None        # N m for a crank driver, N for a slider driver
+
+
+@dataclass(frozen=True)
+class Loads:
+    """Everything the force tables say, in SI, checked against the scene's topology."""
+    file: str
+    bodies: Mapping[str, Body]
+    members: Mapping[str, tuple[str, ...]]      # label -> bodies carrying it
+    joints: tuple[Joint, ...]
+    slots: tuple[SlotContact, ...]
+    guides: tuple[str, ...]
+    masses: tuple[MassItem, ...]
+    forces: tuple[AppliedForce, ...]
+    torques: tuple[AppliedTorque, ...]
+    frictions: tuple[Friction, ...]
+    springs: tuple[Spring, ...]
+    gravity: Vec
+    mode: str
+    after: tuple[float, ...]
+    steps: int
+    answers: tuple[ForceAnswer, ...]
+    driver_body: str
+    active: bool                # the scene has masses, forces, torques or springs
+    flywheel: Flywheel | None = None
+    efficiency: Efficiency | None = None
+
+    def items_of(self, body: str) -> list[MassItem]:
+        return [m for m in self.masses if m.body == body]
+
+
+def bodies_of(scene) -> dict[str, Body]:
+    """The moving bodies of a scene: its links, its slotted levers, its slider blocks."""
+    bodies: dict[str, Body] = {}
+    levers = {s.lever: s for s in scene.slots.values()}
+    for name, link in scene.links.items():
+        labels = [link.a, link.b]
+        if name in levers:
+            labels.append(levers[name].coincident)
+        labels += [p for p, bp in scene.points.items() if bp.link == name]
+        bodies[name] = Body(name, "link", link.a, link.b, tuple(dict.fromkeys(labels)),
+                            link.length)
+    for name, slot in levers.items():
+        if name in bodies:
+            continue
+        labels = [slot.pivot, slot.coincident]
+        labels += [p for p, bp in scene.points.items() if bp.link == name]
+        bodies[name] = Body(name, "link", slot.pivot, slot.coincident,
+                            tuple(dict.fromkeys(labels)), None)
+    for label in scene.sliders:
+        bodies[label] = Body(label, "block", label, None, (label,), None)
+    return bodies
