@@ -35,13 +35,18 @@ def run(args) -> int:
     if args.svg:
         from .draw import write_diagrams
         write_diagrams(sol, args, args.svg)
+    from .. import pins
     if args.json:
         data = to_json(sol)
+        if pins.has_pins(scene):
+            data["pins"] = pins.to_dict(sol)
         if forces is not None:
             data["forces"] = to_dict(forces)
         text = json_text(data)
     else:
         text = table(sol, steps=not args.no_steps)
+        if pins.has_pins(scene):
+            text += "\n" + "\n".join(pins.report_lines(sol)) + "\n"
         if forces is not None:
             text += "\n" + forces_table(forces, header=False)
     emit(text, args.out)
