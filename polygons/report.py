@@ -8,6 +8,7 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from . import geometry
+from .errors import PolygonsError
 from .evaluate import Solution
 from .quantities import quantity
 from .scene import Answer
@@ -32,8 +33,11 @@ def to_unit(value: float, unit: str) -> float:
 
 def check_answers(sol: Solution) -> list[AnswerCheck]:
     out = []
-    for ans in sol.scene.answers:
-        ours = to_unit(quantity(sol, ans.quantity), ans.unit)
+    for i, ans in enumerate(sol.scene.answers):
+        try:
+            ours = to_unit(quantity(sol, ans.quantity), ans.unit)
+        except PolygonsError as exc:
+            raise exc.located(file=sol.scene.file, where=f"answers[{i}].quantity") from None
         compared = abs(ours) if ans.mode == "abs" else ours
         diff = within = rel = None
         if ans.tutorial is not None:
