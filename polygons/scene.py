@@ -42,6 +42,7 @@ from typing import Any, Mapping
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownKeyError, UnknownLabelError, UnitError, show, suggest)
 from .options import Options, parse_options
+from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS
 from .units import UNITS, dimension_of, parse_quantity
 
 Vec = tuple[float, float]
@@ -49,8 +50,6 @@ Vec = tuple[float, float]
 _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
 _LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
 
-TOP_KEYS = ("title", "source", "ground", "links", "driver", "sliders", "slots", "points",
-            "assembly", "answers", "solve", "drawn")
 #: option tables, read and checked at load by :mod:`polygons.options` (``Scene.options``)
 OPTION_KEYS = ("sweep", "diagram", "handout")
 #: tables read by extension modules (forces, loads, pins); stored raw in ``Scene.extra`` and
@@ -351,7 +350,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     options = parse_options(data, file)
     title = r.string(data.get("title", path_stem(file)), "title")
     source = data.get("source", {})
-    r.table(source, "source", SOURCE_TEXT + ("synthetic", "drawing_tolerance"))
+    r.table(source, "source", KEYS["source"])
     for key in SOURCE_TEXT:
         if key in source:
             r.string(source[key], f"source.{key}")
@@ -402,7 +401,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     for pin, spec in r.named(data.get("slots", {}), "slots").items():
         where = f"slots.{pin}"
         r.label(pin, where)
-        r.table(spec, where, ("lever", "coincident"), required=("lever",))
+        r.table(spec, where, KEYS["slots"], required=("lever",))
         lever = r.string(spec["lever"], where + ".lever")
         pivot, other = split_link_name(lever, file=file, where=where + ".lever")
         if pivot not in ground:
@@ -429,7 +428,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     for label, spec in r.named(data.get("points", {}), "points").items():
         where = f"points.{label}"
         r.label(label, where)
-        r.table(spec, where, ("on", "along", "fraction", "left"), required=("on",))
+        r.table(spec, where, KEYS["points"], required=("on",))
         on = r.string(spec["on"], where + ".on")
         split_link_name(on, file=file, where=where + ".on")
         if on not in links and not any(s.lever == on for s in slots.values()):
@@ -466,7 +465,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     sliders: dict[str, Guide] = {}
     for label, spec in r.named(data.get("sliders", {}), "sliders").items():
         where = f"sliders.{label}"
-        r.table(spec, where, ("through", "direction", "pin", "slot"),
+        r.table(spec, where, KEYS["sliders"],
                 required=("through", "direction"))
         through = r.vec(spec["through"], where + ".through")
         angle = r.quantity(spec["direction"], "angle", where + ".direction", reduce=True)
@@ -491,8 +490,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     # driver
     drv = data["driver"]
-    r.table(drv, "driver", ("crank", "slider", "angle", "omega", "sense", "alpha",
-                            "alpha_sense", "position", "velocity", "acceleration"))
+    r.table(drv, "driver", KEYS["driver"])
     if ("crank" in drv) == ("slider" in drv):
         raise SceneError("the driver is either a crank (crank = \"OA\") or a slider "
                          "(slider = \"C\"): give exactly one", file=file, where="driver")
@@ -628,7 +626,7 @@ def path_stem(file: str) -> str:
     return Path(file).stem
 
 
-_RELATIONS = ("above", "below", "left of", "right of")
+_RELATIONS = RELATIONS
 
 
 def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
@@ -662,8 +660,6 @@ def drawing_tolerance(source, r: _Reader) -> float:
     return 0.03
 
 
-ANSWER_KEYS = ("quantity", "unit", "tutorial", "exact", "mode", "sense", "tolerance", "slip",
-               "ref", "desc", "note")
 
 
 def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,

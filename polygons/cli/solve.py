@@ -17,6 +17,9 @@ def register(sub) -> None:
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
     p.add_argument("--points", help="comma-separated labels: plan only what these need")
+    p.add_argument("--units", choices=("mm", "si", "imperial"), default="mm",
+                   help="units of the table: mm (positions in mm, speeds in m/s; default), "
+                        "si (m, m/s, m/s²) or imperial (in, ft/s, ft/s²); JSON is always SI")
     p.add_argument("--no-steps", action="store_true", help="leave the construction out of "
                                                           "the table")
     p.add_argument("--svg", metavar="DIR", help="also write the labelled SVG diagrams (as "
@@ -42,7 +45,7 @@ def run(args) -> int:
             data["forces"] = to_dict(forces)
         sys.stdout.write(json_text(data))
     else:
-        sys.stdout.write(table(sol, steps=not args.no_steps))
+        sys.stdout.write(table(sol, steps=not args.no_steps, units=args.units))
         if forces is not None:
             sys.stdout.write("\n" + forces_table(forces, header=False))
     return 0
