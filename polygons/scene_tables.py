@@ -1,7 +1,7 @@
 """The tables and keys :mod:`polygons.scene` reads, as data (:class:`~polygons.schema.Table`).
 
 The loader takes its lists of allowed keys from here, and ``docs/scene-reference.md`` and
-``polygons/scene.schema.json`` are generated from here (``python -m polygons.schema``), so
+``polygons/scene.schema.json`` are generated from here (``python -m polygons.reference``), so
 the three cannot drift apart.  A key named ``<LABEL>`` / ``<LINK>`` stands for any point label
 or link name (the entries of ``[ground]``, ``[links]`` ...).
 

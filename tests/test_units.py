@@ -14,7 +14,7 @@ import pytest
 import analytic
 from conftest import CASES, ROOT, case_files
 
-from polygons import schema
+from polygons import reference as schema
 from polygons.errors import UnitError
 from polygons.evaluate import solve
 from polygons.report import check_answers, table
@@ -123,12 +123,12 @@ def test_solve_units_flag_through_the_cli(capsys):
 # ------------------------------------------------------------------ reference and schema
 def test_generated_reference_and_schema_are_up_to_date():
     """docs/scene-reference.md and polygons/scene.schema.json are what the tables generate
-    (run `python -m polygons.schema` after changing a table)."""
+    (run `python -m polygons.reference` after changing a table)."""
     for rel, text in schema.generated().items():
         path = ROOT / rel
-        assert path.exists(), f"{rel} missing: run python -m polygons.schema"
+        assert path.exists(), f"{rel} missing: run python -m polygons.reference"
         assert path.read_text(encoding="utf-8") == text, f"{rel} is stale: run python -m " \
-                                                         f"polygons.schema"
+                                                         f"polygons.reference"
 
 
 def _documented() -> dict[str, set[str]]:
