@@ -55,6 +55,15 @@ def _type_words(k: Key) -> str:
             "integer": "integer", "string": "text"}.get(k.type, k.type)
 
 
+_EXAMPLE_NAME = {"<LABEL>": "C", "<LINK>": "AB"}
+
+
+def _toml(value) -> str:
+    """A default as it is written in a scene: true, "3 %", ["velocity", "acceleration"]."""
+    import json
+    return json.dumps(value, ensure_ascii=False)
+
+
 def markdown(entries: list[tuple[str, Table]]) -> str:
     """The scene-file reference (``docs/scene-reference.md``)."""
     from .units import SI_UNIT, UNITS
@@ -101,11 +110,11 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
                   "|---|---|---|---|---|---|"]
         for k in t.keys:
             name = f"`{k.name}`" + (" (required)" if k.required else "")
-            default = "" if k.default is None else f"`{k.default}`"
+            default = "" if k.default is None else f"`{_toml(k.default)}`"
             doc = k.doc.replace("|", "\\|")
             ex = k.example.replace("|", "\\|")
             lines.append(f"| {name} | {_type_words(k)} | {default} | {k.sign} | "
-                         f"`{k.name if not k.name.startswith('<') else 'X'} = {ex}` | {doc} |")
+                         f"`{_EXAMPLE_NAME.get(k.name, k.name)} = {ex}` | {doc} |")
         lines.append("")
     lines += ["## Units", "", "Accepted spellings by dimension (SI unit inside in brackets):",
               ""]

@@ -39,7 +39,7 @@ N_MUTANTS = int(os.environ.get("POLYGONS_FUZZ", "1000"))
 ONLY = os.environ.get("POLYGONS_FUZZ_ONLY")
 SEED = 20261123
 #: fraction of mutants also run through the slow commands (draw, handout, sweep, check)
-SLOW_FRACTION = 0.02
+SLOW_FRACTION = float(os.environ.get("POLYGONS_FUZZ_SLOW", "0.02"))
 
 CASE_TEXTS = {p.name: p.read_bytes() for p in case_files()}
 UNIT_WORDS = ["mm", "m", "deg", "rad", "rad/s", "rev/min", "rad/s^2", "m/s", "m/s^2", "kg",
