@@ -206,10 +206,19 @@ def m_at_rest(rng, text):
          '"0 m/s"', '"1e-12 m/s"', '"0.000001 mm"', '"1e5 m"']))
 
 
-TEXT_MUTATORS = [m_delete_line, m_duplicate_key, m_swap_unit, m_drop_unit, m_bad_number,
+def m_title(rng, text):
+    """A title (shown in every report, plot and page) in other scripts, or holding markup."""
+    title = rng.choice(["日本語の機構", "Ω ω α ∠ ⟂ ✓", "<script>alert(1)</script>", "\u202e RTL",
+                        "A\tB", "emoji 🛠", "x" * 5000, ""])
+    new, n = re.subn(r'(?m)^title = .*$', lambda m: f"title = {json.dumps(title)}", text,
+                     count=1)
+    return new if n else f"title = {json.dumps(title)}\n" + text
+
+
+TEXT_MUTATORS = [m_title, m_delete_line, m_duplicate_key, m_swap_unit, m_drop_unit, m_bad_number,
                  m_bare_number, m_label, m_unknown_name, m_wrong_type, m_long_string, m_deep,
                  m_at_rest]
-WEIGHTS = [2, 1, 3, 2, 4, 2, 2, 2, 3, 1, 1, 4]
+WEIGHTS = [1, 2, 1, 3, 2, 4, 2, 2, 2, 3, 1, 1, 4]
 BYTE_MUTATORS = [m_truncate, m_junk]
 
 
