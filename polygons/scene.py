@@ -333,6 +333,9 @@ def parse_toml(text: str, file: str) -> dict:
     except RecursionError:
         raise SceneSyntaxError("not a scene: arrays or tables are nested too deeply",
                                file=file) from None
+    except ValueError as exc:         # e.g. an integer of more than 4300 digits
+        raise SceneSyntaxError(f"not valid TOML: {' '.join(str(exc).split())[:120]}",
+                               file=file) from None
 
 
 def load_scene(path: str | Path) -> Scene:
