@@ -92,16 +92,16 @@ class UnsupportedError(PolygonsError):
     """The scene describes something the solver cannot express yet."""
 
 
-#: a quoted value longer than this many characters is cut in a message, and a whole reason
-#: longer than MAX_REASON (a safety net for messages built without :func:`show`)
+#: a run of more than MAX_VALUE characters without a space (a long value quoted in a message)
+#: is cut, and a whole reason longer than MAX_REASON: a safety net for messages built without
+#: :func:`show`, so that an error stays one readable line
 MAX_VALUE, MAX_REASON = 60, 600
-_QUOTED_LONG = re.compile(r"""(['"])([^'"]{%d,})\1""" % (MAX_VALUE + 1))
+_LONG_RUN = re.compile(r"\S{%d,}" % (MAX_VALUE + 1))
 
 
 def _cut_long(reason: str) -> str:
-    """Cut every quoted value over :data:`MAX_VALUE` characters, then the whole reason."""
-    reason = _QUOTED_LONG.sub(lambda m: m.group(1) + m.group(2)[:MAX_VALUE - 2] + "…"
-                              + m.group(1), reason)
+    """Cut every run of over :data:`MAX_VALUE` non-space characters, then the whole reason."""
+    reason = _LONG_RUN.sub(lambda m: m.group(0)[:MAX_VALUE - 1] + "…", reason)
     return reason if len(reason) <= MAX_REASON else reason[:MAX_REASON - 1] + "…"
 
 

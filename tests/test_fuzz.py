@@ -210,9 +210,9 @@ def m_title(rng, text):
     """A title (shown in every report, plot and page) in other scripts, or holding markup."""
     title = rng.choice(["日本語の機構", "Ω ω α ∠ ⟂ ✓", "<script>alert(1)</script>", "\u202e RTL",
                         "A\tB", "emoji 🛠", "x" * 5000, ""])
-    new, n = re.subn(r'(?m)^title = .*$', lambda m: f"title = {json.dumps(title)}", text,
-                     count=1)
-    return new if n else f"title = {json.dumps(title)}\n" + text
+    line = f"title = {json.dumps(title, ensure_ascii=False)}"
+    new, n = re.subn(r"(?m)^title = .*$", lambda m: line, text, count=1)
+    return new if n else line + "\n" + text
 
 
 TEXT_MUTATORS = [m_title, m_delete_line, m_duplicate_key, m_swap_unit, m_drop_unit, m_bad_number,
