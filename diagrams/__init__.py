@@ -24,7 +24,7 @@ def options(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = 
             stages: bool | None = None) -> dict:
     """Scene ``[diagram]`` options overridden by the caller's (the command line's)."""
     from .scale import options_from_scene
-    opts = options_from_scene(sol.scene.extra, sol.scene.file)
+    opts = options_from_scene(sol.scene)
     merged = dict(opts.get("scales", {}))
     merged.update(scales or {})
     return {"scales": merged, "paper": paper or opts.get("paper"),

@@ -8,9 +8,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping
 
-from polygons.errors import PolygonsError, SceneError, UnknownKeyError, suggest
+from polygons.errors import PolygonsError, SceneError, suggest
 from polygons.units import UNITS, parse_quantity
 
 from .text import plain
@@ -166,35 +165,15 @@ def check_size(scale: Scale, extent: tuple[float, float], kind: str) -> None:
                          f"(automatic: leave --scale out)")
 
 
-DIAGRAM_KEYS = ("space_scale", "velocity_scale", "acceleration_scale", "paper", "stages")
-
-
-def options_from_scene(extra: Mapping, file: str | None) -> dict:
-    """Validate the scene's optional ``[diagram]`` table: forced scales, paper, stages."""
-    table = extra.get("diagram")
-    if table is None:
-        return {}
-    if not isinstance(table, dict):
-        raise SceneError("[diagram] must be a table", file=file, where="diagram")
-    out: dict = {"scales": {}}
-    for key, value in table.items():
-        if key not in DIAGRAM_KEYS:
-            raise UnknownKeyError(f"unknown key {key!r}: {suggest(key, DIAGRAM_KEYS)}",
-                                  file=file, where=f"diagram.{key}")
-        if key.endswith("_scale"):
-            kind = key[:-len("_scale")]
-            out["scales"][kind] = parse(value, QUANTITY_OF[kind], file=file,
-                                        where=f"diagram.{key}")
-        elif key == "paper":
-            if value not in PAPER:
-                raise SceneError(f"paper must be one of {', '.join(PAPER)}, got {value!r}",
-                                 file=file, where="diagram.paper")
-            out["paper"] = value
-        elif key == "stages":
-            if not isinstance(value, bool):
-                raise SceneError(f"stages must be true or false, got {value!r}", file=file,
-                                 where="diagram.stages")
-            out["stages"] = value
+def options_from_scene(scene) -> dict:
+    """The scene's ``[diagram]`` options (checked at load by :mod:`polygons.options`)."""
+    d = scene.options.diagram
+    out: dict = {"scales": {kind: make(QUANTITY_OF[kind], per_cm, forced=True)
+                            for kind, per_cm in d.scales.items()}}
+    if d.paper is not None:
+        out["paper"] = d.paper
+    if d.stages is not None:
+        out["stages"] = d.stages
     return out
 
 

@@ -19,6 +19,7 @@ this package lets a bare traceback reach the user for a bad scene.
 from __future__ import annotations
 
 import difflib
+import re
 
 
 class PolygonsError(Exception):
@@ -33,6 +34,7 @@ class PolygonsError(Exception):
         super().__init__(self._format())
 
     def _format(self) -> str:
+        self.reason = _cut_long(str(self.reason))
         head = []
         if self.file:
             head.append(str(self.file))
@@ -90,12 +92,35 @@ class UnsupportedError(PolygonsError):
     """The scene describes something the solver cannot express yet."""
 
 
+#: a run of more than MAX_VALUE characters without a space (a long value quoted in a message)
+#: is cut, and a whole reason longer than MAX_REASON: a safety net for messages built without
+#: :func:`show`, so that an error stays one readable line
+MAX_VALUE, MAX_REASON = 60, 600
+_LONG_RUN = re.compile(r"\S{%d,}" % (MAX_VALUE + 1))
+
+
+def _cut_long(reason: str) -> str:
+    """Cut every run of over :data:`MAX_VALUE` non-space characters, then the whole reason."""
+    reason = _LONG_RUN.sub(lambda m: m.group(0)[:MAX_VALUE - 1] + "…", reason)
+    return reason if len(reason) <= MAX_REASON else reason[:MAX_REASON - 1] + "…"
+
+
+def show(value, limit: int = MAX_VALUE) -> str:
+    """``repr(value)`` cut to ``limit`` characters, so a message stays one short line."""
+    try:
+        text = repr(value)
+    except RecursionError:         # a value nested thousands deep
+        text = f"<{type(value).__name__} nested too deeply to show>"
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
 def suggest(name: str, options) -> str:
     """' (did you mean 'x'?)' if a close match exists, else the list of options."""
-    options = sorted(options)
-    close = difflib.get_close_matches(name, options, n=1)
+    options = sorted(str(o) for o in options)
+    close = difflib.get_close_matches(str(name)[:200], options, n=1)
     if close:
-        return f"did you mean '{close[0]}'?"
+        return f"did you mean {show(close[0])}?"
     if not options:
         return "none are defined"
-    return "expected one of: " + ", ".join(repr(o) for o in options)
+    listed = ", ".join(show(o) for o in options[:12])
+    return "expected one of: " + listed + (", ..." if len(options) > 12 else "")

@@ -23,15 +23,9 @@ import re
 
 import numpy as np
 
-from .errors import SceneError, UnknownLabelError, suggest
+from .errors import SceneError, UnknownLabelError, show, suggest
 from .evaluate import Solution, link_ends
-
-_CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
-                   r"(?:,\s*([^,()\s]+)\s*)?\)\s*$")
-
-FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x", "y",
-             "dir_v", "dir_a", "angle", "arm")
-
+from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse
 
 def dimension_of_quantity(expr: str) -> str:
     fn = _parse(expr)[0]
@@ -39,23 +33,6 @@ def dimension_of_quantity(expr: str) -> str:
             "omega": "angular_velocity", "alpha": "angular_acceleration", "cor": "acceleration",
             "dist": "length", "x": "length", "y": "length", "dir_v": "angle",
             "dir_a": "angle", "angle": "angle", "arm": "length"}.get(fn, "velocity" if fn == "vs" else "acceleration")
-
-
-def _parse(expr: str):
-    m = _CALL.match(expr)
-    if not m or m.group(1) not in FUNCTIONS:
-        raise SceneError(f"cannot read quantity {expr!r}: write e.g. 'v(C)', 'v(C,B)', "
-                         f"'omega(BC)', 'alpha(CD)', 'an(C,B)', 'at(C,B)', 'vs(C)', 'cor(A)' "
-                         f"(functions: {', '.join(FUNCTIONS)})")
-    fn, args = m.group(1), tuple(g for g in m.groups()[1:] if g is not None)
-    counts = _ARITY.get(fn, (1,))
-    if len(args) not in counts:
-        raise SceneError(f"{fn}() takes {' or '.join(map(str, counts))} labels, got {expr!r}")
-    return fn, args
-
-
-_ARITY = {"angle": (3,), "arm": (3,), "v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,),
-          "dist": (2,)}
 
 
 def quantity(sol: Solution, expr: str) -> float:
@@ -66,7 +43,7 @@ def quantity(sol: Solution, expr: str) -> float:
 
     def point(label):
         if label not in sol.points:
-            raise UnknownLabelError(f"unknown point {label!r} in {expr!r}: "
+            raise UnknownLabelError(f"unknown point {show(label)} in {show(expr)}: "
                                     f"{suggest(label, sol.points)}", file=scene.file)
         return sol.points[label]
 

@@ -8,10 +8,11 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from . import geometry
+from .errors import PolygonsError
 from .evaluate import Solution
 from .quantities import quantity
 from .scene import Answer
-from .units import UNITS
+from .units import SYSTEMS, UNITS
 
 
 @dataclass(frozen=True)
@@ -32,8 +33,11 @@ def to_unit(value: float, unit: str) -> float:
 
 def check_answers(sol: Solution) -> list[AnswerCheck]:
     out = []
-    for ans in sol.scene.answers:
-        ours = to_unit(quantity(sol, ans.quantity), ans.unit)
+    for i, ans in enumerate(sol.scene.answers):
+        try:
+            ours = to_unit(quantity(sol, ans.quantity), ans.unit)
+        except PolygonsError as exc:
+            raise exc.located(file=sol.scene.file, where=f"answers[{i}].quantity") from None
         compared = abs(ours) if ans.mode == "abs" else ours
         diff = within = rel = None
         if ans.tutorial is not None:
@@ -154,7 +158,16 @@ def _g(x, digits=5) -> str:
     return f"{x:.{digits}g}"
 
 
-def table(sol: Solution, *, steps: bool = True) -> str:
+def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
+    """The results table; ``units`` picks the unit system of the columns (:data:`SYSTEMS`:
+    'mm' -- positions in mm, speeds in m/s, the default; 'si'; 'imperial' -- in, ft/s, ft/s²).
+    The construction steps keep the numbers they were drawn with (SI)."""
+    if units not in SYSTEMS:
+        raise PolygonsError(f"unknown unit system {units!r}: choose one of "
+                            f"{', '.join(SYSTEMS)}")
+    sysu = SYSTEMS[units]
+    lu, vu, au = sysu["length"], sysu["velocity"], sysu["acceleration"]
+    lf, vf, af = (1.0 / UNITS[u][1] for u in (lu, vu, au))
     scene = sol.scene
     lines = [f"{scene.title}", f"  scene: {scene.file}"
              + (f"   [{scene.source['id']}]" if scene.source.get("id") else "")]
@@ -163,32 +176,32 @@ def table(sol: Solution, *, steps: bool = True) -> str:
     for p, why in sol.placement.branches:
         lines.append(f"  assembly: {why}")
     lines.append("")
-    lines.append(f"{'point':<6} {'x mm':>10} {'y mm':>10}   {'|v| m/s':>11} {'dir°':>7}"
-                 f"   {'|a| m/s²':>11} {'dir°':>7}")
+    lines.append(f"{'point':<6} {'x ' + lu:>10} {'y ' + lu:>10}   {'|v| ' + vu:>11} "
+                 f"{'dir°':>7}   {'|a| ' + au:>11} {'dir°':>7}")
     for label, pr in sol.points.items():
-        row = f"{label:<6} {1e3 * pr.position[0]:>10.4f} {1e3 * pr.position[1]:>10.4f}"
-        for vec in (pr.velocity, pr.acceleration):
+        row = f"{label:<6} {lf * pr.position[0]:>10.4f} {lf * pr.position[1]:>10.4f}"
+        for vec, f in ((pr.velocity, vf), (pr.acceleration, af)):
             if vec is None:
                 row += f"   {'':>11} {'':>7}"
             else:
-                m = _mag(vec)
+                m = _mag(vec) * f
                 row += f"   {_g(m, 6):>11} {(f'{_deg(vec):.2f}' if m else '-'):>7}"
         lines.append(row)
     lines.append("")
-    lines.append(f"{'link':<8} {'length mm':>10}   {'ω rad/s':>12}      {'α rad/s²':>12}")
+    lines.append(f"{'link':<8} {'length ' + lu:>10}   {'ω rad/s':>12}      {'α rad/s²':>12}")
     for name, lr in sol.links.items():
-        lines.append(f"{name:<8} {1e3 * lr.length:>10.4f}   {_g(abs(lr.omega) if lr.omega is not None else None, 6):>12} "
+        lines.append(f"{name:<8} {lf * lr.length:>10.4f}   {_g(abs(lr.omega) if lr.omega is not None else None, 6):>12} "
                      f"{sense(lr.omega):<4} {_g(abs(lr.alpha) if lr.alpha is not None else None, 6):>12} "
                      f"{sense(lr.alpha)}")
     if sol.slides:
         lines.append("")
         for label, sr in sol.slides.items():
             where = "its guide" if sr.along == "guide" else f"the slot of {sr.along}"
-            text = f"slide {label} along {where}: v = {_g(sr.velocity, 6)} m/s"
+            text = f"slide {label} along {where}: v = {_g(sr.velocity * vf, 6)} {vu}"
             if sr.acceleration is not None:
-                text += f", a = {_g(sr.acceleration, 6)} m/s²"
+                text += f", a = {_g(sr.acceleration * af, 6)} {au}"
             if sr.coriolis is not None:
-                text += f", Coriolis 2ωv = {_g(_mag(sr.coriolis), 6)} m/s²"
+                text += f", Coriolis 2ωv = {_g(_mag(sr.coriolis) * af, 6)} {au}"
             lines.append(text + "  (signed along " + (f"{_deg(sr.direction):.2f}°)"))
     if steps:
         for diagram in scene.solve:

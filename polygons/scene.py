@@ -40,8 +40,10 @@ from types import MappingProxyType
 from typing import Any, Mapping
 
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
-                     UnknownKeyError, UnknownLabelError, UnitError, suggest)
+                     UnknownKeyError, UnknownLabelError, UnitError, show, suggest)
 from .loads import parse as parse_loads
+from .options import Options, parse_options
+from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS
 from .units import UNITS, dimension_of, parse_quantity
 
 Vec = tuple[float, float]
@@ -49,14 +51,17 @@ Vec = tuple[float, float]
 _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
 _LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
 
-TOP_KEYS = ("title", "source", "ground", "links", "driver", "sliders", "slots", "points",
-            "assembly", "answers", "solve", "drawn")
-#: tables read by extension modules (forces, sweeps, diagrams); stored raw in ``Scene.extra``
-#: and validated by the module that uses them (it must raise SceneError subclasses itself)
-EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics", "sweep",
-                  "diagram", "handout", "force_answers", "pins", "least_velocity", "pin_answers",
-                  "flywheel", "efficiency")
+#: option tables, read and checked at load by :mod:`polygons.options` (``Scene.options``)
+OPTION_KEYS = ("sweep", "diagram", "handout")
+#: tables read by extension modules (forces, loads, pins); stored raw in ``Scene.extra`` and
+#: validated by the module that uses them (it must raise SceneError subclasses itself)
+EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
+                  "force_answers", "flywheel", "efficiency", "pins", "least_velocity",
+                  "pin_answers")
 DIAGRAMS = ("velocity", "acceleration")
+#: the text keys of [source] (where the case comes from; shown in reports and handouts)
+SOURCE_TEXT = ("id", "seed", "example", "category", "statement", "conventions", "notes",
+               "backsolved", "slips", "mechanism")
 
 
 # ---------------------------------------------------------------- value objects
@@ -189,6 +194,7 @@ class Scene:
     solve: tuple[str, ...] = DIAGRAMS
     drawn: Mapping[str, Vec] = field(default_factory=lambda: MappingProxyType({}))
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
+    options: Options = Options()
     loads: Any = None           # polygons.loads.Loads: the force tables, parsed and checked
 
     @property
@@ -224,11 +230,11 @@ def split_link_name(name: str, *, file: str | None = None, where: str | None = N
     lower-case letters, digits, '_' or a prime."""
     tokens = _LABEL_TOKEN.findall(name)
     if "".join(tokens) != name or len(tokens) != 2:
-        raise SceneError(f"link name {name!r} must be its two end labels, e.g. 'BC' or 'O2P2' "
+        raise SceneError(f"link name {show(name)} must be its two end labels, e.g. 'BC' or 'O2P2' "
                          f"(a label is a capital letter followed by lower-case letters or "
                          f"digits)", file=file, where=where)
     if tokens[0] == tokens[1]:
-        raise SceneError(f"link {name!r} joins {tokens[0]} to itself", file=file, where=where)
+        raise SceneError(f"link {show(name)} joins {tokens[0]} to itself", file=file, where=where)
     return tokens[0], tokens[1]
 
 
@@ -245,7 +251,7 @@ class _Reader:
                              where=where)
         for key in data:
             if key not in allowed:
-                raise UnknownKeyError(f"unknown key {key!r}: {suggest(key, allowed)}",
+                raise UnknownKeyError(f"unknown key {show(key)}: {suggest(key, allowed)}",
                                       file=self.file, where=f"{where}.{key}" if where else key)
         for key in required:
             if key not in data:
@@ -253,19 +259,26 @@ class _Reader:
                                  file=self.file, where=where)
         return data
 
-    def quantity(self, value, dimension: str, where: str) -> float:
-        return parse_quantity(value, dimension, file=self.file, where=where)
+    def named(self, data, where: str) -> dict:
+        """A table of named entries (``[ground]``, ``[sliders.C]`` ...): any key allowed."""
+        if not isinstance(data, dict):
+            raise SceneError(f"expected a table, got {type(data).__name__}", file=self.file,
+                             where=where)
+        return data
+
+    def quantity(self, value, dimension: str, where: str, reduce: bool = False) -> float:
+        return parse_quantity(value, dimension, file=self.file, where=where, reduce=reduce)
 
     def vec(self, value, where: str) -> Vec:
         if not isinstance(value, list) or len(value) != 2:
             raise SceneError(f"expected coordinates [x, y] with units, e.g. ['0 mm', '70 mm'], "
-                             f"got {value!r}", file=self.file, where=where)
+                             f"got {show(value)}", file=self.file, where=where)
         return (self.quantity(value[0], "length", where + "[0]"),
                 self.quantity(value[1], "length", where + "[1]"))
 
     def label(self, value, where: str) -> str:
         if not isinstance(value, str) or not _LABEL.match(value):
-            raise SceneError(f"{value!r} is not a point label (a capital letter followed by "
+            raise SceneError(f"{show(value)} is not a point label (a capital letter followed by "
                              f"lower-case letters or digits, e.g. 'C' or 'O2')", file=self.file,
                              where=where)
         return value
@@ -275,45 +288,83 @@ class _Reader:
             return 1
         if value in ("CW", "cw", "clockwise"):
             return -1
-        raise SceneError(f"sense must be 'CW' or 'CCW', got {value!r}", file=self.file,
+        raise SceneError(f"sense must be 'CW' or 'CCW', got {show(value)}", file=self.file,
                          where=where)
 
     def string(self, value, where: str) -> str:
         if not isinstance(value, str):
-            raise SceneError(f"expected text, got {value!r}", file=self.file, where=where)
+            raise SceneError(f"expected text, got {show(value)}", file=self.file, where=where)
         return value
+
+
+#: largest scene file read (bytes): a scene is a few kB; checked before parsing, and no more
+#: than this plus one byte is ever read (so /dev/zero or a huge file cannot exhaust memory)
+MAX_SCENE_BYTES = 1_000_000
+
+
+def read_scene_text(path: str | Path) -> str:
+    """The text of a scene file: at most :data:`MAX_SCENE_BYTES`, UTF-8, valid TOML nesting."""
+    file = str(path)
+    try:
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_SCENE_BYTES + 1)
+    except FileNotFoundError:
+        raise SceneError("no such scene file", file=file) from None
+    except IsADirectoryError:
+        raise SceneError("is a directory, not a scene file", file=file) from None
+    except OSError as exc:
+        raise SceneError(f"cannot read the scene file ({exc.strerror or exc})",
+                         file=file) from None
+    if len(raw) > MAX_SCENE_BYTES:
+        raise SceneError(f"the file is larger than the {MAX_SCENE_BYTES:,} byte limit for a "
+                         f"scene file (a scene is a few kB)", file=file)
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw[:exc.start].count(b"\n") + 1
+        raise SceneSyntaxError(f"not UTF-8 text: byte 0x{raw[exc.start]:02x} at line {line} "
+                               f"(save the file as UTF-8)", file=file) from None
+
+
+def parse_toml(text: str, file: str) -> dict:
+    """``tomllib.loads`` with every failure turned into a :class:`SceneSyntaxError`."""
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneSyntaxError(f"not valid TOML: {' '.join(str(exc).split())[:200]}",
+                               file=file) from None
+    except RecursionError:
+        raise SceneSyntaxError("not a scene: arrays or tables are nested too deeply",
+                               file=file) from None
+    except ValueError as exc:         # e.g. an integer of more than 4300 digits
+        raise SceneSyntaxError(f"not valid TOML: {' '.join(str(exc).split())[:120]}",
+                               file=file) from None
 
 
 def load_scene(path: str | Path) -> Scene:
     """Read and validate a scene file; every problem raises a :class:`SceneError`."""
-    path = Path(path)
     file = str(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise SceneError("no such scene file", file=file) from None
-    except OSError as exc:
-        raise SceneError(f"cannot read the scene file ({exc.strerror})", file=file) from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneSyntaxError(f"not valid TOML: {exc}", file=file) from None
-    return parse_scene(data, file=file)
+    return parse_scene(parse_toml(read_scene_text(path), file), file=file)
 
 
 def parse_scene(data: dict, *, file: str = "<scene>",
                 extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
     r = _Reader(file)
-    r.table(data, "", TOP_KEYS + extra_keys, required=("ground", "links", "driver"))
+    r.table(data, "", TOP_KEYS + OPTION_KEYS + extra_keys,
+            required=("ground", "links", "driver"))
+    options = parse_options(data, file)
     title = r.string(data.get("title", path_stem(file)), "title")
     source = data.get("source", {})
-    r.table(source, "source", ("id", "seed", "example", "category", "synthetic", "statement",
-                               "conventions", "drawing_tolerance", "notes", "backsolved",
-                               "slips", "mechanism"))
+    r.table(source, "source", KEYS["source"])
+    for key in SOURCE_TEXT:
+        if key in source:
+            r.string(source[key], f"source.{key}")
+    if not isinstance(source.get("synthetic", False), bool):
+        raise SceneError("synthetic must be true or false", file=file, where="source.synthetic")
 
     # ground
-    ground_raw = r.table(data["ground"], "ground", tuple(data["ground"]))
+    ground_raw = r.named(data["ground"], "ground")
     ground = {}
     for name, value in ground_raw.items():
         ground[r.label(name, f"ground.{name}")] = r.vec(value, f"ground.{name}")
@@ -321,12 +372,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         raise SceneError("at least one fixed pivot is needed", file=file, where="ground")
 
     # the space diagram as drawn: coordinates of moving points at this instant
-    drawn_raw = r.table(data.get("drawn", {}), "drawn", tuple(data.get("drawn", {})))
+    drawn_raw = r.named(data.get("drawn", {}), "drawn")
     drawn = {r.label(k, f"drawn.{k}"): r.vec(v, f"drawn.{k}") for k, v in drawn_raw.items()}
     placed = {**drawn, **ground}
 
     # links
-    links_raw = r.table(data["links"], "links", tuple(data["links"]))
+    links_raw = r.named(data["links"], "links")
     links: dict[str, Link] = {}
     for name, value in links_raw.items():
         a, b = split_link_name(name, file=file, where=f"links.{name}")
@@ -336,20 +387,27 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                 raise SceneError(f"length 'drawn' needs the positions of {a} and {b}; "
                                  f"{' and '.join(missing)} not in [ground] or [drawn]",
                                  file=file, where=f"links.{name}")
-            links[name] = Link(name, a, b, math.dist(placed[a], placed[b]))
+            length = math.dist(placed[a], placed[b])
+            if not length > 0:
+                raise SceneError(f"length 'drawn' is zero: {a} and {b} are drawn at the same "
+                                 f"place", file=file, where=f"links.{name}")
+            links[name] = Link(name, a, b, length)
             continue
         length = r.quantity(value, "length", f"links.{name}")
         if length <= 0:
-            raise SceneError(f"length must be positive, got {value!r}", file=file,
+            raise SceneError(f"length must be positive, got {show(value)}", file=file,
                              where=f"links.{name}")
+        if length < MIN_LENGTH:
+            raise SceneError(f"{show(value)} is too small to compute with: a link must be at "
+                             f"least {MIN_LENGTH:g} m long", file=file, where=f"links.{name}")
         links[name] = Link(name, a, b, length)
 
     # slots
     slots: dict[str, Slot] = {}
-    for pin, spec in r.table(data.get("slots", {}), "slots", tuple(data.get("slots", {}))).items():
+    for pin, spec in r.named(data.get("slots", {}), "slots").items():
         where = f"slots.{pin}"
         r.label(pin, where)
-        r.table(spec, where, ("lever", "coincident"), required=("lever",))
+        r.table(spec, where, KEYS["slots"], required=("lever",))
         lever = r.string(spec["lever"], where + ".lever")
         pivot, other = split_link_name(lever, file=file, where=where + ".lever")
         if pivot not in ground:
@@ -373,15 +431,14 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     # extra body points
     points: dict[str, BodyPoint] = {}
-    for label, spec in r.table(data.get("points", {}), "points",
-                               tuple(data.get("points", {}))).items():
+    for label, spec in r.named(data.get("points", {}), "points").items():
         where = f"points.{label}"
         r.label(label, where)
-        r.table(spec, where, ("on", "along", "fraction", "left"), required=("on",))
+        r.table(spec, where, KEYS["points"], required=("on",))
         on = r.string(spec["on"], where + ".on")
         split_link_name(on, file=file, where=where + ".on")
         if on not in links and not any(s.lever == on for s in slots.values()):
-            raise UnknownLabelError(f"link {on!r} is not defined: "
+            raise UnknownLabelError(f"link {show(on)} is not defined: "
                                     f"{suggest(on, list(links) + [s.lever for s in slots.values()])}",
                                     file=file, where=where + ".on")
         if ("along" in spec) == ("fraction" in spec):
@@ -403,7 +460,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     def need_label(label: str, where: str) -> str:
         if label not in known:
-            raise UnknownLabelError(f"unknown point {label!r}: {suggest(label, known)}",
+            raise UnknownLabelError(f"unknown point {show(label)}: {suggest(label, known)}",
                                     file=file, where=where)
         return label
 
@@ -412,13 +469,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     # sliders
     sliders: dict[str, Guide] = {}
-    for label, spec in r.table(data.get("sliders", {}), "sliders",
-                               tuple(data.get("sliders", {}))).items():
+    for label, spec in r.named(data.get("sliders", {}), "sliders").items():
         where = f"sliders.{label}"
-        r.table(spec, where, ("through", "direction", "pin", "slot"),
+        r.table(spec, where, KEYS["sliders"],
                 required=("through", "direction"))
         through = r.vec(spec["through"], where + ".through")
-        angle = r.quantity(spec["direction"], "angle", where + ".direction")
+        angle = r.quantity(spec["direction"], "angle", where + ".direction", reduce=True)
         if "pin" in spec or "slot" in spec:
             # a Scotch yoke: this slider carries a straight slot in which a placed pin slides
             if "pin" not in spec or "slot" not in spec:
@@ -427,7 +483,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                  "(the slot's direction)", file=file, where=where)
             r.label(label, where)
             pin = need_label(r.label(spec["pin"], where + ".pin"), where + ".pin")
-            slot_angle = r.quantity(spec["slot"], "angle", where + ".slot")
+            slot_angle = r.quantity(spec["slot"], "angle", where + ".slot", reduce=True)
             if abs(math.sin(slot_angle - angle)) < 1e-9:
                 raise SceneError("the slot is parallel to the yoke's guide, so the pin does "
                                  "not fix the yoke; give the slot another direction",
@@ -440,8 +496,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     # driver
     drv = data["driver"]
-    r.table(drv, "driver", ("crank", "slider", "angle", "omega", "sense", "alpha",
-                            "alpha_sense", "position", "velocity", "acceleration"))
+    r.table(drv, "driver", KEYS["driver"])
     if ("crank" in drv) == ("slider" in drv):
         raise SceneError("the driver is either a crank (crank = \"OA\") or a slider "
                          "(slider = \"C\"): give exactly one", file=file, where="driver")
@@ -454,7 +509,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         if name not in links and f"{tip}{pivot}" in links:
             name = f"{tip}{pivot}"      # written the other way round in [links]
         elif name not in links:
-            raise UnknownLabelError(f"crank {name!r} is not a link in [links]: "
+            raise UnknownLabelError(f"crank {show(name)} is not a link in [links]: "
                                     f"{suggest(name, links)}", file=file, where="driver.crank")
         if pivot not in ground:
             raise SceneError(f"the crank turns about its first label {pivot}, which must be a "
@@ -477,7 +532,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                      where="driver.alpha_sense")
                 alpha *= r.sense(drv["alpha_sense"], "driver.alpha_sense")
         if "angle" in drv:
-            angle = r.quantity(drv["angle"], "angle", "driver.angle")
+            angle = r.quantity(drv["angle"], "angle", "driver.angle", reduce=True)
         elif tip in drawn:
             angle = math.atan2(drawn[tip][1] - ground[pivot][1], drawn[tip][0] - ground[pivot][0])
         else:
@@ -498,8 +553,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     # assembly
     assembly: dict[str, Branch] = {}
-    for label, spec in r.table(data.get("assembly", {}), "assembly",
-                               tuple(data.get("assembly", {}))).items():
+    for label, spec in r.named(data.get("assembly", {}), "assembly").items():
         where = f"assembly.{label}"
         need_label(r.label(label, where), where)
         assembly[label] = _parse_branch(label, spec, r, need_label, where)
@@ -511,15 +565,20 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     solve = data.get("solve", list(DIAGRAMS))
     if (not isinstance(solve, list) or not solve
             or any(s not in DIAGRAMS for s in solve)):
-        raise SceneError(f"solve must be a list drawn from {list(DIAGRAMS)}, got {solve!r}",
+        raise SceneError(f"solve must be a list drawn from {list(DIAGRAMS)}, got {show(solve)}",
                          file=file, where="solve")
     if "acceleration" in solve and "velocity" not in solve:
         raise SceneError("the acceleration polygon needs the velocity polygon: "
                          "solve = ['velocity', 'acceleration']", file=file, where="solve")
 
     default_tol = drawing_tolerance(source, r)
-    answers = tuple(_parse_answer(i, a, r, default_tol) for i, a in
-                    enumerate(data.get("answers", [])))
+    answers_raw = data.get("answers", [])
+    if not isinstance(answers_raw, list):
+        raise SceneError("answers must be an array of tables: [[answers]]", file=file,
+                         where="answers")
+    answers = tuple(_parse_answer(i, a, r, default_tol) for i, a in enumerate(answers_raw))
+
+    check_proportions(file, ground, drawn, links, sliders, points, assembly, driver)
 
     scene = Scene(file=file, title=title, source=MappingProxyType(dict(source)),
                  ground=MappingProxyType(ground), links=MappingProxyType(links),
@@ -528,17 +587,60 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                  assembly=MappingProxyType(assembly), answers=answers,
                  solve=tuple(s for s in DIAGRAMS if s in solve),
                  drawn=MappingProxyType(drawn),
-                 extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}))
+                 extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
+                 options=options)
     # the force tables ([masses], [forces], ...), parsed and checked now: polygons.loads
     return replace(scene, loads=parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw)))
+
+
+#: the smallest link length or offset accepted, as a fraction of the mechanism's size, and the
+#: farthest a coordinate may lie from the origin, as a multiple of it: within these the
+#: constructions' tolerances (relative to the size) separate a point from a line
+MIN_RELATIVE = 1e-6
+#: the shortest link accepted (m)
+MIN_LENGTH = 1e-9
+MAX_RELATIVE = 1e6
+
+
+def check_proportions(file, ground, drawn, links, sliders, points, assembly, driver) -> None:
+    """Lengths and coordinates within a stated range relative to the mechanism's size.
+
+    size = the longest link, or the largest distance between two fixed or drawn points (or a
+    slider driver's position).  Every link length and point offset must be zero or at least
+    ``MIN_RELATIVE`` × size; every coordinate at most ``MAX_RELATIVE`` × size from the origin.
+    """
+    places = list(ground.values()) + list(drawn.values())
+    lengths = [(f"links.{n}", l.length) for n, l in links.items()]
+    size = max([l for _, l in lengths] + [math.dist(p, q) for p in places for q in places]
+               + [abs(driver.position) if isinstance(driver, SliderDrive) else 0.0])
+    if not size > 0:
+        raise SceneError("the mechanism has no size: every link length and distance between "
+                         "pivots is zero", file=file, where="links")
+    offsets = lengths + [(f"points.{k}.along", p.along) for k, p in points.items()
+                         if p.along] + [(f"points.{k}.left", p.left) for k, p in points.items()
+                                        if p.left]
+    for where, value in offsets:
+        if abs(value) < MIN_RELATIVE * size:
+            raise SceneError(f"{value:.4g} m is too short beside the mechanism's size "
+                             f"{size:.4g} m: lengths must be at least {MIN_RELATIVE:g} of the "
+                             f"size (or zero for an offset)", file=file, where=where)
+    coords = [(f"ground.{k}", v) for k, v in ground.items()]
+    coords += [(f"drawn.{k}", v) for k, v in drawn.items()]
+    coords += [(f"sliders.{k}.through", g.through) for k, g in sliders.items()]
+    coords += [(f"assembly.{k}.near", b.near) for k, b in assembly.items() if b.near]
+    for where, (x, y) in coords:
+        if max(abs(x), abs(y)) > MAX_RELATIVE * size:
+            raise SceneError(f"({x:.4g}, {y:.4g}) m lies too far from the origin for a "
+                             f"mechanism of size {size:.4g} m: coordinates must be within "
+                             f"{MAX_RELATIVE:g} × the size", file=file, where=where)
 
 
 def path_stem(file: str) -> str:
     return Path(file).stem
 
 
-_RELATIONS = ("above", "below", "left of", "right of")
+_RELATIONS = RELATIONS
 
 
 def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
@@ -557,10 +659,10 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
             tokens = _LABEL_TOKEN.findall(ref)
             if "".join(tokens) == ref and len(tokens) == 2:
                 return Branch(label, text, rel, tuple(need_label(t, where) for t in tokens))
-            raise BranchError(f"cannot read the reference {ref!r} in {text!r}: give a point "
+            raise BranchError(f"cannot read the reference {show(ref)} in {show(text)}: give a point "
                               f"('{label} above B') or a line of two points ('{label} above AD')",
                               file=r.file, where=where)
-    raise BranchError(f"cannot read {text!r}: write '{label} above AD', '{label} below AD', "
+    raise BranchError(f"cannot read {show(text)}: write '{label} above AD', '{label} below AD', "
                       f"'{label} left of B', '{label} right of B' or near = [x, y]",
                       file=r.file, where=where)
 
@@ -572,8 +674,6 @@ def drawing_tolerance(source, r: _Reader) -> float:
     return 0.03
 
 
-ANSWER_KEYS = ("quantity", "unit", "tutorial", "exact", "mode", "sense", "tolerance", "slip",
-               "ref", "desc", "note")
 
 
 def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
@@ -583,20 +683,23 @@ def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
     r.table(spec, where, ANSWER_KEYS + extra_keys, required=("quantity", "unit"))
     unit = r.string(spec["unit"], where + ".unit")
     if unit not in UNITS and unit not in ("-", "1") and unit not in extra_units:
-        raise UnitError(f"unknown unit {unit!r}", file=r.file, where=where + ".unit")
+        raise UnitError(f"unknown unit {show(unit)}", file=r.file, where=where + ".unit")
 
     def number(key):
         if key not in spec:
             return None
         value = spec[key]
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise SceneError(f"{key} must be a plain number in {unit!r}, got {value!r}",
+            raise SceneError(f"{key} must be a plain number in {show(unit)}, got {show(value)}",
                              file=r.file, where=f"{where}.{key}")
+        if not math.isfinite(value) or abs(value) > 1e15:
+            raise SceneError(f"{key} must be a finite number below 1e15 in magnitude, got "
+                             f"{show(value)}", file=r.file, where=f"{where}.{key}")
         return float(value)
 
     mode = spec.get("mode", "abs")
     if mode not in ("abs", "signed"):
-        raise SceneError(f"mode must be 'abs' or 'signed', got {mode!r}", file=r.file,
+        raise SceneError(f"mode must be 'abs' or 'signed', got {show(mode)}", file=r.file,
                          where=where + ".mode")
     tol = default_tol
     if "tolerance" in spec:
@@ -605,14 +708,45 @@ def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
     if not isinstance(slip, bool):
         raise SceneError("slip must be true or false", file=r.file, where=where + ".slip")
     quantity = r.string(spec["quantity"], where + ".quantity")
+
+    def text(key, default):
+        return r.string(spec[key], f"{where}.{key}") if key in spec else default
+
     return dict(quantity=quantity, unit=unit, tutorial=number("tutorial"),
-                exact=number("exact"), mode=mode, sense=spec.get("sense"), tolerance=tol,
-                slip=slip, ref=spec.get("ref"), desc=spec.get("desc", quantity),
-                note=spec.get("note", ""))
+                exact=number("exact"), mode=mode, sense=text("sense", None), tolerance=tol,
+                slip=slip, ref=text("ref", None), desc=text("desc", quantity),
+                note=text("note", ""))
+
+
+_CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
+                   r"(?:,\s*([^,()\s]+)\s*)?\)\s*$")
+#: the functions of an answer's ``quantity`` (see :mod:`polygons.quantities`)
+QUANTITY_FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x",
+                      "y", "dir_v", "dir_a", "angle", "arm")
+_ARITY = {"angle": (3,), "arm": (3,), "v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,),
+          "dist": (2,)}
+
+
+def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None = None):
+    """'v(C,B)' -> ('v', ('C', 'B')): the grammar of a result quantity, checked."""
+    m = _CALL.match(expr) if isinstance(expr, str) else None
+    if not m or m.group(1) not in QUANTITY_FUNCTIONS:
+        raise SceneError(f"cannot read quantity {show(expr)}: write e.g. 'v(C)', 'v(C,B)', "
+                         f"'omega(BC)', 'alpha(CD)', 'an(C,B)', 'at(C,B)', 'vs(C)', 'cor(A)' "
+                         f"(functions: {', '.join(QUANTITY_FUNCTIONS)})", file=file,
+                         where=where)
+    fn, args = m.group(1), tuple(g for g in m.groups()[1:] if g is not None)
+    counts = _ARITY.get(fn, (1,))
+    if len(args) not in counts:
+        raise SceneError(f"{fn}() takes {' or '.join(map(str, counts))} labels, got "
+                         f"{show(expr)}", file=file, where=where)
+    return fn, args
 
 
 def _parse_answer(i: int, spec, r: _Reader, default_tol: float) -> Answer:
-    return Answer(**answer_fields(spec, r, f"answers[{i}]", default_tol))
+    fields = answer_fields(spec, r, f"answers[{i}]", default_tol)
+    parse_quantity_expr(fields["quantity"], file=r.file, where=f"answers[{i}].quantity")
+    return Answer(**fields)
 
 
 def unit_dimension(unit: str) -> str:

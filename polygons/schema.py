@@ -40,3 +40,4 @@ class Table:
     keys: tuple[Key, ...]
     many: bool = False
     array: bool = False
+    required: bool = False

@@ -2,7 +2,7 @@
 
 Everything inside polygons is SI (m, s, rad, kg, N).  A scene value must carry its unit; a bare
 number is a :class:`~polygons.errors.UnitError` (nothing is guessed).  We keep a small table
-instead of depending on a units library: scenes need about twenty units of a dozen dimensions,
+instead of depending on a units library: scenes need about eighty spellings of fifteen dimensions,
 parsing them is ten lines, and it keeps `import polygons` fast (see README, "Dependencies").
 """
 from __future__ import annotations
@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 import re
 
-from .errors import UnitError
+from .errors import UnitError, show
 
 #: dimension name -> the SI unit written in reports
 SI_UNIT = {
@@ -35,37 +35,103 @@ SI_UNIT = {
 }
 
 _TAU = 2.0 * math.pi
+# exact definitions (NIST SP 811): the international inch and pound, standard gravity
+_IN = 0.0254
+_FT = 0.3048
+_LB = 0.45359237
+_G0 = 9.80665
+_LBF = _LB * _G0
+_SLUG = _LBF / _FT
 
-#: unit spelling -> (dimension, factor to SI)
+#: unit spelling -> (dimension, factor to SI); every factor is checked against pint in
+#: tests/test_units.py
 UNITS: dict[str, tuple[str, float]] = {
     "m": ("length", 1.0), "mm": ("length", 1e-3), "cm": ("length", 1e-2),
     "km": ("length", 1e3), "um": ("length", 1e-6), "µm": ("length", 1e-6),
+    "in": ("length", _IN), "ft": ("length", _FT),
     "deg": ("angle", math.pi / 180.0), "°": ("angle", math.pi / 180.0),
-    "rad": ("angle", 1.0),
+    "rad": ("angle", 1.0), "rev": ("angle", _TAU),
     "rad/s": ("angular_velocity", 1.0), "rev/min": ("angular_velocity", _TAU / 60.0),
     "rpm": ("angular_velocity", _TAU / 60.0), "rev/s": ("angular_velocity", _TAU),
     "deg/s": ("angular_velocity", math.pi / 180.0),
     "rad/s^2": ("angular_acceleration", 1.0), "rad/s²": ("angular_acceleration", 1.0),
     "rev/min/s": ("angular_acceleration", _TAU / 60.0),
+    "deg/s^2": ("angular_acceleration", math.pi / 180.0),
+    "deg/s²": ("angular_acceleration", math.pi / 180.0),
+    "rev/s^2": ("angular_acceleration", _TAU), "rev/s²": ("angular_acceleration", _TAU),
     "m/s": ("velocity", 1.0), "mm/s": ("velocity", 1e-3), "km/h": ("velocity", 1 / 3.6),
+    "ft/s": ("velocity", _FT), "in/s": ("velocity", _IN), "ft/min": ("velocity", _FT / 60.0),
+    "mph": ("velocity", 1609.344 / 3600.0),
     "m/s^2": ("acceleration", 1.0), "m/s²": ("acceleration", 1.0),
     "mm/s^2": ("acceleration", 1e-3), "mm/s²": ("acceleration", 1e-3),
-    "kg": ("mass", 1.0), "g": ("mass", 1e-3),
-    "N": ("force", 1.0), "kN": ("force", 1e3),
+    "ft/s^2": ("acceleration", _FT), "ft/s²": ("acceleration", _FT),
+    "in/s^2": ("acceleration", _IN), "in/s²": ("acceleration", _IN),
+    "kg": ("mass", 1.0), "g": ("mass", 1e-3), "t": ("mass", 1e3),
+    "lb": ("mass", _LB), "slug": ("mass", _SLUG),
+    "N": ("force", 1.0), "kN": ("force", 1e3), "MN": ("force", 1e6), "lbf": ("force", _LBF),
     "N m": ("torque", 1.0), "Nm": ("torque", 1.0), "N*m": ("torque", 1.0),
-    "N·m": ("torque", 1.0), "kN m": ("torque", 1e3),
+    "N·m": ("torque", 1.0), "kN m": ("torque", 1e3), "N mm": ("torque", 1e-3),
+    "lbf ft": ("torque", _LBF * _FT), "lbf in": ("torque", _LBF * _IN),
     "Pa": ("pressure", 1.0), "kPa": ("pressure", 1e3), "MPa": ("pressure", 1e6),
-    "bar": ("pressure", 1e5),
+    "bar": ("pressure", 1e5), "psi": ("pressure", _LBF / _IN ** 2),
+    "N/mm^2": ("pressure", 1e6), "N/mm²": ("pressure", 1e6),
+    "kN/m^2": ("pressure", 1e3), "kN/m²": ("pressure", 1e3),
+    "N/m^2": ("pressure", 1.0), "N/m²": ("pressure", 1.0),
     "kg m^2": ("inertia", 1.0), "kg m²": ("inertia", 1.0), "kg mm^2": ("inertia", 1e-6),
-    "N/m": ("stiffness", 1.0), "N/mm": ("stiffness", 1e3),
+    "kg mm²": ("inertia", 1e-6), "lb ft^2": ("inertia", _LB * _FT ** 2),
+    "lb ft²": ("inertia", _LB * _FT ** 2), "lb in^2": ("inertia", _LB * _IN ** 2),
+    "lb in²": ("inertia", _LB * _IN ** 2), "slug ft^2": ("inertia", _SLUG * _FT ** 2),
+    "slug ft²": ("inertia", _SLUG * _FT ** 2),
+    "N/m": ("stiffness", 1.0), "N/mm": ("stiffness", 1e3), "kN/m": ("stiffness", 1e3),
+    "lbf/in": ("stiffness", _LBF / _IN), "lbf/ft": ("stiffness", _LBF / _FT),
     "N m/rad": ("torsional_stiffness", 1.0), "Nm/rad": ("torsional_stiffness", 1.0),
-    "s": ("time", 1.0), "ms": ("time", 1e-3),
+    "lbf ft/rad": ("torsional_stiffness", _LBF * _FT),
+    "lbf in/rad": ("torsional_stiffness", _LBF * _IN),
+    "s": ("time", 1.0), "ms": ("time", 1e-3), "min": ("time", 60.0),
     "J": ("energy", 1.0), "kJ": ("energy", 1e3), "W": ("power", 1.0), "kW": ("power", 1e3),
     "kg m^2/s": ("angular_momentum", 1.0), "kg m²/s": ("angular_momentum", 1.0),
     "%": ("fraction", 0.01),
 }
 
+#: (smallest non-zero, largest) magnitude accepted, in SI, per dimension: inside this range
+#: every product the constructions form (ω²·r, 2ωv, m·a, squared distances) stays finite and
+#: far from underflow.  A value outside is refused at load with the range in the message.
+LIMITS: dict[str, tuple[float, float]] = {
+    "length": (0.0, 1e6),                   # up to 1000 km (a link: at least 1 nm, see scene)
+    "angle": (0.0, 1e6 * math.pi / 180),    # beyond ±1e6 deg precision would be lost
+    "angular_velocity": (0.0, 1e6),
+    "angular_acceleration": (0.0, 1e12),
+    "velocity": (0.0, 1e6),
+    "acceleration": (0.0, 1e12),
+    "mass": (0.0, 1e9),
+    "force": (0.0, 1e12),
+    "torque": (0.0, 1e12),
+    "pressure": (0.0, 1e12),
+    "inertia": (0.0, 1e9),
+    "stiffness": (0.0, 1e12),
+    "torsional_stiffness": (0.0, 1e12),
+    "time": (0.0, 1e9),
+    "fraction": (0.0, 1e6),
+}
+
+#: unit systems for reports (``polygons solve --units``): dimension -> unit written
+SYSTEMS: dict[str, dict[str, str]] = {
+    "mm": {"length": "mm", "velocity": "m/s", "acceleration": "m/s²",
+           "angular_velocity": "rad/s", "angular_acceleration": "rad/s²"},
+    "si": {"length": "m", "velocity": "m/s", "acceleration": "m/s²",
+           "angular_velocity": "rad/s", "angular_acceleration": "rad/s²"},
+    "imperial": {"length": "in", "velocity": "ft/s", "acceleration": "ft/s²",
+                 "angular_velocity": "rad/s", "angular_acceleration": "rad/s²"},
+}
+
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+#: the period of an orientation, in each angle unit (reduced exactly with math.fmod)
+_TURN = {"deg": 360.0, "°": 360.0, "rad": _TAU, "rev": 1.0}
+
+
+def article(word: str) -> str:
+    """'a length', 'an angle', 'an angular velocity'."""
+    return ("an " if word[:1].lower() in "aeiou" else "a ") + word
 
 
 def units_of(dimension: str) -> list[str]:
@@ -73,44 +139,70 @@ def units_of(dimension: str) -> list[str]:
     return [u for u, (d, _) in UNITS.items() if d == dimension]
 
 
+def check_range(result: float, dimension: str, value, *, file=None, where=None) -> float:
+    """Refuse a non-finite value, or one outside :data:`LIMITS` (zero is always allowed)."""
+    if not math.isfinite(result):
+        raise UnitError(f"{show(value)} is not a finite number", file=file, where=where)
+    low, high = LIMITS.get(dimension, (0.0, math.inf))
+    words = dimension.replace("_", " ")
+    si = SI_UNIT.get(dimension, "")
+    if abs(result) > high:
+        shown = f"{high * 180 / math.pi:g} deg" if dimension == "angle" else f"{high:g} {si}"
+        raise UnitError(f"{show(value)} is out of range: {article(words)} must not exceed "
+                        f"{shown.rstrip()} in magnitude", file=file, where=where)
+    if result != 0.0 and abs(result) < low:
+        raise UnitError(f"{show(value)} is too small to compute with: {article(words)} must be "
+                        f"0 or at least {low:g} {si}".rstrip() + " in magnitude",
+                        file=file, where=where)
+    return result + 0.0        # -0.0 -> 0.0
+
+
 def parse_quantity(value, dimension: str, *, file: str | None = None,
-                   where: str | None = None) -> float:
+                   where: str | None = None, reduce: bool = False) -> float:
     """Convert ``"50 mm"`` to SI (0.05) after checking it is a ``dimension``.
 
-    A bare number is accepted only for the dimensionless ``fraction``.
+    A bare number is accepted only for the dimensionless ``fraction``.  The magnitude must be
+    zero or within :data:`LIMITS`.  ``reduce`` (orientations only) reduces an angle to one
+    turn exactly, in its stated unit, before converting (``"370 deg"`` -> 10°).
     """
+    words = dimension.replace("_", " ")
     accepted = ", ".join(repr(u) for u in units_of(dimension)[:6])
     if isinstance(value, bool) or not isinstance(value, (str, int, float)):
-        raise UnitError(f"expected a quantity such as '{_example(dimension)}', got {value!r}",
-                        file=file, where=where)
+        raise UnitError(f"expected a quantity such as '{_example(dimension)}', got "
+                        f"{show(value)}", file=file, where=where)
     if isinstance(value, (int, float)):
         if dimension == "fraction":
-            return float(value)
-        raise UnitError(f"missing unit: {value!r} needs a {dimension.replace('_', ' ')} unit, "
+            return check_range(float(value), dimension, value, file=file, where=where)
+        if isinstance(value, float) and not math.isfinite(value):
+            raise UnitError(f"{show(value)} is not a finite number", file=file, where=where)
+        raise UnitError(f"missing unit: {show(value)} needs {article(words)} unit, "
                         f"e.g. '{value} {units_of(dimension)[0]}' (accepted: {accepted})",
                         file=file, where=where)
     match = _NUMBER.match(value)
     if not match:
-        raise UnitError(f"cannot read {value!r} as a number with a unit "
+        raise UnitError(f"cannot read {show(value)} as a number with a unit "
                         f"(write e.g. '{_example(dimension)}')", file=file, where=where)
     number, unit = float(match.group(1)), " ".join(match.group(2).split())
     if not unit:
         if dimension == "fraction":
-            return number
-        raise UnitError(f"missing unit in {value!r}: a {dimension.replace('_', ' ')} "
+            return check_range(number, dimension, value, file=file, where=where)
+        raise UnitError(f"missing unit in {show(value)}: {article(words)} "
                         f"needs one of {accepted}", file=file, where=where)
     if unit not in UNITS:
-        raise UnitError(f"unknown unit {unit!r} in {value!r} (accepted for "
-                        f"{dimension.replace('_', ' ')}: {accepted})", file=file, where=where)
+        raise UnitError(f"unknown unit {show(unit)} in {show(value)} (accepted for "
+                        f"{words}: {accepted})", file=file, where=where)
     got, factor = UNITS[unit]
     if got != dimension:
-        raise UnitError(f"{value!r} is a {got.replace('_', ' ')}, but a "
-                        f"{dimension.replace('_', ' ')} is needed here (accepted: {accepted})",
+        raise UnitError(f"{show(value)} is {article(got.replace('_', ' '))}, but "
+                        f"{article(words)} is needed here (accepted: {accepted})",
                         file=file, where=where)
-    result = number * factor
-    if not math.isfinite(result):
-        raise UnitError(f"{value!r} is not a finite number", file=file, where=where)
-    return result
+    if not math.isfinite(number):
+        raise UnitError(f"{show(value)} is not a finite number", file=file, where=where)
+    if dimension == "angle":
+        check_range(number * factor, dimension, value, file=file, where=where)
+        if reduce:
+            number = math.fmod(number, _TURN[unit])       # exact
+    return check_range(number * factor, dimension, value, file=file, where=where)
 
 
 def to_unit(value_si: float, unit: str) -> float:
@@ -120,7 +212,7 @@ def to_unit(value_si: float, unit: str) -> float:
 
 def dimension_of(unit: str) -> str:
     if unit not in UNITS:
-        raise UnitError(f"unknown unit {unit!r}")
+        raise UnitError(f"unknown unit {show(unit)}")
     return UNITS[unit][0]
 
 

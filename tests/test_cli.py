@@ -149,3 +149,53 @@ def test_drawn_position_that_contradicts_the_lengths_is_an_error(write_scene):
     out = run("solve", write_scene(text))
     assert out.returncode != 0 and "Traceback" not in out.stderr
     assert "[drawn.B]" in out.stderr and "disagree" in out.stderr
+
+
+# ---------------------------------------------------------------- scene text is escaped
+EVIL = "<script>alert('x')</script> & <b>"
+
+
+def test_scene_text_is_escaped_in_handouts_svgs_and_the_gallery(tmp_path):
+    """A title, a statement and an answer's words holding markup come out escaped in the
+    handout, the worksheet, every SVG and the gallery index (never as live markup)."""
+    text = (CASES / "s001-we4.toml").read_text(encoding="utf-8")
+    text = text.replace('title = "Worked example 4', f'title = "{EVIL} Worked example 4', 1)
+    text = text.replace('desc = "', f'desc = "{EVIL} ', 1)
+    folder = tmp_path / "cases"
+    folder.mkdir()
+    scene = folder / "evil.toml"
+    scene.write_text(text, encoding="utf-8")
+    outputs = []
+    for args in (["handout", scene, "-o", tmp_path / "h.html"],
+                 ["handout", scene, "-o", tmp_path / "w.html", "--worksheet"],
+                 ["draw", scene, "-o", tmp_path / "svg"],
+                 ["gallery", folder, "-o", tmp_path / "gallery"]):
+        out = run(*args)
+        assert out.returncode == 0, out.stderr
+    outputs = [tmp_path / "h.html", tmp_path / "w.html", *sorted((tmp_path / "svg").glob("*.svg")),
+               *sorted((tmp_path / "gallery").rglob("*.html")),
+               *sorted((tmp_path / "gallery").rglob("*.svg"))]
+    assert len(outputs) >= 5
+    seen_escaped = 0
+    for path in outputs:
+        body = path.read_text(encoding="utf-8")
+        assert "<script>alert" not in body, path.name
+        assert "<b>" not in body, path.name
+        seen_escaped += "&lt;script&gt;" in body
+    assert seen_escaped >= 3      # the title really is in the pages, escaped
+
+
+def test_dev_zero_and_a_directory_are_one_line_errors(tmp_path):
+    for target, words in (("/dev/zero", "byte limit"), (tmp_path, "directory")):
+        if not Path(target).exists():
+            continue
+        out = run("solve", target)
+        assert out.returncode == 1 and out.stdout == ""
+        assert out.stderr.count("\n") == 1 and words in out.stderr, out.stderr
+        assert out.stderr.startswith(f"polygons: error: {target}")
+
+
+def test_usage_error_is_exit_2_and_one_line():
+    out = run("solve", "--no-such-flag", CASES / "s001-we4.toml")
+    assert out.returncode == 2 and out.stderr.count("\n") == 1
+    assert out.stderr.startswith("polygons: error: ")

@@ -271,14 +271,13 @@ def test_scene_diagram_table_forces_scale_and_rejects_typos():
     sol = solve(parse_scene(data, file="we4.toml"))
     acc = finals(diagrams.drawings(sol, stages=False))["acceleration"]
     assert acc.scale_statement == "1 cm = 250 m/s²"
+    # [diagram] is checked when the scene is loaded (polygons.options), not when drawn
     data["diagram"] = {"acceleration_scal": "250 m/s^2"}
-    sol = solve(parse_scene(data, file="we4.toml"))
     with pytest.raises(UnknownKeyError, match="acceleration_scale"):
-        diagrams.drawings(sol)
+        parse_scene(data, file="we4.toml")
     data["diagram"] = {"velocity_scale": "250 m/s^2"}
-    sol = solve(parse_scene(data, file="we4.toml"))
     with pytest.raises(SceneError, match=r"diagram\.velocity_scale"):
-        diagrams.drawings(sol)
+        parse_scene(data, file="we4.toml")
 
 
 # ---------------------------------------------------------------- scaled lengths

@@ -18,21 +18,29 @@ WHERE = {
     "polygons.theorems": "base", "polygons.steps": "base",
     "polygons.scene": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
+    "polygons.scene_tables": "scene", "polygons.loadmodel": "scene",
+    "polygons.reference": "commands", "polygons.__main__": "commands",
     "polygons.plan": "plan", "polygons.dyads": "plan", "polygons.mobility": "plan",
     "polygons.interpret": "interpreters", "polygons.geometry": "interpreters",
     "polygons.narrate": "interpreters", "polygons.position": "interpreters",
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
-    "polygons.forces": "forces", "polygons.loadmodel": "scene",
+    "polygons.forces": "forces",
     "polygons.report": "render", "diagrams": "render",
     "polygons.cli": "commands", "polygons.api": "commands", "polygons": "commands",
 }
 
 
+#: entries that stand for the package module itself, not for everything below it
+PACKAGES_ONLY = ("polygons",)
+
+
 def layer_of(mod: str) -> str | None:
     best = None
     for prefix in WHERE:
+        if prefix in PACKAGES_ONLY and mod != prefix:
+            continue
         if (mod == prefix or mod.startswith(prefix + ".")) and (best is None
                                                                  or len(prefix) > len(best)):
             best = prefix

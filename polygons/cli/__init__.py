@@ -55,21 +55,58 @@ def _command_of(argv: list[str]) -> str | None:
     return ""
 
 
+#: exit codes (README, "Exit codes")
+EXIT_OK, EXIT_ERROR, EXIT_USAGE, EXIT_INTERNAL = 0, 1, 2, 70
+
+
+def _one_line(text: str, limit: int = 2000) -> str:
+    """A message on one line, cut to ``limit`` characters (it must stay readable)."""
+    text = " ".join(str(text).split())
+    return text if len(text) <= limit else text[:limit - 1] + "…"
+
+
 def main(argv=None) -> int:
+    """Run one command.  Exit codes: 0 done; 1 an error in the input or its solution (one
+    line ``polygons: error: FILE [key] reason`` on stderr); 2 a usage error (argparse); 70 an
+    internal error (a bug: ``polygons: internal error: ... (please report this)``).
+
+    Every warning (numpy, shapely, matplotlib...) is an error while a command runs: nothing
+    may reach stderr but the one line.
+    """
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = build_parser(_command_of(argv))
     args = parser.parse_args(argv)
     from ..errors import PolygonsError
+    import warnings
     try:
-        return int(args.func(args) or 0)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            # a character missing from the plot font (a CJK title) is drawn as a box: cosmetic
+            warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from font")
+            return int(args.func(args) or 0)
     except PolygonsError as exc:
-        print(f"polygons: error: {exc}", file=sys.stderr)
-        return 1
+        scene = getattr(args, "scene", None)
+        if not exc.file and isinstance(scene, str):
+            try:                 # every error names the scene file the command was given
+                exc = exc.located(file=scene)
+            except Exception:    # pragma: no cover - a subclass with another signature
+                pass
+        print(f"polygons: error: {_one_line(exc)}", file=sys.stderr)
+        return EXIT_ERROR
     except BrokenPipeError:
-        return 0
+        return EXIT_OK
     except OSError as exc:
-        print(f"polygons: error: {exc.filename or ''}: {exc.strerror}", file=sys.stderr)
-        return 1
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"polygons: error: {_one_line(where + (exc.strerror or str(exc)))}",
+              file=sys.stderr)
+        return EXIT_ERROR
+    except KeyboardInterrupt:
+        print("polygons: error: interrupted", file=sys.stderr)
+        return 130
+    except Exception as exc:                     # a bug: say so, in one line, and ask for a report
+        print(f"polygons: internal error: {_one_line(f'{type(exc).__name__}: {exc}', 300)} "
+              f"(please report this)", file=sys.stderr)
+        return EXIT_INTERNAL
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -16,6 +16,9 @@ def register(sub) -> None:
     p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
     add_out_option(p)
     p.add_argument("--points", help="comma-separated labels: plan only what these need")
+    p.add_argument("--units", choices=("mm", "si", "imperial"), default="mm",
+                   help="units of the table: mm (positions in mm, speeds in m/s; default), "
+                        "si (m, m/s, m/s²) or imperial (in, ft/s, ft/s²); JSON is always SI")
     p.add_argument("--no-steps", action="store_true", help="leave the construction out of "
                                                           "the table")
     p.add_argument("--svg", metavar="DIR", help="also write the labelled SVG diagrams (as "
@@ -44,7 +47,7 @@ def run(args) -> int:
             data["forces"] = to_dict(forces)
         text = json_text(data)
     else:
-        text = table(sol, steps=not args.no_steps)
+        text = table(sol, steps=not args.no_steps, units=args.units)
         if pins.has_pins(scene):
             text += "\n" + "\n".join(pins.report_lines(sol)) + "\n"
         if forces is not None:

@@ -20,11 +20,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import SceneError, UnknownKeyError, UnknownLabelError, suggest
+from ..errors import SceneError, UnknownLabelError, suggest
+from ..options import labels
 from ..scene import Crank, Scene, load_scene
 from ..sweep import Sweep, harmonic, sweep
 
-SWEEP_KEYS = ("points", "links", "steps", "shm", "unit")
 #: above this many positions the summary draws a progress bar (on a terminal)
 PROGRESS_FROM = 100_000
 #: most points drawn per curve (the maxima are always taken from every position)
@@ -60,37 +60,20 @@ def register(sub) -> None:
 
 
 def _options(scene: Scene, args) -> dict:
-    raw = dict(scene.extra.get("sweep", {}))
-    for key in raw:
-        if key not in SWEEP_KEYS:
-            raise UnknownKeyError(f"unknown key {key!r}: {suggest(key, SWEEP_KEYS)}",
-                                  file=scene.file, where=f"sweep.{key}")
-
-    def labels(value, where):
-        if isinstance(value, str):
-            value = [v.strip() for v in value.split(",") if v.strip()]
-        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-            raise SceneError("expected a list of labels, e.g. [\"B\", \"C\"]", file=scene.file,
-                             where=where)
-        return value
-
-    points = labels(args.points, "--points") if args.points else (
-        labels(raw["points"], "sweep.points") if "points" in raw else None)
-    links = labels(args.links, "--links") if args.links else (
-        labels(raw["links"], "sweep.links") if "links" in raw else None)
-    steps = args.steps if args.steps is not None else raw.get("steps", 360)
-    if isinstance(steps, bool) or not isinstance(steps, int) or steps < 2:
+    """The scene's ``[sweep]`` (checked at load: :mod:`polygons.options`) under the flags."""
+    sw = scene.options.sweep
+    points = list(labels(args.points, file=scene.file, where="--points")) if args.points \
+        else (list(sw.points) if sw.points is not None else None)
+    links = list(labels(args.links, file=scene.file, where="--links")) if args.links \
+        else (list(sw.links) if sw.links is not None else None)
+    steps = args.steps if args.steps is not None else (sw.steps or 360)
+    if steps < 2:
         raise SceneError(f"steps must be a whole number ≥ 2, got {steps!r}", file=scene.file,
-                         where="sweep.steps" if args.steps is None else "--steps")
-    shm = args.shm if args.shm is not None else raw.get("shm", False)
-    if not isinstance(shm, bool):
-        raise SceneError("shm must be true or false", file=scene.file, where="sweep.shm")
-    unit = args.unit or raw.get("unit")
+                         where="--steps")
+    shm = args.shm if args.shm is not None else bool(sw.shm)
+    unit = args.unit or sw.unit
     if unit is None:
         unit = "mm" if max(l.length for l in scene.links.values() if l.length) < 1.0 else "m"
-    if unit not in ("mm", "m"):
-        raise SceneError(f"unit must be 'mm' or 'm', got {unit!r}", file=scene.file,
-                         where="sweep.unit")
     return {"points": points, "links": links, "steps": steps, "shm": shm, "unit": unit}
 
 

@@ -1,0 +1,168 @@
+"""The tables and keys :mod:`polygons.scene` reads, as data (:class:`~polygons.schema.Table`).
+
+The loader takes its lists of allowed keys from here, and ``docs/scene-reference.md`` and
+``polygons/scene.schema.json`` are generated from here (``python -m polygons.reference``), so
+the three cannot drift apart.  A key named ``<LABEL>`` / ``<LINK>`` stands for any point label
+or link name (the entries of ``[ground]``, ``[links]`` ...).
+
+Label grammar: a point label is a capital letter followed by lower-case letters, digits, ``_``
+or primes: ``A``, ``O2``, ``P4``, ``B'``, ``Cx``.  A link is named by its two end labels run
+together: ``AB``, ``O2P2``, ``O4P4``.
+"""
+from __future__ import annotations
+
+from .schema import Key, Table
+
+#: the assembly words (``[assembly] C = "C above AD"``)
+RELATIONS = ("above", "below", "left of", "right of")
+
+_ANSWER_KEYS = (
+    Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
+                              "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
+                              "cor(P), dist(B,A), x(C), y(C), dir_v(C), dir_a(C), "
+                              "angle(P,Q,R), arm(O,P,C)", example='"omega(BC)"', required=True),
+    Key("unit", "string", "the unit of tutorial and exact (any unit of the table below, or "
+                          "'-' for a pure number)", example='"rad/s"', required=True),
+    Key("tutorial", "number", "the tutorial's printed answer, in `unit`", example="7.2"),
+    Key("exact", "number", "the exact answer (from an independent closed form), in `unit`",
+        example="7.213"),
+    Key("mode", "string", "'abs' compares magnitudes, 'signed' signed values",
+        example='"signed"', default="abs"),
+    Key("sense", "string", "the tutorial's direction word (CW, CCW, ...), shown beside the "
+                           "answer", example='"CW"'),
+    Key("tolerance", "quantity", "drawing tolerance for the tutorial value (overrides "
+                                 "[source] drawing_tolerance)", example='"2 %"',
+        dimension="fraction"),
+    Key("slip", "bool", "the printed value is a known slip: the solver must NOT reproduce it",
+        example="true", default=False),
+    Key("ref", "string", "key of the answer in the reference cases.json", example='"omega_BC"'),
+    Key("desc", "string", "the words printed beside the answer", example='"ω of BC"'),
+    Key("note", "string", "a remark shown with the comparison", example='"read off Fig. 3"'),
+)
+
+TOP = Table("", "Top-level keys.", (
+    Key("title", "string", "the heading of reports, drawings and handouts; default: the file "
+                           "name", example='"Worked example 4"'),
+    Key("solve", "array", "which polygons to construct: ['velocity'] or ['velocity', "
+                          "'acceleration']", example='["velocity"]',
+        default=["velocity", "acceleration"]),
+))
+
+TABLES: tuple[Table, ...] = (
+    TOP,
+    Table("source", "Where the case comes from (shown in reports and handouts; all optional).", (
+        Key("id", "string", "case identifier", example='"S001-WE4"'),
+        Key("seed", "string", "the source document", example='"tutorial 1"'),
+        Key("example", "string", "the example's number in the source", example='"4"'),
+        Key("category", "string", "kind of mechanism or question", example='"slider-crank"'),
+        Key("statement", "string", "the problem statement as printed", example='"..."'),
+        Key("conventions", "string", "the source's sign or naming conventions", example='"..."'),
+        Key("notes", "string", "remarks", example='"..."'),
+        Key("backsolved", "string", "which data were back-solved from printed answers",
+            example='"BC from the printed ω"'),
+        Key("slips", "string", "known slips of the source", example='"..."'),
+        Key("mechanism", "string", "the mechanism in words", example='"four-bar"'),
+        Key("synthetic", "bool", "the geometry is a stand-in for a missing figure",
+            example="true", default=False),
+        Key("drawing_tolerance", "quantity", "relative tolerance of the tutorial's drawn "
+                                             "answers", example='"3 %"', dimension="fraction",
+            default="3 %"),
+    )),
+    Table("ground", "Fixed pivots: one entry per label, its coordinates.", (
+        Key("<LABEL>", "point", "position [x, y] of a fixed pivot", example='["0 mm", "0 mm"]',
+            dimension="length", sign="x to the right, y up"),
+    ), required=True),
+    Table("links", "Binary links, named by their two end labels.", (
+        Key("<LINK>", "length_or_drawn", "the link's length, or \"drawn\" to take it from the "
+                                  "positions in [ground]/[drawn]; a slotted lever whose "
+                                  "length is not needed is left out", example='"50 mm"',
+            dimension="length"),
+    ), required=True),
+    Table("driver", "The input: a crank turning about its first label, or a slider pushed "
+                    "along its guide (give exactly one of crank / slider).", (
+        Key("crank", "link", "the driving link, pivot label first (the pivot must be in "
+                             "[ground])", example='"AB"'),
+        Key("angle", "quantity", "crank angle, CCW from +x (reduced to one turn exactly; "
+                                 "beyond ±1e6° refused); default: from the tip's [drawn] "
+                                 "position", example='"60 deg"', dimension="angle",
+            sign="CCW from +x"),
+        Key("omega", "quantity", "crank speed (magnitude; its sense is `sense`); 0 for an "
+                                 "instant at rest", example='"300 rad/s"',
+            dimension="angular_velocity"),
+        Key("sense", "string", "sense of rotation: 'CW' or 'CCW' (also clockwise, "
+                               "anticlockwise, counter-clockwise)", example='"CW"'),
+        Key("alpha", "quantity", "crank angular acceleration (magnitude)",
+            example='"80000 rad/s^2"', dimension="angular_acceleration", default="0 rad/s^2"),
+        Key("alpha_sense", "string", "sense of alpha, 'CW' or 'CCW' (needed when alpha ≠ 0; "
+                                     "independent of `sense`)", example='"CCW"'),
+        Key("slider", "label", "a slider as the driver: the point pushed along its "
+                               "[sliders.X] guide", example='"C"'),
+        Key("position", "quantity", "slider driver: position along the guide, from the "
+                                    "guide's `through` point in its `direction`",
+            example='"120 mm"', dimension="length", sign="positive along `direction`"),
+        Key("velocity", "quantity", "slider driver: velocity along the guide",
+            example='"2 m/s"', dimension="velocity", sign="positive along `direction`"),
+        Key("acceleration", "quantity", "slider driver: acceleration along the guide",
+            example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2",
+            sign="positive along `direction`"),
+    ), required=True),
+    Table("sliders", "[sliders.C]: point C slides on a fixed straight guide (or, with pin and "
+                     "slot, is the yoke of a Scotch yoke).", (
+        Key("through", "point", "a point of the guide line", example='["0 mm", "0 mm"]',
+            dimension="length", required=True),
+        Key("direction", "quantity", "direction of the guide, CCW from +x",
+            example='"0 deg"', dimension="angle", required=True, sign="CCW from +x"),
+        Key("pin", "label", "Scotch yoke: the placed pin sliding in the yoke's slot",
+            example='"B"'),
+        Key("slot", "quantity", "Scotch yoke: direction of the slot (not parallel to the "
+                                "guide)", example='"90 deg"', dimension="angle",
+            sign="CCW from +x"),
+    ), many=True),
+    Table("slots", "[slots.P]: pin P slides in the straight slot of a lever pivoted at a fixed "
+                   "point (quick return, Coriolis).  A slotted lever with a length in [links] "
+                   "may carry a further rod from its far end.", (
+        Key("lever", "link", "the slotted lever, pivot label first (the pivot in [ground])",
+            example='"BC"', required=True),
+        Key("coincident", "label", "the point of the lever under the pin at this instant "
+                                   "(required when the lever has a length; otherwise it is the "
+                                   "lever's second label)", example='"A1"'),
+    ), many=True),
+    Table("points", "[points.D]: a point rigid with a link (coupler point, a continuation, a "
+                    "mid-point).", (
+        Key("on", "link", "the link (as named in [links], or a slotted lever)",
+            example='"AB"', required=True),
+        Key("along", "quantity", "distance from the link's FIRST label towards its second "
+                                 "(negative: behind the first label); or use fraction",
+            example='"168 mm"', dimension="length",
+            sign="from the first label of `on` towards the second"),
+        Key("fraction", "quantity", "position as a fraction of the link from its first label "
+                                    "(0.5: the mid-point); or use along", example="0.5",
+            dimension="fraction"),
+        Key("left", "quantity", "perpendicular offset, positive to the LEFT of the direction "
+                                "first label → second label", example='"10 mm"',
+            dimension="length", default="0 m",
+            sign="positive to the left of first → second label"),
+    ), many=True),
+    Table("assembly", "Which of the two closures of a dyad, in words: C = \"C above AD\", "
+                      "\"below AD\", \"left of B\", \"right of B\" (the leading label is "
+                      "optional; the reference is a point or a line of two points), or "
+                      "C = { near = [x, y] }.", (
+        Key("<LABEL>", "branch", "'above', 'below', 'left of' or 'right of' a point or a line "
+                                 "of two labels, or an inline table { near = [x, y] }",
+            example='"C right of A"'),
+    )),
+    Table("drawn", "The space diagram as drawn: coordinates of moving points at this instant "
+                   "(picks the closure nearest to it, gives lengths written \"drawn\" and the "
+                   "crank angle when `angle` is omitted; checked against [assembly] to 0.1 % "
+                   "of the mechanism's size).", (
+        Key("<LABEL>", "point", "the drawn position [x, y]", example='["135 mm", "26 mm"]',
+            dimension="length"),
+    )),
+    Table("answers", "[[answers]]: the tutorial's printed answers and the exact ones (used by "
+                     "the tests and printed in the report).", _ANSWER_KEYS, array=True),
+)
+
+#: table name -> its key names (the loader's allowed lists)
+KEYS = {t.name: tuple(k.name for k in t.keys) for t in TABLES}
+TOP_KEYS = KEYS[""] + tuple(t.name for t in TABLES if t.name)
+ANSWER_KEYS = KEYS["answers"]
