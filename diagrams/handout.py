@@ -279,6 +279,8 @@ def redact_answers(text: str) -> str:
 
 
 # ---------------------------------------------------------------- the document
+from .notation import HTML_CSS as NOTATION_CSS  # noqa: E402
+
 CSS = """
 @page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
 @page wide { size: A4 landscape; margin: 10mm; }
@@ -343,7 +345,7 @@ table.wide td.q { width: 30%; }
   section.plate { border-top: 0.3mm dashed #999; margin-top: 8mm; padding-top: 4mm;
                   overflow-x: auto; }
 }
-"""
+""" + NOTATION_CSS + "\n"
 
 
 class _Doc:

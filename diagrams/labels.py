@@ -165,9 +165,11 @@ class Placer:
         return self.place_any(text, size, [(at, dirs)], prefer=prefer, distances=distances)
 
     def place_any(self, text: str, size: float, anchors, *, prefer: float | None = None,
-                  distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), extra_cost=None
-                  ) -> tuple[float, float, str, Box]:
-        """Like :meth:`place` over several (point, directions) anchors; the cheapest wins."""
+                  distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), extra_cost=None,
+                  required: bool = True) -> tuple[float, float, str, Box] | None:
+        """Like :meth:`place` over several (point, directions) anchors; the cheapest wins.
+
+        With ``required`` False, None when no candidate is free (nothing is placed)."""
         w = width(text, size)
         h = (ASCENT + DESCENT) * size
         best = None
@@ -193,6 +195,8 @@ class Placer:
                         best = (c, box)
             if best is not None and best[0] < (rank + 1) * 0.9:
                 break
+        if best is None and not required:
+            return None
         if best is None:   # nothing free anywhere: park it beside the first anchor, far out
             at = anchors[0][0]
             best = (math.inf, Box(at[0] + 14, at[1] + 2, at[0] + 14 + w, at[1] + 2 + h))

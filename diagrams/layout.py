@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from .labels import Box
-from .model import Drawing, Group, Segment, Text
+from .model import Arrow, Drawing, Group, Segment, Text
 from .scale import Scale
 from .text import ASCENT, DESCENT, display, plain, width, wrap
 
@@ -19,6 +19,7 @@ LEGEND_SIZE = 2.8
 CAPTION_SIZE = 3.0
 SCALE_SIZE = 2.6
 LINE = 1.45           # line spacing, × font size
+KEY_SAMPLE = 9.0      # length (mm) of a key's sample line
 
 
 def arrow_head(tail, tip, length=3.0, half=1.0, open_head=False):
@@ -81,17 +82,24 @@ def _text_lines(lines, size, role, x, top, weight="normal", faded=False):
 
 def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: str,
             desc: str, content: list[Group], content_box: Box, legend: list[tuple[str, str]],
-            scale: Scale, caption: list[str], scale_statement: str, meta: dict) -> Drawing:
+            scale: Scale, caption: list[str], scale_statement: str, meta: dict,
+            key: list[tuple[str, str, bool]] = ()) -> Drawing:
     """Put the drawing (``content`` inside ``content_box``, content coordinates) on a page.
 
-    ``legend`` is a list of (text, weight); ``caption`` a list of paragraphs.
+    ``legend`` is a list of (text, weight); ``caption`` a list of paragraphs; ``key`` the
+    line styles drawn, as (style, words, arrow?), shown as samples above the legend.
     """
     cw, ch = content_box.x1 - content_box.x0, content_box.y1 - content_box.y0
-    legend_w = max((width(t, LEGEND_SIZE) for t, _ in legend), default=0.0)
-    legend_h = len(legend) * LINE * LEGEND_SIZE
+    key_rows = ([("Key:", "bold")] + [(w, "normal") for _, w, _ in key]) if key else []
+    legend_w = max([width(t, LEGEND_SIZE) for t, _ in legend]
+                   + [KEY_SAMPLE + 2.0 + width(t, LEGEND_SIZE) for t, _ in key_rows[1:]]
+                   + [width(t, LEGEND_SIZE) for t, _ in key_rows[:1]], default=0.0)
+    if key and legend:
+        key_rows.append(("", "normal"))
+    legend_h = (len(legend) + len(key_rows)) * LINE * LEGEND_SIZE
     bar, bar_w, bar_h = scale_bar(scale, max(cw, 60.0))
     title_w = max(width(title, TITLE_SIZE), width(subtitle, SUBTITLE_SIZE))
-    inner_w = max(cw + ((GAP + legend_w) if legend else 0.0), bar_w, title_w, 120.0)
+    inner_w = max(cw + ((GAP + legend_w) if (legend or key) else 0.0), bar_w, title_w, 120.0)
     cap_lines: list[str] = []
     for para in caption:
         cap_lines += wrap(para, inner_w, CAPTION_SIZE)
@@ -111,10 +119,32 @@ def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: st
     dx = MARGIN - content_box.x0
     dy = body_top - content_box.y1
     groups += [g.moved(dx, dy) for g in content]
-    if legend:
+    body_top_legend = body_top
+    if key:
         lx = MARGIN + cw + GAP
         items = []
         y = body_top - ASCENT * LEGEND_SIZE
+        for i, (text, weight) in enumerate(key_rows):
+            if 1 <= i <= len(key):
+                style, _, is_arrow = key[i - 1]
+                ym = y + 0.3 * LEGEND_SIZE
+                a, b = (lx, ym), (lx + KEY_SAMPLE, ym)
+                if is_arrow:
+                    open_head = style.startswith("c-coriolis")
+                    head, shaft = arrow_head(a, b, 2.2, 0.8, open_head)
+                    items.append(Arrow(a, b, style, head, shaft, role="key"))
+                else:
+                    items.append(Segment(a, b, style, cls="key-sample"))
+                items.append(Text(lx + KEY_SAMPLE + 2.0, y, text, LEGEND_SIZE, role="key"))
+            elif text:
+                items.append(Text(lx, y, text, LEGEND_SIZE, role="key", weight=weight))
+            y -= LINE * LEGEND_SIZE
+        groups.append(Group("key", "key", "Key: one line style per component", tuple(items)))
+        body_top_legend = y + ASCENT * LEGEND_SIZE
+    if legend:
+        lx = MARGIN + cw + GAP
+        items = []
+        y = body_top_legend - ASCENT * LEGEND_SIZE
         for text, weight in legend:
             items.append(Text(lx, y, text, LEGEND_SIZE, role="legend", weight=weight))
             y -= LINE * LEGEND_SIZE

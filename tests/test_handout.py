@@ -31,7 +31,8 @@ def run(*args, cwd=None):
 def text_of(page: str) -> str:
     """What a reader sees: tags and the inline SVGs' markup removed, entities decoded."""
     page = re.sub(r"<style>.*?</style>", " ", page, flags=re.S)
-    page = re.sub(r"<(sub|sup)>(.*?)</\1>", r"\2", page)
+    page = re.sub(r'<span class="subsup">(.*?)</span>', r"\1", page)
+    page = re.sub(r"</?(sub|sup|tspan)\b[^>]*>", "", page)
     page = re.sub(r"<[^>]+>", " ", page)
     return re.sub(r"\s+", " ", htmllib.unescape(page))
 
