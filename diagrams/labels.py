@@ -14,6 +14,9 @@ from .text import ASCENT, DESCENT, width
 
 Pt = tuple[float, float]
 
+#: clear space (mm) kept between two labels, so they never touch
+LABEL_GAP = 0.35
+
 
 @dataclass(frozen=True)
 class Box:
@@ -132,7 +135,8 @@ class Placer:
         self.boxes.append(box)
 
     def free(self, box: Box) -> bool:
-        if any(box.overlaps(b) for b in self.boxes):
+        gapped = box.grown(LABEL_GAP)
+        if any(gapped.overlaps(b) for b in self.boxes):
             return False
         return not any(box_hits_segment(box, a, b, c) for a, b, c in self.hard_segments)
 

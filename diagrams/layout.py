@@ -130,7 +130,7 @@ def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: st
                 ym = y + 0.3 * LEGEND_SIZE
                 a, b = (lx, ym), (lx + KEY_SAMPLE, ym)
                 if is_arrow:
-                    open_head = style.startswith("c-coriolis")
+                    open_head = style.startswith("c-coriolis") or style == "input-alpha"
                     head, shaft = arrow_head(a, b, 2.2, 0.8, open_head)
                     items.append(Arrow(a, b, style, head, shaft, role="key"))
                 else:

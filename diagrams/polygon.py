@@ -526,7 +526,7 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))
         for m in lay.con.measures:
-            out.append((join_vectors(measure_text(m, sol), lay.con.vertices), "normal"))
+            out.append((join_vectors(measure_text(m, sol, lay.con), lay.con.vertices), "normal"))
     return out
 
 
@@ -541,18 +541,25 @@ def along_words(angle: float) -> str:
     return names[k] + ("" if exact else f" ({number(deg, 4)}°)")
 
 
-def _slider_sense(m: Step, sol: Solution | None) -> str:
-    """' to the left (along the guide)': the sense of a signed slider/slide measure."""
+def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None) -> str:
+    """' to the left': the sense of a signed slider measure (along its guide) or slide
+    measure (the way its sliding vector is drawn)."""
     if sol is None or m.value in (None, 0):
         return ""
     guide = next((sol.scene.sliders[a] for a in m.args if a in sol.scene.sliders), None)
-    if guide is None:
-        return ""
-    ang = guide.angle + (0.0 if m.value > 0 else math.pi)
-    return f" {along_words(ang)}"
+    if guide is not None:
+        return f" {along_words(guide.angle + (0.0 if m.value > 0 else math.pi))}"
+    if con is not None and m.theorem == "sliding":
+        arrow = next((st for st in con.strokes if st.kind == "arrow"
+                      and st.component == "sliding"), None)
+        if arrow is not None:
+            d = (arrow.b[0] - arrow.a[0], arrow.b[1] - arrow.a[1])
+            return (f" {along_words(math.atan2(d[1], d[0]))} "
+                    f"({vector(arrow.frm, arrow.to)})")
+    return ""
 
 
-def measure_text(m: Step, sol: Solution | None = None) -> str:
+def measure_text(m: Step, sol: Solution | None = None, con: Construction | None = None) -> str:
     """'ω_BC = 45.62 rad/s CW  (bc / BC)': a measure step's value, its sense, its formula;
     a signed slider result with its direction words ('1589 m/s² to the left')."""
     unit = display(m.unit)
@@ -562,7 +569,7 @@ def measure_text(m: Step, sol: Solution | None = None) -> str:
         sense = "" if m.value == 0 else (" CCW" if m.value > 0 else " CW")
         val = f"{number(abs(m.value))} {unit}{sense}"
     else:
-        words = _slider_sense(m, sol)
+        words = _slider_sense(m, sol, con)
         val = (f"{number(abs(m.value))} {unit}{words}" if words
                else f"{number(m.value)} {unit}")
     rhs = m.formula.split("=", 1)[1].strip() if "=" in m.formula else ""

@@ -142,7 +142,8 @@ class _Writer:
                     look = LOOKS[it.style[2:].removesuffix("-new")]
                     ink, open_head = look.colour, look.open_head
                 else:
-                    ink, open_head = (FADED if it.faded else INK), it.role == "coriolis"
+                    ink = FADED if it.faded else INK
+                    open_head = it.role == "coriolis" or it.style == "input-alpha"
                 hk = {}
                 if it.faded and it.style.startswith("c-"):
                     hk = {"fill_opacity": FADED_OPACITY, "stroke_opacity": FADED_OPACITY}

@@ -16,7 +16,7 @@ import diagrams
 from conftest import CASES, case_files
 from diagrams import measure, polygon, scale
 from diagrams.labels import Box, box_hits_segment, text_box
-from diagrams.model import Arrow, Segment, Text
+from diagrams.model import Arrow, Polyline, Segment, Text
 from diagrams.components import LOOKS
 from diagrams.notation import JOIN
 from diagrams.svg import to_svg
@@ -168,30 +168,54 @@ def test_arrows_join_their_vertices_in_the_sense_of_the_step_vectors(path):
 
 
 # ---------------------------------------------------------------- labels do not overlap
+LABEL_ROLES = ("vertex", "line", "component", "point", "input")
+
+
 def _label_boxes(d):
+    """(text, box) of every label of the drawing, boxes from the typeset widths."""
     out = []
     for t in d.items():
-        if isinstance(t, Text) and t.role in ("vertex", "line", "coriolis", "point", "input"):
+        if isinstance(t, Text) and t.role in LABEL_ROLES:
             out.append((t.text, text_box(t.x, t.baseline, t.text, t.size, t.anchor)))
     return out
 
 
+def _strokes(d):
+    """(what, a, b, clearance) of every drawn stroke a label must keep clear of: vectors,
+    links, the input arcs and arrows, the Coriolis offset and its right-angle mark."""
+    out = []
+    for it in d.items():
+        if isinstance(it, Arrow):
+            out.append((f"vector {it.name}" if it.role != "input" else "input arrow",
+                        it.tail, it.tip, 0.5 if it.role != "input" else 0.2))
+        elif isinstance(it, Segment) and (it.style == "link" or "offset" in it.cls
+                                          or "right-angle" in it.cls):
+            out.append((it.cls or it.style, it.a, it.b, 0.3))
+        elif isinstance(it, Polyline) and it.style.startswith("input"):
+            out += [("input arc", p, q, 0.2) for p, q in zip(it.points, it.points[1:])]
+        elif isinstance(it, Polyline) and it.style == "ground":
+            pts = it.points + it.points[:1]
+            out += [("fixed-pivot symbol", p, q, 0.2) for p, q in zip(pts, pts[1:])]
+        elif isinstance(it, Segment) and it.style in ("ground", "hatch"):
+            out.append(("fixed-pivot hatching", it.a, it.b, 0.1))
+    return out
+
+
 @pytest.mark.parametrize("path", FILES, ids=IDS)
-def test_labels_overlap_neither_vectors_nor_each_other(path):
+def test_labels_overlap_neither_vectors_arcs_nor_each_other(path):
+    """Every shipped case, every space/velocity/acceleration drawing and stage: no label box
+    overlaps another label, and none touches a vector, link, input arc or offset."""
     sol, ds = solved(path)
     for d in ds:
         boxes = _label_boxes(d)
         for i, (ta, a) in enumerate(boxes):
             for tb, b in boxes[i + 1:]:
-                assert not a.overlaps(b), f"{d.name}: labels {ta!r} and {tb!r} overlap"
+                assert not a.grown(0.2).overlaps(b), f"{d.name}: labels {ta!r} and {tb!r} touch"
+        strokes = _strokes(d)
         for t, b in boxes:
-            for it in d.items():
-                if isinstance(it, Arrow) and it.role != "input":
-                    assert not box_hits_segment(b, it.tail, it.tip, 0.5), \
-                        f"{d.name}: label {t!r} lies on vector {it.name}"
-                if isinstance(it, Segment) and it.style == "link":
-                    assert not box_hits_segment(b, it.a, it.b, 0.3), \
-                        f"{d.name}: label {t!r} lies on a link"
+            for what, p, q, clearance in strokes:
+                assert not box_hits_segment(b, p, q, clearance), \
+                    f"{d.name}: label {t!r} touches {what}"
 
 
 @pytest.mark.parametrize("path", FILES, ids=IDS)
@@ -379,23 +403,70 @@ def test_cairosvg_renders_the_fig7_diagrams_with_the_arrows_where_the_svg_says()
 
 
 def test_styles_carry_meaning_without_colour():
+    """One look per component kind, told apart in greyscale by width and dash pattern alone."""
+    velocity = ("given", "relative", "sliding", "image", "resultant", "construction")
+    acceleration = ("given", "centripetal", "tangential", "sliding", "coriolis", "image",
+                    "resultant", "construction")
+    for kinds in (velocity, acceleration):      # the kinds one diagram can show together
+        assert len({(LOOKS[k].width, LOOKS[k].dash) for k in kinds}) == len(kinds)
     sol, ds = solved(CASES / "s003-fig7.toml")
     root = ET.fromstring(to_svg(finals(ds)["acceleration"]))
-    def widths(role):
+    def widths(kind):
         out = []
         for g in root.iter(SVG + "g"):
             cls = (g.get("class") or "").split()
-            if cls[:2] == ["vector", role]:
+            if cls[:1] == ["vector"] and kind in cls:
                 line = next(g.iter(SVG + "line"))
                 out.append((float(line.get("stroke-width")), line.get("stroke-dasharray")))
         return out
-    assert all(w > 0.8 and dash is None for w, dash in widths("coriolis"))
-    assert all(w < 0.6 and dash is None for w, dash in widths("known"))
-    assert all(dash for _, dash in widths("result"))       # the absolute vector is dotted
-    heads = [g for g in root.iter(SVG + "g") if "coriolis" in (g.get("class") or "")]
+    assert widths("coriolis") and all(w > 0.8 and dash is None for w, dash in widths("coriolis"))
+    assert widths("centripetal") and all(w < 0.6 and dash is None
+                                         for w, dash in widths("centripetal"))
+    assert widths("tangential") and all(dash for _, dash in widths("tangential"))
+    assert all(dash for _, dash in widths("resultant"))       # the absolute vector is dotted
+    heads = [g for g in root.iter(SVG + "g") if "coriolis" in (g.get("class") or "").split()]
     assert heads[0].find(f".//{SVG}polygon").get("fill") == "#ffffff"   # open head
     dashed = [l for l in root.iter(SVG + "line") if "construction-line" in (l.get("class") or "")]
     assert dashed and all(l.get("stroke-dasharray") for l in dashed)
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_every_drawing_has_a_key_of_what_it_draws(path):
+    sol, ds = solved(path)
+    for d in ds:
+        keys = {t.text for t in d.items("key") if isinstance(t, Text)}
+        assert "Key:" in keys, d.name
+        if d.kind == "space":
+            continue
+        drawn = {a.style[2:].removesuffix("-new") for a in d.items() if isinstance(a, Arrow)}
+        for kind in drawn:
+            assert LOOKS[kind].name in keys, (d.name, kind)
+
+
+def test_sae4_q3_closes_to_the_asked_od_and_a_d():
+    """SAE4 Q3 asks v_D and a_D: od and the acceleration od are drawn from the pole, named
+    and printed (exact 2.666 m/s and 440.3 m/s² from the closed-form check below)."""
+    sol, ds = solved(CASES / "s001-sae4-q3.toml")
+    f = finals(ds)
+    import numpy as np
+    vd, ad = (np.hypot(*sol.points["D"].velocity), np.hypot(*sol.points["D"].acceleration))
+    # independent: D on AB produced, v_D = v_A + ω_AB × AD (loop closure of the rigid link)
+    a, b, dpt = (np.array(sol.points[k].position) for k in "ABD")
+    va, vb = np.array(sol.points["A"].velocity), np.array(sol.points["B"].velocity)
+    t = np.linalg.norm(dpt - a) / np.linalg.norm(b - a)
+    assert vd == pytest.approx(np.linalg.norm(va + t * (vb - va)), rel=1e-9)
+    assert round(vd, 3) == 2.666 and round(ad, 1) == 440.3
+    for kind, value, name in (("velocity", vd, "v_D"), ("acceleration", ad, "a_D")):
+        d = f[kind]
+        od = [x for x in d.items() if isinstance(x, Arrow) and (x.frm, x.to) == ("o", "d")]
+        assert len(od) == 1, kind
+        labels = {t.text for t in d.items() if isinstance(t, Text)}
+        assert name in labels, kind
+        legend = [t.text for t in d.items("legend") if isinstance(t, Text)]
+        row = next(r for r in legend if r.startswith(f"o{JOIN}d ="))
+        assert f"= {value:.4g}" in row and "asked" in row, row
+        ad_row = next(r for r in legend if r.startswith(f"a{JOIN}d ="))
+        assert name not in ad_row.split()[-1:]       # ad is D relative to A, not v_D
 
 
 # ---------------------------------------------------------------- architecture
