@@ -33,14 +33,18 @@ from polygons.scene import Crank
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
 
 DRAWABLE = ("vector", "image", "line", "intersection")
-#: printable area (mm) of an A4 page with the margins of the stylesheet below
+#: printable area (mm) of an A4 page with the margins of the stylesheet below (every page
+#: portrait: one orientation throughout)
 PORTRAIT = (180.0, 262.0)
-LANDSCAPE = (277.0, 188.0)
-#: width (mm) of a stage figure inside the narration
-STAGE_WIDTH = 110.0
+#: width (mm) of a stage figure: the narration runs in two columns, two or three stages a page
+STAGE_WIDTH = 86.0
+#: the scale bar's numbers on a reduced stage figure are printed at least this high (mm)
+PRINTED_SCALE_TEXT = 2.3
+#: tallest printed stage figure (mm)
+STAGE_HEIGHT = 52.0
 #: empty drawing areas of the worksheet (mm, inside their 4 mm side margins and above their
 #: 14 mm scale bar): A5 when the key's drawing fits it, else as large as a page allows
-AREAS = {"A5": (150.0, 100.0), "landscape": (268.0, 150.0), "portrait": (172.0, 222.0)}
+AREAS = {"A5": (150.0, 100.0), "portrait": (172.0, 222.0)}
 
 UNIT_OF = {"velocity": "m/s", "acceleration": "m/s²"}
 WHAT = {"velocity": "velocity", "acceleration": "acceleration"}
@@ -63,14 +67,46 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
     out = Figures()
     for d in diagrams.drawings(sol, scales, paper, True):
         out.drawing[d.name] = d
-        out.svg[d.name] = to_svg(trimmed(d) if d.stage is not None else d)
+        if d.stage is not None:
+            t = trimmed(d, ("heading", "caption", "key", "legend"))
+            t = trimmed(readable_scale_bar(t, stage_width(t.width, t.height) / t.width),
+                        ("heading", "caption", "key", "legend"))
+            out.svg[d.name] = to_svg(t)
+        else:
+            out.svg[d.name] = to_svg(d)
     return out
 
 
-def stage_width(natural: float) -> float:
-    """Printed width (mm) of a stage figure ``natural`` mm wide: at most the column, at least
-    60 % of full size for wide drawings so their labels stay legible."""
-    return min(natural, max(STAGE_WIDTH, 0.6 * natural), 172.0)
+def readable_scale_bar(d, reduction: float):
+    """``d`` with its scale bar redrawn so its numbers print at least
+    :data:`PRINTED_SCALE_TEXT` mm high once the figure is reduced by ``reduction``."""
+    from dataclasses import replace
+
+    from .layout import SCALE_SIZE, scale_bar
+    from .model import Segment
+    lay = d.meta.get("layout")
+    if lay is None or reduction >= 1.0:
+        return d
+    size = max(SCALE_SIZE, PRINTED_SCALE_TEXT / reduction)
+    groups = []
+    for g in d.groups:
+        if g.ident != "scale-bar":
+            groups.append(g)
+            continue
+        line = next(it for it in g.items if isinstance(it, Segment))
+        x0, y0 = line.a
+        bar, _, _ = scale_bar(lay.scale, line.b[0] - line.a[0] + 0.01, size=size)
+        groups.append(bar.moved(x0, y0 - (size - SCALE_SIZE) * 1.2))   # clear of the drawing
+    return replace(d, groups=tuple(groups))
+
+
+def stage_width(natural: float, height: float | None = None) -> float:
+    """Printed width (mm) of a stage figure ``natural`` × ``height`` mm: one of the two
+    columns, and no taller than :data:`STAGE_HEIGHT` so three rows of stages fit a page."""
+    w = min(natural, STAGE_WIDTH)
+    if height:
+        w = min(w, STAGE_HEIGHT * natural / height)
+    return w
 
 
 def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3.0):
@@ -283,7 +319,6 @@ from .notation import HTML_CSS as NOTATION_CSS  # noqa: E402
 
 CSS = """
 @page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
-@page wide { size: A4 landscape; margin: 10mm; }
 html { background: #ffffff; }
 body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 10.5pt;
        line-height: 1.42; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
@@ -309,6 +344,10 @@ td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space:
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
 li.step { margin: 0 0 4mm 0; break-inside: avoid; page-break-inside: avoid; }
+ol.steps.staged { display: grid; grid-template-columns: 1fr 1fr; column-gap: 5mm; }
+ol.steps.staged li.step { margin: 0 0 3mm 0; font-size: 9.5pt; }
+ol.steps.staged figure { margin: 1mm 0 0 0; }
+ol.steps.staged > aside.explain { grid-column: 1 / -1; margin: 0 0 3mm 0; }
 li.step .say { margin: 0.5mm 0; }
 li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
                display: inline-block; min-width: 8mm; }
@@ -322,10 +361,9 @@ figure { margin: 1.5mm 0 1mm 8mm; break-inside: avoid; page-break-inside: avoid;
 figure svg { display: block; max-width: 100%; height: auto; }
 figure svg.drawing-area { max-width: none; }
 figcaption, .figure-note { font-size: 8.5pt; color: #333; }
-section.plate { page: wide; break-before: page; page-break-before: always; }
+section.plate { break-inside: avoid; page-break-inside: avoid; margin-top: 4mm; }
 section.plate figure { margin: 0; }
 section.plate h3 { margin-top: 0; }
-section.plate.portrait { page: auto; }
 .note { font-size: 9.5pt; }
 .slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
 .about p { font-size: 9pt; color: #222; margin: 0.5mm 0 1.5mm 0; }
@@ -516,19 +554,11 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
         return
     w, h = svg_size(svg)
     room_p = _room(intro, PORTRAIT[0], level)
-    room_l = _room(intro, LANDSCAPE[0], level)
     if w <= PORTRAIT[0] and h <= PORTRAIT[1] - room_p:
         cls, width, reduced = "plate portrait", w, None
-    elif w <= LANDSCAPE[0] and h <= LANDSCAPE[1] - room_l:
-        cls, width, reduced = "plate", w, None
     else:
-        k_land = min(LANDSCAPE[0] / w, (LANDSCAPE[1] - room_l) / h)
-        k_port = min(PORTRAIT[0] / w, (PORTRAIT[1] - room_p) / h)
-        if k_port >= k_land:
-            cls, k = "plate portrait", k_port
-        else:
-            cls, k = "plate", k_land
-        width, reduced = w * k, k
+        k = min(PORTRAIT[0] / w, (PORTRAIT[1] - room_p) / h)
+        cls, width, reduced = "plate portrait", w * k, k
     doc.add(f'<section class="{cls}" id="{esc(ident or "plate-" + name)}">\n'
             f"<{level}>{esc(heading)}</{level}>\n{intro}")
     doc.add(f'<figure class="diagram full">{inline_svg(svg, name, "figure", width, label)}'
@@ -608,14 +638,14 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                 f"line in black and the earlier ones in grey, with the scale bar it is drawn "
                 f"to (the stage figures may be reduced: measure on the finished {what} "
                 f"diagram that follows them, printed full size when the page allows).</p>\n")
-    doc.add(f'<ol class="steps" id="{diagram}-steps">\n')
+    doc.add(f'<ol class="steps{"" if worksheet else " staged"}" id="{diagram}-steps">\n')
     for step in sol.steps:
         if step.diagram != diagram:
             continue
         for key in _explains_for(step):
             _explain(doc, key)
         k = stage_of(sol, step)
-        fig_ref = f" (Fig. {letter(k)})" if k is not None and not worksheet else ""
+        fig_ref = f" (stage {k})" if k is not None and not worksheet else ""
         doc.add(f'<li class="step" id="{diagram}-step-{step.number}" '
                 f'data-step="{step.number}">\n'
                 f'<p class="say"><span class="num">{step.number}.</span>'
@@ -630,10 +660,10 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
             name = f"{diagram}-{k}" if k is not None else None
             if name and name in figs.svg:
                 svg = figs.svg[name]
-                w, _ = svg_size(svg)
+                w, h = svg_size(svg)
                 doc.add(f'<figure class="diagram stage">'
-                        f"{inline_svg(svg, name, 'figure', stage_width(w), f'{what} diagram, Fig. {letter(k)}')}"
-                        f"<figcaption>Fig. {letter(k)}: {what} diagram, stage {k}"
+                        f"{inline_svg(svg, name, 'figure', stage_width(w, h), f'{what} diagram, stage {k}')}"
+                        f"<figcaption>Stage {k} of the {what} diagram"
                         f"</figcaption></figure>\n")
         doc.add("</li>\n")
     doc.add("</ol>\n")
@@ -682,12 +712,12 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     frame = lay.frame
     fw, fh = frame.x1 - frame.x0, frame.y1 - frame.y0
     k = 1.0
-    for name in ("A5", "landscape", "portrait"):
+    for name in ("A5", "portrait"):
         aw, ah = AREAS[name]
         if fw <= aw and fh <= ah:
             break
     else:
-        name = "landscape"
+        name = "portrait"
         aw, ah = AREAS[name]
         scale = make(scale.quantity, round_up(scale.per_cm * max(fw / aw, fh / ah)))
         k = lay.scale.per_cm / scale.per_cm
@@ -698,7 +728,7 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     svg = grid_svg(aw, ah, scale.statement, scale.per_cm_display, plain_text(scale.unit),
                    f"area-{diagram}", f"Empty drawing area for the {what} diagram, "
                    f"scale {scale.statement}", pole, f"pole {sol.pole}: start here")
-    cls = "plate" if name == "landscape" else "plate portrait"
+    cls = "plate portrait"
     note = (f"True size at 100 % print scale: {scale.statement}; grid squares 5 mm. The ring "
             f"marks a pole position that leaves room for the whole diagram.")
     if k != 1.0:

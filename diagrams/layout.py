@@ -38,7 +38,8 @@ def arrow_head(tail, tip, length=3.0, half=1.0, open_head=False):
     return head, (bx + ux * back, by + uy * back)
 
 
-def scale_bar(scale: Scale, max_len_mm: float) -> tuple[Group, float, float]:
+def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE
+              ) -> tuple[Group, float, float]:
     """A bar of whole centimetres with ticks and values, and the stated scale.
 
     Returns (group at origin, width, height).  Its statement text has id 'scale-statement'
@@ -48,7 +49,7 @@ def scale_bar(scale: Scale, max_len_mm: float) -> tuple[Group, float, float]:
     # label every k-th centimetre so the numbers do not collide
     vals = [plain(round(i * scale.per_cm_display, 12)) for i in range(n + 1)]
     k = 1
-    while any(width(v, SCALE_SIZE) + 2.0 > 10.0 * k for v in vals) and k < n:
+    while any(width(v, size) + 2.0 > 10.0 * k for v in vals) and k < n:
         k += 1
     items = [Segment((0.0, 0.0), (10.0 * n, 0.0), "scalebar", cls="scale-bar-line")]
     tick_y = 1.5
@@ -56,17 +57,17 @@ def scale_bar(scale: Scale, max_len_mm: float) -> tuple[Group, float, float]:
         items.append(Segment((10.0 * i, 0.0), (10.0 * i, tick_y if i % k == 0 else 0.8),
                              "scalebar"))
         if i % k == 0 or i == n:
-            items.append(Text(10.0 * i, tick_y + 0.8, vals[i], SCALE_SIZE, "middle",
+            items.append(Text(10.0 * i, tick_y + 0.8, vals[i], size, "middle",
                               role="scale"))
     unit_x = 10.0 * n + 2.0
-    items.append(Text(unit_x, -0.4, display(scale.unit), SCALE_SIZE, role="scale"))
+    items.append(Text(unit_x, -0.4, display(scale.unit), size, role="scale"))
     statement = f"Scale {scale.statement}"
-    sx = unit_x + width(display(scale.unit), SCALE_SIZE) + 4.0
-    items.append(Text(sx, -0.4, statement, SCALE_SIZE + 0.4, role="scale", weight="bold",
+    sx = unit_x + width(display(scale.unit), size) + 4.0
+    items.append(Text(sx, -0.4, statement, size + 0.4, role="scale", weight="bold",
                       ident="scale-statement"))
-    w = sx + width(statement, SCALE_SIZE + 0.4)
+    w = sx + width(statement, size + 0.4)
     g = Group("scale-bar", "scale-bar", f"Scale bar: {scale.statement}", tuple(items))
-    return g, w, tick_y + 0.8 + ASCENT * SCALE_SIZE + 1.5
+    return g, w, tick_y + 0.8 + ASCENT * size + 1.5
 
 
 def _text_lines(lines, size, role, x, top, weight="normal", faded=False):

@@ -64,7 +64,14 @@ def write(scene_path: str, out: str | Path, *, worksheet: bool = False, pdf: boo
     written.append(out)
     if pdf:
         from diagrams.browser import print_pdf
-        written.append(print_pdf(out, out.with_suffix(".pdf")))
+        target = out.with_suffix(".pdf") if out.suffix else out.with_name(out.name + ".pdf")
+        if out.suffix.lower() in (".html", ".htm"):
+            written.append(print_pdf(out, target))
+        else:    # Chromium reads a file without .html as plain text: print a .html copy
+            with tempfile.TemporaryDirectory(prefix="polygons-handout-") as tmp:
+                html = Path(tmp) / (out.stem + ".html")
+                html.write_text(text, encoding="utf-8")
+                written.append(print_pdf(html, target))
     return written
 
 
