@@ -328,3 +328,13 @@ def test_gallery_links_every_case(tmp_path):
         assert (tmp_path / "site" / f"{stem}.html").stat().st_size > 10000
         assert (tmp_path / "site" / f"{stem}-worksheet.html").exists()
     assert "could not be solved" in index
+    # one card per case file, each once, each with a thumbnail and no empty field
+    cards = re.findall(r'<article class="card[^"]*" id="case-([^"]+)">(.*?)</article>', index,
+                       re.S)
+    assert sorted(c for c, _ in cards) == ["broken", "s001-we4", "s003-fig7"]
+    for stem, body in cards:
+        if stem == "broken":
+            continue
+        assert body.count("<svg") == 1 and 'class="thumb"' in body
+        for field in re.findall(r'<p class="[^"]+">(.*?)</p>', body, re.S):
+            assert field.strip(), (stem, body[:200])
