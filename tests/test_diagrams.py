@@ -523,3 +523,22 @@ def test_cli_output_folder_that_is_a_file(tmp_path, capsys):
     f.write_text("x")
     assert main(["draw", str(CASES / "s003-fig7.toml"), "-o", str(f)]) == 1
     assert "not a folder" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("case,cw", [("s001-we6.toml", True), ("s001-sae4-q3.toml", False)])
+def test_sweep_plot_axis_runs_in_the_cranks_sense_of_rotation(case, cw, monkeypatch, tmp_path):
+    """A CW crank's angle decreases with time: its plot's x axis is reversed (and says so)."""
+    import diagrams.plots as plots
+    from polygons.cli.sweep import plot
+    from polygons.sweep import sweep
+    seen = {}
+
+    def fake(title, xlabel, panels, stem, formats, markers, xlim, xticks, reverse_x=False):
+        seen.update(xlabel=xlabel, reverse_x=reverse_x)
+        return []
+    monkeypatch.setattr(plots, "plot_panels", fake)
+    scene = load_scene(CASES / case)
+    assert (scene.driver.omega < 0) == cw            # the scene's own sense, read directly
+    plot(sweep(scene, 12), [], [], {}, "mm", tmp_path / "x", ("png",))
+    assert seen["reverse_x"] is cw
+    assert ("axis reversed" in seen["xlabel"]) is cw
