@@ -30,6 +30,7 @@ from polygons.plan import Step
 from polygons.report import check_answers, sense
 from polygons.scene import Crank
 
+from .notation import join_vectors, link_names, name_bare_omegas
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
 
 DRAWABLE = ("vector", "image", "line", "intersection")
@@ -638,6 +639,13 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                 f"line in black and the earlier ones in grey, with the scale bar it is drawn "
                 f"to (the stage figures may be reduced: measure on the finished {what} "
                 f"diagram that follows them, printed full size when the page allows).</p>\n")
+    links = link_names(scene)
+    vertices = list(sol.vertices.get(diagram, ()))
+
+    def words(text: str) -> str:
+        """The drawings' notation: ω_AB for a bare ω of link AB, b₁b for a vector name."""
+        return join_vectors(name_bare_omegas(text, links), vertices)
+
     doc.add(f'<ol class="steps{"" if worksheet else " staged"}" id="{diagram}-steps">\n')
     for step in sol.steps:
         if step.diagram != diagram:
@@ -649,14 +657,14 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
         doc.add(f'<li class="step" id="{diagram}-step-{step.number}" '
                 f'data-step="{step.number}">\n'
                 f'<p class="say"><span class="num">{step.number}.</span>'
-                f"{sym(step.reason)}{esc(fig_ref)}</p>\n")
+                f"{sym(words(step.reason))}{esc(fig_ref)}</p>\n")
         if worksheet:
             if step.kind != "intersection":
-                doc.add(f'<p class="formula symbolic">{sym(step.formula)}</p>\n')
+                doc.add(f'<p class="formula symbolic">{sym(words(step.formula))}</p>\n')
         else:
             f = formula_with_numbers(step)
             if f:
-                doc.add(f'<p class="formula answer">{_sym_numbers(f)}</p>\n')
+                doc.add(f'<p class="formula answer">{_sym_numbers(words(f))}</p>\n')
             name = f"{diagram}-{k}" if k is not None else None
             if name and name in figs.svg:
                 svg = figs.svg[name]

@@ -619,7 +619,8 @@ def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
         caption = []
         legend_lines = legend(lay, sol)
         desc = (f"{what} polygon of {sol.scene.title}, drawn to scale {lay.scale.statement}. "
-                + " ".join(f"{i}. {s.reason}" for i, s in enumerate(con.steps, 1)))
+                + " ".join(f"{i}. {prose(sol, con, s.reason)}"
+                           for i, s in enumerate(con.steps, 1)))
     else:
         s = con.steps[stage - 1]
         name = f"{con.diagram}-{stage}"
@@ -629,7 +630,7 @@ def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
             caption.append(prose(sol, con, s.substituted))
         caption += _stage_notes(sol, lay, s)
         legend_lines = []
-        desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {s.reason}"
+        desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {prose(sol, con, s.reason)}"
     content = stroke_items(lay, stage)
     return compose(name=name, kind=con.diagram, stage=stage, title=title, subtitle=subtitle,
                    desc=desc, content=content, content_box=_content_box(lay),

@@ -82,11 +82,13 @@ def test_formula_with_numbers_reads_like_the_tutorial():
     sol, key, _ = pages(CASES / "s001-we2.toml")
     first = next(s for s in sol.steps if s.diagram == "velocity")
     assert formula_with_numbers(first) == "(v_A)_O = ω × OA = 209.44 × 0.05 = 10.472 m/s"
-    assert "(vA)O = ω × OA = 209.44 × 0.05 = 10.472 m/s" in text_of(key)
+    # printed with the link named: no bare ω where ω_OA is meant
+    assert "(vA)O = ωOA × OA = 209.44 × 0.05 = 10.472 m/s" in text_of(key)
     sol, key, _ = pages(CASES / "s001-we6.toml")
     text = text_of(key)
     # centripetal with the square of a CW (negative) ω written as a person writes it
-    assert "(aB)An = ω² × AB = 480² × 0.08 = 18432 m/s²" in text
+    assert "(aB)An = ωAB² × AB = 480² × 0.08 = 18432 m/s²" in text
+    assert not re.search(r"(?<![\w])ω² ×", text)
     assert "−480²" not in text and "-480²" not in text
     assert "ωBC = bc / BC = 31 / 0.136 = 227.94 rad/s CCW" in text
     assert "e+05" not in text
