@@ -20,6 +20,7 @@ CAPTION_SIZE = 3.0
 SCALE_SIZE = 2.6
 LINE = 1.45           # line spacing, × font size
 KEY_SAMPLE = 9.0      # length (mm) of a key's sample line
+PAGE_WIDTH = 277.0    # A4 landscape less 10 mm margins: the widest page a drawing takes
 
 
 def arrow_head(tail, tip, length=3.0, half=1.0, open_head=False):
@@ -92,20 +93,29 @@ def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: st
     """
     cw, ch = content_box.x1 - content_box.x0, content_box.y1 - content_box.y0
     key_rows = ([("Key:", "bold")] + [(w, "normal") for _, w, _ in key]) if key else []
-    legend_w = max([width(t, LEGEND_SIZE) for t, _ in legend]
-                   + [KEY_SAMPLE + 2.0 + width(t, LEGEND_SIZE) for t, _ in key_rows[1:]]
-                   + [width(t, LEGEND_SIZE) for t, _ in key_rows[:1]], default=0.0)
-    if key and legend:
-        key_rows.append(("", "normal"))
-    legend_h = (len(legend) + len(key_rows)) * LINE * LEGEND_SIZE
+    key_w = max([KEY_SAMPLE + 2.0 + width(t, LEGEND_SIZE) for t, _ in key_rows[1:]]
+                + [width(t, LEGEND_SIZE) for t, _ in key_rows[:1]], default=0.0)
+    leg_w = max((width(t, LEGEND_SIZE) for t, _ in legend), default=0.0)
+    row = LINE * LEGEND_SIZE
+    # beside the drawing while the page stays within A4 landscape; else below it, key and
+    # legend side by side
+    below = bool(legend or key) and cw + GAP + max(key_w, leg_w) > PAGE_WIDTH - 2 * MARGIN
+    if below:
+        side_w = 0.0
+        under_w = key_w + (GAP if key and legend else 0.0) + leg_w
+        under_h = max(len(key_rows), len(legend)) * row + 3.0
+        body_h = ch + under_h
+    else:
+        side_w = (GAP + max(key_w, leg_w)) if (legend or key) else 0.0
+        under_w = 0.0
+        body_h = max(ch, (len(key_rows) + (1 if key and legend else 0) + len(legend)) * row)
     bar, bar_w, bar_h = scale_bar(scale, max(cw, 60.0))
     title_w = max(width(title, TITLE_SIZE), width(subtitle, SUBTITLE_SIZE))
-    inner_w = max(cw + ((GAP + legend_w) if (legend or key) else 0.0), bar_w, title_w, 120.0)
+    inner_w = max(cw + side_w, under_w, bar_w, title_w, 120.0)
     cap_lines: list[str] = []
     for para in caption:
         cap_lines += wrap(para, inner_w, CAPTION_SIZE)
     title_h = LINE * TITLE_SIZE + LINE * SUBTITLE_SIZE + 3.0
-    body_h = max(ch, legend_h)
     cap_h = (len(cap_lines) * LINE * CAPTION_SIZE + 3.0) if cap_lines else 0.0
     W = round(inner_w + 2 * MARGIN, 1)
     H = round(MARGIN + title_h + body_h + 4.0 + bar_h + cap_h + MARGIN, 1)
@@ -120,35 +130,38 @@ def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: st
     dx = MARGIN - content_box.x0
     dy = body_top - content_box.y1
     groups += [g.moved(dx, dy) for g in content]
-    body_top_legend = body_top
+    if below:
+        kx, ky = MARGIN, body_top - ch - 3.0
+        lx, ly = MARGIN + (key_w + GAP if key else 0.0), ky
+    else:
+        kx, ky = MARGIN + cw + GAP, body_top
+        lx = kx
+        ly = body_top - (len(key_rows) + 1) * row if key else body_top
     if key:
-        lx = MARGIN + cw + GAP
         items = []
-        y = body_top - ASCENT * LEGEND_SIZE
+        y = ky - ASCENT * LEGEND_SIZE
         for i, (text, weight) in enumerate(key_rows):
-            if 1 <= i <= len(key):
+            if i >= 1:
                 style, _, is_arrow = key[i - 1]
                 ym = y + 0.3 * LEGEND_SIZE
-                a, b = (lx, ym), (lx + KEY_SAMPLE, ym)
+                a, b = (kx, ym), (kx + KEY_SAMPLE, ym)
                 if is_arrow:
                     open_head = style.startswith("c-coriolis") or style == "input-alpha"
                     head, shaft = arrow_head(a, b, 2.2, 0.8, open_head)
                     items.append(Arrow(a, b, style, head, shaft, role="key"))
                 else:
                     items.append(Segment(a, b, style, cls="key-sample"))
-                items.append(Text(lx + KEY_SAMPLE + 2.0, y, text, LEGEND_SIZE, role="key"))
-            elif text:
-                items.append(Text(lx, y, text, LEGEND_SIZE, role="key", weight=weight))
-            y -= LINE * LEGEND_SIZE
+                items.append(Text(kx + KEY_SAMPLE + 2.0, y, text, LEGEND_SIZE, role="key"))
+            else:
+                items.append(Text(kx, y, text, LEGEND_SIZE, role="key", weight=weight))
+            y -= row
         groups.append(Group("key", "key", "Key: one line style per component", tuple(items)))
-        body_top_legend = y + ASCENT * LEGEND_SIZE
     if legend:
-        lx = MARGIN + cw + GAP
         items = []
-        y = body_top_legend - ASCENT * LEGEND_SIZE
+        y = ly - ASCENT * LEGEND_SIZE
         for text, weight in legend:
             items.append(Text(lx, y, text, LEGEND_SIZE, role="legend", weight=weight))
-            y -= LINE * LEGEND_SIZE
+            y -= row
         groups.append(Group("legend", "legend", "Legend: values measured on the drawing",
                             tuple(items)))
     bar_y = body_top - body_h - 4.0 - bar_h + DESCENT * SCALE_SIZE + 1.0
