@@ -216,7 +216,7 @@ def test_check_flags_bad_measurements_with_the_step_to_recheck():
     lines = out.stdout.splitlines()
     vc = next(i for i, l in enumerate(lines) if "v_C " in l)
     assert lines[vc].lstrip().startswith("OFF") and "-52.7 %" in lines[vc]
-    assert "hint: velocity step 4 (Fig. d)" in lines[vc + 1]
+    assert "hint: velocity step 4 (stage 4)" in lines[vc + 1]
     assert "The two lines meet at c" in lines[vc + 1]
     al = next(i for i, l in enumerate(lines) if "alpha_CD" in l)
     assert lines[al].lstrip().startswith("OFF") and "-3.9 %" in lines[al]

@@ -123,7 +123,7 @@ def _mechanism(sol) -> str:
 
 def _thumbnail(figs, stem: str) -> str:
     """The space diagram without its heading, key and legend, inlined at 70 mm wide."""
-    from diagrams.handout import trimmed
+    from diagrams.figures import trimmed
     from diagrams.html import inline_svg
     from diagrams.svg import to_svg
     d = figs.drawing.get("space")
