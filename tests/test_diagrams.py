@@ -542,3 +542,34 @@ def test_sweep_plot_axis_runs_in_the_cranks_sense_of_rotation(case, cw, monkeypa
     plot(sweep(scene, 12), [], [], {}, "mm", tmp_path / "x", ("png",))
     assert seen["reverse_x"] is cw
     assert ("axis reversed" in seen["xlabel"]) is cw
+
+
+# ---------------------------------------------------------------- notation
+def test_notation_typesets_textbook_labels():
+    from diagrams import notation as n
+    assert n.runs("p2_1") == [("p", "base"), ("2", "sub"), ("′", "base")]
+    assert n.runs("a1") == [("a", "base"), ("1", "sub")]
+    assert n.runs("(a_B)_A^n") == [("(a", "base"), ("B", "sub"), (")", "base"), ("A", "sub"),
+                                   ("n", "sup")]
+    assert n.runs("omega_BC") == [("ω", "base"), ("BC", "sub")]
+    assert n.runs("(a_P4)^t")[-1] == ("t", "sup")
+    assert n.plain(n.vector("b1", "b")) == "b₁b" and n.plain("p4_1") == "p₄′"
+    assert n.html("(a_B)_A^n") == '(a<sub>B</sub>)<span class="subsup"><sub>A</sub><sup>n</sup></span>'
+    # prose and units are left alone
+    assert n.runs("1 cm = 20 m/s²") == [("1 cm = 20 m/s²", "base")]
+    assert n.join_vectors("(= b1b / AB)", ["b", "b1", "a"]) == f"(= b1{JOIN}b / AB)"
+    assert n.name_bare_omegas("ω² × CB = 2² × 0.1", {"CB": "BC"}) == "ω_BC² × CB = 2² × 0.1"
+    # a stacked superscript adds only what is wider than its subscript
+    assert n.width("(a_B)_A^n", 3.0) < n.width("(a_B)_A", 3.0) + n.width("n", 3.0 * n.SMALL)
+
+
+def test_fig7_svg_typesets_vertex_labels_with_tspans():
+    sol, ds = solved(CASES / "s003-fig7.toml")
+    root = ET.fromstring(to_svg(finals(ds)["acceleration"]))
+    labels = ["".join(t.itertext()) for t in root.iter(SVG + "text")
+              if "vertex-label" in (t.get("class") or "")]
+    assert "p2′" in labels and "p4′" in labels            # p₂′: 2 in a subscript tspan
+    subs = [s for t in root.iter(SVG + "text") for s in t.iter(SVG + "tspan")
+            if s.get("font-size") and float(s.get("font-size")) < float(t.get("font-size"))]
+    assert subs and not any("_" in "".join(t.itertext()) for t in root.iter(SVG + "text")
+                            if "vertex-label" in (t.get("class") or ""))
