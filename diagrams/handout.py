@@ -33,7 +33,7 @@ from .figures import (PRINTED_SCALE_TEXT, STAGE_HEIGHT, STAGE_WIDTH, Figures,  #
                       figures, readable_scale_bar, stage_of, stage_width, trimmed)
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
 from .notation import HTML_CSS as NOTATION_CSS
-from .notation import join_vectors, link_names, name_bare_omegas
+from .notation import join_vectors, link_names, name_bare_omegas, slot_names
 
 DRAWABLE = ("vector", "image", "line", "intersection")
 #: printable area (mm) of an A4 page with the margins of the stylesheet below (every page
@@ -498,16 +498,17 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                                           if g.lower() != sol.pole])
     P, Q = _example_pair(sol)
     intro = (f"Lower-case letters are the points of the {what} diagram: the vector from "
-             f"<em>{esc(sol.vertex_of(P))}</em> to <em>{esc(sol.vertex_of(Q))}</em> is the "
-             f"{what} of {esc(Q)} relative to {esc(P)}. The pole "
-             f"<em>{esc(pole_alias)}</em> stands for every fixed point, which has no "
-             f"{what}.")
+             f"<em>{sym(sol.vertex_of(P))}</em> to <em>{sym(sol.vertex_of(Q))}</em> is the "
+             f"{what} of {sym(Q)} relative to {sym(P)}. The pole "
+             f"<em>{sym(pole_alias)}</em> stands for every fixed point, which has no "
+             f"{what}. Every component has one colour and line style (the key on each "
+             f"drawing), readable in greyscale too.")
     if scale is not None:
         intro += f" Scale <strong>{esc(scale.statement)}</strong>."
     doc.add(f"<p>{intro}</p>\n")
     if not worksheet:
         doc.add(f'<p class="figure-note">Each step below shows the drawing so far, the new '
-                f"line in black and the earlier ones in grey, with the scale bar it is drawn "
+                f"step drawn heavier and the earlier ones lighter, with the scale bar it is drawn "
                 f"to (the stage figures may be reduced: measure on the finished {what} "
                 f"diagram that follows them, printed full size when the page allows).</p>\n")
     links = link_names(scene)
@@ -515,7 +516,7 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
 
     def words(text: str) -> str:
         """The drawings' notation: ω_AB for a bare ω of link AB, b₁b for a vector name."""
-        return join_vectors(name_bare_omegas(text, links), vertices)
+        return join_vectors(name_bare_omegas(slot_names(text, scene), links), vertices)
 
     doc.add(f'<ol class="steps{"" if worksheet else " staged"}" id="{diagram}-steps">\n')
     for step in sol.steps:

@@ -209,6 +209,19 @@ def name_bare_omegas(text: str, links: dict[str, str] | None = None) -> str:
     return _BARE.sub(repl, text)
 
 
+def slot_names(text: str, scene) -> str:
+    """One name per slotted lever: the pivot–pin line O4P2 is written as the lever's own
+    O4P4 (P4 is the lever point under the pin P2, so the length is the same)."""
+    for slot in getattr(scene, "slots", {}).values():
+        if not slot.coincident:
+            continue
+        for a, b in ((slot.pivot, slot.pin), (slot.pin, slot.pivot)):
+            new = (f"{slot.pivot}{slot.coincident}" if a == slot.pivot
+                   else f"{slot.coincident}{slot.pivot}")
+            text = re.sub(rf"(?<![A-Za-z0-9_]){a}{b}(?![A-Za-z0-9])", new, text)
+    return text
+
+
 def link_names(scene) -> dict[str, str]:
     """'AB', 'BA' (and the link's own name) → the scene's name of that link."""
     out: dict[str, str] = {}

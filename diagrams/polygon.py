@@ -31,7 +31,7 @@ from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER, component_of
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
-from .notation import join_vectors, link_names, name_bare_omegas, vector
+from .notation import join_vectors, link_names, name_bare_omegas, slot_names, vector
 from .text import display, number, token
 
 Pt = tuple[float, float]
@@ -101,7 +101,7 @@ def construction(sol: Solution, diagram: str) -> Construction:
         elif s.kind == "line":
             lines[s.number] = s
             strokes.append(Stroke(s.number, "line", "construction", s.at, s.direction,
-                                  s.start or "", "", s.draws, s.reason))
+                                  s.start or "", "", slot_names(s.draws, sol.scene), s.reason))
             if s.op == "coriolis_offset_line" and s.start is not None:
                 # the step back from the pin's vertex: anchor + 2ωv = the pin's vertex
                 strokes.append(Stroke(s.number, "offset", "offset", s.at, vx[s.start],
@@ -526,7 +526,7 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))
         for m in lay.con.measures:
-            out.append((join_vectors(measure_text(m, sol, lay.con), lay.con.vertices), "normal"))
+            out.append((prose(sol, lay.con, measure_text(m, sol, lay.con)), "normal"))
     return out
 
 
@@ -579,8 +579,8 @@ def measure_text(m: Step, sol: Solution | None = None, con: Construction | None 
 def prose(sol: Solution, con: Construction, text: str) -> str:
     """A step's sentence in the drawings' notation: vector names split (b1b → b₁b), a bare ω
     or α before '× XY' named after its link (ω² × AB → ω_AB² × AB)."""
-    return join_vectors(name_bare_omegas(display(text), link_names(sol.scene)),
-                        con.vertices)
+    return join_vectors(name_bare_omegas(slot_names(display(text), sol.scene),
+                                         link_names(sol.scene)), con.vertices)
 
 
 def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:
