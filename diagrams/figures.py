@@ -63,9 +63,35 @@ def readable_scale_bar(d, reduction: float):
             continue
         line = next(it for it in g.items if isinstance(it, Segment))
         x0, y0 = line.a
-        bar, _, _ = scale_bar(lay.scale, line.b[0] - line.a[0] + 0.01, size=size)
+        # no longer than the drawing above it, so the bar does not widen the figure
+        drawn = [b for other in d.groups if other.ident != "scale-bar"
+                 for b in _extent(other.items)]
+        room = (max(drawn) - x0) if drawn else line.b[0] - line.a[0]
+        bar, _, _ = scale_bar(lay.scale, max(20.0, min(line.b[0] - line.a[0], room)) + 0.01,
+                              size=size, statement=False)
         groups.append(bar.moved(x0, y0 - (size - SCALE_SIZE) * 1.2))   # clear of the drawing
     return replace(d, groups=tuple(groups))
+
+
+def _extent(items) -> list[float]:
+    """x coordinates (mm) reached by ``items`` (recursively): their right-hand extent."""
+    from .labels import text_box
+    from .model import Arrow, Circle, Polyline, Segment, Text
+    xs: list[float] = []
+    for it in items:
+        if isinstance(it, Segment):
+            xs += [it.a[0], it.b[0]]
+        elif isinstance(it, Polyline):
+            xs += [p[0] for p in it.points]
+        elif isinstance(it, Circle):
+            xs.append(it.centre[0] + it.r)
+        elif isinstance(it, Arrow):
+            xs += [it.tail[0], it.tip[0]]
+        elif isinstance(it, Text):
+            xs.append(text_box(it.x, it.baseline, it.text, it.size, it.anchor).x1)
+        elif hasattr(it, "items"):
+            xs += _extent(it.items)
+    return xs
 
 
 def stage_width(natural: float, height: float | None = None) -> float:

@@ -39,8 +39,8 @@ def arrow_head(tail, tip, length=3.0, half=1.0, open_head=False):
     return head, (bx + ux * back, by + uy * back)
 
 
-def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE
-              ) -> tuple[Group, float, float]:
+def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE,
+              statement: bool = True) -> tuple[Group, float, float]:
     """A bar of whole centimetres with ticks and values, and the stated scale.
 
     Returns (group at origin, width, height).  Its statement text has id 'scale-statement'
@@ -62,11 +62,14 @@ def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE
                               role="scale"))
     unit_x = 10.0 * n + 2.0
     items.append(Text(unit_x, -0.4, display(scale.unit), size, role="scale"))
-    statement = f"Scale {scale.statement}"
+    text = f"Scale {scale.statement}"
     sx = unit_x + width(display(scale.unit), size) + 4.0
-    items.append(Text(sx, -0.4, statement, size + 0.4, role="scale", weight="bold",
-                      ident="scale-statement"))
-    w = sx + width(statement, size + 0.4)
+    if statement:
+        items.append(Text(sx, -0.4, text, size + 0.4, role="scale", weight="bold",
+                          ident="scale-statement"))
+        w = sx + width(text, size + 0.4)
+    else:      # a stage figure in a handout whose text states the scale
+        w = sx - 4.0
     g = Group("scale-bar", "scale-bar", f"Scale bar: {scale.statement}", tuple(items))
     return g, w, tick_y + 0.8 + ASCENT * size + 1.5
 
