@@ -145,8 +145,9 @@ def page(sol, figs=None, n: int = FRAMES) -> str:
             'aria-label="Velocity polygon"></svg><svg id="apoly" class="live" '
             'viewBox="0 0 100 100" role="img" aria-label="Acceleration polygon"></svg></div>\n'
             '<p class="note">Hover a link to highlight its relative vectors. Velocity vectors '
-            "are drawn on the linkage at one scale for the whole cycle; each polygon keeps one "
-            "scale too, so lengths compare from frame to frame.</p>\n</section>\n</main>\n"
+            "are drawn on the linkage at one scale for the whole cycle; each polygon is fitted "
+            "to its panel at every frame (its shape, not its size, compares from frame to "
+            "frame).</p>\n</section>\n</main>\n"
             f'<script type="application/json" id="frames">{blob}</script>\n'
             f"<script>\n{_JS}\n</script>\n</body>\n</html>\n")
 
@@ -186,6 +187,12 @@ _JS = r"""
   var NS = 'http://www.w3.org/2000/svg';
   var stages = Array.prototype.slice.call(document.querySelectorAll('figure.stage'));
   var cur = 0, frame = D.start, hover = -1;
+  var SUB = '₀₁₂₃₄₅₆₇₈₉';
+  function typeset(name) {            // O4 → O₄, p2 → p₂ (the drawings' notation)
+    return name.replace(/([A-Za-z])(\d+)/g, function (m, l, d) {
+      return l + d.split('').map(function (c) { return SUB[+c]; }).join('');
+    });
+  }
   function el(parent, tag, attrs) {
     var e = document.createElementNS(NS, tag);
     for (var k in attrs) { e.setAttribute(k, attrs[k]); }
@@ -213,11 +220,9 @@ _JS = r"""
     var ox = pad + ((W - 2 * pad) - k * w) / 2, oy = pad + ((H - 2 * pad) - k * h) / 2;
     return function (p) { return [ox + k * (p[0] - b[0]), H - (oy + k * (p[1] - b[1]))]; };
   }
-  var all = [], vall = [[0, 0]], aall = [[0, 0]], vmax = 0;
+  var all = [], vmax = 0;
   D.labels.forEach(function (l) {
     all = all.concat(D.pos[l]);
-    if (D.vel[l]) { vall = vall.concat(D.vel[l]); }
-    if (D.acc[l]) { aall = aall.concat(D.acc[l]); }
     (D.vel[l] || []).forEach(function (v) { vmax = Math.max(vmax, Math.hypot(v[0], v[1])); });
   });
   var mb = box(all), span = Math.max(mb[2] - mb[0], mb[3] - mb[1]);
@@ -228,8 +233,7 @@ _JS = r"""
       var v = (D.vel[l] || [])[i]; if (v) { withV.push([p[0] + kv * v[0], p[1] + kv * v[1]]); }
     });
   });
-  var M = fit(box(withV), 100, 70, 6), V = fit(box(vall), 100, 100, 8),
-      A = fit(box(aall), 100, 100, 8);
+  var M = fit(box(withV), 100, 70, 6);
   function arrow(g, a, b, colour, dash, cls, edge) {
     var dx = b[0] - a[0], dy = b[1] - a[1], L = Math.hypot(dx, dy);
     var attrs = {x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': 0.6,
@@ -245,8 +249,12 @@ _JS = r"""
                         'class': cls + ' head', 'data-edge': edge === undefined ? '' : edge});
     }
   }
-  function polygon(svg, T, vec, sym) {
+  function polygon(svg, vec, sym) {
     while (svg.firstChild) { svg.removeChild(svg.firstChild); }
+    var here = [[0, 0]];             // fitted to its panel at each frame
+    D.labels.forEach(function (l) { if (vec[l] && vec[l][frame][0] !== null) {
+      here.push(vec[l][frame]); } });
+    var T = fit(box(here), 100, 100, 10);
     var pole = T([0, 0]);
     el(svg, 'circle', {cx: pole[0], cy: pole[1], r: 1.1, fill: '#fff', stroke: '#000',
                        'stroke-width': 0.4});
@@ -267,7 +275,7 @@ _JS = r"""
     D.labels.forEach(function (l) {
       var v = vec[l]; if (!v) { return; }
       var q = T(v[frame]), key = Math.round(q[0]) + ',' + Math.round(q[1]);
-      placed[key] = (placed[key] ? placed[key] + ' = ' : '') + l.toLowerCase();
+      placed[key] = (placed[key] ? placed[key] + ' = ' : '') + typeset(l.toLowerCase());
       var t = el(svg, 'text', {x: q[0] + 1.2, y: q[1] - 1.2, 'data-label': l});
       t.textContent = placed[key];
     });
@@ -296,15 +304,16 @@ _JS = r"""
       el(svg, 'circle', {cx: q[0], cy: q[1], r: ground ? 1.2 : 0.9, fill: '#fff',
                          stroke: '#000', 'stroke-width': 0.4, 'data-point': l});
       var key = Math.round(q[0] * 2) + ',' + Math.round(q[1] * 2);
-      if (names[key]) { names[key].textContent += ', ' + l; return; }   // coincident points
-      names[key] = el(svg, 'text', {x: q[0] + 1.4, y: q[1] - 1.4}); names[key].textContent = l;
+      if (names[key]) { names[key].textContent += ', ' + typeset(l); return; }   // coincident
+      names[key] = el(svg, 'text', {x: q[0] + 1.4, y: q[1] - 1.4});
+      names[key].textContent = typeset(l);
     });
   }
   function setHover(i) { hover = i; draw(); }
   function draw() {
     mechanism();
-    polygon(document.getElementById('vpoly'), V, D.vel, 'velocity');
-    polygon(document.getElementById('apoly'), A, D.acc, 'acceleration');
+    polygon(document.getElementById('vpoly'), D.vel, 'velocity');
+    polygon(document.getElementById('apoly'), D.acc, 'acceleration');
     document.getElementById('angle-out').textContent =
       D.inputs[frame] + ' ' + D.unit + (D.sense ? ' (crank turns ' + D.sense + ')' : '');
   }
