@@ -284,3 +284,56 @@ def test_interactive_page_stages_are_the_static_svgs_and_output_is_deterministic
     # the slider runs in the crank's sense of rotation (SAE4-Q3: CCW, angles increasing)
     ins = data["inputs"]
     assert data["sense"] == "CCW" and all(b > a for a, b in zip(ins, ins[1:]))
+
+
+RECT = """<script>
+window.addEventListener('load', function () {
+  var f = document.querySelector('figure.stage:not([hidden]) svg').getBoundingClientRect();
+  var pre = document.createElement('pre'); pre.id = 'rect';
+  pre.textContent = JSON.stringify([f.left, f.top, f.width, f.height]);
+  document.body.appendChild(pre);
+});
+</script>"""
+
+
+@needs_chromium
+def test_interactive_stage_screenshot_matches_the_static_svg(tmp_path):
+    """A stage shown on the page looks as its static SVG does: Chromium's screenshot of the
+    page, cropped to the stage figure, against Chromium's rendering of the SVG file at the
+    same size — and unlike the next stage's SVG (so the comparison can fail)."""
+    from PIL import Image
+    case, k = CASES / "s001-sae4-q3.toml", 3
+    page = tmp_path / "page.html"
+    assert polygons("handout", case, "--interactive", "-o", page).returncode == 0
+    assert polygons("draw", case, "-o", tmp_path / "svg").returncode == 0
+    names = re.findall(r'data-name="([^"]+)"', page.read_text(encoding="utf-8"))
+    size = "--window-size=1400,1000"
+    text = page.read_text(encoding="utf-8").replace("<head>", "<head>\n" + RECT, 1)
+    probed = tmp_path / "probed.html"
+    probed.write_text(text, encoding="utf-8")
+    url = probed.resolve().as_uri() + f"#stage={k}"
+    out = browser.run(url, "--dump-dom", size, "--virtual-time-budget=3000")
+    x, y, w, h = json.loads(re.search(r'<pre id="rect">(.*?)</pre>', out.stdout).group(1))
+    shot = tmp_path / "page.png"
+    browser.run(url, f"--screenshot={shot}", size, "--virtual-time-budget=3000")
+    page_img = Image.open(shot).convert("L").crop((round(x), round(y), round(x + w),
+                                                   round(y + h)))
+
+    def static(name):
+        wrap = tmp_path / f"{name}-wrap.html"
+        wrap.write_text(f'<html><body style="margin:0"><img src="svg/{name}.svg" '
+                        f'style="display:block;width:{w}px;height:{h}px"></body></html>',
+                        encoding="utf-8")
+        png = tmp_path / f"{name}.png"
+        browser.run(wrap, f"--screenshot={png}", f"--window-size={round(w) + 20},"
+                    f"{round(h) + 20}")
+        return Image.open(png).convert("L").crop((0, 0, round(w), round(h)))
+
+    def diff(a, b):
+        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        return float(np.abs(a - b).mean())
+
+    same = diff(page_img, static(names[k - 1]))
+    other = diff(page_img, static(names[k]))
+    print(f"mean |difference|: same stage {same:.2f}, next stage {other:.2f} (of 255)")
+    assert same < 3.0 and other > 2 * same, (same, other)
