@@ -7,7 +7,9 @@ Modules: :mod:`diagrams.polygon` (polygons and their stages, from the step recor
 :mod:`diagrams.space` (the mechanism), :mod:`diagrams.scale` (round drawing scales),
 :mod:`diagrams.labels` (overlap-free labels), :mod:`diagrams.layout` (the page),
 :mod:`diagrams.measure` (lengths read back off the SVGs), :mod:`diagrams.svg` (the only
-svgwrite importer).  Nothing here recomputes kinematics: the drawings take their geometry
+svgwrite importer), :mod:`diagrams.notation` (textbook labels), :mod:`diagrams.components`
+(one look per component kind), :mod:`diagrams.figures` / :mod:`diagrams.handout` (handouts)
+and :mod:`diagrams.page` (the interactive construction page).  Nothing here recomputes kinematics: the drawings take their geometry
 from ``Solution.steps`` / ``Solution.vertices`` / ``Solution.placement``.
 """
 from __future__ import annotations

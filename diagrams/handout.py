@@ -29,8 +29,7 @@ from polygons.plan import Step
 from polygons.report import check_answers, sense
 from polygons.scene import Crank
 
-from .figures import (PRINTED_SCALE_TEXT, STAGE_HEIGHT, STAGE_WIDTH, Figures,  # noqa: F401
-                      figures, readable_scale_bar, stage_of, stage_width, trimmed)
+from .figures import Figures, figures, stage_of, stage_width
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
 from .notation import HTML_CSS as NOTATION_CSS
 from .notation import join_vectors, link_names, name_bare_omegas, slot_names

@@ -2,8 +2,8 @@
 
 Layout modules (:mod:`diagrams.polygon`, :mod:`diagrams.space`) build a :class:`Drawing` of
 these items; :mod:`diagrams.svg` (the only svgwrite importer) writes it.  Styles are names
-(``'vector'``, ``'construction'``, ``'coriolis'`` ...) whose meaning is carried by line
-weight, dash pattern and arrowhead shape — never by colour alone; see :mod:`diagrams.svg`.
+(``'link'``, ``'c-centripetal'``, ``'c-coriolis-new'`` ...) whose meaning is carried by line
+weight, dash pattern and arrowhead shape as well as colour; see :mod:`diagrams.components`.
 """
 from __future__ import annotations
 

@@ -14,8 +14,11 @@ and ``Solution.vertices``.  What this module decides is how each record looks on
   the lever point) and the absolute vector pole → vertex is added, dotted, if not yet drawn;
 * 'measure' steps draw nothing; their values go to the legend.
 
-Stage k of a diagram shows every drawable step up to the k-th, the k-th in full black and
-heavier, the earlier ones grey, with the step's sentence as the caption.
+Every vector is drawn in the look of its component kind (:func:`diagrams.components.component_of`)
+and named at its midpoint; the asked quantities of the scene (``[[answers]]``) are drawn too
+(absolute ones from the pole), so every diagram closes to the question.  Stage k of a diagram
+shows every drawable step up to the k-th, the k-th heavier, the earlier ones lighter, with
+the step's sentence in the drawings' notation as the caption.
 """
 from __future__ import annotations
 

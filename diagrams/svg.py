@@ -5,17 +5,13 @@ with a viewBox in mm, so the file prints to scale (1 cm on paper is 1 cm of the 
 Output is deterministic (no generated ids, coordinates rounded to 0.001 mm, attributes in a
 fixed order).  svgwrite validates every element and attribute against SVG 1.1 full.
 
-Line styles carry the meaning; colour never does alone:
-
-======================  ==================================================================
-vector                  solid 0.45 mm, filled arrowhead
-result (pole → vertex)  dotted, filled arrowhead (the absolute vector, as the tutorials dot it)
-coriolis                solid 0.9 mm, open (hollow) arrowhead, labelled 2ωv
-construction line       dashed 3–1.5 mm, 0.25 mm (unknown length), labelled
-offset                  fine dots (the Coriolis step back from the pin's vertex)
-image side              dash-dot (closes a velocity/acceleration image triangle)
-new in this stage       heavier line; earlier stages are grey
-======================  ==================================================================
+Each vector's component kind has one look (:data:`diagrams.components.LOOKS`): a colour and a
+width/dash pattern, so the meaning survives greyscale printing — styles named ``c-<kind>``
+(``c-<kind>-new`` for the stage that draws it, heavier; earlier stages keep their colour at
+40 % opacity).  The Coriolis vector is heavy with an open (hollow) head; construction lines of
+unknown length are thin and dashed.  The mechanism's own styles (links, pivots, guides, the
+input arcs) are in :data:`STYLES` below.  Text is typeset by :mod:`diagrams.notation`
+(``tspan`` sub- and superscripts).
 """
 from __future__ import annotations
 
@@ -24,7 +20,7 @@ import svgwrite
 from .components import LOOKS, new_width
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
 from .notation import plain, svg_runs
-from .text import FONT_FAMILY, display
+from .text import FONT_FAMILY
 
 INK = "#000000"
 FADED = "#8c8c8c"
