@@ -34,8 +34,10 @@ def options(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = 
 
 
 def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
-             stages: bool | None = None):
-    """Every drawing of a solution, in order: space, then each polygon and its stages."""
+             stages: bool | None = None, text_scale: float = 1.0):
+    """Every drawing of a solution, in order: space, then each polygon and its stages.
+
+    ``text_scale`` enlarges the polygons' labels (for figures printed reduced)."""
     from . import polygon, space
     opts = options(sol, scales, paper, stages)
     sc, paper = opts["scales"], opts["paper"]
@@ -43,7 +45,7 @@ def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None =
     for diagram in sol.scene.solve:
         if diagram not in sol.vertices:
             continue
-        lay = polygon.layout(sol, diagram, sc.get(diagram), paper)
+        lay = polygon.layout(sol, diagram, sc.get(diagram), paper, text_scale)
         out.append(polygon.drawing(sol, lay))
         if opts["stages"]:
             for k in range(1, len(lay.con.steps) + 1):

@@ -15,6 +15,10 @@ DRAWABLE = ("vector", "image", "line", "intersection")
 STAGE_WIDTH = 86.0
 #: the scale bar's numbers on a reduced stage figure are printed at least this high (mm)
 PRINTED_SCALE_TEXT = 2.3
+#: ... but never drawn larger than this (mm), so a much-reduced figure's bar stays a bar
+MAX_SCALE_TEXT = 4.5
+#: labels of the stage figures are set this much larger than on the full-size drawings
+STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
 STAGE_HEIGHT = 52.0
 
@@ -35,13 +39,16 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
     out = Figures()
     for d in diagrams.drawings(sol, scales, paper, True):
         out.drawing[d.name] = d
+        if d.stage is None:
+            out.svg[d.name] = to_svg(d)
+    # the stage figures print reduced: their labels are set larger (placed anew, clear of
+    # each other as on every drawing) and their scale bar readable
+    for d in diagrams.drawings(sol, scales, paper, True, STAGE_TEXT_SCALE):
         if d.stage is not None:
             t = trimmed(d, ("heading", "caption", "key", "legend"))
             t = trimmed(readable_scale_bar(t, stage_width(t.width, t.height) / t.width),
                         ("heading", "caption", "key", "legend"))
             out.svg[d.name] = to_svg(t)
-        else:
-            out.svg[d.name] = to_svg(d)
     return out
 
 
@@ -55,7 +62,7 @@ def readable_scale_bar(d, reduction: float):
     lay = d.meta.get("layout")
     if lay is None or reduction >= 1.0:
         return d
-    size = max(SCALE_SIZE, PRINTED_SCALE_TEXT / reduction)
+    size = min(max(SCALE_SIZE, PRINTED_SCALE_TEXT / reduction), MAX_SCALE_TEXT)
     groups = []
     for g in d.groups:
         if g.ident != "scale-bar":

@@ -218,6 +218,10 @@ class Layout:
     vertex_labels: tuple             # (names tuple, x, baseline, box)
     line_labels: dict                # step number -> (text, x, baseline, box)
     vector_labels: dict              # (step, frm, to) -> (text, x, baseline, box)
+    text_scale: float = 1.0          # labels × this (a figure printed reduced: larger labels)
+
+    def size(self, base: float) -> float:
+        return round(base * self.text_scale, 3)
 
     def P(self, v: Pt) -> Pt:
         k = self.scale.mm_per_si
@@ -235,7 +239,7 @@ def _extent_points(con: Construction) -> list[Pt]:
 
 
 def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
-           paper: str | None = None) -> Layout:
+           paper: str | None = None, text_scale: float = 1.0) -> Layout:
     con = construction(sol, diagram)
     pts = _extent_points(con)
     bb = bounds(pts)
@@ -249,7 +253,7 @@ def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
     k = scale.mm_per_si
     w, h = extent[0] * k, extent[1] * k
     frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
-    lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {})
+    lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {}, text_scale)
     return _place_labels(lay)
 
 
@@ -315,7 +319,7 @@ def _place_labels(lay: Layout) -> Layout:
         text = _vertex_text(con, gr, None)
         placer.boxes = [b for b in placer.boxes
                         if not (b.x1 - b.x0 < 1.7 and b.contains(at))]   # own dot
-        x, base, _, box = placer.place(text, at, LABEL_SIZE, prefer=prefer)
+        x, base, _, box = placer.place(text, at, lay.size(LABEL_SIZE), prefer=prefer)
         vlabels.append((tuple(gr), x, base, box))
         placer.block(Box(at[0] - 0.8, at[1] - 0.8, at[0] + 0.8, at[1] + 0.8))
     llabels = {}
@@ -331,7 +335,7 @@ def _place_labels(lay: Layout) -> Layout:
             anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
         text = display(st.label)
         placer.hard(g[0], g[1], 0.7)            # not across its own line
-        x, base, _, box = placer.place_any(text, LINE_LABEL_SIZE, anchors,
+        x, base, _, box = placer.place_any(text, lay.size(LINE_LABEL_SIZE), anchors,
                                            distances=(0.3, 0.8, 1.8, 3.3, 5.3, 8.0))
         placer.hard_segments.pop()
         llabels[st.step] = (text, x, base, box)
@@ -350,12 +354,13 @@ def _place_labels(lay: Layout) -> Layout:
         for f in (0.5, 0.4, 0.6, 0.3, 0.7):
             pt = (g[0][0] + f * (g[1][0] - g[0][0]), g[0][1] + f * (g[1][1] - g[0][1]))
             anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
-        placed = placer.place_any(st.label, VECTOR_LABEL_SIZE, anchors,
+        placed = placer.place_any(st.label, lay.size(VECTOR_LABEL_SIZE), anchors,
                                   distances=(0.5, 1.1, 2.0, 3.2), required=False)
         if placed is not None:
             x, base, _, box = placed
             vec_labels[(st.step, st.frm, st.to)] = (st.label, x, base, box)
-    return Layout(con, lay.scale, lay.origin, lay.frame, tuple(vlabels), llabels, vec_labels)
+    return Layout(con, lay.scale, lay.origin, lay.frame, tuple(vlabels), llabels, vec_labels,
+                  lay.text_scale)
 
 
 def _right_angle(con: Construction, st: Stroke, g, size: float = 1.6):
@@ -423,7 +428,7 @@ def stroke_items(lay: Layout, stage: int | None):
             lines_g.append(Segment(g[0], g[1], _style("construction", new), faded,
                                    cls=f"construction-line step-{st.step}"))
             text, x, base, _ = lay.line_labels[st.step]
-            lab_g.append(Text(x, base, text, LINE_LABEL_SIZE, role="line", faded=faded,
+            lab_g.append(Text(x, base, text, lay.size(LINE_LABEL_SIZE), role="line", faded=faded,
                               cls=f"line-label step-{st.step}"))
         elif st.kind == "side":
             lines_g.append(Segment(g[0], g[1], _style("image", False), faded,
@@ -448,7 +453,7 @@ def stroke_items(lay: Layout, stage: int | None):
             lab = lay.vector_labels.get((st.step, st.frm, st.to))
             if lab is not None:
                 text, x, base, _ = lab
-                lab_g.append(Text(x, base, text, VECTOR_LABEL_SIZE, role="component",
+                lab_g.append(Text(x, base, text, lay.size(VECTOR_LABEL_SIZE), role="component",
                                   faded=faded, cls=f"component-label {st.component}",
                                   ink=LOOKS[st.component].colour))
     for names, x, base, box in lay.vertex_labels:
@@ -463,7 +468,7 @@ def stroke_items(lay: Layout, stage: int | None):
             pole = n == con.pole
             pts_g.append(Circle(at, 0.9 if pole else 0.55, "pole" if pole else "vertex",
                                 faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
-        lab_g.append(Text(x, base, text, LABEL_SIZE, role="vertex", faded=faded,
+        lab_g.append(Text(x, base, text, lay.size(LABEL_SIZE), role="vertex", faded=faded,
                           cls="vertex-label", weight="bold" if not faded else "normal"))
     return [Group(f"{con.diagram}-construction", "construction", "Construction lines",
                   tuple(lines_g)),

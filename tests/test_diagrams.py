@@ -206,6 +206,23 @@ def test_labels_overlap_neither_vectors_arcs_nor_each_other(path):
     """Every shipped case, every space/velocity/acceleration drawing and stage: no label box
     overlaps another label, and none touches a vector, link, input arc or offset."""
     sol, ds = solved(path)
+    _assert_no_overlap(ds)
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_handout_stage_labels_set_larger_overlap_nothing_either(path):
+    """The handout's stage figures (printed reduced) set their labels 1.5× larger: placed
+    anew, they keep the same clearances."""
+    from diagrams.figures import STAGE_TEXT_SCALE
+    sol, _ = solved(path)
+    ds = [d for d in diagrams.drawings(sol, stages=True, text_scale=STAGE_TEXT_SCALE)
+          if d.kind != "space"]
+    sizes = {t.size for d in ds for t in d.items() if isinstance(t, Text) and t.role == "vertex"}
+    assert sizes == {round(polygon.LABEL_SIZE * STAGE_TEXT_SCALE, 3)}
+    _assert_no_overlap(ds)
+
+
+def _assert_no_overlap(ds):
     for d in ds:
         boxes = _label_boxes(d)
         for i, (ta, a) in enumerate(boxes):
