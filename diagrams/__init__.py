@@ -7,7 +7,9 @@ Modules: :mod:`diagrams.polygon` (polygons and their stages, from the step recor
 :mod:`diagrams.space` (the mechanism), :mod:`diagrams.scale` (round drawing scales),
 :mod:`diagrams.labels` (overlap-free labels), :mod:`diagrams.layout` (the page),
 :mod:`diagrams.measure` (lengths read back off the SVGs), :mod:`diagrams.svg` (the only
-svgwrite importer).  Nothing here recomputes kinematics: the drawings take their geometry
+svgwrite importer), :mod:`diagrams.notation` (textbook labels), :mod:`diagrams.components`
+(one look per component kind), :mod:`diagrams.figures` / :mod:`diagrams.handout` (handouts)
+and :mod:`diagrams.page` (the interactive construction page).  Nothing here recomputes kinematics: the drawings take their geometry
 from ``Solution.steps`` / ``Solution.vertices`` / ``Solution.placement``.
 """
 from __future__ import annotations
@@ -32,8 +34,10 @@ def options(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = 
 
 
 def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
-             stages: bool | None = None):
-    """Every drawing of a solution, in order: space, then each polygon and its stages."""
+             stages: bool | None = None, text_scale: float = 1.0):
+    """Every drawing of a solution, in order: space, then each polygon and its stages.
+
+    ``text_scale`` enlarges the polygons' labels (for figures printed reduced)."""
     from . import polygon, space
     opts = options(sol, scales, paper, stages)
     sc, paper = opts["scales"], opts["paper"]
@@ -41,7 +45,7 @@ def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None =
     for diagram in sol.scene.solve:
         if diagram not in sol.vertices:
             continue
-        lay = polygon.layout(sol, diagram, sc.get(diagram), paper)
+        lay = polygon.layout(sol, diagram, sc.get(diagram), paper, text_scale)
         out.append(polygon.drawing(sol, lay))
         if opts["stages"]:
             for k in range(1, len(lay.con.steps) + 1):

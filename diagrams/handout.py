@@ -23,120 +23,29 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
 
 from polygons.evaluate import Solution
 from polygons.plan import Step
 from polygons.report import check_answers, sense
 from polygons.scene import Crank
 
+from .figures import Figures, figures, stage_of, stage_width
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
+from .notation import HTML_CSS as NOTATION_CSS
+from .notation import join_vectors, link_names, name_bare_omegas, slot_names
 
 DRAWABLE = ("vector", "image", "line", "intersection")
-#: printable area (mm) of an A4 page with the margins of the stylesheet below
+#: printable area (mm) of an A4 page with the margins of the stylesheet below (every page
+#: portrait: one orientation throughout)
 PORTRAIT = (180.0, 262.0)
-LANDSCAPE = (277.0, 188.0)
-#: width (mm) of a stage figure inside the narration
-STAGE_WIDTH = 110.0
 #: empty drawing areas of the worksheet (mm, inside their 4 mm side margins and above their
 #: 14 mm scale bar): A5 when the key's drawing fits it, else as large as a page allows
-AREAS = {"A5": (150.0, 100.0), "landscape": (268.0, 150.0), "portrait": (172.0, 222.0)}
+AREAS = {"A5": (150.0, 100.0), "portrait": (172.0, 222.0)}
 
 UNIT_OF = {"velocity": "m/s", "acceleration": "m/s²"}
 WHAT = {"velocity": "velocity", "acceleration": "acceleration"}
 
 
-# ---------------------------------------------------------------- figures
-@dataclass
-class Figures:
-    """The diagrams of one solution: SVG bytes and the drawing records, by name
-    ('space', 'velocity', 'velocity-1', ...)."""
-    svg: dict = field(default_factory=dict)
-    drawing: dict = field(default_factory=dict)
-    error: str = ""
-
-
-def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
-    """Every diagram of ``sol`` with its stages, through the public API of :mod:`diagrams`."""
-    import diagrams
-    from .svg import to_svg
-    out = Figures()
-    for d in diagrams.drawings(sol, scales, paper, True):
-        out.drawing[d.name] = d
-        out.svg[d.name] = to_svg(trimmed(d) if d.stage is not None else d)
-    return out
-
-
-def stage_width(natural: float) -> float:
-    """Printed width (mm) of a stage figure ``natural`` mm wide: at most the column, at least
-    60 % of full size for wide drawings so their labels stay legible."""
-    return min(natural, max(STAGE_WIDTH, 0.6 * natural), 172.0)
-
-
-def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3.0):
-    """A copy of drawing ``d`` without the groups named in ``drop`` (their ident or class),
-    cropped to what is left: the stage figures inside the narration need neither their own
-    title nor their caption, since the handout's text says both."""
-    from dataclasses import replace
-
-    from .labels import text_box
-    from .model import Arrow, Circle, Polyline, Segment, Text
-
-    groups = tuple(g for g in d.groups if g.ident not in drop
-                   and not set(g.cls.split()) & set(drop))
-    xs: list[float] = []
-    ys: list[float] = []
-
-    def walk(items):
-        for it in items:
-            if hasattr(it, "items") and not isinstance(it, (Segment, Polyline, Circle, Arrow,
-                                                            Text)):
-                walk(it.items)
-            elif isinstance(it, Segment):
-                xs.extend((it.a[0], it.b[0]))
-                ys.extend((it.a[1], it.b[1]))
-            elif isinstance(it, Polyline):
-                xs.extend(p[0] for p in it.points)
-                ys.extend(p[1] for p in it.points)
-            elif isinstance(it, Circle):
-                xs.extend((it.centre[0] - it.r, it.centre[0] + it.r))
-                ys.extend((it.centre[1] - it.r, it.centre[1] + it.r))
-            elif isinstance(it, Arrow):
-                pts = [it.tail, it.tip, *it.head]
-                xs.extend(p[0] for p in pts)
-                ys.extend(p[1] for p in pts)
-            elif isinstance(it, Text):
-                b = text_box(it.x, it.baseline, it.text, it.size, it.anchor)
-                xs.extend((b.x0, b.x1))
-                ys.extend((b.y0, b.y1))
-    walk(groups)
-    if not xs:
-        return d
-    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
-    dx, dy = margin - x0, margin - y0
-    return replace(d, width=round(x1 - x0 + 2 * margin, 1),
-                   height=round(y1 - y0 + 2 * margin, 1),
-                   groups=tuple(g.moved(dx, dy) for g in groups))
-
-
-def stage_of(sol: Solution, step: Step) -> int | None:
-    """Stage number (1, 2 ...) of a drawn step in its diagram's stage figures, else None."""
-    if step.kind not in DRAWABLE:
-        return None
-    k = 0
-    for s in sol.steps:
-        if s.diagram == step.diagram and s.kind in DRAWABLE:
-            k += 1
-            if s.number == step.number:
-                return k
-    return None
-
-
-def letter(k: int) -> str:
-    return chr(ord("a") + k - 1) if k <= 26 else str(k)
-
-
-# ---------------------------------------------------------------- words
 EXPLAIN = {
     "relative_velocity": (
         "Relative velocity",
@@ -281,7 +190,6 @@ def redact_answers(text: str) -> str:
 # ---------------------------------------------------------------- the document
 CSS = """
 @page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
-@page wide { size: A4 landscape; margin: 10mm; }
 html { background: #ffffff; }
 body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 10.5pt;
        line-height: 1.42; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
@@ -307,6 +215,10 @@ td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space:
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
 li.step { margin: 0 0 4mm 0; break-inside: avoid; page-break-inside: avoid; }
+ol.steps.staged { display: grid; grid-template-columns: 1fr 1fr; column-gap: 5mm; }
+ol.steps.staged li.step { margin: 0 0 3mm 0; font-size: 9.5pt; }
+ol.steps.staged figure { margin: 1mm 0 0 0; }
+ol.steps.staged > aside.explain { grid-column: 1 / -1; margin: 0 0 3mm 0; }
 li.step .say { margin: 0.5mm 0; }
 li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
                display: inline-block; min-width: 8mm; }
@@ -320,10 +232,9 @@ figure { margin: 1.5mm 0 1mm 8mm; break-inside: avoid; page-break-inside: avoid;
 figure svg { display: block; max-width: 100%; height: auto; }
 figure svg.drawing-area { max-width: none; }
 figcaption, .figure-note { font-size: 8.5pt; color: #333; }
-section.plate { page: wide; break-before: page; page-break-before: always; }
+section.plate { break-inside: avoid; page-break-inside: avoid; margin-top: 4mm; }
 section.plate figure { margin: 0; }
 section.plate h3 { margin-top: 0; }
-section.plate.portrait { page: auto; }
 .note { font-size: 9.5pt; }
 .slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
 .about p { font-size: 9pt; color: #222; margin: 0.5mm 0 1.5mm 0; }
@@ -343,7 +254,7 @@ table.wide td.q { width: 30%; }
   section.plate { border-top: 0.3mm dashed #999; margin-top: 8mm; padding-top: 4mm;
                   overflow-x: auto; }
 }
-"""
+""" + NOTATION_CSS + "\n"
 
 
 class _Doc:
@@ -514,19 +425,11 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
         return
     w, h = svg_size(svg)
     room_p = _room(intro, PORTRAIT[0], level)
-    room_l = _room(intro, LANDSCAPE[0], level)
     if w <= PORTRAIT[0] and h <= PORTRAIT[1] - room_p:
         cls, width, reduced = "plate portrait", w, None
-    elif w <= LANDSCAPE[0] and h <= LANDSCAPE[1] - room_l:
-        cls, width, reduced = "plate", w, None
     else:
-        k_land = min(LANDSCAPE[0] / w, (LANDSCAPE[1] - room_l) / h)
-        k_port = min(PORTRAIT[0] / w, (PORTRAIT[1] - room_p) / h)
-        if k_port >= k_land:
-            cls, k = "plate portrait", k_port
-        else:
-            cls, k = "plate", k_land
-        width, reduced = w * k, k
+        k = min(PORTRAIT[0] / w, (PORTRAIT[1] - room_p) / h)
+        cls, width, reduced = "plate portrait", w * k, k
     doc.add(f'<section class="{cls}" id="{esc(ident or "plate-" + name)}">\n'
             f"<{level}>{esc(heading)}</{level}>\n{intro}")
     doc.add(f'<figure class="diagram full">{inline_svg(svg, name, "figure", width, label)}'
@@ -594,44 +497,52 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                                           if g.lower() != sol.pole])
     P, Q = _example_pair(sol)
     intro = (f"Lower-case letters are the points of the {what} diagram: the vector from "
-             f"<em>{esc(sol.vertex_of(P))}</em> to <em>{esc(sol.vertex_of(Q))}</em> is the "
-             f"{what} of {esc(Q)} relative to {esc(P)}. The pole "
-             f"<em>{esc(pole_alias)}</em> stands for every fixed point, which has no "
-             f"{what}.")
+             f"<em>{sym(sol.vertex_of(P))}</em> to <em>{sym(sol.vertex_of(Q))}</em> is the "
+             f"{what} of {sym(Q)} relative to {sym(P)}. The pole "
+             f"<em>{sym(pole_alias)}</em> stands for every fixed point, which has no "
+             f"{what}. Every component has one colour and line style (the key on each "
+             f"drawing), readable in greyscale too.")
     if scale is not None:
         intro += f" Scale <strong>{esc(scale.statement)}</strong>."
     doc.add(f"<p>{intro}</p>\n")
     if not worksheet:
         doc.add(f'<p class="figure-note">Each step below shows the drawing so far, the new '
-                f"line in black and the earlier ones in grey, with the scale bar it is drawn "
+                f"step drawn heavier and the earlier ones lighter, with the scale bar it is drawn "
                 f"to (the stage figures may be reduced: measure on the finished {what} "
                 f"diagram that follows them, printed full size when the page allows).</p>\n")
-    doc.add(f'<ol class="steps" id="{diagram}-steps">\n')
+    links = link_names(scene)
+    vertices = list(sol.vertices.get(diagram, ()))
+
+    def words(text: str) -> str:
+        """The drawings' notation: ω_AB for a bare ω of link AB, b₁b for a vector name."""
+        return join_vectors(name_bare_omegas(slot_names(text, scene), links), vertices)
+
+    doc.add(f'<ol class="steps{"" if worksheet else " staged"}" id="{diagram}-steps">\n')
     for step in sol.steps:
         if step.diagram != diagram:
             continue
         for key in _explains_for(step):
             _explain(doc, key)
         k = stage_of(sol, step)
-        fig_ref = f" (Fig. {letter(k)})" if k is not None and not worksheet else ""
+        fig_ref = f" (stage {k})" if k is not None and not worksheet else ""
         doc.add(f'<li class="step" id="{diagram}-step-{step.number}" '
                 f'data-step="{step.number}">\n'
                 f'<p class="say"><span class="num">{step.number}.</span>'
-                f"{sym(step.reason)}{esc(fig_ref)}</p>\n")
+                f"{sym(words(step.reason))}{esc(fig_ref)}</p>\n")
         if worksheet:
             if step.kind != "intersection":
-                doc.add(f'<p class="formula symbolic">{sym(step.formula)}</p>\n')
+                doc.add(f'<p class="formula symbolic">{sym(words(step.formula))}</p>\n')
         else:
             f = formula_with_numbers(step)
             if f:
-                doc.add(f'<p class="formula answer">{_sym_numbers(f)}</p>\n')
+                doc.add(f'<p class="formula answer">{_sym_numbers(words(f))}</p>\n')
             name = f"{diagram}-{k}" if k is not None else None
             if name and name in figs.svg:
                 svg = figs.svg[name]
-                w, _ = svg_size(svg)
+                w, h = svg_size(svg)
                 doc.add(f'<figure class="diagram stage">'
-                        f"{inline_svg(svg, name, 'figure', stage_width(w), f'{what} diagram, Fig. {letter(k)}')}"
-                        f"<figcaption>Fig. {letter(k)}: {what} diagram, stage {k}"
+                        f"{inline_svg(svg, name, 'figure', stage_width(w, h), f'{what} diagram, stage {k}')}"
+                        f"<figcaption>Stage {k} of the {what} diagram"
                         f"</figcaption></figure>\n")
         doc.add("</li>\n")
     doc.add("</ol>\n")
@@ -680,12 +591,12 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     frame = lay.frame
     fw, fh = frame.x1 - frame.x0, frame.y1 - frame.y0
     k = 1.0
-    for name in ("A5", "landscape", "portrait"):
+    for name in ("A5", "portrait"):
         aw, ah = AREAS[name]
         if fw <= aw and fh <= ah:
             break
     else:
-        name = "landscape"
+        name = "portrait"
         aw, ah = AREAS[name]
         scale = make(scale.quantity, round_up(scale.per_cm * max(fw / aw, fh / ah)))
         k = lay.scale.per_cm / scale.per_cm
@@ -696,7 +607,7 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     svg = grid_svg(aw, ah, scale.statement, scale.per_cm_display, plain_text(scale.unit),
                    f"area-{diagram}", f"Empty drawing area for the {what} diagram, "
                    f"scale {scale.statement}", pole, f"pole {sol.pole}: start here")
-    cls = "plate" if name == "landscape" else "plate portrait"
+    cls = "plate portrait"
     note = (f"True size at 100 % print scale: {scale.statement}; grid squares 5 mm. The ring "
             f"marks a pole position that leaves room for the whole diagram.")
     if k != 1.0:

@@ -22,24 +22,13 @@ def plain_text(text: str) -> str:
             .replace("^2", "²"))
 
 
-_SUB = re.compile(r"(?<![A-Za-z0-9])(v|a|ω|α|w)_([A-Za-z][A-Za-z0-9]*)")
-_PAREN_SUB = re.compile(r"\)_([A-Z][A-Za-z0-9]*)")
-_SUP = re.compile(r"\^(n|t|slide)\b")
 
 
 def sym(text: str) -> str:
-    """Escaped HTML with textbook subscripts: '(a_C)_B^n' → (a<sub>C</sub>)<sub>B</sub><sup>n</sup>.
-
-    Only a symbol letter (v, a, ω, α) or a closing bracket takes a subscript, so polygon vertex
-    names such as 'p4_1' are left alone.
-    """
-    out = esc(plain_text(text))
-    out = re.sub(r"(?<![A-Za-z])omega_(?=[A-Z])", "ω_", out)
-    out = re.sub(r"(?<![A-Za-z])alpha_(?=[A-Z])", "α_", out)
-    out = _SUB.sub(lambda m: f"{m.group(1)}<sub>{m.group(2)}</sub>", out)
-    out = _PAREN_SUB.sub(lambda m: f")<sub>{m.group(1)}</sub>", out)
-    out = _SUP.sub(lambda m: f"<sup>{m.group(1)}</sup>", out)
-    return out
+    """Escaped HTML with textbook subscripts: '(a_C)_B^n' → (a<sub>C</sub>)<sub>B</sub><sup>n</sup>,
+    vertex 'p2_1' → p<sub>2</sub>′ (one notation with the SVGs: :mod:`diagrams.notation`)."""
+    from .notation import html as typeset
+    return typeset(plain_text(text))
 
 
 def num(x: float | None, digits: int = 4) -> str:

@@ -14,6 +14,9 @@ from .text import ASCENT, DESCENT, width
 
 Pt = tuple[float, float]
 
+#: clear space (mm) kept between two labels, so they never touch
+LABEL_GAP = 0.35
+
 
 @dataclass(frozen=True)
 class Box:
@@ -132,7 +135,8 @@ class Placer:
         self.boxes.append(box)
 
     def free(self, box: Box) -> bool:
-        if any(box.overlaps(b) for b in self.boxes):
+        gapped = box.grown(LABEL_GAP)
+        if any(gapped.overlaps(b) for b in self.boxes):
             return False
         return not any(box_hits_segment(box, a, b, c) for a, b, c in self.hard_segments)
 
@@ -165,9 +169,11 @@ class Placer:
         return self.place_any(text, size, [(at, dirs)], prefer=prefer, distances=distances)
 
     def place_any(self, text: str, size: float, anchors, *, prefer: float | None = None,
-                  distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), extra_cost=None
-                  ) -> tuple[float, float, str, Box]:
-        """Like :meth:`place` over several (point, directions) anchors; the cheapest wins."""
+                  distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), extra_cost=None,
+                  required: bool = True) -> tuple[float, float, str, Box] | None:
+        """Like :meth:`place` over several (point, directions) anchors; the cheapest wins.
+
+        With ``required`` False, None when no candidate is free (nothing is placed)."""
         w = width(text, size)
         h = (ASCENT + DESCENT) * size
         best = None
@@ -193,6 +199,8 @@ class Placer:
                         best = (c, box)
             if best is not None and best[0] < (rank + 1) * 0.9:
                 break
+        if best is None and not required:
+            return None
         if best is None:   # nothing free anywhere: park it beside the first anchor, far out
             at = anchors[0][0]
             best = (math.inf, Box(at[0] + 14, at[1] + 2, at[0] + 14 + w, at[1] + 2 + h))

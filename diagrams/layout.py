@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from .labels import Box
-from .model import Drawing, Group, Segment, Text
+from .model import Arrow, Drawing, Group, Segment, Text
 from .scale import Scale
 from .text import ASCENT, DESCENT, display, plain, width, wrap
 
@@ -19,6 +19,8 @@ LEGEND_SIZE = 2.8
 CAPTION_SIZE = 3.0
 SCALE_SIZE = 2.6
 LINE = 1.45           # line spacing, × font size
+KEY_SAMPLE = 9.0      # length (mm) of a key's sample line
+PAGE_WIDTH = 277.0    # A4 landscape less 10 mm margins: the widest page a drawing takes
 
 
 def arrow_head(tail, tip, length=3.0, half=1.0, open_head=False):
@@ -37,7 +39,8 @@ def arrow_head(tail, tip, length=3.0, half=1.0, open_head=False):
     return head, (bx + ux * back, by + uy * back)
 
 
-def scale_bar(scale: Scale, max_len_mm: float) -> tuple[Group, float, float]:
+def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE,
+              statement: bool = True) -> tuple[Group, float, float]:
     """A bar of whole centimetres with ticks and values, and the stated scale.
 
     Returns (group at origin, width, height).  Its statement text has id 'scale-statement'
@@ -47,7 +50,7 @@ def scale_bar(scale: Scale, max_len_mm: float) -> tuple[Group, float, float]:
     # label every k-th centimetre so the numbers do not collide
     vals = [plain(round(i * scale.per_cm_display, 12)) for i in range(n + 1)]
     k = 1
-    while any(width(v, SCALE_SIZE) + 2.0 > 10.0 * k for v in vals) and k < n:
+    while any(width(v, size) + 2.0 > 10.0 * k for v in vals) and k < n:
         k += 1
     items = [Segment((0.0, 0.0), (10.0 * n, 0.0), "scalebar", cls="scale-bar-line")]
     tick_y = 1.5
@@ -55,17 +58,20 @@ def scale_bar(scale: Scale, max_len_mm: float) -> tuple[Group, float, float]:
         items.append(Segment((10.0 * i, 0.0), (10.0 * i, tick_y if i % k == 0 else 0.8),
                              "scalebar"))
         if i % k == 0 or i == n:
-            items.append(Text(10.0 * i, tick_y + 0.8, vals[i], SCALE_SIZE, "middle",
+            items.append(Text(10.0 * i, tick_y + 0.8, vals[i], size, "middle",
                               role="scale"))
     unit_x = 10.0 * n + 2.0
-    items.append(Text(unit_x, -0.4, display(scale.unit), SCALE_SIZE, role="scale"))
-    statement = f"Scale {scale.statement}"
-    sx = unit_x + width(display(scale.unit), SCALE_SIZE) + 4.0
-    items.append(Text(sx, -0.4, statement, SCALE_SIZE + 0.4, role="scale", weight="bold",
-                      ident="scale-statement"))
-    w = sx + width(statement, SCALE_SIZE + 0.4)
+    items.append(Text(unit_x, -0.4, display(scale.unit), size, role="scale"))
+    text = f"Scale {scale.statement}"
+    sx = unit_x + width(display(scale.unit), size) + 4.0
+    if statement:
+        items.append(Text(sx, -0.4, text, size + 0.4, role="scale", weight="bold",
+                          ident="scale-statement"))
+        w = sx + width(text, size + 0.4)
+    else:      # a stage figure in a handout whose text states the scale
+        w = sx - 4.0
     g = Group("scale-bar", "scale-bar", f"Scale bar: {scale.statement}", tuple(items))
-    return g, w, tick_y + 0.8 + ASCENT * SCALE_SIZE + 1.5
+    return g, w, tick_y + 0.8 + ASCENT * size + 1.5
 
 
 def _text_lines(lines, size, role, x, top, weight="normal", faded=False):
@@ -81,22 +87,38 @@ def _text_lines(lines, size, role, x, top, weight="normal", faded=False):
 
 def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: str,
             desc: str, content: list[Group], content_box: Box, legend: list[tuple[str, str]],
-            scale: Scale, caption: list[str], scale_statement: str, meta: dict) -> Drawing:
+            scale: Scale, caption: list[str], scale_statement: str, meta: dict,
+            key: list[tuple[str, str, bool]] = ()) -> Drawing:
     """Put the drawing (``content`` inside ``content_box``, content coordinates) on a page.
 
-    ``legend`` is a list of (text, weight); ``caption`` a list of paragraphs.
+    ``legend`` is a list of (text, weight); ``caption`` a list of paragraphs; ``key`` the
+    line styles drawn, as (style, words, arrow?), shown as samples above the legend.
     """
     cw, ch = content_box.x1 - content_box.x0, content_box.y1 - content_box.y0
-    legend_w = max((width(t, LEGEND_SIZE) for t, _ in legend), default=0.0)
-    legend_h = len(legend) * LINE * LEGEND_SIZE
+    key_rows = ([("Key:", "bold")] + [(w, "normal") for _, w, _ in key]) if key else []
+    key_w = max([KEY_SAMPLE + 2.0 + width(t, LEGEND_SIZE) for t, _ in key_rows[1:]]
+                + [width(t, LEGEND_SIZE) for t, _ in key_rows[:1]], default=0.0)
+    leg_w = max((width(t, LEGEND_SIZE) for t, _ in legend), default=0.0)
+    row = LINE * LEGEND_SIZE
+    # beside the drawing while the page stays within A4 landscape; else below it, key and
+    # legend side by side
+    below = bool(legend or key) and cw + GAP + max(key_w, leg_w) > PAGE_WIDTH - 2 * MARGIN
+    if below:
+        side_w = 0.0
+        under_w = key_w + (GAP if key and legend else 0.0) + leg_w
+        under_h = max(len(key_rows), len(legend)) * row + 3.0
+        body_h = ch + under_h
+    else:
+        side_w = (GAP + max(key_w, leg_w)) if (legend or key) else 0.0
+        under_w = 0.0
+        body_h = max(ch, (len(key_rows) + (1 if key and legend else 0) + len(legend)) * row)
     bar, bar_w, bar_h = scale_bar(scale, max(cw, 60.0))
     title_w = max(width(title, TITLE_SIZE), width(subtitle, SUBTITLE_SIZE))
-    inner_w = max(cw + ((GAP + legend_w) if legend else 0.0), bar_w, title_w, 120.0)
+    inner_w = max(cw + side_w, under_w, bar_w, title_w, 120.0)
     cap_lines: list[str] = []
     for para in caption:
         cap_lines += wrap(para, inner_w, CAPTION_SIZE)
     title_h = LINE * TITLE_SIZE + LINE * SUBTITLE_SIZE + 3.0
-    body_h = max(ch, legend_h)
     cap_h = (len(cap_lines) * LINE * CAPTION_SIZE + 3.0) if cap_lines else 0.0
     W = round(inner_w + 2 * MARGIN, 1)
     H = round(MARGIN + title_h + body_h + 4.0 + bar_h + cap_h + MARGIN, 1)
@@ -111,13 +133,38 @@ def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: st
     dx = MARGIN - content_box.x0
     dy = body_top - content_box.y1
     groups += [g.moved(dx, dy) for g in content]
-    if legend:
-        lx = MARGIN + cw + GAP
+    if below:
+        kx, ky = MARGIN, body_top - ch - 3.0
+        lx, ly = MARGIN + (key_w + GAP if key else 0.0), ky
+    else:
+        kx, ky = MARGIN + cw + GAP, body_top
+        lx = kx
+        ly = body_top - (len(key_rows) + 1) * row if key else body_top
+    if key:
         items = []
-        y = body_top - ASCENT * LEGEND_SIZE
+        y = ky - ASCENT * LEGEND_SIZE
+        for i, (text, weight) in enumerate(key_rows):
+            if i >= 1:
+                style, _, is_arrow = key[i - 1]
+                ym = y + 0.3 * LEGEND_SIZE
+                a, b = (kx, ym), (kx + KEY_SAMPLE, ym)
+                if is_arrow:
+                    open_head = style.startswith("c-coriolis") or style == "input-alpha"
+                    head, shaft = arrow_head(a, b, 2.2, 0.8, open_head)
+                    items.append(Arrow(a, b, style, head, shaft, role="key"))
+                else:
+                    items.append(Segment(a, b, style, cls="key-sample"))
+                items.append(Text(kx + KEY_SAMPLE + 2.0, y, text, LEGEND_SIZE, role="key"))
+            else:
+                items.append(Text(kx, y, text, LEGEND_SIZE, role="key", weight=weight))
+            y -= row
+        groups.append(Group("key", "key", "Key: one line style per component", tuple(items)))
+    if legend:
+        items = []
+        y = ly - ASCENT * LEGEND_SIZE
         for text, weight in legend:
             items.append(Text(lx, y, text, LEGEND_SIZE, role="legend", weight=weight))
-            y -= LINE * LEGEND_SIZE
+            y -= row
         groups.append(Group("legend", "legend", "Legend: values measured on the drawing",
                             tuple(items)))
     bar_y = body_top - body_h - 4.0 - bar_h + DESCENT * SCALE_SIZE + 1.0

@@ -2,8 +2,8 @@
 
 Layout modules (:mod:`diagrams.polygon`, :mod:`diagrams.space`) build a :class:`Drawing` of
 these items; :mod:`diagrams.svg` (the only svgwrite importer) writes it.  Styles are names
-(``'vector'``, ``'construction'``, ``'coriolis'`` ...) whose meaning is carried by line
-weight, dash pattern and arrowhead shape — never by colour alone; see :mod:`diagrams.svg`.
+(``'link'``, ``'c-centripetal'``, ``'c-coriolis-new'`` ...) whose meaning is carried by line
+weight, dash pattern and arrowhead shape as well as colour; see :mod:`diagrams.components`.
 """
 from __future__ import annotations
 
@@ -91,6 +91,7 @@ class Text:
     faded: bool = False
     cls: str = ""
     ident: str = ""
+    ink: str = ""              # text colour ('' : black); a component label takes its look's
 
     def moved(self, dx, dy):
         return replace(self, x=self.x + dx, baseline=self.baseline + dy)
@@ -123,7 +124,9 @@ class Drawing:
     meta: dict = field(default_factory=dict, compare=False, hash=False)
 
     def items(self, cls: str | None = None):
-        """All items (recursively), optionally only those of groups whose class has ``cls``."""
+        """All items (recursively), optionally only those of groups whose class has ``cls``.
+
+        The key's sample lines are not part of the drawing: only ``items('key')`` has them."""
         def walk(g):
             for it in g.items:
                 if isinstance(it, Group):
@@ -131,5 +134,5 @@ class Drawing:
                 else:
                     yield it
         for g in self.groups:
-            if cls is None or cls in g.cls.split():
+            if (cls is None and g.cls != "key") or (cls is not None and cls in g.cls.split()):
                 yield from walk(g)

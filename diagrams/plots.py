@@ -54,10 +54,12 @@ class Marker:
 def plot_panels(title: str, xlabel: str, panels: Sequence[Panel], stem: str | Path,
                 formats: Sequence[str] = ("png", "svg"), markers: Sequence[Marker] = (),
                 xlim: tuple[float, float] | None = None, xticks: Sequence[float] | None = None,
-                width: float = 8.0, panel_height: float = 2.6, dpi: int = 110) -> list[Path]:
+                width: float = 8.0, panel_height: float = 2.6, dpi: int = 110,
+                reverse_x: bool = False) -> list[Path]:
     """Draw ``panels`` stacked over one shared x axis and save ``stem.<fmt>`` for each format.
 
-    Returns the paths written."""
+    ``reverse_x`` runs the x axis from high to low values: for a crank turning CW (its angle
+    decreasing) the curves then read left to right in time.  Returns the paths written."""
     stem = Path(stem)
     stem.parent.mkdir(parents=True, exist_ok=True)
     with matplotlib.rc_context({"svg.hashsalt": HASHSALT, "svg.fonttype": "path",
@@ -89,6 +91,8 @@ def plot_panels(title: str, xlabel: str, panels: Sequence[Panel], stem: str | Pa
             axes[-1].set_xlim(*xlim)
         if xticks is not None:
             axes[-1].set_xticks(list(xticks))
+        if reverse_x:
+            axes[-1].invert_xaxis()
         axes[-1].set_xlabel(xlabel)
         fig.suptitle("\n".join(textwrap.fill(t, 100) for t in title.split("\n")),
                      fontsize=10)

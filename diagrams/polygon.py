@@ -14,8 +14,11 @@ and ``Solution.vertices``.  What this module decides is how each record looks on
   the lever point) and the absolute vector pole → vertex is added, dotted, if not yet drawn;
 * 'measure' steps draw nothing; their values go to the legend.
 
-Stage k of a diagram shows every drawable step up to the k-th, the k-th in full black and
-heavier, the earlier ones grey, with the step's sentence as the caption.
+Every vector is drawn in the look of its component kind (:func:`diagrams.components.component_of`)
+and named at its midpoint; the asked quantities of the scene (``[[answers]]``) are drawn too
+(absolute ones from the pole), so every diagram closes to the question.  Stage k of a diagram
+shows every drawable step up to the k-th, the k-th heavier, the earlier ones lighter, with
+the step's sentence in the drawings' notation as the caption.
 """
 from __future__ import annotations
 
@@ -29,13 +32,16 @@ from polygons.plan import Step
 from . import scale as scales
 from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
 from .layout import arrow_head, compose
+from .components import LOOKS, ORDER, component_of
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
+from .notation import join_vectors, link_names, name_bare_omegas, slot_names, vector
 from .text import display, number, token
 
 Pt = tuple[float, float]
 
 LABEL_SIZE = 3.5
 LINE_LABEL_SIZE = 2.7
+VECTOR_LABEL_SIZE = 2.6
 FRAME_MARGIN = 10.0     # construction lines run this far (mm) beyond the polygon
 QUANTITY = {"velocity": "velocity", "acceleration": "acceleration"}
 UNIT_SI = {"velocity": "m/s", "acceleration": "m/s²"}
@@ -54,6 +60,7 @@ class Stroke:
     to: str = ""
     label: str = ""     # lines: what the step draws; arrows: the quantity
     title: str = ""
+    component: str = "construction"   # diagrams.components kind
 
 
 @dataclass(frozen=True)
@@ -80,22 +87,28 @@ def construction(sol: Solution, diagram: str) -> Construction:
     measures = []
     unit = UNIT_SI[diagram]
     for s in steps:
+        comp = component_of(s)
         if s.kind in ("vector", "image"):
             role = {"coriolis": "coriolis", "join": "join"}.get(
                 s.op, "image" if s.kind == "image" else "known")
+            label = _image_quantity(sol, s) if s.kind == "image" else s.quantity
+            if s.op == "coriolis":
+                label = "2ωv"
             strokes.append(Stroke(s.number, "arrow", role, s.at, s.point, s.start, s.end,
-                                  s.quantity, f"{s.start}{s.end}: {s.quantity}"))
+                                  label, f"{vector(s.start, s.end)}: {label}", comp))
             if s.kind == "image":
                 q = sol.vertex_of(s.args[2])
-                strokes.append(Stroke(s.number, "side", "image-side", vx[q], s.point, q, s.end))
+                strokes.append(Stroke(s.number, "side", "image-side", vx[q], s.point, q, s.end,
+                                      component="image"))
             born.setdefault(s.end, s.number)
         elif s.kind == "line":
             lines[s.number] = s
             strokes.append(Stroke(s.number, "line", "construction", s.at, s.direction,
-                                  s.start or "", "", s.draws, s.reason))
+                                  s.start or "", "", slot_names(s.draws, sol.scene), s.reason))
             if s.op == "coriolis_offset_line" and s.start is not None:
-                strokes.append(Stroke(s.number, "offset", "offset", vx[s.start], s.at,
-                                      s.start, "", "2ωv"))
+                # the step back from the pin's vertex: anchor + 2ωv = the pin's vertex
+                strokes.append(Stroke(s.number, "offset", "offset", s.at, vx[s.start],
+                                      "", s.start, "2ωv", "Coriolis offset 2ωv", "coriolis"))
         elif s.kind == "intersection":
             born.setdefault(s.end, s.number)
             made = set()
@@ -108,16 +121,70 @@ def construction(sol: Solution, diagram: str) -> Construction:
                 else:
                     tail, tip, frm, to = ln.at, s.point, ln.start, s.end
                 strokes.append(Stroke(s.number, "arrow", "resolved", tail, tip, frm, to,
-                                      ln.quantity, f"{frm}{to}: {ln.quantity}"))
+                                      ln.quantity, f"{vector(frm, to)}: {ln.quantity}",
+                                      component_of(ln)))
                 made.add((frm, to))
             if (pole, s.end) not in made:
                 strokes.append(Stroke(s.number, "arrow", "result", vx[pole], s.point, pole,
-                                      s.end, s.quantity, f"{pole}{s.end}: {s.quantity}"))
+                                      s.end, s.quantity, f"{vector(pole, s.end)}: {s.quantity}",
+                                      "resultant"))
         elif s.kind == "measure":
             measures.append(s)
+    strokes += _asked(sol, diagram, strokes, born, vx)
     drawable = tuple(s for s in steps if s.kind in DRAWABLE)
     return Construction(diagram, pole, " = ".join(aliases), drawable, tuple(measures),
                         tuple(strokes), vx, born)
+
+
+def _image_quantity(sol: Solution, s: Step) -> str:
+    """The quantity of an image step's arrow start → end: '(v_D)_A' (not the absolute 'v_D')."""
+    sym = "v" if s.diagram == "velocity" else "a"
+    x = s.args[-1]
+    ref = next((lab for lab in s.args[1:-1] if sol.vertex_of(lab) == s.start), None)
+    if ref is None or sol.vertex_of(ref) == sol.pole:
+        return f"{sym}_{x}"
+    return f"({sym}_{x})_{ref}"
+
+
+def asked_quantities(sol: Solution, diagram: str) -> list[tuple[str, ...]]:
+    """The scene's asked ``[[answers]]`` of this diagram as point labels: [('D',), ('B', 'A')].
+
+    'v(D)' / 'a(D)' ask for the absolute vector (drawn from the pole), 'v(B,A)' for B
+    relative to A.  Other quantities (ω, components, sliding) are drawn by their steps.
+    """
+    fn = "v" if diagram == "velocity" else "a"
+    out = []
+    for ans in sol.scene.answers:
+        m = re.fullmatch(r"\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?\)\s*",
+                         ans.quantity)
+        if not m or m.group(1) != fn:
+            continue
+        args = tuple(g for g in m.groups()[1:] if g)
+        if all(a in sol.points for a in args) and args not in out:
+            out.append(args)
+    return out
+
+
+def _asked(sol: Solution, diagram: str, strokes, born, vx) -> list[Stroke]:
+    """Arrows for the asked quantities the construction has not drawn yet (od for v_D)."""
+    sym = "v" if diagram == "velocity" else "a"
+    drawn = {(st.frm, st.to) for st in strokes if st.kind == "arrow"}
+    out = []
+    for args in asked_quantities(sol, diagram):
+        x = sol.vertex_of(args[0])
+        y = sol.pole if len(args) == 1 else sol.vertex_of(args[1])
+        if x == y or (y, x) in drawn or x not in vx or y not in vx or x not in born:
+            continue
+        step = max(born[x], born.get(y, 0))
+        if y == sol.pole:
+            label, role, comp = f"{sym}_{args[0]}", "result", "resultant"
+        else:
+            label, role = f"({sym}_{args[0]})_{args[1]}", "join"
+            comp = "relative" if diagram == "velocity" else "resultant"
+        out.append(Stroke(step, "arrow", role, vx[y], vx[x], y, x, label,
+                          f"{vector(y, x)}: {label} (asked)", comp))
+        drawn.add((y, x))
+    return out
 
 
 _RELATIVE = re.compile(r"^\((?:v|a)_([^)]+)\)_([^\s^]+)")
@@ -150,7 +217,11 @@ class Layout:
     frame: Box
     vertex_labels: tuple             # (names tuple, x, baseline, box)
     line_labels: dict                # step number -> (text, x, baseline, box)
-    coriolis_labels: dict            # step number -> (x, baseline, box)
+    vector_labels: dict              # (step, frm, to) -> (text, x, baseline, box)
+    text_scale: float = 1.0          # labels × this (a figure printed reduced: larger labels)
+
+    def size(self, base: float) -> float:
+        return round(base * self.text_scale, 3)
 
     def P(self, v: Pt) -> Pt:
         k = self.scale.mm_per_si
@@ -168,7 +239,7 @@ def _extent_points(con: Construction) -> list[Pt]:
 
 
 def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
-           paper: str | None = None) -> Layout:
+           paper: str | None = None, text_scale: float = 1.0) -> Layout:
     con = construction(sol, diagram)
     pts = _extent_points(con)
     bb = bounds(pts)
@@ -182,7 +253,7 @@ def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
     k = scale.mm_per_si
     w, h = extent[0] * k, extent[1] * k
     frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
-    lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {})
+    lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {}, text_scale)
     return _place_labels(lay)
 
 
@@ -211,7 +282,10 @@ def _place_labels(lay: Layout) -> Layout:
         elif st.kind == "line":
             placer.soft(g[0], g[1])
         else:
-            placer.hard(g[0], g[1], 0.5)
+            placer.hard(g[0], g[1], 0.6)
+            if st.kind == "offset":
+                for a, b in _right_angle(lay.con, st, g):
+                    placer.hard(a, b, 0.3)
     # vertices: group those drawn at the same place
     order = sorted(con.vertices, key=lambda n: (con.born.get(n, 99), n))
     groups: list[list[str]] = []
@@ -245,7 +319,7 @@ def _place_labels(lay: Layout) -> Layout:
         text = _vertex_text(con, gr, None)
         placer.boxes = [b for b in placer.boxes
                         if not (b.x1 - b.x0 < 1.7 and b.contains(at))]   # own dot
-        x, base, _, box = placer.place(text, at, LABEL_SIZE, prefer=prefer)
+        x, base, _, box = placer.place(text, at, lay.size(LABEL_SIZE), prefer=prefer)
         vlabels.append((tuple(gr), x, base, box))
         placer.block(Box(at[0] - 0.8, at[1] - 0.8, at[0] + 0.8, at[1] + 0.8))
     llabels = {}
@@ -261,20 +335,50 @@ def _place_labels(lay: Layout) -> Layout:
             anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
         text = display(st.label)
         placer.hard(g[0], g[1], 0.7)            # not across its own line
-        x, base, _, box = placer.place_any(text, LINE_LABEL_SIZE, anchors,
+        x, base, _, box = placer.place_any(text, lay.size(LINE_LABEL_SIZE), anchors,
                                            distances=(0.3, 0.8, 1.8, 3.3, 5.3, 8.0))
         placer.hard_segments.pop()
         llabels[st.step] = (text, x, base, box)
-    clabels = {}
-    for st, g in geo:
-        if st.kind == "arrow" and st.role == "coriolis":
-            mid = ((g[0][0] + g[1][0]) / 2, (g[0][1] + g[1][1]) / 2)
-            ang = math.atan2(g[1][1] - g[0][1], g[1][0] - g[0][0])
-            x, base, _, box = placer.place_any("2ωv", LINE_LABEL_SIZE + 0.3,
-                                               [(mid, [ang + math.pi / 2, ang - math.pi / 2])],
-                                               distances=(0.8, 1.5, 2.5, 4.0, 6.0, 9.0))
-            clabels[st.step] = (x, base, box)
-    return Layout(con, lay.scale, lay.origin, lay.frame, tuple(vlabels), llabels, clabels)
+    vec_labels = {}
+    # the component named at each vector's midpoint, longest first; a vector too short to
+    # carry its name beside it is named in the side panel only
+    arrows = [(st, g) for st, g in geo if st.kind in ("arrow", "offset") and st.label]
+    arrows.sort(key=lambda sg: (-math.hypot(sg[1][1][0] - sg[1][0][0],
+                                            sg[1][1][1] - sg[1][0][1]), sg[0].step))
+    for st, g in arrows:
+        L = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
+        if L < 4.0:
+            continue
+        ang = math.atan2(g[1][1] - g[0][1], g[1][0] - g[0][0])
+        anchors = []
+        for f in (0.5, 0.4, 0.6, 0.3, 0.7):
+            pt = (g[0][0] + f * (g[1][0] - g[0][0]), g[0][1] + f * (g[1][1] - g[0][1]))
+            anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
+        placed = placer.place_any(st.label, lay.size(VECTOR_LABEL_SIZE), anchors,
+                                  distances=(0.5, 1.1, 2.0, 3.2), required=False)
+        if placed is not None:
+            x, base, _, box = placed
+            vec_labels[(st.step, st.frm, st.to)] = (st.label, x, base, box)
+    return Layout(con, lay.scale, lay.origin, lay.frame, tuple(vlabels), llabels, vec_labels,
+                  lay.text_scale)
+
+
+def _right_angle(con: Construction, st: Stroke, g, size: float = 1.6):
+    """The two short strokes of the right-angle mark where the Coriolis offset (paper
+    segment ``g``, anchor first) meets its construction line."""
+    line = next((ln for ln in con.strokes if ln.kind == "line" and ln.step == st.step), None)
+    (ax, ay), (bx, by) = g
+    L = math.hypot(bx - ax, by - ay)
+    if line is None or L < 3 * size:
+        return []
+    u = ((bx - ax) / L, (by - ay) / L)
+    w = line.b
+    n = math.hypot(*w)
+    w = (w[0] / n, w[1] / n)
+    p1 = (ax + u[0] * size, ay + u[1] * size)
+    p2 = (p1[0] + w[0] * size, p1[1] + w[1] * size)
+    p3 = (ax + w[0] * size, ay + w[1] * size)
+    return [(p1, p2), (p2, p3)]
 
 
 def _near(p: Pt, q: Pt, tol: float = 0.05) -> bool:
@@ -304,6 +408,10 @@ def _stage_number(con: Construction, stage: int | None) -> int | None:
     return None if stage is None else con.steps[stage - 1].number
 
 
+def _style(component: str, new: bool) -> str:
+    return f"c-{component}" + ("-new" if new else "")
+
+
 def stroke_items(lay: Layout, stage: int | None):
     """The drawn items of the polygon up to ``stage`` (None: the finished polygon)."""
     con = lay.con
@@ -317,27 +425,37 @@ def stroke_items(lay: Layout, stage: int | None):
         if st.kind == "line":
             if g is None:
                 continue
-            lines_g.append(Segment(g[0], g[1], "construction-new" if new else "construction",
-                                   faded, cls=f"construction-line step-{st.step}"))
+            lines_g.append(Segment(g[0], g[1], _style("construction", new), faded,
+                                   cls=f"construction-line step-{st.step}"))
             text, x, base, _ = lay.line_labels[st.step]
-            lab_g.append(Text(x, base, text, LINE_LABEL_SIZE, role="line", faded=faded,
+            lab_g.append(Text(x, base, text, lay.size(LINE_LABEL_SIZE), role="line", faded=faded,
                               cls=f"line-label step-{st.step}"))
-        elif st.kind == "offset":
-            lines_g.append(Segment(g[0], g[1], "offset", faded, cls=f"offset step-{st.step}"))
         elif st.kind == "side":
-            lines_g.append(Segment(g[0], g[1], "image-side", faded,
+            lines_g.append(Segment(g[0], g[1], _style("image", False), faded,
                                    cls=f"image-side step-{st.step}"))
         else:
-            style = ARROW_STYLE[st.role]
-            if new:
-                style += "-new"
-            head, shaft_end = arrow_head(g[0], g[1], open_head=st.role == "coriolis")
-            vec_g.append(Arrow(g[0], g[1], style, head, shaft_end, f"{st.frm}{st.to}",
-                               st.frm, st.to, st.role, display(st.title), faded, new))
-            if st.role == "coriolis":
-                x, base, _ = lay.coriolis_labels[st.step]
-                lab_g.append(Text(x, base, "2ωv", LINE_LABEL_SIZE + 0.3, role="coriolis",
-                                  weight="bold", faded=faded, cls="coriolis-label"))
+            look = LOOKS[st.component]
+            head, shaft_end = arrow_head(g[0], g[1], open_head=look.open_head)
+            if st.kind == "arrow":
+                vec_g.append(Arrow(g[0], g[1], _style(st.component, new), head, shaft_end,
+                                   vector(st.frm, st.to), st.frm, st.to, st.role,
+                                   st.title, faded, new))
+            else:     # the Coriolis offset: not a polygon side, an arrowed step back
+                lines_g.append(Segment(g[0], shaft_end, _style(st.component, False), faded,
+                                       cls=f"offset step-{st.step}"))
+                if head:
+                    lines_g.append(Polyline(head, _style(st.component, False), closed=True,
+                                            faded=faded, cls=f"offset-head step-{st.step}"))
+                for a, b in _right_angle(con, st, g):
+                    lines_g.append(Segment(a, b, _style("coriolis", False), faded,
+                                           cls=f"right-angle step-{st.step}"))
+        if st.kind in ("arrow", "offset"):
+            lab = lay.vector_labels.get((st.step, st.frm, st.to))
+            if lab is not None:
+                text, x, base, _ = lab
+                lab_g.append(Text(x, base, text, lay.size(VECTOR_LABEL_SIZE), role="component",
+                                  faded=faded, cls=f"component-label {st.component}",
+                                  ink=LOOKS[st.component].colour))
     for names, x, base, box in lay.vertex_labels:
         text = _vertex_text(con, names, upto)
         if not text:
@@ -350,18 +468,27 @@ def stroke_items(lay: Layout, stage: int | None):
             pole = n == con.pole
             pts_g.append(Circle(at, 0.9 if pole else 0.55, "pole" if pole else "vertex",
                                 faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
-        lab_g.append(Text(x, base, text, LABEL_SIZE, role="vertex", faded=faded,
+        lab_g.append(Text(x, base, text, lay.size(LABEL_SIZE), role="vertex", faded=faded,
                           cls="vertex-label", weight="bold" if not faded else "normal"))
     return [Group(f"{con.diagram}-construction", "construction", "Construction lines",
                   tuple(lines_g)),
             Group(f"{con.diagram}-vectors", "vectors", "Vectors",
                   tuple(Group(f"{con.diagram}-vec-{i}-{token(a.name)}",
-                              f"vector {a.role} from-{token(a.frm)} to-{token(a.to)}",
+                              f"vector {a.role} {a.style.split('-')[1]} from-{token(a.frm)} "
+                              f"to-{token(a.to)}",
                               f"{a.title} — {number(lay.scale.si(_len(a)) / lay.scale.factor)}"
                               f" {display(lay.scale.unit)} at {lay.scale.statement}",
                               (a,)) for i, a in enumerate(vec_g))),
             Group(f"{con.diagram}-vertices", "vertices", "Polygon vertices", tuple(pts_g)),
             Group(f"{con.diagram}-labels", "labels", "Labels", tuple(lab_g))]
+
+
+def key(lay: Layout, stage: int | None = None) -> list[str]:
+    """The component kinds drawn (up to ``stage``), in the legend's order."""
+    upto = _stage_number(lay.con, stage)
+    seen = {("construction" if st.kind == "line" else st.component) for st in lay.con.strokes
+            if upto is None or st.step <= upto}
+    return [c for c in ORDER if c in seen]
 
 
 def _len(a: Arrow) -> float:
@@ -374,38 +501,75 @@ def _content_box(lay: Layout) -> Box:
         box = box.union(b)
     for _, _, _, b in lay.line_labels.values():
         box = box.union(b)
-    for _, _, b in lay.coriolis_labels.values():
+    for _, _, _, b in lay.vector_labels.values():
         box = box.union(b)
     return box.grown(1.0)
 
 
-def legend(lay: Layout) -> list[tuple[str, str]]:
-    """Vector lengths read off the drawing (mm ÷ scale) and the step's measured values."""
+def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
+    """Vector lengths read off the drawing (mm ÷ scale) and the step's measured values;
+    the asked quantities (the scene's ``[[answers]]``) are marked 'asked'."""
     sc = lay.scale
     out = [(f"Scaled from the drawing ({sc.statement}):", "bold")]
     seen = set()
+    asked = set()
+    if sol is not None:
+        for args in asked_quantities(sol, lay.con.diagram):
+            x = sol.vertex_of(args[0])
+            y = sol.pole if len(args) == 1 else sol.vertex_of(args[1])
+            asked |= {(y, x), (x, y)}
     for st, g in _geometry(lay):
         if st.kind != "arrow":
             continue
-        name = f"{st.frm}{st.to}"
-        if name in seen:
+        if (st.frm, st.to) in seen:
             continue
-        seen.add(name)
+        seen.add((st.frm, st.to))
         mm = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
         val = sc.si(mm) / sc.factor
-        what = "Coriolis 2ωv" if st.role == "coriolis" else display(st.label)
-        out.append((f"{name} = {number(val, 4)} {display(sc.unit)}  ({mm:.1f} mm)  {what}",
-                    "normal"))
+        what = "Coriolis 2ωv" if st.component == "coriolis" else st.label
+        mark = "  ← asked" if (st.frm, st.to) in asked else ""
+        out.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
+                    f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
     if lay.con.measures:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))
         for m in lay.con.measures:
-            out.append((measure_text(m), "normal"))
+            out.append((prose(sol, lay.con, measure_text(m, sol, lay.con)), "normal"))
     return out
 
 
-def measure_text(m: Step) -> str:
-    """'ω_BC = 45.62 rad/s CW  (bc / BC)': a measure step's value, its sense, its formula."""
+def along_words(angle: float) -> str:
+    """Direction words for a direction ``angle`` (radians, CCW from +x): 'to the right',
+    'up and to the left (135°)'."""
+    deg = math.degrees(angle) % 360.0
+    names = ["to the right", "up and to the right", "up", "up and to the left", "to the left",
+             "down and to the left", "down", "down and to the right"]
+    k = int(((deg + 22.5) % 360.0) // 45.0)
+    exact = abs(deg - 45.0 * k) < 0.05 or abs(deg - 45.0 * k - 360.0) < 0.05
+    return names[k] + ("" if exact else f" ({number(deg, 4)}°)")
+
+
+def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None) -> str:
+    """' to the left': the sense of a signed slider measure (along its guide) or slide
+    measure (the way its sliding vector is drawn)."""
+    if sol is None or m.value in (None, 0):
+        return ""
+    guide = next((sol.scene.sliders[a] for a in m.args if a in sol.scene.sliders), None)
+    if guide is not None:
+        return f" {along_words(guide.angle + (0.0 if m.value > 0 else math.pi))}"
+    if con is not None and m.theorem == "sliding":
+        arrow = next((st for st in con.strokes if st.kind == "arrow"
+                      and st.component == "sliding"), None)
+        if arrow is not None:
+            d = (arrow.b[0] - arrow.a[0], arrow.b[1] - arrow.a[1])
+            return (f" {along_words(math.atan2(d[1], d[0]))} "
+                    f"({vector(arrow.frm, arrow.to)})")
+    return ""
+
+
+def measure_text(m: Step, sol: Solution | None = None, con: Construction | None = None) -> str:
+    """'ω_BC = 45.62 rad/s CW  (bc / BC)': a measure step's value, its sense, its formula;
+    a signed slider result with its direction words ('1589 m/s² to the left')."""
     unit = display(m.unit)
     if m.value is None:
         return display(m.draws)
@@ -413,13 +577,42 @@ def measure_text(m: Step) -> str:
         sense = "" if m.value == 0 else (" CCW" if m.value > 0 else " CW")
         val = f"{number(abs(m.value))} {unit}{sense}"
     else:
-        val = f"{number(m.value)} {unit}"
+        words = _slider_sense(m, sol, con)
+        val = (f"{number(abs(m.value))} {unit}{words}" if words
+               else f"{number(m.value)} {unit}")
     rhs = m.formula.split("=", 1)[1].strip() if "=" in m.formula else ""
     return display(f"{m.draws} = {val}" + (f"  (= {rhs})" if rhs else ""))
 
 
-def _letter(i: int) -> str:
-    return chr(ord("a") + i - 1) if i <= 26 else str(i)
+def prose(sol: Solution, con: Construction, text: str) -> str:
+    """A step's sentence in the drawings' notation: vector names split (b1b → b₁b), a bare ω
+    or α before '× XY' named after its link (ω² × AB → ω_AB² × AB)."""
+    return join_vectors(name_bare_omegas(slot_names(display(text), sol.scene),
+                                         link_names(sol.scene)), con.vertices)
+
+
+def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:
+    """What a stage adds beyond its step's sentence: the way the Coriolis offset steps, the
+    asked vectors it closes the diagram with."""
+    con = lay.con
+    notes = []
+    sc = lay.scale
+    for st, g in _geometry(lay):
+        if st.step != s.number:
+            continue
+        if st.kind == "offset":
+            back = math.atan2(g[0][1] - g[1][1], g[0][0] - g[1][0])
+            mm = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
+            notes.append(f"The step back from {st.to} runs {along_words(back)}, against 2ωv "
+                         f"({number(sc.si(mm) / sc.factor)} {display(sc.unit)}, {mm:.1f} mm "
+                         f"drawn, square to the slot line: the right-angle mark).")
+        elif st.kind == "arrow" and st.title.endswith("(asked)"):
+            mm = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
+            notes.append(f"Join {vector(st.frm, st.to)}: it is {st.label} = "
+                         f"{number(sc.si(mm) / sc.factor)} {display(sc.unit)}, "
+                         f"{along_words(math.atan2(g[1][1] - g[0][1], g[1][0] - g[0][0]))} "
+                         f"(asked).")
+    return [prose(sol, con, n) for n in notes]
 
 
 def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
@@ -432,21 +625,24 @@ def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
         name = con.diagram
         title = f"{what} diagram (pole {con.pole_label})"
         caption = []
-        legend_lines = legend(lay)
+        legend_lines = legend(lay, sol)
         desc = (f"{what} polygon of {sol.scene.title}, drawn to scale {lay.scale.statement}. "
-                + " ".join(f"{i}. {s.reason}" for i, s in enumerate(con.steps, 1)))
+                + " ".join(f"{i}. {prose(sol, con, s.reason)}"
+                           for i, s in enumerate(con.steps, 1)))
     else:
         s = con.steps[stage - 1]
         name = f"{con.diagram}-{stage}"
-        title = f"{what} diagram, Fig. {_letter(stage)} (stage {stage} of {n})"
-        caption = [f"Fig. {_letter(stage)}. {display(s.reason)}"]
+        title = f"{what} diagram, stage {stage} of {n}"
+        caption = [f"Stage {stage}. {prose(sol, con, s.reason)}"]
         if s.substituted:
-            caption.append(display(s.substituted))
+            caption.append(prose(sol, con, s.substituted))
+        caption += _stage_notes(sol, lay, s)
         legend_lines = []
-        desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {s.reason}"
+        desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {prose(sol, con, s.reason)}"
     content = stroke_items(lay, stage)
     return compose(name=name, kind=con.diagram, stage=stage, title=title, subtitle=subtitle,
                    desc=desc, content=content, content_box=_content_box(lay),
                    legend=legend_lines, scale=lay.scale, caption=caption,
                    scale_statement=lay.scale.statement,
-                   meta={"layout": lay})
+                   meta={"layout": lay},
+                   key=[(f"c-{c}", LOOKS[c].name, c != "construction") for c in key(lay, stage)])

@@ -226,7 +226,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         symbols += _hatch(a, b, u)
         placer.block(bounds([p, _add(base, n, 4.5), _add(base, n, -4.5),
                              _add(_add(base, u, 1.8), n, 4.5), _add(_add(base, u, 1.8), n, -4.5)])
-                     .grown(0.3))
+                     .grown(1.0))
         neighbours[gl].append(_add(p, u, 6.0))
 
     # pins (one per place) and labels
@@ -369,7 +369,20 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
             f"{sc.statement}. Points: " +
             ", ".join(f"{lab} ({number(p[0] * 1000)} mm, {number(p[1] * 1000)} mm)"
                       for lab, p in sol.placement.points.items()) + ".")
+    key = [("link", "link (rigid body)", False)]
+    if len(scene.ground) >= 2:
+        key.append(("centre", "line of centres", False))
+    if scene.sliders:
+        key.append(("guide-path", "guide path of a slider", False))
+    if isinstance(drv, Crank):
+        key.append(("input", "input ω (sense of rotation)", True))
+        if drv.alpha:
+            key.append(("input-alpha", "input α (open head)", True))
+    else:
+        key.append(("input", "input velocity of the slider", True))
+        if drv.acceleration:
+            key.append(("input-alpha", "input acceleration (open head)", True))
     return compose(name="space", kind="space", stage=None, title="Space diagram",
                    subtitle=subtitle, desc=desc, content=content, content_box=box,
-                   legend=legend, scale=sc, caption=[], scale_statement=sc.statement,
+                   legend=legend, scale=sc, caption=[], scale_statement=sc.statement, key=key,
                    meta={"positions": {k: tuple(v) for k, v in sol.placement.points.items()}})

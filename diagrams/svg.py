@@ -5,27 +5,27 @@ with a viewBox in mm, so the file prints to scale (1 cm on paper is 1 cm of the 
 Output is deterministic (no generated ids, coordinates rounded to 0.001 mm, attributes in a
 fixed order).  svgwrite validates every element and attribute against SVG 1.1 full.
 
-Line styles carry the meaning; colour never does alone:
-
-======================  ==================================================================
-vector                  solid 0.45 mm, filled arrowhead
-result (pole → vertex)  dotted, filled arrowhead (the absolute vector, as the tutorials dot it)
-coriolis                solid 0.9 mm, open (hollow) arrowhead, labelled 2ωv
-construction line       dashed 3–1.5 mm, 0.25 mm (unknown length), labelled
-offset                  fine dots (the Coriolis step back from the pin's vertex)
-image side              dash-dot (closes a velocity/acceleration image triangle)
-new in this stage       heavier line; earlier stages are grey
-======================  ==================================================================
+Each vector's component kind has one look (:data:`diagrams.components.LOOKS`): a colour and a
+width/dash pattern, so the meaning survives greyscale printing — styles named ``c-<kind>``
+(``c-<kind>-new`` for the stage that draws it, heavier; earlier stages keep their colour at
+40 % opacity).  The Coriolis vector is heavy with an open (hollow) head; construction lines of
+unknown length are thin and dashed.  The mechanism's own styles (links, pivots, guides, the
+input arcs) are in :data:`STYLES` below.  Text is typeset by :mod:`diagrams.notation`
+(``tspan`` sub- and superscripts).
 """
 from __future__ import annotations
 
 import svgwrite
 
+from .components import LOOKS, new_width
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
-from .text import FONT_FAMILY, display
+from .notation import plain, svg_runs
+from .text import FONT_FAMILY
 
 INK = "#000000"
 FADED = "#8c8c8c"
+#: earlier stages keep their component colours, lighter
+FADED_OPACITY = 0.4
 
 #: style name -> stroke width, dash array, extra attributes
 STYLES = {
@@ -67,6 +67,17 @@ def _n(v: float) -> float:
 
 
 def _stroke_attrs(style: str, faded: bool) -> dict:
+    if style.startswith("c-"):          # a component's look (diagrams.components)
+        kind = style[2:].removesuffix("-new")
+        look = LOOKS[kind]
+        w = new_width(look) if style.endswith("-new") else look.width
+        attrs = {"stroke": look.colour, "stroke_width": w, "stroke_linecap": "butt",
+                 "stroke_linejoin": "round", "fill": "none"}
+        if look.dash:
+            attrs["stroke_dasharray"] = look.dash
+        if faded:
+            attrs["stroke_opacity"] = FADED_OPACITY
+        return attrs
     w, dash = STYLES[style]
     ink = FADED if faded else INK
     attrs = {"stroke": ink, "stroke_width": w, "stroke_linecap": "butt",
@@ -94,7 +105,7 @@ class _Writer:
         if isinstance(it, Group):
             g = dwg.g(id=it.ident, class_=it.cls)
             if it.title:
-                g.set_desc(title=display(it.title))
+                g.set_desc(title=plain(it.title))
             for sub in it.items:
                 g.add(self.item(sub))
             return g
@@ -123,16 +134,25 @@ class _Writer:
             kw.pop("fill")
             g.add(dwg.line(self.p(it.tail), self.p(it.shaft_end), class_="shaft", **kw))
             if it.head:
-                ink = FADED if it.faded else INK
-                open_head = it.role == "coriolis"
+                if it.style.startswith("c-"):
+                    look = LOOKS[it.style[2:].removesuffix("-new")]
+                    ink, open_head = look.colour, look.open_head
+                else:
+                    ink = FADED if it.faded else INK
+                    open_head = it.role == "coriolis" or it.style == "input-alpha"
+                hk = {}
+                if it.faded and it.style.startswith("c-"):
+                    hk = {"fill_opacity": FADED_OPACITY, "stroke_opacity": FADED_OPACITY}
                 g.add(dwg.polygon([self.p(q) for q in it.head], class_="head",
                                   fill="#ffffff" if open_head else ink, stroke=ink,
                                   stroke_width=0.3 if open_head else 0.1,
-                                  stroke_linejoin="miter"))
+                                  stroke_linejoin="miter", **hk))
             return g
         if isinstance(it, Text):
             kw = {"font_size": _n(it.size), "font_family": FONT_FAMILY,
-                  "fill": FADED if it.faded else INK}
+                  "fill": it.ink or (FADED if it.faded else INK)}
+            if it.ink and it.faded:
+                kw["fill_opacity"] = FADED_OPACITY
             if it.anchor != "start":
                 kw["text_anchor"] = it.anchor
             if it.weight != "normal":
@@ -142,12 +162,25 @@ class _Writer:
                 kw["class_"] = cls
             if it.ident:
                 kw["id"] = it.ident
-            return dwg.text(display(it.text), insert=(_n(it.x), _n(self.H - it.baseline)), **kw)
+            parts = svg_runs(it.text, it.size)
+            if len(parts) == 1 and parts[0][3] is None:
+                return dwg.text(parts[0][0], insert=(_n(it.x), _n(self.H - it.baseline)), **kw)
+            t = dwg.text("", insert=(_n(it.x), _n(self.H - it.baseline)), **kw)
+            for s, dx, dy, size in parts:      # textbook sub/superscripts (diagrams.notation)
+                tkw = {}
+                if dx:
+                    tkw["dx"] = [_n(dx)]
+                if dy:
+                    tkw["dy"] = [_n(dy)]
+                if size is not None:
+                    tkw["font_size"] = _n(size)
+                t.add(dwg.tspan(s, **tkw))
+            return t
         raise TypeError(it)  # pragma: no cover
 
     def write(self) -> bytes:
         d, dwg = self.d, self.dwg
-        dwg.set_desc(title=display(d.title), desc=display(d.desc))
+        dwg.set_desc(title=plain(d.title), desc=plain(d.desc))
         dwg.add(dwg.rect((0, 0), (d.width, d.height), id="background", fill="#ffffff"))
         for g in d.groups:
             dwg.add(self.item(g))

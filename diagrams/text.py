@@ -25,7 +25,7 @@ _WIDTHS: dict[str, float] = json.loads(
     '"{": 0.636, "|": 0.337, "}": 0.636, "~": 0.838, "ω": 0.837, "α": 0.659, "θ": 0.612, '
     '"²": 0.401, "³": 0.401, "∥": 0.5, "⊥": 0.871, "×": 0.838, "·": 0.318, "−": 0.838, '
     '"→": 0.838, "°": 0.5, "₁": 0.401, "₂": 0.401, "₃": 0.401, "≈": 0.838, "±": 0.838, '
-    '"µ": 0.636, "—": 1.0, "–": 0.5, "′": 0.227, "Δ": 0.684, "Σ": 0.632, "√": 0.637}')
+    '"µ": 0.636, "—": 1.0, "–": 0.5, "′": 0.227, "″": 0.401, "‴": 0.575, "\u2060": 0.0, "Δ": 0.684, "Σ": 0.632, "√": 0.637}')
 _DEFAULT_WIDTH = 0.7
 
 #: font stack asked for by the SVGs (the widths above are DejaVu Sans)
@@ -42,9 +42,15 @@ def display(text: str) -> str:
             .replace("rad/s2", "rad/s²"))
 
 
-def width(text: str, size: float) -> float:
-    """Advance width of ``text`` at font ``size`` (both in mm)."""
+def plain_width(text: str, size: float) -> float:
+    """Advance width of ``text`` set as it is (no sub/superscripts) at ``size`` (mm)."""
     return size * sum(_WIDTHS.get(ch, _DEFAULT_WIDTH) for ch in text)
+
+
+def width(text: str, size: float) -> float:
+    """Advance width of ``text`` typeset (:mod:`diagrams.notation`) at ``size`` (mm)."""
+    from .notation import width as typeset_width
+    return typeset_width(text, size)
 
 
 def wrap(text: str, max_width: float, size: float) -> list[str]:

@@ -16,7 +16,9 @@ import diagrams
 from conftest import CASES, case_files
 from diagrams import measure, polygon, scale
 from diagrams.labels import Box, box_hits_segment, text_box
-from diagrams.model import Arrow, Segment, Text
+from diagrams.model import Arrow, Polyline, Segment, Text
+from diagrams.components import LOOKS
+from diagrams.notation import JOIN
 from diagrams.svg import to_svg
 from polygons.cli import main
 from polygons.errors import PolygonsError, SceneError, UnknownKeyError
@@ -101,13 +103,14 @@ def test_stage_k_adds_exactly_step_k(path):
             if step.kind == "line":
                 assert not new
                 assert any(isinstance(s, Segment) and f"step-{step.number}" in s.cls
-                           and s.style == "construction-new" for s in d.items())
+                           and s.style == "c-construction-new" for s in d.items())
             if step.kind == "intersection":
                 assert new and all(to == step.end or frm == step.end for frm, to in new)
-            caption = " ".join(t.text for t in d.items("caption"))
-            assert caption.startswith(f"Fig. {chr(96 + k)}." if k <= 26 else "Fig.")
+            caption = " ".join(t.text for t in d.items("caption")).replace(JOIN, "")
+            # stages are numbered, never lettered: 'Fig. b' would read as vertex b
+            assert caption.startswith(f"Stage {k}. ")
             words = step.reason.replace("⟂", "⊥").split()
-            assert " ".join(words[:6]) in caption
+            assert " ".join(words[:3]) in caption
             prev_vectors = vectors
 
 
@@ -125,7 +128,7 @@ def test_fig7_stages_follow_the_tutorial_with_coriolis_and_offset_line():
     assert "Coriolis offset line" in labels and "2ωv" in labels and "p4 line" in labels
     cor = [a for a in final.items() if isinstance(a, Arrow) and a.role == "coriolis"]
     assert len(cor) == 1 and (cor[0].frm, cor[0].to) == ("p4", "p2_1")
-    assert cor[0].style == "coriolis"
+    assert cor[0].style == "c-coriolis"
 
 
 def test_we4_has_the_c_line_and_slider_line_as_the_tutorial_draws():
@@ -165,30 +168,71 @@ def test_arrows_join_their_vertices_in_the_sense_of_the_step_vectors(path):
 
 
 # ---------------------------------------------------------------- labels do not overlap
+LABEL_ROLES = ("vertex", "line", "component", "point", "input")
+
+
 def _label_boxes(d):
+    """(text, box) of every label of the drawing, boxes from the typeset widths."""
     out = []
     for t in d.items():
-        if isinstance(t, Text) and t.role in ("vertex", "line", "coriolis", "point", "input"):
+        if isinstance(t, Text) and t.role in LABEL_ROLES:
             out.append((t.text, text_box(t.x, t.baseline, t.text, t.size, t.anchor)))
     return out
 
 
+def _strokes(d):
+    """(what, a, b, clearance) of every drawn stroke a label must keep clear of: vectors,
+    links, the input arcs and arrows, the Coriolis offset and its right-angle mark."""
+    out = []
+    for it in d.items():
+        if isinstance(it, Arrow):
+            out.append((f"vector {it.name}" if it.role != "input" else "input arrow",
+                        it.tail, it.tip, 0.5 if it.role != "input" else 0.2))
+        elif isinstance(it, Segment) and (it.style == "link" or "offset" in it.cls
+                                          or "right-angle" in it.cls):
+            out.append((it.cls or it.style, it.a, it.b, 0.3))
+        elif isinstance(it, Polyline) and it.style.startswith("input"):
+            out += [("input arc", p, q, 0.2) for p, q in zip(it.points, it.points[1:])]
+        elif isinstance(it, Polyline) and it.style == "ground":
+            pts = it.points + it.points[:1]
+            out += [("fixed-pivot symbol", p, q, 0.2) for p, q in zip(pts, pts[1:])]
+        elif isinstance(it, Segment) and it.style in ("ground", "hatch"):
+            out.append(("fixed-pivot hatching", it.a, it.b, 0.1))
+    return out
+
+
 @pytest.mark.parametrize("path", FILES, ids=IDS)
-def test_labels_overlap_neither_vectors_nor_each_other(path):
+def test_labels_overlap_neither_vectors_arcs_nor_each_other(path):
+    """Every shipped case, every space/velocity/acceleration drawing and stage: no label box
+    overlaps another label, and none touches a vector, link, input arc or offset."""
     sol, ds = solved(path)
+    _assert_no_overlap(ds)
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_handout_stage_labels_set_larger_overlap_nothing_either(path):
+    """The handout's stage figures (printed reduced) set their labels 1.5× larger: placed
+    anew, they keep the same clearances."""
+    from diagrams.figures import STAGE_TEXT_SCALE
+    sol, _ = solved(path)
+    ds = [d for d in diagrams.drawings(sol, stages=True, text_scale=STAGE_TEXT_SCALE)
+          if d.kind != "space"]
+    sizes = {t.size for d in ds for t in d.items() if isinstance(t, Text) and t.role == "vertex"}
+    assert sizes == {round(polygon.LABEL_SIZE * STAGE_TEXT_SCALE, 3)}
+    _assert_no_overlap(ds)
+
+
+def _assert_no_overlap(ds):
     for d in ds:
         boxes = _label_boxes(d)
         for i, (ta, a) in enumerate(boxes):
             for tb, b in boxes[i + 1:]:
-                assert not a.overlaps(b), f"{d.name}: labels {ta!r} and {tb!r} overlap"
+                assert not a.grown(0.2).overlaps(b), f"{d.name}: labels {ta!r} and {tb!r} touch"
+        strokes = _strokes(d)
         for t, b in boxes:
-            for it in d.items():
-                if isinstance(it, Arrow) and it.role != "input":
-                    assert not box_hits_segment(b, it.tail, it.tip, 0.5), \
-                        f"{d.name}: label {t!r} lies on vector {it.name}"
-                if isinstance(it, Segment) and it.style == "link":
-                    assert not box_hits_segment(b, it.a, it.b, 0.3), \
-                        f"{d.name}: label {t!r} lies on a link"
+            for what, p, q, clearance in strokes:
+                assert not box_hits_segment(b, p, q, clearance), \
+                    f"{d.name}: label {t!r} touches {what}"
 
 
 @pytest.mark.parametrize("path", FILES, ids=IDS)
@@ -356,6 +400,8 @@ def test_cairosvg_renders_the_fig7_diagrams_with_the_arrows_where_the_svg_says()
         if kind == "space":
             continue
         r = measure.read_svg(data)
+        look = {(a.frm, a.to): LOOKS[a.style[2:].removesuffix("-new")]
+                for a in d.items() if isinstance(a, Arrow)}
         for v in r.vectors:
             if v.mm < 6:
                 continue
@@ -367,28 +413,76 @@ def test_cairosvg_renders_the_fig7_diagrams_with_the_arrows_where_the_svg_says()
                 px, py = x * 10, (d.height - y) * 10
                 window = [img.getpixel((round(px) + i, round(py) + j))
                           for i in (-1, 0, 1) for j in (-1, 0, 1)]
-                dark += min(window) < 100
-            assert dark >= (3 if v.role == "result" else 10), (kind, v)   # dotted or solid
+                dark += min(window) < 170      # every component colour is darker in grey
+            solid = look[(v.frm, v.to)].dash is None
+            assert dark >= (10 if solid else 3), (kind, v)   # solid, or dashed/dotted
 
 
 def test_styles_carry_meaning_without_colour():
+    """One look per component kind, told apart in greyscale by width and dash pattern alone."""
+    velocity = ("given", "relative", "sliding", "image", "resultant", "construction")
+    acceleration = ("given", "centripetal", "tangential", "sliding", "coriolis", "image",
+                    "resultant", "construction")
+    for kinds in (velocity, acceleration):      # the kinds one diagram can show together
+        assert len({(LOOKS[k].width, LOOKS[k].dash) for k in kinds}) == len(kinds)
     sol, ds = solved(CASES / "s003-fig7.toml")
     root = ET.fromstring(to_svg(finals(ds)["acceleration"]))
-    def widths(role):
+    def widths(kind):
         out = []
         for g in root.iter(SVG + "g"):
             cls = (g.get("class") or "").split()
-            if cls[:2] == ["vector", role]:
+            if cls[:1] == ["vector"] and kind in cls:
                 line = next(g.iter(SVG + "line"))
                 out.append((float(line.get("stroke-width")), line.get("stroke-dasharray")))
         return out
-    assert all(w > 0.8 and dash is None for w, dash in widths("coriolis"))
-    assert all(w < 0.6 and dash is None for w, dash in widths("known"))
-    assert all(dash for _, dash in widths("result"))       # the absolute vector is dotted
-    heads = [g for g in root.iter(SVG + "g") if "coriolis" in (g.get("class") or "")]
+    assert widths("coriolis") and all(w > 0.8 and dash is None for w, dash in widths("coriolis"))
+    assert widths("centripetal") and all(w < 0.6 and dash is None
+                                         for w, dash in widths("centripetal"))
+    assert widths("tangential") and all(dash for _, dash in widths("tangential"))
+    assert all(dash for _, dash in widths("resultant"))       # the absolute vector is dotted
+    heads = [g for g in root.iter(SVG + "g") if "coriolis" in (g.get("class") or "").split()]
     assert heads[0].find(f".//{SVG}polygon").get("fill") == "#ffffff"   # open head
     dashed = [l for l in root.iter(SVG + "line") if "construction-line" in (l.get("class") or "")]
     assert dashed and all(l.get("stroke-dasharray") for l in dashed)
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_every_drawing_has_a_key_of_what_it_draws(path):
+    sol, ds = solved(path)
+    for d in ds:
+        keys = {t.text for t in d.items("key") if isinstance(t, Text)}
+        assert "Key:" in keys, d.name
+        if d.kind == "space":
+            continue
+        drawn = {a.style[2:].removesuffix("-new") for a in d.items() if isinstance(a, Arrow)}
+        for kind in drawn:
+            assert LOOKS[kind].name in keys, (d.name, kind)
+
+
+def test_sae4_q3_closes_to_the_asked_od_and_a_d():
+    """SAE4 Q3 asks v_D and a_D: od and the acceleration od are drawn from the pole, named
+    and printed (exact 2.666 m/s and 440.3 m/s² from the closed-form check below)."""
+    sol, ds = solved(CASES / "s001-sae4-q3.toml")
+    f = finals(ds)
+    import numpy as np
+    vd, ad = (np.hypot(*sol.points["D"].velocity), np.hypot(*sol.points["D"].acceleration))
+    # independent: D on AB produced, v_D = v_A + ω_AB × AD (loop closure of the rigid link)
+    a, b, dpt = (np.array(sol.points[k].position) for k in "ABD")
+    va, vb = np.array(sol.points["A"].velocity), np.array(sol.points["B"].velocity)
+    t = np.linalg.norm(dpt - a) / np.linalg.norm(b - a)
+    assert vd == pytest.approx(np.linalg.norm(va + t * (vb - va)), rel=1e-9)
+    assert round(vd, 3) == 2.666 and round(ad, 1) == 440.3
+    for kind, value, name in (("velocity", vd, "v_D"), ("acceleration", ad, "a_D")):
+        d = f[kind]
+        od = [x for x in d.items() if isinstance(x, Arrow) and (x.frm, x.to) == ("o", "d")]
+        assert len(od) == 1, kind
+        labels = {t.text for t in d.items() if isinstance(t, Text)}
+        assert name in labels, kind
+        legend = [t.text for t in d.items("legend") if isinstance(t, Text)]
+        row = next(r for r in legend if r.startswith(f"o{JOIN}d ="))
+        assert f"= {value:.4g}" in row and "asked" in row, row
+        ad_row = next(r for r in legend if r.startswith(f"a{JOIN}d ="))
+        assert name not in ad_row.split()[-1:]       # ad is D relative to A, not v_D
 
 
 # ---------------------------------------------------------------- architecture
@@ -445,3 +539,53 @@ def test_cli_output_folder_that_is_a_file(tmp_path, capsys):
     f.write_text("x")
     assert main(["draw", str(CASES / "s003-fig7.toml"), "-o", str(f)]) == 1
     assert "not a folder" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("case,cw", [("s001-we6.toml", True), ("s001-sae4-q3.toml", False)])
+def test_sweep_plot_axis_runs_in_the_cranks_sense_of_rotation(case, cw, monkeypatch, tmp_path):
+    """A CW crank's angle decreases with time: its plot's x axis is reversed (and says so)."""
+    import diagrams.plots as plots
+    from polygons.cli.sweep import plot
+    from polygons.sweep import sweep
+    seen = {}
+
+    def fake(title, xlabel, panels, stem, formats, markers, xlim, xticks, reverse_x=False):
+        seen.update(xlabel=xlabel, reverse_x=reverse_x)
+        return []
+    monkeypatch.setattr(plots, "plot_panels", fake)
+    scene = load_scene(CASES / case)
+    assert (scene.driver.omega < 0) == cw            # the scene's own sense, read directly
+    plot(sweep(scene, 12), [], [], {}, "mm", tmp_path / "x", ("png",))
+    assert seen["reverse_x"] is cw
+    assert ("axis reversed" in seen["xlabel"]) is cw
+
+
+# ---------------------------------------------------------------- notation
+def test_notation_typesets_textbook_labels():
+    from diagrams import notation as n
+    assert n.runs("p2_1") == [("p", "base"), ("2", "sub"), ("′", "base")]
+    assert n.runs("a1") == [("a", "base"), ("1", "sub")]
+    assert n.runs("(a_B)_A^n") == [("(a", "base"), ("B", "sub"), (")", "base"), ("A", "sub"),
+                                   ("n", "sup")]
+    assert n.runs("omega_BC") == [("ω", "base"), ("BC", "sub")]
+    assert n.runs("(a_P4)^t")[-1] == ("t", "sup")
+    assert n.plain(n.vector("b1", "b")) == "b₁b" and n.plain("p4_1") == "p₄′"
+    assert n.html("(a_B)_A^n") == '(a<sub>B</sub>)<span class="subsup"><sub>A</sub><sup>n</sup></span>'
+    # prose and units are left alone
+    assert n.runs("1 cm = 20 m/s²") == [("1 cm = 20 m/s²", "base")]
+    assert n.join_vectors("(= b1b / AB)", ["b", "b1", "a"]) == f"(= b1{JOIN}b / AB)"
+    assert n.name_bare_omegas("ω² × CB = 2² × 0.1", {"CB": "BC"}) == "ω_BC² × CB = 2² × 0.1"
+    # a stacked superscript adds only what is wider than its subscript
+    assert n.width("(a_B)_A^n", 3.0) < n.width("(a_B)_A", 3.0) + n.width("n", 3.0 * n.SMALL)
+
+
+def test_fig7_svg_typesets_vertex_labels_with_tspans():
+    sol, ds = solved(CASES / "s003-fig7.toml")
+    root = ET.fromstring(to_svg(finals(ds)["acceleration"]))
+    labels = ["".join(t.itertext()) for t in root.iter(SVG + "text")
+              if "vertex-label" in (t.get("class") or "")]
+    assert "p2′" in labels and "p4′" in labels            # p₂′: 2 in a subscript tspan
+    subs = [s for t in root.iter(SVG + "text") for s in t.iter(SVG + "tspan")
+            if s.get("font-size") and float(s.get("font-size")) < float(t.get("font-size"))]
+    assert subs and not any("_" in "".join(t.itertext()) for t in root.iter(SVG + "text")
+                            if "vertex-label" in (t.get("class") or ""))

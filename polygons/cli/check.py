@@ -13,7 +13,7 @@ to be within the larger of
   the diagrams are drawn to (``1 cm = 2.5 m/s``): a short vector cannot be read to 2 %.
 
 Every value that is off gets a hint: the construction step that produces it (diagram,
-number, figure letter and its sentence).
+number, stage figure and its sentence).
 
 Measured names are the textbook's: ``v_C``, ``v_CB`` (velocity of C relative to B),
 ``omega_BC``, ``alpha_CD``, ``a_C``, ``a_CB``, ``an_CB`` / ``at_CB`` (centripetal / tangential
@@ -292,19 +292,20 @@ def producing_step(sol: Solution, expr: str) -> Step | None:
     return None
 
 
-def figure_letter(sol: Solution, step: Step) -> str | None:
-    """'Fig. c' for a drawn step (the stage figures letter the drawable steps a, b, c ...)."""
+def stage_number(sol: Solution, step: Step) -> int | None:
+    """The stage figure (1, 2, 3 ...) that draws ``step`` (stages are numbered, never
+    lettered: 'Fig. b' would read as the vertex b)."""
     drawable = [s for s in sol.steps if s.diagram == step.diagram
                 and s.kind in ("vector", "image", "line", "intersection")]
     for i, s in enumerate(drawable, 1):
         if s.number == step.number:
-            return chr(ord("a") + i - 1) if i <= 26 else str(i)
+            return i
     return None
 
 
 def describe_step(sol: Solution, step: Step) -> str:
-    letter = figure_letter(sol, step)
-    where = f"{step.diagram} step {step.number}" + (f" (Fig. {letter})" if letter else "")
+    k = stage_number(sol, step)
+    where = f"{step.diagram} step {step.number}" + (f" (stage {k})" if k else "")
     text = f"{where}: \u201c{step.reason}\u201d"
     if step.kind == "intersection" and step.lines:
         text += (f" Check the lines of steps {step.lines[0]} and {step.lines[1]} and where "
@@ -316,9 +317,9 @@ def describe_step(sol: Solution, step: Step) -> str:
                           and s.end == sol.vertex_of(step.args[2]) and s.kind != "measure"),
                          None)
             if drawn is not None:
-                letter = figure_letter(sol, drawn)
+                k = stage_number(sol, drawn)
                 text += (f" The line it is read from ends at {drawn.end}, fixed in step "
-                         f"{drawn.number}" + (f" (Fig. {letter})" if letter else "") + ".")
+                         f"{drawn.number}" + (f" (stage {k})" if k else "") + ".")
     return text
 
 

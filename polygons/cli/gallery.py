@@ -1,8 +1,9 @@
 """``polygons gallery cases/ -o DIR``: every case's handout and worksheet, and an index page.
 
 Writes ``DIR/<case>.html`` (the answer key), ``DIR/<case>-worksheet.html`` and
-``DIR/index.html`` linking them, with one line per case: its title, mechanism and how the
-tutorial's printed answers compare.  ``--pdf`` also prints every handout and worksheet.  A case
+``DIR/index.html`` linking them: one card per case file (every file once, the file's name shown
+where two share a source id) with a thumbnail of its space diagram, its title, mechanism and
+how the tutorial's printed answers compare.  ``--pdf`` also prints every handout and worksheet.  A case
 that cannot be solved is listed with its one-line error; the command then exits 1.
 """
 from __future__ import annotations
@@ -48,6 +49,7 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
         raise PolygonsError(f"no *.toml scene files in {cases}")
     out.mkdir(parents=True, exist_ok=True)
     rows, written, errors = [], [], []
+    ids = [_source_id(path) for path in files]
     for path in files:
         stem = path.stem
         try:
@@ -67,8 +69,9 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
                     pages[kind + "-pdf"] = target.with_suffix(".pdf").name
         except PolygonsError as exc:
             errors.append(f"{path}: {exc}")
-            rows.append(f'<tr class="failed"><td>{esc(stem)}</td><td colspan="4">could not be '
-                        f"solved: {esc(str(exc))}</td></tr>")
+            rows.append(f'<article class="card failed" id="case-{esc(stem)}"><h2>'
+                        f'<span class="id">{esc(stem)}</span></h2><p>could not be solved: '
+                        f"{esc(str(exc))}</p></article>")
             continue
         src = sol.scene.source
         links = [f'<a href="{esc(pages["handout"])}">handout</a>',
@@ -78,14 +81,57 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
                       f'<a href="{esc(pages["worksheet-pdf"])}">worksheet PDF</a>']
         tags = (" <em>(synthetic geometry)</em>" if src.get("synthetic")
                 and "SYNTHETIC" not in sol.scene.title.upper() else "")
-        rows.append(f"<tr><td class=\"id\">{esc(src.get('id', stem))}</td>"
-                    f'<td><a href="{esc(pages["handout"])}">{esc(sol.scene.title)}</a>{tags}'
-                    f"</td><td>{esc(src.get('mechanism', ''))}</td>"
-                    f"<td>{esc(_summary(sol))}</td><td>{' · '.join(links)}</td></tr>")
+        ident = src.get("id", stem)
+        if ids.count(ident) > 1:
+            ident = f"{ident} ({stem})"
+        rows.append(f'<article class="card" id="case-{esc(stem)}">'
+                    f'<a class="thumb" href="{esc(pages["handout"])}">{_thumbnail(figs, stem)}</a>'
+                    f'<h2><span class="id">{esc(ident)}</span> '
+                    f'<a href="{esc(pages["handout"])}">{esc(sol.scene.title)}</a>{tags}</h2>'
+                    f'<p class="mech">{esc(_mechanism(sol))}</p>'
+                    f'<p class="answers">{esc(_summary(sol))}</p>'
+                    f'<p class="links">{" · ".join(links)}</p></article>')
     index = out / "index.html"
     index.write_text(_index(rows, cases), encoding="utf-8")
     written.append(index)
     return written, errors
+
+
+def _source_id(path: Path) -> str:
+    """The ``[source] id`` of a scene file read without solving it ('' when absent)."""
+    import tomllib
+    try:
+        with open(path, "rb") as fh:
+            return str(tomllib.load(fh).get("source", {}).get("id", path.stem))
+    except (OSError, ValueError):
+        return path.stem
+
+
+def _mechanism(sol) -> str:
+    """The source's words for the mechanism, else what the scene is made of."""
+    words = sol.scene.source.get("mechanism")
+    if words:
+        return words
+    scene = sol.scene
+    parts = [f"{len(scene.links)} link{'s' if len(scene.links) != 1 else ''}"]
+    if scene.sliders:
+        parts.append(f"{len(scene.sliders)} slider{'s' if len(scene.sliders) != 1 else ''}")
+    if scene.slots:
+        parts.append(f"{len(scene.slots)} slot{'s' if len(scene.slots) != 1 else ''}")
+    return ", ".join(parts)
+
+
+def _thumbnail(figs, stem: str) -> str:
+    """The space diagram without its heading, key and legend, inlined at 70 mm wide."""
+    from diagrams.figures import trimmed
+    from diagrams.html import inline_svg
+    from diagrams.svg import to_svg
+    d = figs.drawing.get("space")
+    if d is None:
+        return ""
+    t = trimmed(d, ("heading", "caption", "key", "legend", "scale-bar"))
+    return inline_svg(to_svg(t), f"thumb-{stem}", "thumb", 70.0,
+                      f"Space diagram of {stem}")
 
 
 def _index(rows: list[str], cases: Path) -> str:
@@ -93,21 +139,22 @@ def _index(rows: list[str], cases: Path) -> str:
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
             "<title>polygons — handouts</title>\n<style>\n"
             "body { font-family: 'DejaVu Sans', Verdana, Arial, sans-serif; font-size: 10pt; "
-            "max-width: 260mm; margin: 8mm auto; padding: 0 6mm; }\n"
-            "h1 { font-size: 16pt; } table { border-collapse: collapse; width: 100%; }\n"
-            "th, td { border-bottom: 0.2mm solid #999; padding: 1mm 2mm; text-align: left; "
-            "vertical-align: top; } th { border-bottom: 0.4mm solid #000; }\n"
-            "tr.failed td { font-style: italic; } a { color: #003a8c; }\n"
-            "td.id { white-space: nowrap; }\n"
-            "@page { size: A4 landscape; margin: 12mm; }\n</style>\n</head>\n<body>\n"
+            "max-width: 270mm; margin: 8mm auto; padding: 0 6mm; }\n"
+            "h1 { font-size: 16pt; }\n"
+            ".cards { display: grid; grid-template-columns: repeat(auto-fill, minmax(78mm, 1fr));"
+            " gap: 5mm; }\n"
+            ".card { border: 0.3mm solid #999; padding: 3mm; break-inside: avoid; }\n"
+            ".card h2 { font-size: 10.5pt; margin: 1.5mm 0; } .card p { margin: 1mm 0; }\n"
+            ".card .id { display: block; font-size: 8.5pt; color: #333; }\n"
+            ".card .thumb svg { display: block; width: 100%; height: 50mm; }\n"
+            ".card.failed { font-style: italic; } a { color: #003a8c; }\n"
+            "@page { size: A4 portrait; margin: 12mm; }\n</style>\n</head>\n<body>\n"
             "<h1>Velocity and acceleration polygons: handouts</h1>\n"
             f"<p>One handout (the answer key, constructions narrated step by step) and one "
             f"worksheet (no answers, empty drawing areas at scale) per case of "
             f"<code>{esc(str(cases))}</code>. Regenerate: <code>polygons gallery "
             f"{esc(str(cases))} -o DIR</code>.</p>\n"
-            "<table>\n<thead><tr><th>case</th><th>title</th><th>mechanism</th>"
-            "<th>tutorial's answers</th><th>pages</th></tr></thead>\n<tbody>\n"
-            + "\n".join(rows) + "\n</tbody>\n</table>\n</body>\n</html>\n")
+            '<main class="cards">\n' + "\n".join(rows) + "\n</main>\n</body>\n</html>\n")
 
 
 def run(args) -> int:

@@ -3,7 +3,9 @@
 The answer key narrates the construction step by step with its figures and numbers and
 compares the results with the tutorial's printed answers; ``--worksheet`` writes the student's
 version (no answers, empty drawing areas at the key's scale).  ``--pdf`` also prints it to
-PDF with headless Chromium (``-o FILE.pdf`` writes only the PDF).
+PDF with headless Chromium (``-o FILE.pdf`` writes only the PDF).  ``--interactive`` writes
+the interactive construction page instead (:mod:`diagrams.page`: stages forward/back, a
+crank-angle slider redrawing the mechanism and both polygons from the sweep).
 """
 from __future__ import annotations
 
@@ -28,6 +30,10 @@ def register(sub) -> None:
                    help="output file (.html; .pdf writes only the PDF)")
     p.add_argument("--worksheet", action="store_true",
                    help="no answers, empty drawing areas at the chosen scale")
+    p.add_argument("--interactive", action="store_true",
+                   help="write the interactive construction page instead: one self-contained "
+                        "HTML file stepping through the construction, with a crank-angle "
+                        "slider (frames from the sweep)")
     p.add_argument("--pdf", action="store_true",
                    help="also print FILE.pdf next to FILE.html (needs headless Chromium)")
     p.add_argument("--scale", action="append", metavar="KIND=VALUE",
@@ -64,11 +70,38 @@ def write(scene_path: str, out: str | Path, *, worksheet: bool = False, pdf: boo
     written.append(out)
     if pdf:
         from diagrams.browser import print_pdf
-        written.append(print_pdf(out, out.with_suffix(".pdf")))
+        target = out.with_suffix(".pdf") if out.suffix else out.with_name(out.name + ".pdf")
+        if out.suffix.lower() in (".html", ".htm"):
+            written.append(print_pdf(out, target))
+        else:    # Chromium reads a file without .html as plain text: print a .html copy
+            with tempfile.TemporaryDirectory(prefix="polygons-handout-") as tmp:
+                html = Path(tmp) / (out.stem + ".html")
+                html.write_text(text, encoding="utf-8")
+                written.append(print_pdf(html, target))
     return written
 
 
+def write_page(scene_path: str, out: str | Path, *, scale=None, paper=None) -> Path:
+    """Write the interactive construction page (one self-contained HTML file)."""
+    import diagrams
+    from diagrams.page import page
+    from diagrams.scale import parse_cli
+    sol = solve(load_scene(scene_path))
+    drawings = diagrams.drawings(sol, parse_cli(scale), paper, True)
+    out = Path(out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(page(sol, drawings), encoding="utf-8")
+    return out
+
+
 def run(args) -> int:
+    if args.interactive:
+        if args.worksheet or args.pdf:
+            from ..errors import PolygonsError
+            raise PolygonsError("--interactive writes an HTML page: it takes neither "
+                                "--worksheet nor --pdf")
+        print(f"wrote {write_page(args.scene, args.out, scale=args.scale, paper=args.paper)}")
+        return 0
     paths = write(args.scene, args.out, worksheet=args.worksheet, pdf=args.pdf,
                   scale=args.scale, paper=args.paper)
     print("wrote " + " ".join(str(p) for p in paths))

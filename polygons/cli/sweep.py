@@ -246,7 +246,10 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
     title = f"{sw.scene.title}\n{rate}, {sw.n} positions"
     if not sw.full_cycle:
         title += " (reachable range)"
-    return plot_panels(title, xlabel, panels, stem, formats, markers, xlim, xticks)
+    cw = isinstance(drv, Crank) and drv.omega < 0     # the axis in the crank's sense of rotation
+    if cw:
+        xlabel += "; axis reversed: the crank turns CW, time runs left to right"
+    return plot_panels(title, xlabel, panels, stem, formats, markers, xlim, xticks, reverse_x=cw)
 
 
 def _add(disp, vel, acc, sw, x, name, s, v, a, style, color):

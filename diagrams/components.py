@@ -1,0 +1,60 @@
+"""Component kinds of the polygons' vectors and the one look (colour, width, dashes) of each.
+
+Every vector of a velocity or acceleration polygon is one kind of component: the given input,
+a relative velocity, a centripetal, tangential, sliding or Coriolis acceleration, an image
+side or the resultant (absolute, from the pole); construction lines of unknown length are
+'construction'.  :func:`component_of` derives the kind of a step (ONE place: when
+``Step.component`` exists it becomes ``return str(step.component)``) and :data:`LOOKS` gives
+each kind one colour (Okabe–Ito, safe for colour-blind readers) *and* one width/dash pattern
+so the drawing still reads in greyscale.  No svgwrite here: :mod:`diagrams.svg` reads
+:data:`LOOKS`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+ORDER = ("given", "relative", "centripetal", "tangential", "sliding", "coriolis", "image",
+         "resultant", "construction")
+
+
+@dataclass(frozen=True)
+class Look:
+    name: str            # the legend's words
+    colour: str          # stroke colour
+    width: float         # stroke width (mm)
+    dash: str | None     # SVG dash array (mm), None: solid
+    open_head: bool = False
+
+
+LOOKS: dict[str, Look] = {
+    "given": Look("given (input)", "#000000", 0.6, None),
+    "relative": Look("relative velocity", "#0072B2", 0.45, None),
+    "centripetal": Look("centripetal", "#009E73", 0.45, None),
+    "tangential": Look("tangential", "#D55E00", 0.5, "2.6 0.9"),
+    "sliding": Look("sliding", "#8F6400", 0.5, "2.6 0.8 0.5 0.8"),
+    "coriolis": Look("Coriolis 2ωv", "#882255", 0.9, None, open_head=True),
+    "image": Look("image side (rigid body)", "#332288", 0.4, "0.9 0.7"),
+    "resultant": Look("resultant (absolute, from the pole)", "#000000", 0.75, "0.5 0.8"),
+    "construction": Look("construction line", "#555555", 0.25, "3 1.5"),
+}
+
+
+def component_of(step) -> str:
+    """The component kind of ``step`` (a :class:`polygons.plan.Step`), from ``theorem``,
+    ``kind`` and ``op`` — the one switch to ``str(step.component)`` once steps carry it."""
+    if step.kind == "intersection":
+        return "resultant"
+    if step.kind == "image":
+        return "image"
+    if step.op == "crank_velocity":
+        return "given"
+    if step.op in ("line_guide", "slider_velocity", "slider_acceleration"):
+        return "resultant"          # along the guide from the pole: the slider's own motion
+    return {"relative_velocity": "relative", "centripetal": "centripetal",
+            "tangential": "tangential", "sliding": "sliding", "coriolis": "coriolis",
+            "slider_line": "resultant"}.get(step.theorem, "construction")
+
+
+def new_width(look: Look) -> float:
+    """Stroke width of a component in the stage that draws it (heavier)."""
+    return round(look.width * 1.5, 3)

@@ -1,0 +1,231 @@
+"""Textbook notation, one spelling for SVG, HTML and PDF: p₂′, ω_BC, (a_B)_A^n, (a_P4)^t.
+
+The drawings and the handouts carry labels in a plain source spelling and typeset them here:
+
+=====================  ==============================  ===================================
+source                 meaning                         typeset
+=====================  ==============================  ===================================
+``p2_1``               polygon vertex p, 2, first dash  p₂′  (``_2`` → ″)
+``a1``                 polygon vertex a, 1              a₁
+``ω_BC`` ``omega_BC``  angular velocity of BC           ω with subscript BC
+``(a_B)_A^n``          centripetal accel. of B about A  (a_B) with subscript A, superscript n
+                                                        stacked over it
+``(a_P4)^t``           tangential accel. of P4          (a_P4) with superscript t
+``2ωv``                Coriolis                         unchanged
+=====================  ==============================  ===================================
+
+:func:`runs` splits a text into (text, 'base' | 'sub' | 'sup') runs; :func:`svg_runs` gives the
+``tspan`` offsets, :func:`html` the ``<sub>``/``<sup>`` markup (the PDF is printed from the
+HTML) and :func:`width` the advance width used by the label placer.  A vector's name is two
+vertex names joined by :data:`JOIN` (``vector('b1', 'b')`` → b₁b), so ``b1b`` is never read
+as one name.  No svgwrite here.
+"""
+from __future__ import annotations
+
+import html as _html
+import re
+
+#: invisible separator between two vertex names in a vector's name (never drawn)
+JOIN = "\u2060"
+#: sub- and superscripts are drawn this much smaller than the text
+SMALL = 0.7
+#: baseline shifts of sub- and superscripts, × font size (y down, as in SVG)
+SHIFT = {"sub": 0.22, "sup": -0.36}
+
+_PRIMES = {"1": "′", "2": "″", "3": "‴"}
+
+_TOKEN = re.compile(
+    r"(?P<sym>(?<![A-Za-z])(?:omega|alpha|[vaωα]))_(?P<symsub>[A-Za-z0-9]+)"
+    r"|\)_(?P<psub>[A-Za-z0-9]+)"
+    r"|\^(?P<sup>n|t|slide|r)\b"
+    r"|(?<![\w/′.\-])(?P<vl>[a-z])(?P<vd>\d+)(?:_(?P<vp>[123]))?(?![\w])")
+
+Run = tuple[str, str]
+
+
+def vector(frm: str, to: str) -> str:
+    """The source spelling of the vector from vertex ``frm`` to vertex ``to`` ('b1' 'b' → b₁b)."""
+    return f"{frm}{JOIN}{to}"
+
+
+_WORD = re.compile(r"(?<![\w/′.\-])[a-z][a-z0-9_]*(?![\w])")
+
+
+def join_vectors(text: str, vertices) -> str:
+    """Mark vector names made of two vertex names ('b1b' → b1 :data:`JOIN` b) so they
+    typeset as b₁b; ``vertices`` are the polygon's vertex names."""
+    names = sorted(set(vertices), key=lambda n: (-len(n), n))
+
+    def repl(m):
+        w = m.group(0)
+        if w in names:
+            return w
+        for a in names:
+            if w.startswith(a) and w[len(a):] in names:
+                return vector(a, w[len(a):])
+        return w
+    return _WORD.sub(repl, text)
+
+
+def _spell(text: str) -> str:
+    """'⟂' (missing from common fonts) as '⊥', '^2' as '²', omega/alpha as ω/α."""
+    text = (text.replace("⟂", "⊥").replace("^2", "²").replace("^3", "³")
+            .replace("rad/s2", "rad/s²"))
+    text = re.sub(r"(?<![A-Za-z])omega_(?=[A-Z])", "ω_", text)
+    return re.sub(r"(?<![A-Za-z])alpha_(?=[A-Z])", "α_", text)
+
+
+def runs(text: str) -> list[Run]:
+    """``text`` as typeset runs: [(text, 'base' | 'sub' | 'sup'), ...], merged and ordered."""
+    text = _spell(text)
+    out: list[Run] = []
+
+    def add(s: str, kind: str) -> None:
+        s = s.replace(JOIN, "")
+        if not s:
+            return
+        if out and out[-1][1] == kind:
+            out[-1] = (out[-1][0] + s, kind)
+        else:
+            out.append((s, kind))
+
+    pos = 0
+    for m in _TOKEN.finditer(text):
+        add(text[pos:m.start()], "base")
+        if m.group("sym"):
+            add(m.group("sym"), "base")
+            add(m.group("symsub"), "sub")
+        elif m.group("psub"):
+            add(")", "base")
+            add(m.group("psub"), "sub")
+        elif m.group("sup"):
+            out.append((m.group("sup"), "sup"))
+        else:
+            add(m.group("vl"), "base")
+            add(m.group("vd"), "sub")
+            if m.group("vp"):
+                add(_PRIMES[m.group("vp")], "base")
+        pos = m.end()
+    add(text[pos:], "base")
+    return out
+
+
+def stacked(rs: list[Run], i: int) -> bool:
+    """True when run ``i`` is a superscript set over the subscript before it ((a_B)_A^n)."""
+    return rs[i][1] == "sup" and i > 0 and rs[i - 1][1] == "sub"
+
+
+def width(text: str, size: float) -> float:
+    """Advance width of the typeset ``text`` at font ``size`` (mm)."""
+    from .text import plain_width
+    rs = runs(text)
+    w = 0.0
+    for i, (s, kind) in enumerate(rs):
+        rw = plain_width(s, size * (SMALL if kind != "base" else 1.0))
+        if stacked(rs, i):
+            prev = plain_width(rs[i - 1][0], size * SMALL)
+            w += max(0.0, rw - prev)
+        else:
+            w += rw
+    return w
+
+
+def svg_runs(text: str, size: float) -> list[tuple[str, float, float, float | None]]:
+    """(text, dx, dy, font size or None) for each ``tspan`` of ``text`` drawn at ``size``.
+
+    ``dy`` moves the baseline (relative, so each run undoes the previous shift); ``dx`` sets a
+    superscript back over the subscript it stacks on.
+    """
+    from .text import plain_width
+    rs = runs(text)
+    out = []
+    shift = 0.0
+    for i, (s, kind) in enumerate(rs):
+        target = SHIFT.get(kind, 0.0) * size
+        dx = 0.0
+        if stacked(rs, i):
+            dx = -plain_width(rs[i - 1][0], size * SMALL)
+        out.append((s, round(dx, 3), round(target - shift, 3),
+                    None if kind == "base" else round(size * SMALL, 3)))
+        shift = target
+    return out
+
+
+def plain(text: str) -> str:
+    """One-line Unicode spelling for titles and text outputs: p2_1 → p₂′, subscripts kept as _X."""
+    sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+    out = []
+    for s, kind in runs(text):
+        if kind == "sub":
+            out.append(s.translate(sub) if s.isdigit() else f"_{s}")
+        elif kind == "sup":
+            out.append({"2": "²", "3": "³"}.get(s, f"^{s}"))
+        else:
+            out.append(s)
+    return "".join(out)
+
+
+def html(text: str) -> str:
+    """Escaped HTML with ``<sub>``/``<sup>``; a stacked pair is one ``span.subsup`` (style
+    :data:`HTML_CSS` sets the superscript over the subscript)."""
+    rs = runs(text)
+    out = []
+    i = 0
+    while i < len(rs):
+        s, kind = rs[i]
+        e = _html.escape(s, quote=True)
+        if kind == "sub" and i + 1 < len(rs) and stacked(rs, i + 1):
+            sup = _html.escape(rs[i + 1][0], quote=True)
+            out.append(f'<span class="subsup"><sub>{e}</sub><sup>{sup}</sup></span>')
+            i += 2
+            continue
+        out.append(e if kind == "base" else f"<{kind}>{e}</{kind}>")
+        i += 1
+    return "".join(out)
+
+
+#: CSS the pages that use :func:`html` include
+HTML_CSS = (".subsup{display:inline-flex;flex-direction:column-reverse;vertical-align:-0.45em;"
+            "line-height:1;font-size:0.7em}.subsup sub,.subsup sup{font-size:1em;"
+            "vertical-align:baseline;line-height:1.05}")
+
+
+def link_symbol(sym: str, link: str) -> str:
+    """'ω', 'BC' → 'ω_BC': the angular velocity/acceleration of a named link."""
+    return f"{sym}_{link}"
+
+
+_BARE = re.compile(r"(?<![\w_])(ω|α)(²?) × ([A-Z][A-Z0-9]*)\b")
+
+
+def name_bare_omegas(text: str, links: dict[str, str] | None = None) -> str:
+    """'ω² × OA' → 'ω_OA² × OA': a bare ω or α before '× XY' is the angular velocity
+    (acceleration) of the link through X and Y, named as ``links`` names it ('CB' → 'BC')."""
+    links = links or {}
+
+    def repl(m):
+        name = links.get(m.group(3), m.group(3))
+        return f"{m.group(1)}_{name}{m.group(2)} × {m.group(3)}"
+    return _BARE.sub(repl, text)
+
+
+def slot_names(text: str, scene) -> str:
+    """One name per slotted lever: the pivot–pin line O4P2 is written as the lever's own
+    O4P4 (P4 is the lever point under the pin P2, so the length is the same)."""
+    for slot in getattr(scene, "slots", {}).values():
+        if not slot.coincident:
+            continue
+        for a, b in ((slot.pivot, slot.pin), (slot.pin, slot.pivot)):
+            new = (f"{slot.pivot}{slot.coincident}" if a == slot.pivot
+                   else f"{slot.coincident}{slot.pivot}")
+            text = re.sub(rf"(?<![A-Za-z0-9_]){a}{b}(?![A-Za-z0-9])", new, text)
+    return text
+
+
+def link_names(scene) -> dict[str, str]:
+    """'AB', 'BA' (and the link's own name) → the scene's name of that link."""
+    out: dict[str, str] = {}
+    for name, ln in getattr(scene, "links", {}).items():
+        for key in (name, f"{ln.a}{ln.b}", f"{ln.b}{ln.a}"):
+            out.setdefault(key, name)
+    return out
