@@ -40,19 +40,11 @@ LOOKS: dict[str, Look] = {
 
 
 def component_of(step) -> str:
-    """The component kind of ``step`` (a :class:`polygons.plan.Step`), from ``theorem``,
-    ``kind`` and ``op`` — the one switch to ``str(step.component)`` once steps carry it."""
-    if step.kind == "intersection":
-        return "resultant"
-    if step.kind == "image":
-        return "image"
-    if step.op == "crank_velocity":
-        return "given"
-    if step.op in ("line_guide", "slider_velocity", "slider_acceleration"):
-        return "resultant"          # along the guide from the pole: the slider's own motion
-    return {"relative_velocity": "relative", "centripetal": "centripetal",
-            "tangential": "tangential", "sliding": "sliding", "coriolis": "coriolis",
-            "slider_line": "resultant"}.get(step.theorem, "construction")
+    """The component kind of ``step`` (its :class:`polygons.steps.Component`): what lies along
+    a vector or a line; measures are not drawn."""
+    if step.kind == "measure":
+        return "construction"
+    return str(step.component)
 
 
 def new_width(look: Look) -> float:

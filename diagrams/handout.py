@@ -25,6 +25,7 @@ import math
 import re
 
 from polygons.evaluate import Solution
+from polygons.narrate import worked
 from polygons.plan import Step
 from polygons.report import check_answers, sense
 from polygons.scene import Crank
@@ -118,40 +119,10 @@ def textbook_name(expr: str) -> str:
     return f"{fn}_{''.join(args)}"
 
 
-_E = re.compile(r"(\d(?:\.\d+)?)e\+?(-?)0*(\d+)")
-_NEG_SQ = re.compile(r"(?<![\w)])-(\d[\d.]*)²")
-
-
-def _tidy(text: str) -> str:
-    """Substituted numbers as a person writes them: '-480²' → '480²'."""
-    return _NEG_SQ.sub(r"\1²", plain_text(text))
-
-
-def _sym_numbers(text: str) -> str:
-    """``sym`` plus '1.561e+05' written as 1.561 × 10⁵."""
-    out = sym(text)
-    return _E.sub(lambda m: f"{m.group(1)} × 10<sup>{m.group(2)}{m.group(3)}</sup>", out)
-
-
-def formula_with_numbers(step: Step) -> str:
-    """The step's formula with its numbers, as one line of text (not escaped)."""
-    sub = _tidy(step.substituted or "")
-    if not sub:
-        return ""
-    formula = plain_text(step.formula)
-    lhs, _, rhs = formula.partition(" = ")
-    if sub.startswith(lhs + " = "):
-        first = sub[len(lhs) + 3:].split(" = ")[0]
-        if rhs and first[:1].isdigit() and rhs not in sub:
-            return f"{lhs} = {rhs} = {sub[len(lhs) + 3:]}"
-        return sub
-    if sub.startswith("2ωv"):
-        return f"a_cor = {sub}"
-    q = plain_text(step.quantity)
-    if step.op in ("slider_velocity", "slider_acceleration", "slide_velocity",
-                   "slide_acceleration"):
-        return f"{q} = {sub}"
-    return f"{q} = {sub}"
+def formula_with_numbers(step: Step, scene) -> str:
+    """The step's worked line (symbol = theorem = numbers), as one line of text (not escaped):
+    made by :func:`polygons.narrate.worked` from the step's terms (powers of ten printed)."""
+    return plain_text(worked(step, scene, printed=True))
 
 
 def _paragraphs(text: str) -> list[str]:
@@ -533,9 +504,9 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
             if step.kind != "intersection":
                 doc.add(f'<p class="formula symbolic">{sym(words(step.formula))}</p>\n')
         else:
-            f = formula_with_numbers(step)
+            f = formula_with_numbers(step, sol.scene)
             if f:
-                doc.add(f'<p class="formula answer">{_sym_numbers(words(f))}</p>\n')
+                doc.add(f'<p class="formula answer">{sym(words(f))}</p>\n')
             name = f"{diagram}-{k}" if k is not None else None
             if name and name in figs.svg:
                 svg = figs.svg[name]

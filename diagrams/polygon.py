@@ -187,9 +187,6 @@ def _asked(sol: Solution, diagram: str, strokes, born, vx) -> list[Stroke]:
     return out
 
 
-_RELATIVE = re.compile(r"^\((?:v|a)_([^)]+)\)_([^\s^]+)")
-
-
 def _points_back(sol: Solution, line: Step, end: str) -> bool:
     """True when the vector on ``line`` runs from the new vertex back to the line's anchor.
 
@@ -197,9 +194,8 @@ def _points_back(sol: Solution, line: Step, end: str) -> bool:
     y → x).  Usually the line goes through y and the intersection makes x; when it goes
     through x (the slot line through the pin's vertex) the arrow points back at the anchor.
     """
-    m = _RELATIVE.match(line.quantity)
-    if m:
-        x, ref = m.groups()
+    if line.relative:
+        x, ref = line.relative
         if line.start == sol.vertex_of(x) and end == sol.vertex_of(ref):
             return True
         if line.start == sol.vertex_of(ref):

@@ -243,7 +243,8 @@ def _omega(k: Kernel, s: Step):
     w = angular_velocity(r, rel)
     k.omega[L] = w
     return None, None, None, None, w, "rad/s", None, k.terms(lambda: (
-        (f"{k.names.of(P)}{k.names.of(Q)}", norm(rel), "m/s"), (f"{P}{Q}", norm(r), "m"),
+        (s.reads or f"{k.names.of(P)}{k.names.of(Q)}", norm(rel), "m/s"),
+        (f"{P}{Q}", norm(r), "m"),
         (f"ω_{L}", w, "rad/s")))
 
 
@@ -254,7 +255,8 @@ def _alpha(k: Kernel, s: Step):
     al = angular_acceleration(r, rel)
     k.alpha[L] = al
     return None, None, None, None, al, "rad/s^2", None, k.terms(lambda: (
-        ("tangential", np.abs(cross(r / norm(r), rel)), "m/s^2"), (f"{P}{X}", norm(r), "m"),
+        (s.reads or f"(a_{X})_{P}^t", np.abs(cross(r / norm(r), rel)), "m/s^2"),
+        (f"{P}{X}", norm(r), "m"),
         (f"α_{L}", al, "rad/s^2")))
 
 

@@ -9,10 +9,15 @@ from __future__ import annotations
 
 import math
 
-from .steps import Op, Step, number as f, sense, unit_text
+from functools import partial
+
+from .steps import Op, Step, number, sense, unit_text
 
 
-def substitute(s: Step, scene) -> str:
+
+def substitute(s: Step, scene, printed: bool = False) -> str:
+    """The substituted formula of ``s`` (``printed``: powers of ten as 1.5 × 10¹⁰)."""
+    f = partial(number, printed=printed)
     t = s.terms
     op = s.op
     if op is Op.CRANK_VELOCITY:
@@ -57,12 +62,14 @@ def substitute(s: Step, scene) -> str:
     return ""
 
 
-def worked(s: Step, scene) -> str:
+def worked(s: Step, scene, printed: bool = False) -> str:
     """The worked line a tutorial prints under a figure: the asked symbol, the theorem in
     symbols, then the numbers ("ω_BC = bc / BC = 7.8 / 0.17 = 45.9 rad/s CW",
     "(a_C)_B^n = ω² × BC = 45.9² × 0.17 = 358 m/s²").  Empty for a line of unknown length.
-    Built from the step's fields and terms only."""
-    sub = substitute(s, scene)
+    Built from the step's fields and terms only; ``printed`` writes powers of ten as a page
+    does (1.5 × 10¹⁰) instead of e-notation."""
+    f = partial(number, printed=printed)
+    sub = substitute(s, scene, printed)
     if not sub:
         return ""
     op, t = s.op, s.terms
@@ -75,8 +82,7 @@ def worked(s: Step, scene) -> str:
         return (f"{t[2].symbol} = {t[0].symbol} / {t[1].symbol} = {f(t[0].value)} / "
                 f"{f(t[1].value)} = {f(abs(w))} rad/s {sense(w)}").rstrip()
     if op is Op.ALPHA:
-        L, P, X = s.args
         al = t[2].value
-        return (f"{t[2].symbol} = (a_{X})_{P}^t / {t[1].symbol} = {f(t[0].value)} / "
+        return (f"{t[2].symbol} = {t[0].symbol} / {t[1].symbol} = {f(t[0].value)} / "
                 f"{f(t[1].value)} = {f(abs(al))} rad/s² {sense(al)}").rstrip()
     return f"{s.quantity} = {sub}"

@@ -66,7 +66,7 @@ class Component(StrEnum):
     CORIOLIS = "coriolis"          # 2 ω × v
     IMAGE = "image"                # by the image of a rigid link
     RESULTANT = "resultant"        # an absolute quantity, from the pole
-    CONSTRUCTION = "construction"  # a line of unknown length
+    CONSTRUCTION = "construction"  # a construction aid (a line carries the component on it)
 
 
 @dataclass(frozen=True)
@@ -105,6 +105,7 @@ class Step:
     component: Component = Component.CONSTRUCTION
     link: str | None = None              # the link whose ω/α this step gives or uses
     relative: tuple[str, str] | None = None  # (X, Y): the step carries X relative to Y
+    reads: str | None = None             # for a measure: the polygon vector it reads ('c1c')
     # -- filled by an interpreter -----------------------------------------------------------
     at: tuple[float, float] | None = None         # start vertex / line anchor, polygon coords
     vector: tuple[float, float] | None = None     # for vectors and images: end - start
@@ -184,11 +185,11 @@ class Builder:
 
     def add(self, kind: Kind, op: Op, args, draws, start, end, theorem, quantity, formula,
             reason, lines=(), *, component: Component, link: str | None = None,
-            relative: tuple[str, str] | None = None) -> int:
+            relative: tuple[str, str] | None = None, reads: str | None = None) -> int:
         n = len(self.steps) + 1
         self.steps.append(Step(self.diagram, n, kind, op, tuple(args), draws, start, end,
                                theorem, quantity, formula, reason, tuple(lines), component,
-                               link, relative))
+                               link, relative, reads))
         return n
 
     def fresh(self, label: str) -> str:
@@ -196,12 +197,20 @@ class Builder:
 
 
 # ---------------------------------------------------------------- the one number formatter
-def number(x: float) -> str:
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def number(x: float, printed: bool = False) -> str:
     """Five significant figures written out in full, trailing zeros dropped, as a tutorial
-    would (156105, 0.80587, 0.05)."""
+    would (156105, 0.80587, 0.05); outside 1e-4 … 1e9 in e-notation (1.5e+10), or, when
+    ``printed``, as a printed page writes it (1.5 × 10¹⁰)."""
     x = float(x)
     if x == 0.0 or not 1e-4 <= abs(x) < 1e9:
-        return f"{x:.5g}"
+        text = f"{x:.5g}"
+        if printed and "e" in text:
+            mant, _, exp = text.partition("e")
+            return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}"
+        return text
     decimals = max(0, 4 - math.floor(math.log10(abs(x))))
     text = f"{x:.{decimals}f}"
     return text.rstrip("0").rstrip(".") if "." in text else text

@@ -81,7 +81,7 @@ def test_handout_narrates_every_step_with_its_figure_and_numbers(path):
 def test_formula_with_numbers_reads_like_the_tutorial():
     sol, key, _ = pages(CASES / "s001-we2.toml")
     first = next(s for s in sol.steps if s.diagram == "velocity")
-    assert formula_with_numbers(first) == "(v_A)_O = ω × OA = 209.44 × 0.05 = 10.472 m/s"
+    assert formula_with_numbers(first, sol.scene) == "(v_A)_O = ω × OA = 209.44 × 0.05 = 10.472 m/s"
     # printed with the link named: no bare ω where ω_OA is meant
     assert "(vA)O = ωOA × OA = 209.44 × 0.05 = 10.472 m/s" in text_of(key)
     sol, key, _ = pages(CASES / "s001-we6.toml")

@@ -53,7 +53,7 @@ class CrankDyad:
                   "relative_velocity", f"(v_{X})_{P}", f"(v_{X})_{P} = ω_{L} × {P}{X}",
                   f"Draw {p}{x} = ω × {P}{X} perpendicular to {P}{X}, in the sense of rotation "
                   f"of the crank, starting at the pole {b.names.alias()} (fixed points have "
-                  f"no velocity).", component=Component.RELATIVE, link=L)
+                  f"no velocity).", component=Component.GIVEN, link=L)
             return
         has_t = scene_alpha(b.scene) != 0.0
         x1 = b.fresh(X) if has_t else x

@@ -18,7 +18,7 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
         n1 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", p, None,
                    "relative_velocity", f"(v_{X})_{P}", f"(v_{X})_{P} ⟂ {P}{X}",
                    f"Through {p} draw a line perpendicular to {P}{X}: the velocity of {X} "
-                   f"relative to {P}, of unknown length.", component=C.CONSTRUCTION, link=LP,
+                   f"relative to {P}, of unknown length.", component=C.RELATIVE, link=LP,
                    relative=(X, P))
         if other is not None:
             Q, LQ = other
@@ -26,13 +26,13 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
             n2 = b.add(Kind.LINE, Op.LINE_PERP, (Q, X), f"line ⟂ {Q}{X}", q_, None,
                        "relative_velocity", f"(v_{X})_{Q}", f"(v_{X})_{Q} ⟂ {Q}{X}",
                        f"Through {q_} draw a line perpendicular to {Q}{X}: the velocity of "
-                       f"{X} relative to {Q}, of unknown length.", component=C.CONSTRUCTION,
+                       f"{X} relative to {Q}, of unknown length.", component=C.RELATIVE,
                        link=LQ, relative=(X, Q))
         else:
             n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None,
                        "slider_line", f"v_{X}", f"v_{X} ∥ guide of {X}",
                        f"Through {pole} draw a line along the guide of {X}: the slider "
-                       f"can only move along it.", component=C.CONSTRUCTION)
+                       f"can only move along it.", component=C.RESULTANT)
         b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
               f"{x} = intersection of the two lines",
               f"The two lines meet at {x}: {pole}{x} is the velocity of {X}.", (n1, n2),
@@ -40,13 +40,13 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
         b.add(Kind.MEASURE, Op.OMEGA, (LP, P, X), f"ω_{LP}", None, None, "angular_velocity",
               f"ω_{LP}", f"ω_{LP} = {p}{x} / {P}{X}",
               f"The angular velocity of {LP} is the relative velocity divided by its length.",
-              component=C.RELATIVE, link=LP)
+              component=C.RELATIVE, link=LP, reads=f"{p}{x}")
         if other is not None:
             Q, LQ = other
             b.add(Kind.MEASURE, Op.OMEGA, (LQ, Q, X), f"ω_{LQ}", None, None,
                   "angular_velocity", f"ω_{LQ}", f"ω_{LQ} = {V(Q)}{x} / {Q}{X}",
                   f"The angular velocity of {LQ} is its relative velocity divided "
-                  f"by its length.", component=C.RELATIVE, link=LQ)
+                  f"by its length.", component=C.RELATIVE, link=LQ, reads=f"{V(Q)}{x}")
         else:
             b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (X,), f"v_{X}", None, None, "slider",
                   f"v_{X} along guide", f"v_{X} = {pole}{x}",
@@ -63,7 +63,7 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
     n1 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"{x} line", x1, None,
                "tangential", f"(a_{X})_{P}^t", f"(a_{X})_{P}^t = α_{LP} × {P}{X} ⟂ {P}{X}",
                f"Through {x1} draw a line perpendicular to {P}{X} for the tangential "
-               f"acceleration of unknown length: the {x} line.", component=C.CONSTRUCTION,
+               f"acceleration of unknown length: the {x} line.", component=C.TANGENTIAL,
                link=LP, relative=(X, P))
     if other is not None:
         Q, LQ = other
@@ -78,12 +78,12 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
                    f"(a_{X})_{Q}^t", f"(a_{X})_{Q}^t = α_{LQ} × {Q}{X} ⟂ {Q}{X}",
                    f"Through {x2} draw a line perpendicular to {Q}{X} for the tangential "
                    f"acceleration of {X} relative to {Q}, of unknown length.",
-                   component=C.CONSTRUCTION, link=LQ, relative=(X, Q))
+                   component=C.TANGENTIAL, link=LQ, relative=(X, Q))
     else:
         n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None, "slider_line",
                    f"a_{X}", f"a_{X} ∥ guide of {X}",
                    f"Through {pole} draw a line along the guide of {X}: the slider's "
-                   f"acceleration lies along it.", component=C.CONSTRUCTION)
+                   f"acceleration lies along it.", component=C.RESULTANT)
     b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
           f"{x} = intersection of the two lines",
           f"The lines meet at {x}: {pole}{x} is the acceleration of {X}.", (n1, n2),
@@ -91,13 +91,13 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
     b.add(Kind.MEASURE, Op.ALPHA, (LP, P, X), f"α_{LP}", None, None, "angular_acceleration",
           f"α_{LP}", f"α_{LP} = {x1}{x} / {P}{X}",
           f"The angular acceleration of {LP} is its tangential acceleration {x1}{x} "
-          f"divided by {P}{X}.", component=C.TANGENTIAL, link=LP)
+          f"divided by {P}{X}.", component=C.TANGENTIAL, link=LP, reads=f"{x1}{x}")
     if other is not None:
         Q, LQ = other
         b.add(Kind.MEASURE, Op.ALPHA, (LQ, Q, X), f"α_{LQ}", None, None,
               "angular_acceleration", f"α_{LQ}", f"α_{LQ} = {x2}{x} / {Q}{X}",
               f"The angular acceleration of {LQ} is {x2}{x} divided by {Q}{X}.",
-              component=C.TANGENTIAL, link=LQ)
+              component=C.TANGENTIAL, link=LQ, reads=f"{x2}{x}")
     else:
         b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (X,), f"a_{X}", None, None, "slider",
               f"a_{X} along guide", f"a_{X} = {pole}{x}",

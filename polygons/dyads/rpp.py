@@ -54,12 +54,12 @@ class RPP:
         n1 = b.add(Kind.LINE, Op.LINE_GUIDE, (Y,), "slider line", pole, None, "slider_line",
                    f"{q}_{Y}", f"{q}_{Y} ∥ guide of {Y}",
                    f"Through {pole} draw a line along the guide of the yoke {Y}: the yoke "
-                   f"only translates along it.", component=C.CONSTRUCTION)
+                   f"only translates along it.", component=C.RESULTANT)
         n2 = b.add(Kind.LINE, Op.LINE_SLOT, (Y,), "slot line", a, None, "sliding",
                    f"({q}_{A})_{Y}", f"({q}_{A})_{Y} ∥ slot of {Y}",
                    f"Through {a} draw a line parallel to the yoke's slot: {A} slides along "
                    f"it relative to the yoke, which does not turn (so there is no Coriolis "
-                   f"term).", component=C.CONSTRUCTION, relative=(A, Y))
+                   f"term).", component=C.SLIDING, relative=(A, Y))
         b.add(Kind.INTERSECTION, Op.INTERSECT, (), y, None, y, "intersection", f"{q}_{Y}",
               f"{y} = intersection of the two lines",
               f"They meet at {y}: {pole}{y} is the {b.what} of the yoke and {y}{a} that of "

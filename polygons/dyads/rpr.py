@@ -65,11 +65,11 @@ class RPR:
                        "relative_velocity", f"v_{A1}", f"v_{A1} = ω_{lev} × {B}{A1} ⟂ {B}{A}",
                        f"Through {b_} draw a line perpendicular to the lever {B}{A}: the "
                        f"velocity of {A1}, the point of the lever under the pin.",
-                       component=C.CONSTRUCTION, link=lev, relative=(A1, B))
+                       component=C.RELATIVE, link=lev, relative=(A1, B))
             n2 = b.add(Kind.LINE, Op.LINE_ALONG, (B, A1), f"slot line ∥ {B}{A}", a, None,
                        "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{A}",
                        f"Through {a} draw a line parallel to the slot {B}{A}: the velocity of "
-                       f"{A} sliding relative to {A1}.", component=C.CONSTRUCTION,
+                       f"{A} sliding relative to {A1}.", component=C.SLIDING,
                        relative=(A, A1))
             b.add(Kind.INTERSECTION, Op.INTERSECT, (), a1, None, a1, "intersection",
                   f"v_{A1}", f"{a1} = intersection of the two lines",
@@ -78,7 +78,7 @@ class RPR:
             b.add(Kind.MEASURE, Op.OMEGA, (lev, B, A1), f"ω_{lev}", None, None,
                   "angular_velocity", f"ω_{lev}", f"ω_{lev} = {b_}{a1} / {B}{A}",
                   f"The lever turns at the velocity of {A1} divided by {B}{A}.",
-                  component=C.RELATIVE, link=lev)
+                  component=C.RELATIVE, link=lev, reads=f"{b_}{a1}")
             b.add(Kind.MEASURE, Op.SLIDE_VELOCITY, (A,), "v_slide", None, None, "sliding",
                   f"(v_{A})_{A1}", f"(v_{A})_{A1} = {a1}{a}",
                   f"The sliding velocity of {A} along the slot is {a1}{a} (positive away "
@@ -93,7 +93,7 @@ class RPR:
             n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"{a1} line", k1, None, "tangential",
                        f"(a_{A1})^t", f"(a_{A1})^t = α_{lev} × {B}{A} ⟂ {B}{A}",
                        f"Through {k1} draw a line perpendicular to {B}{A} for the tangential "
-                       f"acceleration of {A1}, of unknown length.", component=C.CONSTRUCTION,
+                       f"acceleration of {A1}, of unknown length.", component=C.TANGENTIAL,
                        link=lev, relative=(A1, B))
             n2 = b.add(Kind.LINE, Op.CORIOLIS_OFFSET_LINE, (A,), "Coriolis offset line", a,
                        None, "coriolis", "2ω×v", f"2 ω_{lev} v = 2 × ω_{lev} × (v_{A})_{A1}",
@@ -117,7 +117,8 @@ class RPR:
             b.add(Kind.MEASURE, Op.ALPHA, (lev, B, A1), f"α_{lev}", None, None,
                   "angular_acceleration", f"α_{lev}", f"α_{lev} = {k1}{a1} / {B}{A}",
                   f"The lever's angular acceleration is its tangential acceleration "
-                  f"{k1}{a1} divided by {B}{A}.", component=C.TANGENTIAL, link=lev)
+                  f"{k1}{a1} divided by {B}{A}.", component=C.TANGENTIAL, link=lev,
+                  reads=f"{k1}{a1}")
             b.add(Kind.MEASURE, Op.SLIDE_ACCELERATION, (A,), "a_slide", None, None, "sliding",
                   f"(a_{A})_{A1}", f"(a_{A})_{A1} = {k2}{a}",
                   f"The sliding acceleration of {A} is {k2}{a} (positive away from {B}).",
