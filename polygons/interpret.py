@@ -16,6 +16,7 @@ import numpy as np
 
 from .errors import ConstructionError
 from .steps import Diagram, Op, Step, Term
+from .topology import slot_along_lever
 from .theorems import (angular_acceleration, angular_velocity, centripetal, coriolis, cross,
                        dot, norm, perp, relative_velocity, tangential)
 
@@ -88,8 +89,14 @@ class Kernel:
         return self.vx[diagram][self.names.of(label)]
 
     def _slot_e(self, A: str):
+        """The unit vector along the slot of pin ``A``: pivot → pin for a slot through the
+        lever's pivot (positive away from the pivot), pivot → far end for an offset slot or a
+        driven lever (positive towards the far end)."""
         slot = self.scene.slots[A]
-        r = self.r(slot.pivot, A)
+        if slot.far is not None and slot_along_lever(self.scene, slot):
+            r = self.r(slot.pivot, slot.far)
+        else:
+            r = self.r(slot.pivot, A)
         return r / norm(r), slot
 
     # -- running a step -----------------------------------------------------------------
@@ -200,9 +207,48 @@ def _coriolis_offset_line(k: Kernel, s: Step):
 
 
 def _coriolis(k: Kernel, s: Step):
+    """2 ω × ṡ e: drawn at once when the offset line did not already compute it."""
     (A,) = s.args
+    if A not in k.cor:
+        e, slot = k._slot_e(A)
+        k.cor[A] = coriolis(k.omega[slot.lever], k.slide_v[A] * e)
     a_cor = k.cor[A]
     return k._vector(s, a_cor, "m/s^2", (("2ωv", norm(a_cor), "m/s^2"),))
+
+
+def _line_slide(k: Kernel, s: Step):
+    (A,) = s.args
+    e, _ = k._slot_e(A)
+    return _line_result(s, k._line(s, e, k.vx[s.diagram][s.start]))
+
+
+def _slide_drive(k: Kernel, s: Step):
+    """A prescribed sliding velocity ṡ e or acceleration s̈ e along the link PQ."""
+    C, P, Q = s.args
+    r = k.r(P, Q)
+    e = r / norm(r)
+    spec = k.scene.prescribed[C]
+    if s.diagram == Diagram.VELOCITY:
+        val = spec.velocity
+        k.slide_v[C] = val
+    else:
+        val = spec.acceleration
+        k.slide_a[C] = val
+    unit = _unit_of(s.diagram)
+    return k._vector(s, val * e, unit, ((s.quantity, val, unit),))
+
+
+def _coriolis_drive(k: Kernel, s: Step):
+    """2 ω × ṡ e with ṡ prescribed and ω the link's."""
+    C, L, P, Q = s.args
+    r = k.r(P, Q)
+    w = k.omega[L]
+    v_s = k.scene.prescribed[C].velocity
+    a_cor = coriolis(w, v_s * (r / norm(r)))
+    k.cor[C] = a_cor
+    return k._vector(s, a_cor, "m/s^2", ((f"ω_{L}", abs(w), "rad/s"),
+                                         (f"ṡ_{C}", abs(v_s), "m/s"),
+                                         ("2ωv", norm(a_cor), "m/s^2")))
 
 
 def _join(k: Kernel, s: Step):
@@ -293,6 +339,9 @@ _OPS = {
     Op.LINE_ALONG: _line_along,
     Op.LINE_GUIDE: _line_guide,
     Op.LINE_SLOT: _line_slot,
+    Op.LINE_SLIDE: _line_slide,
+    Op.SLIDE_DRIVE: _slide_drive,
+    Op.CORIOLIS_DRIVE: _coriolis_drive,
     Op.CORIOLIS_OFFSET_LINE: _coriolis_offset_line,
     Op.CORIOLIS: _coriolis,
     Op.JOIN: _join,

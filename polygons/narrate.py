@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 from .steps import Op, Step, number as f, sense, unit_text
+from .topology import slot_along_lever
 
 
 def substitute(s: Step, scene) -> str:
@@ -31,6 +32,12 @@ def substitute(s: Step, scene) -> str:
         return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
     if op is Op.CORIOLIS:
         return f"2ωv = {f(t[0].value)} m/s²"
+    if op is Op.SLIDE_DRIVE:
+        C, P, Q = s.args
+        return (f"{s.quantity} = {f(t[0].value)} {unit_text(t[0].unit)} along {P}{Q} "
+                f"(given)")
+    if op is Op.CORIOLIS_DRIVE:
+        return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
     if op is Op.JOIN:
         return f"{s.start}{s.end} = {f(t[0].value)} m/s²"
     if op is Op.INTERSECT:
@@ -50,8 +57,12 @@ def substitute(s: Step, scene) -> str:
     if op in (Op.SLIDE_VELOCITY, Op.SLIDE_ACCELERATION):
         (A,) = s.args
         val = t[0].value
+        slot = scene.slots[A]
+        if slot.far is not None and slot_along_lever(scene, slot):
+            ends = (slot.pivot, slot.far) if val >= 0 else (slot.far, slot.pivot)
+            return f"{f(val)} {t[0].unit} (along {''.join(ends)})"
         return (f"{f(val)} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
-                f"{scene.slots[A].pivot})")
+                f"{slot.pivot})")
     if op is Op.IMAGE:
         return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"
     return ""

@@ -39,6 +39,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
+from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownKeyError, UnknownLabelError, UnitError, suggest)
 from .units import UNITS, dimension_of, parse_quantity
@@ -128,6 +129,7 @@ class Slot:
     coincident: str
     far: str | None
     far_length: float | None
+    offset: float = 0.0     # the slot line's distance left of the lever's line (topology)
 
 
 @dataclass(frozen=True)
@@ -187,6 +189,9 @@ class Scene:
     solve: tuple[str, ...] = DIAGRAMS
     drawn: Mapping[str, Vec] = field(default_factory=lambda: MappingProxyType({}))
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
+    #: second inputs: prescribed slides along a link (:mod:`polygons.topology`)
+    prescribed: Mapping[str, topology.Slide] = field(
+        default_factory=lambda: MappingProxyType({}))
 
     @property
     def labels(self) -> tuple[str, ...]:
@@ -205,6 +210,9 @@ class Scene:
         for lab, g in self.sliders.items():
             if g.pin is not None:       # a Scotch yoke's point on its guide
                 seen[lab] = None
+        for sl in self.prescribed.values():
+            seen[sl.coincident] = None
+            seen[sl.point] = None
         return tuple(seen)
 
     def link_between(self, p: str, q: str) -> Link | None:
@@ -346,13 +354,13 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     for pin, spec in r.table(data.get("slots", {}), "slots", tuple(data.get("slots", {}))).items():
         where = f"slots.{pin}"
         r.label(pin, where)
-        r.table(spec, where, ("lever", "coincident"), required=("lever",))
+        r.table(spec, where, ("lever", "coincident", "offset"), required=("lever",))
         lever = r.string(spec["lever"], where + ".lever")
         pivot, other = split_link_name(lever, file=file, where=where + ".lever")
-        if pivot not in ground:
-            raise SceneError(f"the lever {lever}'s first label {pivot} must be a fixed pivot "
-                             f"(defined in [ground]: {', '.join(ground)})", file=file,
-                             where=where + ".lever")
+        if pivot not in ground and not any(pivot in (l.a, l.b) for l in links.values()):
+            raise SceneError(f"the lever {lever}'s first label {pivot} is its pivot: a fixed "
+                             f"pivot (in [ground]: {', '.join(ground)}) or a pin of a link",
+                             file=file, where=where + ".lever")
         if lever in links:
             if "coincident" not in spec:
                 raise SceneError(f"lever {lever} has a length, so name the point of the lever "
@@ -366,7 +374,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                  f"{other} is the point under the pin; coincident must be "
                                  f"{other!r}", file=file, where=where + ".coincident")
             far, far_length = None, None
-        slots[pin] = Slot(pin, lever, pivot, coincident, far, far_length)
+        offset = r.quantity(spec.get("offset", "0 m"), "length", where + ".offset")
+        if offset and far is None:
+            raise SceneError(f"an offset slot needs the lever's length: give {lever} in "
+                             f"[links] and coincident = \"{pin}1\"", file=file,
+                             where=where + ".offset")
+        slots[pin] = Slot(pin, lever, pivot, coincident, far, far_length, offset)
 
     # extra body points
     points: dict[str, BodyPoint] = {}
@@ -436,9 +449,17 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             sliders[label] = Guide(through, angle)
 
     # driver
-    drv = data["driver"]
+    drv = r.table(data["driver"], "driver", tuple(data["driver"]))
+    drv = topology.lever_as_crank(drv, r, data.get("slots", {}))
+    prescribed = {}
+    if "slide" in drv:
+        sl = topology.parse_slide(drv["slide"], r, links, split_link_name)
+        prescribed[sl.point] = sl
+        known |= {sl.point, sl.coincident}
+        drv = {k: v for k, v in drv.items() if k != "slide"}
     r.table(drv, "driver", ("crank", "slider", "angle", "omega", "sense", "alpha",
-                            "alpha_sense", "position", "velocity", "acceleration"))
+                            "alpha_sense", "position", "velocity", "acceleration", "lever",
+                            "slide"))
     if ("crank" in drv) == ("slider" in drv):
         raise SceneError("the driver is either a crank (crank = \"OA\") or a slider "
                          "(slider = \"C\"): give exactly one", file=file, where="driver")
@@ -520,7 +541,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                  assembly=MappingProxyType(assembly), answers=answers,
                  solve=tuple(s for s in DIAGRAMS if s in solve),
                  drawn=MappingProxyType(drawn),
-                 extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}))
+                 extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
+                 prescribed=MappingProxyType(prescribed))
 
 
 def path_stem(file: str) -> str:
