@@ -18,6 +18,7 @@ from . import dyads as kinds
 from .dyads import RPP, RPR, RRP, RRR, CrankDyad, Dyad, Image, SliderDriveDyad  # noqa: F401
 from .errors import UnknownLabelError, UnsupportedError, suggest
 from .scene import Scene
+from .topology import why_unplaced
 from .steps import Builder, Diagram, Step, Vertices  # noqa: F401  (re-exported)
 
 
@@ -63,6 +64,9 @@ def make_plan(scene: Scene, targets: Iterable[str] | None = None) -> Plan:
     if missing:
         x = missing[0]
         joined = [l.name for l in links if x in (l.a, l.b)]
+        why = why_unplaced(scene, x, placed)
+        if why:
+            raise UnsupportedError(f"cannot place point {x}: {why}", file=scene.file, where=x)
         raise UnsupportedError(
             f"cannot place point {x}: it is joined by {', '.join(joined) or 'no link'}; a point "
             f"is placed by two links to placed points, a link plus a slider guide "

@@ -418,16 +418,22 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         return label
 
     for slot in slots.values():
-        need_label(slot.pin, f"slots.{slot.pin}")
+        if slot.pin not in known:
+            raise SceneError(f"the pin {slot.pin} sliding in the slot of {slot.lever} is on no "
+                             f"link: make it the end of a link (a crank, a rocker) or a point "
+                             f"of one in [points]", file=file, where=f"slots.{slot.pin}")
 
     # sliders
     sliders: dict[str, Guide] = {}
     for label, spec in r.table(data.get("sliders", {}), "sliders",
                                tuple(data.get("sliders", {}))).items():
         where = f"sliders.{label}"
-        r.table(spec, where, ("through", "direction", "pin", "slot"),
-                required=("through", "direction"))
-        through = r.vec(spec["through"], where + ".through")
+        r.table(spec, where, ("through", "direction", "pin", "slot", "from", "offset"),
+                required=("direction",))
+        through = topology.guide_through(spec, r, where, ground)
+        if through is None:
+            r.table(spec, where, tuple(spec), required=("through",))
+            through = r.vec(spec["through"], where + ".through")
         angle = r.quantity(spec["direction"], "angle", where + ".direction")
         if "pin" in spec or "slot" in spec:
             # a Scotch yoke: this slider carries a straight slot in which a placed pin slides
@@ -490,7 +496,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                      where="driver.alpha_sense")
                 alpha *= r.sense(drv["alpha_sense"], "driver.alpha_sense")
         if "angle" in drv:
-            angle = r.quantity(drv["angle"], "angle", "driver.angle")
+            angle = topology.crank_angle(drv["angle"], r, pivot=pivot, tip=tip,
+                                         sense=1 if omega >= 0 else -1, ground=ground,
+                                         links=links, sliders=sliders,
+                                         assembly=data.get("assembly", {}))
         elif tip in drawn:
             angle = math.atan2(drawn[tip][1] - ground[pivot][1], drawn[tip][0] - ground[pivot][0])
         else:

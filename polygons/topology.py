@@ -90,8 +90,11 @@ TABLES: tuple[Table, ...] = (
 )
 
 
-_DEAD = re.compile(r"^\s*(.*?)\s+from\s+(idc|odc|inner dead cent(?:re|er)|"
-                   r"outer dead cent(?:re|er))\s*$", re.IGNORECASE)
+_FROM = re.compile(r"^\s*(.*?)\s+from\s+(.+?)\s*$", re.IGNORECASE)
+_DEAD_WORDS = {"idc": "idc", "inner dead centre": "idc", "inner dead center": "idc",
+               "tdc": "idc", "odc": "odc", "outer dead centre": "odc",
+               "outer dead center": "odc", "bdc": "odc"}
+_LINE = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
 
 
 def default_coincident(point: str) -> str:
@@ -155,15 +158,89 @@ def lever_as_crank(drv: dict, r, slots_raw) -> dict:
     return out
 
 
-def split_dead_centre(value):
-    """'30 deg from idc' → ('30 deg', 'idc'); anything else → (value, None)."""
-    if not isinstance(value, str):
-        return value, None
-    m = _DEAD.match(value)
+def crank_angle(value, r, *, pivot, tip, sense, ground, links, sliders, assembly) -> float:
+    """The crank angle (rad, CCW from +x) stated as ``"30 deg"``, ``"30 deg from idc"`` /
+    ``"from odc"`` (a slider-crank: θ past inner / outer dead centre in the crank's sense of
+    rotation) or ``"30 deg from AD"`` (θ CCW from the ray A → D between two fixed points, e.g.
+    the line of centres of a four-bar)."""
+    where = "driver.angle"
+    m = _FROM.match(value) if isinstance(value, str) else None
     if not m:
-        return value, None
-    word = m.group(2).lower()
-    return m.group(1), ("idc" if word.startswith("i") else "odc")
+        return r.quantity(value, "angle", where)
+    theta = r.quantity(m.group(1), "angle", where)
+    ref = " ".join(m.group(2).split())
+    dead = _DEAD_WORDS.get(ref.lower())
+    if dead is None:
+        if not _LINE.match(ref):
+            raise SceneError(f"cannot read {value!r}: write '30 deg', '30 deg from idc', "
+                             f"'30 deg from odc' or '30 deg from AD' (two fixed points)",
+                             file=r.file, where=where)
+        a, b = re.findall(r"[A-Z][a-z0-9_']*", ref)
+        missing = [lab for lab in (a, b) if lab not in ground]
+        if missing:
+            raise SceneError(f"'{ref}' in {value!r} must join two fixed points; "
+                             f"{', '.join(missing)} not in [ground] ({', '.join(ground)})",
+                             file=r.file, where=where)
+        (ax, ay), (bx, by) = ground[a], ground[b]
+        return math.atan2(by - ay, bx - ax) + theta
+    rods = [(l.b if l.a == tip else l.a, l) for l in links.values()
+            if tip in (l.a, l.b) and pivot not in (l.a, l.b)]
+    rods = [(x, l) for x, l in rods if x in sliders and sliders[x].pin is None]
+    if len(rods) != 1:
+        raise SceneError(f"'{dead}' is a slider-crank's dead centre: the crank pin {tip} must "
+                         f"be joined by one connecting rod to one slider on a fixed guide",
+                         file=r.file, where=where)
+    x, rod = rods[0]
+    crank_len = next(l.length for l in links.values() if {l.a, l.b} == {pivot, tip})
+    guide = sliders[x]
+    return dead_centre_angle(theta, dead, sense, pivot=ground[pivot], r_crank=crank_len,
+                             rod=rod.length, guide=(guide.through, guide.direction),
+                             side=_piston_side(x, assembly, ground, guide, r), file=r.file)
+
+
+def _piston_side(x, assembly, ground, guide, r) -> float:
+    """+1 when the slider ``x`` is on the +direction side of its guide's foot point, −1
+    otherwise, read from the scene's [assembly] words for x ("B right of O", near = ...)."""
+    spec = assembly.get(x) if isinstance(assembly, dict) else None
+    e = guide.direction
+    how = (f"say which side the slider is on in [assembly], e.g. {x} = \"{x} right of O\" "
+           f"(a fixed point) or {x} = {{ near = [...] }}")
+    if isinstance(spec, dict) and "near" in spec:
+        nx, ny = r.vec(spec["near"], f"assembly.{x}.near")
+        return 1.0 if (nx - guide.through[0]) * e[0] + (ny - guide.through[1]) * e[1] >= 0 \
+            else -1.0
+    if isinstance(spec, str):
+        words = " ".join(spec.split())
+        for rel, (cx, cy) in (("right of", (1, 0)), ("left of", (-1, 0)), ("above", (0, 1)),
+                              ("below", (0, -1))):
+            for pre in (f"{x} {rel} ", f"{rel} "):
+                if words.startswith(pre) and words[len(pre):] in ground:
+                    along = cx * e[0] + cy * e[1]
+                    if abs(along) < 1e-9:
+                        break
+                    return 1.0 if along > 0 else -1.0
+    raise SceneError(f"a crank angle from a dead centre needs the side of the slider {x}: "
+                     f"{how}", file=r.file, where="driver.angle")
+
+
+def guide_through(spec, r, where, ground) -> tuple[float, float] | None:
+    """A slider guide stated by its distance from a pivot: ``from = "O"``, ``offset = "20 mm"``
+    (perpendicular distance, positive to the left of the guide direction) → a point on it;
+    None when the guide gives ``through`` instead."""
+    if "from" not in spec and "offset" not in spec:
+        return None
+    if "through" in spec or "from" not in spec or "offset" not in spec:
+        raise SceneError("give the guide either through = [x, y] or from = \"O\" with "
+                         "offset = \"20 mm\" (its distance from that fixed point, positive "
+                         "to the left of the direction)", file=r.file, where=where)
+    frm = r.label(spec["from"], where + ".from")
+    if frm not in ground:
+        raise SceneError(f"from = {frm!r} must be a fixed point in [ground] "
+                         f"({', '.join(ground)})", file=r.file, where=where + ".from")
+    d = r.quantity(spec["offset"], "length", where + ".offset")
+    a = r.quantity(spec["direction"], "angle", where + ".direction")
+    ox, oy = ground[frm]
+    return (ox - d * math.sin(a), oy + d * math.cos(a))
 
 
 def dead_centre_angle(theta: float, which: str, sense: int, *, pivot, r_crank, rod, guide,
@@ -178,18 +255,16 @@ def dead_centre_angle(theta: float, which: str, sense: int, *, pivot, r_crank, r
     """
     (gx, gy), e = guide
     ox, oy = pivot
-    w = (ox - gx, oy - gy)
-    along = w[0] * e[0] + w[1] * e[1]
+    along = (ox - gx) * e[0] + (oy - gy) * e[1]
     fx, fy = gx + along * e[0], gy + along * e[1]
     h = math.hypot(ox - fx, oy - fy)
     d = rod + r_crank if which == "idc" else rod - r_crank
     if d <= h:
-        raise SceneError(f"no {which.upper()}: the crank and rod ({1e3 * d:.6g} mm in line) "
+        raise SceneError(f"no {which.upper()}: crank and rod in line ({1e3 * d:.6g} mm) "
                          f"cannot reach the guide {1e3 * h:.6g} mm from the pivot", file=file,
                          where="driver.angle")
     t = side * math.sqrt(d * d - h * h)
-    bx, by = fx + t * e[0] - ox, fy + t * e[1] - oy
-    base = math.atan2(by, bx)
+    base = math.atan2(fy + t * e[1] - oy, fx + t * e[0] - ox)
     if which == "odc":
         base += math.pi
     return base + sense * theta
@@ -200,7 +275,66 @@ def lever_driven(scene, slot) -> bool:
     return getattr(scene.driver, "link", None) == slot.lever
 
 
+def guided_pin(scene, slot) -> bool:
+    """Whether the pin of ``slot`` is found in the slot of a lever placed first (the lever
+    driven, or placed by its own links): the lever has a far end and the pin hangs from
+    exactly one link of known length that is not the driving crank."""
+    if slot.far is None:
+        return False
+    joints = [l for l in scene.links.values()
+              if slot.pin in (l.a, l.b) and l.length is not None and l.name != slot.lever]
+    return len(joints) == 1 and joints[0].name != getattr(scene.driver, "link", None)
+
+
 def slot_along_lever(scene, slot) -> bool:
-    """Whether the slot's direction is the lever's pivot → far end (an offset slot, or a driven
-    lever whose pin may lie on either side of the pivot) rather than pivot → pin."""
-    return bool(slot.offset) or lever_driven(scene, slot)
+    """Whether the slot's direction is the lever's pivot → far end (an offset slot, or a lever
+    placed before its pin, which may lie on either side of the pivot) rather than pivot → pin
+    (a pin placed first, the lever following it)."""
+    return bool(slot.offset) or guided_pin(scene, slot)
+
+
+def why_unplaced(scene, x: str, placed) -> str:
+    """Why point ``x`` cannot be placed by any dyad, in the scene's words ('' when there is
+    nothing more specific to say than the planner's general sentence)."""
+    joints = [(l.b if l.a == x else l.a, l.name) for l in scene.links.values()
+              if x in (l.a, l.b) and l.length is not None]
+    known = [o for o, _ in joints if o in placed]
+    lever_of = next((s for s in scene.slots.values() if x in (s.far, s.coincident)
+                     and s.pin not in placed and s.pin != x), None)
+    if lever_of is not None and len(known) < 2:
+        inner = why_unplaced(scene, lever_of.pin, placed)
+        return (f"{x} is on the slotted lever {lever_of.lever}, which turns with its pin "
+                f"{lever_of.pin}, and {lever_of.pin} is not placed" + (f": {inner}" if inner
+                                                                         else ""))
+    slot = scene.slots.get(x)
+    if slot is not None:
+        if slot.pivot not in placed:
+            return (f"the pin {x} slides in the slot of lever {slot.lever}, whose pivot "
+                    f"{slot.pivot} is not placed either")
+        if slot.far is None:
+            return (f"the pin {x} slides in the slot of lever {slot.lever}, which has no length "
+                    f"in [links]: such a lever follows a pin placed by its own links (a crank, "
+                    f"two links); to find the pin in the slot of a lever placed first, give "
+                    f"{slot.lever} a length")
+        if len(joints) != 1:
+            return (f"the pin {x} slides in the slot of lever {slot.lever} and is joined by "
+                    f"{len(joints)} links ({', '.join(n for _, n in joints) or 'none'}): a pin "
+                    f"found in a slot hangs from exactly one link")
+        return (f"the pin {x} slides in the slot of lever {slot.lever}, which is not placed: a "
+                f"guide carried by a moving link is placed first by its own links (or driven, "
+                f"[driver] lever = \"{slot.lever}\"), then the pin is found in it")
+    others = [o for o, _ in joints if o not in placed]
+    if len(joints) >= 3 and len(known) < 2:
+        return (f"{x} is joined by {', '.join(n for _, n in joints)}, and fewer than two of "
+                f"their other ends are placed: unless a link or guide is missing, the links "
+                f"around {x} form a closed group (a class-III Assur group, a triad) that no "
+                f"single dyad places; only mechanisms that decompose into dyads are "
+                f"supported")
+    if len(joints) == 1 and x not in scene.sliders and x not in scene.points:
+        return (f"{x} hangs from one link ({joints[0][1]}) only: it needs a second link, a "
+                f"guide ([sliders.{x}]), a slot ([slots.{x}]) or [points.{x}] on a link")
+    if len(joints) == 2 and others:
+        return (f"{x} is joined by {joints[0][1]} and {joints[1][1]}, but "
+                f"{' and '.join(others)} {'is' if len(others) == 1 else 'are'} not placed "
+                f"before it")
+    return ""

@@ -125,7 +125,23 @@ def ref_trammel():
             "v(C)": abs(C[1]), "a(C)": abs(C[2])}
 
 
+MOVING_ANGLE = 90.0
+
+
+def ref_moving_lever():
+    A = am.crank(am.fixed(0, 0), 0.1, DEG(MOVING_ANGLE), -10.0, 0.0)
+    O4 = am.fixed(0.1, -0.2)
+    Q, _, _ = am.rrr(A, 0.3, O4, 0.3, 1e3 - 0.2j)              # Q right of O4
+    w, al = am.rates(O4, Q)
+    phi = math.atan2((Q[0] - O4[0]).imag, (Q[0] - O4[0]).real)
+    out = _guided_refs(am.fixed(0.3, 0), 0.15, O4, phi, w, al, 0.0, 0.3 + 1e3j,  # P above O2
+                       "O2P", "P")
+    out.update({"omega(O4Q)": w, "alpha(O4Q)": al})
+    return out
+
+
 REFS = {
+    "new-slot-on-moving-lever": ref_moving_lever,
     "new-collar-on-rotating-rod": ref_collar,
     "new-oscillating-cylinder": ref_oscillating,
     "new-rotary-engine": ref_rotary,
@@ -448,3 +464,155 @@ def test_elliptic_trammel_matches_closed_form(L, frac, sd, sdd, c):
     assert _close(sol.points["B"].velocity, Bz[1], vs)
     assert _close(sol.points["B"].acceleration, Bz[2], as_)
     assert _close(sol.points["C"].acceleration, C[2], as_ * (1 + abs(c)))
+
+
+# ---------------------------------------------------------------- angle words, guide offset
+def _engine(angle, side="B right of O", guide=None, omega=("10 rad/s", "CW"), r=0.05, L=0.2):
+    guide = guide or {"through": ["0 m", "0 m"], "direction": "0 deg"}
+    return parse_scene({"ground": {"O": ["0 m", "0 m"], "D": ["0.3 m", "0.1 m"]},
+                        "links": {"OA": m(r), "AB": m(L)},
+                        "driver": {"crank": "OA", "angle": angle, "omega": omega[0],
+                                   "sense": omega[1]},
+                        "sliders": {"B": guide}, "assembly": {"B": side}})
+
+
+@prop
+@given(theta=st.floats(0.0, 179.0), r=st.floats(0.01, 0.2), ratio=st.floats(1.5, 6.0),
+       cw=st.booleans(), right=st.booleans(), outer=st.booleans())
+def test_crank_angle_from_a_dead_centre_gives_the_piston_displacement(theta, r, ratio, cw,
+                                                                     right, outer):
+    """In-line engine: the piston's distance from the crank shaft after the crank has turned θ
+    from a dead centre, whichever way it turns and whichever side the cylinder is on."""
+    L = r * ratio
+    scene = _engine(f"{theta!r} deg from {'odc' if outer else 'idc'}",
+                    "B right of O" if right else "B left of O",
+                    omega=("10 rad/s", "CW" if cw else "CCW"), r=r, L=L)
+    sol = solve(scene)
+    B = sol.points["B"].position
+    th = math.radians(theta)
+    # |OB| = ± r cos θ + √(L² − r² sin² θ): from IDC the crank starts pointing at the piston
+    # (|OB| = L + r), from ODC away from it (|OB| = L − r)
+    dist = (-1 if outer else 1) * r * math.cos(th) + math.sqrt(L * L - (r * math.sin(th)) ** 2)
+    assert abs(B[0]) == pytest.approx(dist, rel=1e-12, abs=1e-15)
+    assert (B[0] > 0) == right
+    # the crank has turned θ from the dead centre in its own sense of rotation
+    dead = 0.0 if right != outer else math.pi
+    turned = (scene.driver.angle - dead) * (-1 if cw else 1)
+    assert math.remainder(turned - th, 2 * math.pi) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_angle_from_the_line_of_centres_and_guide_from_a_pivot():
+    s = _engine("30 deg from OD")
+    assert s.driver.angle == pytest.approx(math.atan2(0.1, 0.3) + math.radians(30), rel=1e-15)
+    g = _engine("30 deg", guide={"from": "O", "offset": "20 mm", "direction": "30 deg"})
+    assert g.sliders["B"].through == pytest.approx((-0.02 * 0.5, 0.02 * math.sqrt(3) / 2))
+    # the same engine stated with through = the point 20 mm left of O solves identically
+    t = _engine("30 deg", guide={"through": [m(-0.01), m(0.02 * math.sqrt(3) / 2)],
+                                 "direction": "30 deg"})
+    assert solve(g).points["B"].acceleration == pytest.approx(
+        solve(t).points["B"].acceleration, rel=1e-12)
+
+
+@pytest.mark.parametrize("angle, side, guide, words", [
+    ("30 deg from idc", "B above O", None, "needs the side of the slider"),
+    ("30 deg from XY", "B right of O", None, "must join two fixed points"),
+    ("30 deg from the moon", "B right of O", None, "cannot read"),
+    ("30 deg", "B right of O", {"from": "O", "direction": "0 deg"}, "offset"),
+    ("30 deg", "B right of O", {"from": "A", "offset": "1 mm", "direction": "0 deg"},
+     "must be a fixed point"),
+])
+def test_bad_angle_words_and_guides_are_refused(angle, side, guide, words):
+    with pytest.raises(SceneError, match=words):
+        _engine(angle, side, guide)
+
+
+def test_dead_centre_needs_a_slider_crank():
+    with pytest.raises(SceneError, match="dead centre"):
+        parse_scene({"ground": {"A": ["0 m", "0 m"], "D": ["1 m", "0 m"]},
+                     "links": {"AB": "0.3 m", "BC": "1 m", "CD": "0.8 m"},
+                     "driver": {"crank": "AB", "angle": "10 deg from idc", "omega": "1 rad/s",
+                                "sense": "CW"}, "assembly": {"C": "C above AD"}})
+
+
+@prop
+@given(ad=st.floats(0.3, 1.0), ab=st.floats(0.1, 0.5), bc=lengths, cd=lengths, theta=angles,
+       omega=omegas, alpha=alphas, px=st.floats(-1.0, 1.0), py=st.floats(-1.0, 1.0),
+       r=lengths, sign=st.sampled_from([1, -1]), d=st.floats(-0.05, 0.05))
+def test_pin_in_the_slot_of_a_four_bar_rocker_matches_closed_form(ad, ab, bc, cd, theta, omega,
+                                                                  alpha, px, py, r, sign, d):
+    """The rocker DC of a four-bar carries a slot (through D or offset); the pin P of a
+    second rocker O2P slides in it."""
+    try:
+        ref = analytic.four_bar((0, 0), (ad, 0), ab, bc, cd, theta, omega, alpha, +1)
+    except ValueError:
+        assume(False)
+    D = am.fixed(ad, 0)
+    C = (complex(*ref["C"]), complex(*ref["vC"]), complex(*ref["aC"]))
+    w, al = am.rates(D, C)
+    phi = math.atan2((C[0] - D[0]).imag, (C[0] - D[0]).real)
+    e = complex(math.cos(phi), math.sin(phi))
+    g = D[0] + 1j * d * e
+    w0 = g - complex(px, py)
+    b = (w0 * e.conjugate()).real
+    disc = b * b - (abs(w0) ** 2 - r * r)
+    assume(disc > 1e-4 * r * r)
+    near = g + (-b + sign * math.sqrt(disc)) * e
+    X, (wt, at), (t, td, tdd), cor, X1 = am.guided(am.fixed(px, py), r, D, phi, w, al, d, near)
+    slot = {"lever": "DC", "coincident": "P4"}
+    if d:
+        slot["offset"] = m(d)
+    scene = parse_scene({
+        "ground": {"A": ["0 m", "0 m"], "D": [m(ad), "0 m"], "O2": [m(px), m(py)]},
+        "links": {"AB": m(ab), "BC": m(bc), "DC": m(cd), "O2P": m(r)},
+        "driver": crank_driver("AB", theta, omega, alpha),
+        "slots": {"P": slot},
+        "assembly": {"C": "C above AD", "P": {"near": [m(near.real), m(near.imag)]}}})
+    try:
+        sol = solve(scene)
+    except ParallelLinesError:
+        assume(False)
+    assume(sol.min_intersection_angle_deg > 2.0)
+    vs = abs(omega) * ab + abs(w) * (cd + 2.0)
+    as_ = (omega ** 2 + abs(alpha)) * ab + (abs(al) + w * w) * (cd + 2.0) + vs * vs / r
+    assert abs(sol.links["O2P"].omega - wt) <= 1e-8 * vs / r
+    assert abs(sol.links["O2P"].alpha - at) <= 1e-8 * as_ / r
+    assert abs(sol.slides["P"].velocity - td) <= 1e-8 * vs
+    assert abs(sol.slides["P"].acceleration - tdd) <= 1e-8 * as_
+
+
+# ---------------------------------------------------------------- unsupported topologies
+from polygons.errors import UnsupportedError  # noqa: E402
+
+
+def _crank_scene(**extra):
+    data = {"ground": {"O": ["0 m", "0 m"], "D": ["0.3 m", "0 m"], "E": ["0.15 m", "0.3 m"]},
+            "links": {"OA": "0.1 m"}, "driver": crank_driver("OA", 1.0, 10.0, 0.0)}
+    for k, v in extra.items():
+        data[k] = {**data.get(k, {}), **v}
+    return parse_scene(data)
+
+
+def test_a_triad_is_named_as_a_class_iii_group():
+    scene = _crank_scene(links={"AB": "0.2 m", "BC": "0.15 m", "CD": "0.2 m", "BX": "0.1 m",
+                                "XE": "0.1 m", "CX": "0.12 m"})
+    with pytest.raises(UnsupportedError, match="class-III Assur group"):
+        solve(scene)
+
+
+def test_a_point_on_one_link_is_named():
+    with pytest.raises(UnsupportedError, match=r"hangs from one link \(AB\) only"):
+        solve(_crank_scene(links={"AB": "0.2 m"}))
+
+
+def test_a_slot_on_an_unplaced_lever_says_what_places_a_guide_on_a_moving_link():
+    scene = _crank_scene(links={"DQ": "0.3 m", "EP": "0.15 m"},
+                         slots={"P": {"lever": "DQ", "coincident": "P4"}})
+    with pytest.raises(UnsupportedError) as exc:
+        solve(scene)
+    assert "guide carried by a moving link is placed first by its own links" in str(exc.value)
+    assert "lever = \"DQ\"" in str(exc.value)
+
+
+def test_a_slot_pin_on_no_link_is_named_not_guessed():
+    with pytest.raises(SceneError, match="the pin C sliding in the slot of DQ is on no link"):
+        _crank_scene(slots={"C": {"lever": "DQ"}})

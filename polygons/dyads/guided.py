@@ -19,7 +19,7 @@ import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
 from ..theorems import perp
-from ..topology import lever_driven
+from ..topology import guided_pin
 from .base import circle_line
 from . import image
 
@@ -139,9 +139,9 @@ class Guided:
 
 
 def claims(scene, x) -> bool:
-    """A pin in the slot of the driving lever."""
+    """A pin on one link, in the slot of a lever placed before it (driven or by its links)."""
     slot = scene.slots.get(x)
-    return slot is not None and lever_driven(scene, slot)
+    return slot is not None and guided_pin(scene, slot)
 
 
 def match(scene, x, placed, known):
