@@ -459,7 +459,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     drv = topology.lever_as_crank(drv, r, data.get("slots", {}))
     prescribed = {}
     if "slide" in drv:
-        sl = topology.parse_slide(drv["slide"], r, links, split_link_name)
+        sl = topology.parse_slide(drv["slide"], r, links, split_link_name,
+                                  labels=known | set(sliders))
         prescribed[sl.point] = sl
         known |= {sl.point, sl.coincident}
         drv = {k: v for k, v in drv.items() if k != "slide"}

@@ -102,8 +102,9 @@ def default_coincident(point: str) -> str:
     return f"{point}'" if point[-1].isdigit() else f"{point}1"
 
 
-def parse_slide(spec, r, links, split_link_name) -> Slide:
-    """``[driver.slide]`` → :class:`Slide` (``r`` is the scene reader)."""
+def parse_slide(spec, r, links, split_link_name, labels=()) -> Slide:
+    """``[driver.slide]`` → :class:`Slide` (``r`` is the scene reader, ``labels`` the point
+    labels already in use)."""
     where = "driver.slide"
     r.table(spec, where, ("point", "along", "position", "velocity", "acceleration",
                           "coincident"), required=("point", "along", "position", "velocity"))
@@ -123,11 +124,11 @@ def parse_slide(spec, r, links, split_link_name) -> Slide:
                          file=r.file, where=where + ".point")
     coincident = r.label(spec.get("coincident", default_coincident(point)),
                          where + ".coincident")
-    taken = {lab for link in links.values() for lab in (link.a, link.b)}
+    taken = {lab for link in links.values() for lab in (link.a, link.b)} | set(labels)
     for lab, key in ((point, "point"), (coincident, "coincident")):
         if lab in taken:
-            raise SceneError(f"{lab} is already an end of a link; the sliding point and the "
-                             f"point under it need labels of their own", file=r.file,
+            raise SceneError(f"{lab} is already a point of the mechanism; the sliding point "
+                             f"and the point under it need labels of their own", file=r.file,
                              where=f"{where}.{key}")
     if coincident == point:
         raise SceneError("the point under the collar needs a label of its own",

@@ -616,3 +616,11 @@ def test_a_slot_on_an_unplaced_lever_says_what_places_a_guide_on_a_moving_link()
 def test_a_slot_pin_on_no_link_is_named_not_guessed():
     with pytest.raises(SceneError, match="the pin C sliding in the slot of DQ is on no link"):
         _crank_scene(slots={"C": {"lever": "DQ"}})
+
+
+def test_slide_labels_must_be_new():
+    data = _base()
+    data["ground"]["K"] = ["1 m", "0 m"]
+    data["driver"]["slide"]["point"] = "K"
+    with pytest.raises(SceneError, match="already a point"):
+        parse_scene(data)

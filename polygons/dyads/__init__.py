@@ -5,7 +5,8 @@ are found from the scene's slots, not from a point); ``POINT_KINDS`` are tried f
 not yet placed, in order: the first kind that *claims* the point (by how the scene declares
 it) decides whether it can be placed now.  Adding a dyad kind = one module here with its
 record (``placed``, ``needs``, ``locate``, ``why_not``, ``emit``) and ``claims``/``match``,
-its scene key in :mod:`polygons.scene`, and its tests.
+its scene keys (new ones in :mod:`polygons.topology`), and its tests (README: "Adding a
+dyad").
 """
 from __future__ import annotations
 

@@ -1,7 +1,8 @@
 """RRP on a moving guide: the pin X on a link of known length from a placed point P slides in
-the slot of a lever whose angle is already known (the inverted slider-crank driven by its
-guide: the oscillating-cylinder engine, the rotary engine — the cylinder turns at a given ω
-and the piston's crank-pin is on a driven crank).
+the slot of a lever placed first — driven (the inverted slider-crank driven by its guide: the
+oscillating-cylinder engine, the rotary engine — the cylinder turns at a given ω and the
+piston's crank-pin is on a driven crank) or placed by its own links (a guide carried by a
+moving link).
 
 Position: X on the circle |PX| = L and on the slot line B + d n + t e (e along the lever
 B → Q, n = perp(e), d the slot's offset): two closures.  The lever's point X1 under the pin is
