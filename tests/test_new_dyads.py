@@ -140,7 +140,17 @@ def ref_moving_lever():
     return out
 
 
+def ref_engine_from_idc():
+    """In-line engine, cylinder on +x: IDC is the crank along +x; 60° clockwise from it is
+    θ = −60°; the loop closure of tests/analytic.py with B on the +x side (branch +1)."""
+    w = -450 * 2 * math.pi / 60
+    ref = analytic.slider_crank((0, 0), 0.15, 0.6, -DEG(60), w, 0.0, (0, 0), 0.0, +1)
+    return {"vs(P)": ref["s_dot"], "as(P)": ref["s_ddot"], "omega(CP)": ref["omega_AB"],
+            "alpha(CP)": ref["alpha_AB"], "v(C)": 0.15 * abs(w)}
+
+
 REFS = {
+    "new-engine-from-idc": ref_engine_from_idc,
     "new-slot-on-moving-lever": ref_moving_lever,
     "new-collar-on-rotating-rod": ref_collar,
     "new-oscillating-cylinder": ref_oscillating,
