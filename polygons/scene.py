@@ -456,7 +456,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     # driver
     drv = r.table(data["driver"], "driver", tuple(data["driver"]))
-    drv = topology.lever_as_crank(drv, r, data.get("slots", {}))
+    drv = topology.lever_as_crank(drv, r, data.get("slots", {}), data["links"])
     prescribed = {}
     if "slide" in drv:
         sl = topology.parse_slide(drv["slide"], r, links, split_link_name,

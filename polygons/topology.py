@@ -140,7 +140,7 @@ def parse_slide(spec, r, links, split_link_name, labels=()) -> Slide:
                             where + ".acceleration"))
 
 
-def lever_as_crank(drv: dict, r, slots_raw) -> dict:
+def lever_as_crank(drv: dict, r, slots_raw, links_raw) -> dict:
     """``[driver] lever = "O4Q"`` is a crank whose link carries a slot: return the driver table
     with ``crank`` in its place (after checking a slot is carried by that lever)."""
     if "lever" not in drv:
@@ -154,6 +154,10 @@ def lever_as_crank(drv: dict, r, slots_raw) -> dict:
         raise SceneError(f"lever {lever!r} carries no slot: add [slots.PIN] lever = "
                          f"\"{lever}\" (or drive it as crank = \"{lever}\")", file=r.file,
                          where="driver.lever")
+    if not any(isinstance(v, str) and k == lever for k, v in links_raw.items()):
+        raise SceneError(f"a driven lever needs its length in [links] ({lever} = \"...\"): its "
+                         f"far end is placed along it, and the pin is found in its slot",
+                         file=r.file, where="driver.lever")
     out = {k: v for k, v in drv.items() if k != "lever"}
     out["crank"] = lever
     return out

@@ -641,3 +641,27 @@ def test_slide_labels_must_be_new():
     data["driver"]["slide"]["point"] = "K"
     with pytest.raises(SceneError, match="already a point"):
         parse_scene(data)
+
+
+def test_a_driven_lever_needs_its_length():
+    with pytest.raises(SceneError, match="driven lever needs its length"):
+        parse_scene({"ground": {"O": ["0 m", "0 m"], "C": ["0.05 m", "0 m"]},
+                     "links": {"CP": "0.2 m"},
+                     "driver": {"lever": "OQ", "angle": "0 deg", "omega": "1 rad/s",
+                                "sense": "CW"},
+                     "slots": {"P": {"lever": "OQ"}}})
+
+
+def test_trammel_driven_by_a_crank_to_its_mid_point():
+    """OC = CA = CB: A on the x axis and B = C + (C − A) on the y axis; v_A = −2 ω r sin θ."""
+    r, th, w = 0.2, DEG(60), 10.0
+    scene = parse_scene({
+        "ground": {"O": ["0 m", "0 m"]}, "links": {"OC": m(r), "CA": m(r)},
+        "points": {"B": {"on": "CA", "along": m(-r)}},
+        "sliders": {"A": {"through": ["0 m", "0 m"], "direction": "0 deg"}},
+        "driver": crank_driver("OC", th, w, 0.0), "assembly": {"A": "A right of O"}})
+    sol = solve(scene)
+    assert sol.slides["A"].velocity == pytest.approx(-2 * w * r * math.sin(th), rel=1e-12)
+    assert sol.points["B"].position[0] == pytest.approx(0.0, abs=1e-15)
+    assert sol.points["B"].velocity == pytest.approx((0.0, 2 * w * r * math.cos(th)),
+                                                     abs=1e-12)
