@@ -207,13 +207,24 @@ def _coriolis_offset_line(k: Kernel, s: Step):
 
 
 def _coriolis(k: Kernel, s: Step):
-    """2 ω × ṡ e: drawn at once when the offset line did not already compute it."""
+    """2 ω × ṡ e: computed here when the offset line did not already compute it (a pin found
+    in a lever's slot; a prescribed slide, ṡ given, along its link)."""
     (A,) = s.args
-    if A not in k.cor:
+    if A in k.cor:
+        a_cor = k.cor[A]
+        return k._vector(s, a_cor, "m/s^2", (("2ωv", norm(a_cor), "m/s^2"),))
+    sl = k.scene.prescribed.get(A)
+    if sl is not None:
+        r = k.r(sl.p, sl.q)
+        e, L, v_s = r / norm(r), sl.link, sl.velocity
+    else:
         e, slot = k._slot_e(A)
-        k.cor[A] = coriolis(k.omega[slot.lever], k.slide_v[A] * e)
-    a_cor = k.cor[A]
-    return k._vector(s, a_cor, "m/s^2", (("2ωv", norm(a_cor), "m/s^2"),))
+        L, v_s = slot.lever, k.slide_v[A]
+    w = k.omega[L]
+    a_cor = k.cor[A] = coriolis(w, v_s * e)
+    return k._vector(s, a_cor, "m/s^2", ((f"ω_{L}", abs(w), "rad/s"),
+                                         (f"ṡ_{A}", abs(v_s), "m/s"),
+                                         ("2ωv", norm(a_cor), "m/s^2")))
 
 
 def _line_slide(k: Kernel, s: Step):
@@ -236,19 +247,6 @@ def _slide_drive(k: Kernel, s: Step):
         k.slide_a[C] = val
     unit = _unit_of(s.diagram)
     return k._vector(s, val * e, unit, ((s.quantity, val, unit),))
-
-
-def _coriolis_drive(k: Kernel, s: Step):
-    """2 ω × ṡ e with ṡ prescribed and ω the link's."""
-    C, L, P, Q = s.args
-    r = k.r(P, Q)
-    w = k.omega[L]
-    v_s = k.scene.prescribed[C].velocity
-    a_cor = coriolis(w, v_s * (r / norm(r)))
-    k.cor[C] = a_cor
-    return k._vector(s, a_cor, "m/s^2", ((f"ω_{L}", abs(w), "rad/s"),
-                                         (f"ṡ_{C}", abs(v_s), "m/s"),
-                                         ("2ωv", norm(a_cor), "m/s^2")))
 
 
 def _join(k: Kernel, s: Step):
@@ -341,7 +339,6 @@ _OPS = {
     Op.LINE_SLOT: _line_slot,
     Op.LINE_SLIDE: _line_slide,
     Op.SLIDE_DRIVE: _slide_drive,
-    Op.CORIOLIS_DRIVE: _coriolis_drive,
     Op.CORIOLIS_OFFSET_LINE: _coriolis_offset_line,
     Op.CORIOLIS: _coriolis,
     Op.JOIN: _join,

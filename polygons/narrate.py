@@ -31,13 +31,13 @@ def substitute(s: Step, scene) -> str:
     if op is Op.CORIOLIS_OFFSET_LINE:
         return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
     if op is Op.CORIOLIS:
+        if len(t) == 3:
+            return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
         return f"2ωv = {f(t[0].value)} m/s²"
     if op is Op.SLIDE_DRIVE:
         C, P, Q = s.args
         return (f"{s.quantity} = {f(t[0].value)} {unit_text(t[0].unit)} along {P}{Q} "
                 f"(given)")
-    if op is Op.CORIOLIS_DRIVE:
-        return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
     if op is Op.JOIN:
         return f"{s.start}{s.end} = {f(t[0].value)} m/s²"
     if op is Op.INTERSECT:

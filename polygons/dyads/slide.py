@@ -69,7 +69,7 @@ class SlideDyad:
               f"(a_{C})_{C1}", f"(a_{C})_{C1} = s̈ along {P}{Q} (given)",
               f"From {c1} draw the given sliding acceleration of {C} along {L}, parallel to "
               f"{P}{Q}; call its end {c2}.", component=Component.GIVEN)
-        b.add(Kind.VECTOR, Op.CORIOLIS_DRIVE, (C, L, P, Q), f"{c2}{c}", c2, c, "coriolis",
+        b.add(Kind.VECTOR, Op.CORIOLIS, (C,), f"{c2}{c}", c2, c, "coriolis",
               "a_cor", f"a_cor = 2 ω_{L} × (v_{C})_{C1}",
               f"From {c2} draw the Coriolis acceleration 2ωṡ, perpendicular to {L} (ṡ turned "
               f"through 90° in the sense of ω_{L}); it ends at {c}: {b.names.pole}{c} is the "
