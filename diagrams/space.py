@@ -280,6 +280,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
                                 role="input", title=f"{sym} {'CCW' if val > 0 else 'CW'}"))
             for q0, q1 in zip(pts, pts[1:]):
                 placer.hard(q0, q1, 0.5)
+            placer.hard(tail, tip, 0.8)          # the arrow itself, head included
             text = f"{sym} = {number(abs(val))} {unit} {'CCW' if val > 0 else 'CW'}"
             notes.append((text, [tip, pts[12], pts[0]],
                           math.atan2(tip[1] - c[1], tip[0] - c[0])))

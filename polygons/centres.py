@@ -26,7 +26,6 @@ from typing import Mapping
 
 from . import geometry
 from .errors import ParallelLinesError, UnsupportedError
-from .plan import RPP, RPR, RRP, RRR, CrankDyad, SliderDriveDyad
 from .scene import Crank
 
 Vec = tuple[float, float]
@@ -140,21 +139,19 @@ def bodies(solution) -> tuple[Body, ...]:
         if (name, kind) not in order:
             order.append((name, kind))
 
+    if scene.prescribed:
+        raise UnsupportedError(f"instant centres need a mechanism of one degree of freedom; "
+                               f"the prescribed slide of {', '.join(scene.prescribed)} is a "
+                               f"second input", file=scene.file)
     for d in solution.plan.dyads:
-        if isinstance(d, CrankDyad):
-            add(d.link, "link")
-        elif isinstance(d, SliderDriveDyad):
-            add(d.point, "slider")
-        elif isinstance(d, RRR):
-            add(d.link_p, "link")
-            add(d.link_q, "link")
-        elif isinstance(d, RRP):
-            add(d.link, "link")
-            add(d.x, "slider")
-        elif isinstance(d, RPR):
-            add(d.lever, "lever")
-        elif isinstance(d, RPP):
-            add(d.x, "slider")
+        brought = getattr(d, "circle_bodies", lambda scene: None)(scene)
+        if brought is None:
+            raise UnsupportedError(f"polygons centres does not yet place the instant centres "
+                                   f"of the {type(d).__name__} dyad at {', '.join(d.placed)} "
+                                   f"(an offset slot or a guided pin); use the polygons",
+                                   file=scene.file)
+        for name, kind in brought:
+            add(name, kind)
     placed = solution.placement.points
     out = [Body(1, "frame", "frame", tuple(scene.ground))]
     for name, kind in order:

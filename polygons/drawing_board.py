@@ -116,6 +116,17 @@ def emulate(scene, thetas, trials: int = 200, seed: int = 1) -> dict:
 
     errors = {}
     given = {drv.link} if isinstance(drv, Crank) else set()
+    with np.errstate(invalid="ignore", divide="ignore"):   # an exact zero: no relative error
+        _errors(errors, exact, k, paper, pts, prog, given, grid)
+    return {"errors": errors, "scales": {"space_m_per_mm": ks,
+                                         "velocity_m_s_per_mm": kv.tolist(),
+                                         "acceleration_m_s2_per_mm": ka.tolist()},
+            "angle_deg": np.degrees(np.arcsin(np.clip(exact["margin"], 0, 1)))}
+
+
+def _errors(errors, exact, k, paper, pts, prog, given, grid) -> None:
+    """|drawn − exact| / |exact| of every point's |v|, |a| and every link's ω, α (NaN where the
+    exact value is zero; :func:`summary` leaves those out)."""
     for lab in pts:
         if lab in prog.ground:
             continue
@@ -132,10 +143,7 @@ def emulate(scene, thetas, trials: int = 200, seed: int = 1) -> dict:
         errors[f"ω_{name}"] = (np.abs(grid(w) - we) / np.abs(we), np.abs(we))
         if name in k.alpha:
             errors[f"α_{name}"] = (np.abs(grid(k.alpha[name]) - ae) / np.abs(ae), np.abs(ae))
-    return {"errors": errors, "scales": {"space_m_per_mm": ks,
-                                         "velocity_m_s_per_mm": kv.tolist(),
-                                         "acceleration_m_s2_per_mm": ka.tolist()},
-            "angle_deg": np.degrees(np.arcsin(np.clip(exact["margin"], 0, 1)))}
+
 
 
 def summary(result, min_angle_deg: float = 1.0, floor: float = 1e-3) -> dict:

@@ -180,9 +180,14 @@ def _collect(plan: Plan, placement: Placement, st: Kernel, steps: tuple[Step, ..
                 None)
     for pin, slot in scene.slots.items():
         if slot.coincident in st.pos:
-            e = _unit_of(st.r(slot.pivot, pin))
+            e = st._slot_e(pin)[0]
             slides[pin] = SlideResult(pin, slot.lever, _t(e), st.slide_v.get(pin),
                                       st.slide_a.get(pin),
+                                      _t(st.cor[pin]) if pin in st.cor else None)
+    for pin, sl in scene.prescribed.items():     # second inputs: slides along a link
+        if pin in st.pos:
+            slides[pin] = SlideResult(pin, sl.link, _t(_unit_of(st.r(sl.p, sl.q))),
+                                      st.slide_v.get(pin), st.slide_a.get(pin),
                                       _t(st.cor[pin]) if pin in st.cor else None)
     angles = [s.angle_deg for s in steps if s.angle_deg is not None]
     warnings = []

@@ -16,6 +16,7 @@ import numpy as np
 
 from .errors import ConstructionError
 from .steps import Diagram, Op, Step, Term
+from .topology import slot_along_lever
 from .theorems import (angular_acceleration, angular_velocity, centripetal, coriolis, cross,
                        dot, norm, perp, relative_velocity, tangential)
 
@@ -95,8 +96,14 @@ class Kernel:
         return self.vx[diagram][self.names.of(label)]
 
     def _slot_e(self, A: str):
+        """The unit vector along the slot of pin ``A``: pivot → pin for a slot through the
+        lever's pivot (positive away from the pivot), pivot → far end for an offset slot or a
+        driven lever (positive towards the far end)."""
         slot = self.scene.slots[A]
-        r = self.r(slot.pivot, A)
+        if slot.far is not None and slot_along_lever(self.scene, slot):
+            r = self.r(slot.pivot, slot.far)
+        else:
+            r = self.r(slot.pivot, A)
         return r / norm(r), slot
 
     # -- running a step -----------------------------------------------------------------
@@ -212,9 +219,46 @@ def _coriolis_offset_line(k: Kernel, s: Step):
 
 
 def _coriolis(k: Kernel, s: Step):
+    """2 ω × ṡ e: computed here when the offset line did not already compute it (a pin found
+    in a lever's slot; a prescribed slide, ṡ given, along its link)."""
     (A,) = s.args
-    a_cor = k.cor[A]
-    return k._vector(s, a_cor, "m/s^2", lambda: (("2ωv", norm(a_cor), "m/s^2"),))
+    if A in k.cor:
+        a_cor = k.cor[A]
+        return k._vector(s, a_cor, "m/s^2", lambda: (("2ωv", norm(a_cor), "m/s^2"),))
+    sl = k.scene.prescribed.get(A)
+    if sl is not None:
+        r = k.r(sl.p, sl.q)
+        e, L, v_s = r / norm(r), sl.link, sl.velocity
+    else:
+        e, slot = k._slot_e(A)
+        L, v_s = slot.lever, k.slide_v[A]
+    w = k.omega[L]
+    a_cor = k.cor[A] = coriolis(w, v_s * e)
+    return k._vector(s, a_cor, "m/s^2", lambda: ((f"ω_{L}", abs(w), "rad/s"),
+                                         (f"ṡ_{A}", abs(v_s), "m/s"),
+                                         ("2ωv", norm(a_cor), "m/s^2")))
+
+
+def _line_slide(k: Kernel, s: Step):
+    (A,) = s.args
+    e, _ = k._slot_e(A)
+    return _line_result(s, k._line(s, e, k.vx[s.diagram][s.start]))
+
+
+def _slide_drive(k: Kernel, s: Step):
+    """A prescribed sliding velocity ṡ e or acceleration s̈ e along the link PQ."""
+    C, P, Q = s.args
+    r = k.r(P, Q)
+    e = r / norm(r)
+    spec = k.scene.prescribed[C]
+    if s.diagram == Diagram.VELOCITY:
+        val = spec.velocity
+        k.slide_v[C] = val
+    else:
+        val = spec.acceleration
+        k.slide_a[C] = val
+    unit = _unit_of(s.diagram)
+    return k._vector(s, val * e, unit, lambda: ((s.quantity, val, unit),))
 
 
 def _join(k: Kernel, s: Step):
@@ -307,6 +351,8 @@ _OPS = {
     Op.LINE_ALONG: _line_along,
     Op.LINE_GUIDE: _line_guide,
     Op.LINE_SLOT: _line_slot,
+    Op.LINE_SLIDE: _line_slide,
+    Op.SLIDE_DRIVE: _slide_drive,
     Op.CORIOLIS_OFFSET_LINE: _coriolis_offset_line,
     Op.CORIOLIS: _coriolis,
     Op.JOIN: _join,

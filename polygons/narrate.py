@@ -12,6 +12,7 @@ import math
 from functools import partial
 
 from .steps import Op, Step, number, sense, unit_text
+from .topology import slot_along_lever
 
 
 
@@ -35,7 +36,13 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
     if op is Op.CORIOLIS_OFFSET_LINE:
         return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
     if op is Op.CORIOLIS:
+        if len(t) == 3:
+            return f"2ωv = 2 × {f(t[0].value)} × {f(t[1].value)} = {f(t[2].value)} m/s²"
         return f"2ωv = {f(t[0].value)} m/s²"
+    if op is Op.SLIDE_DRIVE:
+        C, P, Q = s.args
+        return (f"{s.quantity} = {f(t[0].value)} {unit_text(t[0].unit)} along {P}{Q} "
+                f"(given)")
     if op is Op.JOIN:
         return f"{s.start}{s.end} = {f(t[0].value)} m/s²"
     if op is Op.INTERSECT:
@@ -55,8 +62,12 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
     if op in (Op.SLIDE_VELOCITY, Op.SLIDE_ACCELERATION):
         (A,) = s.args
         val = t[0].value
+        slot = scene.slots[A]
+        if slot.far is not None and slot_along_lever(scene, slot):
+            ends = (slot.pivot, slot.far) if val >= 0 else (slot.far, slot.pivot)
+            return f"{f(val)} {t[0].unit} (along {''.join(ends)})"
         return (f"{f(val)} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
-                f"{scene.slots[A].pivot})")
+                f"{slot.pivot})")
     if op is Op.IMAGE:
         return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"
     return ""

@@ -30,6 +30,7 @@ from typing import Mapping
 from .errors import SceneError, UnknownLabelError, suggest
 from .scene import Scene, _Reader, answer_fields, drawing_tolerance
 from .schema import Key, Table
+from .scene_tables import ANSWER_FIELDS
 
 Vec = tuple[float, float]
 
@@ -43,12 +44,7 @@ TABLES: tuple[Table, ...] = (
     Table("pin_answers", "Printed and exact answers for rubbing and least velocities "
                          "(fields as [[answers]]; quantity rub(B), least(BC) or "
                          "least_at(BC)).",
-          (Key("quantity", "string", "rub(B) | least(BC) | least_at(BC)", required=True),
-           Key("unit", "string", "unit of tutorial and exact", example='"m/s"',
-               required=True),
-           Key("tutorial", "number", "the printed answer"),
-           Key("exact", "number", "the exact answer (independent closed form)")),
-          array=True),
+          ANSWER_FIELDS, array=True),
 )
 
 

@@ -17,8 +17,9 @@ from typing import Iterable
 from . import dyads as kinds
 from .dyads import RPP, RPR, RRP, RRR, CrankDyad, Dyad, Image, SliderDriveDyad  # noqa: F401
 from .errors import UnknownLabelError, UnsupportedError, suggest
-from .mobility import check_mobility, used_links
+from .mobility import MobilityError, check_mobility, used_links
 from .scene import Scene
+from .topology import why_unplaced
 from .steps import Builder, Diagram, Step, Vertices  # noqa: F401  (re-exported)
 
 
@@ -79,9 +80,19 @@ def _order(scene: Scene) -> list[Dyad]:
 
     missing = [lab for lab in labels if lab not in placed]
     if missing:
-        check_mobility(scene)      # an under-driven scene is said so before "cannot place"
         x = missing[0]
         joined = [l.name for l in links if x in (l.a, l.b)]
+        why = why_unplaced(scene, x, placed)
+        try:                       # an under-driven scene is said so first, with the reason
+            check_mobility(scene)
+        except MobilityError as exc:
+            if why:
+                raise MobilityError(f"{exc.reason}; cannot place point {x}: {why}",
+                                    dof=exc.dof, links=exc.links, file=scene.file,
+                                    where=exc.where) from None
+            raise
+        if why:
+            raise UnsupportedError(f"cannot place point {x}: {why}", file=scene.file, where=x)
         raise UnsupportedError(
             f"cannot place point {x}: it is joined by {', '.join(joined) or 'no link'}; a point "
             f"is placed by two links to placed points, a link plus a slider guide "

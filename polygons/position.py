@@ -66,6 +66,8 @@ def _place(plan: Plan, scene: Scene, pos, chosen, size, x_in) -> None:
             c2, _ = dyad.locate(scene, pos, -1.0, x_in)
             pos[x], why = _choose(x, (c1[x], c2[x]), scene, pos, size,
                                   default_ref=dyad.default_ref)
+            for other in dyad.placed[1:]:      # points placed with x (a lever's point under it)
+                pos[other] = (c1 if pos[x] is c1[x] else c2)[other]
             if why:
                 chosen.append((x, why))
             continue

@@ -13,10 +13,12 @@ from __future__ import annotations
 from .schema import Key, Table
 
 #: modules that declare scene tables (a module that does not exist yet is skipped)
-MODULES = ("polygons.scene", "polygons.options", "polygons.loads", "polygons.pins")
+MODULES = ("polygons.scene", "polygons.topology", "polygons.options", "polygons.loads",
+           "polygons.pins")
 REFERENCE = "docs/scene-reference.md"
 JSON_SCHEMA = "polygons/scene.schema.json"
 _LABEL_RE = r"^[A-Z][a-z0-9_']*$"
+_NAME_RE = r"^[A-Z][a-z0-9_']*(?:[A-Z][a-z0-9_']*)?$"
 _LINK_RE = r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$"
 _NUM_RE = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 
@@ -131,6 +133,8 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
 def _unit_pattern(dimension: str) -> str:
     import re
     from .units import units_of
+    if dimension is None:          # the unit says which quantity it is (a spring's stiffness)
+        return rf"^\s*{_NUM_RE}\s*\S.*$"
     alts = "|".join(re.escape(u).replace("\\ ", "\\s+") for u in
                     sorted(units_of(dimension), key=len, reverse=True))
     opt = "?" if dimension == "fraction" else ""
@@ -202,12 +206,16 @@ def json_schema(entries: list[tuple[str, Table]]) -> dict:
             root["properties"] |= {k.name: _key_schema(k) for k in t.keys}
             continue
         body = _object(t.keys, t.doc)
-        if t.many:
+        if t.many:      # [masses.BC], [sliders.C]: named by a label or a link
             body = {"type": "object", "description": t.doc,
-                    "patternProperties": {_LABEL_RE: _object(t.keys, t.doc)},
+                    "patternProperties": {_NAME_RE: _object(t.keys, t.doc)},
                     "additionalProperties": False}
         if t.array:
             body = {"type": "array", "description": t.doc, "items": body}
+        parent, _, child = t.name.partition(".")
+        if child:       # a sub-table ([driver.slide]) lives inside its parent's object
+            root["properties"][parent]["properties"][child] = body
+            continue
         root["properties"][t.name] = body
         if t.required:
             root["required"].append(t.name)

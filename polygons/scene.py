@@ -39,6 +39,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
+from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownKeyError, UnknownLabelError, UnitError, show, suggest)
 from .loads import parse as parse_loads
@@ -135,6 +136,7 @@ class Slot:
     coincident: str
     far: str | None
     far_length: float | None
+    offset: float = 0.0     # the slot line's distance left of the lever's line (topology)
 
 
 @dataclass(frozen=True)
@@ -196,6 +198,9 @@ class Scene:
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
     options: Options = Options()
     loads: Any = None           # polygons.loads.Loads: the force tables, parsed and checked
+    #: second inputs: prescribed slides along a link (:mod:`polygons.topology`)
+    prescribed: Mapping[str, topology.Slide] = field(
+        default_factory=lambda: MappingProxyType({}))
 
     @property
     def labels(self) -> tuple[str, ...]:
@@ -214,6 +219,9 @@ class Scene:
         for lab, g in self.sliders.items():
             if g.pin is not None:       # a Scotch yoke's point on its guide
                 seen[lab] = None
+        for sl in self.prescribed.values():
+            seen[sl.coincident] = None
+            seen[sl.point] = None
         return tuple(seen)
 
     def link_between(self, p: str, q: str) -> Link | None:
@@ -410,10 +418,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         r.table(spec, where, KEYS["slots"], required=("lever",))
         lever = r.string(spec["lever"], where + ".lever")
         pivot, other = split_link_name(lever, file=file, where=where + ".lever")
-        if pivot not in ground:
-            raise SceneError(f"the lever {lever}'s first label {pivot} must be a fixed pivot "
-                             f"(defined in [ground]: {', '.join(ground)})", file=file,
-                             where=where + ".lever")
+        if pivot not in ground and not any(pivot in (l.a, l.b) for l in links.values()):
+            raise SceneError(f"the lever {lever}'s first label {pivot} is its pivot: a fixed "
+                             f"pivot (in [ground]: {', '.join(ground)}) or a pin of a link",
+                             file=file, where=where + ".lever")
         if lever in links:
             if "coincident" not in spec:
                 raise SceneError(f"lever {lever} has a length, so name the point of the lever "
@@ -427,7 +435,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                  f"{other} is the point under the pin; coincident must be "
                                  f"{other!r}", file=file, where=where + ".coincident")
             far, far_length = None, None
-        slots[pin] = Slot(pin, lever, pivot, coincident, far, far_length)
+        offset = r.quantity(spec.get("offset", "0 m"), "length", where + ".offset")
+        if offset and far is None:
+            raise SceneError(f"an offset slot needs the lever's length: give {lever} in "
+                             f"[links] and coincident = \"{pin}1\"", file=file,
+                             where=where + ".offset")
+        slots[pin] = Slot(pin, lever, pivot, coincident, far, far_length, offset)
 
     # extra body points
     points: dict[str, BodyPoint] = {}
@@ -465,15 +478,20 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         return label
 
     for slot in slots.values():
-        need_label(slot.pin, f"slots.{slot.pin}")
+        if slot.pin not in known:
+            raise SceneError(f"the pin {slot.pin} sliding in the slot of {slot.lever} is on no "
+                             f"link: make it the end of a link (a crank, a rocker) or a point "
+                             f"of one in [points]", file=file, where=f"slots.{slot.pin}")
 
     # sliders
     sliders: dict[str, Guide] = {}
     for label, spec in r.named(data.get("sliders", {}), "sliders").items():
         where = f"sliders.{label}"
-        r.table(spec, where, KEYS["sliders"],
-                required=("through", "direction"))
-        through = r.vec(spec["through"], where + ".through")
+        r.table(spec, where, KEYS["sliders"], required=("direction",))
+        through = topology.guide_through(spec, r, where, ground)
+        if through is None:
+            r.table(spec, where, tuple(spec), required=("through",))
+            through = r.vec(spec["through"], where + ".through")
         angle = r.quantity(spec["direction"], "angle", where + ".direction", reduce=True)
         if "pin" in spec or "slot" in spec:
             # a Scotch yoke: this slider carries a straight slot in which a placed pin slides
@@ -497,6 +515,14 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     # driver
     drv = data["driver"]
     r.table(drv, "driver", KEYS["driver"])
+    drv = topology.lever_as_crank(drv, r, data.get("slots", {}), data["links"])
+    prescribed = {}
+    if "slide" in drv:
+        sl = topology.parse_slide(drv["slide"], r, links, split_link_name,
+                                  labels=known | set(sliders))
+        prescribed[sl.point] = sl
+        known |= {sl.point, sl.coincident}
+        drv = {k: v for k, v in drv.items() if k != "slide"}
     if ("crank" in drv) == ("slider" in drv):
         raise SceneError("the driver is either a crank (crank = \"OA\") or a slider "
                          "(slider = \"C\"): give exactly one", file=file, where="driver")
@@ -532,7 +558,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                      where="driver.alpha_sense")
                 alpha *= r.sense(drv["alpha_sense"], "driver.alpha_sense")
         if "angle" in drv:
-            angle = r.quantity(drv["angle"], "angle", "driver.angle", reduce=True)
+            angle = topology.crank_angle(drv["angle"], r, pivot=pivot, tip=tip,
+                                         sense=1 if omega >= 0 else -1, ground=ground,
+                                         links=links, sliders=sliders,
+                                         assembly=data.get("assembly", {}))
         elif tip in drawn:
             angle = math.atan2(drawn[tip][1] - ground[pivot][1], drawn[tip][0] - ground[pivot][0])
         else:
@@ -588,7 +617,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                  solve=tuple(s for s in DIAGRAMS if s in solve),
                  drawn=MappingProxyType(drawn),
                  extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
-                 options=options)
+                 options=options, prescribed=MappingProxyType(prescribed))
     # the force tables ([masses], [forces], ...), parsed and checked now: polygons.loads
     return replace(scene, loads=parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw)))

@@ -16,7 +16,7 @@ from .schema import Key, Table
 #: the assembly words (``[assembly] C = "C above AD"``)
 RELATIONS = ("above", "below", "left of", "right of")
 
-_ANSWER_KEYS = (
+ANSWER_FIELDS = _ANSWER_KEYS = (
     Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
                               "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
                               "cor(P), dist(B,A), x(C), y(C), dir_v(C), dir_a(C), "
@@ -82,10 +82,12 @@ TABLES: tuple[Table, ...] = (
                     "along its guide (give exactly one of crank / slider).", (
         Key("crank", "link", "the driving link, pivot label first (the pivot must be in "
                              "[ground])", example='"AB"'),
-        Key("angle", "quantity", "crank angle, CCW from +x (reduced to one turn exactly; "
-                                 "beyond ±1e6° refused); default: from the tip's [drawn] "
-                                 "position", example='"60 deg"', dimension="angle",
-            sign="CCW from +x"),
+        Key("angle", "string", "crank angle (an angle with its unit), CCW from +x (reduced to one turn exactly; "
+                                 "beyond ±1e6° refused); also 'θ from idc' / 'θ from odc' "
+                                 "(slider-crank: from inner / outer dead centre, in the "
+                                 "crank's sense) and 'θ from AD' (CCW from the ray A→D); "
+                                 "default: from the tip's [drawn] position",
+            example='"60 deg"', sign="CCW from +x"),
         Key("omega", "quantity", "crank speed (magnitude; its sense is `sense`); 0 for an "
                                  "instant at rest", example='"300 rad/s"',
             dimension="angular_velocity"),
@@ -105,11 +107,23 @@ TABLES: tuple[Table, ...] = (
         Key("acceleration", "quantity", "slider driver: acceleration along the guide",
             example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2",
             sign="positive along `direction`"),
+        Key("lever", "link", "a slotted lever driven like a crank (the oscillating cylinder, "
+                             "the rotary engine): needs a length in [links] and [slots.PIN] "
+                             "lever = this lever", example='"O4Q"'),
+        Key("slide", "table", "a second input: a point moved along a link at a prescribed "
+                              "sliding velocity and acceleration ([driver.slide])",
+            example='{ point = "C", along = "OA", position = "300 mm", velocity = "1.5 m/s" }'),
     ), required=True),
     Table("sliders", "[sliders.C]: point C slides on a fixed straight guide (or, with pin and "
                      "slot, is the yoke of a Scotch yoke).", (
-        Key("through", "point", "a point of the guide line", example='["0 mm", "0 mm"]',
-            dimension="length", required=True),
+        Key("through", "point", "a point of the guide line (or give `from` and `offset`)",
+            example='["0 mm", "0 mm"]', dimension="length"),
+        Key("from", "label", "a fixed point the guide is measured from (with `offset`): the "
+                             "slider driver's offset guide stated by its distance from a pivot",
+            example='"O"'),
+        Key("offset", "quantity", "with `from`: perpendicular distance of the guide line from "
+                                  "that point", example='"20 mm"', dimension="length",
+            sign="positive to the left of `direction`"),
         Key("direction", "quantity", "direction of the guide, CCW from +x",
             example='"0 deg"', dimension="angle", required=True, sign="CCW from +x"),
         Key("pin", "label", "Scotch yoke: the placed pin sliding in the yoke's slot",
@@ -121,11 +135,16 @@ TABLES: tuple[Table, ...] = (
     Table("slots", "[slots.P]: pin P slides in the straight slot of a lever pivoted at a fixed "
                    "point (quick return, Coriolis).  A slotted lever with a length in [links] "
                    "may carry a further rod from its far end.", (
-        Key("lever", "link", "the slotted lever, pivot label first (the pivot in [ground])",
+        Key("lever", "link", "the slotted lever, pivot label first (its pivot in [ground] or a "
+                             "pin of a link)",
             example='"BC"', required=True),
         Key("coincident", "label", "the point of the lever under the pin at this instant "
                                    "(required when the lever has a length; otherwise it is the "
                                    "lever's second label)", example='"A1"'),
+        Key("offset", "quantity", "perpendicular distance of the slot line from the lever's "
+                                  "line (needs the lever's length in [links])",
+            example='"20 mm"', dimension="length", default="0 mm",
+            sign="positive to the left of the lever's pivot → far end"),
     ), many=True),
     Table("points", "[points.D]: a point rigid with a link (coupler point, a continuation, a "
                     "mid-point).", (

@@ -43,6 +43,7 @@ class Op(StrEnum):
     LINE_ALONG = "line_along"                    # a line ∥ a link
     LINE_GUIDE = "line_guide"                    # a line ∥ a fixed guide
     LINE_SLOT = "line_slot"                      # a line ∥ a translating yoke's slot
+    LINE_SLIDE = "line_slide"                    # a line ∥ a lever's slot (offset or driven)
     CORIOLIS_OFFSET_LINE = "coriolis_offset_line"  # a line ∥ the slot, stepped back by 2ωv
     CORIOLIS = "coriolis"                        # the Coriolis vector 2 ω × v
     JOIN = "join"                                # the vector between two known vertices

@@ -112,6 +112,9 @@ LIMITS: dict[str, tuple[float, float]] = {
     "torsional_stiffness": (0.0, 1e12),
     "time": (0.0, 1e9),
     "fraction": (0.0, 1e6),
+    "energy": (0.0, 1e15),
+    "power": (0.0, 1e15),
+    "angular_momentum": (0.0, 1e15),
 }
 
 #: unit systems for reports (``polygons solve --units``): dimension -> unit written

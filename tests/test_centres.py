@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 
 import analytic
 from conftest import ROOT, case_files
+from polygons.errors import UnsupportedError
 from scenes import crank_driver, slider_crank_case
 from polygons.errors import ParallelLinesError
 from polygons.centres import instant_centres
@@ -36,7 +37,13 @@ def solved():
     def get(path):
         if path not in cache:
             sol = solve(load_scene(path))
-            cache[path] = (sol, instant_centres(sol))
+            try:
+                cache[path] = (sol, instant_centres(sol))
+            except UnsupportedError as exc:
+                cache[path] = exc
+        if isinstance(cache[path], UnsupportedError):
+            assert path.stem in REFUSED, f"{path.name}: {cache[path]}"
+            pytest.skip(f"{path.name}: refused by design: {cache[path]}")
         return cache[path]
     return get
 
@@ -45,16 +52,28 @@ def _scale(sol):
     return max([math.hypot(*p.velocity) for p in sol.points.values()] + [1e-300])
 
 
+#: shipped cases whose topology the centres do not model (two inputs, offset or guided slots):
+#: refused with a one-line reason, never answered wrongly
+REFUSED = {"new-collar-on-rotating-rod", "new-offset-slot", "new-oscillating-cylinder",
+           "new-rotary-engine", "new-slot-on-moving-lever",
+           "new-elliptic-trammel"}
+
+
 def test_every_shipped_case_is_handled():
-    """Four-bars, slider-cranks, slotted levers and the Scotch yoke: no case is skipped."""
+    """Four-bars, slider-cranks, slotted levers and the Scotch yoke: no case is skipped; the
+    others are refused with a reason."""
     kinds = set()
     for path in FILES:
         sol = solve(load_scene(path))
+        if path.stem in REFUSED:
+            with pytest.raises(UnsupportedError):
+                instant_centres(sol)
+            continue
         cs = instant_centres(sol)
         n = len(cs.bodies)
         assert len(cs.centres) == n * (n - 1) // 2
         kinds.add(n)
-    assert kinds == {2, 3, 4}
+    assert kinds >= {2, 3, 4, 6}          # up to the six-bars (Watt, Stephenson, Whitworth)
 
 
 @pytest.mark.parametrize("path", FILES, ids=IDS)
@@ -445,7 +464,11 @@ def test_random_four_bars_centres_match_the_closed_form(ad, ab, bc, cd, theta, o
         sol = solve(scene)
     except ParallelLinesError:
         assume(False)
-    cs = instant_centres(sol)
+    try:
+        cs = instant_centres(sol)
+    except UnsupportedError:      # lines of centres that do not meet: only at a toggle
+        assume(not sol.min_intersection_angle_deg > 1.0)
+        raise
     assume(_well_conditioned(sol, cs))
     vs = abs(omega) * ab
     assert math.dist(cs.velocities["C"].velocity, ref["vC"]) <= REL * vs

@@ -32,7 +32,8 @@ PINT_SI = {"length": "m", "angle": "radian", "angular_velocity": "radian/s",
            "angular_acceleration": "radian/s**2", "velocity": "m/s", "acceleration": "m/s**2",
            "mass": "kg", "force": "N", "torque": "N*m", "pressure": "Pa",
            "inertia": "kg*m**2", "stiffness": "N/m", "torsional_stiffness": "N*m/radian",
-           "time": "s", "fraction": "dimensionless"}
+           "time": "s", "fraction": "dimensionless", "energy": "J", "power": "W",
+           "angular_momentum": "kg*m**2/s"}
 
 
 def pint_expr(unit: str) -> str:

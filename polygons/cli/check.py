@@ -541,6 +541,11 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
     return "\n".join(lines) + "\n"
 
 
+def _finite(x):
+    """A percentage of a zero expected value is infinite: JSON says null instead."""
+    return x if x is None or math.isfinite(x) else None
+
+
 def to_json(sol: Solution, grades: list[Grade], pct: float, scales: dict,
             emulated: bool = True) -> dict:
     return {
@@ -552,10 +557,11 @@ def to_json(sol: Solution, grades: list[Grade], pct: float, scales: dict,
         "scales": {d: s.statement for d, s in scales.items()},
         "grades": [{"name": g.name, "quantity": g.expr, "unit": g.unit, "measured": g.measured,
                     "expected": g.expected, "tolerance": g.tolerance,
-                    "tolerance_pct": g.tolerance_pct, "tolerance_source": g.source,
-                    "diff_pct": g.diff_pct, "ok": g.ok,
+                    "tolerance_pct": _finite(g.tolerance_pct), "tolerance_source": g.source,
+                    "diff_pct": _finite(g.diff_pct), "ok": g.ok,
                     "sense": g.sense_given, "sense_ok": g.sense_ok,
                     "step": ({"diagram": g.step.diagram, "number": g.step.number,
+                              "op": g.step.op, "gives": g.step.gives,
                               "reason": g.step.reason} if g.step else None),
                     "hint": g.hint, "note": g.tutorial_note} for g in grades],
         "all_ok": all(g.ok for g in grades),
@@ -604,9 +610,8 @@ def run(args) -> int:
     emulated = {} if pct is not None else emulated_tolerances(sol)
     grades = grade(sol, measured, pct, scales, emulated)
     if args.json:
-        sys.stdout.write(json.dumps(to_json(sol, grades, pct_used, scales, bool(emulated)),
-                                    indent=2,
-                                    ensure_ascii=False) + "\n")
+        from ..report import json_text
+        sys.stdout.write(json_text(to_json(sol, grades, pct_used, scales, bool(emulated))))
     else:
         sys.stdout.write(report(sol, grades, pct_used, scales, bool(emulated)))
     return 0 if all(g.ok for g in grades) else 3

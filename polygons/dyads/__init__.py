@@ -5,11 +5,14 @@ are found from the scene's slots, not from a point); ``POINT_KINDS`` are tried f
 not yet placed, in order: the first kind that *claims* the point (by how the scene declares
 it) decides whether it can be placed now.  Adding a dyad kind = one module here with its
 record (``placed``, ``needs``, ``locate``, ``why_not``, ``emit``) and ``claims``/``match``,
-its scene key in :mod:`polygons.scene`, and its tests.
+its scene keys (new ones in :mod:`polygons.topology`), and its tests (README: "Adding a
+dyad").
 """
 from __future__ import annotations
 
-from . import crank, image, rpp, rpr, rrp, rrr, slider_drive
+from . import crank, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive
+from .guided import Guided
+from .slide import SlideDyad
 from .crank import CrankDyad
 from .image import Image
 from .rpp import RPP
@@ -21,11 +24,11 @@ from .slider_drive import SliderDriveDyad
 #: modules with ``driver(scene) -> dyad | None``
 DRIVERS = (crank, slider_drive)
 #: modules with ``matches(scene, placed) -> iterable of dyads`` (tried first in every pass)
-SLOT_KINDS = (rpr,)
+SLOT_KINDS = (rpr, slide)
 #: modules with ``claims(scene, x)`` and ``match(scene, x, placed, known) -> dyad | None``
-POINT_KINDS = (rpp, image, rrp, rrr)
+POINT_KINDS = (rpp, image, rrp, guided, rrr)
 
-Dyad = CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP
+Dyad = CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP | Guided | SlideDyad
 
-__all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad",
+__all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad", "Guided", "SlideDyad",
            "DRIVERS", "SLOT_KINDS", "POINT_KINDS"]

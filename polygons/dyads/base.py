@@ -52,8 +52,11 @@ def circle_line(p, length, through, e, sigma):
     margin = |PX·e| / L (negative where the line is out of reach; X NaN there).
     """
     g = np.asarray(through, dtype=float)
-    g = g.reshape((2,) + (1,) * (np.ndim(p) - 1))
-    e = np.asarray(e, dtype=float).reshape(g.shape)
+    if g.ndim == 1:         # a fixed guide; a moving one (a lever's slot) is (2, N) already
+        g = g.reshape((2,) + (1,) * (np.ndim(p) - 1))
+    e = np.asarray(e, dtype=float)
+    if e.ndim == 1:
+        e = e.reshape((2,) + (1,) * (np.ndim(p) - 1))
     w = g - p
     bq = e[0] * w[0] + e[1] * w[1]
     c = w[0] * w[0] + w[1] * w[1] - length * length

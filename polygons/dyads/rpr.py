@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
+from ..theorems import perp
 from .base import size_of
 from . import image
 
@@ -43,14 +44,35 @@ class RPR:
         d = a - b
         s = np.hypot(d[0], d[1])
         out = {self.coincident: a.copy()}
+        slot = scene.slots[self.pin]
+        if slot.offset:
+            # BA = t e + δ perp(e) with t > 0:  e = (t BA − δ perp(BA)) / |BA|²
+            off = slot.offset
+            t2 = s * s - off * off
+            t = np.sqrt(np.where(t2 > 0, t2, np.nan))
+            e = (t * d - off * perp(d)) / (s * s)
+            out[self.far] = b + slot.far_length * e
+            return out, np.where(t2 > 1e-12 * size_of(scene) ** 2, t / s, -1.0)
         if self.far:
-            out[self.far] = b + scene.slots[self.pin].far_length * d / s
+            out[self.far] = b + slot.far_length * d / s
         margin = np.where(s > 1e-12 * size_of(scene), 1.0, 0.0)
         return out, margin
 
     def why_not(self, scene, pos) -> str:
+        off = scene.slots[self.pin].offset
+        if off:
+            return (f"the pin {self.pin} is within the slot's offset {1e3 * abs(off):.6g} mm "
+                    f"of the pivot {self.pivot}: the slot of lever {self.lever} cannot pass "
+                    f"through it")
         return (f"the pin {self.pin} is on the pivot {self.pivot} of lever {self.lever}: the "
                 f"slot direction is undefined")
+
+    def circle_bodies(self, scene):
+        """The lever (its slot pin is a sliding pair on the common normal); an offset slot
+        is not modelled by the instant centres (None)."""
+        if scene.slots[self.pin].offset:
+            return None
+        return ((self.lever, "lever"),)
 
     def toggle_reason(self, scene, pos) -> str:
         return self.why_not(scene, pos)
@@ -66,11 +88,19 @@ class RPR:
                        f"Through {b_} draw a line perpendicular to the lever {B}{A}: the "
                        f"velocity of {A1}, the point of the lever under the pin.",
                        component=C.RELATIVE, link=lev, relative=(A1, B))
-            n2 = b.add(Kind.LINE, Op.LINE_ALONG, (B, A1), f"slot line ∥ {B}{A}", a, None,
-                       "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{A}",
-                       f"Through {a} draw a line parallel to the slot {B}{A}: the velocity of "
-                       f"{A} sliding relative to {A1}.", component=C.SLIDING,
-                       relative=(A, A1))
+            if b.scene.slots[A].offset:     # the slot runs parallel to the lever, off B
+                F = self.far
+                n2 = b.add(Kind.LINE, Op.LINE_SLIDE, (A,), f"slot line ∥ {B}{F}", a, None,
+                           "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{F}",
+                           f"Through {a} draw a line parallel to the slot (parallel to "
+                           f"{B}{F}, offset from {B}): the velocity of {A} sliding relative "
+                           f"to {A1}.", component=C.SLIDING, relative=(A, A1))
+            else:
+                n2 = b.add(Kind.LINE, Op.LINE_ALONG, (B, A1), f"slot line ∥ {B}{A}", a, None,
+                           "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{A}",
+                           f"Through {a} draw a line parallel to the slot {B}{A}: the "
+                           f"velocity of {A} sliding relative to {A1}.",
+                           component=C.SLIDING, relative=(A, A1))
             b.add(Kind.INTERSECTION, Op.INTERSECT, (), a1, None, a1, "intersection",
                   f"v_{A1}", f"{a1} = intersection of the two lines",
                   f"They meet at {a1}: {b_}{a1} is the velocity of {A1} and {a1}{a} the "

@@ -1,0 +1,329 @@
+"""Scene layer for the mechanisms beyond the slider-crank and four-bar (issue 10): the keys
+that state a second input, a lever drive, an offset slot and a crank angle from a dead centre.
+
+    [driver]
+    crank = "OA"                      # the rod turns at ω, α ...
+    omega = "5 rad/s"
+    [driver.slide]                    # ... and the collar C is moved along it (a second input)
+    point = "C"
+    along = "OA"                      # the link it slides on; position measured from O
+    position = "300 mm"
+    velocity = "1.5 m/s"              # ṡ, positive from O towards A
+    acceleration = "-0.8 m/s^2"       # s̈ ("slowing at 0.8 m/s²" while moving out)
+    coincident = "C1"                 # the rod's point under the collar (default C1)
+
+    [driver]
+    lever = "O4Q"                     # the slotted lever (cylinder) drives: a crank whose
+                                      # link carries a slot (needs [slots.P] lever = "O4Q")
+    [slots.P]
+    lever = "BQ"
+    offset = "20 mm"                  # the slot runs parallel to BQ, 20 mm to its left
+
+    [driver]
+    angle = "30 deg from idc"         # a slider-crank's crank angle from inner / outer dead
+                                      # centre, in the crank's sense of rotation
+
+Parsed here and called from :mod:`polygons.scene` (a few lines there); the records live here
+so the loader stays small.  This module imports nothing from the rest of the package except
+the schema and the errors.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from .errors import SceneError, UnknownLabelError, suggest
+from .schema import Key, Table
+
+
+@dataclass(frozen=True)
+class Slide:
+    """A prescribed slide (a second input): ``point`` is moved along link ``link`` (ends
+    ``p`` → ``q``) at distance ``position`` from ``p``, with sliding velocity ``velocity`` and
+    acceleration ``acceleration`` signed from ``p`` towards ``q``; ``coincident`` is the
+    link's point under it."""
+
+    point: str
+    link: str
+    p: str
+    q: str
+    coincident: str
+    position: float
+    velocity: float
+    acceleration: float
+
+
+TABLES: tuple[Table, ...] = (
+    Table("driver.slide", "A second input: a point (collar, block) moved along a link at a "
+          "prescribed sliding velocity and acceleration while the link moves as the driver "
+          "makes it.", (
+              Key("point", "label", "the sliding point", "C", required=True),
+              Key("along", "link", "the link it slides on (position measured from its first "
+                  "label)", "OA", required=True),
+              Key("position", "quantity", "distance from the link's first label", "300 mm",
+                  dimension="length", required=True),
+              Key("velocity", "quantity", "sliding velocity", "1.5 m/s",
+                  dimension="velocity", required=True,
+                  sign="positive from the link's first label towards its second"),
+              Key("acceleration", "quantity", "sliding acceleration", "-0.8 m/s^2",
+                  dimension="acceleration", default="0 m/s^2",
+                  sign="positive from the link's first label towards its second"),
+              Key("coincident", "label", "the link's point under the sliding point", "C1"),
+          )),
+)
+
+
+_FROM = re.compile(r"^\s*(.*?)\s+from\s+(.+?)\s*$", re.IGNORECASE)
+_DEAD_WORDS = {"idc": "idc", "inner dead centre": "idc", "inner dead center": "idc",
+               "tdc": "idc", "odc": "odc", "outer dead centre": "odc",
+               "outer dead center": "odc", "bdc": "odc"}
+_LINE = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
+
+
+def default_coincident(point: str) -> str:
+    """The conventional name of the point under ``point``: C → C1, P2 → P2'."""
+    return f"{point}'" if point[-1].isdigit() else f"{point}1"
+
+
+def parse_slide(spec, r, links, split_link_name, labels=()) -> Slide:
+    """``[driver.slide]`` → :class:`Slide` (``r`` is the scene reader, ``labels`` the point
+    labels already in use)."""
+    where = "driver.slide"
+    r.table(spec, where, ("point", "along", "position", "velocity", "acceleration",
+                          "coincident"), required=("point", "along", "position", "velocity"))
+    point = r.label(spec["point"], where + ".point")
+    along = r.string(spec["along"], where + ".along")
+    p, q = split_link_name(along, file=r.file, where=where + ".along")
+    if along not in links:
+        if f"{q}{p}" in links:
+            raise SceneError(f"link {along!r} is written {q}{p} in [links]; the slide's "
+                             f"position is measured from the first label, so write along = "
+                             f"\"{q}{p}\" with the position from {q}, or name the link {along} "
+                             f"in [links]", file=r.file, where=where + ".along")
+        raise UnknownLabelError(f"link {along!r} is not defined: {suggest(along, links)}",
+                                file=r.file, where=where + ".along")
+    if point in (p, q):
+        raise SceneError(f"the sliding point {point} must not be an end of {along}",
+                         file=r.file, where=where + ".point")
+    coincident = r.label(spec.get("coincident", default_coincident(point)),
+                         where + ".coincident")
+    taken = {lab for link in links.values() for lab in (link.a, link.b)} | set(labels)
+    for lab, key in ((point, "point"), (coincident, "coincident")):
+        if lab in taken:
+            raise SceneError(f"{lab} is already a point of the mechanism; the sliding point "
+                             f"and the point under it need labels of their own", file=r.file,
+                             where=f"{where}.{key}")
+    if coincident == point:
+        raise SceneError("the point under the collar needs a label of its own",
+                         file=r.file, where=where + ".coincident")
+    return Slide(point, along, p, q, coincident,
+                 r.quantity(spec["position"], "length", where + ".position"),
+                 r.quantity(spec["velocity"], "velocity", where + ".velocity"),
+                 r.quantity(spec.get("acceleration", "0 m/s^2"), "acceleration",
+                            where + ".acceleration"))
+
+
+def lever_as_crank(drv: dict, r, slots_raw, links_raw) -> dict:
+    """``[driver] lever = "O4Q"`` is a crank whose link carries a slot: return the driver table
+    with ``crank`` in its place (after checking a slot is carried by that lever)."""
+    if "lever" not in drv:
+        return drv
+    if "crank" in drv or "slider" in drv:
+        raise SceneError("the driver is a crank, a slider or a lever: give exactly one",
+                         file=r.file, where="driver")
+    lever = r.string(drv["lever"], "driver.lever")
+    levers = [s.get("lever") for s in slots_raw.values() if isinstance(s, dict)]
+    if lever not in levers:
+        raise SceneError(f"lever {lever!r} carries no slot: add [slots.PIN] lever = "
+                         f"\"{lever}\" (or drive it as crank = \"{lever}\")", file=r.file,
+                         where="driver.lever")
+    if not any(isinstance(v, str) and k == lever for k, v in links_raw.items()):
+        raise SceneError(f"a driven lever needs its length in [links] ({lever} = \"...\"): its "
+                         f"far end is placed along it, and the pin is found in its slot",
+                         file=r.file, where="driver.lever")
+    out = {k: v for k, v in drv.items() if k != "lever"}
+    out["crank"] = lever
+    return out
+
+
+def crank_angle(value, r, *, pivot, tip, sense, ground, links, sliders, assembly) -> float:
+    """The crank angle (rad, CCW from +x) stated as ``"30 deg"``, ``"30 deg from idc"`` /
+    ``"from odc"`` (a slider-crank: θ past inner / outer dead centre in the crank's sense of
+    rotation) or ``"30 deg from AD"`` (θ CCW from the ray A → D between two fixed points, e.g.
+    the line of centres of a four-bar)."""
+    where = "driver.angle"
+    m = _FROM.match(value) if isinstance(value, str) else None
+    if not m:
+        return r.quantity(value, "angle", where, reduce=True)
+    theta = r.quantity(m.group(1), "angle", where, reduce=True)
+    ref = " ".join(m.group(2).split())
+    dead = _DEAD_WORDS.get(ref.lower())
+    if dead is None:
+        if not _LINE.match(ref):
+            raise SceneError(f"cannot read {value!r}: write '30 deg', '30 deg from idc', "
+                             f"'30 deg from odc' or '30 deg from AD' (two fixed points)",
+                             file=r.file, where=where)
+        a, b = re.findall(r"[A-Z][a-z0-9_']*", ref)
+        missing = [lab for lab in (a, b) if lab not in ground]
+        if missing:
+            raise SceneError(f"'{ref}' in {value!r} must join two fixed points; "
+                             f"{', '.join(missing)} not in [ground] ({', '.join(ground)})",
+                             file=r.file, where=where)
+        (ax, ay), (bx, by) = ground[a], ground[b]
+        return math.atan2(by - ay, bx - ax) + theta
+    rods = [(l.b if l.a == tip else l.a, l) for l in links.values()
+            if tip in (l.a, l.b) and pivot not in (l.a, l.b)]
+    rods = [(x, l) for x, l in rods if x in sliders and sliders[x].pin is None]
+    if len(rods) != 1:
+        raise SceneError(f"'{dead}' is a slider-crank's dead centre: the crank pin {tip} must "
+                         f"be joined by one connecting rod to one slider on a fixed guide",
+                         file=r.file, where=where)
+    x, rod = rods[0]
+    crank_len = next(l.length for l in links.values() if {l.a, l.b} == {pivot, tip})
+    guide = sliders[x]
+    return dead_centre_angle(theta, dead, sense, pivot=ground[pivot], r_crank=crank_len,
+                             rod=rod.length, guide=(guide.through, guide.direction),
+                             side=_piston_side(x, assembly, ground, guide, r), file=r.file)
+
+
+def _piston_side(x, assembly, ground, guide, r) -> float:
+    """+1 when the slider ``x`` is on the +direction side of its guide's foot point, −1
+    otherwise, read from the scene's [assembly] words for x ("B right of O", near = ...)."""
+    spec = assembly.get(x) if isinstance(assembly, dict) else None
+    e = guide.direction
+    how = (f"say which side the slider is on in [assembly], e.g. {x} = \"{x} right of O\" "
+           f"(a fixed point) or {x} = {{ near = [...] }}")
+    if isinstance(spec, dict) and "near" in spec:
+        nx, ny = r.vec(spec["near"], f"assembly.{x}.near")
+        return 1.0 if (nx - guide.through[0]) * e[0] + (ny - guide.through[1]) * e[1] >= 0 \
+            else -1.0
+    if isinstance(spec, str):
+        words = " ".join(spec.split())
+        for rel, (cx, cy) in (("right of", (1, 0)), ("left of", (-1, 0)), ("above", (0, 1)),
+                              ("below", (0, -1))):
+            for pre in (f"{x} {rel} ", f"{rel} "):
+                if words.startswith(pre) and words[len(pre):] in ground:
+                    along = cx * e[0] + cy * e[1]
+                    if abs(along) < 1e-9:
+                        break
+                    return 1.0 if along > 0 else -1.0
+    raise SceneError(f"a crank angle from a dead centre needs the side of the slider {x}: "
+                     f"{how}", file=r.file, where="driver.angle")
+
+
+def guide_through(spec, r, where, ground) -> tuple[float, float] | None:
+    """A slider guide stated by its distance from a pivot: ``from = "O"``, ``offset = "20 mm"``
+    (perpendicular distance, positive to the left of the guide direction) → a point on it;
+    None when the guide gives ``through`` instead."""
+    if "from" not in spec and "offset" not in spec:
+        return None
+    if "through" in spec or "from" not in spec or "offset" not in spec:
+        raise SceneError("give the guide either through = [x, y] or from = \"O\" with "
+                         "offset = \"20 mm\" (its distance from that fixed point, positive "
+                         "to the left of the direction)", file=r.file, where=where)
+    frm = r.label(spec["from"], where + ".from")
+    if frm not in ground:
+        raise SceneError(f"from = {frm!r} must be a fixed point in [ground] "
+                         f"({', '.join(ground)})", file=r.file, where=where + ".from")
+    d = r.quantity(spec["offset"], "length", where + ".offset")
+    a = r.quantity(spec["direction"], "angle", where + ".direction")
+    ox, oy = ground[frm]
+    return (ox - d * math.sin(a), oy + d * math.cos(a))
+
+
+def dead_centre_angle(theta: float, which: str, sense: int, *, pivot, r_crank, rod, guide,
+                      side, file) -> float:
+    """The crank angle (CCW from +x) ``theta`` past inner ('idc') or outer ('odc') dead centre,
+    turned in the crank's ``sense`` (+1 CCW, −1 CW).
+
+    At the dead centres crank and rod are in line: the crank pin A lies on the line O→B with
+    |OB| = L + r (inner: the crank points at the piston) or L − r (outer: away from it).
+    B is on the guide through G along e:  B = F + t e,  F the foot of O on the guide,
+    t = ±√(d² − h²), h = |OF|; ``side`` (+1 / −1) is the side of F the piston is on.
+    """
+    (gx, gy), e = guide
+    ox, oy = pivot
+    along = (ox - gx) * e[0] + (oy - gy) * e[1]
+    fx, fy = gx + along * e[0], gy + along * e[1]
+    h = math.hypot(ox - fx, oy - fy)
+    d = rod + r_crank if which == "idc" else rod - r_crank
+    if d <= h:
+        raise SceneError(f"no {which.upper()}: crank and rod in line ({1e3 * d:.6g} mm) "
+                         f"cannot reach the guide {1e3 * h:.6g} mm from the pivot", file=file,
+                         where="driver.angle")
+    t = side * math.sqrt(d * d - h * h)
+    base = math.atan2(fy + t * e[1] - oy, fx + t * e[0] - ox)
+    if which == "odc":
+        base += math.pi
+    return base + sense * theta
+
+
+def lever_driven(scene, slot) -> bool:
+    """Whether the slotted lever of ``slot`` is the driver (a crank carrying a slot)."""
+    return getattr(scene.driver, "link", None) == slot.lever
+
+
+def guided_pin(scene, slot) -> bool:
+    """Whether the pin of ``slot`` is found in the slot of a lever placed first (the lever
+    driven, or placed by its own links): the lever has a far end and the pin hangs from
+    exactly one link of known length that is not the driving crank."""
+    if slot.far is None:
+        return False
+    joints = [l for l in scene.links.values()
+              if slot.pin in (l.a, l.b) and l.length is not None and l.name != slot.lever]
+    return len(joints) == 1 and joints[0].name != getattr(scene.driver, "link", None)
+
+
+def slot_along_lever(scene, slot) -> bool:
+    """Whether the slot's direction is the lever's pivot → far end (an offset slot, or a lever
+    placed before its pin, which may lie on either side of the pivot) rather than pivot → pin
+    (a pin placed first, the lever following it)."""
+    return bool(slot.offset) or guided_pin(scene, slot)
+
+
+def why_unplaced(scene, x: str, placed) -> str:
+    """Why point ``x`` cannot be placed by any dyad, in the scene's words ('' when there is
+    nothing more specific to say than the planner's general sentence)."""
+    joints = [(l.b if l.a == x else l.a, l.name) for l in scene.links.values()
+              if x in (l.a, l.b) and l.length is not None]
+    known = [o for o, _ in joints if o in placed]
+    lever_of = next((s for s in scene.slots.values() if x in (s.far, s.coincident)
+                     and s.pin not in placed and s.pin != x), None)
+    if lever_of is not None and len(known) < 2:
+        inner = why_unplaced(scene, lever_of.pin, placed)
+        return (f"{x} is on the slotted lever {lever_of.lever}, which turns with its pin "
+                f"{lever_of.pin}, and {lever_of.pin} is not placed" + (f": {inner}" if inner
+                                                                         else ""))
+    slot = scene.slots.get(x)
+    if slot is not None:
+        if slot.pivot not in placed:
+            return (f"the pin {x} slides in the slot of lever {slot.lever}, whose pivot "
+                    f"{slot.pivot} is not placed either")
+        if slot.far is None:
+            return (f"the pin {x} slides in the slot of lever {slot.lever}, which has no length "
+                    f"in [links]: such a lever follows a pin placed by its own links (a crank, "
+                    f"two links); to find the pin in the slot of a lever placed first, give "
+                    f"{slot.lever} a length")
+        if len(joints) != 1:
+            return (f"the pin {x} slides in the slot of lever {slot.lever} and is joined by "
+                    f"{len(joints)} links ({', '.join(n for _, n in joints) or 'none'}): a pin "
+                    f"found in a slot hangs from exactly one link")
+        return (f"the pin {x} slides in the slot of lever {slot.lever}, which is not placed: a "
+                f"guide carried by a moving link is placed first by its own links (or driven, "
+                f"[driver] lever = \"{slot.lever}\"), then the pin is found in it")
+    others = [o for o, _ in joints if o not in placed]
+    if len(joints) >= 3 and len(known) < 2:
+        return (f"{x} is joined by {', '.join(n for _, n in joints)}, and fewer than two of "
+                f"their other ends are placed: unless a link or guide is missing, the links "
+                f"around {x} form a closed group (a class-III Assur group, a triad) that no "
+                f"single dyad places; only mechanisms that decompose into dyads are "
+                f"supported")
+    if len(joints) == 1 and x not in scene.sliders and x not in scene.points:
+        return (f"{x} hangs from one link ({joints[0][1]}) only: it needs a second link, a "
+                f"guide ([sliders.{x}]), a slot ([slots.{x}]) or [points.{x}] on a link")
+    if len(joints) == 2 and others:
+        return (f"{x} is joined by {joints[0][1]} and {joints[1][1]}, but "
+                f"{' and '.join(others)} {'is' if len(others) == 1 else 'are'} not placed "
+                f"before it")
+    return ""
