@@ -17,6 +17,8 @@ The planner orders dyads; the interpreters execute their steps; neither knows th
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..theorems import perp
@@ -63,6 +65,41 @@ def circle_line(p, length, through, e, sigma):
     x = g + (-bq + sigma * root) * e
     margin = np.where(ok, root, -np.sqrt(np.abs(disc))) / length
     return x, margin
+
+
+def circle_circle_scalar(px, py, r1, qx, qy, r2, sigma):
+    """:func:`circle_circle` over plain floats (the compiled evaluator's fast path): the same
+    formula, term for term.  Returns (x, y, margin); x, y NaN where the circles do not meet."""
+    dx = qx - px
+    dy = qy - py
+    dist = math.hypot(dx, dy)
+    if dist == 0.0:
+        return math.nan, math.nan, math.nan
+    a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
+    h2 = r1 * r1 - a * a
+    tol = CLOSE_TOL * max(max(r1, r2), dist) ** 2
+    if not h2 >= -tol:
+        return math.nan, math.nan, -math.sqrt(abs(h2)) * dist / (r1 * r2)
+    h = math.sqrt(max(h2, 0.0))
+    ux = dx / dist
+    uy = dy / dist
+    sh = sigma * h
+    return px + a * ux + sh * -uy, py + a * uy + sh * ux, h * dist / (r1 * r2)
+
+
+def circle_line_scalar(px, py, length, gx, gy, ex, ey, sigma):
+    """:func:`circle_line` over plain floats (the compiled evaluator's fast path): the same
+    formula, term for term.  Returns (x, y, margin); x, y NaN where the line is out of reach."""
+    wx = gx - px
+    wy = gy - py
+    bq = ex * wx + ey * wy
+    c = wx * wx + wy * wy - length * length
+    disc = bq * bq - c
+    if not disc >= -CLOSE_TOL * length * length:
+        return math.nan, math.nan, -math.sqrt(abs(disc)) / length
+    root = math.sqrt(max(disc, 0.0))
+    t = -bq + sigma * root
+    return gx + t * ex, gy + t * ey, root / length
 
 
 def as_col(v, like):
