@@ -21,6 +21,7 @@ _EXPORTS = {
     "solve": "polygons.evaluate",
     "Solution": "polygons.evaluate",
     "PolygonsError": "polygons.errors",
+    "solve_many": "polygons.batch",
 }
 
 __all__ = sorted(_EXPORTS)

@@ -56,6 +56,12 @@ def register(sub) -> None:
     p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                    help=f"progress bar on stderr (auto: on a terminal, from "
                         f"{PROGRESS_FROM:,} positions)")
+    p.add_argument("--vary", action="append", metavar="NAME=LO..HI UNIT:N",
+                   help="solve the scene once per value of a quantity instead of sweeping the "
+                        "input (a link length, G_x/G_y, theta, omega, alpha), e.g. "
+                        "AB=40..60mm:100; repeatable (see polygons/cli/_vary.py)")
+    p.add_argument("--grid", action="store_true",
+                   help="with several --vary: every combination instead of row by row")
     p.set_defaults(func=run)
 
 
@@ -113,6 +119,9 @@ def _default_links(sw: Sweep) -> list[str]:
 
 def run(args) -> int:
     scene = load_scene(args.scene)
+    if args.vary:
+        from ._vary import run_vary
+        return run_vary(args, scene)
     opt = _options(scene, args)
     n = opt["steps"]
     bar = None
