@@ -491,6 +491,116 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
                  tuple(warnings))
 
 
+# ---------------------------------------------------------------- streaming (bounded memory)
+@dataclass(frozen=True)
+class Stream:
+    """A sweep planned but not yet run: what :func:`stream` needs to produce its positions
+    chunk by chunk, and what is known before the first one (range, limits, toggles)."""
+
+    prog: Program
+    n: int
+    full_cycle: bool
+    range: tuple[float, float]
+    limits: tuple[Limit, ...]
+    warnings: tuple[str, ...]
+
+    def inputs(self, s: int, e: int) -> np.ndarray:
+        """The inputs of positions ``s`` … ``e − 1`` (computed, never stored whole)."""
+        lo, hi = self.range
+        k = np.arange(s, e, dtype=float)
+        if self.full_cycle:
+            return 2.0 * math.pi * k / self.n
+        return lo + (hi - lo) * (k + 0.5) / self.n
+
+
+def plan_stream(scene: Scene, steps: int, *, probe: int = PROBE) -> Stream:
+    """The sweep :func:`sweep` would run over ``steps`` positions, as a :class:`Stream`."""
+    if steps < 2:
+        raise PolygonsError(f"a sweep needs at least 2 steps, got {steps}", file=scene.file)
+    prog = compile_plan(scene)
+    full, rng, limits, toggles = find_range(prog, probe)
+    if full:
+        rng = (0.0, 2.0 * math.pi)
+    warnings = []
+    for tg in toggles:
+        where = _fmt_input(prog, tg.input)
+        warnings.append(f"toggle at {where}: {tg.reason}" if tg.kind == "toggle" else
+                        f"near toggle at {where}: {tg.reason}; the construction lines meet "
+                        f"at only {tg.angle_deg:.3g}°")
+    return Stream(prog, steps, full, rng, tuple(limits) + tuple(toggles), tuple(warnings))
+
+
+def stream(st: Stream, *, chunk: int = CHUNK * 16):
+    """Yield ``(start, inputs, results)`` for consecutive chunks of ``st``'s positions: the
+    results of :func:`evaluate` (toggle positions NaN), in memory one chunk at a time, so a
+    sweep of any length runs in constant memory."""
+    for s in range(0, st.n, chunk):
+        e = min(st.n, s + chunk)
+        xs = st.inputs(s, e)
+        res = evaluate(st.prog, xs)
+        m = res["margin"]
+        at = np.isfinite(m) & (m >= 0) & (m < _SIN_PARALLEL)
+        if at.any():
+            _undefine_chunk(res, at)
+        yield s, xs, res
+
+
+def _undefine_chunk(res: dict, mask: np.ndarray) -> None:
+    for key in ("vel", "acc", "coriolis"):
+        res[key] = {lab: (None if xy is None else
+                          tuple(np.where(mask, np.nan, np.broadcast_to(c, mask.shape))
+                                for c in xy))
+                    for lab, xy in res[key].items()}
+    for key in ("omega", "alpha", "slide_v", "slide_a"):
+        res[key] = {lab: np.where(mask, np.nan, np.broadcast_to(v, mask.shape))
+                    for lab, v in res[key].items()}
+
+
+class Extremes:
+    """Summaries computed on the stream: for every quantity ``key`` fed to :meth:`add`, the
+    largest magnitude and the input where it occurs (NaN positions skipped), plus the smallest
+    construction angle and the count of positions that could not be assembled."""
+
+    def __init__(self):
+        self.max: dict[str, tuple[float, float]] = {}     # key -> (|value|, input)
+        self.min_angle = (math.inf, math.nan)
+        self.bad = 0
+        self.n = 0
+
+    def add(self, key: str, values, xs) -> None:
+        v = np.abs(np.broadcast_to(values, xs.shape))
+        if not np.isfinite(v).any():
+            return
+        i = int(np.nanargmax(v))
+        if key not in self.max or v[i] > self.max[key][0]:
+            self.max[key] = (float(v[i]), float(xs[i]))
+
+    def add_chunk(self, xs, res) -> None:
+        """Every point's |v|, |a|, every link's |ω|, |α|, every slide's rates and travel."""
+        self.n += len(xs)
+        m = res["margin"]
+        self.bad += int((~np.isfinite(m) | (m < 0)).sum())
+        with np.errstate(invalid="ignore"):
+            ang = np.degrees(np.arcsin(np.where(m >= 0, np.minimum(m, 1.0), np.nan)))
+        if np.isfinite(ang).any():
+            i = int(np.nanargmin(ang))
+            if ang[i] < self.min_angle[0]:
+                self.min_angle = (float(ang[i]), float(xs[i]))
+        for key, tag in (("vel", "v"), ("acc", "a")):
+            for lab, xy in res[key].items():
+                if xy is not None:
+                    self.add(f"{tag}:{lab}", np.sqrt(xy[0] * xy[0] + xy[1] * xy[1]), xs)
+        for key, tag in (("omega", "omega"), ("alpha", "alpha"), ("slide_v", "v_s"),
+                         ("slide_a", "a_s")):
+            for lab, v in res[key].items():
+                self.add(f"{tag}:{lab}", v, xs)
+        for lab, s in res["travel"].items():
+            lo, hi = self.max.get(f"travel:{lab}", (math.inf, -math.inf))
+            with np.errstate(invalid="ignore"):
+                self.max[f"travel:{lab}"] = (min(lo, float(np.nanmin(s))),
+                                             max(hi, float(np.nanmax(s))))
+
+
 def _undefine(res: dict, mask: np.ndarray) -> None:
     """Rates at the positions in ``mask`` (toggles) are undefined: NaN, not huge numbers."""
     for key in ("vel", "acc", "coriolis"):
@@ -636,4 +746,5 @@ def fmt_input(sw: Sweep, x: float) -> str:
 
 
 __all__ = ["Sweep", "Limit", "Harmonic", "harmonic", "Program", "compile_plan", "evaluate", "run", "sweep",
-           "find_range", "PARALLEL_DEG", "WARN_DEG"]
+           "find_range", "PARALLEL_DEG", "WARN_DEG", "Stream", "plan_stream", "stream",
+           "Extremes"]

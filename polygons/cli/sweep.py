@@ -27,6 +27,8 @@ from ..sweep import Sweep, harmonic, sweep
 SWEEP_KEYS = ("points", "links", "steps", "shm", "unit")
 #: above this many positions the summary draws a progress bar (on a terminal)
 PROGRESS_FROM = 100_000
+#: from this many positions the sweep is streamed to the CSV (polygons/cli/_stream.py)
+STREAM_FROM = 1_000_000
 #: most points drawn per curve (the maxima are always taken from every position)
 PLOT_POINTS = 4000
 
@@ -127,6 +129,9 @@ def run(args) -> int:
     bar = None
     show = {"on": True, "off": False, "auto": n >= PROGRESS_FROM and sys.stderr.isatty()}[
         args.progress]
+    if n >= STREAM_FROM:        # chunk by chunk into the CSV, in constant memory
+        from ._stream import run_stream
+        return run_stream(args, scene, opt, show, plot, _units)
     if show:
         from tqdm import tqdm
         bar = tqdm(total=n, unit="pos", unit_scale=True, desc="sweep", file=sys.stderr,
