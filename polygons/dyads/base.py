@@ -67,20 +67,24 @@ def circle_line(p, length, through, e, sigma):
     return x, margin
 
 
+_hypot, _sqrt, _nan = math.hypot, math.sqrt, math.nan
+
+
 def circle_circle_scalar(px, py, r1, qx, qy, r2, sigma):
     """:func:`circle_circle` over plain floats (the compiled evaluator's fast path): the same
     formula, term for term.  Returns (x, y, margin); x, y NaN where the circles do not meet."""
     dx = qx - px
     dy = qy - py
-    dist = math.hypot(dx, dy)
+    dist = _hypot(dx, dy)
     if dist == 0.0:
-        return math.nan, math.nan, math.nan
+        return _nan, _nan, _nan
     a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
     h2 = r1 * r1 - a * a
-    tol = CLOSE_TOL * max(max(r1, r2), dist) ** 2
-    if not h2 >= -tol:
-        return math.nan, math.nan, -math.sqrt(abs(h2)) * dist / (r1 * r2)
-    h = math.sqrt(max(h2, 0.0))
+    big = r1 if r1 > r2 else r2
+    big = big if big > dist else dist
+    if not h2 >= -(CLOSE_TOL * (big * big)):
+        return _nan, _nan, -_sqrt(abs(h2)) * dist / (r1 * r2)
+    h = _sqrt(h2) if h2 > 0.0 else 0.0
     ux = dx / dist
     uy = dy / dist
     sh = sigma * h
@@ -96,8 +100,8 @@ def circle_line_scalar(px, py, length, gx, gy, ex, ey, sigma):
     c = wx * wx + wy * wy - length * length
     disc = bq * bq - c
     if not disc >= -CLOSE_TOL * length * length:
-        return math.nan, math.nan, -math.sqrt(abs(disc)) / length
-    root = math.sqrt(max(disc, 0.0))
+        return _nan, _nan, -_sqrt(abs(disc)) / length
+    root = _sqrt(disc) if disc > 0.0 else 0.0
     t = -bq + sigma * root
     return gx + t * ex, gy + t * ey, root / length
 
