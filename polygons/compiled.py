@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import cached_property
 
 import numpy as np
 
@@ -529,6 +528,8 @@ def compile_scene(scene: Scene, plan: Plan | None = None) -> Program:
     key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)))
     code = _CACHE.get(key)
     if code is None:
+        if len(_CACHE) >= 256:          # a bound, not a policy: topologies are few
+            _CACHE.clear()
         code = _CACHE[key] = _generate(scene, plan, steps, sigma)
     # the closures are parameters too: fetch them from this scene
     params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
@@ -551,11 +552,12 @@ class CompiledSolution:
     """One position's numbers (``record``: a flat tuple of floats) with the step records and
     their substituted text built from it on first access."""
 
-    __slots__ = ("program", "record", "__dict__")
+    __slots__ = ("program", "record", "_steps")
 
     def __init__(self, program: Program, record: tuple):
         self.program = program
         self.record = record
+        self._steps = None
 
     def position(self, label: str) -> tuple[float, float]:
         i, j = self.program.code.index[("pos", label)]
@@ -584,10 +586,15 @@ class CompiledSolution:
         angles = [self.record[o.angle] for o in self.program.code.layout if o.angle is not None]
         return min(angles) if angles else None
 
-    @cached_property
+    @property
     def steps(self) -> tuple[Step, ...]:
         """The :class:`Step` records with their numbers and substituted text (as the staged
-        solver fills them)."""
+        solver fills them), built on first access."""
+        if self._steps is None:
+            self._steps = self._build_steps()
+        return self._steps
+
+    def _build_steps(self) -> tuple[Step, ...]:
         r = self.record
         scene = self.program.scene
         done = []

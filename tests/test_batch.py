@@ -136,3 +136,27 @@ def test_cli_vary_rejects_a_bad_range_in_one_line(tmp_path):
                          capture_output=True, text=True, cwd=ROOT)
     assert out.returncode != 0
     assert out.stderr.startswith("polygons: error:") and out.stderr.count("\n") == 1
+
+
+CASES = sorted((ROOT / "cases").glob("*.toml"))
+
+
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_every_case_as_a_batch_matches_its_staged_solve(path):
+    """One row at the scene's own values = the staged construction (to 1e-12 of the polygon's
+    size); rows varying every link length by ±1 % solve, the middle row is the scene's."""
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
+    scene = load_scene(str(path))
+    ref = solve(scene)
+    lengths = {n: l.length * np.array([0.99, 1.0, 1.01]) for n, l in scene.links.items()
+               if l.length is not None}
+    b = solve_many(scene, lengths)
+    assert b.ok.all(), b.errors
+    for d, get in (("velocity", b.velocity), ("acceleration", b.acceleration)):
+        pts = {lab: getattr(p, d) for lab, p in ref.points.items() if getattr(p, d) is not None}
+        if not pts:
+            continue
+        scale = max(math.hypot(*v) for v in pts.values()) or 1.0
+        for lab, v in pts.items():
+            assert math.dist(get(lab)[1], v) <= 1e-12 * scale, (d, lab)
