@@ -14,7 +14,8 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from polygons.scene import load_scene  # noqa: E402
-from polygons.sweep import Extremes, plan_stream, run, stream  # noqa: E402
+from polygons.streams import Extremes, plan_stream, stream  # noqa: E402
+from polygons.sweep import run  # noqa: E402
 
 
 def main(argv):

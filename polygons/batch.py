@@ -30,7 +30,6 @@ import numpy as np
 from .errors import PolygonsError, UnknownLabelError, suggest
 from .interpret import Backend, Kernel
 from .plan import construction, make_plan
-from .position import driver_input
 from .scene import Crank, Scene
 from .steps import Diagram, Vertices
 from .sweep import compile_plan

@@ -24,10 +24,12 @@ nor the diagrams.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
 
+from .dyads.base import ARRAY_TWIN
 from .errors import AssemblyError, ConstructionError, ParallelLinesError
 from .narrate import substitute
 from .plan import Plan, construction, make_plan
@@ -43,6 +45,14 @@ V, A = Diagram.VELOCITY, Diagram.ACCELERATION
 _FIELDS = ("at", "vector", "point", "direction")
 
 
+def _where(c, a, b):
+    return a if c else b
+
+
+def _hypot_cols(x, y):
+    return np.sqrt(x * x + y * y)
+
+
 class _Fail(Exception):
     """Raised by generated code: ``args[0]`` indexes the program's failure table."""
 
@@ -54,12 +64,18 @@ class Source:
 
     x = "x"   # the driver's input (θ in rad or s in m)
 
-    def __init__(self, scene: Scene, sigma: dict):
+    def __init__(self, scene: Scene, sigma: dict, arrays: bool = False):
         self.scene = scene
+        self.arrays = arrays           # the same code over (N,) arrays: no checks, margins kept
+        self.margins: list[str] = []
         self.lines: list[str] = []
         self.getters: list = []        # scene -> float, one per parameter k<i>
-        self.namespace: dict = {"cos": math.cos, "sin": math.sin, "hypot": math.hypot,
-                                "atan2": math.atan2, "degrees": math.degrees, "_Fail": _Fail}
+        self.namespace: dict = ({"cos": np.cos, "sin": np.sin, "hypot": _hypot_cols,
+                                 "atan2": np.arctan2, "degrees": np.degrees, "where": np.where,
+                                 "_Fail": _Fail} if arrays else
+                                {"cos": math.cos, "sin": math.sin, "hypot": math.hypot,
+                                 "atan2": math.atan2, "degrees": math.degrees,
+                                 "where": _where, "_Fail": _Fail})
         self.fails: list = []          # ("dyad", dyad) | ("step", step, reason)
         self.placed: dict[str, tuple[str, str]] = {}
         self.sigma_of = sigma
@@ -91,6 +107,8 @@ class Source:
         return name
 
     def call(self, fn, *args, n: int = 1):
+        if self.arrays:
+            fn = ARRAY_TWIN.get(fn, fn)
         fname = f"_f_{fn.__name__}"
         self.namespace[fname] = fn
         names = [f"v{self._n + i + 1}" for i in range(n)]
@@ -101,6 +119,9 @@ class Source:
     def margin(self, m: str) -> None:
         """Fail where the dyad cannot close (the staged assembly's test: a two-closure dyad
         needs a margin ≥ 0, any other > 0)."""
+        if self.arrays:                 # over arrays: NaN where it cannot close, and the
+            self.margins.append(m)      # margin kept (the sweep's conditioning)
+            return
         test = ">= 0.0" if self.dyad.two_closures else "> 0.0"
         self.fail_unless(f"{m} {test}", ("dyad", self.dyad))
 
@@ -113,7 +134,7 @@ class Source:
 
     # -- used by the op generators ---------------------------------------------------------
     def fail_unless(self, cond: str, why) -> None:
-        if cond in self._checked:       # the same test on the same locals: already passed
+        if self.arrays or cond in self._checked:       # the same test on the same locals: already passed
             return
         self._checked.add(cond)
         self.fails.append(why)
@@ -193,7 +214,7 @@ class _Steps:
 
     def vector(self, s, vec, unit, terms):
         start = self.vx[s.diagram][s.start]
-        end = vec if start == ("0.0", "0.0") else self.g.vec(f"{start[0]} + {vec[0]}", f"{start[1]} + {vec[1]}")
+        end = self.g.vec(f"{start[0]} + {vec[0]}", f"{start[1]} + {vec[1]}")
         self.vx[s.diagram][s.end] = end
         return dict(at=start, vector=vec, point=end), None, None, unit, terms
 
@@ -394,8 +415,9 @@ class _Code:
 _CACHE: dict = {}
 
 
-def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict) -> _Code:
-    g = Source(scene, sigma)
+def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
+              arrays: bool = False) -> _Code:
+    g = Source(scene, sigma, arrays)
     for label in scene.ground:
         g.place(label, g.param(lambda s, _l=label: s.ground[_l][0]),
                 g.param(lambda s, _l=label: s.ground[_l][1]))
@@ -436,13 +458,40 @@ def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict) ->
             index[(key, name)] = put(v)
     for pin, c in st.cor.items():
         index[("coriolis", pin)] = (put(c[0]), put(c[1]))
+    lines = g.lines
+    if arrays:      # only the vertices, rates and margins: drop the step records' numbers
+        out = out[len(out) - sum(len(v) if isinstance(v, tuple) else 1
+                                 for v in index.values()):]
+        shift = sum(len(o.fields) * 2 + (o.value is not None) + (o.angle is not None)
+                    + len(o.terms) for o in layout)
+        index = {k: (tuple(i - shift for i in v) if isinstance(v, tuple) else v - shift)
+                 for k, v in index.items()}
+        layout = []
+        index[("margins", "")] = tuple(range(len(out), len(out) + len(g.margins)))
+        out = out + g.margins
+        lines = _live(lines, out)
     params = ", ".join(f"k{i}" for i in range(len(g.getters)))
-    body = "\n    ".join(g.lines)
+    body = "\n    ".join(lines)
     src = (f"def _solve(x, _k):\n    ({params}{',' if len(g.getters) == 1 else ''}) = _k\n"
            f"    {body}\n    return ({', '.join(out)},)\n")
     ns = dict(g.namespace)
     exec(compile(src, f"<polygons.compiled {scene.title or scene.file}>", "exec"), ns)
     return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src)
+
+
+_NAME = re.compile(r"\bv\d+\b")
+
+
+def _live(lines: list[str], out: list[str]) -> list[str]:
+    """Dead-code elimination on the straight-line code: keep the assignments ``out`` needs."""
+    need = {n for o in out for n in _NAME.findall(o)}
+    kept = []
+    for line in reversed(lines):
+        targets, _, expr = line.partition(" = ")
+        if any(t.strip() in need for t in targets.split(",")):
+            kept.append(line)
+            need.update(_NAME.findall(expr))
+    return kept[::-1]
 
 
 def _sigmas(plan: Plan) -> dict:
@@ -546,6 +595,21 @@ def _copy(step: Step, vals: dict, **more) -> Step:
     d.update(vals)
     d.update(more)
     return new
+
+
+def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]:
+    """The same construction generated for (N,) arrays of inputs (every position of a sweep
+    chunk at once): the code and this scene's parameters.  Only the vertices, rates and dyad
+    margins are computed (the step records' numbers are dropped as dead code); where a dyad
+    cannot close the numbers are NaN and its margin negative, as in :mod:`polygons.sweep`."""
+    steps = construction(plan, tuple(Diagram))
+    key = ("arrays", plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)))
+    code = _CACHE.get(key)
+    if code is None:
+        code = _CACHE[key] = _generate(scene, plan, steps, sigma, arrays=True)
+    params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
+                   for get in code.getters)
+    return code, params
 
 
 class CompiledSolution:

@@ -7,7 +7,8 @@ from conftest import CASES
 from polygons.cli import main
 from polygons.cli import sweep as cli_sweep
 from polygons.scene import load_scene
-from polygons.sweep import Extremes, plan_stream, stream, sweep
+from polygons.streams import Extremes, plan_stream, stream
+from polygons.sweep import sweep
 
 
 @pytest.mark.parametrize("case", ["s001-we6.toml", "s001-we3.toml", "s003-fig7.toml",

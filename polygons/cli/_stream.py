@@ -15,7 +15,8 @@ import numpy as np
 
 from ..errors import UnknownLabelError, suggest
 from ..scene import Crank, Scene
-from ..sweep import Extremes, _segments, evaluate, plan_stream, stream, sweep
+from ..streams import Extremes, evaluate_compiled, plan_stream, stream
+from ..sweep import _segments, sweep
 
 PLOT_POINTS = 4000
 
@@ -23,7 +24,7 @@ PLOT_POINTS = 4000
 def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> int:
     n = opt["steps"]
     st = plan_stream(scene, n)
-    probe = evaluate(st.prog, st.inputs(0, 2))
+    probe = evaluate_compiled(st, st.inputs(0, 2))
     labels = [k for k in probe["pos"]]
     for lab in opt["points"] or []:
         if lab not in labels:

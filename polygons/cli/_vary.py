@@ -97,7 +97,7 @@ def run_vary(args, scene: Scene) -> int:
             w.writerow([str(i)] + [format(float(v), ".17g") for v in row[1:]]
                        + [errors.get(i, "")])
     out = [f"{scene.title}", f"  scene: {scene.file}",
-           f"varied: " + ", ".join(f"{n} ({len(v)} values)" for n, v in values.items())
+           "varied: " + ", ".join(f"{n} ({len(v)} values)" for n, v in values.items())
            + (" — every combination" if args.grid else " — row by row"),
            f"solved {int(b.ok.sum())} of {b.n} variants"]
     for e in b.errors[:5]:

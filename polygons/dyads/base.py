@@ -106,6 +106,28 @@ def circle_line_scalar(px, py, length, gx, gy, ex, ey, sigma):
     return gx + t * ex, gy + t * ey, root / length
 
 
+def circle_circle_cols(px, py, r1, qx, qy, r2, sigma):
+    """:func:`circle_circle_scalar`'s signature over arrays (the compiled program run on N
+    positions): :func:`circle_circle` itself, on its coordinates."""
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (px, py, qx, qy, r1, r2)))
+    p = np.array([np.broadcast_to(px, shape), np.broadcast_to(py, shape)])
+    q = np.array([np.broadcast_to(qx, shape), np.broadcast_to(qy, shape)])
+    X, m = circle_circle(p, r1, q, r2, sigma)
+    return X[0], X[1], m
+
+
+def circle_line_cols(px, py, length, gx, gy, ex, ey, sigma):
+    """:func:`circle_line_scalar`'s signature over arrays: :func:`circle_line` itself."""
+    shape = np.broadcast_shapes(np.shape(px), np.shape(py), np.shape(length))
+    p = np.array([np.broadcast_to(px, shape), np.broadcast_to(py, shape)])
+    X, m = circle_line(p, length, (gx, gy), (ex, ey), sigma)
+    return X[0], X[1], m
+
+
+#: the array form of each scalar fast path (for the compiled program run on arrays)
+ARRAY_TWIN = {circle_circle_scalar: circle_circle_cols, circle_line_scalar: circle_line_cols}
+
+
 def as_col(v, like):
     """A constant plane vector shaped to broadcast against ``like`` ((2,) or (2, N))."""
     return np.asarray(v, dtype=float).reshape((2,) + (1,) * (np.ndim(like) - 1))

@@ -49,7 +49,7 @@ class Image:
         (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
         dx, dy = g.let(f"{qx} - {px}"), g.let(f"{qy} - {py}")
         n = g.let(f"hypot({dx}, {dy})")
-        g.margin(g.let(f"1.0 if {n} > 0 else -1.0"))
+        g.margin(g.let(f"where({n} > 0, 1.0, -1.0)"))
         ux, uy = g.let(f"{dx} / {n}"), g.let(f"{dy} / {n}")
         a = g.let(f"{along} + {frac} * {n}")
         g.place(self.x, g.let(f"{px} + {a} * {ux} + {left} * -{uy}"),

@@ -55,7 +55,7 @@ class RPR:
         tiny = g.param(lambda s: 1e-12 * size_of(s))
         dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
         n = g.let(f"hypot({dx}, {dy})")
-        g.margin(g.let(f"1.0 if {n} > {tiny} else 0.0"))
+        g.margin(g.let(f"where({n} > {tiny}, 1.0, 0.0)"))
         g.place(self.coincident, ax, ay)
         if self.far:
             fl = g.param(lambda s: s.slots[self.pin].far_length)
