@@ -112,9 +112,11 @@ class Batch:
 
 
 def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
-               grid: bool = False, **arrays) -> Batch:
+               grid: bool = False, engine: str = "compiled", **arrays) -> Batch:
     """Solve ``scene`` once per row of the given quantities (see the module docstring), or
-    for every combination of them with ``grid=True``; scalars broadcast."""
+    for every combination of them with ``grid=True``; scalars broadcast.  ``engine``:
+    'compiled' (the construction compiled for arrays, :mod:`polygons.compiled`) or 'kernel'
+    (each dyad's ``locate`` and the interpreter kernel on (2, N)): the same numbers."""
     given = dict(values or {})
     given.update(arrays)
     names = _quantities(scene)
@@ -145,8 +147,9 @@ def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
         cols = {k: np.atleast_1d(v) for k, v in zip(cols, b)}
         shape = (next(iter(cols.values())).shape[0],) if cols else (1,)
     n = int(np.prod(shape))
+    solve = {"compiled": _solve_compiled, "kernel": _solve_kernel}[engine]
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        return _solve(scene, cols, shape, n)
+        return solve(scene, cols, shape, n)
 
 
 _DRIVER_NAMES = ("theta", "s", "omega", "alpha", "velocity", "acceleration")
@@ -212,9 +215,55 @@ def prepare(scene: Scene):
     return plan, prog, steps
 
 
-def _solve(scene: Scene, cols: dict, shape, n: int) -> Batch:
+class _Polygons:
+    """The polygon vertices of every row, read like a kernel's (``of(diagram, label)``)."""
+
+    def __init__(self, vx):
+        self.vx = vx
+
+    def of(self, diagram, label):
+        return self.vx[(str(diagram), label)]
+
+
+def _solve_compiled(scene: Scene, cols: dict, shape, n: int) -> Batch:
+    """The rows by the construction compiled for arrays (:func:`polygons.compiled.
+    compile_arrays`), the varied quantities passed as (N,) parameters."""
+    from .compiled import compile_arrays
     plan, prog, steps = prepare(scene)
     vs, x = _varied_scene(scene, cols, n)
+    fail, where, mark = _failures(scene, cols, n)
+    code, _ = compile_arrays(scene, plan, dict(prog.sigma))
+    params = tuple(prog.sigma[g[1]] if isinstance(g, tuple) else g(vs) for g in code.getters)
+    idx = code.index
+    r = code.fn(x, params)
+    full = lambda v: np.broadcast_to(v, (n,))  # noqa: E731
+    pos, vx = {}, {}
+    for (key, label), ij in idx.items():
+        if key == "pos":
+            pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+        elif key in ("velocity", "acceleration"):
+            vx[(key, label)] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+    for i, d in zip(idx[("margins", "")], idx[("margin_of", "")]):
+        m = full(r[i])
+        mark(~(m >= 0) if d.two_closures else ~(m > 0),
+             getattr(d, "lever", None) or d.placed[0], _why_not(scene, cols, d))
+    cmin = dmin = None
+    for i, j, s in idx[("crossings", "")]:
+        c, d = np.abs(full(r[i])), np.abs(full(r[j]))
+        if cmin is None:
+            cmin, dmin = c, d
+        else:
+            lower = c * dmin < cmin * d
+            cmin, dmin = np.where(lower, c, cmin), np.where(lower, d, dmin)
+        mark(~(c >= _TAN_PARALLEL * d), f"{s.diagram} {s.number} ({s.draws})",
+             _parallel(steps, s))
+    k = _Polygons(vx)
+    W = {name: full(r[i]) for (key, name), i in idx.items() if key == "omega"}
+    AL = {name: full(r[i]) for (key, name), i in idx.items() if key == "alpha"}
+    return _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin)
+
+
+def _failures(scene, cols, n):
     fail = np.zeros(n, dtype=np.int64)
     where: list = []
 
@@ -227,6 +276,20 @@ def _solve(scene: Scene, cols: dict, shape, n: int) -> Batch:
     for name, a in cols.items():
         if name in scene.links:
             mark(~(np.broadcast_to(a, (n,)) > 0), name, f"the length of {name} must be positive")
+    return fail, where, mark
+
+
+def _parallel(steps, s):
+    return lambda i: (f"the {_draws(steps, s.diagram, s.lines[0])} and the "
+                      f"{_draws(steps, s.diagram, s.lines[1])} are parallel: the mechanism is "
+                      f"at a toggle or change point")
+
+
+def _solve_kernel(scene: Scene, cols: dict, shape, n: int) -> Batch:
+    """The rows by each dyad's ``locate`` and the interpreter kernel on (2, N) arrays."""
+    plan, prog, steps = prepare(scene)
+    vs, x = _varied_scene(scene, cols, n)
+    fail, where, mark = _failures(scene, cols, n)
     # positions: each dyad's locate on (2, N)
     pos = {}
     for g, (gx, gy) in vs.ground.items():
@@ -262,10 +325,12 @@ def _solve(scene: Scene, cols: dict, shape, n: int) -> Batch:
                 cmin, dmin = np.where(lower, c, cmin), np.where(lower, d, dmin)
             # below PARALLEL_DEG: atan2(c, d) < 1e-5°, i.e. c < tan(1e-5°) d
             mark(~(c >= _TAN_PARALLEL * d), f"{s.diagram} {s.number} ({s.draws})",
-                 lambda i, s=s: (f"the {_draws(steps, s.diagram, s.lines[0])} and the "
-                                 f"{_draws(steps, s.diagram, s.lines[1])} are parallel: the "
-                                 f"mechanism is at a toggle or change point"))
+                 _parallel(steps, s))
     W, AL = dict(k.omega), dict(k.alpha)
+    return _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin)
+
+
+def _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin):
     from .theorems import angular_acceleration, angular_velocity
     for name, a, b in prog.links:
         if name in W or a not in pos or b not in pos:

@@ -68,6 +68,8 @@ class Source:
         self.scene = scene
         self.arrays = arrays           # the same code over (N,) arrays: no checks, margins kept
         self.margins: list[str] = []
+        self.margin_of: list = []      # the dyad of each margin
+        self.crossings: list = []      # (u × v, u · v, step) of every intersection
         self.lines: list[str] = []
         self.getters: list = []        # scene -> float, one per parameter k<i>
         self.namespace: dict = ({"cos": np.cos, "sin": np.sin, "hypot": _hypot_cols,
@@ -121,6 +123,7 @@ class Source:
         needs a margin ≥ 0, any other > 0)."""
         if self.arrays:                 # over arrays: NaN where it cannot close, and the
             self.margins.append(m)      # margin kept (the sweep's conditioning)
+            self.margin_of.append(self.dyad)
             return
         test = ">= 0.0" if self.dyad.two_closures else "> 0.0"
         self.fail_unless(f"{m} {test}", ("dyad", self.dyad))
@@ -318,7 +321,9 @@ class _Steps:
         g = self.g
         (p, u), (q, v) = (self.lines[(s.diagram, n)] for n in s.lines)
         den = self.cross(u, v)
-        angle = g.let(f"degrees(atan2(abs({den}), abs({u[0]} * {v[0]} + {u[1]} * {v[1]})))")
+        dot = self.dot(u, v)
+        angle = g.let(f"degrees(atan2(abs({den}), abs({dot})))")
+        g.crossings.append((den, dot, s))
         g.fail_unless(f"{angle} >= {PARALLEL_DEG!r}", ("step", s, "parallel"))
         w = self.sub(q, p)
         t = g.let(f"({w[0]} * {v[1]} - {w[1]} * {v[0]}) / {den}")
@@ -468,7 +473,11 @@ def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
                  for k, v in index.items()}
         layout = []
         index[("margins", "")] = tuple(range(len(out), len(out) + len(g.margins)))
+        index[("margin_of", "")] = tuple(g.margin_of)
         out = out + g.margins
+        index[("crossings", "")] = tuple((len(out) + 2 * i, len(out) + 2 * i + 1, c[2])
+                                         for i, c in enumerate(g.crossings))
+        out = out + [n for c in g.crossings for n in c[:2]]
         lines = _live(lines, out)
     params = ", ".join(f"k{i}" for i in range(len(g.getters)))
     body = "\n    ".join(lines)
