@@ -438,10 +438,15 @@ def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
         alpha[drv.link] = g.param(lambda s: s.driver.alpha)
     st = _Steps(g, scene, names, omega, alpha)
     out: list[str] = []
+    slot: dict[str, int] = {}
 
     def put(name) -> int:
-        out.append(name)
-        return len(out) - 1
+        """The record index of local ``name`` (each local once in the record)."""
+        i = slot.get(name)
+        if i is None:
+            i = slot[name] = len(out)
+            out.append(name)
+        return i
 
     layout = []
     for s in steps:
@@ -450,6 +455,10 @@ def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
                            None if value is None else put(value),
                            None if angle is None else put(angle), unit,
                            tuple((sym, put(v), u) for sym, v, u in terms)))
+    if arrays:      # only the vertices, rates and margins: the step records' numbers are
+        out.clear()     # left out (and their code dropped as dead)
+        slot.clear()
+        layout = []
     index = {}
     for label, (x, y) in g.placed.items():
         index[("pos", label)] = (put(x), put(y))
@@ -464,20 +473,10 @@ def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
     for pin, c in st.cor.items():
         index[("coriolis", pin)] = (put(c[0]), put(c[1]))
     lines = g.lines
-    if arrays:      # only the vertices, rates and margins: drop the step records' numbers
-        out = out[len(out) - sum(len(v) if isinstance(v, tuple) else 1
-                                 for v in index.values()):]
-        shift = sum(len(o.fields) * 2 + (o.value is not None) + (o.angle is not None)
-                    + len(o.terms) for o in layout)
-        index = {k: (tuple(i - shift for i in v) if isinstance(v, tuple) else v - shift)
-                 for k, v in index.items()}
-        layout = []
-        index[("margins", "")] = tuple(range(len(out), len(out) + len(g.margins)))
+    if arrays:
+        index[("margins", "")] = tuple(put(m) for m in g.margins)
         index[("margin_of", "")] = tuple(g.margin_of)
-        out = out + g.margins
-        index[("crossings", "")] = tuple((len(out) + 2 * i, len(out) + 2 * i + 1, c[2])
-                                         for i, c in enumerate(g.crossings))
-        out = out + [n for c in g.crossings for n in c[:2]]
+        index[("crossings", "")] = tuple((put(c[0]), put(c[1]), c[2]) for c in g.crossings)
         lines = _live(lines, out)
     params = ", ".join(f"k{i}" for i in range(len(g.getters)))
     body = "\n    ".join(lines)
@@ -534,6 +533,7 @@ class Program:
     code: _Code
     params: tuple
     x0: float
+    fn: object = None         # code.fn, held here for the call's sake
 
     def solve(self, x: float | None = None) -> "CompiledSolution":
         """Every step's numbers at input ``x`` (θ in rad or s in m; default the scene's)."""
@@ -542,9 +542,6 @@ class Program:
         except _Fail as f:
             raise self._error(self.code.fails[f.args[0]], x) from None
 
-    @property
-    def fn(self):
-        return self.code.fn
 
     def _error(self, why, x):
         scene = self.scene
@@ -592,7 +589,8 @@ def compile_scene(scene: Scene, plan: Plan | None = None) -> Program:
     # the closures are parameters too: fetch them from this scene
     params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
                    for get in code.getters)
-    return Program(scene, plan, steps, sigma, code, params, float(driver_input(scene)))
+    return Program(scene, plan, steps, sigma, code, params, float(driver_input(scene)),
+                   code.fn)
 
 
 def _copy(step: Step, vals: dict, **more) -> Step:
@@ -630,7 +628,6 @@ class CompiledSolution:
     def __init__(self, program: Program, record: tuple):
         self.program = program
         self.record = record
-        self._steps = None
 
     def position(self, label: str) -> tuple[float, float]:
         i, j = self.program.code.index[("pos", label)]
@@ -663,9 +660,11 @@ class CompiledSolution:
     def steps(self) -> tuple[Step, ...]:
         """The :class:`Step` records with their numbers and substituted text (as the staged
         solver fills them), built on first access."""
-        if self._steps is None:
+        try:
+            return self._steps
+        except AttributeError:
             self._steps = self._build_steps()
-        return self._steps
+            return self._steps
 
     def _build_steps(self) -> tuple[Step, ...]:
         r = self.record
