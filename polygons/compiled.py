@@ -238,9 +238,9 @@ class _Steps:
         w = self.omega[L]
         r = self.r(P, X)
         vec = self.rel_vel(w, r)
-        return self.vector(s, vec, "m/s", ((f"ω_{L}", self.g.let(f"abs({w})"), "rad/s"),
-                                           (f"{P}{X}", self.norm(r), "m"),
-                                           (s.quantity, self.norm(vec), "m/s")))
+        return self.vector(s, vec, "m/s", ((f"ω_{L}", ("abs", w), "rad/s"),
+                                           (f"{P}{X}", ("hypot", r), "m"),
+                                           (s.quantity, ("hypot", vec), "m/s")))
 
     def slider_drive(self, s):
         (X,) = s.args
@@ -257,18 +257,18 @@ class _Steps:
         w = self.omega[L]
         r = self.r(P, X)
         vec = self.centripetal(w, r)
-        return self.vector(s, vec, "m/s^2", ((f"ω_{L}", self.g.let(f"abs({w})"), "rad/s"),
-                                             (f"{P}{X}", self.norm(r), "m"),
-                                             (s.quantity, self.norm(vec), "m/s^2")))
+        return self.vector(s, vec, "m/s^2", ((f"ω_{L}", ("abs", w), "rad/s"),
+                                             (f"{P}{X}", ("hypot", r), "m"),
+                                             (s.quantity, ("hypot", vec), "m/s^2")))
 
     def crank_tangential(self, s):
         L, P, X = s.args
         al = self.alpha[L]
         r = self.r(P, X)
         vec = self.rel_vel(al, r)
-        return self.vector(s, vec, "m/s^2", ((f"α_{L}", self.g.let(f"abs({al})"), "rad/s^2"),
-                                             (f"{P}{X}", self.norm(r), "m"),
-                                             (s.quantity, self.norm(vec), "m/s^2")))
+        return self.vector(s, vec, "m/s^2", ((f"α_{L}", ("abs", al), "rad/s^2"),
+                                             (f"{P}{X}", ("hypot", r), "m"),
+                                             (s.quantity, ("hypot", vec), "m/s^2")))
 
     def line_perp(self, s):
         P, X = s.args
@@ -302,20 +302,20 @@ class _Steps:
         ln = self.line(s, e, anchor)
         neg = g.vec(f"-{a_cor[0]}", f"-{a_cor[1]}")
         return dict(at=ln[0], vector=neg, direction=ln[1]), None, None, "m/s^2", (
-            (f"ω_{slot.lever}", g.let(f"abs({w})"), "rad/s"),
-            (f"(v_{A_})_{slot.coincident}", g.let(f"abs({v_s})"), "m/s"),
-            ("2ωv", self.norm(a_cor), "m/s^2"))
+            (f"ω_{slot.lever}", ("abs", w), "rad/s"),
+            (f"(v_{A_})_{slot.coincident}", ("abs", v_s), "m/s"),
+            ("2ωv", ("hypot", a_cor), "m/s^2"))
 
     def coriolis_op(self, s):
         (A_,) = s.args
         a_cor = self.cor[A_]
-        return self.vector(s, a_cor, "m/s^2", (("2ωv", self.norm(a_cor), "m/s^2"),))
+        return self.vector(s, a_cor, "m/s^2", (("2ωv", ("hypot", a_cor), "m/s^2"),))
 
     def join(self, s):
         vx = self.vx[s.diagram]
         vec = self.sub(vx[s.end], vx[s.start])
         return dict(at=vx[s.start], vector=vec, point=vx[s.end]), None, None, "m/s^2", (
-            (f"{s.start}{s.end}", self.norm(vec), "m/s^2"),)
+            (f"{s.start}{s.end}", ("hypot", vec), "m/s^2"),)
 
     def intersect(self, s):
         g = self.g
@@ -331,7 +331,7 @@ class _Steps:
         self.vx[s.diagram][s.end] = pt
         unit = _unit_of(s.diagram)
         return dict(point=pt), None, angle, unit, (
-            ("angle", angle, "deg"), (f"{self.names.pole}{s.end}", self.norm(pt), unit))
+            ("angle", angle, "deg"), (f"{self.names.pole}{s.end}", ("hypot", pt), unit))
 
     def omega_op(self, s):
         L, P, Q = s.args
@@ -340,20 +340,18 @@ class _Steps:
         w = self.ang(r, rel)
         self.omega[L] = w
         return {}, w, None, "rad/s", (
-            (f"{self.names.of(P)}{self.names.of(Q)}", self.norm(rel), "m/s"),
-            (f"{P}{Q}", self.norm(r), "m"), (f"ω_{L}", w, "rad/s"))
+            (f"{self.names.of(P)}{self.names.of(Q)}", ("hypot", rel), "m/s"),
+            (f"{P}{Q}", ("hypot", r), "m"), (f"ω_{L}", w, "rad/s"))
 
     def alpha_op(self, s):
         L, P, X = s.args
-        g = self.g
         r = self.r(P, X)
         rel = self.sub(self.of(s.diagram, X), self.of(s.diagram, P))
         al = self.ang(r, rel)
         self.alpha[L] = al
-        n = self.norm(r)
-        at = g.let(f"abs({r[0]} / {n} * {rel[1]} - {r[1]} / {n} * {rel[0]})")
         return {}, al, None, "rad/s^2", (
-            ("tangential", at, "m/s^2"), (f"{P}{X}", n, "m"), (f"α_{L}", al, "rad/s^2"))
+            ("tangential", ("tangential", r, rel), "m/s^2"), (f"{P}{X}", ("hypot", r), "m"),
+            (f"α_{L}", al, "rad/s^2"))
 
     def slider_value(self, s):
         (X,) = s.args
@@ -388,7 +386,7 @@ class _Steps:
             c = self.centripetal(self.omega[L], r)
             vec = self.g.vec(f"{t[0]} + {c[0]}", f"{t[1]} + {c[1]}")
         unit = _unit_of(s.diagram)
-        return self.vector(s, vec, unit, ((f"{s.start}{s.end}", self.norm(vec), unit),))
+        return self.vector(s, vec, unit, ((f"{s.start}{s.end}", ("hypot", vec), unit),))
 
     OPS = {
         Op.CRANK_VELOCITY: crank_velocity, Op.SLIDER_DRIVE: slider_drive,
@@ -454,7 +452,7 @@ def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
         layout.append(_Out({k: (put(v[0]), put(v[1])) for k, v in fields.items()},
                            None if value is None else put(value),
                            None if angle is None else put(angle), unit,
-                           tuple((sym, put(v), u) for sym, v, u in terms)))
+                           tuple((sym, _lazy(v, put), u) for sym, v, u in terms)))
     if arrays:      # only the vertices, rates and margins: the step records' numbers are
         out.clear()     # left out (and their code dropped as dead)
         slot.clear()
@@ -477,7 +475,7 @@ def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
         index[("margins", "")] = tuple(put(m) for m in g.margins)
         index[("margin_of", "")] = tuple(g.margin_of)
         index[("crossings", "")] = tuple((put(c[0]), put(c[1]), c[2]) for c in g.crossings)
-        lines = _live(lines, out)
+    lines = _live(lines, out)
     params = ", ".join(f"k{i}" for i in range(len(g.getters)))
     body = "\n    ".join(lines)
     src = (f"def _solve(x, _k):\n    ({params}{',' if len(g.getters) == 1 else ''}) = _k\n"
@@ -495,11 +493,41 @@ def _live(lines: list[str], out: list[str]) -> list[str]:
     need = {n for o in out for n in _NAME.findall(o)}
     kept = []
     for line in reversed(lines):
+        if line.startswith("if "):      # a check stays, with what it tests
+            kept.append(line)
+            need.update(_NAME.findall(line))
+            continue
         targets, _, expr = line.partition(" = ")
         if any(t.strip() in need for t in targets.split(",")):
             kept.append(line)
             need.update(_NAME.findall(expr))
     return kept[::-1]
+
+
+def _lazy(v, put):
+    """A term's place in the record: an index, or (for a magnitude the record's vectors
+    already determine) how to compute it when the Step records are built."""
+    if not isinstance(v, tuple):
+        return put(v)
+    if v[0] == "abs":
+        return ("abs", put(v[1]))
+    if v[0] == "hypot":
+        return ("hypot", put(v[1][0]), put(v[1][1]))
+    r, rel = v[1], v[2]                 # the tangential part |r/|r| × rel|
+    return ("tangential", put(r[0]), put(r[1]), put(rel[0]), put(rel[1]))
+
+
+def _term(r, i):
+    """A term's value from the record (the same expression as the kernel's, over floats)."""
+    if type(i) is int:
+        return r[i]
+    if i[0] == "abs":
+        return abs(r[i[1]])
+    if i[0] == "hypot":
+        return math.hypot(r[i[1]], r[i[2]])
+    r0, r1, q0, q1 = (r[j] for j in i[1:])
+    n = math.hypot(r0, r1)
+    return abs(r0 / n * q1 - r1 / n * q0)
 
 
 def _sigmas(plan: Plan) -> dict:
@@ -675,7 +703,7 @@ class CompiledSolution:
                     for k in _FIELDS}
             filled = _copy(step, vals, value=None if o.value is None else r[o.value],
                            unit=o.unit, angle_deg=None if o.angle is None else r[o.angle],
-                           terms=tuple(Term(sym, r[i], u) for sym, i, u in o.terms))
+                           terms=tuple(Term(sym, _term(r, i), u) for sym, i, u in o.terms))
             filled.__dict__["substituted"] = substitute(filled, scene)
             done.append(filled)
         return tuple(done)
