@@ -83,7 +83,8 @@ def single_position(root, path, avail, quick, others, cf):
     notes = {
         "compiled": ("polygons compiled, pre-built",
                      "compile_scene once outside; timed: the float function filling every "
-                     "step's numbers into its flat record (Step records built lazily)"),
+                     "step's vectors, points, directions, ω/α values and angles into its flat "
+                     "record (the terms' magnitudes, Step records and text built lazily)"),
         "compiled+steps": ("polygons compiled + Step records",
                            "as above, and the Step records and substituted text materialised"),
         "compiled build": ("polygons compiled, build + solve",
