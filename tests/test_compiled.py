@@ -4,7 +4,6 @@ case and on random property-test scenes; the same conditioning, the same errors.
 import math
 from pathlib import Path
 
-import numpy as np
 import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
