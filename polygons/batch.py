@@ -142,7 +142,8 @@ def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
         except ValueError:
             raise PolygonsError("the arrays have different lengths: "
                                 + ", ".join(f"{k} {np.shape(a)}" for k, a in cols.items())
-                                + " (give equal lengths, or grid=True / --grid for every combination)",
+                                + " (give equal lengths, or grid=True / --grid for every "
+                                  "combination)",
                                 file=scene.file) from None
         cols = {k: np.atleast_1d(v) for k, v in zip(cols, b)}
         shape = (next(iter(cols.values())).shape[0],) if cols else (1,)

@@ -137,7 +137,8 @@ class Source:
 
     # -- used by the op generators ---------------------------------------------------------
     def fail_unless(self, cond: str, why) -> None:
-        if self.arrays or cond in self._checked:       # the same test on the same locals: already passed
+        # over arrays there are no checks; a test already made on the same locals has passed
+        if self.arrays or cond in self._checked:
             return
         self._checked.add(cond)
         self.fails.append(why)
