@@ -27,6 +27,7 @@ _EXPORTS = {
     "Result": "polygons.api",
     "Solution": "polygons.evaluate",
     "PolygonsError": "polygons.errors",
+    "solve_many": "polygons.batch",
 }
 
 __all__ = sorted(_EXPORTS)

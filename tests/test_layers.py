@@ -26,6 +26,7 @@ WHERE = {
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
+    "polygons.streams": "interpreters",
     "polygons.forces": "forces",
     "polygons.report": "render", "diagrams": "render",
     "polygons.cli": "commands", "polygons.api": "commands", "polygons": "commands",

@@ -27,6 +27,8 @@ from ..sweep import Sweep, harmonic, sweep
 
 #: above this many positions the summary draws a progress bar (on a terminal)
 PROGRESS_FROM = 100_000
+#: from this many positions the sweep is streamed to the CSV (polygons/cli/_stream.py)
+STREAM_FROM = 1_000_000
 #: most points drawn per curve (the maxima are always taken from every position)
 PLOT_POINTS = 4000
 
@@ -56,6 +58,12 @@ def register(sub) -> None:
     p.add_argument("--progress", choices=("auto", "on", "off"), default="auto",
                    help=f"progress bar on stderr (auto: on a terminal, from "
                         f"{PROGRESS_FROM:,} positions)")
+    p.add_argument("--vary", action="append", metavar="NAME=LO..HI UNIT:N",
+                   help="solve the scene once per value of a quantity instead of sweeping the "
+                        "input (a link length, G_x/G_y, theta, omega, alpha), e.g. "
+                        "AB=40..60mm:100; repeatable (see polygons/cli/_vary.py)")
+    p.add_argument("--grid", action="store_true",
+                   help="with several --vary: every combination instead of row by row")
     p.set_defaults(func=run)
 
 
@@ -96,11 +104,17 @@ def _default_links(sw: Sweep) -> list[str]:
 
 def run(args) -> int:
     scene = load_scene(args.scene)
+    if args.vary:
+        from ._vary import run_vary
+        return run_vary(args, scene)
     opt = _options(scene, args)
     n = opt["steps"]
     bar = None
     show = {"on": True, "off": False, "auto": n >= PROGRESS_FROM and sys.stderr.isatty()}[
         args.progress]
+    if n >= STREAM_FROM:        # chunk by chunk into the CSV, in constant memory
+        from ._stream import run_stream
+        return run_stream(args, scene, opt, show, plot, _units)
     if show:
         from tqdm import tqdm
         bar = tqdm(total=n, unit="pos", unit_scale=True, desc="sweep", file=sys.stderr,

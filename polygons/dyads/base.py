@@ -17,6 +17,8 @@ The planner orders dyads; the interpreters execute their steps; neither knows th
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..theorems import perp
@@ -68,13 +70,75 @@ def circle_line(p, length, through, e, sigma):
     return x, margin
 
 
+_hypot, _sqrt, _nan = math.hypot, math.sqrt, math.nan
+
+
+def circle_circle_scalar(px, py, r1, qx, qy, r2, sigma):
+    """:func:`circle_circle` over plain floats (the compiled evaluator's fast path): the same
+    formula, term for term.  Returns (x, y, margin); x, y NaN where the circles do not meet."""
+    dx = qx - px
+    dy = qy - py
+    dist = _hypot(dx, dy)
+    if dist == 0.0:
+        return _nan, _nan, _nan
+    a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
+    h2 = r1 * r1 - a * a
+    big = r1 if r1 > r2 else r2
+    big = big if big > dist else dist
+    if not h2 >= -(CLOSE_TOL * (big * big)):
+        return _nan, _nan, -_sqrt(abs(h2)) * dist / (r1 * r2)
+    h = _sqrt(h2) if h2 > 0.0 else 0.0
+    ux = dx / dist
+    uy = dy / dist
+    sh = sigma * h
+    return px + a * ux + sh * -uy, py + a * uy + sh * ux, h * dist / (r1 * r2)
+
+
+def circle_line_scalar(px, py, length, gx, gy, ex, ey, sigma):
+    """:func:`circle_line` over plain floats (the compiled evaluator's fast path): the same
+    formula, term for term.  Returns (x, y, margin); x, y NaN where the line is out of reach."""
+    wx = gx - px
+    wy = gy - py
+    bq = ex * wx + ey * wy
+    c = wx * wx + wy * wy - length * length
+    disc = bq * bq - c
+    if not disc >= -CLOSE_TOL * length * length:
+        return _nan, _nan, -_sqrt(abs(disc)) / length
+    root = _sqrt(disc) if disc > 0.0 else 0.0
+    t = -bq + sigma * root
+    return gx + t * ex, gy + t * ey, root / length
+
+
+def circle_circle_cols(px, py, r1, qx, qy, r2, sigma):
+    """:func:`circle_circle_scalar`'s signature over arrays (the compiled program run on N
+    positions): :func:`circle_circle` itself, on its coordinates."""
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (px, py, qx, qy, r1, r2)))
+    p = np.array([np.broadcast_to(px, shape), np.broadcast_to(py, shape)])
+    q = np.array([np.broadcast_to(qx, shape), np.broadcast_to(qy, shape)])
+    X, m = circle_circle(p, r1, q, r2, sigma)
+    return X[0], X[1], m
+
+
+def circle_line_cols(px, py, length, gx, gy, ex, ey, sigma):
+    """:func:`circle_line_scalar`'s signature over arrays: :func:`circle_line` itself."""
+    shape = np.broadcast_shapes(np.shape(px), np.shape(py), np.shape(length))
+    p = np.array([np.broadcast_to(px, shape), np.broadcast_to(py, shape)])
+    X, m = circle_line(p, length, (gx, gy), (ex, ey), sigma)
+    return X[0], X[1], m
+
+
+#: the array form of each scalar fast path (for the compiled program run on arrays)
+ARRAY_TWIN = {circle_circle_scalar: circle_circle_cols, circle_line_scalar: circle_line_cols}
+
+
 def as_col(v, like):
     """A constant plane vector shaped to broadcast against ``like`` ((2,) or (2, N))."""
     return np.asarray(v, dtype=float).reshape((2,) + (1,) * (np.ndim(like) - 1))
 
 
 def size_of(scene) -> float:
-    """The mechanism's size: its longest link or ground coordinate (for relative tolerances)."""
-    lengths = [l.length for l in scene.links.values() if l.length]
-    coords = [abs(c) for v in scene.ground.values() for c in v]
+    """The mechanism's size: its longest link or ground coordinate (for relative tolerances;
+    over every row when a batch gives the lengths or coordinates as arrays)."""
+    lengths = [float(np.max(l.length)) for l in scene.links.values() if l.length is not None]
+    coords = [float(np.max(np.abs(c))) for v in scene.ground.values() for c in v]
     return max(lengths + coords + [1e-300])

@@ -39,6 +39,14 @@ class CrankDyad:
             tip = p + r * np.array([np.cos(x), np.sin(x)])
         return {self.tip: tip}, None
 
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
+        r = g.param(lambda s: s.links[self.link].length)
+        px, py = g.pos(self.pivot)
+        c, s_ = g.let(f"cos({g.x})"), g.let(f"sin({g.x})")
+        g.place(self.tip, g.let(f"{px} + {r} * {c}"), g.let(f"{py} + {r} * {s_}"))
+
     def why_not(self, scene, pos) -> str:
         return ""
 

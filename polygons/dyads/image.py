@@ -39,6 +39,22 @@ class Image:
         along = bp.along if bp.along is not None else bp.fraction * n
         return {self.x: pos[self.p] + along * u + bp.left * perp(u)}, np.where(n > 0, 1.0, -1.0)
 
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
+        along = g.param(lambda s: s.points[self.x].along or 0.0)
+        frac = g.param(lambda s: s.points[self.x].fraction
+                       if s.points[self.x].along is None else 0.0)
+        left = g.param(lambda s: s.points[self.x].left)
+        (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
+        dx, dy = g.let(f"{qx} - {px}"), g.let(f"{qy} - {py}")
+        n = g.let(f"hypot({dx}, {dy})")
+        g.margin(g.let(f"where({n} > 0, 1.0, -1.0)"))
+        ux, uy = g.let(f"{dx} / {n}"), g.let(f"{dy} / {n}")
+        a = g.let(f"{along} + {frac} * {n}")
+        g.place(self.x, g.let(f"{px} + {a} * {ux} + {left} * -{uy}"),
+                g.let(f"{py} + {a} * {uy} + {left} * {ux}"))
+
     def why_not(self, scene, pos) -> str:
         return (f"link {self.link} has zero length at this instant, so {self.x} cannot be "
                 f"placed on it")

@@ -40,6 +40,23 @@ class RPP:
         t = (w[0] * f[1] - w[1] * f[0]) / den
         return {self.x: through + t * as_col(e, a)}, abs(den) + 0.0 * t
 
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
+        sl = lambda s: s.sliders[self.x]  # noqa: E731
+        ex = g.param(lambda s: sl(s).direction[0])
+        ey = g.param(lambda s: sl(s).direction[1])
+        fx = g.param(lambda s: sl(s).slot_direction[0])
+        fy = g.param(lambda s: sl(s).slot_direction[1])
+        tx = g.param(lambda s: sl(s).through[0])
+        ty = g.param(lambda s: sl(s).through[1])
+        ax, ay = g.pos(self.pin)
+        den = g.let(f"{ex} * {fy} - {ey} * {fx}")
+        g.margin(g.let(f"abs({den})"))
+        wx, wy = g.let(f"{ax} - {tx}"), g.let(f"{ay} - {ty}")
+        t = g.let(f"({wx} * {fy} - {wy} * {fx}) / {den}")
+        g.place(self.x, g.let(f"{tx} + {t} * {ex}"), g.let(f"{ty} + {t} * {ey}"))
+
     def why_not(self, scene, pos) -> str:
         return f"the slot of the yoke {self.x} is parallel to its guide"
 

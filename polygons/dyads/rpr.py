@@ -58,6 +58,20 @@ class RPR:
         margin = np.where(s > 1e-12 * size_of(scene), 1.0, 0.0)
         return out, margin
 
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
+        (ax, ay), (bx, by) = g.pos(self.pin), g.pos(self.pivot)
+        tiny = g.param(lambda s: 1e-12 * size_of(s))
+        dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
+        n = g.let(f"hypot({dx}, {dy})")
+        g.margin(g.let(f"where({n} > {tiny}, 1.0, 0.0)"))
+        g.place(self.coincident, ax, ay)
+        if self.far:
+            fl = g.param(lambda s: s.slots[self.pin].far_length)
+            g.place(self.far, g.let(f"{bx} + {fl} * {dx} / {n}"),
+                    g.let(f"{by} + {fl} * {dy} / {n}"))
+
     def why_not(self, scene, pos) -> str:
         off = scene.slots[self.pin].offset
         if off:

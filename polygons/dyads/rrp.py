@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..steps import Builder
-from .base import circle_line
+from .base import circle_line, circle_line_scalar
 from . import pinned
 
 
@@ -41,6 +41,19 @@ class RRP:
         X, margin = circle_line(pos[self.p], scene.links[self.link].length, g.through,
                                 g.direction, sigma)
         return {self.x: X}, margin
+
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
+        L = g.param(lambda s: s.links[self.link].length)
+        gx = g.param(lambda s: s.sliders[self.x].through[0])
+        gy = g.param(lambda s: s.sliders[self.x].through[1])
+        ex = g.param(lambda s: s.sliders[self.x].direction[0])
+        ey = g.param(lambda s: s.sliders[self.x].direction[1])
+        x, y, m = g.call(circle_line_scalar, *g.pos(self.p), L, gx, gy, ex, ey,
+                         g.sigma(self.x), n=3)
+        g.margin(m)
+        g.place(self.x, x, y)
 
     def why_not(self, scene, pos) -> str:
         from ..theorems import cross

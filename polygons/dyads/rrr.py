@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..steps import Builder, Component, Kind, Op
-from .base import circle_circle
+from .base import circle_circle, circle_circle_scalar
 from . import pinned
 
 
@@ -41,6 +41,16 @@ class RRR:
         r2 = scene.links[self.link_q].length
         X, margin = circle_circle(pos[self.p], r1, pos[self.q], r2, sigma)
         return {self.x: X}, margin
+
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
+        r1 = g.param(lambda s: s.links[self.link_p].length)
+        r2 = g.param(lambda s: s.links[self.link_q].length)
+        x, y, m = g.call(circle_circle_scalar, *g.pos(self.p), r1, *g.pos(self.q), r2,
+                         g.sigma(self.x), n=3)
+        g.margin(m)
+        g.place(self.x, x, y)
 
     def why_not(self, scene, pos) -> str:
         import math

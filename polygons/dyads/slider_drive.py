@@ -33,6 +33,15 @@ class SliderDriveDyad:
             return {self.point: through + x * e}, None
         return {self.point: as_col(through, x[None]) + x * as_col(e, x[None])}, None
 
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
+        tx = g.param(lambda s: s.sliders[self.point].through[0])
+        ty = g.param(lambda s: s.sliders[self.point].through[1])
+        ex = g.param(lambda s: s.sliders[self.point].direction[0])
+        ey = g.param(lambda s: s.sliders[self.point].direction[1])
+        g.place(self.point, g.let(f"{tx} + {g.x} * {ex}"), g.let(f"{ty} + {g.x} * {ey}"))
+
     def why_not(self, scene, pos) -> str:
         return ""
 

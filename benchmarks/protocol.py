@@ -1,0 +1,155 @@
+"""One timing protocol for every package (used by benchmarks/run.py).
+
+The rules, the same for polygons, pylinkage and the numpy closed form:
+
+* the same geometry: the four-bar of S001-WE6, at the same K crank angles;
+* warm: every callable is called once, untimed, before its timings (imports, numba and our
+  code generation happen there);
+* one timer, ``time.perf_counter_ns``, read once before and once after a loop of K calls
+  (one per angle); the time per call is the best of ``repeat`` such loops divided by K; the
+  loops of all methods are interleaved so that each sees the same machine load;
+* nothing else is in the timed region: no ``gc.collect()`` (the collector stays enabled, as in
+  a user's program), no result checking, no argument building;
+* "pre-built" times the solve of a model built beforehand (our compiled program or staged
+  scene, pylinkage's Linkage); "build + solve" times building it from the parsed geometry
+  and solving once, inside the region;
+* the cold start is the whole process (``python -m polygons ...``), median of N runs.
+"""
+from __future__ import annotations
+
+import math
+import statistics
+import subprocess
+import sys
+import time
+from dataclasses import replace
+
+import numpy as np
+
+
+def per_call(fns: dict, args, repeat: int) -> dict:
+    """Seconds per call of each ``fns[name](arg)`` over ``args``: warm, interleaved, best of
+    ``repeat`` loops, perf_counter_ns around the loop only."""
+    for fn in fns.values():
+        fn(args[0])
+    best = {k: math.inf for k in fns}
+    clock = time.perf_counter_ns
+    for _ in range(repeat):
+        for name, fn in fns.items():
+            t0 = clock()
+            for a in args:
+                fn(a)
+            t1 = clock()
+            best[name] = min(best[name], (t1 - t0) / len(args))
+    return {k: v * 1e-9 for k, v in best.items()}
+
+
+def scenes_at(scene, thetas, probe_pos, branches):
+    """The scene restated at each angle (its closure pinned 'near' the followed branch)."""
+    from polygons.scene import Branch
+    out = []
+    for i, t in enumerate(thetas):
+        asm = {lab: Branch(lab, "near", "near", near=(float(probe_pos[lab][0][i]),
+                                                        float(probe_pos[lab][1][i])))
+               for lab in branches}
+        out.append(replace(scene, driver=replace(scene.driver, angle=float(t)), assembly=asm))
+    return out
+
+
+def single_position(root, path, avail, quick, others, cf):
+    """Rows (method, seconds per call, what is timed) for one position of the four-bar."""
+    from polygons.compiled import compile_scene
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
+    from polygons.sweep import sweep
+
+    scene = load_scene(root / path)
+    p = cf.params("four-bar", scene)
+    K = 16 if quick else 64
+    th0 = p["theta0"]
+    thetas = [float(t) for t in th0 + 2 * np.pi * np.arange(K) / K]
+    probe = sweep(scene, inputs=thetas)
+    scenes = scenes_at(scene, thetas, probe.pos, probe.branches)
+    prog = compile_scene(scene)
+    idx = list(range(K))
+    fns = {
+        "compiled": lambda i: prog.solve(thetas[i]),
+        "compiled+steps": lambda i: prog.solve(thetas[i]).steps,
+        "compiled build": lambda i: compile_scene(scenes[i]).solve(),
+        "staged": lambda i: solve(scenes[i]),
+        "load+staged": lambda i: solve(load_scene(root / path)),
+        "closed form": lambda i: cf.four_bar(p, np.array([thetas[i]])),
+    }
+    notes = {
+        "compiled": ("polygons compiled, pre-built",
+                     "compile_scene once outside; timed: the float function filling every "
+                     "step's vectors, points, directions, ω/α values and angles into its flat "
+                     "record (the terms' magnitudes, Step records and text built lazily)"),
+        "compiled+steps": ("polygons compiled + Step records",
+                           "as above, and the Step records and substituted text materialised"),
+        "compiled build": ("polygons compiled, build + solve",
+                           "timed: compile_scene (plan, staged assembly for the closures, "
+                           "cached code) + solve, from a parsed Scene"),
+        "staged": ("polygons staged (shapely), pre-built scene",
+                   "timed: solve(scene): plan, assembly, every step with shapely, Solution"),
+        "load+staged": ("polygons load_scene + staged",
+                        "timed: TOML parse + solve (the scene's own angle)"),
+        "closed form": ("numpy closed form, one position",
+                        "benchmarks/closed_form.py on a 1-element array"),
+    }
+    pl = None
+    if avail.get("pylinkage") is None:
+        start = {lab: (float(np.ravel(v[0])[0]), float(np.ravel(v[1])[0]))
+                 for lab, v in probe.pos.items()}
+        pl = others.PyLinkage(p, start)
+        fns["pylinkage"] = lambda i: pl.single_fast(thetas[i])
+        fns["pylinkage py"] = lambda i: pl.single_python(thetas[i])
+        fns["pylinkage build"] = lambda i: others.PyLinkage(p, start).single_python(thetas[i])
+        notes["pylinkage"] = ("pylinkage, pre-built (numba path)",
+                              "Linkage built outside; timed: step_fast_with_kinematics(1)")
+        notes["pylinkage py"] = ("pylinkage, pre-built (Python path)",
+                                 "Linkage built outside; timed: step_with_derivatives(1)")
+        notes["pylinkage build"] = ("pylinkage, build + solve",
+                                    "timed: Linkage built from the same geometry + "
+                                    "step_with_derivatives(1)")
+    t = per_call(fns, idx, 5 if quick else 30)
+    rows = [dict(key=k, method=notes[k][0], time=t[k], timed=notes[k][1]) for k in fns]
+    return rows
+
+
+def batch_vs_closed_form(root, path, quick, cf, n=10_000):
+    """(ours s, closed form s, max relative error of ω_BC against it) for n random four-bars
+    solved at once."""
+    from polygons.batch import solve_many
+    from polygons.scene import load_scene
+
+    scene = load_scene(root / path)
+    p = cf.params("four-bar", scene)
+    rng = np.random.default_rng(1)
+    L = {k: scene.links[k].length for k in ("AB", "BC", "CD")}
+    ab = L["AB"] * rng.uniform(0.9, 1.1, n)
+    bc = L["BC"] * rng.uniform(0.95, 1.05, n)
+    cd = L["CD"] * rng.uniform(0.95, 1.05, n)
+    th = rng.uniform(0.0, 2 * math.pi, n)
+    pp = dict(p, r=ab, b=bc, c=cd)
+    fns = {"ours": lambda _: solve_many(scene, AB=ab, BC=bc, CD=cd, theta=th),
+           "closed": lambda _: cf.four_bar(pp, th)}
+    with np.errstate(invalid="ignore"):
+        t = per_call(fns, [0], 5 if quick else 30)
+        b = solve_many(scene, AB=ab, BC=bc, CD=cd, theta=th)
+        ref = cf.four_bar(dict(pp), th.astype(np.longdouble))
+    w = np.asarray(ref[f"{p['coupler']}.omega"], dtype=float)
+    ok = b.ok & np.isfinite(w)
+    err = float(np.max(np.abs(b.omega(p["coupler"])[ok] - w[ok])) / np.max(np.abs(w[ok])))
+    return t["ours"], t["closed"], err, int(b.ok.sum())
+
+
+def cold(root, argv, runs: int) -> float:
+    """Median wall time (s) of ``python -m polygons ARGV`` as a whole process."""
+    times = []
+    for _ in range(runs + 1):
+        t0 = time.perf_counter_ns()
+        subprocess.run([sys.executable, "-m", "polygons", *argv], cwd=root,
+                       capture_output=True, check=False)
+        times.append((time.perf_counter_ns() - t0) * 1e-9)
+    return statistics.median(times[1:])          # the first run warms the OS caches

@@ -1,0 +1,381 @@
+"""Many variants of one scene solved at once: design studies, exam variants, synthesis loops.
+
+``solve_many(scene, AB=lengths, theta=angles, ...)`` gives any scene quantity an array of
+values and solves every row (or, with ``grid=True``, every combination) in one vectorised
+pass: each dyad's :meth:`locate` and the interpreter kernel (:mod:`polygons.interpret`) run on
+(2, N) arrays, as in a sweep.  The quantities, by name (SI units):
+
+* a link's name (``AB``): its length in m;
+* ``<G>_x`` / ``<G>_y`` for a fixed point ``G``: its coordinates in m;
+* ``theta`` (a crank's angle, rad) or ``s`` (an input slider's position along its guide, m);
+* ``omega`` / ``alpha`` (a crank's rates, rad/s and rad/s², CCW positive) or ``velocity`` /
+  ``acceleration`` (an input slider's, m/s and m/s²).
+
+Names that are not Python identifiers can be given in the ``values`` mapping.  Every
+two-closure dyad takes, in every row, the closure the scene's own assembly takes (the same side
+of its base line).  A row that cannot be solved — the links cannot close, two construction
+lines are parallel (a toggle), a length is not positive — is reported in
+:attr:`Batch.errors` (which row, which dyad or step, why) and its numbers are NaN; a bad row
+never stops the others.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from functools import cached_property
+from typing import Mapping
+
+import numpy as np
+
+from .errors import PolygonsError, UnknownLabelError, suggest
+from .interpret import Backend, Kernel
+from .plan import construction, make_plan
+from .scene import Crank, Scene
+from .steps import Diagram, Vertices
+from .sweep import compile_plan
+
+#: the staged solver's threshold (polygons.geometry.PARALLEL_DEG)
+_TAN_PARALLEL = math.tan(math.radians(1e-5))
+
+
+@dataclass(frozen=True)
+class RowError:
+    """Row ``row`` could not be solved: ``where`` names the dyad's point or the step
+    ('velocity 3 (b)'), ``reason`` says why in words."""
+    row: int
+    where: str
+    reason: str
+
+
+class Batch:
+    """The solved rows.  ``inputs``: quantity → (N,) values of each row; ``shape``: (N,) or
+    the grid's shape (row i is ``np.unravel_index(i, shape)``); ``ok``: (N,) rows solved.
+    Accessors return (N, 2) vectors or (N,) scalars, NaN in failed rows."""
+
+    def __init__(self, scene, plan, inputs, shape, pos, kernel, links, failures, angle):
+        self.scene = scene
+        self.plan = plan
+        self.inputs = inputs
+        self.shape = shape
+        self._pos = pos
+        self._k = kernel
+        self._links = links
+        self._fail = failures            # (N,) int: 0 ok, else 1 + index into _where
+        self.ok = failures == 0
+        self.angle_deg = angle           # smallest construction angle per row (deg)
+
+    @property
+    def n(self) -> int:
+        return int(self.ok.shape[0])
+
+    def _pair(self, xy) -> np.ndarray:
+        out = np.empty((self.n, 2))
+        out[:, 0] = xy[0]
+        out[:, 1] = xy[1]
+        out[~self.ok] = np.nan
+        return out
+
+    def position(self, label: str) -> np.ndarray:
+        return self._pair(self._pos[self._known(label, self._pos)])
+
+    def velocity(self, label: str) -> np.ndarray:
+        return self._pair(self._k.of(Diagram.VELOCITY, self._known(label, self._pos)))
+
+    def acceleration(self, label: str) -> np.ndarray:
+        return self._pair(self._k.of(Diagram.ACCELERATION, self._known(label, self._pos)))
+
+    def omega(self, link: str) -> np.ndarray:
+        return self._scalar(self._links[0][self._known(link, self._links[0])])
+
+    def alpha(self, link: str) -> np.ndarray:
+        return self._scalar(self._links[1][self._known(link, self._links[1])])
+
+    def _scalar(self, v) -> np.ndarray:
+        out = np.array(np.broadcast_to(v, (self.n,)), dtype=float)
+        out[~self.ok] = np.nan
+        return out
+
+    def _known(self, name, table):
+        if name not in table:
+            raise UnknownLabelError(f"unknown name {name!r}: {suggest(name, table)}",
+                                    file=self.scene.file)
+        return name
+
+    @cached_property
+    def errors(self) -> tuple[RowError, ...]:
+        """One :class:`RowError` per failed row (the first failure in construction order)."""
+        out = []
+        for i in np.flatnonzero(~self.ok):
+            where, why = self._where[int(self._fail[i]) - 1]
+            out.append(RowError(int(i), where, why(int(i)) if callable(why) else why))
+        return tuple(out)
+
+
+def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
+               grid: bool = False, engine: str = "compiled", **arrays) -> Batch:
+    """Solve ``scene`` once per row of the given quantities (see the module docstring), or
+    for every combination of them with ``grid=True``; scalars broadcast.  ``engine``:
+    'compiled' (the construction compiled for arrays, :mod:`polygons.compiled`) or 'kernel'
+    (each dyad's ``locate`` and the interpreter kernel on (2, N)): the same numbers."""
+    given = dict(values or {})
+    given.update(arrays)
+    names = _quantities(scene)
+    cols = {}
+    for name, v in given.items():
+        if name not in names:
+            raise UnknownLabelError(f"cannot vary {name!r}: {suggest(name, names)} (a link's "
+                                    f"length by its name, a fixed point's G_x / G_y, the input "
+                                    f"{', '.join(n for n in names if n in _DRIVER_NAMES)})",
+                                    file=scene.file)
+        a = np.asarray(v, dtype=float)
+        if a.ndim > 1:
+            raise PolygonsError(f"{name}: expected a 1-D array of values, got shape {a.shape}",
+                                file=scene.file)
+        cols[name] = a
+    if grid:
+        shape = tuple(np.atleast_1d(a).shape[0] for a in cols.values())
+        mesh = np.meshgrid(*(np.atleast_1d(a) for a in cols.values()), indexing="ij")
+        cols = {k: m.reshape(-1) for k, m in zip(cols, mesh)}
+    else:
+        try:
+            b = np.broadcast_arrays(*cols.values()) if cols else []
+        except ValueError:
+            raise PolygonsError("the arrays have different lengths: "
+                                + ", ".join(f"{k} {np.shape(a)}" for k, a in cols.items())
+                                + " (give equal lengths, or grid=True / --grid for every "
+                                  "combination)",
+                                file=scene.file) from None
+        cols = {k: np.atleast_1d(v) for k, v in zip(cols, b)}
+        shape = (next(iter(cols.values())).shape[0],) if cols else (1,)
+    n = int(np.prod(shape))
+    solve = {"compiled": _solve_compiled, "kernel": _solve_kernel}[engine]
+    from .compiled import NotCompiled
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        try:
+            return solve(scene, cols, shape, n)
+        except NotCompiled:      # a dyad the generator does not cover: the kernel solves it
+            return _solve_kernel(scene, cols, shape, n)
+
+
+_DRIVER_NAMES = ("theta", "s", "omega", "alpha", "velocity", "acceleration")
+
+
+def _quantities(scene: Scene) -> list[str]:
+    names = list(scene.links)
+    for g in scene.ground:
+        names += [f"{g}_x", f"{g}_y"]
+    names += (["theta", "omega", "alpha"] if isinstance(scene.driver, Crank)
+              else ["s", "velocity", "acceleration"])
+    return names
+
+
+def _varied_scene(scene: Scene, cols: dict, n: int) -> tuple[Scene, np.ndarray]:
+    """The scene with array values (each (N,)) in place of the varied quantities, and the
+    driver input of every row."""
+    full = lambda a: np.broadcast_to(a, (n,))  # noqa: E731
+    links = {k: (replace(l, length=full(cols[k])) if k in cols else l)
+             for k, l in scene.links.items()}
+    ground = {}
+    for g, (x, y) in scene.ground.items():
+        ground[g] = (full(cols[f"{g}_x"]) if f"{g}_x" in cols else x,
+                     full(cols[f"{g}_y"]) if f"{g}_y" in cols else y)
+    drv = scene.driver
+    if isinstance(drv, Crank):
+        drv = replace(drv, omega=full(cols["omega"]) if "omega" in cols else drv.omega,
+                      alpha=full(cols["alpha"]) if "alpha" in cols else drv.alpha)
+        x = full(cols["theta"]) if "theta" in cols else np.full(n, drv.angle)
+    else:
+        drv = replace(drv, velocity=full(cols["velocity"]) if "velocity" in cols
+                      else drv.velocity,
+                      acceleration=full(cols["acceleration"]) if "acceleration" in cols
+                      else drv.acceleration)
+        x = full(cols["s"]) if "s" in cols else np.full(n, drv.position)
+    return replace(scene, links=links, ground=ground, driver=drv), np.asarray(x, dtype=float)
+
+
+def _row_scene(scene: Scene, cols: dict, i: int) -> Scene:
+    one = {k: v[i:i + 1] for k, v in cols.items()}
+    vs, x = _varied_scene(scene, one, 1)
+    links = {k: replace(l, length=None if l.length is None else float(np.ravel(l.length)[0]))
+             for k, l in vs.links.items()}
+    ground = {g: (float(np.ravel(a)[0]), float(np.ravel(b)[0])) for g, (a, b) in vs.ground.items()}
+    return replace(vs, links=links, ground=ground), float(x[0])
+
+
+_PREPARED: dict = {}
+
+
+def prepare(scene: Scene):
+    """(plan, sweep program, step program) of ``scene``, made once per scene object: the
+    closures of the scene's own assembly, which every row follows."""
+    hit = _PREPARED.get(id(scene))
+    if hit is not None and hit[0] is scene:
+        return hit[1:]
+    plan = make_plan(scene)
+    prog = compile_plan(scene, plan)
+    steps = construction(plan)
+    if len(_PREPARED) > 64:
+        _PREPARED.clear()
+    _PREPARED[id(scene)] = (scene, plan, prog, steps)
+    return plan, prog, steps
+
+
+class _Polygons:
+    """The polygon vertices of every row, read like a kernel's (``of(diagram, label)``)."""
+
+    def __init__(self, vx):
+        self.vx = vx
+
+    def of(self, diagram, label):
+        return self.vx[(str(diagram), label)]
+
+
+def _solve_compiled(scene: Scene, cols: dict, shape, n: int) -> Batch:
+    """The rows by the construction compiled for arrays (:func:`polygons.compiled.
+    compile_arrays`), the varied quantities passed as (N,) parameters."""
+    from .compiled import compile_arrays
+    plan, prog, steps = prepare(scene)
+    vs, x = _varied_scene(scene, cols, n)
+    fail, where, mark = _failures(scene, cols, n)
+    code, _ = compile_arrays(scene, plan, dict(prog.sigma))
+    params = tuple(prog.sigma[g[1]] if isinstance(g, tuple) else g(vs) for g in code.getters)
+    idx = code.index
+    r = code.fn(x, params)
+    full = lambda v: np.broadcast_to(v, (n,))  # noqa: E731
+    pos, vx = {}, {}
+    for (key, label), ij in idx.items():
+        if key == "pos":
+            pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+        elif key in ("velocity", "acceleration"):
+            vx[(key, label)] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+    for i, d in zip(idx[("margins", "")], idx[("margin_of", "")]):
+        m = full(r[i])
+        mark(~(m >= 0) if d.two_closures else ~(m > 0),
+             getattr(d, "lever", None) or d.placed[0], _why_not(scene, cols, d))
+    cmin = dmin = None
+    for i, j, s in idx[("crossings", "")]:
+        c, d = np.abs(full(r[i])), np.abs(full(r[j]))
+        if cmin is None:
+            cmin, dmin = c, d
+        else:
+            lower = c * dmin < cmin * d
+            cmin, dmin = np.where(lower, c, cmin), np.where(lower, d, dmin)
+        mark(~(c >= _TAN_PARALLEL * d), f"{s.diagram} {s.number} ({s.draws})",
+             _parallel(steps, s))
+    k = _Polygons(vx)
+    W = {name: full(r[i]) for (key, name), i in idx.items() if key == "omega"}
+    AL = {name: full(r[i]) for (key, name), i in idx.items() if key == "alpha"}
+    return _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin)
+
+
+def _failures(scene, cols, n):
+    fail = np.zeros(n, dtype=np.int64)
+    where: list = []
+
+    def mark(bad, label, why):
+        new = bad & (fail == 0)
+        if new.any():
+            where.append((label, why))
+            fail[new] = len(where)
+
+    for name, a in cols.items():
+        if name in scene.links:
+            mark(~(np.broadcast_to(a, (n,)) > 0), name, f"the length of {name} must be positive")
+    return fail, where, mark
+
+
+def _parallel(steps, s):
+    return lambda i: (f"the {_draws(steps, s.diagram, s.lines[0])} and the "
+                      f"{_draws(steps, s.diagram, s.lines[1])} are parallel: the mechanism is "
+                      f"at a toggle or change point")
+
+
+def _solve_kernel(scene: Scene, cols: dict, shape, n: int) -> Batch:
+    """The rows by each dyad's ``locate`` and the interpreter kernel on (2, N) arrays."""
+    plan, prog, steps = prepare(scene)
+    vs, x = _varied_scene(scene, cols, n)
+    fail, where, mark = _failures(scene, cols, n)
+    # positions: each dyad's locate on (2, N)
+    pos = {}
+    for g, (gx, gy) in vs.ground.items():
+        pos[g] = np.array([np.broadcast_to(gx, (n,)), np.broadcast_to(gy, (n,))], dtype=float)
+    for d in plan.dyads:
+        pts, m = d.locate(vs, pos, prog.sigma.get(d.placed[0]), x)
+        pos.update({k: np.broadcast_to(v, (2, n)) for k, v in pts.items()})
+        if m is not None:
+            m = np.broadcast_to(m, (n,))
+            bad = ~(m >= 0) if d.two_closures else ~(m > 0)
+            mark(bad, getattr(d, "lever", None) or d.placed[0], _why_not(scene, cols, d))
+    # rates: the kernel over the step program
+    omega, alpha = {}, {}
+    drv = vs.driver
+    if isinstance(drv, Crank):
+        omega[drv.link] = np.broadcast_to(drv.omega, (n,))
+        alpha[drv.link] = np.broadcast_to(drv.alpha, (n,))
+    k = Kernel(vs, pos, Vertices(scene), Backend(), omega, alpha, arrays=True)
+    # conditioning: the staged solver's angle between the lines, atan2(|u × v|, |u · v|),
+    # taken once at the end from the (|u × v|, |u · v|) pair with the smallest ratio
+    cmin = dmin = None
+    for s in steps:
+        k.run(s)
+        if s.op == "intersect":
+            l1, l2 = (k.lines[(s.diagram, j)] for j in s.lines)
+            u, v = l1[1], l2[1]
+            c = np.broadcast_to(np.abs(u[0] * v[1] - u[1] * v[0]), (n,))
+            d = np.broadcast_to(np.abs(u[0] * v[0] + u[1] * v[1]), (n,))
+            if cmin is None:
+                cmin, dmin = c, d
+            else:
+                lower = c * dmin < cmin * d
+                cmin, dmin = np.where(lower, c, cmin), np.where(lower, d, dmin)
+            # below PARALLEL_DEG: atan2(c, d) < 1e-5°, i.e. c < tan(1e-5°) d
+            mark(~(c >= _TAN_PARALLEL * d), f"{s.diagram} {s.number} ({s.draws})",
+                 _parallel(steps, s))
+    W, AL = dict(k.omega), dict(k.alpha)
+    return _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin)
+
+
+def _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin):
+    from .theorems import angular_acceleration, angular_velocity
+    for name, a, b in prog.links:
+        if name in W or a not in pos or b not in pos:
+            continue
+        r = pos[b] - pos[a]
+        W[name] = angular_velocity(r, _rel(k, Diagram.VELOCITY, b, a, n))
+        AL[name] = angular_acceleration(r, _rel(k, Diagram.ACCELERATION, b, a, n))
+    angle = np.degrees(np.arctan2(cmin, dmin)) if cmin is not None else np.full(n, np.nan)
+    angle[fail != 0] = np.nan
+    batch = Batch(scene, plan, {kk: np.broadcast_to(v, (n,)) for kk, v in cols.items()}, shape,
+                  pos, k, (W, AL), fail, angle)
+    batch._where = where
+    return batch
+
+
+def _rel(k, d, b, a, n):
+    return (np.broadcast_to(k.of(d, b), (2, n)) if k.of(d, b).ndim > 1 else
+            np.broadcast_to(np.reshape(k.of(d, b), (2, 1)), (2, n))) - \
+        (np.broadcast_to(k.of(d, a), (2, n)) if k.of(d, a).ndim > 1 else
+         np.broadcast_to(np.reshape(k.of(d, a), (2, 1)), (2, n)))
+
+
+def _draws(steps, diagram, number) -> str:
+    for s in steps:
+        if s.diagram == diagram and s.number == number:
+            return s.draws
+    return "line"
+
+
+def _why_not(scene, cols, dyad):
+    """The dyad's own sentence, for one failed row (evaluated only when asked)."""
+    def why(i: int) -> str:
+        row, x = _row_scene(scene, cols, i)
+        plan = make_plan(row)
+        prog_sigma = prepare(scene)[1].sigma
+        pos = {g: np.array(v, dtype=float) for g, v in row.ground.items()}
+        for d in plan.dyads:
+            if d == dyad:
+                return d.why_not(row, pos)
+            pts, _ = d.locate(row, pos, prog_sigma.get(d.placed[0]), x)
+            pos.update(pts)
+        return "cannot be placed"
+    return why

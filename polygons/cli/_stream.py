@@ -1,0 +1,176 @@
+"""``polygons sweep`` for long sweeps (``--steps`` ≥ ``STREAM_FROM``), in constant memory: the
+positions are solved chunk by chunk (:func:`polygons.sweep.stream`), each chunk appended to the
+CSV and folded into the summary (:class:`polygons.sweep.Extremes`: maxima and where they occur,
+the smallest construction angle) and then dropped.  The plots are drawn from every k-th
+position (at most ``PLOT_POINTS`` per curve, as for a short sweep).
+"""
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import UnknownLabelError, suggest
+from ..scene import Crank, Scene
+from ..streams import Extremes, evaluate_compiled, plan_stream, stream
+from ..sweep import _segments, sweep
+
+PLOT_POINTS = 4000
+
+
+def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> int:
+    n = opt["steps"]
+    st = plan_stream(scene, n)
+    probe = evaluate_compiled(st, st.inputs(0, 2))
+    labels = [k for k in probe["pos"]]
+    for lab in opt["points"] or []:
+        if lab not in labels:
+            raise UnknownLabelError(f"unknown point {lab!r}: {suggest(lab, labels)}",
+                                    file=scene.file, where="sweep.points")
+    for name in opt["links"] or []:
+        if name not in probe["omega"]:
+            raise UnknownLabelError(f"unknown link {name!r}: {suggest(name, probe['omega'])}",
+                                    file=scene.file, where="sweep.links")
+    drv = scene.driver
+    points = opt["points"] or ([s for s in scene.sliders if s in probe["travel"]
+                                and not (not isinstance(drv, Crank) and s == drv.point)]
+                               or [st.prog.plan.dyads[-1].placed[-1]])
+    crank = drv.link if isinstance(drv, Crank) else None
+    links = opt["links"] if opt["links"] is not None else [k for k in probe["omega"]
+                                                           if k != crank]
+    out = Path(args.out)
+    stem = out / f"{Path(args.scene).stem}-sweep"
+    path = stem.with_suffix(".csv")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    ext = Extremes()
+    bar = None
+    if progress:
+        from tqdm import tqdm
+        bar = tqdm(total=n, unit="pos", unit_scale=True, desc="sweep", file=sys.stderr,
+                   leave=False)
+    try:
+        with open(path, "w") as fh:
+            head = None
+            for s, xs, res in stream(st):
+                cols = _columns(st, xs, res, points, links)
+                if head is None:
+                    head = ",".join(f"{name} [{unit}]" for name, unit, _ in cols)
+                    fh.write(head + "\n")
+                data = np.column_stack([np.broadcast_to(c, xs.shape) for _, _, c in cols])
+                np.savetxt(fh, data, delimiter=",", fmt="%.17g")
+                ext.add_chunk(xs, res)
+                if bar is not None:
+                    bar.update(len(xs))
+    finally:
+        if bar is not None:
+            bar.close()
+    written = [path]
+    if not args.no_plot:
+        k = max(1, math.ceil(n / PLOT_POINTS))
+        idx = np.arange(0, n, k)
+        xs = st.inputs(0, n)[idx] if n <= 10 * PLOT_POINTS else _inputs_at(st, idx)
+        sw = sweep(scene, inputs=xs)
+        toggles = [lim for lim in st.limits if lim.kind == "toggle"]
+        sw = replace(sw, full_cycle=st.full_cycle, range=st.range, limits=st.limits,
+                     segments=_segments(xs, toggles, st.full_cycle))
+        formats = [f.strip() for f in args.formats.split(",") if f.strip()]
+        written += plot(sw, points, links, {}, opt["unit"], stem, formats)
+    sys.stdout.write(_summary(st, ext, points, links, opt["unit"], units, written, k_plot=(
+        max(1, math.ceil(n / PLOT_POINTS)) if not args.no_plot else None)))
+    return 0
+
+
+def _inputs_at(st, idx):
+    lo, hi = st.range
+    k = idx.astype(float)
+    if st.full_cycle:
+        return 2.0 * math.pi * k / st.n
+    return lo + (hi - lo) * (k + 0.5) / st.n
+
+
+def _columns(st, xs, res, points, links):
+    cols = []
+    if st.prog.input_kind == "crank":
+        cols += [("theta", "rad", xs), ("theta_deg", "deg", np.degrees(xs))]
+    else:
+        cols.append(("s_input", "m", xs))
+    zero = (0.0, 0.0)
+    for lab in points:
+        P = res["pos"][lab]
+        V = res["vel"].get(lab) or zero
+        A = res["acc"].get(lab) or zero
+        cols += [(f"{lab}.x", "m", P[0]), (f"{lab}.y", "m", P[1]),
+                 (f"{lab}.vx", "m/s", V[0]), (f"{lab}.vy", "m/s", V[1]),
+                 (f"{lab}.ax", "m/s^2", A[0]), (f"{lab}.ay", "m/s^2", A[1])]
+        if lab in res["travel"]:
+            cols.append((f"{lab}.s", "m", res["travel"][lab]))
+        if lab in res["slide_v"]:
+            cols += [(f"{lab}.v_s", "m/s", res["slide_v"][lab]),
+                     (f"{lab}.a_s", "m/s^2", res["slide_a"][lab])]
+    for name in links:
+        cols += [(f"{name}.omega", "rad/s", res["omega"][name]),
+                 (f"{name}.alpha", "rad/s^2", res["alpha"][name])]
+    m = res["margin"]
+    with np.errstate(invalid="ignore"):
+        cols.append(("min_angle", "deg",
+                     np.degrees(np.arcsin(np.where(m >= 0, np.minimum(m, 1.0), np.nan)))))
+    return cols
+
+
+def _at(st, x: float) -> str:
+    if st.prog.input_kind == "crank":
+        deg = math.degrees(x)
+        return f"θ = {deg % 360.0 if st.full_cycle else deg:.4g}°"
+    return f"s = {x * 1e3:.6g} mm"
+
+
+def _summary(st, ext: Extremes, points, links, unit, units, written, k_plot) -> str:
+    f, lu, vu, au = units(unit)
+    scene, drv = st.prog.scene, st.prog.scene.driver
+    out = [f"{scene.title}", f"  scene: {scene.file}", ""]
+    if isinstance(drv, Crank):
+        out.append(f"input: crank {drv.link}, ω = {abs(drv.omega):.6g} rad/s "
+                   f"{'CCW' if drv.omega > 0 else 'CW'}; {st.n} positions, streamed (summaries "
+                   f"on the stream, constant memory)")
+    else:
+        out.append(f"input: slider {drv.point}, v = {drv.velocity:.6g} m/s; {st.n} positions, "
+                   f"streamed (summaries on the stream, constant memory)")
+    lo, hi = st.range
+    out.append("range: full revolution, θ = 0…360° (every angle assembles)" if st.full_cycle
+               else f"range: {_at(st, lo)} … {_at(st, hi)} (reachable range)")
+    for lim in st.limits:
+        if lim.kind == "limit":
+            out.append(f"  limit at {_at(st, lim.input)}: {lim.reason}")
+    for w in st.warnings:
+        out.append(f"warning: {w}")
+    if ext.bad:
+        out.append(f"warning: {ext.bad} of {ext.n} positions cannot be assembled (NaN)")
+    if math.isfinite(ext.min_angle[0]):
+        out.append(f"conditioning: smallest construction angle {ext.min_angle[0]:.4g}° at "
+                   f"{_at(st, ext.min_angle[1])}")
+    out.append("")
+    for lab in points:
+        if f"travel:{lab}" in ext.max:
+            s_lo, s_hi = ext.max[f"travel:{lab}"]
+            out.append(f"point {lab}: travel {s_lo * f:.6g} … {s_hi * f:.6g} {lu} (stroke "
+                       f"{(s_hi - s_lo) * f:.6g} {lu})")
+        else:
+            out.append(f"point {lab}:")
+        for tag, u in (("v", vu), ("a", au)):
+            key = f"{tag}_s:{lab}" if f"{tag}_s:{lab}" in ext.max else f"{tag}:{lab}"
+            if key in ext.max:
+                val, x = ext.max[key]
+                out.append(f"  max |{tag}| = {val * f:.10g} {u} at {_at(st, x)}")
+    for name in links:
+        w, xw = ext.max.get(f"omega:{name}", (math.nan, math.nan))
+        a, xa = ext.max.get(f"alpha:{name}", (math.nan, math.nan))
+        out.append(f"link {name}: max |ω| = {w:.6g} rad/s at {_at(st, xw)}; max |α| = "
+                   f"{a:.6g} rad/s² at {_at(st, xa)}")
+    out.append("")
+    if k_plot:
+        out.append(f"plots drawn from every {k_plot}th position")
+    out.append("written: " + ", ".join(str(p) for p in written))
+    return "\n".join(out) + "\n"

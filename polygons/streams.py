@@ -1,0 +1,202 @@
+"""Sweeps of any length in constant memory: the positions solved chunk by chunk and the
+summaries (maxima and where they occur, the smallest construction angle) folded on the stream.
+
+:func:`plan_stream` does what :func:`polygons.sweep.sweep` does before solving (plan, the
+branch of every closure, the reachable range, limits and toggles) and compiles the construction
+for arrays (:func:`polygons.compiled.compile_arrays`); :func:`stream` then yields
+``(start, inputs, results)`` chunk by chunk, each chunk's inputs computed, never the whole
+sweep's; :class:`Extremes` keeps the summaries.  The results are those of
+:func:`polygons.sweep.evaluate`, bit for bit on the shipped cases (tests/test_stream.py).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import PolygonsError
+from .scene import Scene
+from .sweep import (CHUNK, PROBE, Limit, Program, _SIN_PARALLEL, _diff, _fmt_input,
+                    compile_plan, find_range)
+from .theorems import angular_acceleration, angular_velocity
+
+
+@dataclass(frozen=True)
+class Stream:
+    """A sweep planned but not yet run: what :func:`stream` needs to produce its positions
+    chunk by chunk, and what is known before the first one (range, limits, toggles)."""
+
+    prog: Program
+    n: int
+    full_cycle: bool
+    range: tuple[float, float]
+    limits: tuple[Limit, ...]
+    warnings: tuple[str, ...]
+    code: object = None       # the construction compiled for arrays (polygons.compiled)
+    params: tuple = ()
+
+    def inputs(self, s: int, e: int) -> np.ndarray:
+        """The inputs of positions ``s`` … ``e − 1`` (computed, never stored whole)."""
+        lo, hi = self.range
+        k = np.arange(s, e, dtype=float)
+        if self.full_cycle:
+            return 2.0 * math.pi * k / self.n
+        return lo + (hi - lo) * (k + 0.5) / self.n
+
+
+def plan_stream(scene: Scene, steps: int, *, probe: int = PROBE) -> Stream:
+    """The sweep :func:`sweep` would run over ``steps`` positions, as a :class:`Stream`."""
+    if steps < 2:
+        raise PolygonsError(f"a sweep needs at least 2 steps, got {steps}", file=scene.file)
+    prog = compile_plan(scene)
+    full, rng, limits, toggles = find_range(prog, probe)
+    if full:
+        rng = (0.0, 2.0 * math.pi)
+    warnings = []
+    for tg in toggles:
+        where = _fmt_input(prog, tg.input)
+        warnings.append(f"toggle at {where}: {tg.reason}" if tg.kind == "toggle" else
+                        f"near toggle at {where}: {tg.reason}; the construction lines meet "
+                        f"at only {tg.angle_deg:.3g}°")
+    from .compiled import NotCompiled, compile_arrays
+    try:
+        code, params = compile_arrays(scene, prog.plan, dict(prog.sigma))
+    except NotCompiled:          # the kernel (polygons.sweep.evaluate) solves each chunk
+        code, params = None, ()
+    return Stream(prog, steps, full, rng, tuple(limits) + tuple(toggles), tuple(warnings),
+                  code, params)
+
+
+def stream(st: Stream, *, chunk: int = CHUNK * 16):
+    """Yield ``(start, inputs, results)`` for consecutive chunks of ``st``'s positions: the
+    results of :func:`evaluate` (toggle positions NaN), in memory one chunk at a time, so a
+    sweep of any length runs in constant memory."""
+    for s in range(0, st.n, chunk):
+        e = min(st.n, s + chunk)
+        xs = st.inputs(s, e)
+        res = evaluate_compiled(st, xs)
+        m = res["margin"]
+        at = np.isfinite(m) & (m >= 0) & (m < _SIN_PARALLEL)
+        if at.any():
+            _undefine_chunk(res, at)
+        yield s, xs, res
+
+
+def evaluate_compiled(st: Stream, xs: np.ndarray) -> dict:
+    """:func:`evaluate`'s results for the inputs ``xs``, from the construction compiled for
+    arrays (:func:`polygons.compiled.compile_arrays`: the same steps as straight-line numpy,
+    only what the results need): equal to :func:`evaluate` to rounding.  Where nothing was
+    compiled (a dyad the generator does not cover) the kernel's :func:`evaluate` runs."""
+    if st.code is None:
+        from .sweep import evaluate
+        return evaluate(st.prog, xs)
+    prog, idx = st.prog, st.code.index
+    scene = prog.scene
+    n = xs.shape
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        r = st.code.fn(xs, st.params)
+        full = lambda v: np.broadcast_to(v, n)  # noqa: E731
+        P, V, A = {}, {}, {}
+        pos = {}
+        for (key, label), ij in idx.items():
+            if key == "pos":
+                if label in prog.ground:
+                    P[label] = prog.ground[label]
+                else:
+                    P[label] = (r[ij[0]], r[ij[1]])
+                pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+        for label in pos:
+            if label in prog.ground:
+                V[label] = A[label] = None
+                continue
+            i, j = idx[("velocity", label)]
+            V[label] = (full(r[i]), full(r[j]))
+            i, j = idx[("acceleration", label)]
+            A[label] = (full(r[i]), full(r[j]))
+        W = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
+             if key == "omega"}
+        AL = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
+              if key == "alpha"}
+        for name, a, b in prog.links:
+            if name in W or a not in pos or b not in pos:
+                continue
+            rr = pos[b] - pos[a]
+            W[name] = angular_velocity(rr, _diff(V[b], V[a]))
+            AL[name] = angular_acceleration(rr, _diff(A[b], A[a]))
+        travel, SV, SA = {}, {}, {}
+        for label, g in scene.sliders.items():
+            if label in pos and label not in prog.ground:
+                e = g.direction
+                travel[label] = ((pos[label][0] - g.through[0]) * e[0]
+                                 + (pos[label][1] - g.through[1]) * e[1])
+                SV[label] = V[label][0] * e[0] + V[label][1] * e[1]
+                SA[label] = A[label][0] * e[0] + A[label][1] * e[1]
+        for (key, k), i in idx.items():
+            if key == "slide_v":
+                SV[k] = full(r[i])
+            elif key == "slide_a":
+                SA[k] = full(r[i])
+        COR = {k: (full(r[ij[0]]), full(r[ij[1]])) for (key, k), ij in idx.items()
+               if key == "coriolis"}
+        margin = np.ones(n)
+        for i in idx[("margins", "")]:
+            margin = np.minimum(margin, r[i])
+    return {"pos": P, "travel": travel, "margin": margin, "vel": V, "acc": A, "omega": W,
+            "alpha": AL, "slide_v": SV, "slide_a": SA, "coriolis": COR}
+
+
+def _undefine_chunk(res: dict, mask: np.ndarray) -> None:
+    for key in ("vel", "acc", "coriolis"):
+        res[key] = {lab: (None if xy is None else
+                          tuple(np.where(mask, np.nan, np.broadcast_to(c, mask.shape))
+                                for c in xy))
+                    for lab, xy in res[key].items()}
+    for key in ("omega", "alpha", "slide_v", "slide_a"):
+        res[key] = {lab: np.where(mask, np.nan, np.broadcast_to(v, mask.shape))
+                    for lab, v in res[key].items()}
+
+
+class Extremes:
+    """Summaries computed on the stream: for every quantity ``key`` fed to :meth:`add`, the
+    largest magnitude and the input where it occurs (NaN positions skipped), plus the smallest
+    construction angle and the count of positions that could not be assembled."""
+
+    def __init__(self):
+        self.max: dict[str, tuple[float, float]] = {}     # key -> (|value|, input)
+        self.min_angle = (math.inf, math.nan)
+        self.bad = 0
+        self.n = 0
+
+    def add(self, key: str, values, xs) -> None:
+        v = np.abs(np.broadcast_to(values, xs.shape))
+        if not np.isfinite(v).any():
+            return
+        i = int(np.nanargmax(v))
+        if key not in self.max or v[i] > self.max[key][0]:
+            self.max[key] = (float(v[i]), float(xs[i]))
+
+    def add_chunk(self, xs, res) -> None:
+        """Every point's |v|, |a|, every link's |ω|, |α|, every slide's rates and travel."""
+        self.n += len(xs)
+        m = res["margin"]
+        self.bad += int((~np.isfinite(m) | (m < 0)).sum())
+        with np.errstate(invalid="ignore"):
+            ang = np.degrees(np.arcsin(np.where(m >= 0, np.minimum(m, 1.0), np.nan)))
+        if np.isfinite(ang).any():
+            i = int(np.nanargmin(ang))
+            if ang[i] < self.min_angle[0]:
+                self.min_angle = (float(ang[i]), float(xs[i]))
+        for key, tag in (("vel", "v"), ("acc", "a")):
+            for lab, xy in res[key].items():
+                if xy is not None:
+                    self.add(f"{tag}:{lab}", np.sqrt(xy[0] * xy[0] + xy[1] * xy[1]), xs)
+        for key, tag in (("omega", "omega"), ("alpha", "alpha"), ("slide_v", "v_s"),
+                         ("slide_a", "a_s")):
+            for lab, v in res[key].items():
+                self.add(f"{tag}:{lab}", v, xs)
+        for lab, s in res["travel"].items():
+            lo, hi = self.max.get(f"travel:{lab}", (math.inf, -math.inf))
+            with np.errstate(invalid="ignore"):
+                self.max[f"travel:{lab}"] = (min(lo, float(np.nanmin(s))),
+                                             max(hi, float(np.nanmax(s))))
