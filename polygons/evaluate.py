@@ -7,7 +7,7 @@ intersections, with shapely (:mod:`polygons.geometry`).  Every number in a
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Iterable, Mapping
 
@@ -73,10 +73,23 @@ class Solution:
 
 
 def solve(scene: Scene, targets: Iterable[str] | None = None) -> Solution:
-    """scene → plan → position → evaluated construction → :class:`Solution`."""
-    plan = make_plan(scene, targets)
+    """scene → plan → position → evaluated construction → :class:`Solution`.
+
+    The plan and its steps depend on the scene's topology only, so they are made once per
+    scene (and ``targets``) and kept with it."""
+    plan, steps = planned(scene, tuple(targets) if targets is not None else None)
     placement = assemble(plan)
-    return evaluate(plan, placement, construction(plan))
+    return evaluate(plan, placement, steps)
+
+
+def planned(scene: Scene, targets: tuple[str, ...] | None = None):
+    """(plan, construction steps) of ``scene``, made on first use and kept with the scene."""
+    cache = scene.__dict__.setdefault("_planned", {})   # a memo beside the frozen fields
+    hit = cache.get(targets)
+    if hit is None:
+        plan = make_plan(scene, targets)
+        hit = cache[targets] = (plan, construction(plan))
+    return hit
 
 
 def link_ends(scene: Scene, name: str) -> tuple[str, str]:
@@ -124,14 +137,24 @@ def evaluate(plan: Plan, placement: Placement, steps: tuple[Step, ...]) -> Solut
         except PolygonsError as exc:
             raise exc.located(file=scene.file,
                               step=f"{step.diagram} {step.number} ({step.draws})") from None
-        filled = replace(step, at=_t(at) if at is not None else None,
-                         vector=_t(vec) if vec is not None else None,
-                         point=_t(point) if point is not None else None,
-                         direction=_t(direction) if direction is not None else None,
-                         value=float(value) if value is not None else None, unit=unit,
-                         angle_deg=angle, terms=terms_of(terms))
-        done.append(replace(filled, substituted=substitute(filled, scene)))
+        done.append(_filled(step, scene, at=_t(at) if at is not None else None,
+                            vector=_t(vec) if vec is not None else None,
+                            point=_t(point) if point is not None else None,
+                            direction=_t(direction) if direction is not None else None,
+                            value=float(value) if value is not None else None, unit=unit,
+                            angle_deg=angle, terms=terms_of(terms)))
     return _collect(plan, placement, k, tuple(done))
+
+
+def _filled(step: Step, scene: Scene, **numbers) -> Step:
+    """A copy of the planned ``step`` with its numbers and its substituted text: the frozen
+    record is built once, field by field (``dataclasses.replace`` re-runs ``__init__`` and
+    was a third of a solve)."""
+    new = object.__new__(Step)
+    new.__dict__.update(step.__dict__)
+    new.__dict__.update(numbers)
+    new.__dict__["substituted"] = substitute(new, scene)
+    return new
 
 
 def _n(v) -> float:

@@ -40,6 +40,7 @@ from ..plan import Step
 from ..quantities import dimension_of_quantity, quantity
 from ..scene import load_scene
 from ..units import parse_quantity
+from ._output import add_out_option, emit
 
 #: textbook prefix -> quantities function
 PREFIX = {"v": "v", "a": "a", "omega": "omega", "w": "omega", "alpha": "alpha", "an": "an",
@@ -585,6 +586,7 @@ def register(sub) -> None:
                    help="the scale the student drew at, for the 0.5 mm reading limit "
                         "(--scale velocity='2 m/s'; default: the diagrams' scale)")
     p.add_argument("--json", action="store_true", help="print a JSON object")
+    add_out_option(p)
     p.set_defaults(func=run)
 
 
@@ -611,7 +613,7 @@ def run(args) -> int:
     grades = grade(sol, measured, pct, scales, emulated)
     if args.json:
         from ..report import json_text
-        sys.stdout.write(json_text(to_json(sol, grades, pct_used, scales, bool(emulated))))
+        emit(json_text(to_json(sol, grades, pct_used, scales, bool(emulated))), args.out)
     else:
-        sys.stdout.write(report(sol, grades, pct_used, scales, bool(emulated)))
+        emit(report(sol, grades, pct_used, scales, bool(emulated)), args.out)
     return 0 if all(g.ok for g in grades) else 3

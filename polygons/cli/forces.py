@@ -17,6 +17,7 @@ from ..forces import (Analysis, State, analyse, check_force_answers, has_forces,
 from ..forces import machine
 from ..forces.model import position, unit_r
 from ..report import json_text
+from ._output import add_out_option, emit  # noqa: F401  (solve and api import them here)
 from ..scene import Crank, load_scene
 from ..theorems import perp
 
@@ -33,27 +34,6 @@ def register(sub) -> None:
     p.add_argument("--svg", metavar="DIR", help="also write a free-body diagram and a force "
                                                "polygon (SVG) per body and state to DIR")
     p.set_defaults(func=run)
-
-
-def add_out_option(p) -> None:
-    """``-o/--out FILE``: the table (or JSON) goes to FILE instead of standard output."""
-    p.add_argument("-o", "--out", metavar="FILE",
-                   help="write the table (or the JSON with --json) to FILE instead of standard "
-                        "output")
-
-
-def emit(text: str, out: str | None) -> None:
-    """Write ``text`` to standard output, or to the file ``out``."""
-    if not out:
-        sys.stdout.write(text)
-        return
-    path = Path(out)
-    if path.is_dir():
-        raise PolygonsError(f"{path} is a folder: -o takes a file name", where=str(path))
-    try:
-        path.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        raise PolygonsError(f"cannot write {path} ({exc.strerror})", where=str(path)) from None
 
 
 def run(args) -> int:

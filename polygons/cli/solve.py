@@ -1,9 +1,8 @@
 """``polygons solve CASE.toml``: the numbers, the construction and the conditioning."""
 from __future__ import annotations
 
-from .forces import add_out_option, emit, forces_table, to_dict
+from ._output import add_out_option, emit
 from ..evaluate import solve
-from ..forces import analyse, has_forces
 from ..report import json_text, table, to_json
 from ..scene import load_scene
 
@@ -33,7 +32,10 @@ def run(args) -> int:
     targets = [t.strip() for t in args.points.split(",")] if args.points else None
     sol = solve(scene, targets)
     forces = None
-    if has_forces(scene):            # bad force tables fail before anything is written
+    if scene.loads is not None and scene.loads.active:   # bad force tables fail first
+        # (the forces package is imported only for a scene with loads: a quicker start)
+        from ..forces import analyse
+        from .forces import forces_table, to_dict
         forces = analyse(scene)
     if args.svg:
         from .draw import write_diagrams

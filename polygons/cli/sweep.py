@@ -46,7 +46,8 @@ def register(sub) -> None:
                                     "points, else the sliders, else the last point placed)")
     p.add_argument("--links", help="comma-separated link names for ω/α (default: [sweep] "
                                    "links, else every link but the crank)")
-    p.add_argument("--out", default="out", help="output directory (default: out)")
+    p.add_argument("-o", "--out", default="out", metavar="DIR",
+                   help="output directory (default: out)")
     p.add_argument("--formats", default="png,svg", help="plot formats (default: png,svg)")
     p.add_argument("--no-plot", action="store_true", help="write the CSV only")
     p.add_argument("--shm", action="store_true", default=None,
