@@ -271,6 +271,7 @@ def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = No
         _blanks(doc, sol, file)
     else:
         _results(doc, sol)
+        _centres(doc, sol)
         _comparison(doc, sol)
         _about(doc, sol)
     _footer(doc, sol, worksheet, file)
@@ -642,6 +643,29 @@ def _results(doc: _Doc, sol: Solution) -> None:
     for w in sol.warnings:
         doc.add(f'<p class="note"><strong>Warning:</strong> {esc(w)}</p>\n')
     doc.add("</section>\n")
+
+
+def _centres(doc: _Doc, sol: Solution) -> None:
+    """The same velocities by the instantaneous centres (Kennedy's theorem), as a check."""
+    from polygons.centres import instant_centres
+    from polygons.errors import PolygonsError
+    from .centres import centres_figure
+    try:
+        cs, svg = instant_centres(sol), centres_figure(sol)
+    except PolygonsError as exc:
+        doc.add(f'<section id="centres">\n<h2>{doc.sec()}. Instantaneous centres</h2>\n'
+                f"<p>Not drawn for this mechanism: {esc(exc.reason)}.</p>\n</section>\n")
+        return
+    w, h = svg_size(svg)
+    vel = "".join(f"<li>{sym(pv.how)}</li>\n" for lab, pv in cs.velocities.items()
+                  if lab not in sol.scene.ground)
+    doc.add(f'<section id="centres" class="plate portrait">\n<h2>{doc.sec()}. Instantaneous '
+            f"centres</h2>\n<p>The same velocities found another way: every centre by "
+            f"Kennedy's theorem (any three links' centres lie on one line), then v = ω × the "
+            f"radius from the link's centre relative to the frame. They agree with the "
+            f"polygon.</p>\n<figure class=\"diagram full\">"
+            f"{inline_svg(svg, 'centres', 'figure', min(w, PORTRAIT[0]), 'Instant centres')}"
+            f"</figure>\n<p>Velocities by the centres:</p>\n<ul>\n{vel}</ul>\n</section>\n")
 
 
 def _comparison(doc: _Doc, sol: Solution) -> None:
