@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 
 from polygons.errors import PolygonsError, SceneError, suggest
-from polygons.units import UNITS, parse_quantity
+from polygons.units import UNITS
 
 from .text import plain
 
@@ -128,33 +128,12 @@ def choose(quantity: str, extent: tuple[float, float], vectors: list[float] = ()
 
 def parse(text, quantity: str, *, file: str | None = None, where: str | None = None
           ) -> Scale:
-    """Read a forced scale: '2 m/s', '1 cm = 2 m/s', '20 mm' (per cm of paper)."""
-    dims = {"length": "length", "velocity": "velocity", "acceleration": "acceleration"}
+    """Read a forced scale: '2 m/s', '1 cm = 2 m/s', '20 mm' (per cm of paper), with the
+    scene loader's own reading (:func:`polygons.options.scale_per_cm`)."""
+    from polygons.options import scale_per_cm
     err = SceneError if file else ScaleError
-    if not isinstance(text, str):
-        raise err(f"a scale is text such as '1 cm = 2 m/s', got {text!r}", file=file,
-                  where=where)
-    s = " ".join(text.split())
-    lhs = None
-    if "=" in s:
-        lhs, s = (part.strip() for part in s.split("=", 1))
-    per = 0.01
-    if lhs is not None:
-        try:
-            per = parse_quantity(lhs, "length")
-        except PolygonsError:
-            raise err(f"cannot read the paper length {lhs!r} in the scale {text!r}; write "
-                      f"'1 cm = 2 m/s'", file=file, where=where) from None
-        if per <= 0:
-            raise err(f"the paper length in {text!r} must be positive", file=file, where=where)
-    try:
-        value = parse_quantity(s, dims[quantity])
-    except PolygonsError as exc:
-        raise err(f"bad {quantity} scale {text!r}: {exc.reason}", file=file,
-                  where=where) from None
-    if not (value > 0 and math.isfinite(value)):
-        raise err(f"a scale must be positive, got {text!r}", file=file, where=where)
-    return make(quantity, value * 0.01 / per, forced=True)
+    per_cm = scale_per_cm(text, quantity, file=file, where=where, error=err)
+    return make(quantity, per_cm, forced=True)
 
 
 def check_size(scale: Scale, extent: tuple[float, float], kind: str) -> None:
