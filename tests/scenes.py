@@ -42,3 +42,26 @@ def slider_crank_case(r, ratio, theta, omega, alpha, line_dir, offset, branch):
         "assembly": {"B": {"near": [m(ref["B"][0]), m(ref["B"][1])]}},
     })
     return scene, ref
+
+
+#: the four-bar of S001-WE6's proportions (A, D 200 mm apart; AB 80, BC 136, CD 160 mm) as scene
+#: text: ``driver`` is the [driver] table's lines, ``extra`` more [links] lines and tables
+FOUR_BAR_TEXT = """
+[ground]
+A = ["0 mm", "0 mm"]
+D = ["200 mm", "0 mm"]
+[links]
+AB = "80 mm"
+BC = "136 mm"
+CD = "160 mm"
+{extra}
+[driver]
+crank = "AB"
+{driver}
+[assembly]
+C = "C {side} AD"
+"""
+
+
+def four_bar_text(driver: str, extra: str = "", side: str = "above") -> str:
+    return FOUR_BAR_TEXT.format(driver=driver.strip(), extra=extra.strip(), side=side)

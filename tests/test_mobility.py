@@ -12,24 +12,9 @@ from polygons.errors import PolygonsError
 from polygons.mobility import MobilityError, check_redundant_lengths, mobility
 from polygons.plan import make_plan
 from polygons.scene import load_scene, parse_scene
+from scenes import four_bar_text
 
-FOUR_BAR = """
-[ground]
-A = ["0 mm", "0 mm"]
-D = ["200 mm", "0 mm"]
-[links]
-AB = "80 mm"
-BC = "136 mm"
-CD = "160 mm"
-{extra}
-[driver]
-crank = "AB"
-angle = "60 deg"
-omega = "10 rad/s"
-sense = "CW"
-[assembly]
-C = "C above AD"
-"""
+FOUR_BAR = four_bar_text('angle = "60 deg"\nomega = "10 rad/s"\nsense = "CW"', "{extra}")
 
 REDUNDANT_QS = FOUR_BAR.format(extra='''QS = "50 mm"
 [points.Q]

@@ -13,6 +13,7 @@ from polygons.scene import load_scene
 import tomllib
 
 from polygons.scene import parse_scene
+from scenes import four_bar_text
 
 
 def scene_from_text(text):
@@ -35,23 +36,8 @@ def test_the_shipped_rest_case_agrees_with_the_loop_closure():
     assert cen and all(s.vector == (0.0, 0.0) for s in cen)
 
 
-FOURBAR = """
-[ground]
-A = ["0 mm", "0 mm"]
-D = ["200 mm", "0 mm"]
-[links]
-AB = "80 mm"
-BC = "136 mm"
-CD = "160 mm"
-[driver]
-crank = "AB"
-angle = "{angle} deg"
-omega = "0 rad/s"
-alpha = "{alpha} rad/s^2"
-alpha_sense = "CW"
-[assembly]
-C = "C below AD"
-"""
+FOURBAR = four_bar_text('angle = "{angle} deg"\nomega = "0 rad/s"\nalpha = "{alpha} rad/s^2"\n'
+                        'alpha_sense = "CW"', side="below")
 
 
 @pytest.mark.parametrize("angle,alpha", [(300, 200), (30, 1), (123.4, 5e3)])
