@@ -205,6 +205,8 @@ figure svg.drawing-area { max-width: none; }
 figcaption, .figure-note { font-size: 8.5pt; color: #333; }
 section.plate { break-inside: avoid; page-break-inside: avoid; margin-top: 4mm; }
 section.plate figure { margin: 0; }
+figure.centres { float: left; margin: 0 4mm 2mm 0; }
+section#centres { overflow: hidden; break-inside: avoid; }
 section.plate h3 { margin-top: 0; }
 .note { font-size: 9.5pt; }
 .slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
@@ -246,8 +248,9 @@ class _Doc:
 
 
 def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = None,
-            source_name: str | None = None) -> str:
-    """The handout (answer key) or, with ``worksheet``, the student's version, as HTML."""
+            source_name: str | None = None, centres: bool = False) -> str:
+    """The handout (answer key) or, with ``worksheet``, the student's version, as HTML;
+    ``centres`` adds the check by the instantaneous centres to the key."""
     scene = sol.scene
     figs = figures(sol) if figs is None else figs
     src = scene.source
@@ -271,7 +274,8 @@ def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = No
         _blanks(doc, sol, file)
     else:
         _results(doc, sol)
-        _centres(doc, sol)
+        if centres:
+            _centres(doc, sol)
         _comparison(doc, sol)
         _about(doc, sol)
     _footer(doc, sol, worksheet, file)
@@ -657,15 +661,15 @@ def _centres(doc: _Doc, sol: Solution) -> None:
                 f"<p>Not drawn for this mechanism: {esc(exc.reason)}.</p>\n</section>\n")
         return
     w, h = svg_size(svg)
-    vel = "".join(f"<li>{sym(pv.how)}</li>\n" for lab, pv in cs.velocities.items()
-                  if lab not in sol.scene.ground)
-    doc.add(f'<section id="centres" class="plate portrait">\n<h2>{doc.sec()}. Instantaneous '
+    vel = "; ".join(sym(pv.how) for lab, pv in cs.velocities.items()
+                    if lab not in sol.scene.ground)
+    doc.add(f'<section id="centres">\n<h2>{doc.sec()}. Instantaneous '
             f"centres</h2>\n<p>The same velocities found another way: every centre by "
             f"Kennedy's theorem (any three links' centres lie on one line), then v = ω × the "
             f"radius from the link's centre relative to the frame. They agree with the "
-            f"polygon.</p>\n<figure class=\"diagram full\">"
-            f"{inline_svg(svg, 'centres', 'figure', min(w, PORTRAIT[0]), 'Instant centres')}"
-            f"</figure>\n<p>Velocities by the centres:</p>\n<ul>\n{vel}</ul>\n</section>\n")
+            f"polygon.</p>\n<figure class=\"diagram centres\">"
+            f"{inline_svg(svg, 'centres', 'figure', min(w, 0.7 * PORTRAIT[0]), 'Instant centres')}"
+            f"</figure>\n<p>Velocities by the centres: {vel}.</p>\n</section>\n")
 
 
 def _comparison(doc: _Doc, sol: Solution) -> None:

@@ -42,12 +42,11 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Mapping
 
-from .errors import (SceneError, UnitError, UnknownKeyError, UnknownLabelError, UnsupportedError,
-                     suggest)
+from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, suggest
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
                         Friction, Joint, Loads, MassItem, SlotContact, Spring, bodies_of)
+from .reader import Reader
 from .schema import Key, Table
-from .units import parse_quantity
 
 Vec = tuple[float, float]
 
@@ -175,36 +174,7 @@ TABLES: tuple[Table, ...] = (
 
 
 # ---------------------------------------------------------------- reading values
-class _Values:
-    """Reads one force table's values with location-aware errors (units via polygons.units)."""
-
-    def __init__(self, file: str):
-        self.file = file
-
-    def table(self, data, where: str, allowed, required=()) -> dict:
-        if not isinstance(data, dict):
-            raise SceneError(f"expected a table, got {type(data).__name__}", file=self.file,
-                             where=where)
-        for key in data:
-            if key not in allowed:
-                raise UnknownKeyError(f"unknown key {key!r}: {suggest(key, allowed)}",
-                                      file=self.file, where=f"{where}.{key}" if where else key)
-        for key in required:
-            if key not in data:
-                raise SceneError(f"missing key {key!r} (required: {', '.join(required)})",
-                                 file=self.file, where=where)
-        return data
-
-    def quantity(self, value, dimension: str, where: str) -> float:
-        return parse_quantity(value, dimension, file=self.file, where=where)
-
-    def sense(self, value, where: str) -> int:
-        if value in ("CCW", "ccw", "anticlockwise", "anti-clockwise", "counter-clockwise"):
-            return 1
-        if value in ("CW", "cw", "clockwise"):
-            return -1
-        raise SceneError(f"sense must be 'CW' or 'CCW', got {value!r}", file=self.file,
-                         where=where)
+_Values = Reader        # the scene tables' one reader (polygons.reader)
 
 
 def _keys(name: str) -> tuple[str, ...]:

@@ -347,11 +347,12 @@ def test_the_key_checks_the_polygon_by_the_instant_centres():
     a mechanism the centres do not model says why instead of drawing something wrong."""
     from polygons.centres import instant_centres
     sol = solve(load_scene(CASES / "s001-we6.toml"))
-    key = handout(sol)
+    key = handout(sol, centres=True)
+    assert '<section id="centres"' not in handout(sol)          # on request only
     assert '<section id="centres"' in key and "Kennedy" in key
     v_c = instant_centres(sol).velocities["C"]
-    assert "= " + v_c.how.rsplit("= ", 1)[1] + "</li>" in key      # v_C by the centres
-    other = handout(solve(load_scene(CASES / "new-offset-slot.toml")))
+    assert "= " + v_c.how.rsplit("= ", 1)[1] in key      # v_C by the centres
+    other = handout(solve(load_scene(CASES / "new-offset-slot.toml")), centres=True)
     assert "Not drawn for this mechanism" in other
     assert "Kennedy" not in other.split('<section id="centres"')[1].split("</section>")[0]
-    assert '<section id="centres"' not in handout(sol, worksheet=True)
+    assert '<section id="centres"' not in handout(sol, worksheet=True, centres=True)

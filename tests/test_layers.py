@@ -18,7 +18,7 @@ WHERE = {
     "polygons.theorems": "base", "polygons.steps": "base",
     "polygons.scene": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
-    "polygons.scene_tables": "scene", "polygons.loadmodel": "scene",
+    "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
     "polygons.reference": "commands", "polygons.__main__": "commands",
     "polygons.plan": "plan", "polygons.dyads": "plan", "polygons.mobility": "plan",
     "polygons.interpret": "interpreters", "polygons.geometry": "interpreters",

@@ -34,6 +34,9 @@ def register(sub) -> None:
                    help="write the interactive construction page instead: one self-contained "
                         "HTML file stepping through the construction, with a crank-angle "
                         "slider (frames from the sweep)")
+    p.add_argument("--centres", action="store_true",
+                   help="add a section checking the velocities by the instantaneous centres "
+                        "(Kennedy's theorem, the circle diagram) to the answer key")
     p.add_argument("--pdf", action="store_true",
                    help="also print FILE.pdf next to FILE.html (needs headless Chromium)")
     p.add_argument("--scale", action="append", metavar="KIND=VALUE",
@@ -44,18 +47,19 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def build(scene_path: str, *, worksheet: bool = False, scale=None, paper=None) -> str:
+def build(scene_path: str, *, worksheet: bool = False, scale=None, paper=None,
+          centres: bool = False) -> str:
     from diagrams.handout import figures, handout
     from diagrams.scale import parse_cli
     sol = solve(load_scene(scene_path))
     figs = figures(sol, parse_cli(scale), paper)
-    return handout(sol, worksheet=worksheet, figs=figs)
+    return handout(sol, worksheet=worksheet, figs=figs, centres=centres)
 
 
 def write(scene_path: str, out: str | Path, *, worksheet: bool = False, pdf: bool = False,
-          scale=None, paper=None) -> list[Path]:
+          scale=None, paper=None, centres: bool = False) -> list[Path]:
     """Write the handout; return the files written (HTML and/or PDF)."""
-    text = build(scene_path, worksheet=worksheet, scale=scale, paper=paper)
+    text = build(scene_path, worksheet=worksheet, scale=scale, paper=paper, centres=centres)
     out = Path(out)
     written = []
     if out.suffix.lower() == ".pdf":
@@ -103,6 +107,6 @@ def run(args) -> int:
         print(f"wrote {write_page(args.scene, args.out, scale=args.scale, paper=args.paper)}")
         return 0
     paths = write(args.scene, args.out, worksheet=args.worksheet, pdf=args.pdf,
-                  scale=args.scale, paper=args.paper)
+                  scale=args.scale, paper=args.paper, centres=args.centres)
     print("wrote " + " ".join(str(p) for p in paths))
     return 0
