@@ -215,8 +215,12 @@ class _Steps:
             r = self.r(slot.pivot, slot.far)
         else:
             r = self.r(slot.pivot, A_)
+        return self.unit(r), slot
+
+    def unit(self, r):
+        """r / |r|."""
         n = self.norm(r)
-        return self.g.vec(f"{r[0]} / {n}", f"{r[1]} / {n}"), slot
+        return self.g.vec(f"{r[0]} / {n}", f"{r[1]} / {n}")
 
     def rel_vel(self, w, r):
         return self.g.vec(f"{w} * -{r[1]}", f"{w} * {r[0]}")
@@ -331,9 +335,7 @@ class _Steps:
             return self.vector(s, a_cor, "m/s^2", (("2ωv", ("hypot", a_cor), "m/s^2"),))
         sl = self.scene.prescribed.get(A_)
         if sl is not None:
-            r = self.r(sl.p, sl.q)
-            n = self.norm(r)
-            e = g.vec(f"{r[0]} / {n}", f"{r[1]} / {n}")
+            e = self.unit(self.r(sl.p, sl.q))
             L, v_s = sl.link, g.param(lambda sc: sc.prescribed[A_].velocity)
         else:
             e, slot = self.slot_e(A_)
@@ -355,9 +357,7 @@ class _Steps:
         """A prescribed sliding velocity ṡ e or acceleration s̈ e along the link PQ."""
         C, P, Q = s.args
         g = self.g
-        r = self.r(P, Q)
-        n = self.norm(r)
-        e = g.vec(f"{r[0]} / {n}", f"{r[1]} / {n}")
+        e = self.unit(self.r(P, Q))
         if s.diagram == V:
             val = self.slide_v[C] = g.param(lambda sc: sc.prescribed[C].velocity)
         else:

@@ -123,7 +123,8 @@ def circle_line_cols(px, py, length, gx, gy, ex, ey, sigma):
     """:func:`circle_line_scalar`'s signature over arrays: :func:`circle_line` itself (the
     guide fixed, or moving: a lever's slot, its point and direction (N,) arrays too)."""
     shape = np.broadcast_shapes(*(np.shape(v) for v in (px, py, length, gx, gy, ex, ey)))
-    col = lambda a, b: np.array([np.broadcast_to(a, shape), np.broadcast_to(b, shape)])  # noqa: E731
+    def col(a, b):
+        return np.array([np.broadcast_to(a, shape), np.broadcast_to(b, shape)])
     X, m = circle_line(col(px, py), length, col(gx, gy), col(ex, ey), sigma)
     return X[0], X[1], m
 
