@@ -36,6 +36,7 @@ from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input
 from .scene import Crank, Scene
 from .steps import Diagram, Op, Step, Term, Vertices
+from .topology import slot_along_lever
 
 #: the staged solver's thresholds (polygons.geometry; a test keeps them equal)
 PARALLEL_DEG = 1e-5
@@ -64,6 +65,11 @@ class Source:
 
     x = "x"   # the driver's input (θ in rad or s in m)
 
+    # Names the generated code may call: cos, sin, atan2, degrees, sqrt, nan, where (math or
+    # numpy); ``hypot`` is the kernel's norm (√(x² + y²) over arrays), ``hypot_p`` a dyad
+    # locate's np.hypot (math.hypot over floats), so that positions over arrays are the
+    # kernel's to the last bit.
+
     def __init__(self, scene: Scene, sigma: dict, arrays: bool = False):
         self.scene = scene
         self.arrays = arrays           # the same code over (N,) arrays: no checks, margins kept
@@ -74,10 +80,13 @@ class Source:
         self.getters: list = []        # scene -> float, one per parameter k<i>
         self.namespace: dict = ({"cos": np.cos, "sin": np.sin, "hypot": _hypot_cols,
                                  "atan2": np.arctan2, "degrees": np.degrees, "where": np.where,
+                                 "sqrt": np.sqrt, "nan": np.nan, "hypot_p": np.hypot,
                                  "_Fail": _Fail} if arrays else
                                 {"cos": math.cos, "sin": math.sin, "hypot": math.hypot,
                                  "atan2": math.atan2, "degrees": math.degrees,
-                                 "where": _where, "_Fail": _Fail})
+                                 "where": _where, "sqrt": math.sqrt, "nan": math.nan,
+                                 "hypot_p": math.hypot,
+                                 "_Fail": _Fail})
         self.fails: list = []          # ("dyad", dyad) | ("step", step, reason)
         self.placed: dict[str, tuple[str, str]] = {}
         self.sigma_of = sigma
@@ -199,10 +208,19 @@ class _Steps:
                 g.param(lambda s: getattr(s.sliders[X], attr)[1]))
 
     def slot_e(self, A_):
+        """The unit vector along the slot of pin ``A_`` (``Kernel._slot_e``): pivot → far end
+        for an offset slot or a lever placed before its pin, else pivot → pin."""
         slot = self.scene.slots[A_]
-        r = self.r(slot.pivot, A_)
+        if slot.far is not None and slot_along_lever(self.scene, slot):
+            r = self.r(slot.pivot, slot.far)
+        else:
+            r = self.r(slot.pivot, A_)
+        return self.unit(r), slot
+
+    def unit(self, r):
+        """r / |r|."""
         n = self.norm(r)
-        return self.g.vec(f"{r[0]} / {n}", f"{r[1]} / {n}"), slot
+        return self.g.vec(f"{r[0]} / {n}", f"{r[1]} / {n}")
 
     def rel_vel(self, w, r):
         return self.g.vec(f"{w} * -{r[1]}", f"{w} * {r[0]}")
@@ -308,9 +326,45 @@ class _Steps:
             ("2ωv", ("hypot", a_cor), "m/s^2"))
 
     def coriolis_op(self, s):
+        """2 ω × ṡ e: the offset line's when it computed it, else computed here (a pin found
+        in a lever's slot; a prescribed slide, ṡ given, along its link)."""
         (A_,) = s.args
-        a_cor = self.cor[A_]
-        return self.vector(s, a_cor, "m/s^2", (("2ωv", ("hypot", a_cor), "m/s^2"),))
+        g = self.g
+        if A_ in self.cor:
+            a_cor = self.cor[A_]
+            return self.vector(s, a_cor, "m/s^2", (("2ωv", ("hypot", a_cor), "m/s^2"),))
+        sl = self.scene.prescribed.get(A_)
+        if sl is not None:
+            e = self.unit(self.r(sl.p, sl.q))
+            L, v_s = sl.link, g.param(lambda sc: sc.prescribed[A_].velocity)
+        else:
+            e, slot = self.slot_e(A_)
+            L, v_s = slot.lever, self.slide_v[A_]
+        w = self.omega[L]
+        ve = g.vec(f"{v_s} * {e[0]}", f"{v_s} * {e[1]}")
+        w2 = g.let(f"2.0 * {w}")
+        a_cor = self.cor[A_] = g.vec(f"{w2} * -{ve[1]}", f"{w2} * {ve[0]}")
+        return self.vector(s, a_cor, "m/s^2", ((f"ω_{L}", ("abs", w), "rad/s"),
+                                               (f"ṡ_{A_}", ("abs", v_s), "m/s"),
+                                               ("2ωv", ("hypot", a_cor), "m/s^2")))
+
+    def line_slide(self, s):
+        (A_,) = s.args
+        e, _ = self.slot_e(A_)
+        return self.line_result(s, self.line(s, e, self.vx[s.diagram][s.start]))
+
+    def slide_drive(self, s):
+        """A prescribed sliding velocity ṡ e or acceleration s̈ e along the link PQ."""
+        C, P, Q = s.args
+        g = self.g
+        e = self.unit(self.r(P, Q))
+        if s.diagram == V:
+            val = self.slide_v[C] = g.param(lambda sc: sc.prescribed[C].velocity)
+        else:
+            val = self.slide_a[C] = g.param(lambda sc: sc.prescribed[C].acceleration)
+        unit = _unit_of(s.diagram)
+        vec = g.vec(f"{val} * {e[0]}", f"{val} * {e[1]}")
+        return self.vector(s, vec, unit, ((s.quantity, val, unit),))
 
     def join(self, s):
         vx = self.vx[s.diagram]
@@ -394,7 +448,8 @@ class _Steps:
         Op.CRANK_VELOCITY: crank_velocity, Op.SLIDER_DRIVE: slider_drive,
         Op.CENTRIPETAL: centripetal_op, Op.CRANK_TANGENTIAL: crank_tangential,
         Op.LINE_PERP: line_perp, Op.LINE_ALONG: line_along, Op.LINE_GUIDE: line_guide,
-        Op.LINE_SLOT: line_slot, Op.CORIOLIS_OFFSET_LINE: coriolis_offset_line,
+        Op.LINE_SLOT: line_slot, Op.LINE_SLIDE: line_slide, Op.SLIDE_DRIVE: slide_drive,
+        Op.CORIOLIS_OFFSET_LINE: coriolis_offset_line,
         Op.CORIOLIS: coriolis_op, Op.JOIN: join, Op.INTERSECT: intersect, Op.OMEGA: omega_op,
         Op.ALPHA: alpha_op, Op.SLIDER_VELOCITY: slider_value,
         Op.SLIDER_ACCELERATION: slider_value, Op.SLIDE_VELOCITY: slide_value,
@@ -427,7 +482,8 @@ class NotCompiled(UnsupportedError):
 
 def check_compilable(scene: Scene, plan: Plan, steps: tuple[Step, ...]) -> None:
     """Refuse, naming it, what the generated code does not model yet: a dyad without a
-    ``source``, a step op without its generator, an offset slot, a prescribed slide."""
+    ``source``, a step op without its generator (every shipped dyad and op has one now; this
+    stays the guard for a new kind added to the kernel before its generator)."""
     for d in plan.dyads:
         if not hasattr(d, "source"):
             raise NotCompiled(f"the compiled evaluator does not generate the "
@@ -437,9 +493,6 @@ def check_compilable(scene: Scene, plan: Plan, steps: tuple[Step, ...]) -> None:
         if s.op not in _Steps.OPS:
             raise NotCompiled(f"the compiled evaluator has no code for the step op "
                               f"{str(s.op)!r} yet", file=scene.file)
-    if any(sl.offset for sl in scene.slots.values()) or scene.prescribed:
-        raise NotCompiled("the compiled evaluator does not model offset slots or prescribed "
-                          "slides yet", file=scene.file)
 
 
 def _generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
@@ -627,13 +680,20 @@ def _step_index(steps, diagram, number) -> int:
     raise ConstructionError(f"no step {diagram} {number}")
 
 
+def _slot_kinds(scene: Scene) -> tuple:
+    """What of the slots the generated code is shaped by (part of the cache key): whether each
+    is offset (the lever's far end from the pin) and runs along its lever (pivot → far end)."""
+    return tuple(sorted((pin, bool(sl.offset), sl.far is not None and
+                         slot_along_lever(scene, sl)) for pin, sl in scene.slots.items()))
+
+
 def compile_scene(scene: Scene, plan: Plan | None = None) -> Program:
     """Plan ``scene``, take its closures from the staged assembly, and compile (or fetch from
     the cache, keyed on the plan's dyads and steps) the float function of its construction."""
     plan = plan or make_plan(scene)
     steps = construction(plan)
     sigma = _sigmas(plan)
-    key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)))
+    key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)), _slot_kinds(scene))
     code = _CACHE.get(key)
     if code is None:
         if len(_CACHE) >= 256:          # a bound, not a policy: topologies are few
@@ -663,7 +723,8 @@ def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]
     margins are computed (the step records' numbers are dropped as dead code); where a dyad
     cannot close the numbers are NaN and its margin negative, as in :mod:`polygons.sweep`."""
     steps = construction(plan, tuple(Diagram))
-    key = ("arrays", plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)))
+    key = ("arrays", plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)),
+           _slot_kinds(scene))
     code = _CACHE.get(key)
     if code is None:
         code = _CACHE[key] = _generate(scene, plan, steps, sigma, arrays=True)

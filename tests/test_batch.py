@@ -163,12 +163,17 @@ def test_every_case_as_a_batch_matches_its_staged_solve(path):
 
 
 @pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
-def test_the_compiled_and_the_kernel_engines_give_the_same_rows(path):
+def test_the_compiled_and_the_kernel_engines_give_the_same_rows(path, monkeypatch):
+    from polygons import batch
     from polygons.scene import load_scene
     scene = load_scene(str(path))
     lengths = {n: l.length * np.array([0.98, 1.0, 1.02]) for n, l in scene.links.items()
                if l.length is not None}
-    a = solve_many(scene, lengths, engine="compiled")
+    kernel = batch._solve_kernel
+    with monkeypatch.context() as mp:      # the compiled engine really runs: no fallback
+        mp.setattr(batch, "_solve_kernel", lambda *a: pytest.fail("fell back to the kernel"))
+        a = solve_many(scene, lengths, engine="compiled")
+    assert batch._solve_kernel is kernel
     b = solve_many(scene, lengths, engine="kernel")
     assert list(a.ok) == list(b.ok) and a.errors == b.errors
     np.testing.assert_allclose(a.angle_deg, b.angle_deg, rtol=1e-12)

@@ -12,11 +12,14 @@ from polygons.sweep import sweep
 
 
 @pytest.mark.parametrize("case", ["s001-we6.toml", "s001-we3.toml", "s003-fig7.toml",
-                                  "scotch-yoke.toml"])
+                                  "scotch-yoke.toml", "new-collar-on-rotating-rod.toml",
+                                  "new-offset-slot.toml", "new-oscillating-cylinder.toml",
+                                  "new-rotary-engine.toml", "new-slot-on-moving-lever.toml"])
 def test_streamed_chunks_are_the_in_memory_sweep(case):
     scene = load_scene(CASES / case)
     n = 1000
     st = plan_stream(scene, n)
+    assert st.code is not None          # compiled for arrays, not the kernel's fallback
     sw = sweep(scene, n)
     assert np.array_equal(st.inputs(0, n), sw.inputs)
     got = 0

@@ -120,10 +120,12 @@ def circle_circle_cols(px, py, r1, qx, qy, r2, sigma):
 
 
 def circle_line_cols(px, py, length, gx, gy, ex, ey, sigma):
-    """:func:`circle_line_scalar`'s signature over arrays: :func:`circle_line` itself."""
-    shape = np.broadcast_shapes(np.shape(px), np.shape(py), np.shape(length))
-    p = np.array([np.broadcast_to(px, shape), np.broadcast_to(py, shape)])
-    X, m = circle_line(p, length, (gx, gy), (ex, ey), sigma)
+    """:func:`circle_line_scalar`'s signature over arrays: :func:`circle_line` itself (the
+    guide fixed, or moving: a lever's slot, its point and direction (N,) arrays too)."""
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (px, py, length, gx, gy, ex, ey)))
+    def col(a, b):
+        return np.array([np.broadcast_to(a, shape), np.broadcast_to(b, shape)])
+    X, m = circle_line(col(px, py), length, col(gx, gy), col(ex, ey), sigma)
     return X[0], X[1], m
 
 

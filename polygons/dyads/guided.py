@@ -21,7 +21,7 @@ import numpy as np
 from ..steps import Builder, Component, Kind, Op
 from ..theorems import perp
 from ..topology import guided_pin
-from .base import circle_line
+from .base import circle_line, circle_line_scalar
 from . import image
 
 
@@ -59,6 +59,25 @@ class Guided:
         through, e = self._line(scene, pos)
         X, margin = circle_line(pos[self.p], scene.links[self.link].length, through, e, sigma)
         return {self.x: X, self.coincident: X.copy()}, margin
+
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``.
+
+        e = BQ/|BQ|, through = B + d perp(e), X on the circle |PX| = L and the line
+        through + t e (closure σ), X1 = X."""
+        (bx, by), (qx, qy) = g.pos(self.pivot), g.pos(self.far)
+        dx, dy = g.let(f"{qx} - {bx}"), g.let(f"{qy} - {by}")
+        n = g.let(f"hypot_p({dx}, {dy})")
+        ex, ey = g.let(f"{dx} / {n}"), g.let(f"{dy} / {n}")
+        off = g.param(lambda s: s.slots[self.x].offset)
+        tx, ty = g.let(f"{bx} + {off} * -{ey}"), g.let(f"{by} + {off} * {ex}")
+        L = g.param(lambda s: s.links[self.link].length)
+        x, y, m = g.call(circle_line_scalar, *g.pos(self.p), L, tx, ty, ex, ey,
+                         g.sigma(self.x), n=3)
+        g.margin(m)
+        g.place(self.x, x, y)
+        g.place(self.coincident, x, y)
 
     def why_not(self, scene, pos) -> str:
         from ..theorems import cross

@@ -62,6 +62,9 @@ class RPR:
         """:meth:`locate` as straight-line float code for the compiled evaluator
         (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
         (ax, ay), (bx, by) = g.pos(self.pin), g.pos(self.pivot)
+        if g.scene.slots[self.pin].offset:      # (the cache key tells offset slots apart)
+            self._source_offset(g, ax, ay, bx, by)
+            return
         tiny = g.param(lambda s: 1e-12 * size_of(s))
         dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
         n = g.let(f"hypot({dx}, {dy})")
@@ -71,6 +74,27 @@ class RPR:
             fl = g.param(lambda s: s.slots[self.pin].far_length)
             g.place(self.far, g.let(f"{bx} + {fl} * {dx} / {n}"),
                     g.let(f"{by} + {fl} * {dy} / {n}"))
+
+    def _source_offset(self, g, ax, ay, bx, by) -> None:
+        """The offset slot: BA = t e + δ perp(e), t = √(|BA|² − δ²) > 0,
+        e = (t BA − δ perp(BA)) / |BA|², the far end B + l e; margin t/|BA| (−1 where
+        t² ≤ 1e-12 of the size squared)."""
+        off = g.param(lambda s: s.slots[self.pin].offset)
+        fl = g.param(lambda s: s.slots[self.pin].far_length)
+        tiny2 = g.param(lambda s: 1e-12 * size_of(s) ** 2)
+        dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
+        n = g.let(f"hypot_p({dx}, {dy})")
+        t2 = g.let(f"{n} * {n} - {off} * {off}")
+        t = g.let(f"sqrt(where({t2} > 0, {t2}, nan))")
+        # over floats the test comes first (no division by a zero |BA|); over arrays the
+        # margin is kept, NaN-free, as locate's
+        g.margin(g.let(f"where({t2} > {tiny2}, {t} / {n}, -1.0)" if g.arrays else
+                       f"({t} / {n} if {t2} > {tiny2} else -1.0)"))
+        g.place(self.coincident, ax, ay)
+        n2 = g.let(f"{n} * {n}")
+        ex = g.let(f"({t} * {dx} - {off} * -{dy}) / {n2}")
+        ey = g.let(f"({t} * {dy} - {off} * {dx}) / {n2}")
+        g.place(self.far, g.let(f"{bx} + {fl} * {ex}"), g.let(f"{by} + {fl} * {ey}"))
 
     def why_not(self, scene, pos) -> str:
         off = scene.slots[self.pin].offset

@@ -45,6 +45,21 @@ class SlideDyad:
         return {self.coincident: c, self.point: c.copy()}, np.where(
             n > 1e-12 * size_of(scene), 1.0, -1.0)
 
+    def source(self, g) -> None:
+        """:meth:`locate` as straight-line float code for the compiled evaluator
+        (:mod:`polygons.compiled`): the same formula, emitted through ``g``.
+
+        C = P + s PQ/|PQ| (the margin: |PQ| beyond 1e-12 of the mechanism's size), C1 = C."""
+        (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
+        s_ = g.param(lambda s: s.prescribed[self.point].position)
+        tiny = g.param(lambda s: 1e-12 * size_of(s))
+        dx, dy = g.let(f"{qx} - {px}"), g.let(f"{qy} - {py}")
+        n = g.let(f"hypot_p({dx}, {dy})")
+        g.margin(g.let(f"where({n} > {tiny}, 1.0, -1.0)"))
+        cx, cy = g.let(f"{px} + {s_} * {dx} / {n}"), g.let(f"{py} + {s_} * {dy} / {n}")
+        g.place(self.coincident, cx, cy)
+        g.place(self.point, cx, cy)
+
     def why_not(self, scene, pos) -> str:
         return (f"{self.p} and {self.q} coincide, so the direction of {self.link} along which "
                 f"{self.point} slides is undefined")
