@@ -141,6 +141,8 @@ def as_col(v, like):
 def size_of(scene) -> float:
     """The mechanism's size: its longest link or ground coordinate (for relative tolerances;
     over every row when a batch gives the lengths or coordinates as arrays)."""
-    lengths = [float(np.max(l.length)) for l in scene.links.values() if l.length is not None]
-    coords = [float(np.max(np.abs(c))) for v in scene.ground.values() for c in v]
+    def big(x) -> float:
+        return abs(x) if isinstance(x, float) else float(np.max(np.abs(x)))
+    lengths = [big(l.length) for l in scene.links.values() if l.length is not None]
+    coords = [big(c) for v in scene.ground.values() for c in v]
     return max(lengths + coords + [1e-300])
