@@ -25,6 +25,8 @@ from __future__ import annotations
 import html as _html
 import re
 
+from .metrics import plain_width
+
 #: invisible separator between two vertex names in a vector's name (never drawn)
 JOIN = "\u2060"
 #: sub- and superscripts are drawn this much smaller than the text
@@ -117,7 +119,6 @@ def stacked(rs: list[Run], i: int) -> bool:
 
 def width(text: str, size: float) -> float:
     """Advance width of the typeset ``text`` at font ``size`` (mm)."""
-    from .text import plain_width
     rs = runs(text)
     w = 0.0
     for i, (s, kind) in enumerate(rs):
@@ -136,7 +137,6 @@ def svg_runs(text: str, size: float) -> list[tuple[str, float, float, float | No
     ``dy`` moves the baseline (relative, so each run undoes the previous shift); ``dx`` sets a
     superscript back over the subscript it stacks on.
     """
-    from .text import plain_width
     rs = runs(text)
     out = []
     shift = 0.0
