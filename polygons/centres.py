@@ -26,6 +26,7 @@ from typing import Mapping
 
 from . import geometry
 from .errors import ParallelLinesError, UnsupportedError
+from .steps import sense
 from .scene import Crank
 
 Vec = tuple[float, float]
@@ -429,12 +430,12 @@ def _omega_from(i, j, mi, found, names, size):
             vi = f"v_I{nij} = ω{i} × I{pair_name(1, i)}I{nij} = {_f(math.hypot(*v))} m/s"
         return (wj, _v0(wj, c1j.point)), Omega(j, names[j], wj, None, (
             f"{vi}; ω{j} = v_I{nij} / I{n1j}I{nij} = {_f(math.hypot(*v))} / "
-            f"{_f(math.sqrt(rr))} = {_f(abs(wj))} rad/s {_sense(wj)}"))
+            f"{_f(math.sqrt(rr))} = {_f(abs(wj))} rad/s {sense(wj)}"))
     # I_ij at infinity: links i and j translate relative to each other, ω_j = ω_i
     if c1j.point is None:
         return None
     return (wi, _v0(wi, c1j.point)), Omega(j, names[j], wi, None, (
-        f"I{nij} at infinity: ω{j} = ω{i} = {_f(abs(wi))} rad/s {_sense(wi)}"))
+        f"I{nij} at infinity: ω{j} = ω{i} = {_f(abs(wi))} rad/s {sense(wi)}"))
 
 
 def _point_velocity(x, j, p, motion, found, names) -> PointVelocity:
@@ -468,10 +469,6 @@ def _t(v) -> Vec:
 
 def _f(x: float) -> str:
     return f"{x:.5g}"
-
-
-def _sense(w: float) -> str:
-    return "" if w == 0 else ("CCW" if w > 0 else "CW")
 
 
 __all__ = ["Body", "Centre", "Omega", "PointVelocity", "Centres", "bodies", "find_centres",

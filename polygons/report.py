@@ -11,6 +11,7 @@ from . import geometry
 from .errors import PolygonsError
 from .evaluate import Solution
 from .quantities import quantity
+from .steps import sense as steps_sense
 from .scene import Answer
 from .units import SYSTEMS, UNITS
 
@@ -56,9 +57,8 @@ def check_answers(sol: Solution) -> list[AnswerCheck]:
 
 
 def sense(value: float | None) -> str:
-    if value is None or value == 0.0:
-        return ""
-    return "CCW" if value > 0 else "CW"
+    """'CCW' / 'CW' / '' (:func:`polygons.steps.sense`), '' also for a value not solved."""
+    return "" if value is None else steps_sense(value)
 
 
 def _deg(v) -> float:

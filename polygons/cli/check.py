@@ -41,6 +41,7 @@ from ..quantities import dimension_of_quantity, quantity
 from ..scene import load_scene
 from ..units import parse_quantity
 from ._output import add_out_option, emit
+from ..steps import sense as sense_word
 
 #: textbook prefix -> quantities function
 PREFIX = {"v": "v", "a": "a", "omega": "omega", "w": "omega", "alpha": "alpha", "an": "an",
@@ -484,7 +485,8 @@ def _num(x: float) -> str:
 
 
 def _sense(v: float) -> str:
-    return "" if v == 0 else (" CCW" if v > 0 else " CW")
+    """' CCW' / ' CW' after a number, '' for zero."""
+    return f" {sense_word(v)}" if v != 0 else ""
 
 
 SOURCE_WORDS = {"emulated": "careful drawing", "stated": "stated", "given": "--tolerance",

@@ -17,7 +17,7 @@ from ..forces import (Analysis, State, analyse, check_force_answers, has_forces,
 from ..forces import machine
 from ..forces.model import position, unit_r
 from ..report import json_text
-from ._output import add_out_option, emit  # noqa: F401  (solve and api import them here)
+from ._output import add_out_option, emit
 from ..scene import Crank, load_scene
 from ..theorems import perp
 
