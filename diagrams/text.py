@@ -6,7 +6,6 @@ placer tests are the boxes a renderer draws, to within a few per cent for other 
 """
 from __future__ import annotations
 
-from .metrics import plain_width  # noqa: F401  (the width of text set as it is)
 from .notation import width as _typeset_width
 
 #: font stack asked for by the SVGs (the widths above are DejaVu Sans)

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Iterable
 
 from . import dyads as kinds
-from .dyads import RPP, RPR, RRP, RRR, CrankDyad, Dyad, Image, SliderDriveDyad  # noqa: F401
+from .dyads import Dyad
 from .errors import UnknownLabelError, UnsupportedError, suggest
 from .mobility import MobilityError, check_mobility, used_links
 from .scene import Scene

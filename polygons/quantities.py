@@ -19,13 +19,13 @@ Used by the answers table, the tests and ``polygons check``.
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
 from .errors import SceneError, UnknownLabelError, show, suggest
 from .evaluate import Solution, link_ends
-from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse
+# FUNCTIONS is read by polygons.forces as quantities.FUNCTIONS
+from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse  # noqa: F401
 
 def dimension_of_quantity(expr: str) -> str:
     fn = _parse(expr)[0]

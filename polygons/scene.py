@@ -45,7 +45,8 @@ from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
 from .loads import parse as parse_loads
 from .reader import LABEL as _LABEL, Reader
 from .options import Options, parse_options
-from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS
+# TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
+from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
 from .units import UNITS, dimension_of
 
 Vec = tuple[float, float]

@@ -28,10 +28,8 @@ Exit status: 0 when every value is within tolerance, 3 when some are off, 1 on a
 """
 from __future__ import annotations
 
-import json
 import math
 import re
-import sys
 from dataclasses import dataclass
 
 from ..errors import UnsupportedError, PolygonsError, SceneError

@@ -6,8 +6,6 @@ by :func:`to_dict` in its JSON) when the scene has masses or loads.
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 

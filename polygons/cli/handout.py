@@ -9,7 +9,6 @@ crank-angle slider redrawing the mechanism and both polygons from the sweep).
 """
 from __future__ import annotations
 
-import sys
 import tempfile
 from pathlib import Path
 

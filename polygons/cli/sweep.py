@@ -13,7 +13,6 @@ Chosen points and links come from ``--points`` / ``--links`` or the scene's opti
 """
 from __future__ import annotations
 
-import csv
 import math
 import sys
 from pathlib import Path

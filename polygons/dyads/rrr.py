@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..steps import Builder, Component, Kind, Op
+from ..steps import Builder
 from .base import circle_circle, circle_circle_scalar
 from . import pinned
 
