@@ -142,10 +142,11 @@ def check_mobility(scene, redundant: tuple[str, ...] = ()) -> Mobility:
             links=redundant or links, file=scene.file,
             where=f"links.{redundant[0]}" if redundant else "links")
     if m.dof > k:
+        more = ("1 more input (another driver)" if m.dof - k == 1 else
+                f"{m.dof - k} more inputs (more drivers)")
         raise MobilityError(
             f"the mechanism has {m.dof} degrees of freedom ({m.formula}) but {k} input"
-            f"{'' if k == 1 else 's'} ({', '.join(m.inputs)}): it needs {m.dof - k} more "
-            f"input{'' if m.dof - k == 1 else 's'} (a second driver) before it is "
+            f"{'' if k == 1 else 's'} ({', '.join(m.inputs)}): it needs {more} before it is "
             f"constrained; the links are {named}", dof=m.dof, links=links, file=scene.file,
             where="driver")
     raise MobilityError(
