@@ -57,13 +57,9 @@ def angle_between(l1: Line, l2: Line) -> float:
 
 
 def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
-    """Intersection point of two construction lines, as shapely computes it.
+    """Intersection point of two construction lines, as shapely computes it (:func:`meet`).
 
-    Each line is drawn as a segment long enough to contain the intersection: with anchors a
-    distance ``d`` apart and an angle ``θ`` between the lines the intersection lies within
-    ``d / sin θ`` of either anchor, so segments of half-length ``2 d / sin θ`` (plus the scale
-    of the anchors) always cross.  Raises :class:`ParallelLinesError` below ``PARALLEL_DEG``.
-    """
+    Raises :class:`ParallelLinesError` below ``PARALLEL_DEG``."""
     angle = angle_between(l1, l2)
     if angle < PARALLEL_DEG:
         raise ParallelLinesError(
@@ -74,26 +70,50 @@ def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
         # both lines through one point (an instant at rest: every relative velocity is zero,
         # so the lines of unknown length all start at the pole): they meet there, exactly
         return Intersection(l1.point, angle)
-    p, q, u, v = (_flush(np.array(x)) for x in (l1.point, l2.point, l1.direction,
-                                                 l2.direction))
-    scale = max(float(np.hypot(*p)), float(np.hypot(*q)), float(np.hypot(*(p - q))), 1e-300)
-    half = 2.0 * scale / math.sin(math.radians(angle)) + scale
-    s1 = shapely.LineString(_flush(np.array([p - half * u, p + half * u])))
-    s2 = shapely.LineString(_flush(np.array([q - half * v, q + half * v])))
-    hit = shapely.intersection(s1, s2)
-    if hit.is_empty or hit.geom_type != "Point":
-        raise ParallelLinesError(
-            f"the {l1.name or 'first line'} and the {l2.name or 'second line'} do not meet "
-            f"in a single point (got {hit.geom_type})", step=step)
-    x = np.array([hit.x, hit.y])
-    # the point must lie on both lines (to rounding of the segments' length)
-    off = max(abs(float(u[0] * (x - p)[1] - u[1] * (x - p)[0])),
-              abs(float(v[0] * (x - q)[1] - v[1] * (x - q)[0])))
-    if not off <= 1e-9 * half:
+    x, y = meet(*l1.point, *l1.direction, *l2.point, *l2.direction)
+    if x != x:
         raise ConstructionError(
-            f"the intersection of the {l1.name or 'first line'} and the "
-            f"{l2.name or 'second line'} came back {off:.3g} off the lines", step=step)
-    return Intersection((float(x[0]), float(x[1])), angle)
+            f"shapely found no single intersection of the {l1.name or 'first line'} and the "
+            f"{l2.name or 'second line'}", step=step)
+    return Intersection((x, y), angle)
+
+
+def meet(px, py, ux, uy, qx, qy, vx, vy) -> tuple[float, float]:
+    """X = P + t u = Q + s v: the intersection of two construction lines, as shapely finds it
+    where they are drawn (NaN, NaN where it finds no single point on both lines).
+
+    Each line is drawn as a segment from before its anchor to past the crossing: with
+    t = ((Q − P) × v) / (u × v) and s = ((Q − P) × u) / (u × v) (the 2×2 solve) the first
+    runs from min(0, t) − h to max(0, t) + h along u, the second likewise along v, with
+    h = max(|t|, |s|, |P|∞, |Q|∞) / 2: they always cross, are never shorter than the rounding
+    of their coordinates, and their end points carry no more rounding than the anchors and the
+    crossing do.  The lines must not be parallel
+    (the caller has checked their angle); P = Q is returned as it is (an instant at rest).
+    """
+    if px == qx and py == qy:
+        return px, py
+    den = ux * vy - uy * vx
+    wx, wy = qx - px, qy - py
+    t = (wx * vy - wy * vx) / den
+    s = (wx * uy - wy * ux) / den
+    h = 0.5 * max(abs(t), abs(s), abs(px), abs(py), abs(qx), abs(qy))
+    a0, a1 = min(0.0, t) - h, max(0.0, t) + h
+    b0, b1 = min(0.0, s) - h, max(0.0, s) + h
+    ends = [px + a0 * ux, py + a0 * uy, px + a1 * ux, py + a1 * uy,
+            qx + b0 * vx, qy + b0 * vy, qx + b1 * vx, qy + b1 * vy]
+    ends = np.array([0.0 if -1e-200 < c < 1e-200 else c for c in ends])   # see _flush
+    s1, s2 = shapely.linestrings(ends.reshape(2, 2, 2))
+    hit = shapely.intersection(s1, s2)
+    xy = shapely.get_coordinates(hit)
+    if len(xy) != 1 or shapely.get_type_id(hit) != 0:     # 0: a Point
+        return math.nan, math.nan
+    x, y = xy[0].tolist()
+    # the point must lie on both lines (to the rounding of the drawn segments)
+    scale = max(abs(px), abs(py), abs(qx), abs(qy), abs(x), abs(y), 2.0 * h)
+    off = max(abs(ux * (y - py) - uy * (x - px)), abs(vx * (y - qy) - vy * (x - qx)))
+    if not off <= 1e-9 * scale:
+        return math.nan, math.nan
+    return x, y
 
 
 def _flush(a: np.ndarray) -> np.ndarray:

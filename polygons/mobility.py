@@ -166,12 +166,20 @@ def used_links(dyads) -> set[str]:
     return used
 
 
+def _unused(plan) -> tuple[str, ...]:
+    """The links with a length that no dyad of ``plan`` uses (kept with the frozen plan)."""
+    memo = plan.__dict__
+    if "_unused" not in memo:
+        used = used_links(plan.dyads)
+        memo["_unused"] = tuple(n for n, ln in plan.scene.links.items()
+                                if n not in used and ln.length is not None)
+    return memo["_unused"]
+
+
 def check_redundant_lengths(scene, plan, points, rel: float = 1e-9) -> None:
     """A link whose two ends are placed by other means must have its stated length."""
-    used = used_links(plan.dyads)
-    for name, link in scene.links.items():
-        if name in used or link.length is None:
-            continue
+    for name in _unused(plan):
+        link = scene.links[name]
         if link.a not in points or link.b not in points:
             continue
         (ax, ay), (bx, by) = points[link.a], points[link.b]

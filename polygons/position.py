@@ -8,7 +8,9 @@ both: nothing is guessed.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Mapping
 
 import numpy as np
 
@@ -30,6 +32,7 @@ class Placement:
 
     points: dict
     branches: tuple[tuple[str, str], ...]   # (label, description of the chosen closure)
+    sigmas: Mapping[str, float] = field(default_factory=dict)   # label -> closure (+1 / −1)
 
 
 def assemble(plan: Plan) -> Placement:
@@ -38,10 +41,11 @@ def assemble(plan: Plan) -> Placement:
     scene = plan.scene
     pos: dict[str, np.ndarray] = {k: np.array(v, dtype=float) for k, v in scene.ground.items()}
     chosen: list[tuple[str, str]] = []
+    sigmas: dict[str, float] = {}
     size = size_of(scene)
     x_in = driver_input(scene)
     with np.errstate(all="ignore"):   # a degenerate dyad gives NaN and says why below
-        _place(plan, scene, pos, chosen, size, x_in)
+        _place(plan, scene, pos, chosen, sigmas, size, x_in)
     for label, xy in scene.drawn.items():
         if label in pos:
             off = float(np.hypot(*(pos[label] - np.array(xy))))
@@ -52,10 +56,10 @@ def assemble(plan: Plan) -> Placement:
                     f"disagree", file=scene.file, where=f"drawn.{label}")
     points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
     check_redundant_lengths(scene, plan, points)
-    return Placement(points, tuple(chosen))
+    return Placement(points, tuple(chosen), MappingProxyType(sigmas))
 
 
-def _place(plan: Plan, scene: Scene, pos, chosen, size, x_in) -> None:
+def _place(plan: Plan, scene: Scene, pos, chosen, sigmas, size, x_in) -> None:
     """Each dyad's ``locate`` in order; a closure that fails says why in the dyad's words."""
     for dyad in plan.dyads:
         if dyad.two_closures:
@@ -66,6 +70,7 @@ def _place(plan: Plan, scene: Scene, pos, chosen, size, x_in) -> None:
             c2, _ = dyad.locate(scene, pos, -1.0, x_in)
             pos[x], why = _choose(x, (c1[x], c2[x]), scene, pos, size,
                                   default_ref=dyad.default_ref)
+            sigmas[x] = 1.0 if pos[x] is c1[x] else -1.0
             for other in dyad.placed[1:]:      # points placed with x (a lever's point under it)
                 pos[other] = (c1 if pos[x] is c1[x] else c2)[other]
             if why:

@@ -235,5 +235,13 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
                 f"outside ±{a.tolerance * 100:g}%")
             lines.append(f"{a.desc[:34]:<34} {a.unit:<8} {_g(c.compared, 6):>12} "
                          f"{_g(a.tutorial, 6):>10} "
-                         f"{(f'{c.diff_pct:.2f}' if c.diff_pct is not None else '-'):>8}  {note}")
+                         f"{_pct(c.diff_pct):>8}  {note}")
     return "\n".join(lines) + "\n"
+
+
+def _pct(d: float | None) -> str:
+    """A difference in per cent to two places; one that rounds to zero is 0.00, never -0.00."""
+    if d is None:
+        return "-"
+    text = f"{d:.2f}"
+    return "0.00" if text == "-0.00" else text

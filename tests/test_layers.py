@@ -25,6 +25,7 @@ WHERE = {
     "polygons.narrate": "interpreters", "polygons.position": "interpreters",
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
+    "polygons.codegen": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
     "polygons.streams": "interpreters",
     "polygons.forces": "forces",

@@ -70,6 +70,24 @@ def test_subnormal_coordinates_do_not_derail_the_intersection():
     assert hit.point == pytest.approx((0.0, 0.0), abs=1e-300)
 
 
+def test_meet_is_the_crossing_of_the_drawn_segments():
+    """X = P + t u = Q + s v, hand-checked: the 3-4-5 lines from (0, 0) and (6, 0) meet at
+    (3, 4); lines through one point meet there exactly (an instant at rest)."""
+    assert geometry.meet(0.0, 0.0, 0.6, 0.8, 6.0, 0.0, -0.6, 0.8) == pytest.approx((3.0, 4.0),
+                                                                             abs=1e-15)
+    assert geometry.meet(2.0, 5.0, 1.0, 0.0, 2.0, 5.0, 0.0, 1.0) == (2.0, 5.0)
+
+
+def test_meet_of_anchors_an_ulp_apart_far_from_the_origin():
+    """Anchors 1e-12 apart at 7700 m/s² (a parallelogram four-bar's acceleration polygon): the
+    segments are drawn at least as long as the coordinates' size, so shapely still finds the
+    point (it found none on segments 1e-12 long)."""
+    x, y = geometry.meet(-7712.741183798629, -7575.981453466156, -5.551115123125783e-17, 1.0,
+                         -7712.741183798629, -7575.9814534661555, -0.7007535786004547,
+                         0.7134034076724448)
+    assert abs(x + 7712.741183798629) <= 1e-11 and abs(y + 7575.981453466156) <= 1e-11
+
+
 def test_parallel_lines_raise_a_named_error():
     with pytest.raises(ParallelLinesError, match="c line.*slider line.*parallel"):
         geometry.intersect(geometry.line((0, 0), (1, 0), "c line"),

@@ -32,8 +32,13 @@ def circle_circle(p, r1, q, r2, sigma):
 
     X = P + a u + σ h perp(u),  a = (r1² − r2² + d²) / 2d,  h = √(r1² − a²),  u = PQ/d.
     Returns (X, margin) with margin = σ-free sine of the angle PX, QX (h d / r1 r2), negative
-    (−√|h²| d / r1 r2) where the circles do not meet (X is NaN there).
+    (−√|h²| d / r1 r2) where the circles do not meet (X is NaN there).  One position (P, Q of
+    shape (2,), plain-float radii) takes :func:`circle_circle_scalar`, the same formula.
     """
+    if np.ndim(p) == 1 and np.ndim(q) == 1 and _floats(r1, r2, sigma):
+        x, y, m = circle_circle_scalar(float(p[0]), float(p[1]), r1, float(q[0]), float(q[1]),
+                                       r2, sigma)
+        return np.array([x, y]), m
     d = q - p
     dist = np.hypot(d[0], d[1])
     a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
@@ -51,8 +56,14 @@ def circle_line(p, length, through, e, sigma):
     """The point X on the line ``through`` + t e with |PX| = length, (X − P)·e of sign σ.
 
     t = −b + σ √(b² − c),  b = e·(g − p),  c = |g − p|² − L².  Returns (X, margin) with
-    margin = |PX·e| / L (negative where the line is out of reach; X NaN there).
+    margin = |PX·e| / L (negative where the line is out of reach; X NaN there).  One position
+    (plain floats, a fixed or placed guide of shape (2,)) takes :func:`circle_line_scalar`.
     """
+    if (np.ndim(p) == 1 and np.ndim(through) == 1 and np.ndim(e) == 1
+            and _floats(length, sigma)):
+        x, y, m = circle_line_scalar(float(p[0]), float(p[1]), length, float(through[0]),
+                                     float(through[1]), float(e[0]), float(e[1]), sigma)
+        return np.array([x, y]), m
     g = np.asarray(through, dtype=float)
     if g.ndim == 1:         # a fixed guide; a moving one (a lever's slot) is (2, N) already
         g = g.reshape((2,) + (1,) * (np.ndim(p) - 1))
@@ -71,6 +82,10 @@ def circle_line(p, length, through, e, sigma):
 
 
 _hypot, _sqrt, _nan = math.hypot, math.sqrt, math.nan
+
+
+def _floats(*xs) -> bool:
+    return all(type(x) is float for x in xs)
 
 
 def circle_circle_scalar(px, py, r1, qx, qy, r2, sigma):
@@ -140,9 +155,15 @@ def as_col(v, like):
 
 def size_of(scene) -> float:
     """The mechanism's size: its longest link or ground coordinate (for relative tolerances;
-    over every row when a batch gives the lengths or coordinates as arrays)."""
+    over every row when a batch gives the lengths or coordinates as arrays).  Kept with the
+    scene (a frozen record) after the first call."""
+    memo = getattr(scene, "__dict__", {})
+    if "_size" in memo:
+        return memo["_size"]
+
     def big(x) -> float:
         return abs(x) if isinstance(x, float) else float(np.max(np.abs(x)))
     lengths = [big(l.length) for l in scene.links.values() if l.length is not None]
     coords = [big(c) for v in scene.ground.values() for c in v]
-    return max(lengths + coords + [1e-300])
+    size = memo["_size"] = max(lengths + coords + [1e-300])
+    return size
