@@ -20,7 +20,7 @@ from .errors import UnknownLabelError, UnsupportedError, suggest
 from .mobility import MobilityError, check_mobility, used_links
 from .scene import Scene
 from .topology import why_unplaced
-from .steps import Builder, Diagram, Step, Vertices  # noqa: F401  (re-exported)
+from .steps import Builder, Diagram, Step, Vertices, pole_of  # noqa: F401  (re-exported)
 
 
 @dataclass(frozen=True)
@@ -137,11 +137,30 @@ def _prune(dyads: list[Dyad], targets: tuple[str, ...], scene: Scene) -> tuple[D
 
 def construction(plan: Plan, diagrams: Iterable[str] | None = None) -> tuple[Step, ...]:
     """The velocity steps then the acceleration steps for ``plan``'s dyads, in order (the
-    scene's ``solve`` diagrams unless ``diagrams`` is given)."""
+    scene's ``solve`` diagrams unless ``diagrams`` is given).
+
+    A dyad's steps depend on its record (labels, and the flags its module puts there) and on
+    the vertex names (the scene's labels and fixed points), never on a number: they are made
+    once per such topology and shared."""
+    scene = plan.scene
+    diagrams = tuple(scene.solve if diagrams is None else diagrams)
+    key = (plan.dyads, diagrams, tuple(scene.ground), tuple(scene.labels), pole_of(scene))
+    hit = _STEPS.get(key)
+    if hit is None:
+        if len(_STEPS) >= 256:          # a bound, not a policy: topologies are few
+            _STEPS.clear()
+        hit = _STEPS[key] = _construct(plan, diagrams)
+    return hit
+
+
+_STEPS: dict = {}
+
+
+def _construct(plan: Plan, diagrams: tuple[str, ...]) -> tuple[Step, ...]:
     scene = plan.scene
     names = Vertices(scene)
     steps: list[Step] = []
-    for diagram in (scene.solve if diagrams is None else diagrams):
+    for diagram in diagrams:
         b = Builder(scene, Diagram(diagram), names)
         for dyad in plan.dyads:
             dyad.emit(b)

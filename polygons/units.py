@@ -7,6 +7,7 @@ parsing them is ten lines, and it keeps `import polygons` fast (see README, "Dep
 """
 from __future__ import annotations
 
+import functools
 import math
 import re
 
@@ -139,7 +140,18 @@ def article(word: str) -> str:
 
 def units_of(dimension: str) -> list[str]:
     """The unit spellings accepted for ``dimension``."""
-    return [u for u, (d, _) in UNITS.items() if d == dimension]
+    return list(_units_of(dimension))
+
+
+@functools.cache
+def _units_of(dimension: str) -> tuple[str, ...]:
+    return tuple(u for u, (d, _) in UNITS.items() if d == dimension)
+
+
+@functools.cache
+def _accepted(dimension: str) -> str:
+    """The first few spellings, for an error message: "'mm', 'cm', 'm' ..."."""
+    return ", ".join(repr(u) for u in _units_of(dimension)[:6])
 
 
 def check_range(result: float, dimension: str, value, *, file=None, where=None) -> float:
@@ -147,6 +159,12 @@ def check_range(result: float, dimension: str, value, *, file=None, where=None) 
     if not math.isfinite(result):
         raise UnitError(f"{show(value)} is not a finite number", file=file, where=where)
     low, high = LIMITS.get(dimension, (0.0, math.inf))
+    if (result != 0.0 and abs(result) < low) or abs(result) > high:
+        _out_of_range(result, dimension, value, low, high, file, where)
+    return result + 0.0        # -0.0 -> 0.0
+
+
+def _out_of_range(result, dimension, value, low, high, file, where):
     words = dimension.replace("_", " ")
     si = SI_UNIT.get(dimension, "")
     if abs(result) > high:
@@ -157,7 +175,6 @@ def check_range(result: float, dimension: str, value, *, file=None, where=None) 
         raise UnitError(f"{show(value)} is too small to compute with: {article(words)} must be "
                         f"0 or at least {low:g} {si}".rstrip() + " in magnitude",
                         file=file, where=where)
-    return result + 0.0        # -0.0 -> 0.0
 
 
 def parse_quantity(value, dimension: str, *, file: str | None = None,
@@ -169,7 +186,7 @@ def parse_quantity(value, dimension: str, *, file: str | None = None,
     turn exactly, in its stated unit, before converting (``"370 deg"`` -> 10°).
     """
     words = dimension.replace("_", " ")
-    accepted = ", ".join(repr(u) for u in units_of(dimension)[:6])
+    accepted = _accepted(dimension)
     if isinstance(value, bool) or not isinstance(value, (str, int, float)):
         raise UnitError(f"expected a quantity such as '{_example(dimension)}', got "
                         f"{show(value)}", file=file, where=where)

@@ -16,10 +16,12 @@ from ..steps import Builder, Component, Kind, Op
 
 @dataclass(frozen=True)
 class CrankDyad:
-    """The input crank ``link``: ``tip`` turns about fixed ``pivot``."""
+    """The input crank ``link``: ``tip`` turns about fixed ``pivot``; ``tangential`` when the
+    crank has an angular acceleration (its tangential component is drawn)."""
     link: str
     pivot: str
     tip: str
+    tangential: bool = False
     two_closures = False
 
     @property
@@ -68,7 +70,7 @@ class CrankDyad:
                   f"of the crank, starting at the pole {b.names.alias()} (fixed points have "
                   f"no velocity).", component=Component.GIVEN, link=L)
             return
-        has_t = scene_alpha(b.scene) != 0.0
+        has_t = self.tangential
         x1 = b.fresh(X) if has_t else x
         b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, X), f"{p}{x1}", p, x1, "centripetal",
               f"(a_{X})_{P}^n", f"(a_{X})_{P}^n = ω_{L}² × {P}{X}",
@@ -92,4 +94,6 @@ def driver(scene):
     """The crank dyad when the scene is driven by a crank, else None."""
     from ..scene import Crank
     drv = scene.driver
-    return CrankDyad(drv.link, drv.pivot, drv.tip) if isinstance(drv, Crank) else None
+    if not isinstance(drv, Crank):
+        return None
+    return CrankDyad(drv.link, drv.pivot, drv.tip, scene_alpha(scene) != 0.0)

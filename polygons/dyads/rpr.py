@@ -23,12 +23,14 @@ from . import image
 @dataclass(frozen=True)
 class RPR:
     """Placed pin ``pin`` slides in the slot of ``lever`` turning about ``pivot``;
-    places the lever's point ``coincident`` under the pin and its far end ``far``."""
+    places the lever's point ``coincident`` under the pin and its far end ``far``; ``offset``
+    when the slot runs parallel to the lever, off its pivot."""
     pin: str
     lever: str
     pivot: str
     coincident: str
     far: str | None
+    offset: bool = False
     two_closures = False
 
     @property
@@ -126,7 +128,7 @@ class RPR:
                        f"Through {b_} draw a line perpendicular to the lever {B}{A}: the "
                        f"velocity of {A1}, the point of the lever under the pin.",
                        component=C.RELATIVE, link=lev, relative=(A1, B))
-            if b.scene.slots[A].offset:     # the slot runs parallel to the lever, off B
+            if self.offset:     # the slot runs parallel to the lever, off B
                 F = self.far
                 n2 = b.add(Kind.LINE, Op.LINE_SLIDE, (A,), f"slot line ∥ {B}{F}", a, None,
                            "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{F}",
@@ -199,4 +201,5 @@ def matches(scene, placed):
     """Every slot whose pin is placed and whose lever point is not yet."""
     for slot in scene.slots.values():
         if slot.coincident not in placed and slot.pin in placed and slot.pivot in placed:
-            yield RPR(slot.pin, slot.lever, slot.pivot, slot.coincident, slot.far)
+            yield RPR(slot.pin, slot.lever, slot.pivot, slot.coincident, slot.far,
+                      bool(slot.offset))
