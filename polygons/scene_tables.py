@@ -85,7 +85,9 @@ TABLES: tuple[Table, ...] = (
         Key("angle", "string", "crank angle (an angle with its unit), CCW from +x (reduced to one turn exactly; "
                                  "beyond ±1e6° refused); also 'θ from idc' / 'θ from odc' "
                                  "(slider-crank: from inner / outer dead centre, in the "
-                                 "crank's sense) and 'θ from AD' (CCW from the ray A→D); "
+                                 "crank's sense), 'θ from AD' (CCW from the ray A→D), "
+                                 "'θ from +y' (or +x, -x, -y) and 'θ CW from AD' / "
+                                 "'θ clockwise from +y' (measured clockwise); "
                                  "default: from the tip's [drawn] position",
             example='"60 deg"', sign="CCW from +x"),
         Key("omega", "quantity", "crank speed (magnitude; its sense is `sense`); 0 for an "

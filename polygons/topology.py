@@ -79,6 +79,19 @@ _DEAD_WORDS = {"idc": "idc", "inner dead centre": "idc", "inner dead center": "i
                "tdc": "idc", "odc": "odc", "outer dead centre": "odc",
                "outer dead center": "odc", "bdc": "odc"}
 _LINE = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
+#: the axes an angle may be measured from (the direction of each, CCW from +x)
+_AXES = {"+x": 0.0, "x": 0.0, "-x": math.pi, "+y": math.pi / 2, "y": math.pi / 2,
+         "-y": -math.pi / 2}
+_TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "ccw": 1.0, "anticlockwise": 1.0,
+               "anti-clockwise": 1.0, "counterclockwise": 1.0, "counter-clockwise": 1.0}
+
+
+def _turn_of(text: str) -> tuple[str, float]:
+    """'30 deg CW' → ('30 deg', −1); '30 deg' → ('30 deg', +1): the sense an angle is
+    measured in, CCW unless the text ends in a clockwise word."""
+    head, _, last = text.strip().rpartition(" ")
+    turn = _TURN_WORDS.get(last.lower())
+    return (head.strip(), turn) if head and turn is not None else (text.strip(), 1.0)
 
 
 def default_coincident(point: str) -> str:
@@ -148,22 +161,32 @@ def lever_as_crank(drv: dict, r, slots_raw, links_raw) -> dict:
 
 
 def crank_angle(value, r, *, pivot, tip, sense, ground, links, sliders, assembly) -> float:
-    """The crank angle (rad, CCW from +x) stated as ``"30 deg"``, ``"30 deg from idc"`` /
-    ``"from odc"`` (a slider-crank: θ past inner / outer dead centre in the crank's sense of
-    rotation) or ``"30 deg from AD"`` (θ CCW from the ray A → D between two fixed points, e.g.
-    the line of centres of a four-bar)."""
+    """The crank angle (rad, CCW from +x) stated as a book states it:
+
+    * ``"30 deg"``: CCW from +x;
+    * ``"30 deg from idc"`` / ``"from odc"``: a slider-crank, θ past inner / outer dead centre
+      in the crank's sense of rotation;
+    * ``"30 deg from AD"``: CCW from the ray A → D between two fixed points (the line of
+      centres of a four-bar);
+    * ``"30 deg from +y"`` (or +x, -x, -y): from an axis;
+    * ``"30 deg CW from AD"`` / ``"45 deg clockwise from +y"``: measured clockwise (``CCW``,
+      the default, also said).
+    """
     where = "driver.angle"
     m = _FROM.match(value) if isinstance(value, str) else None
     if not m:
         return r.quantity(value, "angle", where, reduce=True)
-    theta = r.quantity(m.group(1), "angle", where, reduce=True)
+    amount, turn = _turn_of(m.group(1))
+    theta = r.quantity(amount, "angle", where, reduce=True)
     ref = " ".join(m.group(2).split())
     dead = _DEAD_WORDS.get(ref.lower())
     if dead is None:
+        if ref.lower() in _AXES:
+            return _AXES[ref.lower()] + turn * theta
         if not _LINE.match(ref):
             raise SceneError(f"cannot read {value!r}: write '30 deg', '30 deg from idc', "
-                             f"'30 deg from odc' or '30 deg from AD' (two fixed points)",
-                             file=r.file, where=where)
+                             f"'30 deg from odc', '30 deg from AD' (two fixed points) or "
+                             f"'30 deg CW from +y'", file=r.file, where=where)
         a, b = re.findall(r"[A-Z][a-z0-9_']*", ref)
         missing = [lab for lab in (a, b) if lab not in ground]
         if missing:
@@ -171,7 +194,11 @@ def crank_angle(value, r, *, pivot, tip, sense, ground, links, sliders, assembly
                              f"{', '.join(missing)} not in [ground] ({', '.join(ground)})",
                              file=r.file, where=where)
         (ax, ay), (bx, by) = ground[a], ground[b]
-        return math.atan2(by - ay, bx - ax) + theta
+        return math.atan2(by - ay, bx - ax) + turn * theta
+    if amount != m.group(1).strip():
+        raise SceneError(f"{value!r}: an angle from a dead centre is measured in the crank's "
+                         f"sense of rotation ([driver] sense); drop the CW/CCW",
+                         file=r.file, where=where)
     rods = [(l.b if l.a == tip else l.a, l) for l in links.values()
             if tip in (l.a, l.b) and pivot not in (l.a, l.b)]
     rods = [(x, l) for x, l in rods if x in sliders and sliders[x].pin is None]

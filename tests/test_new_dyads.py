@@ -538,8 +538,21 @@ def test_angle_from_the_line_of_centres_and_guide_from_a_pivot():
         solve(t).points["B"].acceleration, rel=1e-12)
 
 
+@pytest.mark.parametrize("words, degrees", [
+    ("30 deg CW from OD", math.degrees(math.atan2(0.1, 0.3)) - 30.0),
+    ("30 deg ccw from OD", math.degrees(math.atan2(0.1, 0.3)) + 30.0),
+    ("45 deg from +y", 135.0), ("45 deg clockwise from +y", 45.0),
+    ("10 deg CW from -x", 170.0), ("20 deg from -y", -70.0), ("0.5 rad from +x", 28.64788975654116),
+])
+def test_angles_as_a_book_words_them(words, degrees):
+    """'θ CW from AD', 'θ from +y', ...: the crank angle CCW from +x they mean, hand-checked."""
+    got = math.degrees(_engine(words).driver.angle)
+    assert math.remainder(got - degrees, 360.0) == pytest.approx(0.0, abs=1e-12)
+
+
 @pytest.mark.parametrize("angle, side, guide, words", [
     ("30 deg from idc", "B above O", None, "needs the side of the slider"),
+    ("30 deg CW from idc", "B right of O", None, "crank's sense of rotation"),
     ("30 deg from XY", "B right of O", None, "must join two fixed points"),
     ("30 deg from the moon", "B right of O", None, "cannot read"),
     ("30 deg", "B right of O", {"from": "O", "direction": "0 deg"}, "offset"),
