@@ -2,8 +2,8 @@
 
 ``solve_many(scene, AB=lengths, theta=angles, ...)`` gives any scene quantity an array of
 values and solves every row (or, with ``grid=True``, every combination) in one vectorised
-pass: each dyad's :meth:`locate` and the interpreter kernel (:mod:`polygons.interpret`) run on
-(2, N) arrays, as in a sweep.  The quantities, by name (SI units):
+pass: the step program generated for arrays (:mod:`polygons.codegen`) runs on (N,) columns,
+as in a sweep.  The quantities, by name (SI units):
 
 * a link's name (``AB``): its length in m;
 * ``<G>_x`` / ``<G>_y`` for a fixed point ``G``: its coordinates in m;
@@ -28,10 +28,9 @@ from typing import Mapping
 import numpy as np
 
 from .errors import PolygonsError, UnknownLabelError, suggest
-from .interpret import Backend, Kernel
 from .plan import construction, make_plan
 from .scene import Crank, Scene
-from .steps import Diagram, Vertices
+from .steps import Diagram
 from .sweep import compile_plan
 
 #: the staged solver's threshold (polygons.geometry.PARALLEL_DEG)
@@ -115,8 +114,9 @@ def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
                grid: bool = False, engine: str = "compiled", **arrays) -> Batch:
     """Solve ``scene`` once per row of the given quantities (see the module docstring), or
     for every combination of them with ``grid=True``; scalars broadcast.  ``engine``:
-    'compiled' (the construction compiled for arrays, :mod:`polygons.compiled`) or 'kernel'
-    (each dyad's ``locate`` and the interpreter kernel on (2, N)): the same numbers."""
+    'compiled' (the construction compiled for arrays, :mod:`polygons.compiled`) or 'located'
+    (the points placed by each dyad's numpy ``locate``, then the step program for arrays on
+    them): the same numbers to rounding."""
     given = dict(values or {})
     given.update(arrays)
     names = _quantities(scene)
@@ -148,13 +148,9 @@ def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
         cols = {k: np.atleast_1d(v) for k, v in zip(cols, b)}
         shape = (next(iter(cols.values())).shape[0],) if cols else (1,)
     n = int(np.prod(shape))
-    solve = {"compiled": _solve_compiled, "kernel": _solve_kernel}[engine]
-    from .compiled import NotCompiled
+    solve = {"compiled": _solve_compiled, "located": _solve_located}[engine]
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        try:
-            return solve(scene, cols, shape, n)
-        except NotCompiled:      # a dyad the generator does not cover: the kernel solves it
-            return _solve_kernel(scene, cols, shape, n)
+        return solve(scene, cols, shape, n)
 
 
 _DRIVER_NAMES = ("theta", "s", "omega", "alpha", "velocity", "acceleration")
@@ -221,7 +217,7 @@ def prepare(scene: Scene):
 
 
 class _Polygons:
-    """The polygon vertices of every row, read like a kernel's (``of(diagram, label)``)."""
+    """The polygon vertices of every row (``of(diagram, label)``)."""
 
     def __init__(self, vx):
         self.vx = vx
@@ -242,16 +238,46 @@ def _solve_compiled(scene: Scene, cols: dict, shape, n: int) -> Batch:
     idx = code.index
     r = code.fn(x, params)
     full = lambda v: np.broadcast_to(v, (n,))  # noqa: E731
-    pos, vx = {}, {}
-    for (key, label), ij in idx.items():
-        if key == "pos":
-            pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
-        elif key in ("velocity", "acceleration"):
-            vx[(key, label)] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+    pos = {label: np.array([full(r[ij[0]]), full(r[ij[1]])])
+           for (key, label), ij in idx.items() if key == "pos"}
     for i, d in zip(idx[("margins", "")], idx[("margin_of", "")]):
         m = full(r[i])
         mark(~(m >= 0) if d.two_closures else ~(m > 0),
              getattr(d, "lever", None) or d.placed[0], _why_not(scene, cols, d))
+    return _read(scene, plan, prog, steps, cols, shape, n, idx, r, pos, fail, where, mark)
+
+
+def _solve_located(scene: Scene, cols: dict, shape, n: int) -> Batch:
+    """The rows placed by each dyad's ``locate`` on (2, N) arrays (its numpy form, not the
+    generated one), then the step program for arrays run on those points
+    (:func:`polygons.compiled.compile_given`)."""
+    from .compiled import compile_given, given_params
+    plan, prog, steps = prepare(scene)
+    vs, x = _varied_scene(scene, cols, n)
+    fail, where, mark = _failures(scene, cols, n)
+    pos = {}
+    for g, (gx, gy) in vs.ground.items():
+        pos[g] = np.array([np.broadcast_to(gx, (n,)), np.broadcast_to(gy, (n,))], dtype=float)
+    for d in plan.dyads:
+        pts, m = d.locate(vs, pos, prog.sigma.get(d.placed[0]), x)
+        pos.update({k: np.broadcast_to(v, (2, n)) for k, v in pts.items()})
+        if m is not None:
+            m = np.broadcast_to(m, (n,))
+            bad = ~(m >= 0) if d.two_closures else ~(m > 0)
+            mark(bad, getattr(d, "lever", None) or d.placed[0], _why_not(scene, cols, d))
+    code = compile_given(scene, plan)
+    r = code.fn(x, given_params(code, vs, pos))
+    return _read(scene, plan, prog, steps, cols, shape, n, code.index, r, pos, fail, where,
+                 mark)
+
+
+def _read(scene, plan, prog, steps, cols, shape, n, idx, r, pos, fail, where, mark) -> Batch:
+    """The batch from an arrays program's record ``r``: polygon vertices, rates, and the
+    conditioning (the staged solver's angle between the lines, atan2(|u × v|, |u · v|), from
+    the pair with the smallest ratio; rows below PARALLEL_DEG marked as toggles)."""
+    full = lambda v: np.broadcast_to(v, (n,))  # noqa: E731
+    vx = {(key, label): np.array([full(r[ij[0]]), full(r[ij[1]])])
+          for (key, label), ij in idx.items() if key in ("velocity", "acceleration")}
     cmin = dmin = None
     for i, j, s in idx[("crossings", "")]:
         c, d = np.abs(full(r[i])), np.abs(full(r[j]))
@@ -262,10 +288,10 @@ def _solve_compiled(scene: Scene, cols: dict, shape, n: int) -> Batch:
             cmin, dmin = np.where(lower, c, cmin), np.where(lower, d, dmin)
         mark(~(c >= _TAN_PARALLEL * d), f"{s.diagram} {s.number} ({s.draws})",
              _parallel(steps, s))
-    k = _Polygons(vx)
     W = {name: full(r[i]) for (key, name), i in idx.items() if key == "omega"}
     AL = {name: full(r[i]) for (key, name), i in idx.items() if key == "alpha"}
-    return _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin)
+    return _finish(scene, plan, prog, cols, shape, n, pos, _Polygons(vx), W, AL, fail, where,
+                   cmin, dmin)
 
 
 def _failures(scene, cols, n):
@@ -288,51 +314,6 @@ def _parallel(steps, s):
     return lambda i: (f"the {_draws(steps, s.diagram, s.lines[0])} and the "
                       f"{_draws(steps, s.diagram, s.lines[1])} are parallel: the mechanism is "
                       f"at a toggle or change point")
-
-
-def _solve_kernel(scene: Scene, cols: dict, shape, n: int) -> Batch:
-    """The rows by each dyad's ``locate`` and the interpreter kernel on (2, N) arrays."""
-    plan, prog, steps = prepare(scene)
-    vs, x = _varied_scene(scene, cols, n)
-    fail, where, mark = _failures(scene, cols, n)
-    # positions: each dyad's locate on (2, N)
-    pos = {}
-    for g, (gx, gy) in vs.ground.items():
-        pos[g] = np.array([np.broadcast_to(gx, (n,)), np.broadcast_to(gy, (n,))], dtype=float)
-    for d in plan.dyads:
-        pts, m = d.locate(vs, pos, prog.sigma.get(d.placed[0]), x)
-        pos.update({k: np.broadcast_to(v, (2, n)) for k, v in pts.items()})
-        if m is not None:
-            m = np.broadcast_to(m, (n,))
-            bad = ~(m >= 0) if d.two_closures else ~(m > 0)
-            mark(bad, getattr(d, "lever", None) or d.placed[0], _why_not(scene, cols, d))
-    # rates: the kernel over the step program
-    omega, alpha = {}, {}
-    drv = vs.driver
-    if isinstance(drv, Crank):
-        omega[drv.link] = np.broadcast_to(drv.omega, (n,))
-        alpha[drv.link] = np.broadcast_to(drv.alpha, (n,))
-    k = Kernel(vs, pos, Vertices(scene), Backend(), omega, alpha, arrays=True)
-    # conditioning: the staged solver's angle between the lines, atan2(|u × v|, |u · v|),
-    # taken once at the end from the (|u × v|, |u · v|) pair with the smallest ratio
-    cmin = dmin = None
-    for s in steps:
-        k.run(s)
-        if s.op == "intersect":
-            l1, l2 = (k.lines[(s.diagram, j)] for j in s.lines)
-            u, v = l1[1], l2[1]
-            c = np.broadcast_to(np.abs(u[0] * v[1] - u[1] * v[0]), (n,))
-            d = np.broadcast_to(np.abs(u[0] * v[0] + u[1] * v[1]), (n,))
-            if cmin is None:
-                cmin, dmin = c, d
-            else:
-                lower = c * dmin < cmin * d
-                cmin, dmin = np.where(lower, c, cmin), np.where(lower, d, dmin)
-            # below PARALLEL_DEG: atan2(c, d) < 1e-5°, i.e. c < tan(1e-5°) d
-            mark(~(c >= _TAN_PARALLEL * d), f"{s.diagram} {s.number} ({s.draws})",
-                 _parallel(steps, s))
-    W, AL = dict(k.omega), dict(k.alpha)
-    return _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin)
 
 
 def _finish(scene, plan, prog, cols, shape, n, pos, k, W, AL, fail, where, cmin, dmin):

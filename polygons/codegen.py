@@ -1,15 +1,20 @@
-"""The step program written out as straight-line Python source (the compiler's back end).
+"""The step program written out as straight-line Python source: every interpreter runs it.
 
 Every dyad's placement comes from its module's :meth:`source`; every construction step from
-the op's generator in :class:`_Steps`, which writes the formula of :mod:`polygons.interpret`
-term for term over named locals.  :func:`generate` turns a plan into one function
-``_solve(x, params)`` returning a flat record of floats, with the layout that says where each
-step's numbers are in it.  Three flavours of the same text:
+its op's generator in :class:`_Steps` — the one implementation of each
+:class:`~polygons.steps.Op`, the theorem of :mod:`polygons.theorems` written term for term
+over named locals.  :func:`generate` turns a plan into one function ``_solve(x, params)``
+returning a flat record of floats, with the layout that says where each step's numbers are
+in it.  The interpreters are flavours of the same text:
 
 * over floats, the 2×2 line intersection inline (the compiled evaluator, :mod:`polygons.compiled`);
 * over floats, the intersections by a ``meet`` function (the staged solver:
   :mod:`polygons.evaluate` passes shapely's, :func:`polygons.geometry.meet`);
-* over (N,) arrays, no checks, dyad margins kept (sweeps, :func:`polygons.compiled.compile_arrays`).
+* over (N,) arrays, no checks, dyad margins kept (sweeps and batches,
+  :func:`polygons.compiled.compile_arrays`), or on points given as parameters (a batch's
+  located engine, :func:`polygons.compiled.compile_given`);
+* over arrays with every vector, direction and mark drawn by noisy instruments (the
+  drawing-board emulation, :mod:`polygons.drawing_board`).
 
 This module imports neither shapely nor the diagrams.
 """
@@ -60,10 +65,12 @@ class Source:
     # locate's np.hypot (math.hypot over floats), so that positions over arrays are the
     # kernel's to the last bit.
 
-    def __init__(self, scene: Scene, sigma: dict, arrays: bool = False, meet=None):
+    def __init__(self, scene: Scene, sigma: dict, arrays: bool = False, meet=None,
+                 instruments=None):
         self.scene = scene
         self.arrays = arrays
-        self.meet = meet               # the intersection of two lines, or None: inline 2×2           # the same code over (N,) arrays: no checks, margins kept
+        self.meet = meet               # the intersection of two lines, or None: inline 2×2
+        self.instruments = instruments  # the drawing board's noisy strokes, or None: exact           # the same code over (N,) arrays: no checks, margins kept
         self.margins: list[str] = []
         self.margin_of: list = []      # the dyad of each margin
         self.crossings: list = []      # (u × v, u · v, step) of every intersection
@@ -159,7 +166,12 @@ class _Out:
 
 
 class _Steps:
-    """The op generators: one per :class:`Op`, the kernel's formulas over floats."""
+    """The op generators: one per :class:`Op` (the only code that says what an op means).
+
+    Each writes its theorem over plane vectors held as pairs of local names: (v_B)_A = ω × AB
+    (``rel_vel``), (a_B)_A^n = −ω² AB (``centripetal``), a_cor = 2 ω × v (the Coriolis ops),
+    ω or α = (AB × ab) / AB² (``ang``), a line through a vertex along a unit direction, and
+    the intersection of two lines (P + t u = Q + s v, the 2×2 solve or ``meet``)."""
 
     def __init__(self, g: Source, scene: Scene, names: Vertices, omega: dict, alpha: dict):
         self.g, self.scene, self.names = g, scene, names
@@ -171,7 +183,7 @@ class _Steps:
         self.slide_a: dict = {}
         self.cor: dict = {}
 
-    # helpers mirroring Kernel
+    # vector helpers over pairs of local names
     def r(self, p, x):
         (px, py), (xx, xy) = self.g.pos(p), self.g.pos(x)
         return self.g.vec(f"{xx} - {px}", f"{xy} - {py}")
@@ -199,7 +211,7 @@ class _Steps:
                 g.param(lambda s: getattr(s.sliders[X], attr)[1]))
 
     def slot_e(self, A_):
-        """The unit vector along the slot of pin ``A_`` (``Kernel._slot_e``): pivot → far end
+        """The unit vector along the slot of pin ``A_``: pivot → far end
         for an offset slot or a lever placed before its pin, else pivot → pin."""
         slot = self.scene.slots[A_]
         if slot.far is not None and slot_along_lever(self.scene, slot):
@@ -225,7 +237,17 @@ class _Steps:
         return self.g.let(f"({r[0]} * {rel[1]} - {r[1]} * {rel[0]}) / "
                           f"({r[0]} * {r[0]} + {r[1]} * {r[1]})")
 
+    def drawn(self, s, stroke: str, xy):
+        """``xy`` as the drawing board's instrument draws it (``stroke``: 'vector' set off
+        with rule and protractor, 'direction' with the set square, 'mark' with the pencil:
+        ``instruments.<stroke>(diagram, x, y) → (x, y)``); as it is in an exact construction."""
+        inst = self.g.instruments
+        if inst is None:
+            return xy
+        return tuple(self.g.call(getattr(inst, stroke), repr(str(s.diagram)), *xy, n=2))
+
     def vector(self, s, vec, unit, terms):
+        vec = self.drawn(s, "vector", vec)
         start = self.vx[s.diagram][s.start]
         end = self.g.vec(f"{start[0]} + {vec[0]}", f"{start[1]} + {vec[1]}")
         self.vx[s.diagram][s.end] = end
@@ -233,6 +255,7 @@ class _Steps:
 
     def line(self, s, d, anchor):
         g = self.g
+        d = self.drawn(s, "direction", d)
         n = self.norm(d)
         g.fail_unless(f"{n} != 0.0 and {n} == {n}", ("step", s, "zero"))
         u = g.vec(f"{d[0]} / {n}", f"{d[1]} / {n}")
@@ -308,7 +331,7 @@ class _Steps:
         w2 = g.let(f"2.0 * {w}")
         a_cor = g.vec(f"{w2} * -{ve[1]}", f"{w2} * {ve[0]}")
         self.cor[A_] = a_cor
-        anchor = self.sub(self.of(s.diagram, A_), a_cor)
+        anchor = self.sub(self.of(s.diagram, A_), self.drawn(s, "vector", a_cor))
         ln = self.line(s, e, anchor)
         neg = g.vec(f"-{a_cor[0]}", f"-{a_cor[1]}")
         return dict(at=ln[0], vector=neg, direction=ln[1]), None, None, "m/s^2", (
@@ -378,6 +401,7 @@ class _Steps:
             w = self.sub(q, p)
             t = g.let(f"({w[0]} * {v[1]} - {w[1]} * {v[0]}) / {den}")
             pt = g.vec(f"{p[0]} + {t} * {u[0]}", f"{p[1]} + {t} * {u[1]}")
+        pt = self.drawn(s, "mark", pt)
         self.vx[s.diagram][s.end] = pt
         unit = _unit_of(s.diagram)
         return dict(point=pt), None, angle, unit, (
@@ -491,21 +515,30 @@ def check_compilable(scene: Scene, plan: Plan, steps: tuple[Step, ...]) -> None:
 
 
 def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
-             arrays: bool = False, meet=None) -> _Code:
+             arrays: bool = False, meet=None, instruments=None, positions: bool = False
+             ) -> _Code:
     """The source of ``_solve(x, params)`` for ``plan``'s construction ``steps``, compiled.
 
     With ``meet`` (the staged solver) the intersections call ``meet(px, py, ux, uy, qx, qy,
     vx, vy) → (x, y)`` (NaN where it finds none) and the record also holds every polygon
-    vertex and slot direction (what a :class:`polygons.evaluate.Solution` reports)."""
+    vertex and slot direction (what a :class:`polygons.evaluate.Solution` reports).
+
+    With ``instruments`` (the drawing board) every vector, line direction and marked point
+    passes through its noisy stroke (:meth:`_Steps.drawn`); with ``positions`` every point is
+    a parameter ``("pos", label, 0 | 1)`` (the space diagram as drawn), not placed again."""
     check_compilable(scene, plan, steps)
-    g = Source(scene, sigma, arrays, meet)
-    for label in scene.ground:
-        g.place(label, g.param(lambda s, _l=label: s.ground[_l][0]),
-                g.param(lambda s, _l=label: s.ground[_l][1]))
-    for d in plan.dyads:
-        g.dyad = d
-        d.source(g)
-    g.dyad = None
+    g = Source(scene, sigma, arrays, meet, instruments)
+    if positions:
+        for label in list(scene.ground) + [x for d in plan.dyads for x in d.placed]:
+            g.place(label, g.param(("pos", label, 0)), g.param(("pos", label, 1)))
+    else:
+        for label in scene.ground:
+            g.place(label, g.param(lambda s, _l=label: s.ground[_l][0]),
+                    g.param(lambda s, _l=label: s.ground[_l][1]))
+        for d in plan.dyads:
+            g.dyad = d
+            d.source(g)
+        g.dyad = None
     names = Vertices(scene)
     omega, alpha = {}, {}
     drv = scene.driver

@@ -1,12 +1,12 @@
 """The step program compiled to straight-line Python over plain floats.
 
-The staged solver (:mod:`polygons.evaluate`) runs the construction stroke by stroke on numpy
-vectors and intersects its lines with shapely: right for drawing, slow for asking the same
-mechanism thousands of questions.  Here the same plan is turned, once per scene topology, into
-the source text of one Python function (every dyad's placement from its module's
-:meth:`source`, every step from the op's code below: the same formulas as
-:mod:`polygons.interpret`, term for term, with the 2×2 line intersection instead of shapely)
-which is ``compile``d and cached.  Calling it fills every step's numbers into one flat tuple;
+Every interpreter of the step program runs the code :mod:`polygons.codegen` writes from it
+(every dyad's placement from its module's :meth:`source`, every step from its op's generator),
+compiled once per scene topology and cached; they differ in how the code is generated: here
+over plain floats with the 2×2 line intersection (the fast evaluator), for the staged solver
+with shapely's intersection (:func:`compile_staged`, :mod:`polygons.evaluate`), over arrays for
+sweeps and batches (:func:`compile_arrays`, :func:`compile_given`) and with noisy instruments
+for the drawing board.  Calling the float program fills every step's numbers into one flat tuple;
 :class:`CompiledSolution` builds the :class:`~polygons.steps.Step` records and their
 substituted text from that tuple only when asked.
 
@@ -214,6 +214,28 @@ def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]
     params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
                    for get in code.getters)
     return code, params
+
+
+def compile_given(scene: Scene, plan: Plan, instruments=None) -> _Code:
+    """The construction of both diagrams generated for arrays on the points as given (every
+    point a parameter ``("pos", label, 0 | 1)``: placed by each dyad's ``locate``, or the
+    space diagram as drawn), every stroke through ``instruments`` when given (the drawing
+    board, :mod:`polygons.drawing_board`; its code is not kept)."""
+    steps = construction(plan, tuple(Diagram))
+    if instruments is not None:
+        return generate(scene, plan, steps, {}, arrays=True, instruments=instruments,
+                        positions=True)
+    key = ("given", plan.dyads, steps, tuple(scene.ground), _slot_kinds(scene))
+    code = _CACHE.get(key)
+    if code is None:
+        code = _CACHE[key] = generate(scene, plan, steps, {}, arrays=True, positions=True)
+    return code
+
+
+def given_params(code: _Code, scene, points: dict) -> tuple:
+    """The parameters of a :func:`compile_given` program: the points, then the scene's."""
+    return tuple(points[get[1]][get[2]] if isinstance(get, tuple) else get(scene)
+                 for get in code.getters)
 
 
 class CompiledSolution:

@@ -2,8 +2,9 @@
 
 A :class:`Step` is one stroke of a tutorial's construction ("from o draw oa = ω·OA ⟂ OA",
 "through b1 draw the b line ⟂ AB", "the lines meet at b").  The dyad modules
-(:mod:`polygons.dyads`) plan steps with no numbers in them; an interpreter
-(:mod:`polygons.interpret`) executes them and returns copies with the numbers filled in:
+(:mod:`polygons.dyads`) plan steps with no numbers in them; the step program written out by
+:mod:`polygons.codegen` executes them (for each interpreter: staged with shapely, compiled over
+floats, vectorised over arrays, on a noisy drawing board) and the numbers are filled into copies:
 the vertex it creates, the vector it draws, the direction of a line, a measured value, and the
 :class:`Term` records substituted into the formula.  Renderers, narrators and graders read
 these fields; nobody parses the prose (``reason``, ``substituted``) back.

@@ -17,9 +17,8 @@ import numpy as np
 
 from .errors import PolygonsError
 from .scene import Scene
-from .sweep import (CHUNK, PROBE, Limit, Program, _SIN_PARALLEL, _diff, _fmt_input,
-                    compile_plan, find_range)
-from .theorems import angular_acceleration, angular_velocity
+from .sweep import (CHUNK, PROBE, Limit, Program, _SIN_PARALLEL, _fmt_input, arrays_program,
+                    compile_plan, find_range, from_arrays)
 
 
 @dataclass(frozen=True)
@@ -59,11 +58,7 @@ def plan_stream(scene: Scene, steps: int, *, probe: int = PROBE) -> Stream:
         warnings.append(f"toggle at {where}: {tg.reason}" if tg.kind == "toggle" else
                         f"near toggle at {where}: {tg.reason}; the construction lines meet "
                         f"at only {tg.angle_deg:.3g}°")
-    from .compiled import NotCompiled, compile_arrays
-    try:
-        code, params = compile_arrays(scene, prog.plan, dict(prog.sigma))
-    except NotCompiled:          # the kernel (polygons.sweep.evaluate) solves each chunk
-        code, params = None, ()
+    code, params = arrays_program(prog)
     return Stream(prog, steps, full, rng, tuple(limits) + tuple(toggles), tuple(warnings),
                   code, params)
 
@@ -84,66 +79,9 @@ def stream(st: Stream, *, chunk: int = CHUNK * 16):
 
 
 def evaluate_compiled(st: Stream, xs: np.ndarray) -> dict:
-    """:func:`evaluate`'s results for the inputs ``xs``, from the construction compiled for
-    arrays (:func:`polygons.compiled.compile_arrays`: the same steps as straight-line numpy,
-    only what the results need): equal to :func:`evaluate` to rounding.  Where nothing was
-    compiled (a dyad the generator does not cover) the kernel's :func:`evaluate` runs."""
-    if st.code is None:
-        from .sweep import evaluate
-        return evaluate(st.prog, xs)
-    prog, idx = st.prog, st.code.index
-    scene = prog.scene
-    n = xs.shape
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        r = st.code.fn(xs, st.params)
-        full = lambda v: np.broadcast_to(v, n)  # noqa: E731
-        P, V, A = {}, {}, {}
-        pos = {}
-        for (key, label), ij in idx.items():
-            if key == "pos":
-                if label in prog.ground:
-                    P[label] = prog.ground[label]
-                else:
-                    P[label] = (r[ij[0]], r[ij[1]])
-                pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
-        for label in pos:
-            if label in prog.ground:
-                V[label] = A[label] = None
-                continue
-            i, j = idx[("velocity", label)]
-            V[label] = (full(r[i]), full(r[j]))
-            i, j = idx[("acceleration", label)]
-            A[label] = (full(r[i]), full(r[j]))
-        W = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
-             if key == "omega"}
-        AL = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
-              if key == "alpha"}
-        for name, a, b in prog.links:
-            if name in W or a not in pos or b not in pos:
-                continue
-            rr = pos[b] - pos[a]
-            W[name] = angular_velocity(rr, _diff(V[b], V[a]))
-            AL[name] = angular_acceleration(rr, _diff(A[b], A[a]))
-        travel, SV, SA = {}, {}, {}
-        for label, g in scene.sliders.items():
-            if label in pos and label not in prog.ground:
-                e = g.direction
-                travel[label] = ((pos[label][0] - g.through[0]) * e[0]
-                                 + (pos[label][1] - g.through[1]) * e[1])
-                SV[label] = V[label][0] * e[0] + V[label][1] * e[1]
-                SA[label] = A[label][0] * e[0] + A[label][1] * e[1]
-        for (key, k), i in idx.items():
-            if key == "slide_v":
-                SV[k] = full(r[i])
-            elif key == "slide_a":
-                SA[k] = full(r[i])
-        COR = {k: (full(r[ij[0]]), full(r[ij[1]])) for (key, k), ij in idx.items()
-               if key == "coriolis"}
-        margin = np.ones(n)
-        for i in idx[("margins", "")]:
-            margin = np.minimum(margin, r[i])
-    return {"pos": P, "travel": travel, "margin": margin, "vel": V, "acc": A, "omega": W,
-            "alpha": AL, "slide_v": SV, "slide_a": SA, "coriolis": COR}
+    """:func:`polygons.sweep.evaluate`'s results for the inputs ``xs``, from the stream's
+    construction compiled for arrays."""
+    return from_arrays(st.prog, st.code, st.params, xs)
 
 
 def _undefine_chunk(res: dict, mask: np.ndarray) -> None:

@@ -38,11 +38,10 @@ import numpy as np
 
 from .dyads.base import size_of
 from .errors import ConstructionError, PolygonsError
-from .interpret import Backend, Kernel
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input
 from .scene import Crank, Scene
-from .steps import Diagram, Step, Vertices
+from .steps import Diagram, Step
 from .theorems import angular_acceleration, angular_velocity
 
 #: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
@@ -224,6 +223,9 @@ def place(prog: Program, t: np.ndarray):
 
 
 def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
+    if rates:
+        code, params = arrays_program(prog)
+        return from_arrays(prog, code, params, t)
     scene = prog.scene
     n = t.shape
     pos, margins = place(prog, t)
@@ -237,46 +239,78 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
             e = g.direction
             travel[label] = ((pos[label][0] - g.through[0]) * e[0]
                              + (pos[label][1] - g.through[1]) * e[1])
-    out = {"pos": P, "travel": travel, "margin": margin}
-    if not rates:
-        return out
-    drv = scene.driver
-    omega, alpha = {}, {}
-    if isinstance(drv, Crank):
-        omega[drv.link], alpha[drv.link] = prog.rate, prog.rate2
-    k = Kernel(scene, pos, Vertices(scene), _ARRAYS, omega, alpha, arrays=True, detail=False)
-    for step in prog.steps:
-        k.run(step)
-    full = (2,) + n
-    V, A = {}, {}
-    for label in pos:
-        if label in prog.ground:
-            V[label] = A[label] = None
-            continue
-        v, a = k.of(Diagram.VELOCITY, label), k.of(Diagram.ACCELERATION, label)
-        V[label] = tuple(np.broadcast_to(_col(v, n), full))
-        A[label] = tuple(np.broadcast_to(_col(a, n), full))
-    W, AL = dict(k.omega), dict(k.alpha)
-    for name, a, b in prog.links:
-        if name in W or a not in pos or b not in pos:
-            continue
-        r = pos[b] - pos[a]
-        W[name] = angular_velocity(r, _diff(V[b], V[a]))
-        AL[name] = angular_acceleration(r, _diff(A[b], A[a]))
-    SV, SA = {}, {}
-    for label, g in scene.sliders.items():
-        if label in travel:
-            e = g.direction
-            SV[label] = V[label][0] * e[0] + V[label][1] * e[1]
-            SA[label] = A[label][0] * e[0] + A[label][1] * e[1]
-    SV.update(k.slide_v)
-    SA.update(k.slide_a)
-    COR = {pin: (c[0], c[1]) for pin, c in k.cor.items()}
-    out.update(vel=V, acc=A, omega=W, alpha=AL, slide_v=SV, slide_a=SA, coriolis=COR)
-    return out
+    return {"pos": P, "travel": travel, "margin": margin}
 
 
-_ARRAYS = Backend()
+def arrays_program(prog: Program):
+    """The construction of ``prog`` generated for (N,) arrays of inputs (:mod:`polygons.codegen`
+    via :func:`polygons.compiled.compile_arrays`) and the scene's parameters: made once per
+    program and kept with it."""
+    memo = prog.__dict__
+    if "_arrays" not in memo:
+        from .compiled import compile_arrays
+        memo["_arrays"] = compile_arrays(prog.scene, prog.plan, dict(prog.sigma))
+    return memo["_arrays"]
+
+
+def from_arrays(prog: Program, code, params, xs: np.ndarray) -> dict:
+    """:func:`evaluate`'s results at the inputs ``xs``: the arrays program run once, its flat
+    record read into positions, polygon vertices, rates, slides and the dyads' margin."""
+    idx = code.index
+    scene = prog.scene
+    n = xs.shape
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        r = code.fn(xs, params)
+        full = lambda v: np.broadcast_to(v, n)  # noqa: E731
+        P, V, A = {}, {}, {}
+        pos = {}
+        for (key, label), ij in idx.items():
+            if key == "pos":
+                if label in prog.ground:
+                    P[label] = prog.ground[label]
+                else:
+                    P[label] = (r[ij[0]], r[ij[1]])
+                pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+        for label in pos:
+            if label in prog.ground:
+                V[label] = A[label] = None
+                continue
+            i, j = idx[("velocity", label)]
+            V[label] = (full(r[i]), full(r[j]))
+            i, j = idx[("acceleration", label)]
+            A[label] = (full(r[i]), full(r[j]))
+        W = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
+             if key == "omega"}
+        AL = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
+              if key == "alpha"}
+        for name, a, b in prog.links:
+            if name in W or a not in pos or b not in pos:
+                continue
+            rr = pos[b] - pos[a]
+            W[name] = angular_velocity(rr, _diff(V[b], V[a]))
+            AL[name] = angular_acceleration(rr, _diff(A[b], A[a]))
+        travel, SV, SA = {}, {}, {}
+        for label, g in scene.sliders.items():
+            if label in pos and label not in prog.ground:
+                e = g.direction
+                travel[label] = ((pos[label][0] - g.through[0]) * e[0]
+                                 + (pos[label][1] - g.through[1]) * e[1])
+                SV[label] = V[label][0] * e[0] + V[label][1] * e[1]
+                SA[label] = A[label][0] * e[0] + A[label][1] * e[1]
+        for (key, k), i in idx.items():
+            if key == "slide_v":
+                SV[k] = full(r[i])
+            elif key == "slide_a":
+                SA[k] = full(r[i])
+        COR = {k: (full(r[ij[0]]), full(r[ij[1]])) for (key, k), ij in idx.items()
+               if key == "coriolis"}
+        margin = np.ones(n)
+        for i in idx[("margins", "")]:
+            margin = np.minimum(margin, r[i])
+    return {"pos": P, "travel": travel, "margin": margin, "vel": V, "acc": A, "omega": W,
+            "alpha": AL, "slide_v": SV, "slide_a": SA, "coriolis": COR}
+
+
 
 
 def _col(v, n):

@@ -70,8 +70,8 @@ def assert_same_steps(staged, compiled, text=True):
             assert a.substituted == b.substituted, where
 
 
-#: the cases whose dyads the generator does not cover yet: refused with NotCompiled, solved
-#: by the staged solver and the kernel (none: every shipped case compiles)
+#: the cases whose dyads the generator does not cover yet: refused with NotCompiled (none:
+#: every shipped case compiles; every interpreter runs the generated program)
 NOT_COMPILED: set[str] = set()
 
 
@@ -209,7 +209,7 @@ def test_property_slotted_levers(r, dist, theta, omega, alpha, lever):
 # ---------------------------------------------------------------- the kinds of issue 10
 # Random instances of every dyad kind the generator learnt last (guided pins, prescribed
 # slides, offset slots): the compiled program against the staged construction (the same
-# errors where it fails), and the program compiled for arrays against the kernel on rows
+# errors where it fails), and the program compiled for arrays against the located engine on rows
 # varying the input.  The scenes are those of tests/test_new_dyads.py, whose closed forms
 # check the staged solver itself.
 def offsets(big):
@@ -238,7 +238,7 @@ def _check_new(scene):
     x0 = scene.driver.angle
     rows = {"theta": x0 + np.array([-0.01, 0.0, 0.01])}
     a = solve_many(scene, rows, engine="compiled")
-    b = solve_many(scene, rows, engine="kernel")
+    b = solve_many(scene, rows, engine="located")
     assert list(a.ok) == list(b.ok) and a.errors == b.errors
     for lab in b._pos:
         for get in ("position", "velocity", "acceleration"):
@@ -351,11 +351,11 @@ def test_property_pins_in_the_slot_of_a_four_bar_rocker(ad, ab, bc, cd, theta, o
         "assembly": {"C": "C above AD", "P": {"near": [m(P[0]), m(P[1])]}}}))
 
 
-def test_what_the_generator_lacks_is_refused_by_name_and_batches_fall_back(monkeypatch):
-    """check_compilable stays the guard for a kind added to the kernel before its generator:
-    an op or a dyad without code is refused with NotCompiled naming it, and a batch then runs
-    on the kernel (the same rows)."""
-    from polygons import compiled
+def test_what_the_generator_lacks_is_refused_by_name(monkeypatch):
+    """Every interpreter runs the generated step program, so a kind added without its code (a
+    dyad without ``source``, an op without its generator) is refused by name, with
+    NotCompiled, by the staged solver, the compiled evaluator and a batch alike."""
+    from polygons import codegen, compiled
     from polygons.batch import solve_many
     from polygons.dyads.rpr import RPR
     from polygons.plan import construction, make_plan
@@ -363,18 +363,18 @@ def test_what_the_generator_lacks_is_refused_by_name_and_batches_fall_back(monke
     scene = load_scene(str(ROOT / "cases" / "new-offset-slot.toml"))
     plan = make_plan(scene)
     steps = construction(plan)
-    compiled.check_compilable(scene, plan, steps)           # everything shipped compiles
+    codegen.check_compilable(scene, plan, steps)           # everything shipped compiles
     monkeypatch.setattr(compiled, "_CACHE", {})
-    rows = {"OA": [0.09, 0.1, 0.11]}
-    want = solve_many(scene, rows, engine="kernel")
     with monkeypatch.context() as mp:
-        mp.setattr(compiled._Steps, "OPS",
-                   {k: v for k, v in compiled._Steps.OPS.items() if k != Op.LINE_SLIDE})
+        mp.setattr(codegen._Steps, "OPS",
+                   {k: v for k, v in codegen._Steps.OPS.items() if k != Op.LINE_SLIDE})
         with pytest.raises(compiled.NotCompiled, match="'line_slide'"):
             compile_scene(scene)
-        got = solve_many(scene, rows, engine="compiled")
-        assert np.array_equal(got.velocity("Q"), want.velocity("Q"))
+        with pytest.raises(compiled.NotCompiled, match="'line_slide'"):
+            solve(load_scene(str(ROOT / "cases" / "new-offset-slot.toml")))
+        with pytest.raises(compiled.NotCompiled, match="'line_slide'"):
+            solve_many(scene, {"OA": [0.09, 0.1]}, engine="compiled")
     with monkeypatch.context() as mp:
         mp.delattr(RPR, "source")
         with pytest.raises(compiled.NotCompiled, match="RPR dyad at A1, Q"):
-            compiled.check_compilable(scene, plan, steps)
+            codegen.check_compilable(scene, plan, steps)

@@ -21,7 +21,7 @@ WHERE = {
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
     "polygons.reference": "commands", "polygons.__main__": "commands",
     "polygons.plan": "plan", "polygons.dyads": "plan", "polygons.mobility": "plan",
-    "polygons.interpret": "interpreters", "polygons.geometry": "interpreters",
+    "polygons.geometry": "interpreters",
     "polygons.narrate": "interpreters", "polygons.position": "interpreters",
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",

@@ -38,7 +38,7 @@ def test_the_vectorised_path_does_not_import_shapely():
     from imports import closure, imports
     graph = imports()
     mods = closure(graph, "polygons.sweep")
-    assert "polygons.interpret" in mods and "polygons.dyads.rrr" in mods
+    assert "polygons.codegen" in mods and "polygons.dyads.rrr" in mods
     for m in mods:
         assert not any(n.split(".")[0] == "shapely" for n in graph[m]), m
 
