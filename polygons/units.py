@@ -94,6 +94,21 @@ UNITS: dict[str, tuple[str, float]] = {
     "%": ("fraction", 0.01),
 }
 
+#: other spellings a textbook prints -> the spelling of :data:`UNITS` they mean (read as it;
+#: error messages list the canonical spellings only)
+SPELLINGS: dict[str, str] = {
+    "r.p.m.": "rpm", "r.p.m": "rpm", "RPM": "rpm", "R.P.M.": "rpm", "r/min": "rpm",
+    "rev/minute": "rpm", "revolutions per minute": "rpm",
+    "rps": "rev/s", "r.p.s.": "rev/s", "r/s": "rev/s",
+    "rad/sec": "rad/s", "rad/sec^2": "rad/s^2", "rad/sec²": "rad/s^2", "rad/s/s": "rad/s^2",
+    "degree": "deg", "degrees": "deg", "deg.": "deg",
+    "inch": "in", "inches": "in", "in.": "in", "foot": "ft", "feet": "ft", "ft.": "ft",
+    "m/sec": "m/s", "mm/sec": "mm/s", "ft/sec": "ft/s", "in/sec": "in/s",
+    "m/sec^2": "m/s^2", "m/sec²": "m/s^2", "mm/sec^2": "mm/s^2", "mm/sec²": "mm/s^2",
+    "ft/sec^2": "ft/s^2", "ft/sec²": "ft/s^2", "in/sec^2": "in/s^2", "in/sec²": "in/s^2",
+    "m/s/s": "m/s^2", "N-m": "N m", "N.m": "N m", "Nmm": "N mm", "N-mm": "N mm",
+}
+
 #: (smallest non-zero, largest) magnitude accepted, in SI, per dimension: inside this range
 #: every product the constructions form (ω²·r, 2ωv, m·a, squared distances) stays finite and
 #: far from underflow.  A value outside is refused at load with the range in the message.
@@ -203,6 +218,7 @@ def parse_quantity(value, dimension: str, *, file: str | None = None,
         raise UnitError(f"cannot read {show(value)} as a number with a unit "
                         f"(write e.g. '{_example(dimension)}')", file=file, where=where)
     number, unit = float(match.group(1)), " ".join(match.group(2).split())
+    unit = SPELLINGS.get(unit, unit)
     if not unit:
         if dimension == "fraction":
             return check_range(number, dimension, value, file=file, where=where)

@@ -19,7 +19,7 @@ from polygons.errors import UnitError
 from polygons.evaluate import solve
 from polygons.report import check_answers, table
 from polygons.scene import load_scene, parse_scene
-from polygons.units import LIMITS, SI_UNIT, SYSTEMS, UNITS, parse_quantity
+from polygons.units import LIMITS, SI_UNIT, SPELLINGS, SYSTEMS, UNITS, parse_quantity
 
 pint = pytest.importorskip("pint")
 UREG = pint.UnitRegistry()
@@ -53,6 +53,16 @@ def test_every_unit_factor_agrees_with_pint(unit):
     dimension, factor = UNITS[unit]
     expected = UREG.Quantity(1.0, pint_expr(unit)).to(PINT_SI[dimension]).magnitude
     assert factor == pytest.approx(expected, rel=1e-12), (unit, pint_expr(unit))
+
+
+@pytest.mark.parametrize("spelling", sorted(SPELLINGS))
+def test_every_textbook_spelling_means_a_unit_of_the_table(spelling):
+    """'120 r.p.m.', '2 rad/sec', '30 degrees', '5 inches': read as the canonical spelling
+    they name, whose factor the pint test above checks."""
+    unit = SPELLINGS[spelling]
+    assert unit in UNITS and spelling not in UNITS
+    dimension, factor = UNITS[unit]
+    assert parse_quantity(f"3 {spelling}", dimension) == pytest.approx(3 * factor, rel=1e-15)
 
 
 @pytest.mark.parametrize("unit", ["in", "ft", "ft/s", "ft/s^2", "ft/s²", "lbf", "lb", "slug",
@@ -281,6 +291,6 @@ def test_ci_runs_exactly_the_readme_test_command_in_a_fresh_venv():
 def test_unit_errors_name_the_key(tmp_path):
     text = (CASES / "bj-engine-imperial.toml").read_text(encoding="utf-8")
     p = tmp_path / "x.toml"
-    p.write_text(text.replace('BD = "8 in"', 'BD = "8 inch"'), encoding="utf-8")
-    with pytest.raises(UnitError, match=r"\[links\.BD\].*unknown unit 'inch'"):
+    p.write_text(text.replace('BD = "8 in"', 'BD = "8 furlong"'), encoding="utf-8")
+    with pytest.raises(UnitError, match=r"\[links\.BD\].*unknown unit 'furlong'"):
         load_scene(p)
