@@ -41,6 +41,16 @@ _FIELDS = ("at", "vector", "point", "direction")
 _CACHE: dict = {}
 
 
+def _cached(key, make) -> _Code:
+    """The code kept under ``key`` (a topology), made by ``make()`` the first time."""
+    code = _CACHE.get(key)
+    if code is None:
+        if len(_CACHE) >= 256:          # a bound, not a policy: topologies are few
+            _CACHE.clear()
+        code = _CACHE[key] = make()
+    return code
+
+
 def _term(r, i):
     """A term's value from the record (the same expression as the kernel's, over floats)."""
     if type(i) is int:
@@ -129,11 +139,7 @@ def compile_scene(scene: Scene, plan: Plan | None = None) -> Program:
     steps = construction(plan)
     sigma = _sigmas(plan)
     key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)), _slot_kinds(scene))
-    code = _CACHE.get(key)
-    if code is None:
-        if len(_CACHE) >= 256:          # a bound, not a policy: topologies are few
-            _CACHE.clear()
-        code = _CACHE[key] = generate(scene, plan, steps, sigma)
+    code = _cached(key, lambda: generate(scene, plan, steps, sigma))
     # the closures are parameters too: fetch them from this scene
     params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
                    for get in code.getters)
@@ -156,11 +162,7 @@ def compile_staged(scene: Scene, plan: Plan, steps: tuple[Step, ...], meet) -> "
     """The staged solver's program for ``plan`` (:func:`polygons.codegen.generate` with
     ``meet``, which draws and intersects the construction lines)."""
     key = ("staged", meet, plan.dyads, steps, tuple(scene.ground), _slot_kinds(scene))
-    code = _CACHE.get(key)
-    if code is None:
-        if len(_CACHE) >= 256:
-            _CACHE.clear()
-        code = _CACHE[key] = generate(scene, plan, steps, {}, meet=meet)
+    code = _cached(key, lambda: generate(scene, plan, steps, {}, meet=meet))
     fixed = [None if isinstance(get, tuple) else float(get(scene)) for get in code.getters]
     closures = tuple((i, get[1]) for i, get in enumerate(code.getters) if isinstance(get, tuple))
     return Staged(scene, plan, steps, code, fixed, closures)
@@ -208,9 +210,7 @@ def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]
     steps = construction(plan, tuple(Diagram))
     key = ("arrays", plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)),
            _slot_kinds(scene))
-    code = _CACHE.get(key)
-    if code is None:
-        code = _CACHE[key] = generate(scene, plan, steps, sigma, arrays=True)
+    code = _cached(key, lambda: generate(scene, plan, steps, sigma, arrays=True))
     params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
                    for get in code.getters)
     return code, params
@@ -226,10 +226,7 @@ def compile_given(scene: Scene, plan: Plan, instruments=None) -> _Code:
         return generate(scene, plan, steps, {}, arrays=True, instruments=instruments,
                         positions=True)
     key = ("given", plan.dyads, steps, tuple(scene.ground), _slot_kinds(scene))
-    code = _CACHE.get(key)
-    if code is None:
-        code = _CACHE[key] = generate(scene, plan, steps, {}, arrays=True, positions=True)
-    return code
+    return _cached(key, lambda: generate(scene, plan, steps, {}, arrays=True, positions=True))
 
 
 def given_params(code: _Code, scene, points: dict) -> tuple:
