@@ -19,7 +19,6 @@ from .errors import AssemblyError, BranchError
 from .mobility import check_redundant_lengths
 from .plan import Plan
 from .scene import Branch, Crank, Scene
-from .theorems import cross
 
 
 #: a [drawn] position may differ from the assembled one by this fraction of the mechanism size
@@ -102,10 +101,10 @@ def satisfies(branch: Branch, cand, pos, scene: Scene) -> bool:
         ref = pos[branch.ref[0]]
         return {"above": cand[1] > ref[1], "below": cand[1] < ref[1],
                 "left of": cand[0] < ref[0], "right of": cand[0] > ref[0]}[rel]
-    a, b = pos[branch.ref[0]], pos[branch.ref[1]]
-    side = cross(b - a, cand - a)
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    scale = float(np.hypot(dx, dy))
+    (ax, ay), (bx, by) = pos[branch.ref[0]], pos[branch.ref[1]]
+    dx, dy = float(bx - ax), float(by - ay)
+    side = dx * (float(cand[1]) - ay) - dy * (float(cand[0]) - ax)      # (B − A) × (X − A)
+    scale = math.hypot(dx, dy)
     if rel in ("above", "below"):
         if abs(dx) <= 1e-9 * scale:
             raise BranchError(f"'{branch.text}': the line {''.join(branch.ref)} is vertical; "
@@ -123,7 +122,7 @@ def satisfies(branch: Branch, cand, pos, scene: Scene) -> bool:
 
 def _choose(x, cands, scene: Scene, pos, size, default_ref):
     c1, c2 = cands
-    if float(np.hypot(*(c1 - c2))) <= 1e-12 * size:
+    if math.hypot(float(c1[0] - c2[0]), float(c1[1] - c2[1])) <= 1e-12 * size:
         return c1, ""   # a single (double) closure: nothing to choose
     branch = scene.assembly.get(x)
     where = f"assembly.{x}"
@@ -135,8 +134,9 @@ def _choose(x, cands, scene: Scene, pos, size, default_ref):
             f"{x} = \"{_suggest_words(x, c1, c2, pos, default_ref)}\" or "
             f"{x} = {{ near = [...] }}", file=scene.file, where=where)
     if branch.relation == "near":
-        near = np.array(branch.near)
-        d1, d2 = float(np.hypot(*(c1 - near))), float(np.hypot(*(c2 - near)))
+        nx, ny = branch.near
+        d1 = math.hypot(float(c1[0]) - nx, float(c1[1]) - ny)
+        d2 = math.hypot(float(c2[0]) - nx, float(c2[1]) - ny)
         if abs(d1 - d2) <= 1e-9 * size:
             raise BranchError(f"'{branch.text}' is equally near both closures {_fmt(c1)} and "
                               f"{_fmt(c2)}", file=scene.file, where=where)
