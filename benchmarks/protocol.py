@@ -93,7 +93,9 @@ def single_position(root, path, avail, quick, others, cf):
                            "timed: compile_scene (plan, staged assembly for the closures, "
                            "cached code) + solve, from a parsed Scene"),
         "staged": ("polygons staged (shapely), pre-built scene",
-                   "timed: solve(scene): plan, assembly, every step with shapely, Solution"),
+                   "timed: solve(scene): assembly, the step program with every intersection "
+                   "by shapely, the Solution (its Step records and text built on first "
+                   "access; the plan kept with the scene)"),
         "load+staged": ("polygons load_scene + staged",
                         "timed: TOML parse + solve (the scene's own angle)"),
         "closed form": ("numpy closed form, one position",
