@@ -33,7 +33,7 @@ class SlideDyad:
 
     @property
     def placed(self) -> tuple[str, ...]:
-        return (self.point, self.coincident)
+        return (self.coincident, self.point)
 
     @property
     def needs(self) -> tuple[str, ...]:
