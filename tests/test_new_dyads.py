@@ -836,3 +836,41 @@ def test_a_stated_slot_length_on_a_guided_pin_is_refused(tmp_path):
 def test_a_slot_length_must_be_positive(tmp_path):
     with pytest.raises(SceneError, match="slot's length must be positive"):
         load_scene(_fig7_slot(tmp_path, "0 mm"))
+
+
+@prop
+@given(dist=st.floats(0.05, 1.0), r=lengths, theta=angles, d=st.sampled_from([0.0, 0.02, -0.03]),
+       frac=st.floats(0.3, 1.7))
+def test_slot_length_refuses_exactly_beyond_its_end(dist, r, theta, d, frac):
+    """A slot stated L long holds the pin iff its coordinate along the slot, t = √(|BA|² − d²)
+    (am.slot), is at most L: the staged solve and the compiled evaluator refuse together,
+    in the slot's words, everywhere else they solve."""
+    from polygons.compiled import compile_scene
+    A = am.crank(am.fixed(0, 0), r, theta, 1.0, 0.0)
+    assume(abs(A[0] - complex(0, -dist)) ** 2 - d * d > 1e-4 * r * r)
+    t = am.slot(A, am.fixed(0, -dist), d)["t"]
+    L = frac * t
+    assume(abs(L - t) > 1e-6 * t)
+    data = {"ground": {"O": ["0 m", "0 m"], "B": ["0 m", m(-dist)]},
+            "links": {"OA": m(r), "BQ": m(3 * (dist + r))},
+            "driver": crank_driver("OA", theta, 1.0, 0.0),
+            "slots": {"A": {"lever": "BQ", "coincident": "A1", "offset": m(d),
+                            "length": m(L)}}}
+    scene = parse_scene(data)
+    if L >= t:
+        try:
+            solve(scene)
+        except ParallelLinesError:
+            return
+        compile_scene(scene).solve()
+        return
+    with pytest.raises(AssemblyError, match="beyond the end of the slot in lever BQ") as st_:
+        solve(scene)
+    ok = parse_scene({**data, "slots": {"A": {**data["slots"]["A"], "length": m(2 * t)}}})
+    prog = compile_scene(ok)
+    from dataclasses import replace
+    params = tuple(p if isinstance(g, tuple) else float(g(scene))
+                   for p, g in zip(prog.params, prog.code.getters))
+    with pytest.raises(AssemblyError) as co:
+        replace(prog, scene=scene, params=params).solve()
+    assert str(co.value) == str(st_.value)
