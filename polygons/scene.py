@@ -139,6 +139,7 @@ class Slot:
     far: str | None
     far_length: float | None
     offset: float = 0.0     # the slot line's distance left of the lever's line (topology)
+    length: float | None = None     # the slot's stated length from the pivot (topology)
 
 
 @dataclass(frozen=True)
@@ -415,7 +416,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise SceneError(f"an offset slot needs the lever's length: give {lever} in "
                              f"[links] and coincident = \"{pin}1\"", file=file,
                              where=where + ".offset")
-        slots[pin] = Slot(pin, lever, pivot, coincident, far, far_length, offset)
+        slots[pin] = Slot(pin, lever, pivot, coincident, far, far_length, offset,
+                          topology.slot_length(spec, r, where))
 
     # extra body points
     points: dict[str, BodyPoint] = {}

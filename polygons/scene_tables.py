@@ -147,6 +147,10 @@ TABLES: tuple[Table, ...] = (
                                   "line (needs the lever's length in [links])",
             example='"20 mm"', dimension="length", default="0 mm",
             sign="positive to the left of the lever's pivot → far end"),
+        Key("length", "quantity", "how far the slot runs along the lever from its pivot: the "
+                                  "pin beyond it has left the slot (unstated: open-ended, "
+                                  "whatever the lever's length)", example='"300 mm"',
+            dimension="length"),
     ), many=True),
     Table("points", "[points.D]: a point rigid with a link (coupler point, a continuation, a "
                     "mid-point).", (

@@ -18,6 +18,7 @@ that state a second input, a lever drive, an offset slot and a crank angle from 
     [slots.P]
     lever = "BQ"
     offset = "20 mm"                  # the slot runs parallel to BQ, 20 mm to its left
+    length = "300 mm"                 # the slot ends 300 mm from B (unstated: open-ended)
 
     [driver]
     angle = "30 deg from idc"         # a slider-crank's crank angle from inner / outer dead
@@ -284,6 +285,19 @@ def dead_centre_angle(theta: float, which: str, sense: int, *, pivot, r_crank, r
     if which == "odc":
         base += math.pi
     return base + sense * theta
+
+
+def slot_length(spec, r, where) -> float | None:
+    """``[slots.P] length = "300 mm"``: how far the slot runs along the lever from its pivot
+    (from the foot of the pivot on an offset slot); None when not stated (the slot open-ended:
+    only a stated length bounds it).  The pin beyond it has left the slot."""
+    if "length" not in spec:
+        return None
+    length = r.quantity(spec["length"], "length", where + ".length")
+    if not length > 0:
+        raise SceneError(f"the slot's length must be positive, got {spec['length']!r}",
+                         file=r.file, where=where + ".length")
+    return length
 
 
 def lever_driven(scene, slot) -> bool:

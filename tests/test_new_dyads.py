@@ -689,3 +689,188 @@ def test_trammel_driven_by_a_crank_to_its_mid_point():
     assert sol.points["B"].position[0] == pytest.approx(0.0, abs=1e-15)
     assert sol.points["B"].velocity == pytest.approx((0.0, 2 * w * r * math.cos(th)),
                                                      abs=1e-12)
+
+
+# ---------------------------------------------------------------- the ends of rods and slots
+def _cli(*args):
+    import subprocess
+    import sys
+    from pathlib import Path
+    exe = Path(sys.executable).with_name("polygons")
+    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "polygons"]
+    return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
+                          timeout=120)
+
+
+def _edited(tmp_path, case, old, new, name="edited.toml"):
+    text = (CASES / case).read_text(encoding="utf-8")
+    assert text.count(old) == 1, old
+    path = tmp_path / name
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("position, words", [
+    ("700 mm", "the collar C at 700 mm along OA is beyond the end A of the rod OA (600 mm)"),
+    ("-50 mm", "the collar C at -50 mm along OA is behind O, off the rod OA"),
+])
+def test_collar_off_its_rod_is_refused_through_the_cli(tmp_path, position, words):
+    path = _edited(tmp_path, "new-collar-on-rotating-rod.toml", 'position = "400 mm"',
+                   f'position = "{position}"')
+    out = _cli("solve", path)
+    assert out.returncode != 0 and out.stdout == ""
+    lines = out.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"polygons: error: {path} [C1]")
+    assert words in lines[0]
+    with pytest.raises(AssemblyError, match="the collar C at"):
+        solve(load_scene(path))         # (the compiled rows: the batch test below)
+
+
+def test_collar_at_the_end_of_its_rod_solves_to_the_closed_form(tmp_path):
+    """s = OA exactly: the collar at A is still on the rod (the closed form of the collar)."""
+    path = _edited(tmp_path, "new-collar-on-rotating-rod.toml", 'position = "400 mm"',
+                   'position = "600 mm"')
+    sol = solve(load_scene(path))
+    C = am.collar(am.fixed(0, 0), DEG(30), 5.0, 0.0, 0.6, 1.5, -0.8)
+    assert quantity(sol, "v(C)") == pytest.approx(abs(C[1]), rel=1e-12)
+    assert quantity(sol, "a(C)") == pytest.approx(abs(C[2]), rel=1e-12)
+
+
+@pytest.mark.parametrize("engine", ["compiled", "kernel"])
+def test_collar_travel_stops_where_the_position_is_the_rod_length(engine):
+    """Rods from 350 to 450 mm under the collar 400 mm out: every rod shorter than 400 mm is
+    refused in the collar's words, every other one solves (the rod's end is the limit)."""
+    from polygons.batch import solve_many
+    scene = load_scene(CASES / "new-collar-on-rotating-rod.toml")
+    OA = np.linspace(0.35, 0.45, 41)          # 0.4 is row 20, exactly
+    b = solve_many(scene, {"OA": OA}, engine=engine)
+    assert OA[20] == 0.4
+    assert list(b.ok) == list(OA >= 0.4)
+    errs = b.errors
+    assert [e.row for e in errs] == list(range(20))
+    assert all("the collar C at 400 mm along OA is beyond the end A of the rod OA" in e.reason
+               for e in errs)
+    assert "(350 mm)" in errs[0].reason
+
+
+def _fig7_slot(tmp_path, length):
+    return _edited(tmp_path, "s003-fig7.toml", 'lever = "O4P4"     #',
+                   f'length = "{length}"\nlever = "O4P4"     #', f"slot{length}.toml")
+
+
+def test_pin_beyond_the_stated_end_of_its_slot_is_refused_through_the_cli(tmp_path):
+    """Fig. 7: the pin is 550.58 mm from O4; a 500 mm slot cannot hold it."""
+    path = _fig7_slot(tmp_path, "500 mm")
+    out = _cli("solve", path)
+    assert out.returncode != 0 and out.stdout == ""
+    lines = out.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"polygons: error: {path} [O4P4]")
+    assert ("the pin P2 at 550.58 mm from the pivot O4 is beyond the end of the slot in lever "
+            "O4P4 (500 mm long)") in lines[0]
+    assert _cli("solve", _fig7_slot(tmp_path, "551 mm")).returncode == 0
+
+
+def test_sweep_stops_where_the_pin_reaches_the_end_of_its_slot(tmp_path):
+    """O2O4 = 450 mm, O2P2 = 200 mm: |O4P2|² = 0.2² + 0.45² + 2·0.2·0.45 sin θ, which is 0.6²
+    at sin θ = (0.36 − 0.2425)/0.18: the sweep's limits of travel, named by the slot's end."""
+    scene = load_scene(_fig7_slot(tmp_path, "600 mm"))
+    sw = sweep(scene, 90)
+    s = (0.36 - 0.04 - 0.2025) / 0.18
+    want = sorted([math.asin(s), math.pi - math.asin(s) - 2 * math.pi])
+    assert not sw.full_cycle
+    ends = [l for l in sw.limits if l.kind == "limit"]
+    assert [l.input for l in ends] == pytest.approx(want, abs=1e-9)
+    for l in ends:
+        assert "reaches the end of the slot in lever O4P4, 600 mm from the pivot O4" in l.reason
+    P = sw.position("P2")
+    d = np.hypot(P[:, 0], P[:, 1])
+    assert d.max() <= 0.6 and d.max() > 0.59    # inside the slot, up to its end
+    # just beyond a limit the staged solve refuses in the slot's words
+    beyond = parse_scene({**_raw(scene.file), "driver": {
+        **_raw(scene.file)["driver"], "angle": f"{math.degrees(want[1]) + 0.01} deg"}})
+    with pytest.raises(AssemblyError, match="beyond the end of the slot in lever O4P4") as st:
+        solve(beyond)
+    from polygons.compiled import compile_scene     # and the compiled evaluator the same
+    with pytest.raises(AssemblyError) as co:
+        compile_scene(scene).solve(want[1] + math.radians(0.01))
+    assert str(co.value) == str(st.value).replace(str(beyond.file), str(scene.file))
+
+
+def _raw(path):
+    import tomllib
+    with open(path, "rb") as f:
+        return tomllib.load(f)
+
+
+def test_a_lever_length_does_not_bound_its_slot():
+    """The Whitworth lever arm CD (125 mm) is shorter than the pin's reach (241.8 mm): the
+    slot runs on, the case solves (its answers are checked above)."""
+    sol = solve(load_scene(CASES / "new-whitworth.toml"))
+    assert quantity(sol, "dist(C,A)") > 0.125 + 0.1
+
+
+def test_oscillating_cylinder_solves_with_the_pin_beyond_the_cylinder(tmp_path):
+    """The crank pin is at the end of the piston rod: with the cylinder O4Q only 150 mm long
+    (the pin 210 mm from O4) the answers are the closed form's, as with the 500 mm one."""
+    path = _edited(tmp_path, "new-oscillating-cylinder.toml", 'O4Q = "500 mm"',
+                   'O4Q = "150 mm"')
+    sol = solve(load_scene(path))
+    assert quantity(sol, "dist(O4,P)") > 0.15 + 0.05
+    for q, value in ref_oscillating().items():
+        assert quantity(sol, q) == pytest.approx(value, rel=REL, abs=1e-12), q
+    short = sweep(load_scene(path), 36)
+    long_ = sweep(load_scene(CASES / "new-oscillating-cylinder.toml"), 36)
+    assert [l.input for l in short.limits] == pytest.approx([l.input for l in long_.limits],
+                                                           abs=1e-12)
+    assert all("end of the slot" not in l.reason for l in short.limits)
+
+
+def test_a_stated_slot_length_on_a_guided_pin_is_refused(tmp_path):
+    path = _edited(tmp_path, "new-oscillating-cylinder.toml", 'coincident = "P4"',
+                   'coincident = "P4"\nlength = "400 mm"')
+    out = _cli("solve", path)
+    assert out.returncode != 0 and len(out.stderr.splitlines()) == 1
+    assert "[slots.P] length = 400 mm is not checked" in out.stderr
+
+
+def test_a_slot_length_must_be_positive(tmp_path):
+    with pytest.raises(SceneError, match="slot's length must be positive"):
+        load_scene(_fig7_slot(tmp_path, "0 mm"))
+
+
+@prop
+@given(dist=st.floats(0.05, 1.0), r=lengths, theta=angles, d=st.sampled_from([0.0, 0.02, -0.03]),
+       frac=st.floats(0.3, 1.7))
+def test_slot_length_refuses_exactly_beyond_its_end(dist, r, theta, d, frac):
+    """A slot stated L long holds the pin iff its coordinate along the slot, t = √(|BA|² − d²)
+    (am.slot), is at most L: the staged solve and the compiled evaluator refuse together,
+    in the slot's words, everywhere else they solve."""
+    from polygons.compiled import compile_scene
+    A = am.crank(am.fixed(0, 0), r, theta, 1.0, 0.0)
+    assume(abs(A[0] - complex(0, -dist)) ** 2 - d * d > 1e-4 * r * r)
+    t = am.slot(A, am.fixed(0, -dist), d)["t"]
+    L = frac * t
+    assume(abs(L - t) > 1e-6 * t)
+    data = {"ground": {"O": ["0 m", "0 m"], "B": ["0 m", m(-dist)]},
+            "links": {"OA": m(r), "BQ": m(3 * (dist + r))},
+            "driver": crank_driver("OA", theta, 1.0, 0.0),
+            "slots": {"A": {"lever": "BQ", "coincident": "A1", "offset": m(d),
+                            "length": m(L)}}}
+    scene = parse_scene(data)
+    if L >= t:
+        try:
+            solve(scene)
+        except ParallelLinesError:
+            return
+        compile_scene(scene).solve()
+        return
+    with pytest.raises(AssemblyError, match="beyond the end of the slot in lever BQ") as st_:
+        solve(scene)
+    ok = parse_scene({**data, "slots": {"A": {**data["slots"]["A"], "length": m(2 * t)}}})
+    prog = compile_scene(ok)
+    from dataclasses import replace
+    params = tuple(p if isinstance(g, tuple) else float(g(scene))
+                   for p, g in zip(prog.params, prog.code.getters))
+    with pytest.raises(AssemblyError) as co:
+        replace(prog, scene=scene, params=params).solve()
+    assert str(co.value) == str(st_.value)

@@ -144,8 +144,33 @@ def circle_line_cols(px, py, length, gx, gy, ex, ey, sigma):
     return X[0], X[1], m
 
 
+def end_margin_scalar(m0, t, lo, hi, tol):
+    """The margin ``m0`` of a point at ``t`` along a rod or slot that runs from ``lo`` to
+    ``hi`` (``hi`` NaN: open-ended): min(m0, (t − lo + tol)/tol, (hi + tol − t)/tol), held
+    in [−1, 1].  It is 1 from ``lo`` to ``hi`` inclusive, falls to 0 within ``tol`` beyond an
+    end (where a sweep's limit of travel is found, this dyad the smallest margin there) and is
+    negative further out, where the point has left the rod or slot."""
+    m = m0
+    a = (t - lo + tol) / tol
+    if a < m:
+        m = a
+    if hi == hi:
+        b = (hi + tol - t) / tol
+        if b < m:
+            m = b
+    return -1.0 if m < -1.0 else m
+
+
+def end_margin_cols(m0, t, lo, hi, tol):
+    """:func:`end_margin_scalar` over arrays (numpy; ``hi`` NaN where open-ended)."""
+    a = (t - lo + tol) / tol
+    b = np.where(np.isnan(hi), np.inf, (hi + tol - t) / tol)
+    return np.maximum(np.fmin(np.fmin(m0, a), b), -1.0)     # (fmin: a NaN t keeps m0)
+
+
 #: the array form of each scalar fast path (for the compiled program run on arrays)
-ARRAY_TWIN = {circle_circle_scalar: circle_circle_cols, circle_line_scalar: circle_line_cols}
+ARRAY_TWIN = {circle_circle_scalar: circle_circle_cols, circle_line_scalar: circle_line_cols,
+              end_margin_scalar: end_margin_cols}
 
 
 def as_col(v, like):

@@ -5,7 +5,9 @@ piston's crank-pin is on a driven crank) or placed by its own links (a guide car
 moving link).
 
 Position: X on the circle |PX| = L and on the slot line B + d n + t e (e along the lever
-B → Q, n = perp(e), d the slot's offset): two closures.  The lever's point X1 under the pin is
+B → Q, n = perp(e), d the slot's offset): two closures.  The slot is open-ended: the pin of an
+oscillating cylinder is at the end of its piston rod, beyond the cylinder's end, so a lever's
+length does not bound it; a stated ``[slots.X] length`` is refused, not yet modelled here.  The lever's point X1 under the pin is
 at the same place.  Velocity: v_X = v_X1 + ṡ e = v_P + ω × PX: from p, x1 (the lever's image)
 is known; the line ∥ the slot through x1 meets the line ⟂ PX through p at x.  Acceleration:
 a_X = a_X1 + s̈ e + 2 ω_lever × ṡ e = a_P − ω² PX + α × PX: x1, then the Coriolis 2ωṡ from it
@@ -58,6 +60,8 @@ class Guided:
     def locate(self, scene, pos, sigma, x):
         through, e = self._line(scene, pos)
         X, margin = circle_line(pos[self.p], scene.links[self.link].length, through, e, sigma)
+        if scene.slots[self.x].length is not None:      # not modelled: refused (why_not)
+            margin = np.full_like(np.asarray(margin, dtype=float), -1.0)
         return {self.x: X, self.coincident: X.copy()}, margin
 
     def source(self, g) -> None:
@@ -75,12 +79,21 @@ class Guided:
         L = g.param(lambda s: s.links[self.link].length)
         x, y, m = g.call(circle_line_scalar, *g.pos(self.p), L, tx, ty, ex, ey,
                          g.sigma(self.x), n=3)
-        g.margin(m)
+        # a stated slot length is refused (see why_not): the flag is -1 then, else +1
+        ok = g.param(lambda s: 1.0 if s.slots[self.x].length is None else -1.0)
+        g.margin(g.let(f"where({ok} > 0.0, {m}, -1.0)"))
         g.place(self.x, x, y)
         g.place(self.coincident, x, y)
 
     def why_not(self, scene, pos) -> str:
         from ..theorems import cross
+        length = scene.slots[self.x].length
+        if length is not None:
+            return (f"[slots.{self.x}] length = {1e3 * length:.6g} mm is not checked for a pin "
+                    f"found in the slot of a lever placed first (of its two closures the "
+                    f"assembly would have to test the one chosen): remove it, the slot of "
+                    f"{self.lever} is then open-ended (a cylinder's piston rod reaches beyond "
+                    f"its end)")
         through, e = self._line(scene, pos)
         L = scene.links[self.link].length
         dist = abs(float(cross(e, pos[self.p] - through)))

@@ -2,7 +2,10 @@
 crank and slotted lever, the quick return).
 
 Position: the lever's point A1 under the pin coincides with A; the lever's far end lies along
-BA at its stated length.  Velocity: v_A = v_A1 + (v_A)_A1 with v_A1 = ω × BA1 ⟂ BA and the
+BA at its stated length.  The slot is open-ended unless ``[slots.A] length`` states how far it
+runs from B (a lever's length is not its slot's: in the Whitworth motion the arm CD is shorter
+than the pin's reach): the pin further out than that has left the slot, and is refused (a
+sweep's limit of travel).  Velocity: v_A = v_A1 + (v_A)_A1 with v_A1 = ω × BA1 ⟂ BA and the
 sliding velocity ∥ BA: the line ⟂ BA through b meets the line ∥ BA through a at a1.
 Acceleration: a_A = a_A1 + (a_A)_A1 + 2 ω × (v_A)_A1: the centripetal ω² BA known, the
 tangential line through its end, the sliding line ∥ BA stepped back from a by the Coriolis
@@ -10,13 +13,14 @@ tangential line through its end, the sliding line ∥ BA stepped back from a by 
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
 from ..theorems import perp
-from .base import size_of
+from .base import end_margin_cols, end_margin_scalar, size_of
 from . import image
 
 
@@ -54,11 +58,12 @@ class RPR:
             t = np.sqrt(np.where(t2 > 0, t2, np.nan))
             e = (t * d - off * perp(d)) / (s * s)
             out[self.far] = b + slot.far_length * e
-            return out, np.where(t2 > 1e-12 * size_of(scene) ** 2, t / s, -1.0)
+            m0 = np.where(t2 > 1e-12 * size_of(scene) ** 2, t / s, -1.0)
+            return out, end_margin_cols(m0, t, 0.0, _hi(slot), 1e-12 * size_of(scene))
         if self.far:
             out[self.far] = b + slot.far_length * d / s
         margin = np.where(s > 1e-12 * size_of(scene), 1.0, 0.0)
-        return out, margin
+        return out, end_margin_cols(margin, s, 0.0, _hi(slot), 1e-12 * size_of(scene))
 
     def source(self, g) -> None:
         """:meth:`locate` as straight-line float code for the compiled evaluator
@@ -70,7 +75,9 @@ class RPR:
         tiny = g.param(lambda s: 1e-12 * size_of(s))
         dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
         n = g.let(f"hypot({dx}, {dy})")
-        g.margin(g.let(f"where({n} > {tiny}, 1.0, 0.0)"))
+        m0 = g.let(f"where({n} > {tiny}, 1.0, 0.0)")
+        hi = g.param(lambda s: _hi(s.slots[self.pin]))
+        g.margin(g.call(end_margin_scalar, m0, n, "0.0", hi, tiny)[0])
         g.place(self.coincident, ax, ay)
         if self.far:
             fl = g.param(lambda s: s.slots[self.pin].far_length)
@@ -90,8 +97,11 @@ class RPR:
         t = g.let(f"sqrt(where({t2} > 0, {t2}, nan))")
         # over floats the test comes first (no division by a zero |BA|); over arrays the
         # margin is kept, NaN-free, as locate's
-        g.margin(g.let(f"where({t2} > {tiny2}, {t} / {n}, -1.0)" if g.arrays else
-                       f"({t} / {n} if {t2} > {tiny2} else -1.0)"))
+        m0 = g.let(f"where({t2} > {tiny2}, {t} / {n}, -1.0)" if g.arrays else
+                   f"({t} / {n} if {t2} > {tiny2} else -1.0)")
+        hi = g.param(lambda s: _hi(s.slots[self.pin]))
+        tiny = g.param(lambda s: 1e-12 * size_of(s))
+        g.margin(g.call(end_margin_scalar, m0, t, "0.0", hi, tiny)[0])
         g.place(self.coincident, ax, ay)
         n2 = g.let(f"{n} * {n}")
         ex = g.let(f"({t} * {dx} - {off} * -{dy}) / {n2}")
@@ -99,7 +109,16 @@ class RPR:
         g.place(self.far, g.let(f"{bx} + {fl} * {ex}"), g.let(f"{by} + {fl} * {ey}"))
 
     def why_not(self, scene, pos) -> str:
-        off = scene.slots[self.pin].offset
+        slot = scene.slots[self.pin]
+        off = slot.offset
+        d = np.asarray(pos[self.pin], dtype=float) - np.asarray(pos[self.pivot], dtype=float)
+        s = float(np.hypot(d[0], d[1]))
+        t = math.sqrt(max(s * s - off * off, 0.0))
+        if slot.length is not None and t > slot.length and s > abs(off):
+            where = f"{t * 1e3:.6g} mm along the slot" if off else f"{t * 1e3:.6g} mm"
+            return (f"the pin {self.pin} at {where} from the pivot {self.pivot} is beyond the "
+                    f"end of the slot in lever {self.lever} ({slot.length * 1e3:.6g} mm long): "
+                    f"it has left the slot")
         if off:
             return (f"the pin {self.pin} is within the slot's offset {1e3 * abs(off):.6g} mm "
                     f"of the pivot {self.pivot}: the slot of lever {self.lever} cannot pass "
@@ -115,6 +134,14 @@ class RPR:
         return ((self.lever, "lever"),)
 
     def toggle_reason(self, scene, pos) -> str:
+        slot = scene.slots[self.pin]
+        if slot.length is not None:
+            d = np.asarray(pos[self.pin], dtype=float) - np.asarray(pos[self.pivot], dtype=float)
+            t = math.sqrt(max(float(d @ d) - slot.offset ** 2, 0.0))
+            if abs(t - slot.length) <= 1e-9 * size_of(scene):
+                return (f"the pin {self.pin} reaches the end of the slot in lever {self.lever}, "
+                        f"{slot.length * 1e3:.6g} mm from the pivot {self.pivot}: its travel "
+                        f"in the slot stops there")
         return self.why_not(scene, pos)
 
     def emit(self, b: Builder) -> None:
@@ -195,6 +222,11 @@ class RPR:
                   component=C.SLIDING)
         if self.far:
             image.emit_image(b, self.far, lev, B, A1)
+
+
+def _hi(slot) -> float:
+    """The slot's stated length (NaN: open-ended)."""
+    return math.nan if slot.length is None else slot.length
 
 
 def matches(scene, placed):

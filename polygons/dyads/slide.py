@@ -2,7 +2,9 @@
 sliding velocity ṡ and acceleration s̈ while the link moves as the driver makes it ("the block
 moves out along the rod at 1.5 m/s, slowing at 0.8 m/s², while the rod turns at 5 rad/s").
 
-Position: C = P + s e, e = PQ/|PQ|; the link's point C1 under C is at the same place.
+Position: C = P + s e, e = PQ/|PQ|; the link's point C1 under C is at the same place.  The
+collar is on the rod only for 0 ≤ s ≤ |PQ|: beyond Q, or behind P, it has left the rod, and
+the scene is refused (a sweep stops there: the collar's limit of travel).
 Velocity: v_C = v_C1 + ṡ e, v_C1 = v_P + ω × PC1 (the image of C1 on the link).
 Acceleration: a_C = a_C1 + s̈ e + 2 ω × ṡ e, a_C1 = a_P + α × PC1 − ω² PC1: every term is
 known, so the polygon closes with no intersection (the Coriolis 2ωṡ drawn from both inputs).
@@ -14,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
-from .base import size_of
+from .base import end_margin_cols, end_margin_scalar, size_of
 from . import image
 
 
@@ -42,27 +44,43 @@ class SlideDyad:
         d = pos[self.q] - pos[self.p]
         n = np.hypot(d[0], d[1])
         c = pos[self.p] + s * d / n
-        return {self.coincident: c, self.point: c.copy()}, np.where(
-            n > 1e-12 * size_of(scene), 1.0, -1.0)
+        tiny = 1e-12 * size_of(scene)
+        margin = end_margin_cols(np.where(n > tiny, 1.0, -1.0), s, 0.0, n, tiny)
+        return {self.coincident: c, self.point: c.copy()}, margin
 
     def source(self, g) -> None:
         """:meth:`locate` as straight-line float code for the compiled evaluator
         (:mod:`polygons.compiled`): the same formula, emitted through ``g``.
 
-        C = P + s PQ/|PQ| (the margin: |PQ| beyond 1e-12 of the mechanism's size), C1 = C."""
+        C = P + s PQ/|PQ|, C1 = C; the margin: |PQ| beyond 1e-12 of the mechanism's size, and
+        0 ≤ s ≤ |PQ| (:func:`~polygons.dyads.base.end_margin_scalar`, within that tolerance)."""
         (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
         s_ = g.param(lambda s: s.prescribed[self.point].position)
         tiny = g.param(lambda s: 1e-12 * size_of(s))
         dx, dy = g.let(f"{qx} - {px}"), g.let(f"{qy} - {py}")
         n = g.let(f"hypot_p({dx}, {dy})")
-        g.margin(g.let(f"where({n} > {tiny}, 1.0, -1.0)"))
+        m0 = g.let(f"where({n} > {tiny}, 1.0, -1.0)")
+        g.margin(g.call(end_margin_scalar, m0, s_, "0.0", n, tiny)[0])
         cx, cy = g.let(f"{px} + {s_} * {dx} / {n}"), g.let(f"{py} + {s_} * {dy} / {n}")
         g.place(self.coincident, cx, cy)
         g.place(self.point, cx, cy)
 
     def why_not(self, scene, pos) -> str:
-        return (f"{self.p} and {self.q} coincide, so the direction of {self.link} along which "
-                f"{self.point} slides is undefined")
+        d = np.asarray(pos[self.q], dtype=float) - np.asarray(pos[self.p], dtype=float)
+        n = float(np.hypot(d[0], d[1]))
+        s = float(scene.prescribed[self.point].position)
+        C, L, P, Q = self.point, self.link, self.p, self.q
+        if not n > 1e-12 * size_of(scene):
+            return (f"{P} and {Q} coincide, so the direction of {L} along which {C} slides "
+                    f"is undefined")
+        if s > n:
+            return (f"the collar {C} at {_mm(s)} along {L} is beyond the end {Q} of the rod "
+                    f"{L} ({_mm(n)}): it has left the rod")
+        if s < 0:
+            return (f"the collar {C} at {_mm(s)} along {L} is behind {P}, off the rod {L} "
+                    f"(its position is measured from {P} towards {Q}, 0 to {_mm(n)})")
+        return (f"the collar {C} at {_mm(s)} along {L} is at the end of the rod {L} "
+                f"({_mm(n)}): its travel stops there")
 
     def toggle_reason(self, scene, pos) -> str:
         return self.why_not(scene, pos)
@@ -89,6 +107,10 @@ class SlideDyad:
               f"From {c2} draw the Coriolis acceleration 2ωṡ, perpendicular to {L} (ṡ turned "
               f"through 90° in the sense of ω_{L}); it ends at {c}: {b.names.pole}{c} is the "
               f"acceleration of {C}.", component=Component.CORIOLIS, link=L)
+
+
+def _mm(x: float) -> str:
+    return f"{1e3 * x:.6g} mm"
 
 
 def matches(scene, placed):
