@@ -736,7 +736,7 @@ def test_collar_at_the_end_of_its_rod_solves_to_the_closed_form(tmp_path):
     assert quantity(sol, "a(C)") == pytest.approx(abs(C[2]), rel=1e-12)
 
 
-@pytest.mark.parametrize("engine", ["compiled", "kernel"])
+@pytest.mark.parametrize("engine", ["compiled", "located"])
 def test_collar_travel_stops_where_the_position_is_the_rod_length(engine):
     """Rods from 350 to 450 mm under the collar 400 mm out: every rod shorter than 400 mm is
     refused in the collar's words, every other one solves (the rod's end is the limit)."""

@@ -311,8 +311,8 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
                    f"scene's input; positions strictly inside it)")
     for lim in sw.limits:
         if lim.kind == "limit":
-            out.append(f"  limit at {_inp(sw, lim.input)}: {lim.reason} — toggle, the input "
-                       f"cannot pass")
+            out.append(f"  limit at {_inp(sw, lim.input)}: {lim.reason} — the input cannot "
+                       f"pass")
         elif lim.kind == "unbounded":
             out.append(f"  no limit found at {_inp(sw, lim.input)}: {lim.reason}")
     if sw.branches:
