@@ -35,7 +35,7 @@ import math
 import os
 import re
 import tomllib
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
@@ -337,7 +337,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     r.table(data, "", TOP_KEYS + OPTION_KEYS + extra_keys,
             required=("ground", "links", "driver"))
     options = parse_options(data, file)
-    title = r.string(data.get("title", path_stem(file)), "title")
+    title = r.string(data["title"], "title") if "title" in data else path_stem(file)
     source = data.get("source", {})
     r.table(source, "source", KEYS["source"])
     for key in SOURCE_TEXT:
@@ -593,9 +593,11 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                  drawn=MappingProxyType(drawn),
                  extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
                  options=options, prescribed=MappingProxyType(prescribed))
-    # the force tables ([masses], [forces], ...), parsed and checked now: polygons.loads
-    return replace(scene, loads=parse_loads(scene, lambda spec, where, **kw: answer_fields(
+    # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads), and
+    # set on the scene before it is handed out (the frozen record is built once)
+    object.__setattr__(scene, "loads", parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw)))
+    return scene
 
 
 #: the smallest link length or offset accepted, as a fraction of the mechanism's size, and the
