@@ -580,7 +580,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     if not isinstance(answers_raw, list):
         raise SceneError("answers must be an array of tables: [[answers]]", file=file,
                          where="answers")
-    answers = tuple(_parse_answer(i, a, r, default_tol) for i, a in enumerate(answers_raw))
+    answers = _parse_answers(answers_raw, r, default_tol)
 
     check_proportions(file, ground, drawn, links, sliders, points, assembly, driver)
 
@@ -686,28 +686,46 @@ def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
                   extra_keys: tuple[str, ...] = (), extra_units=()) -> dict:
     """The fields every answer table shares (``[[answers]]``, ``[[force_answers]]``), checked:
     unknown keys, units, plain numbers for tutorial/exact, mode, tolerance, slip (each key
-    the table gives, once; a scene file carries tens of answers)."""
-    r.table(spec, where, ANSWER_KEYS + extra_keys if extra_keys else ANSWER_KEYS,
-            required=("quantity", "unit"))
-    unit = r.string(spec["unit"], where + ".unit")
+    the table gives, once; a scene file carries tens of answers).
+
+    The checks run in this order, whichever refusal comes first being the one reported: the
+    keys (unknown, then required), the unit, the quantity's text, then each value in the
+    table's order."""
+    if (extra_keys or spec.__class__ is not dict or not spec.keys() <= _ANSWER_KEY_SET
+            or "quantity" not in spec or "unit" not in spec):
+        r.table(spec, where, ANSWER_KEYS + extra_keys if extra_keys else ANSWER_KEYS,
+                required=("quantity", "unit"))
+    unit = spec["unit"]
+    if not isinstance(unit, str):
+        r.string(unit, where + ".unit")
     if unit not in UNITS and unit not in ("-", "1") and unit not in extra_units:
         raise UnitError(f"unknown unit {show(unit)}", file=r.file, where=where + ".unit")
-    quantity = r.string(spec["quantity"], where + ".quantity")
-    out = dict(quantity=quantity, unit=unit, tutorial=None, exact=None, mode="abs", sense=None,
-               tolerance=default_tol, slip=False, ref=None, desc=quantity, note="")
+    quantity = spec["quantity"]
+    if not isinstance(quantity, str):
+        r.string(quantity, where + ".quantity")
+    out = {"quantity": quantity, "unit": unit, "tutorial": None, "exact": None, "mode": "abs",
+           "sense": None, "tolerance": default_tol, "slip": False, "ref": None,
+           "desc": quantity, "note": ""}
     for key, value in spec.items():
-        if key in _ANSWER_TEXT:
-            out[key] = r.string(value, f"{where}.{key}")
-        elif key in ("tutorial", "exact"):
-            out[key] = _answer_number(value, key, unit, r, where)
-        elif key == "mode":
-            if value not in ("abs", "signed"):
+        kind = _ANSWER_KIND.get(key)
+        if kind is None:                  # quantity, unit (read above), a caller's extra key
+            continue
+        if kind == _TEXT:
+            if not isinstance(value, str):
+                r.string(value, f"{where}.{key}")
+            out[key] = value
+        elif kind == _NUMBER:
+            # a finite float within 1e15 as it is; anything else is _answer_number's to judge
+            out[key] = (value if value.__class__ is float and -1e15 <= value <= 1e15
+                        else _answer_number(value, key, unit, r, where))
+        elif kind == _MODE:
+            if value != "abs" and value != "signed":
                 raise SceneError(f"mode must be 'abs' or 'signed', got {show(value)}",
                                  file=r.file, where=where + ".mode")
             out[key] = value
-        elif key == "tolerance":
+        elif kind == _TOLERANCE:
             out[key] = r.quantity(value, "fraction", where + ".tolerance")
-        elif key == "slip":
+        else:                             # slip
             if not isinstance(value, bool):
                 raise SceneError("slip must be true or false", file=r.file,
                                  where=where + ".slip")
@@ -715,6 +733,12 @@ def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
     return out
 
 
+_ANSWER_KEY_SET = frozenset(ANSWER_KEYS)
+_TEXT, _NUMBER, _MODE, _TOLERANCE, _SLIP = range(5)
+#: how each answer key's value is read (quantity and unit are read first)
+_ANSWER_KIND = {"sense": _TEXT, "ref": _TEXT, "desc": _TEXT, "note": _TEXT,
+                "tutorial": _NUMBER, "exact": _NUMBER, "mode": _MODE,
+                "tolerance": _TOLERANCE, "slip": _SLIP}
 _ANSWER_TEXT = ("sense", "ref", "desc", "note")
 
 
@@ -762,14 +786,22 @@ def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None
 _READ_EXPR: dict[str, tuple[str, tuple[str, ...]]] = {}
 
 
-def _parse_answer(i: int, spec, r: _Reader, default_tol: float) -> Answer:
-    fields = answer_fields(spec, r, f"answers[{i}]", default_tol)
-    parse_quantity_expr(fields["quantity"], file=r.file, where=f"answers[{i}].quantity")
-    # the checked fields, set as they are (a frozen record's __init__ sets each field through
-    # object.__setattr__: a third of reading a scene of twenty answers)
-    answer = object.__new__(Answer)
-    answer.__dict__.update(fields)
-    return answer
+def _parse_answers(answers_raw: list, r: _Reader, default_tol: float) -> tuple[Answer, ...]:
+    """``[[answers]]``: each table's fields checked (:func:`answer_fields`) and its quantity's
+    grammar (:func:`parse_quantity_expr`)."""
+    answers = []
+    new = object.__new__
+    for i, spec in enumerate(answers_raw):
+        where = f"answers[{i}]"
+        fields = answer_fields(spec, r, where, default_tol)
+        if fields["quantity"] not in _READ_EXPR:      # else read, and well formed, before
+            parse_quantity_expr(fields["quantity"], file=r.file, where=where + ".quantity")
+        # the checked fields, set as they are (a frozen record's __init__ sets each field
+        # through object.__setattr__: a third of reading a scene of twenty answers)
+        answer = new(Answer)
+        answer.__dict__.update(fields)
+        answers.append(answer)
+    return tuple(answers)
 
 
 def unit_dimension(unit: str) -> str:
