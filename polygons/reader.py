@@ -13,6 +13,19 @@ LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
 _LABEL = LABEL
 
 
+def record(cls, **fields):
+    """A frozen dataclass record from ``fields`` (every field of ``cls``, values checked), set
+    at once: equal to ``cls(**fields)``, whose ``__init__`` sets each field through
+    ``object.__setattr__`` (for a scene's seventeen fields, three times as long).
+    tests/test_scene_load.py checks that the records a scene is built of carry every field."""
+    obj = _new(cls)
+    obj.__dict__.update(fields)
+    return obj
+
+
+_new = object.__new__
+
+
 class Reader:
     """Reads one scene table with location-aware errors: the one reader of every scene
     table (the scene's own, the force tables in :mod:`polygons.loads`, the pins)."""

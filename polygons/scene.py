@@ -44,7 +44,7 @@ from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, UnitError, show, suggest)
 from .loads import parse as parse_loads
-from .reader import LABEL as _LABEL, Reader
+from .reader import LABEL as _LABEL, Reader, record
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
@@ -584,19 +584,20 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     check_proportions(file, ground, drawn, links, sliders, points, assembly, driver)
 
-    scene = Scene(file=file, title=title, source=MappingProxyType(dict(source)),
-                 ground=MappingProxyType(ground), links=MappingProxyType(links),
-                 driver=driver, sliders=MappingProxyType(sliders),
-                 slots=MappingProxyType(slots), points=MappingProxyType(points),
-                 assembly=MappingProxyType(assembly), answers=answers,
-                 solve=tuple(s for s in DIAGRAMS if s in solve),
-                 drawn=MappingProxyType(drawn),
-                 extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
-                 options=options, prescribed=MappingProxyType(prescribed))
-    # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads), and
-    # set on the scene before it is handed out (the frozen record is built once)
-    object.__setattr__(scene, "loads", parse_loads(scene, lambda spec, where, **kw: answer_fields(
-        spec, r, where, default_tol, **kw)))
+    # (every field of Scene, set at once; loads set below, before the scene is handed out)
+    scene = record(Scene, file=file, title=title, source=MappingProxyType(dict(source)),
+                   ground=MappingProxyType(ground), links=MappingProxyType(links),
+                   driver=driver, sliders=MappingProxyType(sliders),
+                   slots=MappingProxyType(slots), points=MappingProxyType(points),
+                   assembly=MappingProxyType(assembly), answers=answers,
+                   solve=DIAGRAMS if "solve" not in data else tuple(
+                       [s for s in DIAGRAMS if s in solve]),
+                   drawn=MappingProxyType(drawn),
+                   extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
+                   options=options, loads=None, prescribed=MappingProxyType(prescribed))
+    # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
+    scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
+        spec, r, where, default_tol, **kw))
     return scene
 
 
@@ -615,31 +616,41 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
     size = the longest link, or the largest distance between two fixed or drawn points (or a
     slider driver's position).  Every link length and point offset must be zero or at least
     ``MIN_RELATIVE`` × size; every coordinate at most ``MAX_RELATIVE`` × size from the origin.
+    (Checked in that order; the key of a refused value is named only then.)
     """
-    places = list(ground.values()) + list(drawn.values())
-    lengths = [(f"links.{n}", l.length) for n, l in links.items()]
-    size = max([l for _, l in lengths] + [math.dist(p, q) for p in places for q in places]
+    places = [*ground.values(), *drawn.values()]
+    size = max([link.length for link in links.values()]
+               + [math.dist(p, q) for p in places for q in places]
                + [abs(driver.position) if isinstance(driver, SliderDrive) else 0.0])
     if not size > 0:
         raise SceneError("the mechanism has no size: every link length and distance between "
                          "pivots is zero", file=file, where="links")
-    offsets = lengths + [(f"points.{k}.along", p.along) for k, p in points.items()
-                         if p.along] + [(f"points.{k}.left", p.left) for k, p in points.items()
-                                        if p.left]
-    for where, value in offsets:
-        if abs(value) < MIN_RELATIVE * size:
-            raise SceneError(f"{value:.4g} m is too short beside the mechanism's size "
-                             f"{size:.4g} m: lengths must be at least {MIN_RELATIVE:g} of the "
-                             f"size (or zero for an offset)", file=file, where=where)
-    coords = [(f"ground.{k}", v) for k, v in ground.items()]
-    coords += [(f"drawn.{k}", v) for k, v in drawn.items()]
-    coords += [(f"sliders.{k}.through", g.through) for k, g in sliders.items()]
-    coords += [(f"assembly.{k}.near", b.near) for k, b in assembly.items() if b.near]
-    for where, (x, y) in coords:
-        if max(abs(x), abs(y)) > MAX_RELATIVE * size:
-            raise SceneError(f"({x:.4g}, {y:.4g}) m lies too far from the origin for a "
-                             f"mechanism of size {size:.4g} m: coordinates must be within "
-                             f"{MAX_RELATIVE:g} × the size", file=file, where=where)
+    shortest = MIN_RELATIVE * size
+    for name, link in links.items():
+        if abs(link.length) < shortest:
+            _too_short(file, f"links.{name}", link.length, size)
+    for key in ("along", "left"):
+        for label, point in points.items():
+            value = getattr(point, key)
+            if value and abs(value) < shortest:
+                _too_short(file, f"points.{label}.{key}", value, size)
+    farthest = MAX_RELATIVE * size
+    for table, suffix, values in (
+            ("ground", "", ground.items()), ("drawn", "", drawn.items()),
+            ("sliders", ".through", ((k, g.through) for k, g in sliders.items())),
+            ("assembly", ".near", ((k, b.near) for k, b in assembly.items() if b.near))):
+        for key, (x, y) in values:
+            if abs(x) > farthest or abs(y) > farthest:
+                where = f"{table}.{key}{suffix}"
+                raise SceneError(f"({x:.4g}, {y:.4g}) m lies too far from the origin for a "
+                                 f"mechanism of size {size:.4g} m: coordinates must be within "
+                                 f"{MAX_RELATIVE:g} × the size", file=file, where=where)
+
+
+def _too_short(file, where, value, size):
+    raise SceneError(f"{value:.4g} m is too short beside the mechanism's size "
+                     f"{size:.4g} m: lengths must be at least {MIN_RELATIVE:g} of the "
+                     f"size (or zero for an offset)", file=file, where=where)
 
 
 def path_stem(file: str) -> str:

@@ -1,6 +1,7 @@
 """The shortcuts load_scene takes are exact: each is compared with the long way round.
 
 * polygons.loads.parse: a scene without force tables skips reading them (the defaults);
+* polygons.options.parse_options: a scene without option tables shares the default options;
 * the frozen records built at once (Scene, Answer) carry every field their class declares;
 * polygons.units.parse_quantity remembers accepted texts, never refusals.
 """
@@ -13,6 +14,7 @@ import pytest
 
 from polygons import loads as loads_mod
 from polygons.errors import UnitError
+from polygons.options import DEFAULT, parse_options
 from polygons.reader import Reader
 from polygons.scene import Answer, Scene, answer_fields, drawing_tolerance, load_scene
 from polygons.units import _parse_quantity, parse_quantity
@@ -45,6 +47,8 @@ def test_records_carry_every_field(path):
             a.unit = "mm"
     with pytest.raises(dataclasses.FrozenInstanceError):
         scene.title = "x"
+    # the same record the dataclass's own __init__ builds
+    assert scene == Scene(**{n: getattr(scene, n) for n in names})
 
 
 @pytest.mark.parametrize("text, dim, reduce", [
@@ -70,3 +74,9 @@ def test_refusals_are_not_remembered():
     for _ in range(2):          # out of range, asked twice: refused twice
         with pytest.raises(UnitError, match="out of range"):
             parse_quantity("2e6 deg", "angle", reduce=True)
+
+
+def test_default_options_are_those_read_from_empty_tables():
+    assert parse_options({}, "f.toml") is DEFAULT
+    long_way = parse_options({"sweep": {}, "diagram": {}, "handout": {}}, "f.toml")
+    assert long_way is not DEFAULT and long_way == DEFAULT
