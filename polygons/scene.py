@@ -42,13 +42,13 @@ from typing import Any, Mapping
 
 from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
-                     UnknownLabelError, UnitError, show, suggest)
+                     UnknownLabelError, show, suggest)
 from .loads import parse as parse_loads
-from .reader import LABEL as _LABEL, Reader, record
+from .reader import LABEL as _LABEL, Reader, answer_fields, record
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
-from .units import UNITS, dimension_of
+from .units import dimension_of
 
 Vec = tuple[float, float]
 
@@ -693,77 +693,6 @@ def drawing_tolerance(source, r: _Reader) -> float:
 
 
 
-def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
-                  extra_keys: tuple[str, ...] = (), extra_units=()) -> dict:
-    """The fields every answer table shares (``[[answers]]``, ``[[force_answers]]``), checked:
-    unknown keys, units, plain numbers for tutorial/exact, mode, tolerance, slip (each key
-    the table gives, once; a scene file carries tens of answers).
-
-    The checks run in this order, whichever refusal comes first being the one reported: the
-    keys (unknown, then required), the unit, the quantity's text, then each value in the
-    table's order."""
-    if (extra_keys or spec.__class__ is not dict or not spec.keys() <= _ANSWER_KEY_SET
-            or "quantity" not in spec or "unit" not in spec):
-        r.table(spec, where, ANSWER_KEYS + extra_keys if extra_keys else ANSWER_KEYS,
-                required=("quantity", "unit"))
-    unit = spec["unit"]
-    if not isinstance(unit, str):
-        r.string(unit, where + ".unit")
-    if unit not in UNITS and unit not in ("-", "1") and unit not in extra_units:
-        raise UnitError(f"unknown unit {show(unit)}", file=r.file, where=where + ".unit")
-    quantity = spec["quantity"]
-    if not isinstance(quantity, str):
-        r.string(quantity, where + ".quantity")
-    out = {"quantity": quantity, "unit": unit, "tutorial": None, "exact": None, "mode": "abs",
-           "sense": None, "tolerance": default_tol, "slip": False, "ref": None,
-           "desc": quantity, "note": ""}
-    for key, value in spec.items():
-        kind = _ANSWER_KIND.get(key)
-        if kind is None:                  # quantity, unit (read above), a caller's extra key
-            continue
-        if kind == _TEXT:
-            if not isinstance(value, str):
-                r.string(value, f"{where}.{key}")
-            out[key] = value
-        elif kind == _NUMBER:
-            # a finite float within 1e15 as it is; anything else is _answer_number's to judge
-            out[key] = (value if value.__class__ is float and -1e15 <= value <= 1e15
-                        else _answer_number(value, key, unit, r, where))
-        elif kind == _MODE:
-            if value != "abs" and value != "signed":
-                raise SceneError(f"mode must be 'abs' or 'signed', got {show(value)}",
-                                 file=r.file, where=where + ".mode")
-            out[key] = value
-        elif kind == _TOLERANCE:
-            out[key] = r.quantity(value, "fraction", where + ".tolerance")
-        else:                             # slip
-            if not isinstance(value, bool):
-                raise SceneError("slip must be true or false", file=r.file,
-                                 where=where + ".slip")
-            out[key] = value
-    return out
-
-
-_ANSWER_KEY_SET = frozenset(ANSWER_KEYS)
-_TEXT, _NUMBER, _MODE, _TOLERANCE, _SLIP = range(5)
-#: how each answer key's value is read (quantity and unit are read first)
-_ANSWER_KIND = {"sense": _TEXT, "ref": _TEXT, "desc": _TEXT, "note": _TEXT,
-                "tutorial": _NUMBER, "exact": _NUMBER, "mode": _MODE,
-                "tolerance": _TOLERANCE, "slip": _SLIP}
-_ANSWER_TEXT = ("sense", "ref", "desc", "note")
-
-
-def _answer_number(value, key: str, unit: str, r: _Reader, where: str) -> float:
-    """A tutorial's or an exact answer: a plain finite number (in the answer's unit)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(f"{key} must be a plain number in {show(unit)}, got {show(value)}",
-                         file=r.file, where=f"{where}.{key}")
-    if not math.isfinite(value) or abs(value) > 1e15:
-        raise SceneError(f"{key} must be a finite number below 1e15 in magnitude, got "
-                         f"{show(value)}", file=r.file, where=f"{where}.{key}")
-    return float(value)
-
-
 _CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
                    r"(?:,\s*([^,()\s]+)\s*)?\)\s*$")
 #: the functions of an answer's ``quantity`` (see :mod:`polygons.quantities`)
@@ -789,8 +718,9 @@ def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None
     if len(args) not in counts:
         raise SceneError(f"{fn}() takes {' or '.join(map(str, counts))} labels, got "
                          f"{show(expr)}", file=file, where=where)
-    if len(_READ_EXPR) < 4096:          # a pure function of the text: remembered
-        _READ_EXPR[expr] = (fn, args)
+    if len(_READ_EXPR) >= 4096:         # a long run's many texts: start afresh
+        _READ_EXPR.clear()
+    _READ_EXPR[expr] = (fn, args)       # a pure function of the text: remembered
     return fn, args
 
 

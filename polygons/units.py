@@ -194,8 +194,9 @@ def parse_quantity(value, dimension: str, *, file: str | None = None,
         hit = _PARSED.get(key)
         if hit is None:
             hit = _parse_quantity(value, dimension, file, where, reduce)
-            if len(_PARSED) < _MEMO_SIZE:
-                _PARSED[key] = hit
+            if len(_PARSED) >= _MEMO_SIZE:      # a long run's many texts: start afresh
+                _PARSED.clear()
+            _PARSED[key] = hit
         return hit
     return _parse_quantity(value, dimension, file, where, reduce)
 

@@ -80,3 +80,11 @@ def test_default_options_are_those_read_from_empty_tables():
     assert parse_options({}, "f.toml") is DEFAULT
     long_way = parse_options({"sweep": {}, "diagram": {}, "handout": {}}, "f.toml")
     assert long_way is not DEFAULT and long_way == DEFAULT
+
+
+def test_memo_starts_afresh_when_full():
+    from polygons import units
+    for i in range(units._MEMO_SIZE + 10):
+        parse_quantity(f"{i} mm", "length")
+    assert 0 < len(units._PARSED) <= units._MEMO_SIZE
+    assert parse_quantity("12345 mm", "length") is parse_quantity("12345 mm", "length")
