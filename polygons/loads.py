@@ -45,7 +45,7 @@ from typing import Any, Callable, Mapping
 from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, suggest
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
                         Friction, Joint, Loads, MassItem, SlotContact, Spring, bodies_of)
-from .reader import Reader
+from .reader import Reader, record
 from .schema import Key, Table
 
 Vec = tuple[float, float]
@@ -221,16 +221,18 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     for lab in labels:
         mem = tuple(members.get(lab, ()))
         if lab in ground and mem:
-            joints.append(Joint(lab, mem, True))
+            joints.append(record(Joint, label=lab, members=mem, ground=True))
         elif len(mem) >= 2:
-            joints.append(Joint(lab, mem, False))
+            joints.append(record(Joint, label=lab, members=mem, ground=False))
     drv = scene.driver
     driver_body = drv.link if _is_crank(drv) else drv.point
     if shortcut and not any(k in ex for k in READS):
-        return Loads(file, MappingProxyType(bodies),
-                     MappingProxyType({k: tuple(v) for k, v in members.items()}),
-                     tuple(joints), (), tuple(scene.sliders), (), (), (), (), (), NO_GRAVITY,
-                     DEFAULT_MODE, (), DEFAULT_STEPS, (), driver_body, False, None, None)
+        return record(Loads, file=file, bodies=MappingProxyType(bodies),
+                      members=MappingProxyType({k: tuple(v) for k, v in members.items()}),
+                      joints=tuple(joints), slots=(), guides=tuple(scene.sliders), masses=(),
+                      forces=(), torques=(), frictions=(), springs=(), gravity=NO_GRAVITY,
+                      mode=DEFAULT_MODE, after=(), steps=DEFAULT_STEPS, answers=(),
+                      driver_body=driver_body, active=False, flywheel=None, efficiency=None)
     r = _Values(file)
     active = has_loads(ex)
     reversed_names = {b.b + b.a: n for n, b in bodies.items() if b.kind == "link"}

@@ -237,7 +237,10 @@ class Scene:
 def split_link_name(name: str, *, file: str | None = None, where: str | None = None
                     ) -> tuple[str, str]:
     """'BC' -> ('B', 'C'); 'O2P2' -> ('O2', 'P2').  A label is a capital letter followed by
-    lower-case letters, digits, '_' or a prime."""
+    lower-case letters, digits, '_' or a prime.  (A name read well is remembered.)"""
+    ends = _LINK_ENDS.get(name) if name.__class__ is str else None
+    if ends is not None:
+        return ends
     tokens = _LABEL_TOKEN.findall(name)
     if "".join(tokens) != name or len(tokens) != 2:
         raise SceneError(f"link name {show(name)} must be its two end labels, e.g. 'BC' or 'O2P2' "
@@ -245,7 +248,13 @@ def split_link_name(name: str, *, file: str | None = None, where: str | None = N
                          f"digits)", file=file, where=where)
     if tokens[0] == tokens[1]:
         raise SceneError(f"link {show(name)} joins {tokens[0]} to itself", file=file, where=where)
-    return tokens[0], tokens[1]
+    if len(_LINK_ENDS) >= 4096:         # a long run's many names: start afresh
+        _LINK_ENDS.clear()
+    ends = _LINK_ENDS[name] = tokens[0], tokens[1]
+    return ends
+
+
+_LINK_ENDS: dict[str, tuple[str, str]] = {}
 
 
 _Reader = Reader     # the name the loader's helpers use
@@ -383,7 +392,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         if length < MIN_LENGTH:
             raise SceneError(f"{show(value)} is too small to compute with: a link must be at "
                              f"least {MIN_LENGTH:g} m long", file=file, where=f"links.{name}")
-        links[name] = Link(name, a, b, length)
+        links[name] = record(Link, name=name, a=a, b=b, length=length)
 
     # slots
     slots: dict[str, Slot] = {}
@@ -542,7 +551,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         else:
             raise SceneError(f"give the crank angle (angle = \"30 deg\") or the drawn position "
                              f"of {tip} in [drawn]", file=file, where="driver.angle")
-        driver = Crank(name, pivot, tip, angle, omega, alpha)
+        driver = record(Crank, link=name, pivot=pivot, tip=tip, angle=angle, omega=omega,
+                        alpha=alpha)
     else:
         r.table(drv, "driver", ("slider", "position", "velocity", "acceleration"),
                 required=("slider", "position", "velocity"))
@@ -667,15 +677,20 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
                       near=r.vec(spec["near"], where + ".near"))
     text = r.string(spec, where)
     words = " ".join(text.split())
+    # '{label} {rel} REF' or '{rel} REF' (a label starts upper-case, a relation lower-case)
+    head = label + " "
+    rest = words[len(head):] if words.startswith(head) else words
     for rel in _RELATIONS:
-        prefix = f"{label} {rel} "
-        if words.startswith(prefix) or words.startswith(f"{rel} "):
-            ref = words[len(prefix):] if words.startswith(prefix) else words[len(rel) + 1:]
+        if rest.startswith(rel) and rest[len(rel):len(rel) + 1] == " ":
+            ref = rest[len(rel) + 1:]
             if _LABEL.match(ref):
-                return Branch(label, text, rel, (need_label(ref, where),))
+                return record(Branch, label=label, text=text, relation=rel,
+                              ref=(need_label(ref, where),), near=None)
             tokens = _LABEL_TOKEN.findall(ref)
-            if "".join(tokens) == ref and len(tokens) == 2:
-                return Branch(label, text, rel, tuple(need_label(t, where) for t in tokens))
+            if len(tokens) == 2 and tokens[0] + tokens[1] == ref:
+                return record(Branch, label=label, text=text, relation=rel,
+                              ref=(need_label(tokens[0], where), need_label(tokens[1], where)),
+                              near=None)
             raise BranchError(f"cannot read the reference {show(ref)} in {show(text)}: give a point "
                               f"('{label} above B') or a line of two points ('{label} above AD')",
                               file=r.file, where=where)

@@ -88,3 +88,21 @@ def test_memo_starts_afresh_when_full():
         parse_quantity(f"{i} mm", "length")
     assert 0 < len(units._PARSED) <= units._MEMO_SIZE
     assert parse_quantity("12345 mm", "length") is parse_quantity("12345 mm", "length")
+
+
+def _built_as_init_builds(rec):
+    """``rec`` carries every field of its class and equals the record __init__ builds."""
+    names = {f.name for f in dataclasses.fields(rec)}
+    assert set(vars(rec)) == names, type(rec).__name__
+    assert rec == type(rec)(**{n: getattr(rec, n) for n in names})
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        setattr(rec, next(iter(names)), None)
+
+
+@pytest.mark.parametrize("path", CASES, ids=lambda p: p.stem)
+def test_every_record_set_at_once_is_whole(path):
+    """Links, the driver, the assembly's branches, the loads and their bodies and joints."""
+    scene = load_scene(path)
+    for rec in (*scene.links.values(), scene.driver, *scene.assembly.values(), scene.loads,
+                *scene.loads.bodies.values(), *scene.loads.joints):
+        _built_as_init_builds(rec)
