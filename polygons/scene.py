@@ -265,24 +265,39 @@ _Reader = Reader     # the name the loader's helpers use
 MAX_SCENE_BYTES = 1_000_000
 
 
-def _read_bounded(fh) -> bytes:
-    """At most ``MAX_SCENE_BYTES + 1`` bytes of ``fh``: asked for by the file's stated size
-    (one ``read`` of a 1 MB buffer costs more than parsing a scene), the rest, if any, read
-    up to the bound (a file that grew, a pipe or a device stating no size)."""
-    size = os.fstat(fh.fileno()).st_size
+def _read_bounded(fd: int) -> bytes:
+    """At most ``MAX_SCENE_BYTES + 1`` bytes of the open file ``fd``: asked for by the file's
+    stated size (one ``read`` of a 1 MB buffer costs more than parsing a scene), the rest, if
+    any, read up to the bound (a file that grew, a pipe or a device stating no size).  Read
+    with ``os.read`` (a buffered file object costs more to set up than the read itself)."""
+    size = os.fstat(fd).st_size
     want = size + 1 if 0 < size <= MAX_SCENE_BYTES else MAX_SCENE_BYTES + 1
-    raw = fh.read(want)
-    if len(raw) == want and want <= MAX_SCENE_BYTES:
-        raw += fh.read(MAX_SCENE_BYTES + 1 - want)
-    return raw
+    parts = []
+    got = 0
+    while got < want:
+        chunk = os.read(fd, want - got)
+        if not chunk:
+            break
+        parts.append(chunk)
+        got += len(chunk)
+        if got == want and want <= MAX_SCENE_BYTES:
+            want = MAX_SCENE_BYTES + 1          # more than its stated size: read on
+    return parts[0] if len(parts) == 1 else b"".join(parts)
+
+
+#: bytes as they are (Windows would translate line ends without O_BINARY), not inherited
+_OPEN_FLAGS = getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0)
 
 
 def read_scene_text(path: str | Path) -> str:
     """The text of a scene file: at most :data:`MAX_SCENE_BYTES`, UTF-8, valid TOML nesting."""
     file = str(path)
     try:
-        with open(path, "rb") as fh:
-            raw = _read_bounded(fh)
+        fd = os.open(path, os.O_RDONLY | _OPEN_FLAGS)
+        try:
+            raw = _read_bounded(fd)       # (a directory opens, and refuses to be read)
+        finally:
+            os.close(fd)
     except FileNotFoundError:
         raise SceneError("no such scene file", file=file) from None
     except IsADirectoryError:
