@@ -341,11 +341,18 @@ def parse_toml(text: str, file: str) -> dict:
 
 
 def _rtoml():
-    try:
-        import rtoml
-    except ImportError:           # an optional speed-up: tomllib reads the same files
-        return None
-    return rtoml
+    """The rtoml module, imported on first use (None without it)."""
+    global _FAST
+    if _FAST is False:
+        try:
+            import rtoml
+        except ImportError:       # an optional speed-up: tomllib reads the same files
+            rtoml = None
+        _FAST = rtoml
+    return _FAST
+
+
+_FAST: Any = False          # not yet imported
 
 
 def load_scene(path: str | Path) -> Scene:
@@ -365,8 +372,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     source = data.get("source", {})
     r.table(source, "source", KEYS["source"])
     for key in SOURCE_TEXT:
-        if key in source:
-            r.string(source[key], f"source.{key}")
+        if key in source and not isinstance(source[key], str):
+            r.string(source[key], f"source.{key}")      # refused, naming the key
     if not isinstance(source.get("synthetic", False), bool):
         raise SceneError("synthetic must be true or false", file=file, where="source.synthetic")
 
@@ -374,7 +381,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     ground_raw = r.named(data["ground"], "ground")
     ground = {}
     for name, value in ground_raw.items():
-        ground[r.label(name, f"ground.{name}")] = r.vec(value, f"ground.{name}")
+        where = f"ground.{name}"
+        ground[r.label(name, where)] = r.vec(value, where)
     if not ground:
         raise SceneError("at least one fixed pivot is needed", file=file, where="ground")
 
