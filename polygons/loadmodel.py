@@ -4,6 +4,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Mapping
 
+from .reader import record
+
 Vec = tuple[float, float]
 
 
@@ -160,20 +162,24 @@ def bodies_of(scene) -> dict[str, Body]:
     """The moving bodies of a scene: its links, its slotted levers, its slider blocks."""
     bodies: dict[str, Body] = {}
     levers = {s.lever: s for s in scene.slots.values()}
+    on_link: dict[str, list[str]] = {}          # the extra points each link carries
+    for p, bp in scene.points.items():
+        on_link.setdefault(bp.link, []).append(p)
     for name, link in scene.links.items():
         labels = [link.a, link.b]
         if name in levers:
             labels.append(levers[name].coincident)
-        labels += [p for p, bp in scene.points.items() if bp.link == name]
-        bodies[name] = Body(name, "link", link.a, link.b, tuple(dict.fromkeys(labels)),
-                            link.length)
+        if name in on_link:
+            labels += on_link[name]
+        bodies[name] = record(Body, name=name, kind="link", a=link.a, b=link.b,
+                              labels=tuple(dict.fromkeys(labels)), length=link.length)
     for name, slot in levers.items():
         if name in bodies:
             continue
-        labels = [slot.pivot, slot.coincident]
-        labels += [p for p, bp in scene.points.items() if bp.link == name]
-        bodies[name] = Body(name, "link", slot.pivot, slot.coincident,
-                            tuple(dict.fromkeys(labels)), None)
+        labels = [slot.pivot, slot.coincident] + on_link.get(name, [])
+        bodies[name] = record(Body, name=name, kind="link", a=slot.pivot, b=slot.coincident,
+                              labels=tuple(dict.fromkeys(labels)), length=None)
     for label in scene.sliders:
-        bodies[label] = Body(label, "block", label, None, (label,), None)
+        bodies[label] = record(Body, name=label, kind="block", a=label, b=None, labels=(label,),
+                               length=None)
     return bodies

@@ -45,7 +45,7 @@ from typing import Any, Callable, Mapping
 from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, suggest
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
                         Friction, Joint, Loads, MassItem, SlotContact, Spring, bodies_of)
-from .reader import Reader
+from .reader import Reader, record
 from .schema import Key, Table
 
 Vec = tuple[float, float]
@@ -55,6 +55,12 @@ FORCE_TABLES = ("masses", "forces", "torques", "springs", "gravity", "dynamics")
 #: a scene has a force analysis when it has one of these
 LOAD_TABLES = ("masses", "forces", "torques", "springs")
 MODES = ("kinetostatic", "torque-driven", "release")
+#: every table this module reads from ``Scene.extra``
+READS = FORCE_TABLES + ("flywheel", "efficiency", "force_answers")
+#: what an absent [gravity] and [dynamics] give
+NO_GRAVITY = (0.0, 0.0)
+DEFAULT_MODE = MODES[0]
+DEFAULT_STEPS = 200
 
 _Q = "quantity"
 TABLES: tuple[Table, ...] = (
@@ -194,29 +200,43 @@ def has_loads(extra: Mapping[str, Any]) -> bool:
 AnswerFields = Callable[..., dict]
 
 
-def parse(scene, answer_fields: AnswerFields) -> Loads:
+def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads:
     """Read and check the force tables of ``scene`` (every problem is a :class:`SceneError`).
 
     ``answer_fields(spec, where, extra_keys=..., extra_units=...)`` reads the fields shared with
-    ``[[answers]]`` (bound by the scene to its reader and the case's drawing tolerance)."""
+    ``[[answers]]`` (bound by the scene to its reader and the case's drawing tolerance).
+    A scene with none of :data:`READS` has nothing to read or refuse: its bodies and joints
+    are found and every table takes its empty default, as reading the absent tables gives
+    (``shortcut=False`` reads them all the same; the tests compare the two)."""
     file = scene.file
-    r = _Values(file)
     ex = scene.extra
-    active = has_loads(ex)
     bodies = bodies_of(scene)
-    members: dict[str, list[str]] = {lab: [] for lab in scene.labels}
+    labels = scene.labels
+    members: dict[str, list[str]] = {lab: [] for lab in labels}
     for b in bodies.values():
         for lab in b.labels:
             members.setdefault(lab, []).append(b.name)
+    ground = scene.ground
+    joints = []
+    for lab in labels:
+        mem = tuple(members.get(lab, ()))
+        if lab in ground and mem:
+            joints.append(record(Joint, label=lab, members=mem, ground=True))
+        elif len(mem) >= 2:
+            joints.append(record(Joint, label=lab, members=mem, ground=False))
+    drv = scene.driver
+    driver_body = drv.link if _is_crank(drv) else drv.point
+    if shortcut and not any(k in ex for k in READS):
+        return record(Loads, file=file, bodies=MappingProxyType(bodies),
+                      members=MappingProxyType({k: tuple(v) for k, v in members.items()}),
+                      joints=tuple(joints), slots=(), guides=tuple(scene.sliders), masses=(),
+                      forces=(), torques=(), frictions=(), springs=(), gravity=NO_GRAVITY,
+                      mode=DEFAULT_MODE, after=(), steps=DEFAULT_STEPS, answers=(),
+                      driver_body=driver_body, active=False, flywheel=None, efficiency=None)
+    r = _Values(file)
+    active = has_loads(ex)
     reversed_names = {b.b + b.a: n for n, b in bodies.items() if b.kind == "link"}
 
-    joints = []
-    for lab in scene.labels:
-        mem = tuple(members.get(lab, ()))
-        if lab in scene.ground and mem:
-            joints.append(Joint(lab, mem, True))
-        elif len(mem) >= 2:
-            joints.append(Joint(lab, mem, False))
     slots = []
     for slot in scene.slots.values() if active else ():
         carriers = [b for b in members.get(slot.pin, []) if b != slot.lever]
@@ -280,8 +300,6 @@ def parse(scene, answer_fields: AnswerFields) -> Loads:
     flywheel = _flywheel(r, scene, ex.get("flywheel"), mode)
     efficiency = _efficiency(r, scene, ex.get("efficiency"))
     answers = _answers(r, ex.get("force_answers", []), answer_fields)
-    drv = scene.driver
-    driver_body = drv.link if _is_crank(drv) else drv.point
     return Loads(file, MappingProxyType(bodies),
                  MappingProxyType({k: tuple(v) for k, v in members.items()}), tuple(joints),
                  tuple(slots), tuple(scene.sliders), tuple(masses), tuple(forces),
@@ -378,7 +396,7 @@ def _masses(ctx: _Context, raw) -> list[MassItem]:
 
 def _gravity(r: _Values, graw) -> Vec:
     if graw is None:
-        return (0.0, 0.0)
+        return NO_GRAVITY
     r.table(graw, "gravity", _keys("gravity"))
     enabled = graw.get("enabled", True)
     if not isinstance(enabled, bool):
@@ -571,7 +589,7 @@ def _springs(ctx: _Context, raw) -> list[Spring]:
 def _dynamics(r: _Values, scene, draw, active: bool) -> tuple[str, tuple[float, ...], int]:
     file = r.file
     r.table(draw, "dynamics", _keys("dynamics"))
-    mode = draw.get("mode", "kinetostatic")
+    mode = draw.get("mode", DEFAULT_MODE)
     if mode not in MODES:
         raise SceneError(f"mode must be one of {', '.join(MODES)}; got {mode!r}", file=file,
                          where="dynamics.mode")
@@ -585,7 +603,7 @@ def _dynamics(r: _Values, scene, draw, active: bool) -> tuple[str, tuple[float, 
                   for i, a in enumerate(after_raw))
     if after and mode != "release":
         raise SceneError("'after' is for mode = \"release\"", file=file, where="dynamics.after")
-    steps = draw.get("steps", 200)
+    steps = draw.get("steps", DEFAULT_STEPS)
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 4:
         raise SceneError("steps must be a whole number ≥ 4", file=file, where="dynamics.steps")
     if not active:

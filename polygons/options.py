@@ -101,6 +101,10 @@ class Options:
     diagram: DiagramOptions = DiagramOptions()
 
 
+#: the options of a scene without [sweep], [diagram] or [handout]
+DEFAULT = Options()
+
+
 def labels(value, *, file: str | None, where: str) -> tuple[str, ...]:
     """A list of labels, or one comma-separated string of them."""
     if isinstance(value, str):
@@ -164,6 +168,8 @@ def _bool(table, key, name, file):
 
 def parse_options(data: Mapping, file: str) -> Options:
     """Check and read ``[sweep]``, ``[diagram]`` and ``[handout]`` of parsed TOML ``data``."""
+    if "sweep" not in data and "diagram" not in data and "handout" not in data:
+        return DEFAULT      # what reading the three empty tables gives (frozen: shared)
     sw = _table(data, "sweep", file)
     steps = sw.get("steps")
     if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int)

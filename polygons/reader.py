@@ -1,16 +1,32 @@
-"""The one reader of scene tables: types, units and labels checked, errors naming file and key."""
+"""The one reader of scene tables: types, units and labels checked, errors naming file and key;
+and the fields every answer table shares ([[answers]], [[force_answers]], [[pin_answers]])."""
 from __future__ import annotations
 
+import math
 import re
 
-from .errors import SceneError, UnknownKeyError, show, suggest
-from .units import parse_quantity
+from .errors import SceneError, UnitError, UnknownKeyError, show, suggest
+from .scene_tables import ANSWER_KEYS
+from .units import UNITS, parse_quantity
 
 Vec = tuple[float, float]
 
 #: a point label: a capital letter, then lower-case letters, digits, '_' or primes
 LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
 _LABEL = LABEL
+
+
+def record(cls, **fields):
+    """A frozen dataclass record from ``fields`` (every field of ``cls``, values checked), set
+    at once: equal to ``cls(**fields)``, whose ``__init__`` sets each field through
+    ``object.__setattr__`` (for a scene's seventeen fields, three times as long).
+    tests/test_scene_load.py checks that the records a scene is built of carry every field."""
+    obj = _new(cls)
+    obj.__dict__.update(fields)
+    return obj
+
+
+_new = object.__new__
 
 
 class Reader:
@@ -71,3 +87,74 @@ class Reader:
         if not isinstance(value, str):
             raise SceneError(f"expected text, got {show(value)}", file=self.file, where=where)
         return value
+
+
+# ---------------------------------------------------------------- answer tables
+def answer_fields(spec, r: Reader, where: str, default_tol: float, *,
+                  extra_keys: tuple[str, ...] = (), extra_units=()) -> dict:
+    """The fields every answer table shares (``[[answers]]``, ``[[force_answers]]``), checked:
+    unknown keys, units, plain numbers for tutorial/exact, mode, tolerance, slip (each key
+    the table gives, once; a scene file carries tens of answers).
+
+    The checks run in this order, whichever refusal comes first being the one reported: the
+    keys (unknown, then required), the unit, the quantity's text, then each value in the
+    table's order."""
+    if (extra_keys or spec.__class__ is not dict or not spec.keys() <= _ANSWER_KEY_SET
+            or "quantity" not in spec or "unit" not in spec):
+        r.table(spec, where, ANSWER_KEYS + extra_keys if extra_keys else ANSWER_KEYS,
+                required=("quantity", "unit"))
+    unit = spec["unit"]
+    if not isinstance(unit, str):
+        r.string(unit, where + ".unit")
+    if unit not in UNITS and unit not in ("-", "1") and unit not in extra_units:
+        raise UnitError(f"unknown unit {show(unit)}", file=r.file, where=where + ".unit")
+    quantity = spec["quantity"]
+    if not isinstance(quantity, str):
+        r.string(quantity, where + ".quantity")
+    out = {"quantity": quantity, "unit": unit, "tutorial": None, "exact": None, "mode": "abs",
+           "sense": None, "tolerance": default_tol, "slip": False, "ref": None,
+           "desc": quantity, "note": ""}
+    for key, value in spec.items():
+        kind = _ANSWER_KIND.get(key)
+        if kind is None:                  # quantity, unit (read above), a caller's extra key
+            continue
+        if kind == _TEXT:
+            if not isinstance(value, str):
+                r.string(value, f"{where}.{key}")
+            out[key] = value
+        elif kind == _NUMBER:
+            # a finite float within 1e15 as it is; anything else is _answer_number's to judge
+            out[key] = (value if value.__class__ is float and -1e15 <= value <= 1e15
+                        else _answer_number(value, key, unit, r, where))
+        elif kind == _MODE:
+            if value != "abs" and value != "signed":
+                raise SceneError(f"mode must be 'abs' or 'signed', got {show(value)}",
+                                 file=r.file, where=where + ".mode")
+            out[key] = value
+        elif kind == _TOLERANCE:
+            out[key] = r.quantity(value, "fraction", where + ".tolerance")
+        else:                             # slip
+            if not isinstance(value, bool):
+                raise SceneError("slip must be true or false", file=r.file,
+                                 where=where + ".slip")
+            out[key] = value
+    return out
+
+
+_ANSWER_KEY_SET = frozenset(ANSWER_KEYS)
+_TEXT, _NUMBER, _MODE, _TOLERANCE, _SLIP = range(5)
+#: how each answer key's value is read (quantity and unit are read first)
+_ANSWER_KIND = {"sense": _TEXT, "ref": _TEXT, "desc": _TEXT, "note": _TEXT,
+                "tutorial": _NUMBER, "exact": _NUMBER, "mode": _MODE,
+                "tolerance": _TOLERANCE, "slip": _SLIP}
+
+
+def _answer_number(value, key: str, unit: str, r: Reader, where: str) -> float:
+    """A tutorial's or an exact answer: a plain finite number (in the answer's unit)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise SceneError(f"{key} must be a plain number in {show(unit)}, got {show(value)}",
+                         file=r.file, where=f"{where}.{key}")
+    if not math.isfinite(value) or abs(value) > 1e15:
+        raise SceneError(f"{key} must be a finite number below 1e15 in magnitude, got "
+                         f"{show(value)}", file=r.file, where=f"{where}.{key}")
+    return float(value)

@@ -35,20 +35,20 @@ import math
 import os
 import re
 import tomllib
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
 from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
-                     UnknownLabelError, UnitError, show, suggest)
+                     UnknownLabelError, show, suggest)
 from .loads import parse as parse_loads
-from .reader import LABEL as _LABEL, Reader
+from .reader import LABEL as _LABEL, Reader, answer_fields, record
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
-from .units import UNITS, dimension_of
+from .units import dimension_of
 
 Vec = tuple[float, float]
 
@@ -238,7 +238,10 @@ class Scene:
 def split_link_name(name: str, *, file: str | None = None, where: str | None = None
                     ) -> tuple[str, str]:
     """'BC' -> ('B', 'C'); 'O2P2' -> ('O2', 'P2').  A label is a capital letter followed by
-    lower-case letters, digits, '_' or a prime."""
+    lower-case letters, digits, '_' or a prime.  (A name read well is remembered.)"""
+    ends = _LINK_ENDS.get(name) if name.__class__ is str else None
+    if ends is not None:
+        return ends
     tokens = _LABEL_TOKEN.findall(name)
     if "".join(tokens) != name or len(tokens) != 2:
         raise SceneError(f"link name {show(name)} must be its two end labels, e.g. 'BC' or 'O2P2' "
@@ -246,7 +249,13 @@ def split_link_name(name: str, *, file: str | None = None, where: str | None = N
                          f"digits)", file=file, where=where)
     if tokens[0] == tokens[1]:
         raise SceneError(f"link {show(name)} joins {tokens[0]} to itself", file=file, where=where)
-    return tokens[0], tokens[1]
+    if len(_LINK_ENDS) >= 4096:         # a long run's many names: start afresh
+        _LINK_ENDS.clear()
+    ends = _LINK_ENDS[name] = tokens[0], tokens[1]
+    return ends
+
+
+_LINK_ENDS: dict[str, tuple[str, str]] = {}
 
 
 _Reader = Reader     # the name the loader's helpers use
@@ -257,24 +266,39 @@ _Reader = Reader     # the name the loader's helpers use
 MAX_SCENE_BYTES = 1_000_000
 
 
-def _read_bounded(fh) -> bytes:
-    """At most ``MAX_SCENE_BYTES + 1`` bytes of ``fh``: asked for by the file's stated size
-    (one ``read`` of a 1 MB buffer costs more than parsing a scene), the rest, if any, read
-    up to the bound (a file that grew, a pipe or a device stating no size)."""
-    size = os.fstat(fh.fileno()).st_size
+def _read_bounded(fd: int) -> bytes:
+    """At most ``MAX_SCENE_BYTES + 1`` bytes of the open file ``fd``: asked for by the file's
+    stated size (one ``read`` of a 1 MB buffer costs more than parsing a scene), the rest, if
+    any, read up to the bound (a file that grew, a pipe or a device stating no size).  Read
+    with ``os.read`` (a buffered file object costs more to set up than the read itself)."""
+    size = os.fstat(fd).st_size
     want = size + 1 if 0 < size <= MAX_SCENE_BYTES else MAX_SCENE_BYTES + 1
-    raw = fh.read(want)
-    if len(raw) == want and want <= MAX_SCENE_BYTES:
-        raw += fh.read(MAX_SCENE_BYTES + 1 - want)
-    return raw
+    parts = []
+    got = 0
+    while got < want:
+        chunk = os.read(fd, want - got)
+        if not chunk:
+            break
+        parts.append(chunk)
+        got += len(chunk)
+        if got == want and want <= MAX_SCENE_BYTES:
+            want = MAX_SCENE_BYTES + 1          # more than its stated size: read on
+    return parts[0] if len(parts) == 1 else b"".join(parts)
+
+
+#: bytes as they are (Windows would translate line ends without O_BINARY), not inherited
+_OPEN_FLAGS = getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0)
 
 
 def read_scene_text(path: str | Path) -> str:
     """The text of a scene file: at most :data:`MAX_SCENE_BYTES`, UTF-8, valid TOML nesting."""
     file = str(path)
     try:
-        with open(path, "rb") as fh:
-            raw = _read_bounded(fh)
+        fd = os.open(path, os.O_RDONLY | _OPEN_FLAGS)
+        try:
+            raw = _read_bounded(fd)       # (a directory opens, and refuses to be read)
+        finally:
+            os.close(fd)
     except FileNotFoundError:
         raise SceneError("no such scene file", file=file) from None
     except IsADirectoryError:
@@ -318,11 +342,18 @@ def parse_toml(text: str, file: str) -> dict:
 
 
 def _rtoml():
-    try:
-        import rtoml
-    except ImportError:           # an optional speed-up: tomllib reads the same files
-        return None
-    return rtoml
+    """The rtoml module, imported on first use (None without it)."""
+    global _FAST
+    if _FAST is False:
+        try:
+            import rtoml
+        except ImportError:       # an optional speed-up: tomllib reads the same files
+            rtoml = None
+        _FAST = rtoml
+    return _FAST
+
+
+_FAST: Any = False          # not yet imported
 
 
 def load_scene(path: str | Path) -> Scene:
@@ -338,12 +369,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     r.table(data, "", TOP_KEYS + OPTION_KEYS + extra_keys,
             required=("ground", "links", "driver"))
     options = parse_options(data, file)
-    title = r.string(data.get("title", path_stem(file)), "title")
+    title = r.string(data["title"], "title") if "title" in data else path_stem(file)
     source = data.get("source", {})
     r.table(source, "source", KEYS["source"])
     for key in SOURCE_TEXT:
-        if key in source:
-            r.string(source[key], f"source.{key}")
+        if key in source and not isinstance(source[key], str):
+            r.string(source[key], f"source.{key}")      # refused, naming the key
     if not isinstance(source.get("synthetic", False), bool):
         raise SceneError("synthetic must be true or false", file=file, where="source.synthetic")
 
@@ -351,7 +382,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     ground_raw = r.named(data["ground"], "ground")
     ground = {}
     for name, value in ground_raw.items():
-        ground[r.label(name, f"ground.{name}")] = r.vec(value, f"ground.{name}")
+        where = f"ground.{name}"
+        ground[r.label(name, where)] = r.vec(value, where)
     if not ground:
         raise SceneError("at least one fixed pivot is needed", file=file, where="ground")
 
@@ -384,7 +416,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         if length < MIN_LENGTH:
             raise SceneError(f"{show(value)} is too small to compute with: a link must be at "
                              f"least {MIN_LENGTH:g} m long", file=file, where=f"links.{name}")
-        links[name] = Link(name, a, b, length)
+        links[name] = record(Link, name=name, a=a, b=b, length=length)
 
     # slots
     slots: dict[str, Slot] = {}
@@ -544,7 +576,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         else:
             raise SceneError(f"give the crank angle (angle = \"30 deg\") or the drawn position "
                              f"of {tip} in [drawn]", file=file, where="driver.angle")
-        driver = Crank(name, pivot, tip, angle, omega, alpha)
+        driver = record(Crank, link=name, pivot=pivot, tip=tip, angle=angle, omega=omega,
+                        alpha=alpha)
     else:
         r.table(drv, "driver", ("slider", "position", "velocity", "acceleration"),
                 required=("slider", "position", "velocity"))
@@ -582,22 +615,25 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     if not isinstance(answers_raw, list):
         raise SceneError("answers must be an array of tables: [[answers]]", file=file,
                          where="answers")
-    answers = tuple(_parse_answer(i, a, r, default_tol) for i, a in enumerate(answers_raw))
+    answers = _parse_answers(answers_raw, r, default_tol)
 
     check_proportions(file, ground, drawn, links, sliders, points, assembly, driver)
 
-    scene = Scene(file=file, title=title, source=MappingProxyType(dict(source)),
-                 ground=MappingProxyType(ground), links=MappingProxyType(links),
-                 driver=driver, sliders=MappingProxyType(sliders),
-                 slots=MappingProxyType(slots), points=MappingProxyType(points),
-                 assembly=MappingProxyType(assembly), answers=answers,
-                 solve=tuple(s for s in DIAGRAMS if s in solve),
-                 drawn=MappingProxyType(drawn),
-                 extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
-                 options=options, prescribed=MappingProxyType(prescribed))
-    # the force tables ([masses], [forces], ...), parsed and checked now: polygons.loads
-    return replace(scene, loads=parse_loads(scene, lambda spec, where, **kw: answer_fields(
-        spec, r, where, default_tol, **kw)))
+    # (every field of Scene, set at once; loads set below, before the scene is handed out)
+    scene = record(Scene, file=file, title=title, source=MappingProxyType(dict(source)),
+                   ground=MappingProxyType(ground), links=MappingProxyType(links),
+                   driver=driver, sliders=MappingProxyType(sliders),
+                   slots=MappingProxyType(slots), points=MappingProxyType(points),
+                   assembly=MappingProxyType(assembly), answers=answers,
+                   solve=DIAGRAMS if "solve" not in data else tuple(
+                       [s for s in DIAGRAMS if s in solve]),
+                   drawn=MappingProxyType(drawn),
+                   extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
+                   options=options, loads=None, prescribed=MappingProxyType(prescribed))
+    # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
+    scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
+        spec, r, where, default_tol, **kw))
+    return scene
 
 
 #: the smallest link length or offset accepted, as a fraction of the mechanism's size, and the
@@ -615,31 +651,41 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
     size = the longest link, or the largest distance between two fixed or drawn points (or a
     slider driver's position).  Every link length and point offset must be zero or at least
     ``MIN_RELATIVE`` × size; every coordinate at most ``MAX_RELATIVE`` × size from the origin.
+    (Checked in that order; the key of a refused value is named only then.)
     """
-    places = list(ground.values()) + list(drawn.values())
-    lengths = [(f"links.{n}", l.length) for n, l in links.items()]
-    size = max([l for _, l in lengths] + [math.dist(p, q) for p in places for q in places]
+    places = [*ground.values(), *drawn.values()]
+    size = max([link.length for link in links.values()]
+               + [math.dist(p, q) for p in places for q in places]
                + [abs(driver.position) if isinstance(driver, SliderDrive) else 0.0])
     if not size > 0:
         raise SceneError("the mechanism has no size: every link length and distance between "
                          "pivots is zero", file=file, where="links")
-    offsets = lengths + [(f"points.{k}.along", p.along) for k, p in points.items()
-                         if p.along] + [(f"points.{k}.left", p.left) for k, p in points.items()
-                                        if p.left]
-    for where, value in offsets:
-        if abs(value) < MIN_RELATIVE * size:
-            raise SceneError(f"{value:.4g} m is too short beside the mechanism's size "
-                             f"{size:.4g} m: lengths must be at least {MIN_RELATIVE:g} of the "
-                             f"size (or zero for an offset)", file=file, where=where)
-    coords = [(f"ground.{k}", v) for k, v in ground.items()]
-    coords += [(f"drawn.{k}", v) for k, v in drawn.items()]
-    coords += [(f"sliders.{k}.through", g.through) for k, g in sliders.items()]
-    coords += [(f"assembly.{k}.near", b.near) for k, b in assembly.items() if b.near]
-    for where, (x, y) in coords:
-        if max(abs(x), abs(y)) > MAX_RELATIVE * size:
-            raise SceneError(f"({x:.4g}, {y:.4g}) m lies too far from the origin for a "
-                             f"mechanism of size {size:.4g} m: coordinates must be within "
-                             f"{MAX_RELATIVE:g} × the size", file=file, where=where)
+    shortest = MIN_RELATIVE * size
+    for name, link in links.items():
+        if abs(link.length) < shortest:
+            _too_short(file, f"links.{name}", link.length, size)
+    for key in ("along", "left"):
+        for label, point in points.items():
+            value = getattr(point, key)
+            if value and abs(value) < shortest:
+                _too_short(file, f"points.{label}.{key}", value, size)
+    farthest = MAX_RELATIVE * size
+    for table, suffix, values in (
+            ("ground", "", ground.items()), ("drawn", "", drawn.items()),
+            ("sliders", ".through", ((k, g.through) for k, g in sliders.items())),
+            ("assembly", ".near", ((k, b.near) for k, b in assembly.items() if b.near))):
+        for key, (x, y) in values:
+            if abs(x) > farthest or abs(y) > farthest:
+                where = f"{table}.{key}{suffix}"
+                raise SceneError(f"({x:.4g}, {y:.4g}) m lies too far from the origin for a "
+                                 f"mechanism of size {size:.4g} m: coordinates must be within "
+                                 f"{MAX_RELATIVE:g} × the size", file=file, where=where)
+
+
+def _too_short(file, where, value, size):
+    raise SceneError(f"{value:.4g} m is too short beside the mechanism's size "
+                     f"{size:.4g} m: lengths must be at least {MIN_RELATIVE:g} of the "
+                     f"size (or zero for an offset)", file=file, where=where)
 
 
 def path_stem(file: str) -> str:
@@ -656,15 +702,20 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
                       near=r.vec(spec["near"], where + ".near"))
     text = r.string(spec, where)
     words = " ".join(text.split())
+    # '{label} {rel} REF' or '{rel} REF' (a label starts upper-case, a relation lower-case)
+    head = label + " "
+    rest = words[len(head):] if words.startswith(head) else words
     for rel in _RELATIONS:
-        prefix = f"{label} {rel} "
-        if words.startswith(prefix) or words.startswith(f"{rel} "):
-            ref = words[len(prefix):] if words.startswith(prefix) else words[len(rel) + 1:]
+        if rest.startswith(rel) and rest[len(rel):len(rel) + 1] == " ":
+            ref = rest[len(rel) + 1:]
             if _LABEL.match(ref):
-                return Branch(label, text, rel, (need_label(ref, where),))
+                return record(Branch, label=label, text=text, relation=rel,
+                              ref=(need_label(ref, where),), near=None)
             tokens = _LABEL_TOKEN.findall(ref)
-            if "".join(tokens) == ref and len(tokens) == 2:
-                return Branch(label, text, rel, tuple(need_label(t, where) for t in tokens))
+            if len(tokens) == 2 and tokens[0] + tokens[1] == ref:
+                return record(Branch, label=label, text=text, relation=rel,
+                              ref=(need_label(tokens[0], where), need_label(tokens[1], where)),
+                              near=None)
             raise BranchError(f"cannot read the reference {show(ref)} in {show(text)}: give a point "
                               f"('{label} above B') or a line of two points ('{label} above AD')",
                               file=r.file, where=where)
@@ -680,53 +731,6 @@ def drawing_tolerance(source, r: _Reader) -> float:
     return 0.03
 
 
-
-
-def answer_fields(spec, r: _Reader, where: str, default_tol: float, *,
-                  extra_keys: tuple[str, ...] = (), extra_units=()) -> dict:
-    """The fields every answer table shares (``[[answers]]``, ``[[force_answers]]``), checked:
-    unknown keys, units, plain numbers for tutorial/exact, mode, tolerance, slip (each key
-    the table gives, once; a scene file carries tens of answers)."""
-    r.table(spec, where, ANSWER_KEYS + extra_keys if extra_keys else ANSWER_KEYS,
-            required=("quantity", "unit"))
-    unit = r.string(spec["unit"], where + ".unit")
-    if unit not in UNITS and unit not in ("-", "1") and unit not in extra_units:
-        raise UnitError(f"unknown unit {show(unit)}", file=r.file, where=where + ".unit")
-    quantity = r.string(spec["quantity"], where + ".quantity")
-    out = dict(quantity=quantity, unit=unit, tutorial=None, exact=None, mode="abs", sense=None,
-               tolerance=default_tol, slip=False, ref=None, desc=quantity, note="")
-    for key, value in spec.items():
-        if key in _ANSWER_TEXT:
-            out[key] = r.string(value, f"{where}.{key}")
-        elif key in ("tutorial", "exact"):
-            out[key] = _answer_number(value, key, unit, r, where)
-        elif key == "mode":
-            if value not in ("abs", "signed"):
-                raise SceneError(f"mode must be 'abs' or 'signed', got {show(value)}",
-                                 file=r.file, where=where + ".mode")
-            out[key] = value
-        elif key == "tolerance":
-            out[key] = r.quantity(value, "fraction", where + ".tolerance")
-        elif key == "slip":
-            if not isinstance(value, bool):
-                raise SceneError("slip must be true or false", file=r.file,
-                                 where=where + ".slip")
-            out[key] = value
-    return out
-
-
-_ANSWER_TEXT = ("sense", "ref", "desc", "note")
-
-
-def _answer_number(value, key: str, unit: str, r: _Reader, where: str) -> float:
-    """A tutorial's or an exact answer: a plain finite number (in the answer's unit)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(f"{key} must be a plain number in {show(unit)}, got {show(value)}",
-                         file=r.file, where=f"{where}.{key}")
-    if not math.isfinite(value) or abs(value) > 1e15:
-        raise SceneError(f"{key} must be a finite number below 1e15 in magnitude, got "
-                         f"{show(value)}", file=r.file, where=f"{where}.{key}")
-    return float(value)
 
 
 _CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
@@ -754,22 +758,31 @@ def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None
     if len(args) not in counts:
         raise SceneError(f"{fn}() takes {' or '.join(map(str, counts))} labels, got "
                          f"{show(expr)}", file=file, where=where)
-    if len(_READ_EXPR) < 4096:          # a pure function of the text: remembered
-        _READ_EXPR[expr] = (fn, args)
+    if len(_READ_EXPR) >= 4096:         # a long run's many texts: start afresh
+        _READ_EXPR.clear()
+    _READ_EXPR[expr] = (fn, args)       # a pure function of the text: remembered
     return fn, args
 
 
 _READ_EXPR: dict[str, tuple[str, tuple[str, ...]]] = {}
 
 
-def _parse_answer(i: int, spec, r: _Reader, default_tol: float) -> Answer:
-    fields = answer_fields(spec, r, f"answers[{i}]", default_tol)
-    parse_quantity_expr(fields["quantity"], file=r.file, where=f"answers[{i}].quantity")
-    # the checked fields, set as they are (a frozen record's __init__ sets each field through
-    # object.__setattr__: a third of reading a scene of twenty answers)
-    answer = object.__new__(Answer)
-    answer.__dict__.update(fields)
-    return answer
+def _parse_answers(answers_raw: list, r: _Reader, default_tol: float) -> tuple[Answer, ...]:
+    """``[[answers]]``: each table's fields checked (:func:`answer_fields`) and its quantity's
+    grammar (:func:`parse_quantity_expr`)."""
+    answers = []
+    new = object.__new__
+    for i, spec in enumerate(answers_raw):
+        where = f"answers[{i}]"
+        fields = answer_fields(spec, r, where, default_tol)
+        if fields["quantity"] not in _READ_EXPR:      # else read, and well formed, before
+            parse_quantity_expr(fields["quantity"], file=r.file, where=where + ".quantity")
+        # the checked fields, set as they are (a frozen record's __init__ sets each field
+        # through object.__setattr__: a third of reading a scene of twenty answers)
+        answer = new(Answer)
+        answer.__dict__.update(fields)
+        answers.append(answer)
+    return tuple(answers)
 
 
 def unit_dimension(unit: str) -> str:

@@ -199,7 +199,29 @@ def parse_quantity(value, dimension: str, *, file: str | None = None,
     A bare number is accepted only for the dimensionless ``fraction``.  The magnitude must be
     zero or within :data:`LIMITS`.  ``reduce`` (orientations only) reduces an angle to one
     turn exactly, in its stated unit, before converting (``"370 deg"`` -> 10°).
+
+    The value of an accepted text is a pure function of (text, dimension, reduce): it is
+    remembered (up to :data:`_MEMO_SIZE` texts); a refused one is checked again every time,
+    so each refusal names its own file and key.
     """
+    if value.__class__ is str:
+        key = (value, dimension, reduce)
+        hit = _PARSED.get(key)
+        if hit is None:
+            hit = _parse_quantity(value, dimension, file, where, reduce)
+            if len(_PARSED) >= _MEMO_SIZE:      # a long run's many texts: start afresh
+                _PARSED.clear()
+            _PARSED[key] = hit
+        return hit
+    return _parse_quantity(value, dimension, file, where, reduce)
+
+
+#: texts remembered by :func:`parse_quantity` (a scene holds tens; a sweep of files, more)
+_MEMO_SIZE = 4096
+_PARSED: dict[tuple[str, str, bool], float] = {}
+
+
+def _parse_quantity(value, dimension: str, file, where, reduce) -> float:
     words = dimension.replace("_", " ")
     accepted = _accepted(dimension)
     if isinstance(value, bool) or not isinstance(value, (str, int, float)):
