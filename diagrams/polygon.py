@@ -24,12 +24,12 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 from polygons.evaluate import Solution
 from polygons.plan import Step
 
-from . import scale as scales
+from . import crowd, scale as scales
 from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER, component_of
@@ -215,6 +215,7 @@ class Layout:
     line_labels: dict                # step number -> (text, x, baseline, box)
     vector_labels: dict              # (step, frm, to) -> (text, x, baseline, box)
     text_scale: float = 1.0          # labels × this (a figure printed reduced: larger labels)
+    shifts: dict = field(default_factory=dict)   # (step, frm, to) -> (dx, dy) mm: drawn beside
 
     def size(self, base: float) -> float:
         return round(base * self.text_scale, 3)
@@ -250,7 +251,23 @@ def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
     w, h = extent[0] * k, extent[1] * k
     frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
     lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {}, text_scale)
+    vecs = [((st.step, st.frm, st.to), g[0], g[1]) for st, g in _geometry(lay)
+            if st.kind == "arrow"]
+    lay = replace(lay, shifts=crowd.shifts(vecs, frame.centre))
     return _place_labels(lay)
+
+
+def _shift(lay: Layout, st: Stroke) -> tuple[float, float]:
+    return lay.shifts.get((st.step, st.frm, st.to), (0.0, 0.0)) if st.kind == "arrow" \
+        else (0.0, 0.0)
+
+
+def _drawn(lay: Layout, st: Stroke, g):
+    """Where stroke ``st`` (paper geometry ``g``) is drawn: moved beside a collinear vector."""
+    d = _shift(lay, st)
+    if d == (0.0, 0.0) or g is None:
+        return g
+    return ((g[0][0] + d[0], g[0][1] + d[1]), (g[1][0] + d[0], g[1][1] + d[1]))
 
 
 def _geometry(lay: Layout):
@@ -274,7 +291,10 @@ def _place_labels(lay: Layout) -> Layout:
         if g is None:
             continue
         if st.kind == "arrow":
-            placer.hard(g[0], g[1], 1.0)
+            dg = _drawn(lay, st, g)
+            placer.hard(dg[0], dg[1], 1.0)
+            for a, b in crowd.leader_ticks(g[0], g[1], _shift(lay, st)):
+                placer.hard(a, b, 0.3)
         elif st.kind == "line":
             placer.soft(g[0], g[1])
         else:
@@ -338,7 +358,8 @@ def _place_labels(lay: Layout) -> Layout:
     vec_labels = {}
     # the component named at each vector's midpoint, longest first; a vector too short to
     # carry its name beside it is named in the side panel only
-    arrows = [(st, g) for st, g in geo if st.kind in ("arrow", "offset") and st.label]
+    arrows = [(st, _drawn(lay, st, g)) for st, g in geo
+              if st.kind in ("arrow", "offset") and st.label]
     arrows.sort(key=lambda sg: (-math.hypot(sg[1][1][0] - sg[1][0][0],
                                             sg[1][1][1] - sg[1][0][1]), sg[0].step))
     for st, g in arrows:
@@ -355,8 +376,8 @@ def _place_labels(lay: Layout) -> Layout:
         if placed is not None:
             x, base, _, box = placed
             vec_labels[(st.step, st.frm, st.to)] = (st.label, x, base, box)
-    return Layout(con, lay.scale, lay.origin, lay.frame, tuple(vlabels), llabels, vec_labels,
-                  lay.text_scale)
+    return replace(lay, vertex_labels=tuple(vlabels), line_labels=llabels,
+                   vector_labels=vec_labels)
 
 
 def _right_angle(con: Construction, st: Stroke, g, size: float = 1.6):
@@ -433,9 +454,13 @@ def stroke_items(lay: Layout, stage: int | None):
             look = LOOKS[st.component]
             head, shaft_end = arrow_head(g[0], g[1], open_head=look.open_head)
             if st.kind == "arrow":
+                shift = _shift(lay, st)
                 vec_g.append(Arrow(g[0], g[1], _style(st.component, new), head, shaft_end,
                                    vector(st.frm, st.to), st.frm, st.to, st.role,
-                                   st.title, faded, new))
+                                   st.title, faded, new, shift))
+                for a, b in crowd.leader_ticks(g[0], g[1], shift):   # beside a collinear one
+                    lines_g.append(Segment(a, b, "leader", faded,
+                                           cls=f"leader step-{st.step}"))
             else:     # the Coriolis offset: not a polygon side, an arrowed step back
                 lines_g.append(Segment(g[0], shaft_end, _style(st.component, False), faded,
                                        cls=f"offset step-{st.step}"))

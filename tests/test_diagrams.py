@@ -14,7 +14,7 @@ import pytest
 
 import diagrams
 from conftest import CASES, case_files
-from diagrams import measure, polygon, scale
+from diagrams import crowd, measure, polygon, scale
 from diagrams.labels import Box, box_hits_segment, text_box
 from diagrams.model import Arrow, Polyline, Segment, Text
 from diagrams.components import LOOKS
@@ -187,9 +187,9 @@ def _strokes(d):
     for it in d.items():
         if isinstance(it, Arrow):
             out.append((f"vector {it.name}" if it.role != "input" else "input arrow",
-                        it.tail, it.tip, 0.5 if it.role != "input" else 0.2))
+                        *it.drawn, 0.5 if it.role != "input" else 0.2))
         elif isinstance(it, Segment) and (it.style == "link" or "offset" in it.cls
-                                          or "right-angle" in it.cls):
+                                          or "right-angle" in it.cls or "leader" in it.cls):
             out.append((it.cls or it.style, it.a, it.b, 0.3))
         elif isinstance(it, Polyline) and it.style.startswith("input"):
             out += [("input arc", p, q, 0.2) for p, q in zip(it.points, it.points[1:])]
@@ -233,6 +233,68 @@ def _assert_no_overlap(ds):
             for what, p, q, clearance in strokes:
                 assert not box_hits_segment(b, p, q, clearance), \
                     f"{d.name}: label {t!r} touches {what}"
+
+
+# ---------------------------------------------------------------- collinear vectors
+def _collinear_overlaps(segments, tol=0.6, fraction=0.1):
+    """Pairs of (name, (a, b)) segments (mm) on one line (the shorter's ends within ``tol`` of
+    the longer's line) overlapping over more than ``fraction`` of the shorter's length."""
+    out = []
+    for i, (na, sa) in enumerate(segments):
+        for nb, sb in segments[i + 1:]:
+            (p0, p1), (q0, q1) = sorted((sa, sb), key=lambda s: -math.dist(*s))
+            L, short = math.dist(p0, p1), math.dist(q0, q1)
+            if short < 0.05:
+                continue
+            u = ((p1[0] - p0[0]) / L, (p1[1] - p0[1]) / L)
+            off = [abs((q[0] - p0[0]) * u[1] - (q[1] - p0[1]) * u[0]) for q in (q0, q1)]
+            along = sorted((q[0] - p0[0]) * u[0] + (q[1] - p0[1]) * u[1] for q in (q0, q1))
+            common = min(L, along[1]) - max(0.0, along[0])
+            if max(off) <= tol and common > fraction * short:
+                out.append((na, nb, round(common / short, 2)))
+    return out
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_no_two_vectors_overlap_on_one_line(path):
+    """Read back from the written SVG (the arrows' translations included), no two vectors of a
+    polygon (finished or any stage) lie on one line over more than a tenth of the shorter: the
+    shorter is drawn beside the other, joined to its vertices by two thin leader ticks."""
+    sol, ds = solved(path)
+    for d in ds:
+        if d.kind == "space":
+            continue
+        r = measure.read_svg(to_svg(d))
+        segs = [(f"{v.frm}{v.to}", v.drawn) for v in r.vectors]
+        assert not _collinear_overlaps(segs), (d.name, _collinear_overlaps(segs))
+        ticks = [it for it in d.items() if isinstance(it, Segment) and "leader" in it.cls]
+        moved = [a for a in d.items() if isinstance(a, Arrow) and a.shift != (0.0, 0.0)]
+        assert len(ticks) == 2 * len(moved), d.name
+        for a in moved:    # moved square to itself by a whole number of offsets
+            n = math.hypot(*a.shift)
+            along = (a.shift[0] * (a.tip[0] - a.tail[0]) + a.shift[1] * (a.tip[1] - a.tail[1]))
+            assert abs(along) < 0.01 * _len_mm(a) + 1e-3, (d.name, a.name)
+            assert n / crowd.OFFSET == pytest.approx(round(n / crowd.OFFSET), abs=1e-3)
+
+
+def _len_mm(a):
+    return math.dist(a.tail, a.tip)
+
+
+@pytest.mark.parametrize("case, pairs", [
+    ("s000-d225-2003-q3", {"velocity": ("oa1", "oc"), "acceleration": ("oa1", "oc")}),
+    ("s001-sae4-q3", {"velocity": ("ab", "ad")})])
+def test_the_collinear_check_bites_where_the_books_vectors_lie_on_one_line(case, pairs):
+    """Where the vectors lie (vertex to vertex, as before they were moved), D225's oa₁ lies on
+    oc and SAE4-Q3's ab on ad: the check finds them, so it can fail; drawn, they do not."""
+    sol, ds = solved(CASES / f"{case}.toml")
+    for kind, (x, y) in pairs.items():
+        r = measure.read_svg(to_svg(finals(ds)[kind]))
+        raw = _collinear_overlaps([(f"{v.frm}{v.to}", (v.tail, v.tip)) for v in r.vectors])
+        assert any({a, b} == {x, y} for a, b, _ in raw), (kind, raw)
+        assert not _collinear_overlaps([(f"{v.frm}{v.to}", v.drawn) for v in r.vectors])
+        moved = {f"{v.frm}{v.to}" for v in r.vectors if v.shift != (0.0, 0.0)}
+        assert x in moved and y not in moved     # the shorter one moves
 
 
 @pytest.mark.parametrize("path", FILES, ids=IDS)
@@ -406,10 +468,11 @@ def test_cairosvg_renders_the_fig7_diagrams_with_the_arrows_where_the_svg_says()
             if v.mm < 6:
                 continue
             dark = 0      # points on the shaft, away from the vertices and arrowheads
+            tail, tip = v.drawn          # where the ink is (moved beside a collinear one)
             for k in range(10):
                 t = 0.3 + 0.03 * k
-                x = v.tail[0] + t * (v.tip[0] - v.tail[0])
-                y = v.tail[1] + t * (v.tip[1] - v.tail[1])
+                x = tail[0] + t * (tip[0] - tail[0])
+                y = tail[1] + t * (tip[1] - tail[1])
                 px, py = x * 10, (d.height - y) * 10
                 window = [img.getpixel((round(px) + i, round(py) + j))
                           for i in (-1, 0, 1) for j in (-1, 0, 1)]
