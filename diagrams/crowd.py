@@ -162,3 +162,8 @@ def clip_to_circle(a: Pt, b: Pt, c: Pt, r: float) -> Seg | None:
     if t1 - t0 <= 1e-9:
         return None
     return ((a[0] + t0 * dx, a[1] + t0 * dy), (a[0] + t1 * dx, a[1] + t1 * dy))
+
+
+def mapped(p: Pt, c: Pt, k: float, C: Pt) -> Pt:
+    """Point ``p`` of the drawing as the inset shows it: about ``c`` enlarged ``k`` ×, at ``C``."""
+    return (round(C[0] + k * (p[0] - c[0]), 3), round(C[1] + k * (p[1] - c[1]), 3))

@@ -29,13 +29,13 @@ from dataclasses import dataclass, field, replace
 from polygons.evaluate import Solution
 from polygons.plan import Step
 
-from . import crowd, scale as scales
+from . import crowd, inset, scale as scales
 from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER, component_of
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
 from .notation import join_vectors, link_names, name_bare_omegas, slot_names, vector
-from .text import display, number, token
+from .text import ASCENT, DESCENT, display, number, token
 
 Pt = tuple[float, float]
 
@@ -216,6 +216,7 @@ class Layout:
     vector_labels: dict              # (step, frm, to) -> (text, x, baseline, box)
     text_scale: float = 1.0          # labels × this (a figure printed reduced: larger labels)
     shifts: dict = field(default_factory=dict)   # (step, frm, to) -> (dx, dy) mm: drawn beside
+    insets: tuple = ()               # diagrams.inset.Inset: tight clusters drawn enlarged
 
     def size(self, base: float) -> float:
         return round(base * self.text_scale, 3)
@@ -254,8 +255,37 @@ def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
     vecs = [((st.step, st.frm, st.to), g[0], g[1]) for st, g in _geometry(lay)
             if st.kind == "arrow"]
     lay = replace(lay, shifts=crowd.shifts(vecs, frame.centre))
-    return _place_labels(lay)
+    return _place_insets(_place_labels(lay))
 
+
+def _paper_segments(lay: Layout) -> list:
+    """Every stroke of the finished drawing where it is drawn (mm)."""
+    segs = []
+    for st, g in _geometry(lay):
+        if g is None:
+            continue
+        segs.append(_drawn(lay, st, g))
+        if st.kind == "arrow":
+            segs += crowd.leader_ticks(g[0], g[1], _shift(lay, st))
+        elif st.kind == "offset":
+            segs += _right_angle(lay.con, st, g)
+    return segs
+
+
+def _place_insets(lay: Layout) -> Layout:
+    """Tight clusters of vertices (nearer than a vertex label is tall) drawn again enlarged."""
+    con = lay.con
+    pts = {n: lay.P(v) for n, v in sorted(con.vertices.items())}
+    near = (ASCENT + DESCENT) * lay.size(LABEL_SIZE)
+    boxes = ([v[3] for v in lay.vertex_labels] + [v[3] for v in lay.line_labels.values()]
+             + [v[3] for v in lay.vector_labels.values()])
+    found = inset.plan(pts, _paper_segments(lay), boxes, lay.frame, _inset_size(lay), near,
+                       lambda n: con.pole_label if n == con.pole else n)
+    return replace(lay, insets=tuple(found))
+
+
+def _inset_size(lay: Layout) -> float:
+    return round(lay.size(LABEL_SIZE) * 0.85, 3)
 
 def _shift(lay: Layout, st: Stroke) -> tuple[float, float]:
     return lay.shifts.get((st.step, st.frm, st.to), (0.0, 0.0)) if st.kind == "arrow" \
@@ -434,6 +464,7 @@ def stroke_items(lay: Layout, stage: int | None):
     con = lay.con
     upto = _stage_number(con, stage)
     lines_g, vec_g, pts_g, lab_g = [], [], [], []
+    shown = []          # (a, b, style, head?, open head?, faded) for the insets
     for st, g in _geometry(lay):
         if upto is not None and st.step > upto:
             continue
@@ -444,12 +475,14 @@ def stroke_items(lay: Layout, stage: int | None):
                 continue
             lines_g.append(Segment(g[0], g[1], _style("construction", new), faded,
                                    cls=f"construction-line step-{st.step}"))
+            shown.append((g[0], g[1], _style("construction", new), False, False, faded))
             text, x, base, _ = lay.line_labels[st.step]
             lab_g.append(Text(x, base, text, lay.size(LINE_LABEL_SIZE), role="line", faded=faded,
                               cls=f"line-label step-{st.step}"))
         elif st.kind == "side":
             lines_g.append(Segment(g[0], g[1], _style("image", False), faded,
                                    cls=f"image-side step-{st.step}"))
+            shown.append((g[0], g[1], _style("image", False), False, False, faded))
         else:
             look = LOOKS[st.component]
             head, shaft_end = arrow_head(g[0], g[1], open_head=look.open_head)
@@ -461,9 +494,15 @@ def stroke_items(lay: Layout, stage: int | None):
                 for a, b in crowd.leader_ticks(g[0], g[1], shift):   # beside a collinear one
                     lines_g.append(Segment(a, b, "leader", faded,
                                            cls=f"leader step-{st.step}"))
+                    shown.append((a, b, "leader", False, False, faded))
+                dg = _drawn(lay, st, g)
+                shown.append((dg[0], dg[1], _style(st.component, new), True, look.open_head,
+                              faded))
             else:     # the Coriolis offset: not a polygon side, an arrowed step back
                 lines_g.append(Segment(g[0], shaft_end, _style(st.component, False), faded,
                                        cls=f"offset step-{st.step}"))
+                shown.append((g[0], g[1], _style(st.component, False), True, look.open_head,
+                               faded))
                 if head:
                     lines_g.append(Polyline(head, _style(st.component, False), closed=True,
                                             faded=faded, cls=f"offset-head step-{st.step}"))
@@ -491,6 +530,16 @@ def stroke_items(lay: Layout, stage: int | None):
                                 faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
         lab_g.append(Text(x, base, text, lay.size(LABEL_SIZE), role="vertex", faded=faded,
                           cls="vertex-label", weight="bold" if not faded else "normal"))
+    groups = []
+    for i, ins in enumerate(lay.insets):
+        visible = [n for n in con.vertices if upto is None or con.born.get(n, 0) <= upto]
+        if sum(n in visible for n in ins.names) < 2:
+            continue
+        pts = {n: lay.P(v) for n, v in con.vertices.items()}
+        groups.append(Group(f"{con.diagram}-inset-{i + 1}", "inset",
+                            f"Detail ×{ins.k}: the vertices {', '.join(ins.names)} enlarged",
+                            tuple(inset.items(ins, shown, pts, visible, con.pole)
+                                  + inset.labels(ins, visible, _inset_size(lay)))))
     return [Group(f"{con.diagram}-construction", "construction", "Construction lines",
                   tuple(lines_g)),
             Group(f"{con.diagram}-vectors", "vectors", "Vectors",
@@ -501,7 +550,7 @@ def stroke_items(lay: Layout, stage: int | None):
                               f" {display(lay.scale.unit)} at {lay.scale.statement}",
                               (a,)) for i, a in enumerate(vec_g))),
             Group(f"{con.diagram}-vertices", "vertices", "Polygon vertices", tuple(pts_g)),
-            Group(f"{con.diagram}-labels", "labels", "Labels", tuple(lab_g))]
+            Group(f"{con.diagram}-labels", "labels", "Labels", tuple(lab_g))] + groups
 
 
 def key(lay: Layout, stage: int | None = None) -> list[str]:
@@ -524,6 +573,8 @@ def _content_box(lay: Layout) -> Box:
         box = box.union(b)
     for _, _, _, b in lay.vector_labels.values():
         box = box.union(b)
+    for ins in lay.insets:
+        box = box.union(ins.box)
     return box.grown(1.0)
 
 
@@ -532,6 +583,10 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     the asked quantities (the scene's ``[[answers]]``) are marked 'asked'."""
     sc = lay.scale
     out = [(f"Scaled from the drawing ({sc.statement}):", "bold")]
+    pts = [lay.P(v) for v in lay.con.vertices.values()]
+    if all(math.dist(p, pts[0]) < 0.6 for p in pts):     # nothing to enlarge: say so
+        out.append((f"Every vertex lies at the pole {lay.con.pole_label}: every "
+                    f"{lay.con.diagram} of this diagram is zero.", "normal"))
     seen = set()
     asked = set()
     if sol is not None:

@@ -39,6 +39,7 @@ STYLES = {
     "construction-new": (0.45, "3 1.5"),
     "offset": (0.25, "0.4 0.8"),
     "leader": (0.15, None),
+    "inset": (0.2, None),
     "image-side": (0.25, "4 1 0.8 1"),
     "scalebar": (0.3, None),
     "link": (0.8, None),
@@ -120,6 +121,14 @@ class _Writer:
             kw = _stroke_attrs(it.style, it.faded)
             if it.cls:
                 kw["class_"] = it.cls
+            if "filled" in it.cls.split():     # an arrowhead drawn as a polygon (insets)
+                kw["fill"] = kw["stroke"]
+                kw.pop("stroke_dasharray", None)
+                if "stroke_opacity" in kw:
+                    kw["fill_opacity"] = kw["stroke_opacity"]
+            elif "open" in it.cls.split():
+                kw["fill"] = "#ffffff"
+                kw.pop("stroke_dasharray", None)
             pts = [self.p(q) for q in it.points]
             return dwg.polygon(pts, **kw) if it.closed else dwg.polyline(pts, **kw)
         if isinstance(it, Circle):

@@ -168,7 +168,7 @@ def test_arrows_join_their_vertices_in_the_sense_of_the_step_vectors(path):
 
 
 # ---------------------------------------------------------------- labels do not overlap
-LABEL_ROLES = ("vertex", "line", "component", "point", "input")
+LABEL_ROLES = ("vertex", "line", "component", "point", "input", "inset")
 
 
 def _label_boxes(d):
@@ -189,7 +189,8 @@ def _strokes(d):
             out.append((f"vector {it.name}" if it.role != "input" else "input arrow",
                         *it.drawn, 0.5 if it.role != "input" else 0.2))
         elif isinstance(it, Segment) and (it.style == "link" or "offset" in it.cls
-                                          or "right-angle" in it.cls or "leader" in it.cls):
+                                          or "right-angle" in it.cls or "leader" in it.cls
+                                          or "inset" in it.cls):
             out.append((it.cls or it.style, it.a, it.b, 0.3))
         elif isinstance(it, Polyline) and it.style.startswith("input"):
             out += [("input arc", p, q, 0.2) for p, q in zip(it.points, it.points[1:])]
@@ -217,7 +218,8 @@ def test_handout_stage_labels_set_larger_overlap_nothing_either(path):
     sol, _ = solved(path)
     ds = [d for d in diagrams.drawings(sol, stages=True, text_scale=STAGE_TEXT_SCALE)
           if d.kind != "space"]
-    sizes = {t.size for d in ds for t in d.items() if isinstance(t, Text) and t.role == "vertex"}
+    sizes = {t.size for d in ds for t in d.items() if isinstance(t, Text) and t.role == "vertex"
+             and "inset" not in t.cls}
     assert sizes == {round(polygon.LABEL_SIZE * STAGE_TEXT_SCALE, 3)}
     _assert_no_overlap(ds)
 
@@ -295,6 +297,76 @@ def test_the_collinear_check_bites_where_the_books_vectors_lie_on_one_line(case,
         assert not _collinear_overlaps([(f"{v.frm}{v.to}", v.drawn) for v in r.vectors])
         moved = {f"{v.frm}{v.to}" for v in r.vectors if v.shift != (0.0, 0.0)}
         assert x in moved and y not in moved     # the shorter one moves
+
+
+# ---------------------------------------------------------------- tight clusters: insets
+def _vertex_height(lay):
+    from diagrams.text import ASCENT, DESCENT
+    return (ASCENT + DESCENT) * lay.size(polygon.LABEL_SIZE)
+
+
+@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_vertices_closer_than_a_label_are_drawn_again_enlarged(path):
+    """Every two vertices of a finished polygon drawn nearer each other than a vertex label
+    is tall (but not at one place) lie in a ringed cluster drawn again k × in an inset,
+    where they stand at least a label's height apart, each at c + k (p − c)."""
+    from diagrams.crowd import clusters
+    sol, ds = solved(path)
+    for kind, d in finals(ds).items():
+        if kind == "space":
+            continue
+        lay = d.meta["layout"]
+        h = _vertex_height(lay)
+        pts = measure.read_svg(to_svg(d)).vertices      # as written, page coordinates
+        off = d.meta["content_offset"]
+        names = sorted(pts)
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                dist = math.dist(pts[a], pts[b])
+                if not 0.6 <= dist < h:
+                    continue
+                ins = next((x for x in lay.insets if a in x.names and b in x.names), None)
+                assert ins is not None, (d.name, a, b, dist)
+                assert ins.k * dist >= h, (d.name, a, b)
+        assert len(lay.insets) == len(clusters({n: lay.P(v) for n, v in
+                                                lay.con.vertices.items()}, h))
+        for ins in lay.insets:
+            dots = [c for c in d.items("inset") if isinstance(c, polygon.Circle)
+                    and c.cls == "inset-vertex"]
+            for n in ins.names:
+                p = pts[n]
+                want = (ins.C[0] + off[0] + ins.k * (p[0] - ins.c[0] - off[0]),
+                        ins.C[1] + off[1] + ins.k * (p[1] - ins.c[1] - off[1]))
+                assert any(math.dist(c.centre, want) < 0.01 for c in dots), (d.name, n)
+            caption = [t.text for t in d.items("inset") if isinstance(t, Text)
+                       and t.role == "inset"]
+            assert caption == [f"detail ×{ins.k}"]
+
+
+def test_the_watt_six_bars_cluster_e_f_f1_gets_an_inset_and_output_stays_deterministic(
+        tmp_path):
+    """Watt II's a-diagram puts e, f₁ and f within 2.6 mm (f₁f is 0.8 mm): ringed and drawn
+    ×8 beside the polygon; the SVGs are byte-identical run to run."""
+    sol, ds = solved(CASES / "new-watt-six-bar.toml")
+    lay = finals(ds)["acceleration"].meta["layout"]
+    assert [(i.names, i.k) for i in lay.insets] == [(("e", "f", "f1"), 8)]
+    assert not finals(ds)["velocity"].meta["layout"].insets
+    path = CASES / "new-watt-six-bar.toml"
+    a = diagrams.write(solve(load_scene(path)), tmp_path / "a")
+    b = diagrams.write(solve(load_scene(path)), tmp_path / "b")
+    for p, q in zip(a, b):
+        assert p.read_bytes() == q.read_bytes(), p.name
+    assert b"detail \xc3\x978" in (tmp_path / "a" / "acceleration.svg").read_bytes()
+
+
+def test_a_polygon_collapsed_to_the_pole_says_so():
+    """Starting from rest every velocity is zero: no cluster to enlarge, a note instead."""
+    sol, ds = solved(CASES / "rest-slider-crank.toml")
+    d = finals(ds)["velocity"]
+    assert not d.meta["layout"].insets
+    assert any("Every vertex lies at the pole" in t.text for t in d.items("legend"))
+    assert not any("Every vertex lies at the pole" in t.text
+                   for t in finals(ds)["acceleration"].items("legend"))
 
 
 @pytest.mark.parametrize("path", FILES, ids=IDS)
