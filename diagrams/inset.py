@@ -64,6 +64,26 @@ def _free(box: Box, segments, boxes) -> bool:
             and not any(box_hits_segment(box, a, b, 0.5) for a, b in segments))
 
 
+def rings(points: dict, near: float) -> list[tuple[tuple[str, ...], Pt, float]]:
+    """(names, centre, radius) of the ring around each cluster of vertices nearer each other
+    than ``near`` mm (known before any label is placed: labels keep off the rings)."""
+    out = []
+    for names in clusters(points, near):
+        pts = [points[n] for n in names]
+        cx = (min(p[0] for p in pts) + max(p[0] for p in pts)) / 2
+        cy = (min(p[1] for p in pts) + max(p[1] for p in pts)) / 2
+        c = (round(cx, 3), round(cy, 3))
+        out.append((tuple(names), c, round(max(math.dist(c, p) for p in pts) + RING_MARGIN, 3)))
+    return out
+
+
+def chords(c: Pt, r: float, n: int = 32) -> list[tuple[Pt, Pt]]:
+    """A circle as ``n`` chords (label placement and the tests treat it as segments)."""
+    pts = [(c[0] + r * math.cos(2 * math.pi * i / n), c[1] + r * math.sin(2 * math.pi * i / n))
+           for i in range(n)]
+    return [(pts[i], pts[(i + 1) % n]) for i in range(n)]
+
+
 def plan(points: dict, segments: list, boxes: list, frame: Box, label_size: float,
          near: float, names_of=lambda n: n) -> list[Inset]:
     """The insets of a drawing: ``points`` {vertex: paper point}; ``segments`` every drawn
@@ -72,12 +92,8 @@ def plan(points: dict, segments: list, boxes: list, frame: Box, label_size: floa
     label of a vertex (the pole's aliases)."""
     out: list[Inset] = []
     taken = list(boxes)
-    for names in clusters(points, near):
+    for names, c, r in rings(points, near):
         pts = [points[n] for n in names]
-        cx = (min(p[0] for p in pts) + max(p[0] for p in pts)) / 2
-        cy = (min(p[1] for p in pts) + max(p[1] for p in pts)) / 2
-        c = (round(cx, 3), round(cy, 3))
-        r = round(max(math.dist(c, p) for p in pts) + RING_MARGIN, 3)
         k = _factor(pts, near)
         while k > FACTORS[0] and k * r > MAX_RADIUS:
             k = FACTORS[FACTORS.index(k) - 1]
@@ -122,7 +138,7 @@ def _labels(ins: Inset, points: dict, segments, boxes, size: float, names_of) ->
     the drawing, and its caption."""
     C, R = ins.C, ins.R
     placer = Placer(frame=Box(C[0] - R, C[1] - R, C[0] + R, C[1] + R))
-    for a, b in segments:
+    for a, b in segments + chords(C, R):
         placer.hard(a, b, 0.5)
     for b in boxes:
         placer.block(b)

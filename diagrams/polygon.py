@@ -272,11 +272,20 @@ def _paper_segments(lay: Layout) -> list:
     return segs
 
 
+def _paper_points(lay: Layout) -> dict:
+    return {n: lay.P(v) for n, v in sorted(lay.con.vertices.items())}
+
+
+def _crowded(lay: Layout) -> float:
+    """Vertices nearer each other than this (mm: a vertex label's height) crowd."""
+    return (ASCENT + DESCENT) * lay.size(LABEL_SIZE)
+
+
 def _place_insets(lay: Layout) -> Layout:
     """Tight clusters of vertices (nearer than a vertex label is tall) drawn again enlarged."""
     con = lay.con
-    pts = {n: lay.P(v) for n, v in sorted(con.vertices.items())}
-    near = (ASCENT + DESCENT) * lay.size(LABEL_SIZE)
+    pts = _paper_points(lay)
+    near = _crowded(lay)
     boxes = ([v[3] for v in lay.vertex_labels] + [v[3] for v in lay.line_labels.values()]
              + [v[3] for v in lay.vector_labels.values()])
     found = inset.plan(pts, _paper_segments(lay), boxes, lay.frame, _inset_size(lay), near,
@@ -317,6 +326,9 @@ def _place_labels(lay: Layout) -> Layout:
     con = lay.con
     placer = Placer(frame=lay.frame)
     geo = _geometry(lay)
+    for _, c, r in inset.rings(_paper_points(lay), _crowded(lay)):   # labels keep off rings
+        for a, b in inset.chords(c, r):
+            placer.hard(a, b, 0.3)
     for st, g in geo:
         if g is None:
             continue

@@ -14,9 +14,9 @@ import pytest
 
 import diagrams
 from conftest import CASES, case_files
-from diagrams import crowd, measure, polygon, scale
+from diagrams import crowd, inset, measure, polygon, scale
 from diagrams.labels import Box, box_hits_segment, text_box
-from diagrams.model import Arrow, Polyline, Segment, Text
+from diagrams.model import Arrow, Circle, Polyline, Segment, Text
 from diagrams.components import LOOKS
 from diagrams.notation import JOIN
 from diagrams.svg import to_svg
@@ -192,6 +192,8 @@ def _strokes(d):
                                           or "right-angle" in it.cls or "leader" in it.cls
                                           or "inset" in it.cls):
             out.append((it.cls or it.style, it.a, it.b, 0.3))
+        elif isinstance(it, Circle) and it.cls in ("inset-ring", "inset-frame"):
+            out += [(it.cls, p, q, 0.2) for p, q in inset.chords(it.centre, it.r)]
         elif isinstance(it, Polyline) and it.style.startswith("input"):
             out += [("input arc", p, q, 0.2) for p, q in zip(it.points, it.points[1:])]
         elif isinstance(it, Polyline) and it.style == "ground":
@@ -331,7 +333,7 @@ def test_vertices_closer_than_a_label_are_drawn_again_enlarged(path):
         assert len(lay.insets) == len(clusters({n: lay.P(v) for n, v in
                                                 lay.con.vertices.items()}, h))
         for ins in lay.insets:
-            dots = [c for c in d.items("inset") if isinstance(c, polygon.Circle)
+            dots = [c for c in d.items("inset") if isinstance(c, Circle)
                     and c.cls == "inset-vertex"]
             for n in ins.names:
                 p = pts[n]
