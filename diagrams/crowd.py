@@ -90,7 +90,8 @@ def shifts(vectors, middle: Pt) -> dict:
         for level in range(1, 6):
             found = None
             for sgn in (outer, -outer):
-                d = (round(sgn * level * OFFSET * n[0], 3), round(sgn * level * OFFSET * n[1], 3))
+                d = (round(sgn * level * OFFSET * n[0], 3) + 0.0,
+                     round(sgn * level * OFFSET * n[1], 3) + 0.0)
                 cand = _moved(seg, d)
                 if all(collinear_overlap(cand, p) <= OVERLAP_FRACTION for p in placed):
                     found = (d, cand)

@@ -224,14 +224,16 @@ def items(ins: Inset, strokes, points: dict, visible, pole: str):
     return out
 
 
-def labels(ins: Inset, visible, size: float):
-    """The inset's vertex labels (of the visible vertices) and its caption."""
+def labels(ins: Inset, visible, size: float, old=()):
+    """The inset's vertex labels (of the visible vertices; lighter when all of a label's
+    vertices are ``old``, drawn in earlier stages) and its caption."""
     shown = set(visible)
     out = []
     for names, text, x, base, _ in ins.labels:
         if all(n in shown for n in names):
+            faded = all(n in old for n in names)
             out.append(Text(x, base, text, size, role="vertex", cls="inset-label",
-                            weight="bold"))
+                            weight="normal" if faded else "bold", faded=faded))
     text, x, base, _ = ins.caption
     out.append(Text(x, base, text, CAPTION_SIZE, "middle", role="inset", cls="inset-caption"))
     return out

@@ -96,8 +96,9 @@ def construction(sol: Solution, diagram: str) -> Construction:
                 label = "2ωv"
             strokes.append(Stroke(s.number, "arrow", role, s.at, s.point, s.start, s.end,
                                   label, f"{vector(s.start, s.end)}: {label}", comp))
-            if s.kind == "image":
-                q = sol.vertex_of(s.args[2])
+            q = sol.vertex_of(s.args[2]) if s.kind == "image" else None
+            # a flat image (D on AB produced) has no side of its own: it lies on the vectors
+            if q is not None and not _in_line(s.at, s.point, vx[q]):
                 strokes.append(Stroke(s.number, "side", "image-side", vx[q], s.point, q, s.end,
                                       component="image"))
             born.setdefault(s.end, s.number)
@@ -134,6 +135,13 @@ def construction(sol: Solution, diagram: str) -> Construction:
     drawable = tuple(s for s in steps if s.kind in DRAWABLE)
     return Construction(diagram, pole, " = ".join(aliases), drawable, tuple(measures),
                         tuple(strokes), vx, born)
+
+
+def _in_line(a: Pt, b: Pt, c: Pt) -> bool:
+    """True when a, b, c lie on one line (to 1e-9 of the sides' lengths)."""
+    u = (b[0] - a[0], b[1] - a[1])
+    v = (c[0] - a[0], c[1] - a[1])
+    return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-9 * (math.hypot(*u) * math.hypot(*v) or 1.0)
 
 
 def _image_quantity(sol: Solution, s: Step) -> str:
@@ -545,13 +553,14 @@ def stroke_items(lay: Layout, stage: int | None):
     groups = []
     for i, ins in enumerate(lay.insets):
         visible = [n for n in con.vertices if upto is None or con.born.get(n, 0) <= upto]
+        old = {n for n in visible if upto is not None and con.born.get(n, 0) < upto}
         if sum(n in visible for n in ins.names) < 2:
             continue
         pts = {n: lay.P(v) for n, v in con.vertices.items()}
         groups.append(Group(f"{con.diagram}-inset-{i + 1}", "inset",
                             f"Detail ×{ins.k}: the vertices {', '.join(ins.names)} enlarged",
                             tuple(inset.items(ins, shown, pts, visible, con.pole)
-                                  + inset.labels(ins, visible, _inset_size(lay)))))
+                                  + inset.labels(ins, visible, _inset_size(lay), old))))
     return [Group(f"{con.diagram}-construction", "construction", "Construction lines",
                   tuple(lines_g)),
             Group(f"{con.diagram}-vectors", "vectors", "Vectors",

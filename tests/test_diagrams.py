@@ -301,6 +301,19 @@ def test_the_collinear_check_bites_where_the_books_vectors_lie_on_one_line(case,
         assert x in moved and y not in moved     # the shorter one moves
 
 
+def test_a_flat_image_draws_no_side_over_its_vectors():
+    """SAE4-Q3's D lies on AB produced and D225's C on BA₁: their images are flat, so no image
+    side is drawn on top of the vectors; a proper image triangle keeps its side."""
+    for case in ("s001-sae4-q3", "s000-d225-2003-q3"):
+        sol, ds = solved(CASES / f"{case}.toml")
+        for kind in ("velocity", "acceleration"):
+            assert not [s for s in finals(ds)[kind].items() if isinstance(s, Segment)
+                        and "image-side" in s.cls], (case, kind)
+    sides = [s for path in FILES for d in finals(solved(path)[1]).values() for s in d.items()
+             if isinstance(s, Segment) and "image-side" in s.cls]
+    assert len(sides) >= 4
+
+
 # ---------------------------------------------------------------- tight clusters: insets
 def _vertex_height(lay):
     from diagrams.text import ASCENT, DESCENT
