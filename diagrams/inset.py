@@ -189,10 +189,11 @@ def _inside(ins: Inset, points: dict) -> list[str]:
     return [n for n in sorted(points) if math.dist(points[n], ins.c) <= ins.r]
 
 
-def items(ins: Inset, strokes, points: dict, visible, pole: str):
+def items(ins: Inset, strokes, points: dict, visible, pole: str, old=()):
     """The drawn items of one inset.  ``strokes``: (a, b, style, head, open_head, faded) of
     every stroke shown on the drawing (arrows with ``head`` True); ``visible``: the vertices
-    shown; ``pole``: the pole's name (drawn as an open circle)."""
+    shown; ``pole``: the pole's name (drawn as an open circle); ``old``: the vertices drawn
+    in earlier stages (lighter)."""
     C, R = ins.C, ins.R
     out = [Circle(ins.c, ins.r, "inset", cls="inset-ring"),
            Circle(C, R, "inset", cls="inset-frame")]
@@ -220,7 +221,7 @@ def items(ins: Inset, strokes, points: dict, visible, pole: str):
         at = ins.show(points[names[0]])
         for n in vis:
             out.append(Circle(at, 0.9 if n == pole else 0.55, "pole" if n == pole else "vertex",
-                              cls="inset-vertex"))
+                              n in old, cls="inset-vertex"))
     return out
 
 

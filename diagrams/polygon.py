@@ -559,7 +559,7 @@ def stroke_items(lay: Layout, stage: int | None):
         pts = {n: lay.P(v) for n, v in con.vertices.items()}
         groups.append(Group(f"{con.diagram}-inset-{i + 1}", "inset",
                             f"Detail ×{ins.k}: the vertices {', '.join(ins.names)} enlarged",
-                            tuple(inset.items(ins, shown, pts, visible, con.pole)
+                            tuple(inset.items(ins, shown, pts, visible, con.pole, old)
                                   + inset.labels(ins, visible, _inset_size(lay), old))))
     return [Group(f"{con.diagram}-construction", "construction", "Construction lines",
                   tuple(lines_g)),
