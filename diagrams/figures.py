@@ -93,7 +93,7 @@ def _extent(items) -> list[float]:
         elif isinstance(it, Circle):
             xs.append(it.centre[0] + it.r)
         elif isinstance(it, Arrow):
-            xs += [it.tail[0], it.tip[0]]
+            xs += [it.drawn[0][0], it.drawn[1][0]]
         elif isinstance(it, Text):
             xs.append(text_box(it.x, it.baseline, it.text, it.size, it.anchor).x1)
         elif hasattr(it, "items"):
@@ -139,7 +139,7 @@ def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3
                 xs.extend((it.centre[0] - it.r, it.centre[0] + it.r))
                 ys.extend((it.centre[1] - it.r, it.centre[1] + it.r))
             elif isinstance(it, Arrow):
-                pts = [it.tail, it.tip, *it.head]
+                pts = [*it.drawn, *((p[0] + it.shift[0], p[1] + it.shift[1]) for p in it.head)]
                 xs.extend(p[0] for p in pts)
                 ys.extend(p[1] for p in pts)
             elif isinstance(it, Text):

@@ -201,6 +201,10 @@ class Placer:
                 break
         if best is None and not required:
             return None
+        if best is None and distances[-1] < 30.0:   # nothing free near: look further out
+            far = tuple(round(distances[-1] * f, 3) for f in (1.4, 2.0, 3.0))
+            return self.place_any(text, size, anchors, prefer=prefer, distances=far,
+                                  extra_cost=extra_cost, required=required)
         if best is None:   # nothing free anywhere: park it beside the first anchor, far out
             at = anchors[0][0]
             best = (math.inf, Box(at[0] + 14, at[1] + 2, at[0] + 14 + w, at[1] + 2 + h))

@@ -33,8 +33,15 @@ class DrawnVector:
     frm: str
     to: str
     role: str
-    tail: Pt      # mm, y up
+    tail: Pt      # mm, y up: the vertices it joins
     tip: Pt
+    shift: Pt = (0.0, 0.0)    # drawn moved by this beside a collinear vector (its translation)
+
+    @property
+    def drawn(self) -> tuple[Pt, Pt]:
+        """(tail, tip) as the ink lies on the paper."""
+        return ((self.tail[0] + self.shift[0], self.tail[1] + self.shift[1]),
+                (self.tip[0] + self.shift[0], self.tip[1] + self.shift[1]))
 
     @property
     def mm(self) -> float:
@@ -61,6 +68,7 @@ class Reading:
         return math.hypot(b[0] - a[0], b[1] - a[1])
 
 
+_TRANSLATE = re.compile(r"translate\(([0-9.eE+-]+)[ ,]+([0-9.eE+-]+)\)")
 _STATEMENT = re.compile(r"1 cm = ([0-9.eE+-]+) (\S+)")
 
 
@@ -117,7 +125,12 @@ def read_svg(source) -> Reading:
             tip = p(x, y)
         else:
             tip = p(shaft.get("x2"), shaft.get("y2"))
-        r.vectors.append(DrawnVector(frm, to, cls[1], tail, tip))
+        shift = (0.0, 0.0)
+        for e in g.iter(f"{SVG_NS}g"):
+            m = _TRANSLATE.fullmatch(e.get("transform") or "")
+            if m:
+                shift = (float(m.group(1)), -float(m.group(2)))
+        r.vectors.append(DrawnVector(frm, to, cls[1], tail, tip, shift))
     return r
 
 

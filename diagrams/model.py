@@ -58,7 +58,9 @@ class Arrow:
     """A vector: shaft from ``tail`` to ``tip`` and an arrowhead whose first point is the tip.
 
     ``frm``/``to`` are the polygon vertices (lower case) it joins; ``role`` is 'known',
-    'resolved', 'result', 'coriolis', 'image', 'join' or 'input'.
+    'resolved', 'result', 'coriolis', 'image', 'join' or 'input'.  ``tail``/``tip`` are
+    always the vertices; a vector lying on a longer collinear one is drawn moved sideways by
+    ``shift`` (:mod:`diagrams.crowd`; the SVG writes it as a translation of the arrow).
     """
     tail: Pt
     tip: Pt
@@ -72,6 +74,12 @@ class Arrow:
     title: str = ""
     faded: bool = False
     new: bool = False
+    shift: Pt = (0.0, 0.0)         # drawn moved by this (mm) beside a collinear vector
+
+    @property
+    def drawn(self) -> tuple[Pt, Pt]:
+        """(tail, tip) where the shaft is drawn: the vector's ends moved by ``shift``."""
+        return _mv(self.tail, *self.shift), _mv(self.tip, *self.shift)
 
     def moved(self, dx, dy):
         return replace(self, tail=_mv(self.tail, dx, dy), tip=_mv(self.tip, dx, dy),

@@ -24,18 +24,18 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 
 from polygons.evaluate import Solution
 from polygons.plan import Step
 
-from . import scale as scales
+from . import crowd, inset, scale as scales
 from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER, component_of
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
 from .notation import join_vectors, link_names, name_bare_omegas, slot_names, vector
-from .text import display, number, token
+from .text import ASCENT, DESCENT, display, number, token
 
 Pt = tuple[float, float]
 
@@ -96,8 +96,9 @@ def construction(sol: Solution, diagram: str) -> Construction:
                 label = "2ωv"
             strokes.append(Stroke(s.number, "arrow", role, s.at, s.point, s.start, s.end,
                                   label, f"{vector(s.start, s.end)}: {label}", comp))
-            if s.kind == "image":
-                q = sol.vertex_of(s.args[2])
+            q = sol.vertex_of(s.args[2]) if s.kind == "image" else None
+            # a flat image (D on AB produced) has no side of its own: it lies on the vectors
+            if q is not None and not _in_line(s.at, s.point, vx[q]):
                 strokes.append(Stroke(s.number, "side", "image-side", vx[q], s.point, q, s.end,
                                       component="image"))
             born.setdefault(s.end, s.number)
@@ -134,6 +135,13 @@ def construction(sol: Solution, diagram: str) -> Construction:
     drawable = tuple(s for s in steps if s.kind in DRAWABLE)
     return Construction(diagram, pole, " = ".join(aliases), drawable, tuple(measures),
                         tuple(strokes), vx, born)
+
+
+def _in_line(a: Pt, b: Pt, c: Pt) -> bool:
+    """True when a, b, c lie on one line (to 1e-9 of the sides' lengths)."""
+    u = (b[0] - a[0], b[1] - a[1])
+    v = (c[0] - a[0], c[1] - a[1])
+    return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-9 * (math.hypot(*u) * math.hypot(*v) or 1.0)
 
 
 def _image_quantity(sol: Solution, s: Step) -> str:
@@ -215,6 +223,8 @@ class Layout:
     line_labels: dict                # step number -> (text, x, baseline, box)
     vector_labels: dict              # (step, frm, to) -> (text, x, baseline, box)
     text_scale: float = 1.0          # labels × this (a figure printed reduced: larger labels)
+    shifts: dict = field(default_factory=dict)   # (step, frm, to) -> (dx, dy) mm: drawn beside
+    insets: tuple = ()               # diagrams.inset.Inset: tight clusters drawn enlarged
 
     def size(self, base: float) -> float:
         return round(base * self.text_scale, 3)
@@ -250,7 +260,61 @@ def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
     w, h = extent[0] * k, extent[1] * k
     frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
     lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {}, text_scale)
-    return _place_labels(lay)
+    vecs = [((st.step, st.frm, st.to), g[0], g[1]) for st, g in _geometry(lay)
+            if st.kind == "arrow"]
+    lay = replace(lay, shifts=crowd.shifts(vecs, frame.centre))
+    return _place_insets(_place_labels(lay))
+
+
+def _paper_segments(lay: Layout) -> list:
+    """Every stroke of the finished drawing where it is drawn (mm)."""
+    segs = []
+    for st, g in _geometry(lay):
+        if g is None:
+            continue
+        segs.append(_drawn(lay, st, g))
+        if st.kind == "arrow":
+            segs += crowd.leader_ticks(g[0], g[1], _shift(lay, st))
+        elif st.kind == "offset":
+            segs += _right_angle(lay.con, st, g)
+    return segs
+
+
+def _paper_points(lay: Layout) -> dict:
+    return {n: lay.P(v) for n, v in sorted(lay.con.vertices.items())}
+
+
+def _crowded(lay: Layout) -> float:
+    """Vertices nearer each other than this (mm: a vertex label's height) crowd."""
+    return (ASCENT + DESCENT) * lay.size(LABEL_SIZE)
+
+
+def _place_insets(lay: Layout) -> Layout:
+    """Tight clusters of vertices (nearer than a vertex label is tall) drawn again enlarged."""
+    con = lay.con
+    pts = _paper_points(lay)
+    near = _crowded(lay)
+    boxes = ([v[3] for v in lay.vertex_labels] + [v[3] for v in lay.line_labels.values()]
+             + [v[3] for v in lay.vector_labels.values()])
+    found = inset.plan(pts, _paper_segments(lay), boxes, lay.frame, _inset_size(lay), near,
+                       lambda n: con.pole_label if n == con.pole else n)
+    return replace(lay, insets=tuple(found))
+
+
+def _inset_size(lay: Layout) -> float:
+    return round(lay.size(LABEL_SIZE) * 0.85, 3)
+
+def _shift(lay: Layout, st: Stroke) -> tuple[float, float]:
+    return lay.shifts.get((st.step, st.frm, st.to), (0.0, 0.0)) if st.kind == "arrow" \
+        else (0.0, 0.0)
+
+
+def _drawn(lay: Layout, st: Stroke, g):
+    """Where stroke ``st`` (paper geometry ``g``) is drawn: moved beside a collinear vector."""
+    d = _shift(lay, st)
+    if d == (0.0, 0.0) or g is None:
+        return g
+    return ((g[0][0] + d[0], g[0][1] + d[1]), (g[1][0] + d[0], g[1][1] + d[1]))
 
 
 def _geometry(lay: Layout):
@@ -270,11 +334,17 @@ def _place_labels(lay: Layout) -> Layout:
     con = lay.con
     placer = Placer(frame=lay.frame)
     geo = _geometry(lay)
+    for _, c, r in inset.rings(_paper_points(lay), _crowded(lay)):   # labels keep off rings
+        for a, b in inset.chords(c, r):
+            placer.hard(a, b, 0.3)
     for st, g in geo:
         if g is None:
             continue
         if st.kind == "arrow":
-            placer.hard(g[0], g[1], 1.0)
+            dg = _drawn(lay, st, g)
+            placer.hard(dg[0], dg[1], 1.0)
+            for a, b in crowd.leader_ticks(g[0], g[1], _shift(lay, st)):
+                placer.hard(a, b, 0.3)
         elif st.kind == "line":
             placer.soft(g[0], g[1])
         else:
@@ -338,7 +408,8 @@ def _place_labels(lay: Layout) -> Layout:
     vec_labels = {}
     # the component named at each vector's midpoint, longest first; a vector too short to
     # carry its name beside it is named in the side panel only
-    arrows = [(st, g) for st, g in geo if st.kind in ("arrow", "offset") and st.label]
+    arrows = [(st, _drawn(lay, st, g)) for st, g in geo
+              if st.kind in ("arrow", "offset") and st.label]
     arrows.sort(key=lambda sg: (-math.hypot(sg[1][1][0] - sg[1][0][0],
                                             sg[1][1][1] - sg[1][0][1]), sg[0].step))
     for st, g in arrows:
@@ -355,8 +426,8 @@ def _place_labels(lay: Layout) -> Layout:
         if placed is not None:
             x, base, _, box = placed
             vec_labels[(st.step, st.frm, st.to)] = (st.label, x, base, box)
-    return Layout(con, lay.scale, lay.origin, lay.frame, tuple(vlabels), llabels, vec_labels,
-                  lay.text_scale)
+    return replace(lay, vertex_labels=tuple(vlabels), line_labels=llabels,
+                   vector_labels=vec_labels)
 
 
 def _right_angle(con: Construction, st: Stroke, g, size: float = 1.6):
@@ -413,6 +484,7 @@ def stroke_items(lay: Layout, stage: int | None):
     con = lay.con
     upto = _stage_number(con, stage)
     lines_g, vec_g, pts_g, lab_g = [], [], [], []
+    shown = []          # (a, b, style, head?, open head?, faded) for the insets
     for st, g in _geometry(lay):
         if upto is not None and st.step > upto:
             continue
@@ -423,22 +495,34 @@ def stroke_items(lay: Layout, stage: int | None):
                 continue
             lines_g.append(Segment(g[0], g[1], _style("construction", new), faded,
                                    cls=f"construction-line step-{st.step}"))
+            shown.append((g[0], g[1], _style("construction", new), False, False, faded))
             text, x, base, _ = lay.line_labels[st.step]
             lab_g.append(Text(x, base, text, lay.size(LINE_LABEL_SIZE), role="line", faded=faded,
                               cls=f"line-label step-{st.step}"))
         elif st.kind == "side":
             lines_g.append(Segment(g[0], g[1], _style("image", False), faded,
                                    cls=f"image-side step-{st.step}"))
+            shown.append((g[0], g[1], _style("image", False), False, False, faded))
         else:
             look = LOOKS[st.component]
             head, shaft_end = arrow_head(g[0], g[1], open_head=look.open_head)
             if st.kind == "arrow":
+                shift = _shift(lay, st)
                 vec_g.append(Arrow(g[0], g[1], _style(st.component, new), head, shaft_end,
                                    vector(st.frm, st.to), st.frm, st.to, st.role,
-                                   st.title, faded, new))
+                                   st.title, faded, new, shift))
+                for a, b in crowd.leader_ticks(g[0], g[1], shift):   # beside a collinear one
+                    lines_g.append(Segment(a, b, "leader", faded,
+                                           cls=f"leader step-{st.step}"))
+                    shown.append((a, b, "leader", False, False, faded))
+                dg = _drawn(lay, st, g)
+                shown.append((dg[0], dg[1], _style(st.component, new), True, look.open_head,
+                              faded))
             else:     # the Coriolis offset: not a polygon side, an arrowed step back
                 lines_g.append(Segment(g[0], shaft_end, _style(st.component, False), faded,
                                        cls=f"offset step-{st.step}"))
+                shown.append((g[0], g[1], _style(st.component, False), True, look.open_head,
+                               faded))
                 if head:
                     lines_g.append(Polyline(head, _style(st.component, False), closed=True,
                                             faded=faded, cls=f"offset-head step-{st.step}"))
@@ -466,6 +550,17 @@ def stroke_items(lay: Layout, stage: int | None):
                                 faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
         lab_g.append(Text(x, base, text, lay.size(LABEL_SIZE), role="vertex", faded=faded,
                           cls="vertex-label", weight="bold" if not faded else "normal"))
+    groups = []
+    for i, ins in enumerate(lay.insets):
+        visible = [n for n in con.vertices if upto is None or con.born.get(n, 0) <= upto]
+        old = {n for n in visible if upto is not None and con.born.get(n, 0) < upto}
+        if sum(n in visible for n in ins.names) < 2:
+            continue
+        pts = {n: lay.P(v) for n, v in con.vertices.items()}
+        groups.append(Group(f"{con.diagram}-inset-{i + 1}", "inset",
+                            f"Detail ×{ins.k}: the vertices {', '.join(ins.names)} enlarged",
+                            tuple(inset.items(ins, shown, pts, visible, con.pole, old)
+                                  + inset.labels(ins, visible, _inset_size(lay), old))))
     return [Group(f"{con.diagram}-construction", "construction", "Construction lines",
                   tuple(lines_g)),
             Group(f"{con.diagram}-vectors", "vectors", "Vectors",
@@ -476,7 +571,7 @@ def stroke_items(lay: Layout, stage: int | None):
                               f" {display(lay.scale.unit)} at {lay.scale.statement}",
                               (a,)) for i, a in enumerate(vec_g))),
             Group(f"{con.diagram}-vertices", "vertices", "Polygon vertices", tuple(pts_g)),
-            Group(f"{con.diagram}-labels", "labels", "Labels", tuple(lab_g))]
+            Group(f"{con.diagram}-labels", "labels", "Labels", tuple(lab_g))] + groups
 
 
 def key(lay: Layout, stage: int | None = None) -> list[str]:
@@ -499,6 +594,8 @@ def _content_box(lay: Layout) -> Box:
         box = box.union(b)
     for _, _, _, b in lay.vector_labels.values():
         box = box.union(b)
+    for ins in lay.insets:
+        box = box.union(ins.box)
     return box.grown(1.0)
 
 
@@ -507,6 +604,10 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     the asked quantities (the scene's ``[[answers]]``) are marked 'asked'."""
     sc = lay.scale
     out = [(f"Scaled from the drawing ({sc.statement}):", "bold")]
+    pts = [lay.P(v) for v in lay.con.vertices.values()]
+    if all(math.dist(p, pts[0]) < 0.6 for p in pts):     # nothing to enlarge: say so
+        out.append((f"Every vertex lies at the pole {lay.con.pole_label}: every "
+                    f"{lay.con.diagram} of this diagram is zero.", "normal"))
     seen = set()
     asked = set()
     if sol is not None:

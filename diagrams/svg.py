@@ -38,6 +38,8 @@ STYLES = {
     "construction": (0.25, "3 1.5"),
     "construction-new": (0.45, "3 1.5"),
     "offset": (0.25, "0.4 0.8"),
+    "leader": (0.15, None),
+    "inset": (0.2, None),
     "image-side": (0.25, "4 1 0.8 1"),
     "scalebar": (0.3, None),
     "link": (0.8, None),
@@ -119,6 +121,14 @@ class _Writer:
             kw = _stroke_attrs(it.style, it.faded)
             if it.cls:
                 kw["class_"] = it.cls
+            if "filled" in it.cls.split():     # an arrowhead drawn as a polygon (insets)
+                kw["fill"] = kw["stroke"]
+                kw.pop("stroke_dasharray", None)
+                if "stroke_opacity" in kw:
+                    kw["fill_opacity"] = kw["stroke_opacity"]
+            elif "open" in it.cls.split():
+                kw["fill"] = "#ffffff"
+                kw.pop("stroke_dasharray", None)
             pts = [self.p(q) for q in it.points]
             return dwg.polygon(pts, **kw) if it.closed else dwg.polyline(pts, **kw)
         if isinstance(it, Circle):
@@ -129,7 +139,11 @@ class _Writer:
                 kw["id"] = it.ident
             return dwg.circle(self.p(it.centre), _n(it.r), **kw)
         if isinstance(it, Arrow):
-            g = dwg.g(class_="arrow")
+            if it.shift != (0.0, 0.0):    # drawn beside a collinear vector (diagrams.crowd)
+                g = dwg.g(class_="arrow shifted",
+                          transform=f"translate({_n(it.shift[0])},{_n(-it.shift[1])})")
+            else:
+                g = dwg.g(class_="arrow")
             kw = _stroke_attrs(it.style, it.faded)
             kw.pop("fill")
             g.add(dwg.line(self.p(it.tail), self.p(it.shaft_end), class_="shaft", **kw))
