@@ -63,7 +63,7 @@ def plan_stream(scene: Scene, steps: int, *, probe: int = PROBE) -> Stream:
                   code, params)
 
 
-def stream(st: Stream, *, chunk: int = CHUNK * 16):
+def stream(st: Stream, *, chunk: int = CHUNK * 4):
     """Yield ``(start, inputs, results)`` for consecutive chunks of ``st``'s positions: the
     results of :func:`evaluate` (toggle positions NaN), in memory one chunk at a time, so a
     sweep of any length runs in constant memory."""
