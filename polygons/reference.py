@@ -130,21 +130,29 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
     return "\n".join(lines)
 
 
-def _unit_pattern(dimension: str) -> str:
+#: a sense written after a rate ('300 rad/s CW'), as polygons.topology.sense_in reads it
+_SENSE_RE = (r"(?:\s+(?:[Cc][Cc][Ww]|[Cc][Ww]|[Cc]lockwise|[Aa]nti-?clockwise|"
+             r"[Cc]ounter-?clockwise))?")
+
+
+def _unit_pattern(dimension: str, sense: bool = False) -> str:
     import re
-    from .units import units_of
+    from .units import SPELLINGS, UNITS, units_of
     if dimension is None:          # the unit says which quantity it is (a spring's stiffness)
         return rf"^\s*{_NUM_RE}\s*\S.*$"
+    units = units_of(dimension) + [a for a, u in SPELLINGS.items() if UNITS[u][0] == dimension]
     alts = "|".join(re.escape(u).replace("\\ ", "\\s+") for u in
-                    sorted(units_of(dimension), key=len, reverse=True))
+                    sorted(units, key=len, reverse=True))
     opt = "?" if dimension == "fraction" else ""
-    return rf"^\s*{_NUM_RE}\s*(?:{alts}){opt}\s*$"
+    return rf"^\s*{_NUM_RE}\s*(?:{alts}){opt}{_SENSE_RE if sense else ''}\s*$"
 
 
 def _key_schema(k: Key) -> dict:
     d: dict = {"description": k.doc}
     if k.type == "quantity":
-        s = {"type": "string", "pattern": _unit_pattern(k.dimension)}
+        s = {"type": "string", "pattern": _unit_pattern(
+            k.dimension, sense=k.name in ("omega", "alpha")
+            and k.dimension in ("angular_velocity", "angular_acceleration"))}
         d |= ({"anyOf": [{"type": "number"}, s]} if k.dimension == "fraction" else s)
     elif k.type == "length_or_drawn":
         d["anyOf"] = [{"const": "drawn"}, {"type": "string",

@@ -550,22 +550,24 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise SceneError(f"the crank turns about its first label {pivot}, which must be a "
                              f"fixed pivot in [ground] ({', '.join(ground)}); write the crank "
                              f"with its pivot first", file=file, where="driver.crank")
-        omega = abs(r.quantity(drv["omega"], "angular_velocity", "driver.omega"))
-        if "sense" in drv:
-            omega *= r.sense(drv["sense"], "driver.sense")
+        omega, turn = topology.rate_with_sense(drv, "omega", "sense", "angular_velocity", r)
+        if turn is not None:
+            omega *= turn
         elif omega != 0.0:   # a crank at rest has no sense of rotation
-            raise SceneError("missing key 'sense' (required: crank, omega, sense; only a crank "
-                             "at rest, omega = 0, may leave it out)", file=file,
-                             where="driver")
+            raise SceneError("missing key 'sense' (required: crank, omega, sense — or the sense "
+                             "in omega, '300 rad/s CW'; only a crank at rest, omega = 0, may "
+                             "leave it out)", file=file, where="driver")
         alpha = 0.0
         if "alpha" in drv:
-            alpha = abs(r.quantity(drv["alpha"], "angular_acceleration", "driver.alpha"))
+            alpha, turn = topology.rate_with_sense(drv, "alpha", "alpha_sense",
+                                                  "angular_acceleration", r)
             if alpha != 0.0:
-                if "alpha_sense" not in drv:
+                if turn is None:
                     raise SceneError("alpha needs alpha_sense = 'CW' or 'CCW' (the sense of the "
-                                     "angular acceleration, not of the rotation)", file=file,
+                                     "angular acceleration, not of the rotation), or the sense "
+                                     "in alpha, '80 rad/s^2 CCW'", file=file,
                                      where="driver.alpha_sense")
-                alpha *= r.sense(drv["alpha_sense"], "driver.alpha_sense")
+                alpha *= turn
         if "angle" in drv:
             angle = topology.crank_angle(drv["angle"], r, pivot=pivot, tip=tip,
                                          sense=1 if omega >= 0 else -1, ground=ground,

@@ -90,12 +90,14 @@ TABLES: tuple[Table, ...] = (
                                  "'θ clockwise from +y' (measured clockwise); "
                                  "default: from the tip's [drawn] position",
             example='"60 deg"', sign="CCW from +x"),
-        Key("omega", "quantity", "crank speed (magnitude; its sense is `sense`); 0 for an "
-                                 "instant at rest", example='"300 rad/s"',
+        Key("omega", "quantity", "crank speed (magnitude; its sense is `sense`, or written "
+                                 "after it as books do: '300 rad/s CW', '120 rpm "
+                                 "clockwise'); 0 for an instant at rest", example='"300 rad/s"',
             dimension="angular_velocity"),
         Key("sense", "string", "sense of rotation: 'CW' or 'CCW' (also clockwise, "
                                "anticlockwise, counter-clockwise)", example='"CW"'),
-        Key("alpha", "quantity", "crank angular acceleration (magnitude)",
+        Key("alpha", "quantity", "crank angular acceleration (magnitude; its sense is "
+                                 "`alpha_sense`, or written after it: '80 rad/s^2 CCW')",
             example='"80000 rad/s^2"', dimension="angular_acceleration", default="0 rad/s^2"),
         Key("alpha_sense", "string", "sense of alpha, 'CW' or 'CCW' (needed when alpha ≠ 0; "
                                      "independent of `sense`)", example='"CCW"'),

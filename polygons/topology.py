@@ -87,6 +87,32 @@ _TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "ccw": 1.0, "anticlockwise": 1.0,
                "anti-clockwise": 1.0, "counterclockwise": 1.0, "counter-clockwise": 1.0}
 
 
+def sense_in(text) -> tuple[object, int | None]:
+    """'300 rad/s CW' → ('300 rad/s', −1); '120 rpm anticlockwise' → ('120 rpm', +1);
+    '300 rad/s' → ('300 rad/s', None): a rate with its sense written after it, as books do."""
+    if not isinstance(text, str):
+        return text, None
+    head, _, last = text.strip().rpartition(" ")
+    turn = _TURN_WORDS.get(last.lower())
+    return (head.strip(), int(turn)) if head and turn is not None else (text, None)
+
+
+def rate_with_sense(drv, key: str, sense_key: str, dimension: str, r) -> tuple[float, int | None]:
+    """|ω| (or |α|) and its sense (+1 CCW, −1 CW, None when not stated): from ``sense_key`` or
+    written after the value as books do ('300 rad/s CW', '120 rpm clockwise'); both may be
+    given only if they agree."""
+    text, written = sense_in(drv[key])
+    value = abs(r.quantity(text, dimension, f"driver.{key}"))
+    if sense_key not in drv:
+        return value, written
+    turn = r.sense(drv[sense_key], f"driver.{sense_key}")
+    if written is not None and written != turn:
+        raise SceneError(f"{key} = {drv[key]!r} says {'CW' if written < 0 else 'CCW'} but "
+                         f"{sense_key} = {drv[sense_key]!r}: give the sense once",
+                         file=r.file, where=f"driver.{sense_key}")
+    return value, turn
+
+
 def _turn_of(text: str) -> tuple[str, float]:
     """'30 deg CW' → ('30 deg', −1); '30 deg' → ('30 deg', +1): the sense an angle is
     measured in, CCW unless the text ends in a clockwise word."""

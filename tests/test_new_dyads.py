@@ -550,6 +550,23 @@ def test_angles_as_a_book_words_them(words, degrees):
     assert math.remainder(got - degrees, 360.0) == pytest.approx(0.0, abs=1e-12)
 
 
+def test_rates_with_their_sense_written_after_them():
+    """'10 rad/s CW' as books write it is omega = 10 rad/s with sense = CW; alpha likewise;
+    both ways at once must agree."""
+    def crank(**kw):
+        return parse_scene({"ground": {"O": ["0 m", "0 m"]}, "links": {"OA": "0.05 m",
+                            "AB": "0.2 m"}, "driver": {"crank": "OA", "angle": "30 deg", **kw},
+                            "sliders": {"B": {"through": ["0 m", "0 m"], "direction": "0 deg"}},
+                            "assembly": {"B": "B right of O"}}).driver
+    d = crank(omega="120 rpm clockwise", alpha="20 rad/s^2 CCW")
+    assert d.omega == pytest.approx(-4 * math.pi, rel=1e-15) and d.alpha == 20.0
+    assert crank(omega="10 rad/s CW", sense="cw").omega == -10.0
+    with pytest.raises(SceneError, match="give the sense once"):
+        crank(omega="10 rad/s CW", sense="CCW")
+    with pytest.raises(SceneError, match="missing key 'sense'"):
+        crank(omega="10 rad/s")
+
+
 @pytest.mark.parametrize("angle, side, guide, words", [
     ("30 deg from idc", "B above O", None, "needs the side of the slider"),
     ("30 deg CW from idc", "B right of O", None, "crank's sense of rotation"),

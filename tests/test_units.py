@@ -273,6 +273,18 @@ def test_the_json_schema_rejects_typos_and_missing_units():
             _validate(base | bad, sch)
 
 
+def test_the_json_schema_accepts_what_the_loader_accepts_of_book_wording():
+    """Spellings books print and a sense written after a rate: the loader and the schema
+    agree (a scene the loader reads validates)."""
+    sch = json.loads((ROOT / schema.JSON_SCHEMA).read_text(encoding="utf-8"))
+    base = tomllib.loads((CASES / "s001-we4.toml").read_text(encoding="utf-8"))
+    drv = {k: v for k, v in base["driver"].items() if k != "sense"}
+    data = base | {"driver": drv | {"omega": "2865 r.p.m. clockwise"},
+                   "links": base["links"] | {"AB": "5 cm"}}
+    _validate(data, sch)
+    assert parse_scene(data, file="x").driver.omega == pytest.approx(-2865 * 2 * math.pi / 60)
+
+
 def test_the_json_schema_ships_with_the_package():
     import importlib.resources
     text = importlib.resources.files("polygons").joinpath("scene.schema.json").read_text(
