@@ -463,14 +463,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise UnknownLabelError(f"link {show(on)} is not defined: "
                                     f"{suggest(on, list(links) + [s.lever for s in slots.values()])}",
                                     file=file, where=where + ".on")
-        if ("along" in spec) == ("fraction" in spec):
-            raise SceneError("give exactly one of 'along' (a length from the link's first "
-                             "label) or 'fraction' (of the link length, e.g. 0.5 for the "
-                             "mid-point)", file=file, where=where)
-        along = r.quantity(spec["along"], "length", where + ".along") if "along" in spec else None
-        fraction = (r.quantity(spec["fraction"], "fraction", where + ".fraction")
-                    if "fraction" in spec else None)
-        left = r.quantity(spec.get("left", "0 m"), "length", where + ".left")
+        along, fraction, left = topology.point_on_link(spec, r, where)
         points[label] = BodyPoint(label, on, along, fraction, left)
 
     known = set(ground)

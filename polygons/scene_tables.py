@@ -169,6 +169,13 @@ TABLES: tuple[Table, ...] = (
                                 "first label → second label", example='"10 mm"',
             dimension="length", default="0 m",
             sign="positive to the left of first → second label"),
+        Key("distance", "quantity", "the point by polar coordinates from the link's first label, "
+                                    "as books state it ('BE = 40 mm and angle CBE = 30°'): "
+                                    "the distance; with angle, instead of along/fraction/left",
+            example='"40 mm"', dimension="length"),
+        Key("angle", "string", "with distance: the angle from the link (first → second label) "
+                               "to the point, CCW (or '30 deg CW')", example='"30 deg"',
+            sign="CCW from first → second label"),
     ), many=True),
     Table("assembly", "Which of the two closures of a dyad, in words: C = \"C above AD\", "
                       "\"below AD\", \"left of B\", \"right of B\" (the leading label is "

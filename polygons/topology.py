@@ -113,6 +113,33 @@ def rate_with_sense(drv, key: str, sense_key: str, dimension: str, r) -> tuple[f
     return value, turn
 
 
+def point_on_link(spec, r, where) -> tuple[float | None, float | None, float]:
+    """(along, fraction, left) of ``[points.X]``: given as they are, or in polar form from
+    the link's first label, ``distance`` and ``angle`` (CCW from first → second label, or
+    '30 deg CW'): along = d cos φ, left = d sin φ."""
+    polar = ("distance" in spec) or ("angle" in spec)
+    if polar:
+        if not ("distance" in spec and "angle" in spec) or any(
+                k in spec for k in ("along", "fraction", "left")):
+            raise SceneError("give the point either by distance and angle (polar, from the "
+                             "link's first label) or by along/fraction and left",
+                             file=r.file, where=where)
+        d = r.quantity(spec["distance"], "length", where + ".distance")
+        text, turn = _turn_of(spec["angle"]) if isinstance(spec["angle"], str) else (
+            spec["angle"], 1.0)
+        phi = turn * r.quantity(text, "angle", where + ".angle")
+        return d * math.cos(phi), None, d * math.sin(phi)
+    if ("along" in spec) == ("fraction" in spec):
+        raise SceneError("give exactly one of 'along' (a length from the link's first "
+                         "label) or 'fraction' (of the link length, e.g. 0.5 for the "
+                         "mid-point), or distance and angle", file=r.file, where=where)
+    along = r.quantity(spec["along"], "length", where + ".along") if "along" in spec else None
+    fraction = (r.quantity(spec["fraction"], "fraction", where + ".fraction")
+                if "fraction" in spec else None)
+    left = r.quantity(spec.get("left", "0 m"), "length", where + ".left")
+    return along, fraction, left
+
+
 def _turn_of(text: str) -> tuple[str, float]:
     """'30 deg CW' → ('30 deg', −1); '30 deg' → ('30 deg', +1): the sense an angle is
     measured in, CCW unless the text ends in a clockwise word."""

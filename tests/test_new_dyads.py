@@ -550,6 +550,31 @@ def test_angles_as_a_book_words_them(words, degrees):
     assert math.remainder(got - degrees, 360.0) == pytest.approx(0.0, abs=1e-12)
 
 
+def test_a_coupler_point_in_polar_form_is_the_triangle_of_two_distances():
+    """'BE = 70 mm and angle CBE = θ' ([points.E] distance/angle, an image point) against the
+    same point stated by BE = 70 mm and CE = 80 mm (two links: an RRR dyad): the same point,
+    velocity and acceleration, θ from the cosine rule."""
+    base = {"ground": {"A": ["0 mm", "0 mm"], "D": ["100 mm", "0 mm"]},
+            "links": {"AB": "40 mm", "BC": "120 mm", "CD": "80 mm"},
+            "driver": {"crank": "AB", "angle": "60 deg", "omega": "10 rad/s CCW",
+                       "alpha": "30 rad/s^2 CW"},
+            "assembly": {"C": "C above AD"}}
+    theta = math.degrees(math.acos((70**2 + 120**2 - 80**2) / (2 * 70 * 120)))
+    polar = solve(parse_scene(base | {"points": {"E": {"on": "BC", "distance": "70 mm",
+                                                       "angle": f"{theta!r} deg"}}}))
+    links = dict(base["links"], BE="70 mm", CE="80 mm")
+    tri = solve(parse_scene(base | {"links": links,
+                                    "assembly": base["assembly"] | {"E": "E above BC"}}))
+    for get in ("position", "velocity", "acceleration"):
+        a, b = getattr(polar.points["E"], get), getattr(tri.points["E"], get)
+        assert math.dist(a, b) <= 1e-12 * max(1.0, math.hypot(*b)), get
+    cw = parse_scene(base | {"points": {"E": {"on": "BC", "distance": "70 mm",
+                                              "angle": f"{theta!r} deg CW"}}}).points["E"]
+    assert cw.left == pytest.approx(-polar.scene.points["E"].left, rel=1e-15)
+    with pytest.raises(SceneError, match="distance and angle"):
+        parse_scene(base | {"points": {"E": {"on": "BC", "distance": "70 mm", "left": "1 mm"}}})
+
+
 def test_rates_with_their_sense_written_after_them():
     """'10 rad/s CW' as books write it is omega = 10 rad/s with sense = CW; alpha likewise;
     both ways at once must agree."""
