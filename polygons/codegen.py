@@ -68,9 +68,9 @@ class Source:
     def __init__(self, scene: Scene, sigma: dict, arrays: bool = False, meet=None,
                  instruments=None):
         self.scene = scene
-        self.arrays = arrays
+        self.arrays = arrays           # the same code over (N,) arrays: no checks, margins kept
         self.meet = meet               # the intersection of two lines, or None: inline 2×2
-        self.instruments = instruments  # the drawing board's noisy strokes, or None: exact           # the same code over (N,) arrays: no checks, margins kept
+        self.instruments = instruments  # the drawing board's noisy strokes, or None: exact
         self.margins: list[str] = []
         self.margin_of: list = []      # the dyad of each margin
         self.crossings: list = []      # (u × v, u · v, step) of every intersection

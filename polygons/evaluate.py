@@ -163,7 +163,7 @@ class Solution:
 
 
 def _rate(r, va, vb) -> float:
-    """ω (or α) = (r × (v_B − v_A)) / r²: the rate of a link from its ends' polygon vertices."""
+    """ω (or α) = (r × (v_B − v_A)) / r²: a link's rate from its ends' polygon vertices."""
     rel = (vb[0] - va[0], vb[1] - va[1])
     return (r[0] * rel[1] - r[1] * rel[0]) / (r[0] * r[0] + r[1] * r[1])
 

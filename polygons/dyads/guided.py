@@ -5,10 +5,10 @@ piston's crank-pin is on a driven crank) or placed by its own links (a guide car
 moving link).
 
 Position: X on the circle |PX| = L and on the slot line B + d n + t e (e along the lever
-B → Q, n = perp(e), d the slot's offset): two closures.  The slot is open-ended: the pin of an
-oscillating cylinder is at the end of its piston rod, beyond the cylinder's end, so a lever's
-length does not bound it; a stated ``[slots.X] length`` is refused, not yet modelled here.  The lever's point X1 under the pin is
-at the same place.  Velocity: v_X = v_X1 + ṡ e = v_P + ω × PX: from p, x1 (the lever's image)
+B → Q, n = perp(e), d the slot's offset): two closures.  The slot is open-ended: the pin of
+an oscillating cylinder is at the end of its piston rod, beyond the cylinder's end, so a
+lever's length does not bound it; a stated ``[slots.X] length`` is refused, not yet modelled
+here.  The lever's point X1 under the pin is at the same place.  Velocity: v_X = v_X1 + ṡ e = v_P + ω × PX: from p, x1 (the lever's image)
 is known; the line ∥ the slot through x1 meets the line ⟂ PX through p at x.  Acceleration:
 a_X = a_X1 + s̈ e + 2 ω_lever × ṡ e = a_P − ω² PX + α × PX: x1, then the Coriolis 2ωṡ from it
 and a line ∥ the slot through its end; the centripetal ω² PX from p and a line ⟂ PX through
