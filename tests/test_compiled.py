@@ -378,3 +378,23 @@ def test_what_the_generator_lacks_is_refused_by_name(monkeypatch):
         mp.delattr(RPR, "source")
         with pytest.raises(compiled.NotCompiled, match="RPR dyad at A1, Q"):
             codegen.check_compilable(scene, plan, steps)
+
+
+def test_the_staged_solver_finds_every_intersection_with_shapely(monkeypatch):
+    """The staged solve runs the generated program with shapely's intersection
+    (geometry.meet) at every INTERSECT step, and its points are what meet returned."""
+    from polygons import geometry
+    seen = []
+
+    def spy(*args):
+        hit = geometry_meet(*args)
+        seen.append(hit)
+        return hit
+
+    geometry_meet = geometry.meet
+    monkeypatch.setattr(geometry, "meet", spy)
+    scene = load_scene(str(ROOT / "cases" / "s003-fig7.toml"))
+    sol = solve(scene)
+    crossings = [s for s in sol.steps if s.op == "intersect"]
+    assert len(seen) == len(crossings) == 2
+    assert [s.point for s in crossings] == seen
