@@ -530,8 +530,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                          "(slider = \"C\"): give exactly one", file=file, where="driver")
     driver: Crank | SliderDrive
     if "crank" in drv:
-        r.table(drv, "driver", ("crank", "angle", "omega", "sense", "alpha", "alpha_sense"),
-                required=("crank", "omega"))
+        r.table(drv, "driver", ("crank", "angle", "omega", "speed", "sense", "alpha",
+                                "alpha_sense"), required=("crank",))
         name = r.string(drv["crank"], "driver.crank")
         pivot, tip = split_link_name(name, file=file, where="driver.crank")
         if name not in links and f"{tip}{pivot}" in links:
@@ -543,7 +543,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise SceneError(f"the crank turns about its first label {pivot}, which must be a "
                              f"fixed pivot in [ground] ({', '.join(ground)}); write the crank "
                              f"with its pivot first", file=file, where="driver.crank")
-        omega, turn = topology.rate_with_sense(drv, "omega", "sense", "angular_velocity", r)
+        omega, turn = topology.crank_rate(drv, r, links[name].length)
         if turn is not None:
             omega *= turn
         elif omega != 0.0:   # a crank at rest has no sense of rotation

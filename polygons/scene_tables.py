@@ -94,6 +94,10 @@ TABLES: tuple[Table, ...] = (
                                  "after it as books do: '300 rad/s CW', '120 rpm "
                                  "clockwise'); 0 for an instant at rest", example='"300 rad/s"',
             dimension="angular_velocity"),
+        Key("speed", "quantity", "instead of omega, the crank pin's speed as books give it "
+                                 "('the crank pin moves at 5 m/s'): ω = speed / crank length; "
+                                 "its sense as omega's", example='"5 m/s"',
+            dimension="velocity"),
         Key("sense", "string", "sense of rotation: 'CW' or 'CCW' (also clockwise, "
                                "anticlockwise, counter-clockwise)", example='"CW"'),
         Key("alpha", "quantity", "crank angular acceleration (magnitude; its sense is "

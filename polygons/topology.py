@@ -97,6 +97,21 @@ def sense_in(text) -> tuple[object, int | None]:
     return (head.strip(), int(turn)) if head and turn is not None else (text, None)
 
 
+def crank_rate(drv, r, length) -> tuple[float, int | None]:
+    """|ω| of a crank and its sense: ``omega``, or the crank pin's ``speed`` as books give it
+    (v = ω r, so ω = v / |OA|)."""
+    if ("omega" in drv) == ("speed" in drv):
+        raise SceneError("give the crank's omega ('300 rad/s') or its pin's speed ('5 m/s'): "
+                         "exactly one", file=r.file, where="driver")
+    if "omega" in drv:
+        return rate_with_sense(drv, "omega", "sense", "angular_velocity", r)
+    v, turn = rate_with_sense(drv, "speed", "sense", "velocity", r)
+    if not length:
+        raise SceneError("speed needs the crank's length in [links] (ω = speed / length)",
+                         file=r.file, where="driver.speed")
+    return v / length, turn
+
+
 def rate_with_sense(drv, key: str, sense_key: str, dimension: str, r) -> tuple[float, int | None]:
     """|ω| (or |α|) and its sense (+1 CCW, −1 CW, None when not stated): from ``sense_key`` or
     written after the value as books do ('300 rad/s CW', '120 rpm clockwise'); both may be

@@ -590,6 +590,13 @@ def test_rates_with_their_sense_written_after_them():
         crank(omega="10 rad/s CW", sense="CCW")
     with pytest.raises(SceneError, match="missing key 'sense'"):
         crank(omega="10 rad/s")
+    # the crank pin's speed as books give it: v = ω r, OA = 50 mm
+    assert crank(speed="5 m/s CW").omega == pytest.approx(-100.0, rel=1e-15)
+    assert crank(speed="300 mm/s", sense="CCW").omega == pytest.approx(6.0, rel=1e-15)
+    with pytest.raises(SceneError, match="exactly one"):
+        crank(speed="5 m/s CW", omega="100 rad/s")
+    with pytest.raises(SceneError, match="exactly one"):
+        crank(sense="CW")
 
 
 @pytest.mark.parametrize("angle, side, guide, words", [
