@@ -150,6 +150,18 @@ def dumps(sol: Solution) -> str:
     return json_text(to_json(sol))
 
 
+def _noise(values, vector: bool = False) -> float:
+    """The rounding noise of one column: 1e-12 of its largest magnitude.  A value below it is
+    a zero of the construction (a link that translates, a point at rest) printed as 0 with no
+    sense, as a textbook prints it; the JSON keeps the computed numbers."""
+    mags = [(_mag(v) if vector else abs(v)) for v in values if v is not None]
+    return 1e-12 * max(mags, default=0.0)
+
+
+def _denoised(x: float | None, noise: float) -> float | None:
+    return x if x is None or abs(x) > noise else 0.0
+
+
 def _g(x, digits=5) -> str:
     if x is None:
         return "-"
@@ -178,21 +190,28 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
     lines.append("")
     lines.append(f"{'point':<6} {'x ' + lu:>10} {'y ' + lu:>10}   {'|v| ' + vu:>11} "
                  f"{'dir°':>7}   {'|a| ' + au:>11} {'dir°':>7}")
+    vnoise = _noise([pr.velocity for pr in sol.points.values()], vector=True)
+    anoise = _noise([pr.acceleration for pr in sol.points.values()], vector=True)
     for label, pr in sol.points.items():
         row = f"{label:<6} {lf * pr.position[0]:>10.4f} {lf * pr.position[1]:>10.4f}"
-        for vec, f in ((pr.velocity, vf), (pr.acceleration, af)):
+        for vec, f, noise in ((pr.velocity, vf, vnoise), (pr.acceleration, af, anoise)):
             if vec is None:
                 row += f"   {'':>11} {'':>7}"
             else:
-                m = _mag(vec) * f
+                m = _mag(vec) * f if _mag(vec) > noise else 0.0
                 row += f"   {_g(m, 6):>11} {(f'{_deg(vec):.2f}' if m else '-'):>7}"
         lines.append(row)
     lines.append("")
     lines.append(f"{'link':<8} {'length ' + lu:>10}   {'ω rad/s':>12}      {'α rad/s²':>12}")
+    wnoise = _noise([lr.omega for lr in sol.links.values()])
+    # α's scale is ω² as much as α (every link's α is 0 when the crank turns steadily)
+    alnoise = max(_noise([lr.alpha for lr in sol.links.values()]), 1e12 * wnoise * wnoise)
     for name, lr in sol.links.items():
-        lines.append(f"{name:<8} {lf * lr.length:>10.4f}   {_g(abs(lr.omega) if lr.omega is not None else None, 6):>12} "
-                     f"{sense(lr.omega):<4} {_g(abs(lr.alpha) if lr.alpha is not None else None, 6):>12} "
-                     f"{sense(lr.alpha)}")
+        w = _denoised(lr.omega, wnoise)
+        al = _denoised(lr.alpha, alnoise)
+        lines.append(f"{name:<8} {lf * lr.length:>10.4f}   "
+                     f"{_g(abs(w) if w is not None else None, 6):>12} {sense(w):<4} "
+                     f"{_g(abs(al) if al is not None else None, 6):>12} {sense(al)}")
     if sol.slides:
         lines.append("")
         for label, sr in sol.slides.items():

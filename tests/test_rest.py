@@ -75,3 +75,20 @@ lever = "O4P4"
     assert sol.slides["P2"].coriolis == (0.0, 0.0) or np.allclose(sol.slides["P2"].coriolis, 0)
     assert sol.links["O4P4"].alpha == pytest.approx(ref["alpha_lever"], rel=REL)
     assert sol.links["O4P4"].omega == 0.0
+
+
+def test_a_translating_coupler_prints_zero_not_rounding_noise():
+    """A parallelogram's coupler translates: its ω and α are zero; the construction leaves
+    ~1e-15, which the table prints as 0 with no sense (the JSON keeps the computed number)."""
+    from polygons.report import table
+    from polygons.scene import parse_scene
+    scene = parse_scene({"ground": {"A": ["0 mm", "0 mm"], "D": ["100 mm", "0 mm"]},
+                         "links": {"AB": "40 mm", "BC": "100 mm", "CD": "40 mm"},
+                         "driver": {"crank": "AB", "angle": "60 deg", "speed": "0.4 m/s CW"},
+                         "assembly": {"C": "C above AD"}})
+    sol = solve(scene)
+    assert abs(sol.links["BC"].omega) < 1e-13
+    row = next(line for line in table(sol).splitlines() if line.startswith("BC "))
+    assert row.split()[2:] == ["0", "0"], row
+    row = next(line for line in table(sol).splitlines() if line.startswith("AB "))
+    assert row.split()[2:4] == ["10", "CW"], row
