@@ -290,16 +290,40 @@ def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
                       ) -> tuple[Step, ...]:
     """The planned ``steps`` with their numbers read from the record ``r`` (``layout`` says
     where) and their substituted text: what the staged and the compiled solutions show."""
+    numbers = [([(sym, _term(r, i), u) for sym, i, u in o.terms],
+                None if o.value is None else r[o.value]) for o in layout]
+    zero = _rounding_noise(numbers, layout)
     done = []
-    for step, o in zip(steps, layout):
+    for step, o, (terms, value) in zip(steps, layout, numbers):
         vals = {k: (r[o.fields[k][0]], r[o.fields[k][1]]) if k in o.fields else None
                 for k in _FIELDS}
-        filled = _copy(step, vals, value=None if o.value is None else r[o.value],
+        filled = _copy(step, vals, value=None if value is None else zero(value, o.unit),
                        unit=o.unit, angle_deg=None if o.angle is None else r[o.angle],
-                       terms=tuple(Term(sym, _term(r, i), u) for sym, i, u in o.terms))
+                       terms=tuple(Term(sym, zero(v, u), u) for sym, v, u in terms))
         filled.__dict__["substituted"] = substitute(filled, scene)
         done.append(filled)
     return tuple(done)
+
+
+#: the units whose near-zero values are rounding noise of the construction
+_RATES = ("rad/s", "rad/s^2", "m/s", "m/s^2")
+
+
+def _rounding_noise(numbers, layout):
+    """``zero(value, unit)``: ``value``, or 0.0 where it is below 1e-12 of the largest of its
+    unit in the construction (an α's scale counts ω² too) — a translating link's ω, a body
+    starting from rest, which the construction leaves at ~1e-15 and a book prints as 0."""
+    scale = dict.fromkeys(_RATES, 0.0)
+    for (terms, value), o in zip(numbers, layout):
+        for _, v, u in terms + ([("", value, o.unit)] if value is not None else []):
+            if u in scale:
+                scale[u] = max(scale[u], abs(v))
+    scale["rad/s^2"] = max(scale["rad/s^2"], scale["rad/s"] ** 2)
+    floor = {u: 1e-12 * v for u, v in scale.items()}
+
+    def zero(v, u):
+        return 0.0 if u in floor and abs(v) <= floor[u] else v
+    return zero
 
 
 def min_angle(layout, r: tuple) -> float | None:

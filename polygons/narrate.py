@@ -50,11 +50,12 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
                 f"{t[0].value:.3g}°)")
     if op is Op.OMEGA:
         w = t[2].value
-        return f"{t[2].symbol} = {f(t[0].value)} / {f(t[1].value)} = {f(abs(w))} rad/s {sense(w)}"
+        return (f"{t[2].symbol} = {f(t[0].value)} / {f(t[1].value)} = {f(abs(w))} rad/s "
+                f"{sense(w)}").rstrip()
     if op is Op.ALPHA:
         al = t[2].value
         return (f"{t[2].symbol} = {f(t[0].value)} / {f(t[1].value)} = {f(abs(al))} rad/s² "
-                f"{sense(al)}")
+                f"{sense(al)}").rstrip()
     if op in (Op.SLIDER_VELOCITY, Op.SLIDER_ACCELERATION):
         (X,) = s.args
         deg = math.degrees(scene.sliders[X].angle)

@@ -153,7 +153,9 @@ def dumps(sol: Solution) -> str:
 def _noise(values, vector: bool = False) -> float:
     """The rounding noise of one column: 1e-12 of its largest magnitude.  A value below it is
     a zero of the construction (a link that translates, a point at rest) printed as 0 with no
-    sense, as a textbook prints it; the JSON keeps the computed numbers."""
+    sense, as a textbook prints it (the steps' numbers follow the same rule,
+    :func:`polygons.compiled.steps_from_record`); the JSON's points and links keep the computed
+    numbers."""
     mags = [(_mag(v) if vector else abs(v)) for v in values if v is not None]
     return 1e-12 * max(mags, default=0.0)
 

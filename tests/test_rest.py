@@ -92,3 +92,19 @@ def test_a_translating_coupler_prints_zero_not_rounding_noise():
     assert row.split()[2:] == ["0", "0"], row
     row = next(line for line in table(sol).splitlines() if line.startswith("AB "))
     assert row.split()[2:4] == ["10", "CW"], row
+
+
+def test_the_worked_steps_print_zero_too():
+    """The same rule in the construction's worked lines: ω_BC = 0 / 0.1 = 0 rad/s, no sense,
+    no 1e-15 (the staged steps and the compiled ones alike)."""
+    from polygons.compiled import compile_scene
+    from polygons.scene import parse_scene
+    scene = parse_scene({"ground": {"A": ["0 mm", "0 mm"], "D": ["100 mm", "0 mm"]},
+                         "links": {"AB": "40 mm", "BC": "100 mm", "CD": "40 mm"},
+                         "driver": {"crank": "AB", "angle": "60 deg", "omega": "10 rad/s CW"},
+                         "assembly": {"C": "C above AD"}})
+    for steps in (solve(scene).steps, compile_scene(scene).solve().steps):
+        w = next(s for s in steps if s.op == "omega" and s.args[0] == "BC")
+        assert w.value == 0.0 and w.substituted.endswith("= 0 rad/s"), w.substituted
+        cd = next(s for s in steps if s.op == "omega" and s.args[0] == "CD")
+        assert cd.value == pytest.approx(-10.0, rel=1e-12)
