@@ -766,17 +766,12 @@ def _parse_answers(answers_raw: list, r: _Reader, default_tol: float) -> tuple[A
     """``[[answers]]``: each table's fields checked (:func:`answer_fields`) and its quantity's
     grammar (:func:`parse_quantity_expr`)."""
     answers = []
-    new = object.__new__
     for i, spec in enumerate(answers_raw):
         where = f"answers[{i}]"
         fields = answer_fields(spec, r, where, default_tol)
         if fields["quantity"] not in _READ_EXPR:      # else read, and well formed, before
             parse_quantity_expr(fields["quantity"], file=r.file, where=where + ".quantity")
-        # the checked fields, set as they are (a frozen record's __init__ sets each field
-        # through object.__setattr__: a third of reading a scene of twenty answers)
-        answer = new(Answer)
-        answer.__dict__.update(fields)
-        answers.append(answer)
+        answers.append(record(Answer, **fields))
     return tuple(answers)
 
 
