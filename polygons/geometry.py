@@ -101,7 +101,10 @@ def meet(px, py, ux, uy, qx, qy, vx, vy) -> tuple[float, float]:
     b0, b1 = min(0.0, s) - h, max(0.0, s) + h
     ends = [px + a0 * ux, py + a0 * uy, px + a1 * ux, py + a1 * uy,
             qx + b0 * vx, qy + b0 * vy, qx + b1 * vx, qy + b1 * vy]
-    ends = np.array([0.0 if -1e-200 < c < 1e-200 else c for c in ends])   # see _flush
+    # components below 1e-200 zeroed: GEOS mishandles subnormal coordinates (a vertical segment
+    # at x = -5e-314 met a horizontal one at its end point), and nothing a scene can state is
+    # that small (a 1 µm link at 1e-3 rad/s moves at 1e-9 m/s)
+    ends = np.array([0.0 if -1e-200 < c < 1e-200 else c for c in ends])
     s1, s2 = shapely.linestrings(ends.reshape(2, 2, 2))
     hit = shapely.intersection(s1, s2)
     xy = shapely.get_coordinates(hit)
@@ -115,9 +118,3 @@ def meet(px, py, ux, uy, qx, qy, vx, vy) -> tuple[float, float]:
         return math.nan, math.nan
     return x, y
 
-
-def _flush(a: np.ndarray) -> np.ndarray:
-    """Zero the components below 1e-200 in magnitude: GEOS mishandles subnormal coordinates
-    (a vertical segment at x = -5e-314 met a horizontal one at its end point), and nothing a
-    scene can state is that small (a 1 µm link at 1e-3 rad/s moves at 1e-9 m/s)."""
-    return np.where(np.abs(a) < 1e-200, 0.0, a)
