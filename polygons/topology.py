@@ -158,9 +158,8 @@ def point_on_link(spec, r, where) -> tuple[float | None, float | None, float]:
 def _turn_of(text: str) -> tuple[str, float]:
     """'30 deg CW' → ('30 deg', −1); '30 deg' → ('30 deg', +1): the sense an angle is
     measured in, CCW unless the text ends in a clockwise word."""
-    head, _, last = text.strip().rpartition(" ")
-    turn = _TURN_WORDS.get(last.lower())
-    return (head.strip(), turn) if head and turn is not None else (text.strip(), 1.0)
+    head, turn = sense_in(text)
+    return head.strip(), 1.0 if turn is None else float(turn)
 
 
 def default_coincident(point: str) -> str:
