@@ -30,10 +30,10 @@ import numpy as np
 
 from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled, _Code, _Fail, _Steps,  # noqa: F401
                       _slot_kinds, check_compilable, generate)
-from .errors import AssemblyError, ConstructionError, ParallelLinesError
+from .errors import ConstructionError, ParallelLinesError
 from .narrate import substitute
 from .plan import Plan, construction, make_plan
-from .position import assemble, driver_input
+from .position import assemble, driver_input, dyad_failure
 from .reader import record
 from .scene import Scene
 from .steps import Diagram, Step, Term
@@ -104,9 +104,9 @@ class Program:
                     break
                 pts, _ = e.locate(scene, pos, self.sigma.get(e.placed[0]), xin)
                 pos.update(pts)
-            return AssemblyError(d.why_not(scene, pos), file=scene.file,
-                                 where=getattr(d, "lever", None) or d.placed[0])
+            return dyad_failure(scene, d, pos)
         return step_failure(scene, self.steps, why)
+
 
 
 def step_failure(scene: Scene, steps: tuple[Step, ...], why) -> Exception:
@@ -141,11 +141,15 @@ def compile_scene(scene: Scene, plan: Plan | None = None) -> Program:
     sigma = _sigmas(plan)
     key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)), _slot_kinds(scene))
     code = _cached(key, lambda: generate(scene, plan, steps, sigma))
-    # the closures are parameters too: fetch them from this scene
-    params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
-                   for get in code.getters)
-    return Program(scene, plan, steps, sigma, code, params, float(driver_input(scene)),
-                   code.fn)
+    return Program(scene, plan, steps, sigma, code, _params(code, scene, sigma),
+                   float(driver_input(scene)), code.fn)
+
+
+def _params(code: _Code, scene: Scene, sigma: dict) -> tuple:
+    """The parameters of a program generated from ``scene``'s topology, read from ``scene``:
+    its numbers, and the closures (``("sigma", label)``) from ``sigma``."""
+    return tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
+                 for get in code.getters)
 
 
 def _copy(step: Step, vals: dict, **more) -> Step:
@@ -186,10 +190,8 @@ class Staged:
         except _Fail as f:
             why = self.code.fails[f.args[0]]
             if why[0] == "dyad":
-                d = why[1]
                 pos = {k: np.array(v) for k, v in placement.points.items()}
-                raise AssemblyError(d.why_not(self.scene, pos), file=self.scene.file,
-                                    where=getattr(d, "lever", None) or d.placed[0]) from None
+                raise dyad_failure(self.scene, why[1], pos) from None
             raise step_failure(self.scene, self.steps, why) from None
 
     def placed(self, record: tuple) -> dict:
@@ -207,9 +209,7 @@ def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]
     key = ("arrays", plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)),
            _slot_kinds(scene))
     code = _cached(key, lambda: generate(scene, plan, steps, sigma, arrays=True))
-    params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
-                   for get in code.getters)
-    return code, params
+    return code, _params(code, scene, sigma)
 
 
 def compile_given(scene: Scene, plan: Plan, instruments=None) -> _Code:

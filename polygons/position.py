@@ -77,9 +77,15 @@ def _place(plan: Plan, scene: Scene, pos, chosen, sigmas, size, x_in) -> None:
             continue
         pts, margin = dyad.locate(scene, pos, None, x_in)
         if margin is not None and not margin > 0:
-            raise AssemblyError(dyad.why_not(scene, pos), file=scene.file,
-                                where=getattr(dyad, "lever", None) or dyad.placed[0])
+            raise dyad_failure(scene, dyad, pos)
         pos.update(pts)
+
+
+def dyad_failure(scene: Scene, d, pos) -> AssemblyError:
+    """The error of dyad ``d`` that cannot close on the points ``pos``, in its own words,
+    under its key (the lever's name for a slot, else the point it places)."""
+    return AssemblyError(d.why_not(scene, pos), file=scene.file,
+                         where=getattr(d, "lever", None) or d.placed[0])
 
 
 def driver_input(scene: Scene) -> float:
