@@ -28,8 +28,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled, _Code, _Fail, _Steps,  # noqa: F401
-                      _slot_kinds, check_compilable, generate)
+from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled,  # noqa: F401 (read from here)
+                      _Code, _Fail, _slot_kinds, generate)
 from .errors import ConstructionError, ParallelLinesError
 from .narrate import substitute
 from .plan import Plan, construction, make_plan
