@@ -177,9 +177,7 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
                     f"the scene's own position is a toggle for {x} ({d.toggle_reason(scene, pos0)}"
                     f"): the two closures coincide, so there is no branch to follow; state the "
                     f"scene at another input", file=scene.file, where=x)
-            d1 = float(np.hypot(*(c1[x] - pos0[x])))
-            d2 = float(np.hypot(*(c2[x] - pos0[x])))
-            sigma[x] = 1.0 if d1 <= d2 else -1.0
+            sigma[x] = placement.sigmas[x]      # the closure the assembly took
     drv = scene.driver
     if isinstance(drv, Crank):
         kind, x0, rate, rate2 = "crank", drv.angle, drv.omega, drv.alpha
