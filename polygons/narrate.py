@@ -48,14 +48,8 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
     if op is Op.INTERSECT:
         return (f"{t[1].symbol} = {f(t[1].value)} {unit_text(t[1].unit)} (lines meet at "
                 f"{t[0].value:.3g}°)")
-    if op is Op.OMEGA:
-        w = t[2].value
-        return (f"{t[2].symbol} = {f(t[0].value)} / {f(t[1].value)} = {f(abs(w))} rad/s "
-                f"{sense(w)}").rstrip()
-    if op is Op.ALPHA:
-        al = t[2].value
-        return (f"{t[2].symbol} = {f(t[0].value)} / {f(t[1].value)} = {f(abs(al))} rad/s² "
-                f"{sense(al)}").rstrip()
+    if op in _RATES:
+        return _rate(t, _RATES[op], f)
     if op in (Op.SLIDER_VELOCITY, Op.SLIDER_ACCELERATION):
         (X,) = s.args
         deg = math.degrees(scene.sliders[X].angle)
@@ -89,12 +83,20 @@ def worked(s: Step, scene, printed: bool = False) -> str:
         return sub
     if op in (Op.CORIOLIS_OFFSET_LINE, Op.CORIOLIS):
         return f"a_cor = {sub}"
-    if op is Op.OMEGA:
-        w = t[2].value
-        return (f"{t[2].symbol} = {t[0].symbol} / {t[1].symbol} = {f(t[0].value)} / "
-                f"{f(t[1].value)} = {f(abs(w))} rad/s {sense(w)}").rstrip()
-    if op is Op.ALPHA:
-        al = t[2].value
-        return (f"{t[2].symbol} = {t[0].symbol} / {t[1].symbol} = {f(t[0].value)} / "
-                f"{f(t[1].value)} = {f(abs(al))} rad/s² {sense(al)}").rstrip()
+    if op in _RATES:
+        return _rate(t, _RATES[op], f, symbols=True)
     return f"{s.quantity} = {sub}"
+
+
+#: the ops that measure a link's rate, and its unit
+_RATES = {Op.OMEGA: "rad/s", Op.ALPHA: "rad/s²"}
+
+
+def _rate(t, unit: str, f, symbols: bool = False) -> str:
+    """'ω_BC = 7.8 / 0.17 = 45.9 rad/s CW' from the terms (relative vector, length, rate);
+    with ``symbols`` the worked form 'ω_BC = bc / BC = 7.8 / 0.17 = …'.  A zero rate has no
+    sense word."""
+    w = t[2].value
+    names = f"{t[0].symbol} / {t[1].symbol} = " if symbols else ""
+    return (f"{t[2].symbol} = {names}{f(t[0].value)} / {f(t[1].value)} = {f(abs(w))} {unit} "
+            f"{sense(w)}").rstrip()
