@@ -36,7 +36,7 @@ from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input, dyad_failure
 from .reader import record
 from .scene import Scene
-from .steps import Diagram, Step, Term
+from .steps import Diagram, Step, Term, noise_floor
 
 _FIELDS = ("at", "vector", "point", "direction")
 _CACHE: dict = {}
@@ -315,7 +315,7 @@ def _rounding_noise(numbers, layout):
             if u in scale:
                 scale[u] = max(scale[u], abs(v))
     scale["rad/s^2"] = max(scale["rad/s^2"], scale["rad/s"] ** 2)
-    floor = {u: 1e-12 * v for u, v in scale.items()}
+    floor = {u: noise_floor([v]) for u, v in scale.items()}
 
     def zero(v, u):
         return 0.0 if u in floor and abs(v) <= floor[u] else v

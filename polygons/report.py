@@ -11,7 +11,7 @@ from . import geometry
 from .errors import PolygonsError
 from .evaluate import Solution
 from .quantities import quantity
-from .steps import sense as steps_sense
+from .steps import noise_floor, sense as steps_sense
 from .scene import Answer
 from .units import SYSTEMS, UNITS
 
@@ -151,13 +151,9 @@ def dumps(sol: Solution) -> str:
 
 
 def _noise(values, vector: bool = False) -> float:
-    """The rounding noise of one column: 1e-12 of its largest magnitude.  A value below it is
-    a zero of the construction (a link that translates, a point at rest) printed as 0 with no
-    sense, as a textbook prints it (the steps' numbers follow the same rule,
-    :func:`polygons.compiled.steps_from_record`); the JSON's points and links keep the computed
-    numbers."""
-    mags = [(_mag(v) if vector else abs(v)) for v in values if v is not None]
-    return 1e-12 * max(mags, default=0.0)
+    """The rounding noise of one column (:func:`polygons.steps.noise_floor`, the rule the
+    steps' numbers follow too); the JSON's points and links keep the computed numbers."""
+    return noise_floor([(_mag(v) if vector else abs(v)) for v in values if v is not None])
 
 
 def _denoised(x: float | None, noise: float) -> float | None:

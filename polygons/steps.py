@@ -218,6 +218,13 @@ def number(x: float, printed: bool = False) -> str:
     return text.rstrip("0").rstrip(".") if "." in text else text
 
 
+def noise_floor(magnitudes) -> float:
+    """The rounding noise of numbers of one kind in one construction: 1e-12 of the largest.
+    A number at or below it is a zero of the construction (a translating link's ω, a body
+    starting from rest, left at ~1e-15), printed as 0 with no sense, as a book prints it."""
+    return 1e-12 * max(magnitudes, default=0.0)
+
+
 def sense(w: float) -> str:
     """'CCW' for a positive angular quantity, 'CW' for a negative one, '' for zero."""
     if w == 0.0:
