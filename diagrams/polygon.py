@@ -34,7 +34,8 @@ from .labels import (Box, Placer, bounds, box_segment_distance, clip_line,
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
-from .notation import join_vectors, link_names, name_bare_omegas, slot_names, vector
+from .notation import (join_vectors, link_names, mark_drawing, name_bare_omegas, slot_names,
+                       vector)
 from .strokes import Construction, Stroke, construction
 from .text import ASCENT, DESCENT, display, number, token
 
@@ -544,15 +545,15 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         mm = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
         val = sc.si(mm) / sc.factor
         what = "Coriolis 2ωv" if st.component == "coriolis" else st.label
-        mark = "  ← asked" if (st.frm, st.to) in asked else ""
+        mark = "\u2003← asked" if (st.frm, st.to) in asked else ""
         out.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
                     f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
     if lay.con.measures:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))
         for m in lay.con.measures:
-            mark = "  ← asked" if m.number in asked_m else ""
-            out.append((prose(sol, lay.con, measure_text(m, sol, lay.con)) + mark,
+            mark = "\u2003← asked" if m.number in asked_m else ""
+            out.append((prose(sol, lay.con, measure_text(m, sol, lay.con, sc)) + mark,
                         "bold" if mark else "normal"))
     return out
 
@@ -586,12 +587,18 @@ def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None
     return ""
 
 
-def measure_text(m: Step, sol: Solution | None = None, con: Construction | None = None) -> str:
+def measure_text(m: Step, sol: Solution | None = None, con: Construction | None = None,
+                 scale: scales.Scale | None = None) -> str:
     """'ω_BC = 45.62 rad/s CW  (bc / BC)': a measure step's value, its sense, its formula;
-    a signed slider result with its direction words ('1589 m/s² to the left')."""
+    a signed slider result with its direction words ('1589 m/s² to the left').  A speed or
+    acceleration is given in the unit of the drawing's ``scale`` (mm/s on a mm/s scale)."""
     unit = display(m.unit)
     if m.value is None:
         return display(m.draws)
+    if scale is not None and display(m.unit) in ("m/s", "m/s²") and scale.factor != 1.0 \
+            and scale.quantity in ("velocity", "acceleration"):
+        m = replace(m, value=m.value / scale.factor)
+        unit = display(scale.unit)
     if m.unit.startswith("rad"):
         sense = "" if m.value == 0 else (" CCW" if m.value > 0 else " CW")
         val = f"{number(abs(m.value))} {unit}{sense}"
@@ -659,9 +666,10 @@ def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
         legend_lines = []
         desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {prose(sol, con, s.reason)}"
     content = stroke_items(lay, stage)
-    return compose(name=name, kind=con.diagram, stage=stage, title=title, subtitle=subtitle,
+    page = compose(name=name, kind=con.diagram, stage=stage, title=title, subtitle=subtitle,
                    desc=desc, content=content, content_box=_content_box(lay),
                    legend=legend_lines, scale=lay.scale, caption=caption,
                    scale_statement=lay.scale.statement,
                    meta={"layout": lay},
                    key=[(f"c-{c}", LOOKS[c].name, c != "construction") for c in key(lay, stage)])
+    return mark_drawing(page, sol.points)       # O4P2 → O₄P₂: the scene's labels typeset

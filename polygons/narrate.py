@@ -60,9 +60,9 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
         slot = scene.slots[A]
         if slot.far is not None and slot_along_lever(scene, slot):
             ends = (slot.pivot, slot.far) if val >= 0 else (slot.far, slot.pivot)
-            return f"{f(val)} {t[0].unit} (along {''.join(ends)})"
-        return (f"{f(val)} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
-                f"{slot.pivot})")
+            return f"{f(abs(val))} {t[0].unit} (along {''.join(ends)})"   # the sign is
+        return (f"{f(abs(val))} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "  # in
+                f"{slot.pivot})")                                               # the words
     if op is Op.IMAGE:
         return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"
     return ""
