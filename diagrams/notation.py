@@ -271,15 +271,8 @@ def mark_labels(text: str, labels) -> str:
 
 
 def mark_drawing(drawing, labels):
-    """``drawing`` with every text's space labels marked (:func:`mark_labels`)."""
+    """``drawing`` carrying the scene's ``labels`` (``meta['labels']``): the SVG writer
+    typesets them where its texts name them (:func:`mark_labels`); the texts themselves
+    stay as written, so readers of the drawing model match plain words."""
     from dataclasses import replace as _replace
-
-    def walk(it):
-        if hasattr(it, "items") and isinstance(getattr(it, "items"), tuple):
-            return _replace(it, items=tuple(walk(i) for i in it.items))
-        if hasattr(it, "text") and isinstance(it.text, str):
-            return _replace(it, text=mark_labels(it.text, labels))
-        return it
-    return _replace(drawing, groups=tuple(walk(g) for g in drawing.groups),
-                    title=mark_labels(drawing.title, labels),
-                    desc=mark_labels(drawing.desc, labels))
+    return _replace(drawing, meta={**drawing.meta, "labels": tuple(sorted(labels))})

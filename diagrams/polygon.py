@@ -29,7 +29,7 @@ from polygons.evaluate import Solution
 from polygons.plan import Step
 
 from . import crowd, inset, scale as scales
-from .labels import (Box, Placer, bounds, box_segment_distance, clip_line,
+from .labels import (Box, Placer, bounds, box_hits_segment, box_segment_distance, clip_line,
                      largest_gap_direction)
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER
@@ -272,18 +272,27 @@ def _place_labels(lay: Layout) -> Layout:
         placed = placer.place_any(st.label, lay.size(VECTOR_LABEL_SIZE), anchors,
                                   distances=(0.5, 1.1, 2.0, 3.2), required=False,
                                   extra_cost=owner)
+        near = None
         if placed is not None and owner(0, placed[3]) > 0:
             placer.boxes.remove(placed[3])        # beside another vector: lead it instead
-            placed = None
+            near, placed = placed, None
         if placed is None:
             mid = ((g[0][0] + g[1][0]) / 2, (g[0][1] + g[1][1]) / 2)
             placed = placer.place_any(
                 st.label, lay.size(VECTOR_LABEL_SIZE),
                 [(mid, [2 * math.pi * k / 24 for k in range(24)])],
-                distances=(4.0, 6.0, 8.5, 12.0),
+                distances=(4.0, 6.0, 8.5, 12.0, 16.0), required=False,
                 extra_cost=lambda _ai, box, mid=mid, st=st: _crossings(
-                    _leader(box, mid), st, drawn) * 3.0)
-            lead = _leader(placed[3], mid)
+                    _leader(box, mid), st, drawn) * 3.0 + _through(_leader(box, mid), placer))
+            lead = None if placed is None else _leader(placed[3], mid)
+            if lead is not None and _through(lead, placer_without(placer, placed[3])):
+                placer.boxes.remove(placed[3])    # no clear way to it: the near place
+                placed, lead = None, None
+            if placed is None and near is not None:
+                placer.block(near[3])
+                placed = near
+            elif placed is None and want:
+                placed = placer.place(st.label, mid, lay.size(VECTOR_LABEL_SIZE))
             if lead is not None:
                 leaders.append((st.step, (st.frm, st.to), lead))
                 placer.hard(lead[0], lead[1], 0.3)
@@ -315,6 +324,19 @@ def _crossings(lead, own: Stroke, drawn) -> int:
     if lead is None:
         return 0
     return sum(1 for st, g in drawn if st is not own and _cross(lead, g))
+
+
+def placer_without(placer: Placer, box: Box) -> Placer:
+    """A copy of ``placer``'s boxes without ``box`` (a label's own, when testing its leader)."""
+    return Placer(boxes=[b for b in placer.boxes if b is not box])
+
+
+def _through(lead, placer: Placer) -> float:
+    """Dear (100) when the leader ``lead`` passes through a label already placed."""
+    if lead is None:
+        return 0.0
+    return 100.0 if any(box_hits_segment(b, lead[0], lead[1], 0.35) for b in placer.boxes) \
+        else 0.0
 
 
 def _cross(p, q) -> bool:
