@@ -230,6 +230,7 @@ def _place_labels(lay: Layout) -> Layout:
     drawn = [(st, g if st.kind == "line" else _drawn(lay, st, g)) for st, g in geo
              if g is not None and st.kind in ("line", "arrow", "offset")]
     llabels = {}
+    leaders = []
     for st, g in geo:
         if st.kind != "line" or g is None:
             continue
@@ -241,13 +242,30 @@ def _place_labels(lay: Layout) -> Layout:
             anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
         text = display(st.label)
         placer.hard(g[0], g[1], 0.7)            # not across its own line
+        owner = _owner_cost(st, g, drawn)
         x, base, _, box = placer.place_any(text, lay.size(LINE_LABEL_SIZE), anchors,
                                            distances=(0.3, 0.8, 1.8, 3.3, 5.3, 8.0),
-                                           extra_cost=_owner_cost(st, g, drawn))
+                                           extra_cost=owner)
         placer.hard_segments.pop()
+        if owner(0, box) > 0:          # as near another line: further out, led to its own
+            placer.boxes.remove(box)
+            far = placer.place_any(
+                text, lay.size(LINE_LABEL_SIZE), anchors, distances=(4.0, 6.0, 8.5, 12.0),
+                required=False, extra_cost=lambda _ai, b, st=st, g=g: _crossings(
+                    _leader_to(b, g), st, drawn) * 3.0 + _through(_leader_to(b, g), placer))
+            lead = None if far is None else _leader_to(far[3], g)
+            if far is None or (lead is not None and _through(lead, placer_without(placer,
+                                                                                  far[3]))):
+                if far is not None:
+                    placer.boxes.remove(far[3])
+                placer.block(box)
+            else:
+                x, base, _, box = far
+                if lead is not None:
+                    leaders.append((st.step, (st.frm, st.to), lead))
+                    placer.hard(lead[0], lead[1], 0.3)
         llabels[st.step] = (text, x, base, box)
     vec_labels = {}
-    leaders = []
     asked = asked_vectors(con)
     # the component named at each vector's midpoint, asked ones first, then longest first; a
     # name with no free place nearer its own vector than any other goes where there is
@@ -307,10 +325,16 @@ def _place_labels(lay: Layout) -> Layout:
 OWNER_MARGIN = 2.5
 
 
+def on_line(g, seg, tol: float = 0.3) -> bool:
+    """True when segment ``g`` lies on the line of ``seg`` (a vector on its own construction
+    line, p₁p on the slot line): a label by one is by the other."""
+    return _dist_to_line(g[0], seg) < tol and _dist_to_line(g[1], seg) < tol
+
+
 def _owner_cost(own: Stroke, seg, drawn):
     """extra_cost for a label of stroke ``own`` (paper segment ``seg``): dear when another
     drawn line or vector is about as near the label's box as its own."""
-    others = [g for st, g in drawn if st is not own]
+    others = [g for st, g in drawn if st is not own and not on_line(g, seg)]
 
     def cost(_ai, box) -> float:
         mine = box_segment_distance(box, seg[0], seg[1])
@@ -345,6 +369,16 @@ def _cross(p, q) -> bool:
     def side(o, e, f):
         return (e[0] - o[0]) * (f[1] - o[1]) - (e[1] - o[1]) * (f[0] - o[0])
     return (side(a, b, c) * side(a, b, d) < 0) and (side(c, d, a) * side(c, d, b) < 0)
+
+
+def _leader_to(box: Box, seg):
+    """A leader from a label's box to the nearest point of the segment ``seg``."""
+    (x0, y0), (x1, y1) = seg
+    c = box.centre
+    L2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
+    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((c[0] - x0) * (x1 - x0)
+                                               + (c[1] - y0) * (y1 - y0)) / L2))
+    return _leader(box, (x0 + t * (x1 - x0), y0 + t * (y1 - y0)))
 
 
 def _leader(box: Box, to: Pt):
@@ -430,6 +464,10 @@ def stroke_items(lay: Layout, stage: int | None):
             text, x, base, _ = lay.line_labels[st.step]
             lab_g.append(Text(x, base, text, lay.size(LINE_LABEL_SIZE), role="line", faded=faded,
                               cls=f"line-label step-{st.step}"))
+            for step, fv, (a, b) in lay.leaders:
+                if step == st.step and fv == (st.frm, st.to):
+                    lines_g.append(Segment(a, b, "leader", faded,
+                                           cls=f"label-leader step-{st.step}"))
         elif st.kind == "side":
             lines_g.append(Segment(g[0], g[1], _style("image", False), faded,
                                    cls=f"image-side step-{st.step}"))
