@@ -359,8 +359,8 @@ def _through(lead, placer: Placer) -> float:
     """Dear (100) when the leader ``lead`` passes through a label already placed."""
     if lead is None:
         return 0.0
-    return 100.0 if any(box_hits_segment(b, lead[0], lead[1], 0.35) for b in placer.boxes) \
-        else 0.0
+    return 100.0 if any(box_hits_segment(b, lead[0], lead[1], 0.35) for b in placer.boxes
+                        if b.x1 - b.x0 > 1.7) else 0.0      # (a vertex's dot it may pass)
 
 
 def _cross(p, q) -> bool:
