@@ -608,6 +608,9 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         mark = "\u2003← asked" if (st.frm, st.to) in asked else ""
         out.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
                     f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
+    for a in lay.con.asked:
+        if a.zero:
+            out.append((f"{a.zero} = 0: no vector to draw\u2003← asked", "bold"))
     if lay.con.measures:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))

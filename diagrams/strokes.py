@@ -202,6 +202,7 @@ class Asked:
     quantity: str
     vector: tuple[str, str] | None
     measure: int | None
+    zero: str = ""       # asked but zero, so nothing drawn: its name ('(a_B)_A^t')
 
 
 _MEASURES = {"omega": ("omega",), "alpha": ("alpha",),
@@ -246,12 +247,23 @@ def asked(sol: Solution, diagram: str, steps, strokes) -> tuple[Asked, ...]:
                         and {V(a) for a in s.args[-2:] if a in sol.points} == want:
                     vec = (st.frm, st.to)
                     break
+            if vec is None and _zero(sol, ans.quantity):    # no vector: say so
+                out.append(Asked(ans.quantity, None, None,
+                                 f"(a_{args[0]})_{args[1]}^{fn[1]}"))
+                continue
         elif fn == "cor" and not vel:
             vec = next(((st.frm, st.to) for st in arrows if st.component == "coriolis"
                         and step_of(st) is not None and args[0] in step_of(st).args), None)
         elif fn in _MEASURES and (fn in ("omega", "vs")) == vel:
             m = next((s for s in steps if s.kind == "measure" and s.op in _MEASURES[fn]
                       and args[0] in s.args), None)
+            if m is None and fn in ("omega", "alpha"):     # the driver's own rate: its vector
+                op = "crank_velocity" if vel else "crank_tangential"
+                vec = next(((st.frm, st.to) for st in arrows if step_of(st) is not None
+                            and step_of(st).link == args[0] and step_of(st).op == op), None)
+                if vec is not None:
+                    out.append(Asked(ans.quantity, vec, None))
+                continue
             if m is None:
                 continue
             meas = m.number
@@ -270,3 +282,17 @@ def asked(sol: Solution, diagram: str, steps, strokes) -> tuple[Asked, ...]:
         if vec is not None or meas is not None:
             out.append(Asked(ans.quantity, vec, meas))
     return tuple(out)
+
+
+def _zero(sol: Solution, expr: str) -> bool:
+    """True when the asked quantity ``expr`` is zero in ``sol`` (the rounding noise of the
+    construction aside: :func:`polygons.steps.noise_floor` of the polygon's vectors)."""
+    from polygons.quantities import quantity
+    from polygons.steps import noise_floor
+    try:
+        value = quantity(sol, expr)
+    except PolygonsError:
+        return False
+    sizes = [math.hypot(*p.acceleration) for p in sol.points.values()
+             if p.acceleration is not None]
+    return abs(value) <= noise_floor(sizes)

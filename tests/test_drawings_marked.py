@@ -31,7 +31,7 @@ from polygons.scene import load_scene, parse_quantity_expr
 
 SVG = "{http://www.w3.org/2000/svg}"
 MARKED = ["new-rotary-engine", "new-oscillating-cylinder", "new-slot-on-moving-lever",
-          "s003-fig7", "new-whitworth", "s001-sae4-q3"]
+          "s003-fig7", "new-whitworth", "s001-sae4-q3", "s001-we1"]
 _cache = {}
 
 
@@ -70,9 +70,11 @@ def test_every_asked_quantity_is_marked_on_its_drawing(name):
         fn, args = parse_quantity_expr(ans.quantity)
         if fn not in WHICH or WHICH[fn][0] not in roots:
             continue
-        if ans.exact == 0.0:                 # a zero component has no vector to mark
-            continue
         diagram, comp = WHICH[fn]
+        if ans.exact == 0.0 and fn in ("an", "at"):    # no vector: said so
+            assert any("= 0: no vector to draw" in t and "← asked" in t
+                       for t in _texts(roots[diagram])), (name, ans.quantity)
+            continue
         asked = [c for c in _groups(roots[diagram]) if "vector" in c and "asked" in c]
         if fn in ("vs", "as") and args[0] in sol.scene.sliders:
             comp = None                       # along a fixed guide: the absolute vector
@@ -84,6 +86,8 @@ def test_every_asked_quantity_is_marked_on_its_drawing(name):
             x = sol.vertex_of(args[0])
             assert any({f"from-{frm}", f"to-{x}"} <= set(c) or {f"from-{x}", f"to-{frm}"}
                        <= set(c) for c in asked), (name, ans.quantity)
+        elif args[0] == getattr(sol.scene.driver, "link", None):   # the input's own rate:
+            assert any("given" in c for c in asked), (name, ans.quantity)  # its vector
         else:                                 # ω, α: their measure row is marked
             sym = "ω" if fn == "omega" else "α"
             assert any(t.startswith(sym) and "← asked" in t and args[0] in t
