@@ -47,7 +47,7 @@ _TOKEN = re.compile(
     r"|(?P<ul>[A-Z])\u2063(?P<ud>\d+)")
 #: invisible mark (never drawn) between a space label's letter and its digits: O2 → O₂
 MARK = "\u2063"
-_CAPS = re.compile(r"(?<![\w/′.\-])[A-Z][A-Za-z0-9]*(?![\w])")
+_CAPS = re.compile(r"(?<![\w/′.])[A-Z][A-Za-z0-9]*(?![\w])")
 
 Run = tuple[str, str]
 
