@@ -44,6 +44,7 @@ from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
 from .loads import parse as parse_loads
+from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
@@ -201,6 +202,8 @@ class Scene:
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
     options: Options = Options()
     loads: Any = None           # polygons.loads.Loads: the force tables, parsed and checked
+    #: the mechanism model (polygons.model.Mechanism): bodies and pairs, read once at load
+    model: Any = None
     #: second inputs: prescribed slides along a link (:mod:`polygons.topology`)
     prescribed: Mapping[str, topology.Slide] = field(
         default_factory=lambda: MappingProxyType({}))
@@ -614,6 +617,11 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     check_proportions(file, ground, drawn, links, sliders, points, assembly, driver)
 
+    # the joint tables read once into bodies and pairs: every method reads this model
+    model = build_model(ground=ground, links=links, sliders=sliders, slots=slots,
+                        points=points, prescribed=prescribed, driver=driver,
+                        along_lever=lambda slot: bool(slot.offset) or topology.guided_pin_in(
+                            links, driver, slot))
     # (every field of Scene, set at once; loads set below, before the scene is handed out)
     scene = record(Scene, file=file, title=title, source=MappingProxyType(dict(source)),
                    ground=MappingProxyType(ground), links=MappingProxyType(links),
@@ -624,7 +632,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                        [s for s in DIAGRAMS if s in solve]),
                    drawn=MappingProxyType(drawn),
                    extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
-                   options=options, loads=None, prescribed=MappingProxyType(prescribed))
+                   options=options, loads=None, prescribed=MappingProxyType(prescribed),
+                   model=model)
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
     scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
