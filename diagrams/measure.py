@@ -276,11 +276,11 @@ def read_quantity(sol, readings: dict, expr: str, ruler: float | None = RULER_MM
         r = vel if fn == "vs" else acc
         if r is None:
             return None
-        if P in scene.slots:
-            slot = scene.slots[P]
+        if P in scene.model.slot:
+            slot = scene.model.slot[P]
             if sp is None:
                 return None
-            e = space_vec(slot.pivot, P)
+            e = space_vec(slot.line.origin, P)
             if fn == "vs":
                 a, b = V(slot.coincident), V(P)
             else:
@@ -288,8 +288,8 @@ def read_quantity(sol, readings: dict, expr: str, ruler: float | None = RULER_MM
                 if s is None:
                     return None
                 a, b = s.start, s.end
-        elif P in scene.sliders:
-            e = scene.sliders[P].direction
+        elif P in scene.model.guide:
+            e = scene.model.guide[P].line.direction
             a, b = sol.pole, V(P)
         else:
             return None

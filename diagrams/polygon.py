@@ -651,7 +651,8 @@ def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None
     measure (the way its sliding vector is drawn)."""
     if sol is None or m.value in (None, 0):
         return ""
-    guide = next((sol.scene.sliders[a] for a in m.args if a in sol.scene.sliders), None)
+    guides = sol.scene.model.guide
+    guide = next((guides[a].line for a in m.args if a in guides), None)
     if guide is not None:
         return f" {along_words(guide.angle + (0.0 if m.value > 0 else math.pi))}"
     if con is not None and m.theorem == "sliding":
