@@ -12,6 +12,7 @@ import math
 
 from polygons.evaluate import Solution, link_ends
 from polygons.scene import Crank
+from polygons.model import BUILT, check_handles
 
 from . import scale as scales
 from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
@@ -25,6 +26,9 @@ NOTE_SIZE = 2.8
 PIN_R = 1.1
 PAD_MM = 30.0            # room (mm) around the mechanism for symbols and labels
 
+
+#: the kinds of body and pair the space diagram draws (polygons.model)
+HANDLES = BUILT
 
 def _add(p, q, k=1.0):
     return (p[0] + k * q[0], p[1] + k * q[1])
@@ -58,6 +62,7 @@ def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
 
 
 def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | None = None):
+    check_handles("the space diagram", HANDLES, sol.scene.model, sol.scene.file)
     scene = sol.scene
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
     bb = bounds(list(pos.values()))
@@ -115,6 +120,21 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             neighbours[slot.coincident] += [piv, end]
         if slot.far and slot.far in neighbours:
             neighbours[slot.far].append(piv)
+
+    # collars: a block driven along its link (a prescribed slide, the second input)
+    for collar in scene.model.collars():
+        o, t = collar.line.origin, collar.line.toward
+        if collar.at not in P or o not in P or t not in P:
+            continue
+        c = P[collar.at]
+        e = _unit((P[t][0] - P[o][0], P[t][1] - P[o][1]))
+        n = (-e[1], e[0])
+        blk = tuple(_add(_add(c, e, sx * 3.2), n, sy * 2.2)
+                    for sx, sy in ((-1, 1), (1, 1), (1, -1), (-1, -1)))
+        symbols.append(Polyline(tuple(_r(p) for p in blk), "block", closed=True,
+                                cls="collar-block"))
+        for p, q in zip(blk, blk[1:] + blk[:1]):
+            placer.hard(p, q, 0.4)
 
     # binary links
     for name, ln in scene.links.items():
@@ -352,6 +372,8 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     for lab, g in scene.model.guide.items():
         legend.append((f"{lab} slides on a guide at {number(math.degrees(g.line.angle), 4)}°",
                        "normal"))
+    for collar in scene.model.collars():
+        legend.append((f"collar {collar.at} slides along {collar.carrier}", "normal"))
     drv = scene.driver
     legend.append(("", "normal"))
     legend.append(("Input:", "bold"))
@@ -365,6 +387,10 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     else:
         legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
                        f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))
+    for point, sl in scene.prescribed.items():      # the second input's values
+        legend.append((f"collar {point}: {number(sl.position * 1000)} mm from "
+                       f"{sl.p}, ṡ = {number(sl.velocity)} m/s, s̈ = "
+                       f"{number(sl.acceleration)} m/s² along {sl.link}", "normal"))
     sid = scene.source.get("id", "")
     subtitle = f"{sid}: {scene.title}" if sid else scene.title
     desc = (f"Space diagram of {scene.title} at the instant solved, drawn to scale "

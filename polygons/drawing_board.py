@@ -27,12 +27,17 @@ import numpy as np
 from .compiled import compile_given, given_params
 from .scene import Crank
 from .sweep import Program, compile_plan, place, run
+from .model import BUILT, check_handles
 
 PENCIL_MM = 0.25
 PROTRACTOR_DEG = 0.25
 SPACE_MM = 150.0      # the mechanism's extent on paper
 POLYGON_MM = 100.0    # the longest vector of each polygon on paper
 
+
+#: the kinds of body and pair the emulation handles (polygons.model): every kind the step
+#: program draws
+HANDLES = BUILT
 
 class Paper:
     """The instruments of a drawing board: every stroke of the step program is drawn with
@@ -75,6 +80,7 @@ def emulate(scene, thetas, trials: int = 200, seed: int = 1) -> dict:
     marked, every answer read off with the rule.  Returns ``{"errors": {name: (errors
     (trials, positions), exact (positions,))}, "scales": {...}, "angle_deg": ...}``; every
     error is |drawn − exact| / |exact|."""
+    check_handles("the drawing-board emulation", HANDLES, scene.model, scene.file)
     prog: Program = compile_plan(scene)
     xs = np.asarray(thetas, dtype=float)
     exact = run(prog, xs)

@@ -274,20 +274,36 @@ def build(*, ground, links, sliders, slots, points, prescribed, driver,
 
 
 # ---------------------------------------------------------------- capabilities
-def refuse(method: str, what: str, file: str | None = None) -> UnsupportedError:
+#: each kind of body and pair in words, for a refusal
+KIND_WORDS = {
+    "frame": "the frame", "link": "a link", "lever": "a slotted lever",
+    "block": "a slider on a fixed guide", "yoke": "a Scotch yoke",
+    "pin-block": "a pin sliding in a slot", "collar": "a collar driven along a link (a "
+    "prescribed slide, a second input)", "turning": "a turning pair", "sliding": "a sliding "
+    "pair", "rolling": "a rolling contact", "cam": "a cam contact"}
+#: every kind the model builds today (rolling and cam contact are to come)
+BUILT = frozenset(BODY_KINDS) | {"turning", "sliding"}
+
+
+def refuse(method: str, kind: str, where: str = "", file: str | None = None
+           ) -> UnsupportedError:
     """The one-line refusal of a kind a method does not handle, naming both."""
-    return UnsupportedError(f"{method} does not handle {what}", file=file)
+    at = f" ({where})" if where else ""
+    return UnsupportedError(f"{method} does not handle {KIND_WORDS.get(kind, kind)}{at}",
+                            file=file)
 
 
 def check_handles(method: str, handles: frozenset[str], model: Mechanism,
                   file: str | None = None) -> None:
-    """Refuse, naming ``method`` and the kind, a mechanism with a kind of body or pair that
-    ``method`` does not declare in ``handles``."""
-    missing = sorted(model.kinds - handles)
-    if missing:
-        raise refuse(method, f"a {missing[0]} " + ("pair" if missing[0] in PAIR_KINDS else
-                                                    "body"), file)
+    """Refuse, in one line naming ``method`` and the kind, a mechanism holding a kind of body
+    or pair that ``method`` does not declare in ``handles`` (its ``HANDLES``)."""
+    for b in model.bodies:
+        if b.kind not in handles:
+            raise refuse(method, b.kind, b.name, file)
+    for p in model.turning + model.sliding:
+        if p.kind not in handles:
+            raise refuse(method, p.kind, getattr(p, "label", None) or p.at, file)
 
 
 __all__ = ["BODY_KINDS", "PAIR_KINDS", "FRAME", "Body", "Turning", "SlideLine", "Sliding",
-           "Mechanism", "build", "refuse", "check_handles"]
+           "Mechanism", "build", "refuse", "check_handles", "KIND_WORDS", "BUILT"]
