@@ -694,7 +694,7 @@ def _comparison(doc: _Doc, sol: Solution) -> None:
             a = c.answer
             ours = num(c.compared, 5)
             if a.sense and a.mode == "abs":
-                ours_sense = sense(c.ours) if a.quantity.startswith(("omega", "alpha")) else ""
+                ours_sense = sense(c.ours) if a.q.fn in ("omega", "alpha") else ""
                 ours += f" {ours_sense}" if ours_sense else ""
             tut = f"{a.tutorial:g}" + (f" {esc(a.sense)}" if a.sense else "")
             if c.diff_pct is None:
@@ -753,7 +753,7 @@ def worksheet_questions(sol: Solution) -> list[str]:
     for a in sol.scene.answers:
         if a.tutorial is None or a.quantity in seen:
             continue
-        fn = a.quantity.split("(")[0]
+        fn = a.q.fn
         if fn in ("v", "a", "an", "at", "omega", "alpha", "cor", "vs", "as"):
             seen.append(a.quantity)
     return seen

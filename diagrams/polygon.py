@@ -23,7 +23,6 @@ the step's sentence in the drawings' notation as the caption.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field, replace
 
 from polygons.evaluate import Solution
@@ -163,11 +162,9 @@ def asked_quantities(sol: Solution, diagram: str) -> list[tuple[str, ...]]:
     fn = "v" if diagram == "velocity" else "a"
     out = []
     for ans in sol.scene.answers:
-        m = re.fullmatch(r"\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?\)\s*",
-                         ans.quantity)
-        if not m or m.group(1) != fn:
+        if ans.q is None or ans.q.fn != fn:
             continue
-        args = tuple(g for g in m.groups()[1:] if g)
+        args = ans.q.args
         if all(a in sol.points for a in args) and args not in out:
             out.append(args)
     return out

@@ -168,6 +168,19 @@ class Branch:
 
 
 @dataclass(frozen=True)
+class Quantity:
+    """A result quantity, typed once at load: 'v(C,B)' is Quantity('v', ('C', 'B')) — the
+    function (one of :data:`QUANTITY_FUNCTIONS`) and its labels.  Readers (measures, marks,
+    graders) read these fields; nobody parses the text again."""
+
+    fn: str
+    args: tuple[str, ...]
+
+    def __str__(self) -> str:
+        return f"{self.fn}({','.join(self.args)})"
+
+
+@dataclass(frozen=True)
 class Answer:
     """One printed (tutorial) answer and/or exact reference value for a result quantity."""
 
@@ -182,6 +195,7 @@ class Answer:
     ref: str | None             # key in the reference cases.json
     desc: str
     note: str
+    q: Quantity | None = None   # ``quantity`` typed (parse_quantity_expr), set at load
 
 
 @dataclass(frozen=True)
@@ -778,9 +792,9 @@ def _parse_answers(answers_raw: list, r: _Reader, default_tol: float) -> tuple[A
     for i, spec in enumerate(answers_raw):
         where = f"answers[{i}]"
         fields = answer_fields(spec, r, where, default_tol)
-        if fields["quantity"] not in _READ_EXPR:      # else read, and well formed, before
-            parse_quantity_expr(fields["quantity"], file=r.file, where=where + ".quantity")
-        answers.append(record(Answer, **fields))
+        fn, args = parse_quantity_expr(fields["quantity"], file=r.file,
+                                       where=where + ".quantity")
+        answers.append(record(Answer, **fields, q=Quantity(fn, args)))
     return tuple(answers)
 
 
