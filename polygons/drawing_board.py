@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from .compiled import compile_given, given_params
-from .scene import Crank
+from .scene import Crank, Quantity
 from .sweep import Program, compile_plan, place, run
 from .model import BUILT, check_handles
 
@@ -150,15 +150,16 @@ def _errors(errors, exact, k, paper, pts, prog, given, grid) -> None:
         ae = np.hypot(*exact["acc"][lab])
         vd = paper.read(np.hypot(*k.vel[lab]), "velocity")
         ad = paper.read(np.hypot(*k.acc[lab]), "acceleration")
-        errors[f"|v_{lab}|"] = (np.abs(grid(vd) - ve) / ve, ve)
-        errors[f"|a_{lab}|"] = (np.abs(grid(ad) - ae) / ae, ae)
+        errors[Quantity("v", (lab,))] = (np.abs(grid(vd) - ve) / ve, ve)
+        errors[Quantity("a", (lab,))] = (np.abs(grid(ad) - ae) / ae, ae)
     for name, w in k.omega.items():
         if name in given or name not in exact["omega"] or not np.ndim(exact["omega"][name]):
             continue
         we, ae = exact["omega"][name], exact["alpha"][name]
-        errors[f"ω_{name}"] = (np.abs(grid(w) - we) / np.abs(we), np.abs(we))
+        errors[Quantity("omega", (name,))] = (np.abs(grid(w) - we) / np.abs(we), np.abs(we))
         if name in k.alpha:
-            errors[f"α_{name}"] = (np.abs(grid(k.alpha[name]) - ae) / np.abs(ae), np.abs(ae))
+            errors[Quantity("alpha", (name,))] = (np.abs(grid(k.alpha[name]) - ae) / np.abs(ae),
+                                                  np.abs(ae))
 
 
 

@@ -179,6 +179,16 @@ class Quantity:
     def __str__(self) -> str:
         return f"{self.fn}({','.join(self.args)})"
 
+    @property
+    def display(self) -> str:
+        """As a table heads it: |v_C|, |a_C|, ω_BC, α_BC (else the quantity's text)."""
+        sym = {"omega": "ω", "alpha": "α"}.get(self.fn)
+        if sym is not None and len(self.args) == 1:
+            return f"{sym}_{self.args[0]}"
+        if self.fn in ("v", "a") and len(self.args) == 1:
+            return f"|{self.fn}_{self.args[0]}|"
+        return str(self)
+
 
 @dataclass(frozen=True)
 class Answer:
