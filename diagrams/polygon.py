@@ -36,7 +36,7 @@ from .components import LOOKS, ORDER
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
 from .notation import (join_vectors, link_names, mark_drawing, name_bare_omegas, slot_names,
                        vector)
-from .strokes import Construction, Stroke, construction
+from .strokes import Construction, Stroke, construction, sliding_arrow
 from .text import ASCENT, DESCENT, display, number, token
 
 Pt = tuple[float, float]
@@ -637,13 +637,13 @@ def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None
     measure (the way its sliding vector is drawn)."""
     if sol is None or m.value in (None, 0):
         return ""
-    guide = next((sol.scene.sliders[a] for a in m.args if a in sol.scene.sliders), None)
+    guides = sol.scene.model.guide
+    guide = next((guides[a].line for a in m.args if a in guides), None)
     if guide is not None:
         return f" {along_words(guide.angle + (0.0 if m.value > 0 else math.pi))}"
     if con is not None and m.theorem == "sliding":
         x = sol.vertex_of(m.args[0]) if m.args and m.args[0] in sol.points else None
-        arrow = next((st for st in con.strokes if st.kind == "arrow"
-                      and st.component == "sliding" and x in (st.frm, st.to)), None)
+        arrow = sliding_arrow(con.strokes, con.steps, x, m.args[1:])
         if arrow is not None:
             d = (arrow.b[0] - arrow.a[0], arrow.b[1] - arrow.a[1])
             return f" {along_words(math.atan2(d[1], d[0]))}"

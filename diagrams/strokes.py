@@ -13,7 +13,6 @@ from dataclasses import dataclass
 from polygons.errors import PolygonsError
 from polygons.evaluate import Solution
 from polygons.plan import Step
-from polygons.scene import parse_quantity_expr
 
 from .components import component_of
 from .notation import slot_names, vector
@@ -132,12 +131,10 @@ def _image_quantity(sol: Solution, s: Step) -> str:
 
 
 def read_answer(ans) -> tuple[str, tuple[str, ...]] | None:
-    """An answer's quantity as (function, labels): 'v(B,A)' → ('v', ('B', 'A')); None when
-    it does not read (the scene's loader has checked it already)."""
-    try:
-        return parse_quantity_expr(ans.quantity)
-    except PolygonsError:
-        return None
+    """An answer's quantity as (function, labels), typed at load (``Answer.q``): 'v(B,A)' →
+    ('v', ('B', 'A')); None when it has none."""
+    q = getattr(ans, "q", None)
+    return None if q is None else (q.fn, tuple(q.args))
 
 
 def asked_quantities(sol: Solution, diagram: str) -> list[tuple[str, ...]]:
@@ -256,7 +253,7 @@ def asked(sol: Solution, diagram: str, steps, strokes) -> tuple[Asked, ...]:
                         and step_of(st) is not None and args[0] in step_of(st).args), None)
         elif fn in _MEASURES and (fn in ("omega", "vs")) == vel:
             m = next((s for s in steps if s.kind == "measure" and s.op in _MEASURES[fn]
-                      and args[0] in s.args), None)
+                      and all(a in s.args for a in args)), None)
             if m is None and fn in ("omega", "alpha"):     # the driver's own rate: its vector
                 op = "crank_velocity" if vel else "crank_tangential"
                 vec = next(((st.frm, st.to) for st in arrows if step_of(st) is not None
@@ -274,9 +271,8 @@ def asked(sol: Solution, diagram: str, steps, strokes) -> tuple[Asked, ...]:
             elif m.op.startswith("slider"):      # along a fixed guide: the absolute vector
                 vec = between(V(args[0]), pole)
             else:
-                x = V(args[0])
-                vec = next(((st.frm, st.to) for st in arrows if st.component == "sliding"
-                            and x in (st.frm, st.to)), None)
+                st = sliding_arrow(strokes, steps, V(args[0]), args[1:])
+                vec = None if st is None else (st.frm, st.to)
         else:
             continue
         if vec is not None or meas is not None:
@@ -296,3 +292,15 @@ def _zero(sol: Solution, expr: str) -> bool:
     sizes = [math.hypot(*p.acceleration) for p in sol.points.values()
              if p.acceleration is not None]
     return abs(value) <= noise_floor(sizes)
+
+
+def sliding_arrow(strokes, steps, x: str, under=()) -> Stroke | None:
+    """The sliding vector at vertex ``x``; of a pin in two slots (crossing slots), the one
+    relative to the lever point ``under[0]`` (its step names it)."""
+    by_step = {s.number: s for s in steps}
+    found = [st for st in strokes if st.kind == "arrow" and st.component == "sliding"
+             and x in (st.frm, st.to)]
+    if under:
+        named = [st for st in found if st.of in by_step and under[0] in by_step[st.of].args]
+        found = named or found
+    return found[0] if found else None

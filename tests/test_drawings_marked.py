@@ -27,7 +27,7 @@ from diagrams.components import LOOKS
 from diagrams.notation import mark_labels, plain
 from diagrams.svg import to_svg
 from polygons.evaluate import solve
-from polygons.scene import load_scene, parse_quantity_expr
+from polygons.scene import load_scene
 
 SVG = "{http://www.w3.org/2000/svg}"
 MARKED = ["new-rotary-engine", "new-oscillating-cylinder", "new-slot-on-moving-lever",
@@ -67,7 +67,7 @@ def test_every_asked_quantity_is_marked_on_its_drawing(name):
     as many '← asked' legend rows as the diagram has asked quantities."""
     sol, _, roots = finals(name)
     for ans in sol.scene.answers:
-        fn, args = parse_quantity_expr(ans.quantity)
+        fn, args = ans.q.fn, ans.q.args
         if fn not in WHICH or WHICH[fn][0] not in roots:
             continue
         diagram, comp = WHICH[fn]
@@ -76,7 +76,7 @@ def test_every_asked_quantity_is_marked_on_its_drawing(name):
                        for t in _texts(roots[diagram])), (name, ans.quantity)
             continue
         asked = [c for c in _groups(roots[diagram]) if "vector" in c and "asked" in c]
-        if fn in ("vs", "as") and args[0] in sol.scene.sliders:
+        if fn in ("vs", "as") and args[0] in sol.scene.model.guide:
             comp = None                       # along a fixed guide: the absolute vector
         if comp is not None:
             assert any(comp in c for c in asked), (name, ans.quantity, asked)

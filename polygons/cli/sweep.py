@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import SceneError, UnknownLabelError, suggest
 from ..options import labels
-from ..scene import Crank, Scene, load_scene, parse_quantity_expr
+from ..scene import Crank, Scene, load_scene
 from ..steps import number
 from ..sweep import Sweep, harmonic, sweep
 
@@ -94,22 +94,18 @@ def _default_points(sw: Sweep) -> list[str]:
     drv = scene.driver
     asked = []
     for ans in scene.answers:
-        try:
-            fn, args = parse_quantity_expr(ans.quantity)
-        except SceneError:
+        if ans.q is None or ans.q.fn in ("omega", "alpha", "angle", "arm", "dist"):
             continue
-        if fn in ("omega", "alpha", "angle", "arm", "dist"):
-            continue
-        for lab in args:
+        for lab in ans.q.args:
             if lab in sw.pos and lab not in scene.ground and lab not in asked:
                 asked.append(lab)
     if asked:
         return asked
-    sliders = [s for s in scene.sliders if s in sw.travel
+    sliders = [s for s in scene.model.guide if s in sw.travel
                and not (not isinstance(drv, Crank) and s == drv.point)]
     if sliders:
         return sliders
-    under = {s.coincident for s in scene.slots.values() if s.coincident}
+    under = set(scene.model.under)                  # lever points under a pin (P4)
     placed = [lab for d in sw.plan.dyads for lab in d.placed if lab not in under]
     return [placed[-1]] if placed else [sw.plan.dyads[-1].placed[-1]]
 
@@ -371,7 +367,7 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
     for lab in points:
         if lab in sw.travel and lab in sw.slide_v:
             s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
-            e = scene.sliders[lab].angle
+            e = scene.model.guide[lab].line.angle
             out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
                        f"{number(np.nanmin(s) * f)} … {number(np.nanmax(s) * f)} {lu} "
                        f"(stroke {number((np.nanmax(s) - np.nanmin(s)) * f)} {lu})")
