@@ -49,10 +49,21 @@ def forced_scales(variant) -> dict:
     return {d: make(d, per_cm, forced=True) for d, per_cm in variant.scales.items()}
 
 
-def space_svg(variant) -> bytes:
-    from . import space
+def finished(variant):
+    """The variant's finished drawings (space, velocity, acceleration; no stages) at its
+    round scales, as the :class:`diagrams.figures.Figures` the handout reads."""
+    import diagrams
+    from .figures import Figures
     from .svg import to_svg
-    return to_svg(space.drawing(variant.solution))
+    figs = Figures()
+    for d in diagrams.drawings(variant.solution, forced_scales(variant), None, False):
+        figs.drawing[d.name] = d
+        figs.svg[d.name] = to_svg(d)
+    return figs
+
+
+def space_svg(variant, figs=None) -> bytes:
+    return (figs or finished(variant)).svg["space"]
 
 
 def _num(x: float) -> str:
@@ -60,10 +71,10 @@ def _num(x: float) -> str:
     return number(x)
 
 
-def key_html(exam) -> str:
-    """The teacher's key: every variant's answers and finished diagrams."""
-    import diagrams
-    from .svg import to_svg
+def key_html(exam, figs: dict | None = None) -> str:
+    """The teacher's key: every variant's answers and finished diagrams (``figs``: variant
+    number → :func:`finished`, made here when not given)."""
+    figs = figs or {}
     scene = exam.scene
     parts = ["<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n",
              f"<title>Exam key — {esc(scene.title)}</title>\n<style>{CSS}</style>\n</head>\n"
@@ -94,8 +105,9 @@ def key_html(exam) -> str:
                 f"<td class=\"n\">{_num(a.tolerance * exam.spec.partial_factor)}</td>"
                 f"<td>{esc(SOURCE[a.source])}</td></tr>\n")
         parts.append("</table>\n<div class=\"figs\">\n")
-        for d in diagrams.drawings(v.solution, forced_scales(v), None, False):
-            svg = to_svg(d).decode("utf-8")
+        f = figs.get(v.number) or finished(v)
+        for name in f.svg:
+            svg = f.svg[name].decode("utf-8")
             svg = re.sub(r"^<\?xml[^>]*>\s*", "", svg)
             parts.append(svg + "\n")
         parts.append("</div>\n</section>\n")
@@ -103,12 +115,11 @@ def key_html(exam) -> str:
     return "".join(parts)
 
 
-def worksheet_html(variant, student: str | None = None) -> str:
-    """The handout's worksheet for one variant, at its round scales, with a name line."""
-    from .figures import figures
+def worksheet_html(variant, student: str | None = None, figs=None) -> str:
+    """The handout's worksheet for one variant, at its round scales, with a name line
+    (the worksheet draws no stage figure: :func:`finished` is all it needs)."""
     from .handout import handout
-    text = handout(variant.solution, worksheet=True,
-                   figs=figures(variant.solution, forced_scales(variant)),
+    text = handout(variant.solution, worksheet=True, figs=figs or finished(variant),
                    source_name=f"variant-{variant.number:02d}.toml")
     who = (f"Name: {esc(student)} &nbsp;·&nbsp; " if student else "Name: ____________ · ")
     banner = f"<p class=\"student\">{who}variant {variant.number}</p>\n"
@@ -135,9 +146,13 @@ def pdf_stable(data: bytes) -> bytes:
     """The PDF with its dates and file ID replaced by constants of the same length (the
     cross-reference offsets stay right): byte-identical output for identical content."""
     def date(m):
-        fixed = b"/" + m.group(1) + b" (D:19800101000000"
-        return fixed + b"0" * max(0, len(m.group(0)) - len(fixed) - 1) + b")" \
-            if len(m.group(0)) >= len(fixed) + 1 else m.group(0)
+        # D:YYYYMMDDHHmmSS and any time zone: every digit fixed, the length kept
+        text = m.group(0)
+        head = b"/" + m.group(1) + b" (D:"
+        body = text[len(head):-1]
+        fixed = b"19800101000000"[:len(body)]
+        rest = bytes(b"0"[0] if c in b"0123456789" else c for c in body[len(fixed):])
+        return head + fixed + rest + b")"
     data = _DATE.sub(date, data)
     digest = hashlib.sha256(_ID.sub(b"", data)).hexdigest().upper().encode("ascii")
 

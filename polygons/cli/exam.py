@@ -103,7 +103,8 @@ def run(args) -> int:
 
     from diagrams import exam_sheets as sheets
     from diagrams.browser import find, print_pdf
-    images = {v.number: sheets.space_svg(v) for v in exam.variants}
+    figs = {v.number: sheets.finished(v) for v in exam.variants}
+    images = {v.number: sheets.space_svg(v, figs[v.number]) for v in exam.variants}
     written = [_write(out / "quiz.xml", lms.moodle_xml(exam, images), protect),
                _write(out / "quiz.gift", lms.gift(exam).encode("utf-8"), protect),
                _write(out / "quiz-qti.zip", lms.qti_zip(exam, images), protect)]
@@ -129,15 +130,15 @@ def run(args) -> int:
             data = sheets.pdf_stable(tmp_pdf.read_bytes())
         return _write(stem.with_suffix(".pdf"), data, protect)
 
-    written.append(document(sheets.key_html(exam), out / "key"))
+    written.append(document(sheets.key_html(exam, figs), out / "key"))
     if students:
         for i, name in enumerate(students):
             v = exam.variants[i % len(exam.variants)]
             stem = sheets_dir / f"{i + 1:03d}-{sheets.safe_name(name)}-v{v.number:02d}"
-            written.append(document(sheets.worksheet_html(v, name), stem))
+            written.append(document(sheets.worksheet_html(v, name, figs[v.number]), stem))
     else:
         for v in exam.variants:
-            written.append(document(sheets.worksheet_html(v),
+            written.append(document(sheets.worksheet_html(v, None, figs[v.number]),
                                     sheets_dir / f"variant-{v.number:02d}"))
     kept = len(exam.variants)
     print(f"{kept} variant{'s' if kept != 1 else ''} (seed {exam.seed}) from {exam.drawn} "
