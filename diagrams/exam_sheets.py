@@ -15,6 +15,7 @@ Every piece of text from the scene or the class list is escaped (:func:`diagrams
 from __future__ import annotations
 
 import hashlib
+import math
 import re
 
 from .html import esc
@@ -67,8 +68,13 @@ def space_svg(variant, figs=None) -> bytes:
 
 
 def _num(x: float) -> str:
-    from polygons.exam.lms import number
-    return number(x)
+    """Six significant figures, no e-notation: the rule of ``polygons.exam.lms.number`` (the
+    quiz's numbers; render may not import commands, and tests/test_exam.py holds them equal)."""
+    if x == 0 or not math.isfinite(x):
+        return "0"
+    decimals = max(0, 5 - math.floor(math.log10(abs(x))))
+    text = f"{x:.{decimals}f}"
+    return text.rstrip("0").rstrip(".") if "." in text else text
 
 
 def key_html(exam, figs: dict | None = None) -> str:

@@ -7,6 +7,7 @@ every command, naming the key); kept raw in ``Scene.extra`` and read again, chea
     AB = "40..60 mm step 5"          # a link's length: LOW..HIGH UNIT step STEP
     angle = "20..70 deg step 5"      # the crank's angle, ω and α (a crank driver)
     omega = "10..30 rad/s step 2"
+    title = "Four-bar linkage"      # each variant's heading (+ its number)
     ask = ["omega(BC)", "a(C)"]      # default: the scene's [[answers]] that can be drawn
     min_angle = "30 deg"             # smallest construction intersection angle
     closure_margin = "15 deg"        # smallest angle of the assembly (distance to the other
@@ -54,6 +55,10 @@ TABLES: tuple[Table, ...] = (
             example='"10..30 rad/s step 2"'),
         Key("alpha", "string", "a range of the crank's α (its sense stays the scene's)",
             example='"0..100 rad/s^2 step 10"'),
+        Key("title", "string", "the heading of every variant (its number is added): the "
+                               "scene's title and problem statement may quote values a "
+                               "variant changes, so neither is carried over",
+            example='"Quick-return mechanism"', default="Exam"),
         Key("ask", "array", "the quantities asked, in textbook notation (v, a, an, at, omega, "
                             "alpha, vs, as, cor); default: the scene's [[answers]] of those "
                             "kinds", example='["omega(BC)", "a(C)"]'),
@@ -95,6 +100,7 @@ class Range:
 class ExamSpec:
     ranges: tuple[Range, ...]
     ask: tuple[str, ...]
+    title: str
     min_angle_deg: float
     closure_margin_deg: float
     min_vector_mm: float
@@ -216,7 +222,11 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             1 <= factor <= 20):
         raise SceneError(f"partial_factor must be a number from 1 to 20, got {show(factor)}",
                          file=scene.file, where="exam.partial_factor")
-    return ExamSpec(tuple(ranges), tuple(asked), round(math.degrees(min_angle), 9),
+    title = r.string(raw.get("title", "Exam"), "exam.title")
+    if not title.strip() or len(title) > 200:
+        raise SceneError("title must be 1 to 200 characters", file=scene.file,
+                         where="exam.title")
+    return ExamSpec(tuple(ranges), tuple(asked), title, round(math.degrees(min_angle), 9),
                     round(math.degrees(margin), 9), round(min_vector * 1000.0, 9), attempts,
                     partial,
                     float(factor))

@@ -264,8 +264,7 @@ def grade(sol: Solution, drawing: StudentDrawing, emulated: dict | None = None,
     closures = _closures(sol, diagram, expected, P, k)
     ratio = _wrong_scale(marks)
     if ratio is not None:
-        first = next((m for m in marks if m.expected is not None), None)
-        marks = [_scale_hint(m, ratio, k, first) for m in marks]
+        marks = [_scale_hint(m, ratio, k, diagram) for m in marks]
     score = sum(m.mark for m in marks)
     return DrawingGrade(diagram, drawing.scale_text, tuple(marks), tuple(extras),
                         tuple(closures), ratio, unknown, score, len(marks))
@@ -334,15 +333,15 @@ def _mark(sol, e: Expected, drawn, P, k, k_space, emulated, stated, diagram) -> 
         hint = f"{name} must be {e.rule} ({where})"
     elif not len_ok:
         problem = (f"length {s_mm:.1f} mm, expected {true_mm:.1f} mm ± {len_tol_mm:.1f} "
-                   f"at {drawing_scale(k)}")
+                   f"at {drawing_scale(k, diagram)}")
         hint = f"{name}: recheck its length ({where})"
     mark = 1.0 if (dir_ok and len_ok) else (0.5 if dir_ok else 0.0)
     return VectorMark(name, e, True, dir_ok, sense_ok, len_ok, err, len_err, dtol, tol_pct,
                       mark, problem, hint)
 
 
-def drawing_scale(k: float) -> str:
-    return f"1 mm = {k:.4g}"
+def drawing_scale(k: float, diagram: str) -> str:
+    return f"1 mm = {k:.4g} {'m/s' if diagram == 'velocity' else 'm/s²'}"
 
 
 def _closures(sol, diagram, expected, P, k) -> list[ClosureMark]:
@@ -401,14 +400,14 @@ def _wrong_scale(marks) -> float | None:
     return mid
 
 
-def _scale_hint(m: VectorMark, ratio: float, k: float, first) -> VectorMark:
+def _scale_hint(m: VectorMark, ratio: float, k: float, diagram: str) -> VectorMark:
     from dataclasses import replace
     if not m.drawn or m.length_ok:
         return m
     true_mm = math.hypot(*m.expected.vector) / k
     return replace(m, problem=f"wrong scale: every length is {ratio:.3g}× what the stated "
                               f"scale gives",
-                   hint=f"draw at the stated scale ({drawing_scale(k)}): {m.name} is "
+                   hint=f"draw at the stated scale ({drawing_scale(k, diagram)}): {m.name} is "
                         f"{true_mm:.1f} mm long")
 
 

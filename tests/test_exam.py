@@ -217,10 +217,11 @@ def test_user_text_stays_escaped_in_xml_gift_and_qti(fig7_path, tmp_path):
     text = fig7_path.read_text(encoding="utf-8")
     title = "title = " + __import__("json").dumps(NASTY)
     text = re.sub(r'^title = ".*"$', lambda m: title, text, flags=re.M)
+    text = text.replace("[exam]", "[exam]\ntitle = " + __import__("json").dumps(NASTY))
     path = tmp_path / "nasty.toml"
     path.write_text(text, encoding="utf-8")
     ex = make_exam(str(path), 1, 1)
-    assert ex.scene.title == NASTY
+    assert ex.scene.title == NASTY and ex.variants[0].scene.title.startswith(NASTY)
     xml = lms.moodle_xml(ex)
     root = ET.fromstring(xml)                              # well formed
     stem = root.find("question[@type='numerical']/questiontext/text").text
@@ -298,6 +299,12 @@ def test_exam_table_is_checked_at_load(fig7_path, tmp_path, capsys):
         assert main(["solve", str(bad)]) == 1
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "[exam" in err and words in err, err
+
+
+def test_key_and_quiz_print_the_same_numbers():
+    from diagrams.exam_sheets import _num
+    for x in (0.0, 1e-7, 0.0123456789, 1.0, 29.78268, 123456.789, -2.689234, 4.0e9):
+        assert _num(x) == lms.number(x)
 
 
 def test_pdf_dates_and_id_are_made_constant():

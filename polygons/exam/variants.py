@@ -287,7 +287,10 @@ def _try(data, base, sp: ExamSpec, pick, k, path, seen):
     d.pop("exam", None)
     for r, text in zip(sp.ranges, pick):
         _set(d, r.key, text, base)
-    d["title"] = f"{base.title} — variant {k}"
+    # the title and the statement may quote values the variant changes: neither is kept
+    d["title"] = f"{sp.title} — variant {k}"
+    src = d.get("source", {}) if isinstance(d.get("source"), dict) else {}
+    d["source"] = {key: src[key] for key in ("drawing_tolerance", "mechanism") if key in src}
     try:
         scene = parse_scene(d, file=f"{path} (variant {k})")
         sol = solve(scene)
