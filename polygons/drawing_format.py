@@ -24,7 +24,8 @@ Any element with ``data-vertex`` and ``cx``/``cy`` is a vertex; any element with
 ``data-from``/``data-to`` is an arrow (its own coordinates are not read: the vertices are).
 ``transform`` attributes are not applied (the page writes none).  A DOCTYPE or entity is
 refused; so is a file over 1 MB, more than :data:`MAX_VERTICES` vertices or
-:data:`MAX_VECTORS` arrows, and a coordinate beyond ±10 m of paper.
+:data:`MAX_VECTORS` arrows, a coordinate beyond ±10 m of paper, and a
+scale outside 1e-9 … 1e9 SI units per mm.
 """
 from __future__ import annotations
 
@@ -43,6 +44,8 @@ MAX_BYTES = 1_000_000
 MAX_VERTICES = 200
 MAX_VECTORS = 500
 MAX_MM = 10_000.0
+#: the scales accepted, SI units (m/s, m/s²) per mm of paper
+MIN_SCALE, MAX_SCALE = 1e-9, 1e9
 DIAGRAMS = ("velocity", "acceleration")
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_'′]{0,19}$")
 
@@ -89,9 +92,16 @@ def _scale(value, diagram: str, file: str) -> tuple[float, str]:
     if isinstance(value, (int, float)):
         if not (math.isfinite(value) and value > 0):
             raise _fail(f"scale must be positive, got {show(value)}", file, "scale")
+        if not MIN_SCALE <= value <= MAX_SCALE:
+            raise _fail(f"a scale from {MIN_SCALE:g} to {MAX_SCALE:g} SI units per mm, got "
+                        f"{show(value)}", file, "scale")
         return float(value), f"1 mm = {value:g} SI"
     per_cm = scale_per_cm(value, diagram, file=file, where="scale", error=DrawingError)
-    return per_cm / 10.0, " ".join(str(value).split())
+    si = per_cm / 10.0
+    if not MIN_SCALE <= si <= MAX_SCALE:
+        raise _fail(f"a scale from {MIN_SCALE:g} to {MAX_SCALE:g} SI units per mm, got "
+                    f"{show(value)}", file, "scale")
+    return si, " ".join(str(value).split())
 
 
 def _name(value, file: str, where: str) -> str:

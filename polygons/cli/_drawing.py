@@ -6,6 +6,8 @@ something is off (like ``--measured``), 1 on an unreadable file.
 """
 from __future__ import annotations
 
+import math
+
 from ..errors import SceneError
 
 
@@ -60,6 +62,11 @@ def report(sol, g, path: str) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _f(x):
+    """A number JSON can carry (an infinite or undefined one is null)."""
+    return x if x is None or math.isfinite(x) else None
+
+
 def to_json(sol, g, path: str) -> dict:
     def mark(m):
         return {"vector": m.name, "rule": m.expected.rule if m.expected else None,
@@ -67,14 +74,16 @@ def to_json(sol, g, path: str) -> dict:
                           "op": m.expected.step.op} if m.expected else None),
                 "drawn": m.drawn, "mark": m.mark, "direction_ok": m.direction_ok,
                 "sense_ok": m.sense_ok, "length_ok": m.length_ok,
-                "angle_error_deg": m.angle_err_deg, "length_error_pct": m.length_err_pct,
-                "direction_tolerance_deg": m.direction_tol_deg,
-                "length_tolerance_pct": m.length_tol_pct, "problem": m.problem,
+                "angle_error_deg": _f(m.angle_err_deg),
+                "length_error_pct": _f(m.length_err_pct),
+                "direction_tolerance_deg": _f(m.direction_tol_deg),
+                "length_tolerance_pct": _f(m.length_tol_pct), "problem": m.problem,
                 "hint": m.hint}
     return {"case": {"file": sol.scene.file, "title": sol.scene.title}, "drawing": path,
             "diagram": g.diagram, "scale": g.scale_text, "score": g.score,
             "out_of": g.out_of, "all_ok": g.ok, "vectors": [mark(m) for m in g.marks],
             "extras": [mark(m) for m in g.extras],
-            "closures": [{"vertex": c.vertex, "off_mm": c.off_mm, "tolerance_mm": c.tol_mm,
+            "closures": [{"vertex": c.vertex, "off_mm": _f(c.off_mm),
+                          "tolerance_mm": _f(c.tol_mm),
                           "ok": c.ok, "hint": c.hint} for c in g.closures],
-            "wrong_scale_ratio": g.scale_ratio, "unknown_vertices": list(g.unknown)}
+            "wrong_scale_ratio": _f(g.scale_ratio), "unknown_vertices": list(g.unknown)}

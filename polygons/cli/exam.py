@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import csv
 import io
-import sys
 from pathlib import Path
 
 from ..errors import PolygonsError, SceneError
@@ -111,8 +110,8 @@ def run(args) -> int:
 
     pdf = not args.html and find() is not None
     if not args.html and not pdf:
-        print("polygons: Chromium not found (Debian: apt-get install chromium; or set "
-              "POLYGONS_CHROMIUM): writing the key and worksheets as HTML", file=sys.stderr)
+        print("Chromium not found (Debian: apt-get install chromium; or set "
+              "POLYGONS_CHROMIUM): writing the key and worksheets as HTML")
     sheets_dir = out / "worksheets"
     if sheets_dir.exists() and not sheets_dir.is_dir():
         raise ExamError(f"{sheets_dir} exists and is not a folder")

@@ -203,7 +203,8 @@ def _set(data: dict, key: str, text: str, base: Scene) -> None:
     data.setdefault(table, {})
     if table == "driver" and name in ("omega", "alpha"):
         # the sense stays the scene's: written out in words, any sense in the text dropped
-        rate = base.driver.omega if name == "omega" else getattr(base.driver, "alpha", 0.0)
+        rate = (base.driver.omega if name == "omega"
+                else getattr(base.driver, "alpha", 0.0)) or 0.0
         sense_key = "sense" if name == "omega" else "alpha_sense"
         data["driver"][sense_key] = "CW" if rate < 0 else "CCW"
     data[table][name] = text
