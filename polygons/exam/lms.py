@@ -234,7 +234,10 @@ def _qti_image(stem: str, v: Variant) -> str:
 
 def qti_assessment(exam: ExamSet, images: Mapping[int, bytes]) -> bytes:
     root = ET.Element("questestinterop", {
-        "xmlns": "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"})
+        "xmlns": "http://www.imsglobal.org/xsd/ims_qtiasiv1p2",
+        "xmlns:xsi": "http://www.w3.org/2001/XMLSchema-instance",
+        "xsi:schemaLocation": "http://www.imsglobal.org/xsd/ims_qtiasiv1p2 "
+                              "http://www.imsglobal.org/xsd/ims_qtiasiv1p2p1.xsd"})
     asm = ET.SubElement(root, "assessment", {"ident": "polygons-exam",
                                              "title": exam.scene.title})
     section = ET.SubElement(asm, "section", {"ident": "root_section"})
