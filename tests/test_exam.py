@@ -97,6 +97,23 @@ def test_fig7_exam_varies_the_table_and_matches_the_slotted_lever(fig7_exam):
     assert len(seen) == 3                    # no two variants alike
 
 
+def test_quiz_tolerance_is_what_polygons_check_accepts(fig7_exam):
+    """The numerical question's tolerance is check's: the emulated 95th percentile, else the
+    stated tolerance, never under a 0.5 mm reading at the variant's scale."""
+    from polygons.cli.check import grade
+    from polygons.exam.variants import _Scale
+    for v in fig7_exam.variants:
+        scales = {d: _Scale(per_cm) for d, per_cm in v.scales.items()}
+        for a in v.asked:
+            inside = a.answer + 0.99 * a.tolerance
+            outside = a.answer + 1.01 * a.tolerance
+            for x, ok in ((inside, True), (outside, False)):
+                g = grade(v.solution, [(a.symbol, a.expr, x, None)], scales=scales)[0]
+                assert g.ok is ok, (a.expr, x, g.tolerance, a.tolerance)
+                assert g.tolerance == pytest.approx(a.tolerance, rel=1e-12)
+                assert g.source == a.source
+
+
 def test_same_seed_same_variants_other_seed_other(fig7_path):
     a, b = make_exam(str(fig7_path), 2, 9), make_exam(str(fig7_path), 2, 9)
     assert lms.moodle_xml(a) == lms.moodle_xml(b) and lms.gift(a) == lms.gift(b)

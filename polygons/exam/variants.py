@@ -99,18 +99,29 @@ def _args(expr: str) -> tuple[str, tuple[str, ...]]:
     return fn, tuple(a for a in rest.rstrip(")").split(",") if a)
 
 
-def words(expr: str) -> str:
+def _positive(sol: Solution | None, label: str) -> str:
+    """Which way a sliding value counts positive, from the slide's record."""
+    sr = sol.slides.get(label) if sol is not None else None
+    if sr is None or sr.along != "guide":
+        lever = sr.along if sr is not None else "its lever"
+        return f"along the slot of {lever}, + away from its pivot"
+    angle = round(math.degrees(math.atan2(sr.direction[1], sr.direction[0])), 6)
+    return f"along its guide, + towards {angle:g}° from +x"
+
+
+def words(expr: str, sol: Solution | None = None) -> str:
     fn, args = _args(expr)
     a0 = args[0] if args else ""
     rel = f" relative to {args[1]}" if len(args) > 1 else ""
+    if fn in ("vs", "as"):
+        what = "velocity" if fn == "vs" else "acceleration"
+        return f"sliding {what} of {a0} ({_positive(sol, a0)})"
     return {"v": f"velocity of {a0}{rel}", "a": f"acceleration of {a0}{rel}",
             "an": f"centripetal acceleration of {a0}{rel}",
             "at": f"tangential acceleration of {a0}{rel}",
             "omega": f"angular velocity of link {a0}",
             "alpha": f"angular acceleration of link {a0}",
             "cor": f"Coriolis acceleration of {a0}",
-            "vs": f"sliding velocity of {a0} along its slot (+ away from the pivot)",
-            "as": f"sliding acceleration of {a0} along its slot (+ away from the pivot)",
             }[fn]
 
 
@@ -193,7 +204,7 @@ def answers(sol: Solution, asked: tuple[str, ...], scales: Mapping[str, float]
         sense = None
         if fn in ("omega", "alpha") and value != 0:
             sense = "CCW" if value > 0 else "CW"
-        out.append(Asked(expr, words(expr), symbol(expr),
+        out.append(Asked(expr, words(expr, sol), symbol(expr),
                          UNIT[dimension_of_quantity(expr)], value, tol, source, sense))
     return tuple(out)
 
@@ -249,6 +260,10 @@ def make_exam(path: str, n: int, seed: int) -> ExamSet:
         raise SceneError("nothing to ask: give [exam] ask = [\"omega(BC)\", ...] (the scene's "
                          "[[answers]] name no velocity or acceleration)", file=path,
                          where="exam.ask")
+    if not sp.ranges and n > 1:
+        raise SceneError("the [exam] table varies nothing: add a range such as "
+                         "angle = \"20..70 deg step 5\" (or ask for one variant)", file=path,
+                         where="exam")
     base_sol = solve(base)
     for i, expr in enumerate(sp.ask):          # every asked quantity exists in this mechanism
         try:
