@@ -58,10 +58,14 @@ def read_students(path: str) -> list[str]:
     except UnicodeDecodeError:
         raise ExamError(f"--students {path}: not UTF-8 text") from None
     names = []
-    for row in csv.reader(io.StringIO(text)):
-        name = " ".join(row[0].split()) if row else ""
-        if name and not (not names and name.lower() in ("name", "student", "names")):
-            names.append(name[:200])
+    try:
+        for row in csv.reader(io.StringIO(text)):
+            name = " ".join("".join(c for c in row[0] if c.isprintable() or c.isspace())
+                            .split()) if row else ""
+            if name and not (not names and name.lower() in ("name", "student", "names")):
+                names.append(name[:200])
+    except csv.Error as exc:
+        raise ExamError(f"--students {path}: not a CSV class list ({exc})") from None
     if not names:
         raise ExamError(f"--students {path}: no names (one name per line)")
     if len(names) > MAX_STUDENTS:
@@ -69,7 +73,7 @@ def read_students(path: str) -> list[str]:
     return names
 
 
-def _out_dir(out: str, protect: list[str]) -> Path:
+def _out_dir(out: str) -> Path:
     d = Path(out)
     if d.exists() and not d.is_dir():
         raise ExamError(f"--out {out} exists and is not a folder")
@@ -98,7 +102,7 @@ def run(args) -> int:
     if args.students:
         protect.add(Path(args.students).resolve())
     exam = make_exam(args.scene, args.variants, args.seed)
-    out = _out_dir(args.out, [])
+    out = _out_dir(args.out)
 
     from diagrams import exam_sheets as sheets
     from diagrams.browser import find, print_pdf
