@@ -105,7 +105,18 @@ def run(args) -> int:
     out = _out_dir(args.out)
 
     from diagrams import exam_sheets as sheets
-    from diagrams.browser import find, print_pdf
+    from diagrams.browser import TIMEOUT, BrowserError, find, run as chromium
+
+    def print_pdf(html_path: Path, pdf_path: Path, timeout: int) -> Path:
+        """diagrams.browser.print_pdf with a timeout that grows with the key."""
+        out = chromium(html_path, f"--print-to-pdf={pdf_path.resolve()}",
+                       "--no-pdf-header-footer", "--run-all-compositor-stages-before-draw",
+                       timeout=timeout)
+        if not pdf_path.exists() or pdf_path.stat().st_size == 0:
+            last = (out.stderr.strip().splitlines() or ["no message"])[-1]
+            raise BrowserError(f"Chromium did not write {pdf_path.name} (exit "
+                               f"{out.returncode}: {last})")
+        return pdf_path
     figs = {v.number: sheets.finished(v) for v in exam.variants}
     images = {v.number: sheets.space_svg(v, figs[v.number]) for v in exam.variants}
     written = [_write(out / "quiz.xml", lms.moodle_xml(exam, images), protect),
@@ -121,7 +132,7 @@ def run(args) -> int:
         raise ExamError(f"{sheets_dir} exists and is not a folder")
     sheets_dir.mkdir(exist_ok=True)
 
-    def document(html_text: str, stem: Path) -> Path:
+    def document(html_text: str, stem: Path, timeout: int = TIMEOUT) -> Path:
         html_path = stem.with_suffix(".html")
         if not pdf:
             return _write(html_path, html_text.encode("utf-8"), protect)
@@ -129,11 +140,13 @@ def run(args) -> int:
         with tempfile.TemporaryDirectory(prefix="polygons-exam-") as tmp:
             tmp_html = Path(tmp) / "doc.html"
             tmp_html.write_text(html_text, encoding="utf-8")
-            tmp_pdf = print_pdf(tmp_html, Path(tmp) / "doc.pdf")
+            tmp_pdf = print_pdf(tmp_html, Path(tmp) / "doc.pdf", timeout)
             data = sheets.pdf_stable(tmp_pdf.read_bytes())
         return _write(stem.with_suffix(".pdf"), data, protect)
 
-    written.append(document(sheets.key_html(exam, figs), out / "key"))
+    # the key grows with the class: ~0.3 s of Chromium per variant
+    written.append(document(sheets.key_html(exam, figs), out / "key",
+                            TIMEOUT + len(exam.variants)))
     if students:
         for i, name in enumerate(students):
             v = exam.variants[i % len(exam.variants)]
