@@ -62,11 +62,7 @@ def quantity(sol: Solution, expr: str) -> float:
 
     def link_of(x, y):
         for name, lr in sol.links.items():
-            ends = set(link_ends(scene, name))
-            body = {bp.label for bp in scene.points.values() if bp.link == name}
-            slot_far = {x for s in scene.slots.values() if s.lever == name
-                        for x in (s.far, s.coincident, s.pivot) if x}
-            if {x, y} <= ends | body | slot_far:
+            if {x, y} <= set(scene.model.body(name).labels):
                 return lr
         raise SceneError(f"{x} and {y} are not on one link, so {expr!r} has no "
                          f"centripetal/tangential split", file=scene.file)

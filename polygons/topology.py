@@ -376,11 +376,16 @@ def guided_pin(scene, slot) -> bool:
     """Whether the pin of ``slot`` is found in the slot of a lever placed first (the lever
     driven, or placed by its own links): the lever has a far end and the pin hangs from
     exactly one link of known length that is not the driving crank."""
+    return guided_pin_in(scene.links, scene.driver, slot)
+
+
+def guided_pin_in(links, driver, slot) -> bool:
+    """:func:`guided_pin` from the parsed [links] and driver (before the scene is built)."""
     if slot.far is None:
         return False
-    joints = [l for l in scene.links.values()
+    joints = [l for l in links.values()
               if slot.pin in (l.a, l.b) and l.length is not None and l.name != slot.lever]
-    return len(joints) == 1 and joints[0].name != getattr(scene.driver, "link", None)
+    return len(joints) == 1 and joints[0].name != getattr(driver, "link", None)
 
 
 def slot_along_lever(scene, slot) -> bool:
