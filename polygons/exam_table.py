@@ -172,9 +172,10 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
     if ask is None:
         asked = []
         for ans in scene.answers:
-            fn = ans.quantity.split("(")[0].strip()
-            if fn in ASKABLE and ans.quantity not in asked:
-                asked.append(ans.quantity)
+            fn, args = parse_expr(ans.quantity) if parse_expr is not None else ("", ())
+            text = f"{fn}({','.join(args)})"
+            if fn in ASKABLE and text not in asked:
+                asked.append(text)
     else:
         if isinstance(ask, str):
             ask = [a.strip() for a in ask.split(";") if a.strip()]
@@ -186,9 +187,11 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
                              where="exam.ask")
         asked = []
         for i, a in enumerate(ask):
-            if parse_expr is not None:
-                parse_expr(a, file=scene.file, where=f"exam.ask[{i}]")
-            fn = a.split("(")[0].strip()
+            if parse_expr is None:      # pragma: no cover - the loader always passes it
+                raise SceneError("cannot read exam.ask without the scene's grammar",
+                                 file=scene.file, where="exam.ask")
+            fn, args = parse_expr(a, file=scene.file, where=f"exam.ask[{i}]")
+            a = f"{fn}({','.join(args)})"            # one spelling: 'v( C )' is 'v(C)'
             if fn not in ASKABLE:
                 raise SceneError(f"{show(a)} cannot be asked: an exam asks "
                                  f"{', '.join(ASKABLE)}", file=scene.file,

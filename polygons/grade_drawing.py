@@ -280,7 +280,7 @@ def _mark(sol, e: Expected, drawn, P, k, k_space, emulated, stated, diagram) -> 
     given = getattr(sol.scene.driver, "link", None)
     if e.quantity in emulated:
         rel = emulated[e.quantity] * e.factor
-    elif e.quantity and e.quantity.startswith("omega(") and e.quantity[6:-1] == given:
+    elif given is not None and e.quantity == f"omega({given})":
         rel = 0.0           # the crank's ω is given: only the pencil and the rule
     else:
         rel = stated

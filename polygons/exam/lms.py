@@ -84,7 +84,7 @@ def stem_html(exam: ExamSet, v: Variant, a: Asked, image: bool, sense: bool = Fa
         return head + (f"<p>In which sense is the {html.escape(a.words)} "
                        f"({html.escape(a.symbol)})?</p>")
     what = html.escape(a.words)
-    if a.expr.startswith(("omega(", "alpha(")):
+    if a.fn in ("omega", "alpha"):
         what += " (its magnitude; the sense is asked separately)"
     return head + (f"<p>Draw the construction and find the {what}, "
                    f"{html.escape(a.symbol)}, in {html.escape(ASCII_UNIT[a.unit])}.</p>")

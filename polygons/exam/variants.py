@@ -52,6 +52,7 @@ DEFAULT_ANGLES = "0..350 deg step 10"
 class Asked:
     """One asked quantity of one variant."""
     expr: str               # 'omega(BC)'
+    fn: str                 # its function, typed at load: 'omega'
     words: str              # 'angular velocity of BC'
     symbol: str             # 'ω_BC'
     unit: str               # SI unit shown ('rad/s')
@@ -63,7 +64,7 @@ class Asked:
     @property
     def answer(self) -> float:
         """What the student writes: a magnitude (the sense of ω, α is a separate choice)."""
-        return abs(self.value) if self.expr.split("(")[0] not in ("vs", "as") else self.value
+        return abs(self.value) if self.fn not in ("vs", "as") else self.value
 
 
 @dataclass(frozen=True)
@@ -95,8 +96,8 @@ _SYMBOL = {"v": "v", "a": "a", "an": "aⁿ", "at": "aᵗ", "omega": "ω", "alpha
 
 
 def _args(expr: str) -> tuple[str, tuple[str, ...]]:
-    fn, _, rest = expr.replace(" ", "").partition("(")
-    return fn, tuple(a for a in rest.rstrip(")").split(",") if a)
+    """(function, labels) of a quantity, read by the scene's one grammar (typed, cached)."""
+    return parse_quantity_expr(expr)
 
 
 def _positive(sol: Solution | None, label: str) -> str:
@@ -200,11 +201,11 @@ def answers(sol: Solution, asked: tuple[str, ...], scales: Mapping[str, float]
         tol = tolerance_for(sol, expr, value, pct, sc)
         if tol > pct * abs(value) * (1 + 1e-9):
             source = "reading"
-        fn = expr.split("(")[0]
+        fn = _args(expr)[0]
         sense = None
         if fn in ("omega", "alpha") and value != 0:
             sense = "CCW" if value > 0 else "CW"
-        out.append(Asked(expr, words(expr, sol), symbol(expr),
+        out.append(Asked(expr, fn, words(expr, sol), symbol(expr),
                          UNIT[dimension_of_quantity(expr)], value, tol, source, sense))
     return tuple(out)
 
