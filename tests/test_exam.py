@@ -212,6 +212,8 @@ def test_qti_package_structure(fig7_exam):
     q = {"q": "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"}
     items = quiz.findall(".//q:item", q)
     kinds = [i.find(".//q:fieldentry", q).text for i in items]
+    first = items[0].find(".//q:mattext", q).text
+    assert 'src="%24IMS-CC-FILEBASE%24/images/variant-01-space.svg"' in first
     assert kinds.count("numerical_question") == 5 * len(fig7_exam.variants)
     asked = {f"v{v.number:02d}-{lms._ident(a.expr)}": a for v in fig7_exam.variants
              for a in v.asked}

@@ -229,7 +229,9 @@ def _mat(parent, html_text: str) -> None:
 
 
 def _qti_image(stem: str, v: Variant) -> str:
-    return stem.replace(f"@@PLUGINFILE@@/{image_name(v)}", f"images/{image_name(v)}")
+    """Canvas's reference to a file of the package (``$IMS-CC-FILEBASE$``, URL-escaped)."""
+    return stem.replace(f"@@PLUGINFILE@@/{image_name(v)}",
+                        f"%24IMS-CC-FILEBASE%24/images/{image_name(v)}")
 
 
 def qti_assessment(exam: ExamSet, images: Mapping[int, bytes]) -> bytes:
