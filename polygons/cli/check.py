@@ -595,8 +595,10 @@ def run(args) -> int:
     if not args.measured and not args.drawing:
         raise MeasuredError("give --measured NAME=VALUE ... or --drawing FILE")
     if args.drawing:
-        if args.measured:
-            raise MeasuredError("give --measured or --drawing, not both")
+        if args.measured or args.scale or args.tolerance is not None:
+            raise MeasuredError("--drawing takes neither --measured, --scale nor --tolerance "
+                                "(the drawing states its scale; its tolerances are the "
+                                "emulation's)")
         from . import _drawing
         g = _drawing.grade_file(sol, args.drawing, emulated_tolerances(sol),
                                 stated_tolerance(sol))
