@@ -313,7 +313,7 @@ def _try(data, base, sp: ExamSpec, pick, k, path, seen):
         sol = solve(scene)
         sol.steps                       # the construction, drawn
         closure = closure_angle_deg(scene)
-    except PolygonsError:
+    except (PolygonsError, Warning):    # (a command runs with every warning an error)
         return "does not assemble or cannot be constructed", None
     if closure < sp.closure_margin_deg:
         return f"within {sp.closure_margin_deg:g}° of the other closure or a toggle", None
@@ -321,8 +321,12 @@ def _try(data, base, sp: ExamSpec, pick, k, path, seen):
     why = _rejects(sol, sp, scales, sp.ask)
     if why:
         return why, None
+    try:
+        asked = answers(sol, sp.ask, scales)
+    except (PolygonsError, Warning):
+        return "its answers cannot be read or emulated", None
     values = tuple((r.name, text) for r, text in zip(sp.ranges, pick))
-    return "", Variant(k, values, scene, sol, answers(sol, sp.ask, scales), scales,
+    return "", Variant(k, values, scene, sol, asked, scales,
                        sol.min_intersection_angle_deg or 90.0, closure)
 
 
