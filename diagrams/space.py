@@ -90,7 +90,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
 
     # slotted levers
     slotted = set()
-    for slot in scene.model.slots():
+    for slot in scene.model.slots() + scene.model.crossings():
         pivot, lever = slot.line.origin, slot.carrier
         if slot.at not in P or pivot not in P:
             continue
@@ -366,7 +366,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     for name, ln in scene.links.items():
         if ln.a in sol.placement.points and ln.b in sol.placement.points:
             legend.append((f"{name} = {number(ln.length * 1000)} mm", "normal"))
-    for slot in scene.model.slots():
+    for slot in scene.model.slots() + scene.model.crossings():
         legend.append((f"{slot.at} slides in the slot of {slot.carrier} "
                        f"(pivot {slot.line.origin})", "normal"))
     for lab, g in scene.model.guide.items():

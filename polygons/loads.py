@@ -203,8 +203,9 @@ AnswerFields = Callable[..., dict]
 
 
 #: the kinds of body and pair the force analysis handles (polygons.model): not a collar
-#: driven along a link, whose prescribed slide has no force model yet
-HANDLES = BUILT - {"collar"}
+#: driven along a link, whose prescribed slide has no force model yet, nor a pin in two
+#: moving slots (two slot normals at one massless pin: not modelled yet)
+HANDLES = BUILT - {"collar", "cross-block"}
 
 
 def _guides(model) -> tuple[str, ...]:

@@ -146,3 +146,14 @@ class Answer:
     desc: str
     note: str
     q: Quantity | None = None   # ``quantity`` typed (parse_quantity_expr), set at load
+
+
+@dataclass(frozen=True)
+class Crossing:
+    """A pin ``pin`` sliding in the straight slots of two moving levers at once (crossing
+    slots): ``levers`` (each a link in [links], its slot along its first label → its second)
+    and ``coincident``, each lever's point under the pin."""
+
+    pin: str
+    levers: tuple[str, str]
+    coincident: tuple[str, str]

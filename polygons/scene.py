@@ -91,6 +91,8 @@ class Scene:
     loads: Any = None           # polygons.loads.Loads: the force tables, parsed and checked
     #: the mechanism model (polygons.model.Mechanism): bodies and pairs, read once at load
     model: Any = None
+    #: pins in two moving slots at once ([crossing]; polygons.records.Crossing)
+    crossing: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
     #: second inputs: prescribed slides along a link (:mod:`polygons.topology`)
     prescribed: Mapping[str, topology.Slide] = field(
         default_factory=lambda: MappingProxyType({}))
@@ -115,6 +117,10 @@ class Scene:
         for sl in self.prescribed.values():
             seen[sl.coincident] = None
             seen[sl.point] = None
+        for cr in self.crossing.values():
+            seen[cr.pin] = None
+            for c in cr.coincident:
+                seen[c] = None
         return tuple(seen)
 
     def link_between(self, p: str, q: str) -> Link | None:
@@ -256,7 +262,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                 extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
     r = _Reader(file)
-    r.table(data, "", TOP_KEYS + OPTION_KEYS + extra_keys,
+    r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
             required=("ground", "links", "driver"))
     options = parse_options(data, file)
     title = r.string(data["title"], "title") if "title" in data else path_stem(file)
@@ -404,6 +410,17 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             need_label(r.label(label, where), where)
             sliders[label] = Guide(through, angle)
 
+    # crossing slots: a pin in the slots of two moving levers
+    crossing = {}
+    for pin, spec in r.named(data.get("crossing", {}), "crossing").items():
+        if pin in slots or pin in sliders or pin in crossing:
+            raise SceneError(f"{pin} already slides in a slot or on a guide; a pin in two "
+                             f"slots is stated once, in [crossing.{pin}]", file=file,
+                             where=f"crossing.{pin}")
+        cr = topology.parse_crossing(pin, spec, r, links, known | set(sliders))
+        crossing[pin] = cr
+        known |= {pin, *cr.coincident}
+
     # driver
     drv = data["driver"]
     r.table(drv, "driver", KEYS["driver"])
@@ -507,6 +524,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     # the joint tables read once into bodies and pairs: every method reads this model
     model = build_model(ground=ground, links=links, sliders=sliders, slots=slots,
                         points=points, prescribed=prescribed, driver=driver,
+                        crossing=crossing,
                         along_lever=lambda slot: bool(slot.offset) or topology.guided_pin_in(
                             links, driver, slot))
     # (every field of Scene, set at once; loads set below, before the scene is handed out)
@@ -520,7 +538,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                    drawn=MappingProxyType(drawn),
                    extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
                    options=options, loads=None, prescribed=MappingProxyType(prescribed),
-                   model=model)
+                   model=model, crossing=MappingProxyType(crossing))
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
     scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
@@ -631,7 +649,7 @@ _CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
 QUANTITY_FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x",
                       "y", "dir_v", "dir_a", "angle", "arm")
 _ARITY = {"angle": (3,), "arm": (3,), "v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,),
-          "dist": (2,)}
+          "dist": (2,), "vs": (1, 2), "as": (1, 2), "cor": (1, 2)}
 
 
 def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None = None):
