@@ -14,7 +14,7 @@ from polygons.errors import PolygonsError
 from polygons.evaluate import Solution
 from polygons.plan import Step
 
-from .components import component_of
+from .components import carried_by, component_of
 from .notation import slot_names, vector
 
 Pt = tuple[float, float]
@@ -99,7 +99,7 @@ def construction(sol: Solution, diagram: str) -> Construction:
                     tail, tip, frm, to = ln.at, s.point, ln.start, s.end
                 strokes.append(Stroke(s.number, "arrow", "resolved", tail, tip, frm, to,
                                       ln.quantity, f"{vector(frm, to)}: {ln.quantity}",
-                                      component_of(ln), ln.number))
+                                      carried_by(ln), ln.number))
                 made.add((frm, to))
             if (pole, s.end) not in made:
                 strokes.append(Stroke(s.number, "arrow", "result", vx[pole], s.point, pole,
