@@ -521,7 +521,8 @@ def stroke_items(lay: Layout, stage: int | None):
         faded = upto is not None and newest < upto
         for n in visible:
             pole = n == con.pole
-            pts_g.append(Circle(at, 0.9 if pole else 0.55, "pole" if pole else "vertex",
+            pts_g.append(Circle(lay.P(con.vertices[n]), 0.9 if pole else 0.55,   # its own
+                                "pole" if pole else "vertex",                       # place
                                 faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
         lab_g.append(Text(x, base, text, lay.size(LABEL_SIZE), role="vertex", faded=faded,
                           cls="vertex-label", weight="bold" if not faded else "normal"))
