@@ -99,8 +99,9 @@ def page(sol, figs=None, n: int = FRAMES) -> str:
     title = scene.title
     sid = scene.source.get("id", "")
     head = plain(f"{sid}: {title}" if sid else title)
-    stem = re.sub(r"[^A-Za-z0-9._-]+", "-", str(scene.file or sid or "scene")).strip("-.")
-    stem = re.sub(r"\.toml$", "", stem.rsplit("/", 1)[-1]) or "scene"
+    from pathlib import PurePath
+    base = PurePath(str(scene.file)).stem if scene.file else (sid or "scene")
+    stem = re.sub(r"[^A-Za-z0-9._-]+", "-", base).strip("-.") or "scene"
     data["title"] = head
     data["file"] = stem[:60]
     kinds, seen = [], set()

@@ -290,6 +290,6 @@ def drawing_mode(sol, con, lay, names) -> dict:
     per_mm = sc.per_cm_display / 10.0
     return {"scale": f"1 mm = {float(f'{per_mm:.6g}'):g} {unit}",
             "statement": sc.statement, "paper": [W, H],
-            "cursor": [round(pole[0] * 2) / 2, round(pole[1] * 2) / 2],
+            "cursor": [float(round(pole[0])), float(round(pole[1]))],
             "vertices": names, "labels": {v: vertex_name(v) for v in names},
             "vectors": vectors}

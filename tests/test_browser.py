@@ -176,6 +176,35 @@ def test_pdf_without_html_suffix_prints_the_page_not_its_source(tmp_path):
 DRIVE = """<script>
 window.addEventListener('load', function () {
   var out = {};
+  function hits(s, r) {                       // segment s = [x1,y1,x2,y2] meets rect r?
+    var n = 200;
+    for (var i = 0; i <= n; i++) {
+      var x = s[0] + (s[2] - s[0]) * i / n, y = s[1] + (s[3] - s[1]) * i / n;
+      if (x > r.x && x < r.x + r.width && y > r.y && y < r.y + r.height) { return true; }
+    }
+    return false;
+  }
+  function texts(id) {                        // every label: inside the panel, readable
+    var svg = document.getElementById(id), R = svg.getBoundingClientRect(), bad = [];
+    svg.querySelectorAll('text').forEach(function (t) {
+      var r = t.getBoundingClientRect();
+      if (r.left < R.left - 0.5 || r.right > R.right + 0.5 || r.top < R.top - 0.5 ||
+          r.bottom > R.bottom + 0.5) { bad.push('outside: ' + t.textContent); }
+      if (r.height < 10) { bad.push('small (' + r.height.toFixed(1) + ' px): ' + t.textContent); }
+    });
+    return bad;
+  }
+  function onLinks() {                        // no point label on a link
+    var bad = [], links = [];
+    document.querySelectorAll('#mech line.link').forEach(function (l) {
+      links.push([+l.getAttribute('x1'), +l.getAttribute('y1'), +l.getAttribute('x2'), +l.getAttribute('y2')]);
+    });
+    document.querySelectorAll('#mech text.pt').forEach(function (t) {
+      var b = t.getBBox();
+      links.forEach(function (s) { if (hits(s, b)) { bad.push(t.textContent); } });
+    });
+    return bad;
+  }
   try {
     var P = window.polygonsPage, names = [];
     out.stages = P.stages;
@@ -184,6 +213,8 @@ window.addEventListener('load', function () {
     P.back(); names.push(P.stage());
     out.names = names;
     out.start = P.frame();
+    out.bad_start = texts('mech').concat(texts('vpoly'), texts('apoly'));
+    out.on_links_start = onLinks();
     var s = document.getElementById('angle');
     s.value = String(FRAME); s.dispatchEvent(new Event('input'));       // a drag's events
     out.frame = P.frame();
@@ -192,12 +223,24 @@ window.addEventListener('load', function () {
       out.points[c.getAttribute('data-point')] = [+c.getAttribute('cx'), +c.getAttribute('cy')];
     });
     out.vel_arrows = document.querySelectorAll('#mech line.vel').length;
-    out.vlabels = document.querySelectorAll('#vpoly text[data-label]').length;
-    out.alabels = document.querySelectorAll('#apoly text[data-label]').length;
-    P.hover(0);
-    out.hi = document.querySelectorAll('.hi').length;
-    out.hi_polys = document.querySelectorAll('#vpoly .hi, #apoly .hi').length;
-  } catch (e) { out.error = String(e); }
+    out.vtext = Array.prototype.map.call(document.querySelectorAll('#vpoly text.vx'),
+                                         function (t) { return t.textContent; }).join(' | ');
+    out.atext = Array.prototype.map.call(document.querySelectorAll('#apoly text.vx'),
+                                         function (t) { return t.textContent; }).join(' | ');
+    out.bad = texts('mech').concat(texts('vpoly'), texts('apoly'));
+    out.on_links = onLinks();
+    out.kinds = Array.prototype.map.call(document.querySelectorAll('#apoly line.comp'),
+                                         function (l) { return l.getAttribute('data-kind'); });
+    out.hi = {};
+    var edges = JSON.parse(document.getElementById('frames').textContent).edges;
+    edges.forEach(function (e, i) {
+      P.hover(i);
+      out.hi[i] = {link: document.querySelectorAll('#mech line.link.hi').length,
+                   polys: Array.prototype.map.call(document.querySelectorAll('#vpoly line.comp.hi, #apoly line.comp.hi'),
+                     function (l) { return l.getAttribute('data-from') + '>' + l.getAttribute('data-to'); })};
+    });
+    P.hover(-1);
+  } catch (e) { out.error = String(e) + ' ' + e.stack; }
   var pre = document.createElement('pre'); pre.id = 'drive';
   pre.textContent = JSON.stringify(out); document.body.appendChild(pre);
 });
@@ -208,7 +251,7 @@ PAGE_CASES = [p.name for p in sorted(CASES.glob("*.toml"))]
 
 def _page_data(text: str) -> dict:
     m = re.search(r'<script type="application/json" id="frames">(.*?)</script>', text, re.S)
-    return json.loads(m.group(1).replace("<\\/", "</"))
+    return json.loads(m.group(1))
 
 
 @needs_chromium
@@ -216,8 +259,10 @@ def _page_data(text: str) -> dict:
 def test_interactive_page_steps_drags_and_highlights(case, tmp_path):
     """Every shipped case: the page loads with no error and fetches nothing, Next/Back step
     through the stages one at a time, a slider drag redraws the mechanism at that frame of
-    the sweep (the drawn points are the frame's points up to one similarity with y flipped)
-    and hovering a link highlights its relative vectors in both polygons."""
+    the sweep (the drawn points are the frame's points up to one similarity with y flipped),
+    every label is inside its panel and at least 10 px high, no point label lies on a link,
+    every polygon vertex is named, and hovering a link highlights exactly the polygon vectors
+    that belong to it."""
     page = tmp_path / "page.html"
     out = polygons("handout", CASES / case, "--interactive", "-o", page)
     assert out.returncode == 0, out.stderr
@@ -229,7 +274,8 @@ def test_interactive_page_steps_drags_and_highlights(case, tmp_path):
     probed = tmp_path / "probed.html"
     probed.write_text(text.replace("<head>", "<head>\n" + PROBE + "\n"
                                    + DRIVE.replace("FRAME", str(k)), 1), encoding="utf-8")
-    res = browser.dump_dom(probed)
+    res = browser.run(probed, "--dump-dom", "--virtual-time-budget=3000",
+                      "--enable-logging=stderr", "--v=0", "--window-size=1400,1000")
     m = re.search(r'<pre id="probe">(.*?)</pre>', res.stdout, re.S)
     d = re.search(r'<pre id="drive">(.*?)</pre>', res.stdout, re.S)
     assert m and d, res.stderr[-400:]
@@ -242,6 +288,8 @@ def test_interactive_page_steps_drags_and_highlights(case, tmp_path):
     assert drive["stages"] == len(names) >= 4 and drive["visible0"] == 1
     assert drive["names"] == [names[0], names[1], names[2], names[1]]
     assert drive["start"] == data["start"] and drive["frame"] == k
+    assert drive["bad_start"] == [] and drive["bad"] == []
+    assert drive["on_links_start"] == [] and drive["on_links"] == []
     # the drawn mechanism is frame k: one scale for every distance, y up becomes y down
     pts = {lab: data["pos"][lab][k] for lab in drive["points"]}
     labs = [lab for lab in pts if pts[lab][0] is not None]
@@ -256,11 +304,145 @@ def test_interactive_page_steps_drags_and_highlights(case, tmp_path):
     if abs(pts[b][1] - pts[a][1]) > 1e-6:
         assert (drive["points"][b][1] - drive["points"][a][1]) * (pts[b][1] - pts[a][1]) < 0
     moving = [lab for lab, v in data["vel"].items() if math.hypot(*v[k]) > 0]
-    assert drive["vlabels"] == len(data["vel"]) and drive["alabels"] == len(data["acc"])
     assert drive["vel_arrows"] == len([lab for lab in moving if lab in drive["points"]])
-    assert drive["hi"] >= 1
-    if moving:            # a link's relative vectors light up in both polygons
-        assert drive["hi_polys"] >= 2
+    for poly, shown in (("velocity", drive["vtext"]), ("acceleration", drive["atext"])):
+        if poly in data["polys"]:
+            P = data["polys"][poly]
+            assert P["pole_label"] in shown
+            for v in P["vx"]:
+                assert P["names"][v] in shown, (poly, v, shown)
+    if "acceleration" in data["polys"]:
+        assert sorted(drive["kinds"]) == sorted(s["c"] for s in data["polys"]["acceleration"]
+                                                ["strokes"] if s["k"] == "arrow")
+    for i, e in enumerate(data["edges"]):
+        assert drive["hi"][str(i)]["link"] >= 1
+        want = sorted(f'{s["f"]}>{s["t"]}' for P in data["polys"].values()
+                      for s in P["strokes"] if s["link"] == e[2])
+        assert sorted(drive["hi"][str(i)]["polys"]) == want, (e, drive["hi"][str(i)])
+
+
+SCALE = """<script>
+window.addEventListener('load', function () {
+  var P = window.polygonsPage, out = [];
+  [START, OTHER].forEach(function (f) {
+    P.setFrame(f);
+    var tail = function (a, b) {
+      var l = document.querySelector('#vpoly line.comp[data-from="' + a + '"][data-to="' + b + '"]');
+      return [+l.getAttribute('x1'), +l.getAttribute('y1')];
+    };
+    var o = tail('o2', 'p4'), p = tail('p4', 'p2');
+    out.push(Math.hypot(p[0] - o[0], p[1] - o[1]));
+  });
+  var pre = document.createElement('pre'); pre.id = 'scale';
+  pre.textContent = JSON.stringify(out); document.body.appendChild(pre);
+});
+</script>"""
+
+
+@needs_chromium
+def test_live_polygon_keeps_one_scale_over_the_cycle(tmp_path):
+    """Fig 7: the drawn length of o₂p₄ over |v_P4| is the same at two frames where |v_P4|
+    differs (a polygon fitted to its panel at each frame would fail this)."""
+    page = tmp_path / "page.html"
+    assert polygons("handout", CASES / "s003-fig7.toml", "--interactive", "-o",
+                    page).returncode == 0
+    text = page.read_text(encoding="utf-8")
+    data = _page_data(text)
+    a, b = data["start"], (data["start"] + len(data["inputs"]) // 4) % len(data["inputs"])
+    probed = tmp_path / "probed.html"
+    probed.write_text(text.replace("<head>", "<head>\n" + SCALE.replace("START", str(a))
+                                   .replace("OTHER", str(b)), 1), encoding="utf-8")
+    res = browser.dump_dom(probed)
+    px = json.loads(re.search(r'<pre id="scale">(.*?)</pre>', res.stdout).group(1))
+    v = [math.hypot(*data["vel"]["P4"][f]) for f in (a, b)]
+    assert abs(v[0] - v[1]) > 0.2 * v[0]
+    assert px[0] / v[0] == pytest.approx(px[1] / v[1], rel=2e-3)
+
+
+def _tab_to(s, ident, limit=40):
+    for _ in range(limit):
+        s.press("Tab")
+        if s.evaluate("document.activeElement.id") == ident:
+            return
+    raise AssertionError(f"Tab never reached #{ident}")
+
+
+@needs_chromium
+def test_drawing_mode_keyboard_only(tmp_path):
+    """The "draw it yourself" mode worked with the keyboard alone (real key presses through
+    the DevTools protocol): Tab to the polygon choice and a vertex, Enter, arrow keys at the
+    stated 1 mm / 10 mm steps, Enter places and moves on; every vertex of Fig 7's acceleration
+    polygon is placed where the true construction puts it at the stated scale; Save JSON and
+    Save SVG (Tab, Enter) write the agreed JSON and an SVG with the vertex labels; the paper
+    shows a focus ring and names itself to a screen reader."""
+    import xml.etree.ElementTree as ET
+    page = tmp_path / "page.html"
+    assert polygons("handout", CASES / "s003-fig7.toml", "--interactive", "-o",
+                    page).returncode == 0
+    data = _page_data(page.read_text(encoding="utf-8"))
+    g = data["drawing"]["acceleration"]
+    from polygons.evaluate import solve
+    from polygons.options import scale_per_cm
+    from polygons.scene import load_scene
+    sol = solve(load_scene(CASES / "s003-fig7.toml"))
+    k = 10.0 / scale_per_cm(g["scale"], "acceleration")        # mm per m/s²
+    target = {v: [round(g["cursor"][0] + x * k), round(g["cursor"][1] + y * k)]
+              for v, (x, y) in sol.vertices["acceleration"].items()}
+    downloads = tmp_path / "downloads"
+    downloads.mkdir()
+    with browser.Session(1400, 1100, downloads=downloads) as s:
+        s.open(page)
+        _tab_to(s, "draw-diagram")
+        s.press("ArrowDown")                                    # velocity → acceleration
+        assert s.evaluate("window.polygonsDrawing.diagram()") == "acceleration"
+        s.press("Tab")
+        assert s.evaluate("document.activeElement.dataset.v") == g["vertices"][0]
+        s.press("Enter")                                        # pick it: focus to the paper
+        assert s.evaluate("document.activeElement.id") == "paper"
+        ring = s.evaluate("getComputedStyle(document.getElementById('paper')).boxShadow")
+        assert ring and ring != "none"
+        label = s.evaluate("document.getElementById('paper').getAttribute('aria-label')")
+        assert "acceleration polygon" in label and g["statement"] in label
+        for v in g["vertices"]:
+            assert s.evaluate("window.polygonsDrawing.selected()") == v
+            cx, cy = s.evaluate("window.polygonsDrawing.cursor()")
+            for axis, (d, pos, neg) in enumerate(((target[v][0] - cx, "ArrowRight", "ArrowLeft"),
+                                                  (target[v][1] - cy, "ArrowUp", "ArrowDown"))):
+                d = round(d)
+                key = pos if d > 0 else neg
+                if abs(d) >= 10:
+                    s.press(key, abs(d) // 10, shift=True)
+                if abs(d) % 10:
+                    s.press(key, abs(d) % 10)
+            assert s.evaluate("window.polygonsDrawing.cursor()") == target[v]
+            s.press("Enter")
+        status = s.evaluate("document.getElementById('draw-status').textContent")
+        assert "every vertex is placed" in status
+        s.screenshot(tmp_path / "drawing.png")
+        _tab_to(s, "save-json", 3)
+        s.press("Enter")
+        _tab_to(s, "save-svg", 3)
+        s.press("Enter")
+        import time
+        for _ in range(50):
+            got = sorted(p.name for p in downloads.iterdir() if not p.name.endswith(".crdownload"))
+            if len(got) == 2:
+                break
+            time.sleep(0.1)
+    stem = "s003-fig7-acceleration-drawing"
+    assert got == [f"{stem}.json", f"{stem}.svg"]
+    drawn = json.loads((downloads / f"{stem}.json").read_text(encoding="utf-8"))
+    assert set(drawn) == {"diagram", "scale", "vertices", "vectors"}
+    assert drawn["diagram"] == "acceleration" and drawn["scale"] == g["scale"]
+    assert drawn["vertices"] == target and drawn["vectors"] == g["vectors"]
+    root = ET.fromstring((downloads / f"{stem}.svg").read_bytes())
+    ns = "{http://www.w3.org/2000/svg}"
+    words = [t.text for t in root.iter(f"{ns}text")]
+    for v in g["vertices"]:
+        assert g["labels"][v] in words
+    assert root.get("width") == f'{g["paper"][0]:g}mm'
+    assert len([e for e in root.iter(f"{ns}line") if e.get("data-from")]) == len(g["vectors"])
+    assert "?" not in "".join(w for w in words if w)            # no cursor in the saved file
 
 
 def test_interactive_page_stages_are_the_static_svgs_and_output_is_deterministic(tmp_path):
@@ -283,7 +465,7 @@ def test_interactive_page_stages_are_the_static_svgs_and_output_is_deterministic
     data = _page_data(text)
     # the slider runs in the crank's sense of rotation (SAE4-Q3: CCW, angles increasing)
     ins = data["inputs"]
-    assert data["sense"] == "CCW" and all(b > a for a, b in zip(ins, ins[1:]))
+    assert data["sense"] == "CCW" and all(0 < (b - a) % 360 < 180 for a, b in zip(ins, ins[1:]))
 
 
 RECT = """<script>
