@@ -145,8 +145,7 @@ class Session:
             self.send("Emulation.setDeviceMetricsOverride", width=width, height=height,
                       deviceScaleFactor=1, mobile=False)
             if downloads is not None:
-                self.call("Browser.setDownloadBehavior", behavior="allow",
-                          downloadPath=str(Path(downloads).resolve()))
+                self.downloads(downloads)
         except Exception:
             self.close()
             raise
@@ -197,6 +196,11 @@ class Session:
             self.events.append(ev)
 
     # -- what a test does
+    def downloads(self, folder) -> None:
+        """Save what the page downloads into ``folder`` (under the names it suggests)."""
+        self.call("Browser.setDownloadBehavior", behavior="allow",
+                  downloadPath=str(Path(folder).resolve()))
+
     def open(self, path, fragment: str = "") -> None:
         url = Path(path).resolve().as_uri() + fragment
         self.events = [e for e in self.events if e.get("method") != "Page.loadEventFired"]

@@ -233,7 +233,7 @@ def frames(sol, figs=(), n: int = FRAMES) -> dict:
                float(pts[:, 0].max()), float(pts[:, 1].max())]
         span = max(box[2] - box[0], box[3] - box[1])
         polys[d] = {"vx": vx, "strokes": ok, "box": [_r(b) for b in box],
-                    "bar": _nice(span / 4.0), "unit": "m/s" if d == "velocity" else "m/s²",
+                    "bar": _nice(span / 4.0) if span > 1e-12 else None, "unit": "m/s" if d == "velocity" else "m/s²",
                     "pole": con.pole, "pole_label": vertex_name(con.pole_label),
                     "names": {v: vertex_name(v) for v in names},
                     "key": key({st["c"] for st in ok})}

@@ -182,12 +182,14 @@
     cap.textContent = d + ' polygon';
     boxes.push({x: 0, y: 0, w: cap.getBBox().width + 8 * U, h: (FONT + 8) * U});
     // the scale bar: one scale for the whole cycle
-    var bl = P.bar * F.k, by = H - 10 * U;
-    el(svg, 'path', {d: 'M' + 6 * U + ' ' + (by - 4 * U) + 'v4' + 'h' + bl + 'v-4', stroke: '#000',
-                     fill: 'none', 'stroke-width': U, 'class': 'bar'});
-    var bt = el(svg, 'text', {x: 10 * U + bl, y: by + 2 * U, 'font-size': FONT * U, 'class': 'bar'});
-    bt.textContent = P.bar + ' ' + P.unit;
-    boxes.push({x: 0, y: by - 6 * U - FONT * U, w: 16 * U + bl + bt.getBBox().width, h: H});
+    if (P.bar) {
+      var bl = P.bar * F.k, by = H - 10 * U;
+      el(svg, 'path', {d: 'M' + 6 * U + ' ' + (by - 4 * U) + 'v4' + 'h' + bl + 'v-4', stroke: '#000',
+                       fill: 'none', 'stroke-width': U, 'class': 'bar'});
+      var bt = el(svg, 'text', {x: 10 * U + bl, y: by + 2 * U, 'font-size': FONT * U, 'class': 'bar'});
+      bt.textContent = P.bar + ' ' + P.unit;
+      boxes.push({x: 0, y: by - 6 * U - FONT * U, w: 16 * U + bl + bt.getBBox().width, h: H});
+    }
     var V = function (v) { var p = P.vx[v] ? P.vx[v][frame] : null; return p && p[0] !== null ? F(p) : null; };
     if (P.vx[P.pole][frame] === null) {
       var t = el(svg, 'text', {x: W / 2, y: H / 2, 'font-size': FONT * U, 'text-anchor': 'middle'});
