@@ -230,11 +230,19 @@ class Session:
                       windowsVirtualKeyCode=code, modifiers=8 if shift else 0,
                       code=down["code"])
 
+    def click(self, x: float, y: float) -> None:
+        """A real left click at (x, y) CSS px of the window."""
+        for kind in ("mouseMoved", "mousePressed", "mouseReleased"):
+            self.send("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left",
+                      clickCount=0 if kind == "mouseMoved" else 1)
+
     def screenshot(self, png_path, clip: dict | None = None) -> Path:
+        """A PNG of the window, or of ``clip`` = {x, y, width, height} in page coordinates."""
         import base64
         params = {"format": "png"}
-        if clip:
+        if clip:            # page coordinates (CSS px), beyond the window if need be
             params["clip"] = {**clip, "scale": 1}
+            params["captureBeyondViewport"] = True
         data = self.send("Page.captureScreenshot", **params)["data"]
         png_path = Path(png_path)
         png_path.write_bytes(base64.b64decode(data))

@@ -291,5 +291,6 @@ def drawing_mode(sol, con, lay, names) -> dict:
     return {"scale": f"1 mm = {float(f'{per_mm:.6g}'):g} {unit}",
             "statement": sc.statement, "paper": [W, H],
             "cursor": [float(round(pole[0])), float(round(pole[1]))],
-            "vertices": names, "labels": {v: vertex_name(v) for v in names},
+            "vertices": names,
+            "labels": {v: vertex_name(con.pole_label if v == con.pole else v) for v in names},
             "vectors": vectors}

@@ -561,3 +561,27 @@ def test_interactive_stage_screenshot_matches_the_static_svg(tmp_path):
     other = diff(page_img, static(names[k]))
     print(f"pixels differing strongly: same stage {same:.2e}, next stage {other:.2e}")
     assert same < 1e-4 and other > 10 * same + 5e-5, (same, other)
+
+
+@needs_chromium
+def test_drawing_mode_by_mouse(tmp_path, session):
+    """A click on the paper places the selected vertex there (to 0.5 mm, y up from the
+    paper's lower edge) and selects the next one; the arrow between them appears."""
+    from polygons.cli.handout import write_page
+    page = write_page(str(CASES / "s001-we1.toml"), tmp_path / "page.html")
+    data = _page_data(page.read_text(encoding="utf-8"))
+    g = data["drawing"]["velocity"]
+    W, H = g["paper"]
+    session.open(page)
+    session.evaluate("document.getElementById('paper').scrollIntoView()")
+    r = json.loads(session.evaluate(          # the content box (the viewBox fills it)
+        "(function () { var p = document.getElementById('paper'), b = p.getBoundingClientRect();"
+        " return JSON.stringify({left: b.left + p.clientLeft, top: b.top + p.clientTop,"
+        " width: p.clientWidth, height: p.clientHeight}); })()"))
+    for v, (x, y) in zip(g["vertices"][:2], ((30.0, 40.0), (72.5, 61.0))):
+        assert session.evaluate("window.polygonsDrawing.selected()") == v
+        session.click(r["left"] + x * r["width"] / W, r["top"] + (H - y) * r["height"] / H)
+    drawn = session.evaluate("window.polygonsDrawing.json()")
+    a, b = g["vertices"][:2]
+    assert drawn["vertices"] == {a: [30, 40], b: [72.5, 61]}
+    assert drawn["vectors"] == [[a, b]] and [a, b] in g["vectors"]

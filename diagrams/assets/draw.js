@@ -30,7 +30,8 @@
     var P = G().paper;
     paper.setAttribute('viewBox', '0 0 ' + P[0] + ' ' + P[1]);
     paper.setAttribute('width', P[0] + 'mm'); paper.setAttribute('height', P[1] + 'mm');
-    scaleOut.textContent = 'Scale ' + G().statement + ' (' + G().scale + '). Grid: 5 mm.';
+    scaleOut.textContent = 'Scale ' + G().statement + ' (' + G().scale.replace('^2', '²') +
+                           '). Grid: 5 mm.';
     buttons(); render();
   }
   function buttons() {

@@ -166,7 +166,10 @@
   var T = {};
   Object.keys(D.polys).forEach(function (d) {
     var P = D.polys[d], svg = document.getElementById(d === 'velocity' ? 'vpoly' : 'apoly');
-    var b = P.box, W = svg.viewBox.baseVal.width, H = svg.viewBox.baseVal.height;
+    var b = P.box, W = svg.viewBox.baseVal.width;
+    var w = Math.max(b[2] - b[0], 1e-12), hh = Math.max(b[3] - b[1], 1e-12);
+    var H = Math.round(Math.max(170, Math.min(380, (W - 60) * hh / w + 86)));
+    svg.setAttribute('viewBox', '0 0 ' + W + ' ' + H);      // the panel takes the cycle's shape
     T[d] = fit([b[0], b[1], b[2], b[3]], W, H - 26, 30);   // one scale for the whole cycle
   });
   var LOOK = {};
