@@ -104,7 +104,7 @@
     var names = Object.keys(S().placed);
     names.forEach(function (v) {
       var q = Y(S().placed[v]);
-      el(paper, 'circle', {cx: q[0], cy: q[1], r: 0.9, fill: '#000', 'data-v': v});
+      el(paper, 'circle', {cx: q[0], cy: q[1], r: 0.9, fill: '#000', 'data-vertex': v});
       boxes.push({x: q[0] - 1, y: q[1] - 1, w: 2, h: 2});
     });
     names.forEach(function (v) {
@@ -130,10 +130,9 @@
   }
   function svgText() {
     var W = G().paper[0], H = G().paper[1], title = D.title + ' — ' + d + ' polygon (drawn)';
-    paper.querySelectorAll('.cursor').forEach(function (c) { c.setAttribute('display', 'none'); });
     var body = paper.innerHTML;
-    paper.querySelectorAll('.cursor').forEach(function (c) { c.removeAttribute('display'); });
     return '<?xml version="1.0" encoding="utf-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" ' +
+      'data-polygons-drawing="' + xml(d) + '" data-scale="' + xml(G().scale) + '" ' +
       'width="' + W + 'mm" height="' + H + 'mm" viewBox="0 0 ' + W + ' ' + H + '" ' +
       'font-family="DejaVu Sans, Verdana, Arial, sans-serif">\n<title>' + xml(title) + '</title>\n' +
       '<desc>' + xml('Scale ' + G().statement + '; vertices: ' + Object.keys(S().placed).map(function (v) {
