@@ -594,3 +594,23 @@ def test_drawing_mode_by_mouse(tmp_path, session):
     a, b = g["vertices"][:2]
     assert drawn["vertices"] == {a: [30, 40], b: [72.5, 61]}
     assert drawn["vectors"] == [[a, b]] and [a, b] in g["vectors"]
+
+
+@needs_chromium
+def test_velocity_only_page_loads(tmp_path, session):
+    """A scene solving the velocity diagram only: no script error, the acceleration panel
+    hidden, the velocity polygon drawn."""
+    from diagrams.page import page as make_page
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
+    text = (CASES / "s001-we1.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^(title = .*)$", r'\1\nsolve = ["velocity"]', text, count=1)
+    scene = tmp_path / "v.toml"
+    scene.write_text(text, encoding="utf-8")
+    html = make_page(solve(load_scene(scene)), n=24)
+    probed = tmp_path / "v.html"
+    probed.write_text(html.replace("<head>", "<head>\n" + PROBE, 1), encoding="utf-8")
+    probe_data = json.loads(_load(session, probed, ("probe",))["probe"])
+    assert probe_data["errors"] == [] and _console_errors(session) == []
+    assert session.evaluate("getComputedStyle(document.getElementById('apoly')).display") == "none"
+    assert session.evaluate("document.querySelectorAll('#vpoly line.comp').length") >= 2

@@ -127,3 +127,15 @@ def test_user_text_is_escaped_and_filled_in_one_pass(write_scene):
     assert "<" not in blob and json.loads(blob)["title"].endswith(hostile)
     assert fill("{A}{B}", {"A": "{B}", "B": "x"}) == "{B}x"
     assert json.loads(script_json({"t": "</script>"})) == {"t": "</script>"}
+
+
+def test_velocity_only_scene(write_scene, tmp_path):
+    """A scene that solves the velocity diagram only: the page has one live polygon and one
+    polygon to draw."""
+    text = (CASES / "s001-we1.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^(title = .*)$", r'\1\nsolve = ["velocity"]', text, count=1)
+    sol = solve(load_scene(write_scene(text)))
+    html = page(sol, n=12)
+    data = json.loads(re.search(r'id="frames">(.*?)</script>', html, re.S).group(1))
+    assert list(data["polys"]) == ["velocity"] and data["diagrams"] == ["velocity"]
+    assert html.count("<option ") == 1

@@ -164,6 +164,9 @@
 
   // ---------------------------------------------------------------- the polygon panels
   var T = {};
+  ['velocity', 'acceleration'].forEach(function (d) {     // a scene may solve velocity only
+    if (!D.polys[d]) { document.getElementById(d === 'velocity' ? 'vpoly' : 'apoly').style.display = 'none'; }
+  });
   Object.keys(D.polys).forEach(function (d) {
     var P = D.polys[d], svg = document.getElementById(d === 'velocity' ? 'vpoly' : 'apoly');
     var b = P.box, W = svg.viewBox.baseVal.width;
