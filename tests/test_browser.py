@@ -517,48 +517,36 @@ def test_interactive_page_stages_are_the_static_svgs_and_output_is_deterministic
     assert data["sense"] == "CCW" and all(0 < (b - a) % 360 < 180 for a, b in zip(ins, ins[1:]))
 
 
-RECT = """<script>
-window.addEventListener('load', function () {
-  var f = document.querySelector('figure.stage:not([hidden]) svg').getBoundingClientRect();
-  var pre = document.createElement('pre'); pre.id = 'rect';
-  pre.textContent = JSON.stringify([f.left, f.top, f.width, f.height]);
-  document.body.appendChild(pre);
-});
-</script>"""
-
-
 @needs_chromium
-def test_interactive_stage_screenshot_matches_the_static_svg(tmp_path):
+def test_interactive_stage_screenshot_matches_the_static_svg(tmp_path, session):
     """A stage shown on the page looks as its static SVG does: Chromium's screenshot of the
     page, cropped to the stage figure, against Chromium's rendering of the SVG file at the
     same size — and unlike the next stage's SVG (so the comparison can fail)."""
     from PIL import Image
+    import diagrams
+    from polygons.cli.handout import write_page
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
     case, k = CASES / "s001-sae4-q3.toml", 3
-    page = tmp_path / "page.html"
-    assert polygons("handout", case, "--interactive", "-o", page).returncode == 0
-    assert polygons("draw", case, "-o", tmp_path / "svg").returncode == 0
+    page = write_page(str(case), tmp_path / "page.html")
+    diagrams.write(solve(load_scene(case)), tmp_path / "svg")
     names = re.findall(r'data-name="([^"]+)"', page.read_text(encoding="utf-8"))
-    size = "--window-size=1400,1000"
-    text = page.read_text(encoding="utf-8").replace("<head>", "<head>\n" + RECT, 1)
-    probed = tmp_path / "probed.html"
-    probed.write_text(text, encoding="utf-8")
-    url = probed.resolve().as_uri() + f"#stage={k}"
-    out = browser.run(url, "--dump-dom", size, "--virtual-time-budget=3000")
-    x, y, w, h = json.loads(re.search(r'<pre id="rect">(.*?)</pre>', out.stdout).group(1))
-    shot = tmp_path / "page.png"
-    browser.run(url, f"--screenshot={shot}", size, "--virtual-time-budget=3000")
-    page_img = Image.open(shot).convert("L").crop((round(x), round(y), round(x) + round(w),
-                                                   round(y) + round(h)))
+    session.open(page, f"#stage={k}")
+    x, y, w, h = json.loads(session.evaluate(
+        "(function () { var f = document.querySelector('figure.stage:not([hidden]) svg')"
+        ".getBoundingClientRect(); return JSON.stringify([f.left + scrollX, f.top + scrollY,"
+        " f.width, f.height]); })()"))
+    clip = {"x": round(x), "y": round(y), "width": round(w), "height": round(h)}
+    page_img = Image.open(session.screenshot(tmp_path / "page.png", clip)).convert("L")
 
     def static(name):
         wrap = tmp_path / f"{name}-wrap.html"
         wrap.write_text(f'<html><body style="margin:0"><img src="svg/{name}.svg" '
                         f'style="display:block;width:{w}px;height:{h}px"></body></html>',
                         encoding="utf-8")
-        png = tmp_path / f"{name}.png"
-        browser.run(wrap, f"--screenshot={png}", f"--window-size={round(w) + 20},"
-                    f"{round(h) + 20}")
-        return Image.open(png).convert("L").crop((0, 0, round(w), round(h)))
+        session.open(wrap)
+        png = session.screenshot(tmp_path / f"{name}.png", {**clip, "x": 0, "y": 0})
+        return Image.open(png).convert("L")
 
     def diff(a, b):
         """The share of pixels that differ strongly (by more than half the grey range):
