@@ -143,7 +143,10 @@ _TEMPLATE = """<!DOCTYPE html>
 {STAGES}
 </section>
 <section id="live"><div class="bar"><label for="angle">Crank position</label>
-<input id="angle" type="range" min="0" step="1"> <output id="angle-out" for="angle"></output></div>
+<input id="angle" type="range" min="0" step="1"> <output id="angle-out" for="angle"></output>
+<label for="zoom">Polygons</label> <select id="zoom"><option value="1">× 1</option>
+<option value="2">× 2</option><option value="4">× 4</option><option value="8">× 8</option>
+</select></div>
 <svg id="mech" class="live" viewBox="0 0 400 280" role="img"
  aria-label="Mechanism with its velocity vectors"></svg>
 <div class="polys"><svg id="vpoly" class="live" viewBox="0 0 300 300" role="img"
@@ -151,8 +154,9 @@ _TEMPLATE = """<!DOCTYPE html>
  role="img" aria-label="Acceleration polygon"></svg></div>
 {KEY}
 <p class="note">Hover a link to highlight its vectors in both polygons. The polygons are drawn
-in components as in the static drawings, each at one scale for the whole cycle (the bar);
-the velocity vectors on the linkage share one scale too.</p>
+in components as in the static drawings, each at one scale for the whole cycle (the bar;
+"× 2" … enlarges them about the pole, still one scale for every position); the velocity
+vectors on the linkage share one scale too.</p>
 </section>
 </main>
 <section id="draw" aria-labelledby="draw-h">

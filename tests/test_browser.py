@@ -367,8 +367,8 @@ def test_interactive_page_steps_drags_and_highlights(case, tmp_path, session):
 SCALE = """<script>
 window.addEventListener('load', function () {
   var P = window.polygonsPage, out = [];
-  [START, OTHER].forEach(function (f) {
-    P.setFrame(f);
+  [[START, 1], [OTHER, 1], [START, 2]].forEach(function (fz) {
+    P.zoom(fz[1]); P.setFrame(fz[0]);
     var tail = function (a, b) {
       var l = document.querySelector('#vpoly line.comp[data-from="' + a + '"][data-to="' + b + '"]');
       return [+l.getAttribute('x1'), +l.getAttribute('y1')];
@@ -385,7 +385,7 @@ window.addEventListener('load', function () {
 @needs_chromium
 def test_live_polygon_keeps_one_scale_over_the_cycle(tmp_path, session):
     """Fig 7: the drawn length of o₂p₄ over |v_P4| is the same at two frames where |v_P4|
-    differs (a polygon fitted to its panel at each frame would fail this)."""
+    differs (a polygon fitted to its panel at each frame would fail this); "× 2" doubles it."""
     from polygons.cli.handout import write_page
     text = write_page(str(CASES / "s003-fig7.toml"), tmp_path / "page.html").read_text(
         encoding="utf-8")
@@ -398,6 +398,7 @@ def test_live_polygon_keeps_one_scale_over_the_cycle(tmp_path, session):
     v = [math.hypot(*data["vel"]["P4"][f]) for f in (a, b)]
     assert abs(v[0] - v[1]) > 0.2 * v[0]
     assert px[0] / v[0] == pytest.approx(px[1] / v[1], rel=2e-3)
+    assert px[2] == pytest.approx(2 * px[0], rel=2e-3)          # × 2: twice, still one scale
 
 
 def _tab_to(s, ident, limit=40):

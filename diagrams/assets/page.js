@@ -179,21 +179,34 @@
   Object.keys(D.polys).forEach(function (d) {
     D.polys[d].key.forEach(function (k) { LOOK[k.kind] = k; });
   });
+  var zoom = 1;
+  function nice(x) {                  // a round bar length (1, 2, 2.5, 5 × 10ⁿ) not above x
+    var k = Math.pow(10, Math.floor(Math.log10(x)));
+    var m = [5, 2.5, 2, 1].filter(function (m) { return m * k <= x * (1 + 1e-12); })[0] || 1;
+    return +(m * k).toPrecision(6);
+  }
+  function zoomed(F, z) {             // z × about the pole: still one scale for every frame
+    if (z === 1) { return F; }
+    var c = F([0, 0]);
+    var g = function (p) { var q = F(p); return [c[0] + z * (q[0] - c[0]), c[1] + z * (q[1] - c[1])]; };
+    g.k = F.k * z; return g;
+  }
   function polygon(d) {
     var P = D.polys[d], svg = document.getElementById(d === 'velocity' ? 'vpoly' : 'apoly');
-    var U = unitOf(svg), F = T[d], W = svg.viewBox.baseVal.width, H = svg.viewBox.baseVal.height;
+    var U = unitOf(svg), F = zoomed(T[d], zoom), W = svg.viewBox.baseVal.width, H = svg.viewBox.baseVal.height;
     var segs = [], boxes = [], link = hover >= 0 ? D.edges[hover][2] : null;
     clear(svg);
     var cap = el(svg, 'text', {x: 4 * U, y: 4 * U + FONT * U, 'font-size': FONT * U, 'class': 'cap'});
-    cap.textContent = d + ' polygon';
+    cap.textContent = d + ' polygon' + (zoom > 1 ? ' (×' + zoom + ')' : '');
     boxes.push({x: 0, y: 0, w: cap.getBBox().width + 8 * U, h: (FONT + 8) * U});
     // the scale bar: one scale for the whole cycle
     if (P.bar) {
-      var bl = P.bar * F.k, by = H - 10 * U;
-      el(svg, 'path', {d: 'M' + 6 * U + ' ' + (by - 4 * U) + 'v4' + 'h' + bl + 'v-4', stroke: '#000',
-                       fill: 'none', 'stroke-width': U, 'class': 'bar'});
+      var bar = zoom === 1 ? P.bar : nice(P.bar / zoom);
+      var bl = bar * F.k, by = H - 10 * U;
+      el(svg, 'path', {d: 'M' + 6 * U + ' ' + (by - 4 * U) + 'v' + 4 * U + 'h' + bl + 'v' + (-4 * U),
+                       stroke: '#000', fill: 'none', 'stroke-width': U, 'class': 'bar'});
       var bt = el(svg, 'text', {x: 10 * U + bl, y: by + 2 * U, 'font-size': FONT * U, 'class': 'bar'});
-      bt.textContent = P.bar + ' ' + P.unit;
+      bt.textContent = bar + ' ' + P.unit;
       boxes.push({x: 0, y: by - 6 * U - FONT * U, w: 16 * U + bl + bt.getBBox().width, h: H});
     }
     var V = function (v) { var p = P.vx[v] ? P.vx[v][frame] : null; return p && p[0] !== null ? F(p) : null; };
@@ -225,11 +238,15 @@
     var pole = V(P.pole);
     el(svg, 'circle', {cx: pole[0], cy: pole[1], r: 3 * U, fill: '#fff', stroke: '#000',
                        'stroke-width': 1.2 * U});
-    groups.forEach(function (g) {
+    groups.forEach(function (g) {     // (zoomed in, a vertex may lie beyond the panel)
+      if (g.at[0] < 0 || g.at[0] > W || g.at[1] < 0 || g.at[1] > H) { return; }
       label(svg, g.names.join(' = '), g.at, segs, boxes, U, {'data-label': g.first, 'class': 'vx'});
     });
   }
   function setHover(i) { hover = i; draw(); }
+  function setZoom(z) { zoom = [1, 2, 4, 8].indexOf(+z) >= 0 ? +z : 1;
+                        document.getElementById('zoom').value = String(zoom); draw(); }
+  document.getElementById('zoom').addEventListener('change', function (e) { setZoom(e.target.value); });
   function draw() {
     mechanism();
     Object.keys(D.polys).forEach(polygon);
@@ -248,7 +265,8 @@
   document.getElementById('next').addEventListener('click', function () { showStage(cur + 1); });
   document.addEventListener('keydown', function (e) {
     var t = e.target;
-    if (t === slider || (t.closest && t.closest('#draw'))) { return; }
+    if (/^(SELECT|INPUT|TEXTAREA|BUTTON)$/.test(t.tagName) && t.id !== 'back' && t.id !== 'next') { return; }
+    if (t.closest && t.closest('#draw')) { return; }
     if (e.key === 'ArrowRight') { showStage(cur + 1); }
     if (e.key === 'ArrowLeft') { showStage(cur - 1); }
   });
@@ -266,6 +284,6 @@
     stage: function () { return stages[cur].dataset.name; },
     stages: stages.length, next: function () { showStage(cur + 1); },
     back: function () { showStage(cur - 1); }, frame: function () { return frame; },
-    setFrame: setFrame, hover: setHover, draw: draw
+    setFrame: setFrame, hover: setHover, zoom: setZoom, draw: draw
   };
 })();
