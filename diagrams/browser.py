@@ -3,10 +3,15 @@
 Chromium is an optional system program (Debian package ``chromium``); nothing else needs it.
 Every run gets a fresh profile folder and the flags that keep a headless browser from
 reaching the network on its own (no background networking, component updates, sync or QUIC).
+:class:`Session` drives one browser over the DevTools protocol on a pipe (real key presses and
+clicks, screenshots, downloads): the tests work the interactive page with it.
 """
 from __future__ import annotations
 
+import base64
+import json
 import os
+import select
 import shutil
 import subprocess
 import tempfile
@@ -109,10 +114,9 @@ class Session:
 
     def __init__(self, width: int = 1400, height: int = 1000, downloads=None,
                  timeout: float = 60.0):
-        import threading
+        import fcntl                      # POSIX only, like the pipe itself
         exe = _require()
         self._profile = tempfile.TemporaryDirectory(prefix="polygons-chromium-")
-        import fcntl
         r_cmd, w_cmd = os.pipe()          # we write commands → Chromium reads fd 3
         r_out, w_out = os.pipe()          # Chromium writes fd 4 → we read replies
         # the child's ends moved above fd 10, so putting them on 3 and 4 clobbers neither
@@ -133,7 +137,6 @@ class Session:
         os.close(w_out)
         self._w, self._r = os.fdopen(w_cmd, "wb", buffering=0), os.fdopen(r_out, "rb")
         self._id, self._buf, self.events = 0, b"", []
-        self._lock = threading.Lock()
         self.timeout = timeout
         try:
             target = self.call("Target.createTarget", url="about:blank")["targetId"]
@@ -152,7 +155,6 @@ class Session:
 
     # -- protocol
     def _read(self) -> dict:
-        import select
         while b"\0" not in self._buf:
             ready, _, _ = select.select([self._r], [], [], self.timeout)
             if not ready:
@@ -162,11 +164,9 @@ class Session:
                 raise BrowserError("Chromium closed the DevTools pipe")
             self._buf += chunk
         msg, self._buf = self._buf.split(b"\0", 1)
-        import json
         return json.loads(msg)
 
     def call(self, method: str, session: bool = False, **params) -> dict:
-        import json
         self._id += 1
         msg = {"id": self._id, "method": method, "params": params}
         if session:
@@ -238,7 +238,6 @@ class Session:
 
     def screenshot(self, png_path, clip: dict | None = None) -> Path:
         """A PNG of the window, or of ``clip`` = {x, y, width, height} in page coordinates."""
-        import base64
         params = {"format": "png"}
         if clip:            # page coordinates (CSS px), beyond the window if need be
             params["clip"] = {**clip, "scale": 1}
