@@ -28,6 +28,8 @@ from .components import LOOKS, ORDER
 
 #: positions in the slider (frames of the cycle)
 FRAMES = 180
+#: a frame larger than this × the cycle's median size does not set the live panels' scale
+OFF_SCALE = 6.0
 #: margin (mm) of the drawing mode's paper around the static polygon's extent
 PAPER_MARGIN = 15.0
 #: smallest drawing-mode paper (mm)
@@ -63,9 +65,7 @@ def edges(scene) -> list[tuple[str, str, str]]:
     of the other link) and on to its far end when it has one."""
     from polygons.evaluate import link_ends
     out = [(ln.a, ln.b, name) for name, ln in scene.links.items()]
-    for slot in scene.slots.values():
-        if slot.lever in scene.links:
-            continue
+    for slot in scene.slots.values():      # the slot runs on to the lever's point under the pin
         out.append((slot.pivot, slot.coincident, slot.lever))
         if slot.far:
             out.append((slot.coincident, slot.far, slot.lever))
@@ -166,6 +166,37 @@ def strokes(sol, con) -> list[dict]:
     return out
 
 
+def on_scale(frames_pts, factor: float) -> list[bool]:
+    """Which frames set the scale: those whose largest distance from the origin is at most
+    ``factor`` × the median of it over the cycle.  Near a toggle a polygon (or a point at the
+    meeting of two almost parallel slots) runs off to infinity; one such frame would shrink
+    every other frame to a dot.  Frames that cannot be solved do not count either."""
+    size = []
+    for pts in frames_pts:
+        good = [math.hypot(*p) for p in pts if p is not None and None not in p]
+        size.append(max(good) if good else None)
+    known = sorted(x for x in size if x is not None)
+    if not known:
+        return [True] * len(size)
+    med = known[len(known) // 2]
+    return [x is not None and (med <= 0 or x <= factor * med) for x in size]
+
+
+def _mech_off(sw, labels, n: int) -> list[int]:
+    """The frames left out of the mechanism panel's scale (see :func:`on_scale`): distances
+    from the points' centroid over the cycle."""
+    P = {lab: sw.position(lab) for lab in labels}
+    if not P:
+        return []
+    allp = np.concatenate(list(P.values()))
+    c = np.nanmean(allp, axis=0) if np.isfinite(allp).any() else np.zeros(2)
+    frames_pts = [[None if not np.isfinite(P[lab][i]).all() else
+                   (float(P[lab][i][0] - c[0]), float(P[lab][i][1] - c[1])) for lab in labels]
+                  for i in range(n)]
+    on = on_scale(frames_pts, OFF_SCALE)
+    return [i for i in range(n) if not on[i]]
+
+
 def _nice(x: float) -> float:
     """A round bar length (1, 2, 2.5, 5 × 10ⁿ) not above ``x``."""
     if not (x > 0 and math.isfinite(x)):
@@ -227,13 +258,17 @@ def frames(sol, figs=(), n: int = FRAMES) -> dict:
             for v in names:
                 p = None if fr is None else (fr[d].get(v) if v != con.pole else (0.0, 0.0))
                 vx[v].append(None if p is None else [_r(p[0]), _r(p[1])])
-        pts = np.array([p for v in names for p in vx[v] if p is not None and None not in p]
-                       or [[0.0, 0.0]], dtype=float)
+        on = on_scale([[vx[v][i] for v in names] for i in range(N)], OFF_SCALE)
+        pts = np.array([vx[v][i] for v in names for i in range(N) if on[i]
+                        and vx[v][i] is not None and None not in vx[v][i]] or [[0.0, 0.0]],
+                       dtype=float)
         box = [float(pts[:, 0].min()), float(pts[:, 1].min()),
                float(pts[:, 0].max()), float(pts[:, 1].max())]
         span = max(box[2] - box[0], box[3] - box[1])
         polys[d] = {"vx": vx, "strokes": ok, "box": [_r(b) for b in box],
-                    "bar": _nice(span / 4.0) if span > 1e-12 else None, "unit": "m/s" if d == "velocity" else "m/s²",
+                    "off": [i for i in range(N) if not on[i]],
+                    "bar": _nice(span / 4.0) if span > 1e-12 else None,
+                    "unit": "m/s" if d == "velocity" else "m/s²",
                     "pole": con.pole, "pole_label": vertex_name(con.pole_label),
                     "names": {v: vertex_name(v) for v in names},
                     "key": key({st["c"] for st in ok})}
@@ -255,6 +290,7 @@ def frames(sol, figs=(), n: int = FRAMES) -> dict:
         "pos": {lab: arr(sw.pos, lab) for lab in labels},
         "vel": {lab: arr(sw.vel, lab) for lab in labels if lab in sw.vel},
         "edges": [list(e) for e in edges(scene) if e[0] in sw.pos and e[1] in sw.pos],
+        "mech_off": _mech_off(sw, labels, N),
         "colours": {k: LOOKS[k].colour for k in ("given", "relative", "resultant")},
         "polys": polys,
         "drawing": drawing,

@@ -349,8 +349,8 @@ def test_interactive_page_steps_drags_and_highlights(case, tmp_path, session):
     moving = [lab for lab, v in data["vel"].items() if math.hypot(*v[k]) > 0]
     assert drive["vel_arrows"] == len([lab for lab in moving if lab in drive["points"]])
     for poly, shown in (("velocity", drive["vtext"]), ("acceleration", drive["atext"])):
-        if poly in data["polys"]:
-            P = data["polys"][poly]
+        if poly in data["polys"] and k not in data["polys"][poly]["off"]:
+            P = data["polys"][poly]           # (near a toggle a vertex may run off the panel)
             assert P["pole_label"] in shown
             for v in P["vx"]:
                 assert P["names"][v] in shown, (poly, v, shown)

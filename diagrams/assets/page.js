@@ -39,7 +39,24 @@
     var fs = FONT * U, t = el(svg, 'text', attrs || {});
     t.setAttribute('font-size', fs); t.setAttribute('x', 0); t.setAttribute('y', 0);
     t.textContent = text;
-    var bb = t.getBBox(), w = bb.width, h = bb.height, pad = 1.5 * U, best = null;
+    var bb = t.getBBox(), lines = null;
+    if (bb.width > W - 8 * U) {       // too wide for the panel (many coincident names): lines
+      var parts = text.split(/(?= = |, )/), line = '';
+      lines = [];
+      t.textContent = '';
+      parts.forEach(function (part) {
+        t.textContent = line + part;
+        if (line && t.getBBox().width > W - 8 * U) { lines.push(line); line = part.replace(/^( = |, )/, '= '); }
+        else { line += part; }
+      });
+      lines.push(line);
+      t.textContent = '';
+      lines = lines.map(function (l, i) {
+        var s = el(t, 'tspan', {x: 0, dy: i ? 1.15 * fs : 0}); s.textContent = l; return s;
+      });
+      bb = t.getBBox();
+    }
+    var w = bb.width, h = bb.height, pad = 1.5 * U, best = null;
     [0.35, 0.8, 1.5, 2.4].forEach(function (k) {
       for (var j = 0; j < 16; j++) {
         var ang = -Math.PI / 4 + j * Math.PI / 8, ux = Math.cos(ang), uy = Math.sin(ang);
@@ -54,6 +71,7 @@
       }
     });
     t.setAttribute('x', best.r.x - bb.x); t.setAttribute('y', best.r.y - bb.y);
+    (lines || []).forEach(function (s) { s.setAttribute('x', best.r.x - bb.x); });
     boxes.push(best.r);
     return t;
   }
@@ -107,10 +125,13 @@
   }
 
   // ---------------------------------------------------------------- the mechanism panel
-  var all = [], vmax = 0;
+  var all = [], vmax = 0, off = {};
+  (D.mech_off || []).forEach(function (i) { off[i] = true; });   // near a toggle: off scale
   D.labels.forEach(function (l) {
-    all = all.concat(D.pos[l]);
-    (D.vel[l] || []).forEach(function (v) { if (v[0] !== null) { vmax = Math.max(vmax, Math.hypot(v[0], v[1])); } });
+    all = all.concat(D.pos[l].filter(function (p, i) { return !off[i]; }));
+    (D.vel[l] || []).forEach(function (v, i) {
+      if (v[0] !== null && !off[i]) { vmax = Math.max(vmax, Math.hypot(v[0], v[1])); }
+    });
   });
   var mb = box(all), span = Math.max(mb[2] - mb[0], mb[3] - mb[1]);
   var kv = vmax > 0 ? 0.22 * span / vmax : 0;
@@ -118,7 +139,7 @@
   D.labels.forEach(function (l) {
     (D.pos[l] || []).forEach(function (p, i) {
       var v = (D.vel[l] || [])[i];
-      if (v && v[0] !== null && p[0] !== null) { withV.push([p[0] + kv * v[0], p[1] + kv * v[1]]); }
+      if (v && v[0] !== null && p[0] !== null && !off[i]) { withV.push([p[0] + kv * v[0], p[1] + kv * v[1]]); }
     });
   });
   var mech = document.getElementById('mech');
@@ -157,9 +178,12 @@
     groups.forEach(function (g) {
       boxes.push({x: g.at[0] - 4 * U, y: g.at[1] - 4 * U, w: 8 * U, h: 8 * U});
     });
-    groups.forEach(function (g) {
+    var W = svg.viewBox.baseVal.width, H = svg.viewBox.baseVal.height;
+    groups.forEach(function (g) {     // (a point run off the panel, near a toggle: no label)
+      if (g.at[0] < 0 || g.at[0] > W || g.at[1] < 0 || g.at[1] > H) { return; }
       label(svg, g.names.join(', '), g.at, segs, boxes, U, {'data-name': g.first, 'class': 'pt'});
     });
+    if (off[frame]) { note(svg, 'beyond the scale here: near a toggle', U, boxes); }
   }
 
   // ---------------------------------------------------------------- the polygon panels
@@ -209,6 +233,7 @@
       bt.textContent = bar + ' ' + P.unit;
       boxes.push({x: 0, y: by - 6 * U - FONT * U, w: 16 * U + bl + bt.getBBox().width, h: H});
     }
+    if (P.off.indexOf(frame) >= 0) { note(svg, 'beyond the scale here: near a toggle', U, boxes); }
     var V = function (v) { var p = P.vx[v] ? P.vx[v][frame] : null; return p && p[0] !== null ? F(p) : null; };
     if (P.vx[P.pole][frame] === null) {
       var t = el(svg, 'text', {x: W / 2, y: H / 2, 'font-size': FONT * U, 'text-anchor': 'middle'});
@@ -242,6 +267,12 @@
       if (g.at[0] < 0 || g.at[0] > W || g.at[1] < 0 || g.at[1] > H) { return; }
       label(svg, g.names.join(' = '), g.at, segs, boxes, U, {'data-label': g.first, 'class': 'vx'});
     });
+  }
+  function note(svg, text, U, boxes) {  // under the caption, top left
+    var t = el(svg, 'text', {x: 4 * U, y: 8 * U + 2 * FONT * U, 'font-size': FONT * U, 'class': 'off',
+                             fill: '#882255'});
+    t.textContent = text;
+    var b = t.getBBox(); boxes.push({x: b.x - 2 * U, y: b.y - 2 * U, w: b.width + 4 * U, h: b.height + 4 * U});
   }
   function setHover(i) { hover = i; draw(); }
   function setZoom(z) { zoom = [1, 2, 4, 8].indexOf(+z) >= 0 ? +z : 1;
