@@ -603,3 +603,29 @@ def test_velocity_only_page_loads(tmp_path, session):
     assert probe_data["errors"] == [] and _console_errors(session) == []
     assert session.evaluate("getComputedStyle(document.getElementById('apoly')).display") == "none"
     assert session.evaluate("document.querySelectorAll('#vpoly line.comp').length") >= 2
+
+
+@needs_chromium
+def test_hostile_title_is_text_on_the_page(tmp_path, session):
+    """A title with markup and template names is shown as text: no script of it runs, the
+    page's own script still does, the drawing saved as SVG stays well-formed XML."""
+    import xml.etree.ElementTree as ET
+    from diagrams.page import page as make_page
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
+    hostile = "X </script><script>window.pwned=1</script> <b>&amp; {CSS} {JS} <!-- '\""
+    text = (CASES / "s001-we1.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^title = .*$", lambda m: f"title = {json.dumps(hostile)}", text, count=1)
+    scene = tmp_path / "h.toml"
+    scene.write_text(text, encoding="utf-8")
+    html = make_page(solve(load_scene(scene)), n=24)
+    probed = tmp_path / "h.html"
+    probed.write_text(html.replace("<head>", "<head>\n" + PROBE, 1), encoding="utf-8")
+    probe_data = json.loads(_load(session, probed, ("probe",))["probe"])
+    assert probe_data["errors"] == [] and _console_errors(session) == []
+    assert session.evaluate("window.pwned === undefined && !!window.polygonsPage")
+    assert hostile in session.evaluate("document.querySelector('h1').textContent")
+    assert hostile in session.evaluate("document.title")
+    svg = session.evaluate("window.polygonsDrawing.svg()")
+    root = ET.fromstring(svg.split("?>", 1)[1])
+    assert hostile in root.find("{http://www.w3.org/2000/svg}title").text
