@@ -65,10 +65,11 @@ def edges(scene) -> list[tuple[str, str, str]]:
     of the other link) and on to its far end when it has one."""
     from polygons.evaluate import link_ends
     out = [(ln.a, ln.b, name) for name, ln in scene.links.items()]
-    for slot in scene.slots.values():      # the slot runs on to the lever's point under the pin
-        out.append((slot.pivot, slot.coincident, slot.lever))
+    model = scene.model                    # the slot runs on to the lever's point under the pin
+    for slot in model.slots() + model.crossings():
+        out.append((slot.line.origin, slot.coincident, slot.carrier))
         if slot.far:
-            out.append((slot.coincident, slot.far, slot.lever))
+            out.append((slot.coincident, slot.far, slot.carrier))
     for lab, bp in scene.points.items():
         try:
             a, b = link_ends(scene, bp.link)
@@ -109,14 +110,12 @@ def inputs(scene, n: int) -> tuple[np.ndarray, int, bool]:
     return xs, int(np.flatnonzero(xs == own)[0]), False
 
 
-def _vertices_at(prog, x: float, diagrams) -> dict | None:
-    """Every polygon vertex of each diagram at input ``x`` (the compiled construction), or
-    None where the construction fails (a toggle, a position that cannot close)."""
-    from polygons.errors import PolygonsError
-    try:
-        steps = prog.solve(x).steps
-    except (PolygonsError, ArithmeticError, ValueError):
+def _vertices_of(sol, diagrams) -> dict | None:
+    """Every polygon vertex of each diagram of a compiled solution (the construction at one
+    frame's input), or None where the construction failed (a toggle, no closure)."""
+    if sol is None:
         return None
+    steps = sol.steps
     out = {d: {} for d in diagrams}
     for s in steps:
         if s.diagram in out and s.end is not None and s.point is not None:
@@ -134,7 +133,7 @@ def _tag(sol, step, line=None) -> str | None:
         if s.link:
             return s.link
         if s.relative:
-            for name in list(sol.scene.links) + [sl.lever for sl in sol.scene.slots.values()]:
+            for name in [b.name for b in sol.scene.model.bodies if b.kind in ("link", "lever")]:
                 try:
                     if set(link_ends(sol.scene, name)) == set(s.relative):
                         return name
@@ -242,7 +241,7 @@ def frames(sol, figs=(), n: int = FRAMES) -> dict:
     labels = [lab for lab in scene.labels if lab in sw.pos]
     diagrams = [d for d in scene.solve if d in sol.vertices]
     prog = compile_scene(scene)
-    per_frame = [_vertices_at(prog, float(x), diagrams) for x in xs]
+    per_frame = [_vertices_of(sol_k, diagrams) for sol_k in prog.solve_along(xs, start)]
     layouts = {f.kind: f.meta.get("layout") for f in figs
                if f.stage is None and f.kind in diagrams and f.meta.get("layout") is not None}
     polys, drawing = {}, {}
