@@ -137,10 +137,62 @@ def rate_with_sense(drv, key: str, sense_key: str, dimension: str, r) -> tuple[f
     return value, turn
 
 
-def point_on_link(spec, r, where) -> tuple[float | None, float | None, float]:
+def ground_from(spec, r, where, ground) -> tuple[float, float]:
+    """A fixed pivot placed from another, as books do ('D is 300 mm from A at 30°'):
+    ``{ from = "A", distance = "300 mm", angle = "30 deg" }`` (CCW from +x, or '30 deg CW')."""
+    r.table(spec, where, ("from", "distance", "angle"), required=("from", "distance", "angle"))
+    frm = r.label(spec["from"], where + ".from")
+    if frm not in ground:
+        raise SceneError(f"{frm} must be a fixed pivot given before this one in [ground] "
+                         f"({', '.join(ground) or 'none yet'})", file=r.file,
+                         where=where + ".from")
+    d = r.quantity(spec["distance"], "length", where + ".distance")
+    text, turn = _turn_of(spec["angle"]) if isinstance(spec["angle"], str) else (
+        spec["angle"], 1.0)
+    phi = turn * r.quantity(text, "angle", where + ".angle")
+    x0, y0 = ground[frm]
+    return (x0 + d * math.cos(phi), y0 + d * math.sin(phi))
+
+
+def plate_corner(spec, r, where, length) -> tuple[float, float]:
+    """(along, left) of a plate's corner X given by its distances from the link's ends,
+    d₁ = |first label X|, d₂ = |second label X|: along = (L² + d₁² − d₂²) / 2L,
+    left = ±√(d₁² − along²), on the stated side."""
+    if any(k in spec for k in ("along", "fraction", "left", "distance", "angle")):
+        raise SceneError("give the corner either by distances (and side) or by along/left "
+                         "or distance/angle, not both", file=r.file, where=where)
+    if length is None:
+        raise SceneError(f"distances need the link {spec.get('on')}'s length in [links]",
+                         file=r.file, where=where + ".distances")
+    ds = spec["distances"]
+    if not isinstance(ds, list) or len(ds) != 2:
+        raise SceneError("distances = [from the first label, from the second], e.g. "
+                         "[\"100 mm\", \"120 mm\"]", file=r.file, where=where + ".distances")
+    d1, d2 = (r.quantity(v, "length", where + ".distances") for v in ds)
+    side = spec.get("side")
+    if side not in ("left", "right"):
+        raise SceneError("side must be 'left' or 'right' (of the link's first → second label)",
+                         file=r.file, where=where + ".side")
+    L = length
+    along = (L * L + d1 * d1 - d2 * d2) / (2.0 * L)
+    h2 = d1 * d1 - along * along
+    if not h2 > 1e-18 * L * L:
+        raise SceneError(f"no triangle has the sides {1e3 * L:.6g}, {1e3 * d1:.6g} and "
+                         f"{1e3 * d2:.6g} mm (each must be shorter than the other two "
+                         f"together)", file=r.file, where=where + ".distances")
+    return along, math.sqrt(h2) * (1.0 if side == "left" else -1.0)
+
+
+def point_on_link(spec, r, where, length=None) -> tuple[float | None, float | None, float]:
     """(along, fraction, left) of ``[points.X]``: given as they are, or in polar form from
     the link's first label, ``distance`` and ``angle`` (CCW from first → second label, or
-    '30 deg CW'): along = d cos φ, left = d sin φ."""
+    '30 deg CW'): along = d cos φ, left = d sin φ; or a plate's corner by its two distances
+    (:func:`plate_corner`, ``length`` the link's)."""
+    if "distances" in spec or "side" in spec:
+        if "distances" not in spec:
+            raise SceneError("side goes with distances = [..., ...]", file=r.file, where=where)
+        along, left = plate_corner(spec, r, where, length)
+        return along, None, left
     polar = ("distance" in spec) or ("angle" in spec)
     if polar:
         if not ("distance" in spec and "angle" in spec) or any(
