@@ -488,13 +488,21 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         driver = record(Crank, link=name, pivot=pivot, tip=tip, angle=angle, omega=omega,
                         alpha=alpha)
     else:
-        r.table(drv, "driver", ("slider", "position", "velocity", "acceleration"),
-                required=("slider", "position", "velocity"))
+        r.table(drv, "driver", ("slider", "position", "velocity", "acceleration", "rod",
+                                "rod_angle"), required=("slider", "velocity"))
         point = need_label(r.label(drv["slider"], "driver.slider"), "driver.slider")
         if point not in sliders:
             raise SceneError(f"slider driver {point} needs a guide: add [sliders.{point}]",
                              file=file, where="driver.slider")
-        driver = SliderDrive(point, r.quantity(drv["position"], "length", "driver.position"),
+        if ("position" in drv) == ("rod" in drv or "rod_angle" in drv):
+            raise SceneError("place the slider driver by its position (position = \"150 mm\") "
+                             "or by the angle of its rod (rod = \"BA\", rod_angle = "
+                             "\"30 deg\"): give exactly one", file=file, where="driver")
+        position = (r.quantity(drv["position"], "length", "driver.position")
+                    if "position" in drv else topology.slider_by_rod(
+                        drv, r, point, sliders, links, ground, data.get("assembly", {}),
+                        split_link_name))
+        driver = SliderDrive(point, position,
                              r.quantity(drv["velocity"], "velocity", "driver.velocity"),
                              r.quantity(drv.get("acceleration", "0 m/s^2"), "acceleration",
                                         "driver.acceleration"))

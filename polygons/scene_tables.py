@@ -113,6 +113,13 @@ TABLES: tuple[Table, ...] = (
         Key("position", "quantity", "slider driver: position along the guide, from the "
                                     "guide's `through` point in its `direction`",
             example='"120 mm"', dimension="length", sign="positive along `direction`"),
+        Key("rod", "link", "slider driver placed by the angle of its rod instead of position "
+                           "('the connecting rod AB makes 30° with the line of stroke'): the "
+                           "rod, a link at the slider whose other end is on a fixed guide or "
+                           "joined by one link to a fixed pivot (two positions: [assembly] "
+                           "near chooses)", example='"BA"'),
+        Key("rod_angle", "string", "with rod: the rod's direction, first label → second, CCW "
+                                   "from +x (or '30 deg CW')", example='"150 deg"'),
         Key("velocity", "quantity", "slider driver: velocity along the guide",
             example='"2 m/s"', dimension="velocity", sign="positive along `direction`"),
         Key("acceleration", "quantity", "slider driver: acceleration along the guide",

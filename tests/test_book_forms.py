@@ -120,3 +120,50 @@ def test_a_crank_without_a_sense_names_the_key_to_add():
     with pytest.raises(SceneError) as e:
         parse_scene(base, file="t.toml")
     assert "sense" in str(e.value) and "CW" in str(e.value)
+
+
+def _engine(driver, assembly):
+    return parse_scene({"ground": {"O": ["0 mm", "0 mm"]},
+                        "links": {"OA": "50 mm", "AB": "170 mm"},
+                        "sliders": {"B": {"through": ["0 mm", "0 mm"], "direction": "0 deg"}},
+                        "driver": {"slider": "B", "velocity": "5 m/s", **driver},
+                        "assembly": assembly}, file="t.toml")
+
+
+def test_a_slider_driver_placed_by_the_angle_of_its_rod():
+    """|B + L u(170°)| = r on the x-axis: s = −L cos φ ± √(r² − L² sin² φ)."""
+    L, r, phi = 0.17, 0.05, math.radians(170)
+    far = -L * math.cos(phi) + math.sqrt(r * r - (L * math.sin(phi)) ** 2)
+    scene = _engine({"rod": "BA", "rod_angle": "170 deg"},
+                    {"A": "A above O", "B": {"near": ["200 mm", "0 mm"]}})
+    assert scene.driver.position == pytest.approx(far, rel=1e-14)
+    sol = solve(scene)
+    a, b = sol.points["A"].position, sol.points["B"].position
+    assert math.degrees(math.atan2(a[1] - b[1], a[0] - b[0])) == pytest.approx(170, abs=1e-10)
+    same = solve(_engine({"position": f"{far * 1e3!r} mm"}, {"A": "A above O"}))
+    assert same.points["A"].velocity == pytest.approx(sol.points["A"].velocity, rel=1e-12)
+
+
+def test_a_trammel_driven_by_one_slider_placed_by_its_bar_angle():
+    scene = parse_scene({"ground": {"O": ["0 mm", "0 mm"]}, "links": {"AB": "100 mm"},
+                         "sliders": {"A": {"through": ["0 mm", "0 mm"], "direction": "0 deg"},
+                                     "B": {"through": ["0 mm", "0 mm"],
+                                           "direction": "90 deg"}},
+                         "driver": {"slider": "A", "rod": "AB", "rod_angle": "120 deg",
+                                    "velocity": "1 m/s"},
+                         "assembly": {"B": "B above O"}}, file="t.toml")
+    assert scene.driver.position == pytest.approx(0.05, rel=1e-14)     # 100 cos 60°
+    assert solve(scene).points["B"].position == pytest.approx((0.0, 0.1 * math.sin(
+        math.radians(60))), abs=1e-15)
+
+
+@pytest.mark.parametrize("driver,words", [
+    ({"rod": "BA", "rod_angle": "170 deg", "position": "1 mm"}, "give exactly one"),
+    ({"rod": "BA", "rod_angle": "170 deg"}, "two positions of B"),
+    ({"rod": "OA", "rod_angle": "170 deg"}, "with the slider B at one end"),
+    ({"rod": "BA", "rod_angle": "90 deg"}, "cannot reach"),
+])
+def test_a_rod_angle_that_does_not_place_the_slider_is_refused(driver, words):
+    with pytest.raises(SceneError) as e:
+        _engine(driver, {"A": "A above O"})
+    assert words in str(e.value)
