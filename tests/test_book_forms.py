@@ -167,3 +167,25 @@ def test_a_rod_angle_that_does_not_place_the_slider_is_refused(driver, words):
     with pytest.raises(SceneError) as e:
         _engine(driver, {"A": "A above O"})
     assert words in str(e.value)
+
+
+def block_reference():
+    import analytic
+    import analytic_more as am
+    ad, ab, bc, cd, th, w, rho = 0.6, 0.2, 0.5, 0.4, math.radians(60), 10.0, 1.5
+    ref = analytic.four_bar((0, 0), (ad, 0), ab, bc, cd, th, w, 0.0, +1)
+    C = (complex(*ref["C"]), complex(*ref["vC"]), complex(*ref["aC"]))
+    sl = am.slot(am.crank(am.fixed(0, 0), rho * ab, th, w, 0.0), C, 0.0)
+    return {"omega(CQ)": sl["omega"], "alpha(CQ)": sl["alpha"], "vs(E)": sl["t_dot"],
+            "as(E)": sl["t_ddot"], "cor(E)": abs(2 * sl["omega"] * sl["t_dot"])}
+
+
+def test_a_block_pinned_to_one_moving_link_sliding_on_another():
+    scene = load_scene(CASES / "new-block-on-moving-link.toml")
+    sol = solve(scene)
+    ref = block_reference()
+    for q, v in ref.items():
+        assert quantity(sol, q) == pytest.approx(v, rel=1e-9), q
+    for a in scene.answers:
+        assert a.exact == pytest.approx(ref[a.quantity] if a.mode == "signed"
+                                        else abs(ref[a.quantity]), rel=1e-12), a.quantity
