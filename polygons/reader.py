@@ -12,7 +12,7 @@ from .units import UNITS, parse_quantity
 Vec = tuple[float, float]
 
 #: a point label: a capital letter, then lower-case letters, digits, '_' or primes
-LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
+LABEL = re.compile(r"[A-Z][a-z0-9_']*\Z")     # \Z, not $: "Z\n" is no label
 _LABEL = LABEL
 
 
@@ -27,6 +27,36 @@ def record(cls, **fields):
 
 
 _new = object.__new__
+
+
+#: a TOML escape that gives a control character (a raw one is not valid TOML): NUL, backspace,
+#: form feed, escape, DEL, C1 ... (tab, newline and carriage return are text)
+_CONTROL_ESCAPE = re.compile(r"\\(?:[bfe]|x[0-9A-Fa-f]{2}|u00[0189][0-9A-Fa-f]|u007[Ff]"
+                             r"|U0000[0189][0-9A-Fa-f]|U00007[Ff])")
+_CONTROL = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f]")
+
+
+def refuse_control_characters(text: str, data, file: str) -> None:
+    """Refuse a text value (or key) holding a control character other than tab and line
+    ends: it would land in file names, SVG and HTML (where XML forbids it).  Walked only when
+    ``text``, the TOML read, has an escape that can give one, so a scene costs one search."""
+    if "\\" not in text or not _CONTROL_ESCAPE.search(text):
+        return
+    stack = [("", data)]
+    while stack:
+        where, value = stack.pop()
+        if isinstance(value, str):
+            m = _CONTROL.search(value)
+            if m:
+                raise SceneError(f"control character U+{ord(m.group(0)):04X} in the text "
+                                 f"{show(value)}: only printable characters, tabs and line "
+                                 f"breaks are allowed", file=file, where=where or None)
+        elif isinstance(value, dict):
+            for k, v in value.items():
+                stack.append((f"{where}.{k}" if where else str(k), k))
+                stack.append((f"{where}.{k}" if where else str(k), v))
+        elif isinstance(value, list):
+            stack.extend((f"{where}[{i}]", v) for i, v in enumerate(value))
 
 
 class Reader:

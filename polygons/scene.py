@@ -44,7 +44,7 @@ from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
 from .loads import parse as parse_loads
-from .reader import LABEL as _LABEL, Reader, answer_fields, record
+from .reader import LABEL as _LABEL, Reader, answer_fields, record, refuse_control_characters
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
@@ -325,11 +325,16 @@ def parse_toml(text: str, file: str) -> dict:
     fast = _rtoml()
     if fast is not None:
         try:
-            return fast.loads(text)
+            data = fast.loads(text)
         except Exception:         # noqa: BLE001 - any refusal is tomllib's to explain
             pass
+        else:
+            refuse_control_characters(text, data, file)
+            return data
     try:
-        return tomllib.loads(text)
+        data = tomllib.loads(text)
+        refuse_control_characters(text, data, file)
+        return data
     except tomllib.TOMLDecodeError as exc:
         raise SceneSyntaxError(f"not valid TOML: {' '.join(str(exc).split())[:200]}",
                                file=file) from None

@@ -79,7 +79,7 @@ _FROM = re.compile(r"^\s*(.*?)\s+from\s+(.+?)\s*$", re.IGNORECASE)
 _DEAD_WORDS = {"idc": "idc", "inner dead centre": "idc", "inner dead center": "idc",
                "tdc": "idc", "odc": "odc", "outer dead centre": "odc",
                "outer dead center": "odc", "bdc": "odc"}
-_LINE = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
+_LINE = re.compile(r"[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*\Z")     # \Z: no "AB\n"
 #: the axes an angle may be measured from (the direction of each, CCW from +x)
 _AXES = {"+x": 0.0, "x": 0.0, "-x": math.pi, "+y": math.pi / 2, "y": math.pi / 2,
          "-y": -math.pi / 2}
