@@ -42,7 +42,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Mapping
 
-from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, suggest
+from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, show, suggest
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
                         Friction, Joint, Loads, MassItem, SlotContact, Spring, bodies_of)
 from .reader import Reader, record
@@ -557,6 +557,10 @@ def _springs(ctx: _Context, raw) -> list[Spring]:
             if not isinstance(ends, list) or len(ends) != 2:
                 raise SceneError("between = [\"S\", \"H\"]: the two points the spring joins",
                                  file=file, where=where + ".between")
+            if ends[0] == ends[1]:
+                raise SceneError(f"the spring joins {show(ends[0])} to itself: a linear spring "
+                                 f"joins two different points", file=file,
+                                 where=where + ".between")
             if ("free_length" in spec) == ("extension" in spec):
                 raise SceneError("give exactly one of free_length or extension (at this "
                                  "instant; negative when compressed)", file=file, where=where)

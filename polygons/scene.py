@@ -643,6 +643,9 @@ MIN_RELATIVE = 1e-6
 #: the shortest link accepted (m)
 MIN_LENGTH = 1e-9
 MAX_RELATIVE = 1e6
+#: the farthest a point of [points] may lie from its link's first label, as a multiple of the
+#: mechanism's size: farther, the mechanism shrinks to nothing in every drawing
+MAX_POINT_RELATIVE = 1e4
 
 
 def check_proportions(file, ground, drawn, links, sliders, points, assembly, driver) -> None:
@@ -669,6 +672,15 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
             value = getattr(point, key)
             if value and abs(value) < shortest:
                 _too_short(file, f"points.{label}.{key}", value, size)
+    for label, point in points.items():
+        link = links.get(point.link)
+        reach = math.hypot((point.along or 0.0) + (point.fraction or 0.0) * (
+            link.length if link is not None and link.length else size), point.left or 0.0)
+        if reach > MAX_POINT_RELATIVE * size:
+            raise SceneError(f"the point lies {reach:.4g} m from {point.link}'s first label, too "
+                             f"far for a mechanism of size {size:.4g} m: a point of [points] "
+                             f"must be within {MAX_POINT_RELATIVE:g} × the size",
+                             file=file, where=f"points.{label}")
     farthest = MAX_RELATIVE * size
     for table, suffix, values in (
             ("ground", "", ground.items()), ("drawn", "", drawn.items()),
