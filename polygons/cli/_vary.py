@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..batch import MAX_ROWS
 from ..errors import PolygonsError
 from ..scene import Crank, Scene
 from ..units import parse_quantity
@@ -29,7 +30,7 @@ _RANGE = re.compile(r"^\s*([^.]+?)\s*\.\.\s*(.+?)\s*:\s*(\d+)\s*$")
 
 def parse_vary(spec: str, scene: Scene) -> tuple[str, np.ndarray]:
     """``'AB=40..60mm:5'`` → ('AB', array of 5 lengths in m)."""
-    where = f"--vary {spec}"
+    where = f"--vary {spec if len(spec) <= 60 else spec[:59] + '…'}"
     name, eq, rest = spec.partition("=")
     name = name.strip()
     if not eq or not name or not rest.strip():
@@ -38,7 +39,13 @@ def parse_vary(spec: str, scene: Scene) -> tuple[str, np.ndarray]:
     dim = _DIMENSION.get(name, "length")
     m = _RANGE.match(rest)
     if m:
-        lo, hi, count = m.group(1), m.group(2), int(m.group(3))
+        lo, hi, digits = m.group(1), m.group(2), m.group(3).lstrip("0")
+        count = int(digits) if len(digits) <= 12 else MAX_ROWS + 1
+        if count > MAX_ROWS:
+            raise PolygonsError(f"{digits[:15]}{'…' if len(digits) > 15 else ''} values: "
+                                f"a --vary gives at most {MAX_ROWS:,} (and with --grid, all "
+                                f"combinations together at most that)", file=scene.file,
+                                where=where)
         unit = re.sub(r"^[-+0-9.eE\s]+", "", hi)
         lo_v = _value(lo if re.search(r"[a-zA-Z/]", lo) else f"{lo} {unit}", dim, scene, where)
         hi_v = _value(hi, dim, scene, where)

@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import SceneError, UnknownLabelError, suggest
-from ..options import labels
+from ..options import MAX_STEPS, labels
 from ..scene import Crank, Scene, load_scene
 from ..sweep import Sweep, harmonic, sweep
 
@@ -30,6 +30,37 @@ PROGRESS_FROM = 100_000
 STREAM_FROM = 1_000_000
 #: most points drawn per curve (the maxima are always taken from every position)
 PLOT_POINTS = 4000
+#: the formats a plot can be written in (--formats)
+PLOT_FORMATS = ("png", "svg", "pdf")
+#: the longest scene title a plot shows (cut with an ellipsis beyond)
+PLOT_TITLE = 120
+
+
+def _steps(text: str) -> int:
+    """--steps: a whole number from 2 to MAX_STEPS (the scene's [sweep] steps bound),
+    refused by the parser before any work."""
+    import argparse
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number, got {text[:40]!r}") from None
+    if not 2 <= n <= MAX_STEPS:
+        raise argparse.ArgumentTypeError(f"must be from 2 to {MAX_STEPS:,}, got {n:,}"
+                                         if len(text) < 40 else
+                                         f"must be from 2 to {MAX_STEPS:,}")
+    return n
+
+
+def _formats(text: str) -> tuple[str, ...]:
+    """--formats: a comma-separated list of PLOT_FORMATS, refused by the parser."""
+    import argparse
+    formats = tuple(dict.fromkeys(f.strip().lower() for f in text.split(",") if f.strip()))
+    bad = [f for f in formats if f not in PLOT_FORMATS]
+    if bad or not formats:
+        head = f"unknown plot format {bad[0][:40]!r}" if bad else "no plot format"
+        raise argparse.ArgumentTypeError(f"{head}: choose from {', '.join(PLOT_FORMATS)} "
+                                         f"(comma-separated)")
+    return formats
 
 
 def register(sub) -> None:
@@ -39,15 +70,18 @@ def register(sub) -> None:
                                    "once; write CSV and plots of displacement, velocity and "
                                    "acceleration of chosen points and ω/α of chosen links.")
     p.add_argument("scene", help="scene file (TOML)")
-    p.add_argument("--steps", type=int, default=None,
-                   help="positions over the cycle (default: [sweep] steps or 360)")
+    p.add_argument("--steps", type=_steps, default=None,
+                   help=f"positions over the cycle, 2 .. {MAX_STEPS:,} (default: [sweep] steps "
+                        f"or 360)")
     p.add_argument("--points", help="comma-separated point labels to plot (default: [sweep] "
                                     "points, else the sliders, else the last point placed)")
     p.add_argument("--links", help="comma-separated link names for ω/α (default: [sweep] "
                                    "links, else every link but the crank)")
     p.add_argument("-o", "--out", default="out", metavar="DIR",
                    help="output directory (default: out)")
-    p.add_argument("--formats", default="png,svg", help="plot formats (default: png,svg)")
+    p.add_argument("--formats", type=_formats, default=("png", "svg"),
+                   help=f"plot formats, comma-separated: {', '.join(PLOT_FORMATS)} "
+                        f"(default: png,svg)")
     p.add_argument("--no-plot", action="store_true", help="write the CSV only")
     p.add_argument("--shm", action="store_true", default=None,
                    help="overlay the simple-harmonic curve on each slider (crank pin "
@@ -145,8 +179,7 @@ def run(args) -> int:
     stem = out / f"{Path(args.scene).stem}-sweep"
     written = [write_csv(sw, points, links, stem.with_suffix(".csv"))]
     if not args.no_plot:
-        formats = [f.strip() for f in args.formats.split(",") if f.strip()]
-        written += plot(sw, points, links, shm, opt["unit"], stem, formats)
+        written += plot(sw, points, links, shm, opt["unit"], stem, list(args.formats))
     sys.stdout.write(summary(sw, points, links, shm, opt["unit"], written))
     return 0
 
@@ -257,13 +290,20 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
     drv = sw.scene.driver
     rate = (f"ω = {abs(drv.omega):.4g} rad/s {'CCW' if drv.omega > 0 else 'CW'}"
             if isinstance(drv, Crank) else f"v = {drv.velocity:.4g} m/s")
-    title = f"{sw.scene.title}\n{rate}, {sw.n} positions"
+    title = f"{plot_title(sw.scene.title)}\n{rate}, {sw.n} positions"
     if not sw.full_cycle:
         title += " (reachable range)"
     cw = isinstance(drv, Crank) and drv.omega < 0     # the axis in the crank's sense of rotation
     if cw:
         xlabel += "; axis reversed: the crank turns CW, time runs left to right"
     return plot_panels(title, xlabel, panels, stem, formats, markers, xlim, xticks, reverse_x=cw)
+
+
+def plot_title(title: str) -> str:
+    """A scene title as a plot shows it: one line, at most PLOT_TITLE characters (a longer one
+    cannot fit the figure)."""
+    text = " ".join(str(title).split())
+    return text if len(text) <= PLOT_TITLE else text[:PLOT_TITLE - 1] + "…"
 
 
 def _add(disp, vel, acc, sw, x, name, s, v, a, style, color):
