@@ -36,21 +36,6 @@ PLOT_FORMATS = ("png", "svg", "pdf")
 PLOT_TITLE = 120
 
 
-def _steps(text: str) -> int:
-    """--steps: a whole number from 2 to MAX_STEPS (the scene's [sweep] steps bound),
-    refused by the parser before any work."""
-    import argparse
-    try:
-        n = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a whole number, got {text[:40]!r}") from None
-    if not 2 <= n <= MAX_STEPS:
-        raise argparse.ArgumentTypeError(f"must be from 2 to {MAX_STEPS:,}, got {n:,}"
-                                         if len(text) < 40 else
-                                         f"must be from 2 to {MAX_STEPS:,}")
-    return n
-
-
 def _formats(text: str) -> tuple[str, ...]:
     """--formats: a comma-separated list of PLOT_FORMATS, refused by the parser."""
     import argparse
@@ -70,7 +55,7 @@ def register(sub) -> None:
                                    "once; write CSV and plots of displacement, velocity and "
                                    "acceleration of chosen points and ω/α of chosen links.")
     p.add_argument("scene", help="scene file (TOML)")
-    p.add_argument("--steps", type=_steps, default=None,
+    p.add_argument("--steps", type=int, default=None,
                    help=f"positions over the cycle, 2 .. {MAX_STEPS:,} (default: [sweep] steps "
                         f"or 360)")
     p.add_argument("--points", help="comma-separated point labels to plot (default: [sweep] "
@@ -109,9 +94,9 @@ def _options(scene: Scene, args) -> dict:
     links = list(labels(args.links, file=scene.file, where="--links")) if args.links \
         else (list(sw.links) if sw.links is not None else None)
     steps = args.steps if args.steps is not None else (sw.steps or 360)
-    if steps < 2:
-        raise SceneError(f"steps must be a whole number ≥ 2, got {steps!r}", file=scene.file,
-                         where="--steps")
+    if not 2 <= steps <= MAX_STEPS:      # the scene's [sweep] steps bound, before any work
+        raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
+                         f"{steps:,}", file=scene.file, where="--steps")
     shm = args.shm if args.shm is not None else bool(sw.shm)
     unit = args.unit or sw.unit
     if unit is None:
