@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 import os
 import re
+import stat
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -290,13 +291,31 @@ def _read_bounded(fd: int) -> bytes:
 _OPEN_FLAGS = getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0)
 
 
+#: opening a FIFO or a terminal must not wait for a writer (regular files ignore the flag)
+_NONBLOCK = getattr(os, "O_NONBLOCK", 0)
+_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+          (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+          (stat.S_ISSOCK, "a socket"))
+
+
+def _regular_file(mode: int, file: str) -> None:
+    """Refuse anything but a regular file (a FIFO, a device, a directory): it could block or
+    never end, and a scene is a file of a few kB."""
+    if stat.S_ISREG(mode):
+        return
+    kind = next((words for test, words in _KINDS if test(mode)), "not a regular file")
+    raise SceneError(f"is {kind}, not a scene file (a scene is a regular file)", file=file)
+
+
 def read_scene_text(path: str | Path) -> str:
     """The text of a scene file: at most :data:`MAX_SCENE_BYTES`, UTF-8, valid TOML nesting."""
     file = str(path)
     try:
-        fd = os.open(path, os.O_RDONLY | _OPEN_FLAGS)
+        _regular_file(os.stat(path).st_mode, file)     # a FIFO would block the open itself
+        fd = os.open(path, os.O_RDONLY | _OPEN_FLAGS | _NONBLOCK)
         try:
-            raw = _read_bounded(fd)       # (a directory opens, and refuses to be read)
+            _regular_file(os.fstat(fd).st_mode, file)  # (replaced between the two looks)
+            raw = _read_bounded(fd)
         finally:
             os.close(fd)
     except FileNotFoundError:
@@ -306,6 +325,8 @@ def read_scene_text(path: str | Path) -> str:
     except OSError as exc:
         raise SceneError(f"cannot read the scene file ({exc.strerror or exc})",
                          file=file) from None
+    except ValueError:                # a NUL in the path (the Python API)
+        raise SceneError("a file name cannot hold a NUL character", file=show(file)) from None
     if len(raw) > MAX_SCENE_BYTES:
         raise SceneError(f"the file is larger than the {MAX_SCENE_BYTES:,} byte limit for a "
                          f"scene file (a scene is a few kB)", file=file)

@@ -83,6 +83,8 @@ def main(argv=None) -> int:
             warnings.simplefilter("error")
             # a character missing from the plot font (a CJK title) is drawn as a box: cosmetic
             warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from font")
+            from ._output import refuse_overwriting_input
+            refuse_overwriting_input(args)       # the input file is never written over
             return int(args.func(args) or 0)
     except PolygonsError as exc:
         scene = getattr(args, "scene", None)
