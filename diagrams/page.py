@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import numpy as np
 
@@ -128,8 +129,9 @@ def page(sol, figs=None, n: int = FRAMES) -> str:
     sid = sol.scene.source.get("id", "")
     blob = json.dumps(data, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
     blob = blob.replace("</", "<\\/")
-    return (_HEAD.replace("{TITLE}", esc(plain(f"{sid}: {title}" if sid else title)))
-            .replace("{CSS}", _CSS + HTML_CSS)
+    fill = {"TITLE": esc(plain(f"{sid}: {title}" if sid else title)), "CSS": _CSS + HTML_CSS}
+    return (re.sub(r"\{(TITLE|CSS)\}", lambda m: fill[m.group(1)], _HEAD)   # once: a title
+            # '{CSS}' stays text
             + f'<h1>{typeset(title)}</h1>\n<p class="sub">{esc(sid)} — the construction stage by '
             f"stage (left) and the mechanism through its cycle (right). Arrow keys: stages; "
             f"the slider: crank position, in the crank's sense of rotation.</p>\n"

@@ -71,7 +71,7 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
                     written.append(print_pdf(target, target.with_suffix(".pdf")))
                     pages[kind + "-pdf"] = target.with_suffix(".pdf").name
         except PolygonsError as exc:
-            errors.append(f"{path}: {exc}")
+            errors.append(str(exc) if exc.file else f"{path}: {exc}")
             rows.append(f'<article class="card failed" id="case-{_anchor(stem)}"><h2>'
                         f'<span class="id">{esc(stem)}</span></h2><p>could not be solved: '
                         f"{esc(str(exc))}</p></article>")
