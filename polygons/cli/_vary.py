@@ -39,7 +39,7 @@ def parse_vary(spec: str, scene: Scene) -> tuple[str, np.ndarray]:
     dim = _DIMENSION.get(name, "length")
     m = _RANGE.match(rest)
     if m:
-        lo, hi, digits = m.group(1), m.group(2), m.group(3).lstrip("0")
+        lo, hi, digits = m.group(1), m.group(2), m.group(3).lstrip("0") or "0"
         count = int(digits) if len(digits) <= 12 else MAX_ROWS + 1
         if count > MAX_ROWS:
             raise PolygonsError(f"{digits[:15]}{'…' if len(digits) > 15 else ''} values: "
