@@ -542,7 +542,8 @@ def _flag_args(rng: random.Random, path: Path, tmp: Path) -> list:
                 args.append("--grid")
         else:
             args += ["--steps", pick(COUNTS)]
-            for flag, values in (("--points", ["B", "C", "Q", "B,B"]), ("--links", ["BC", "ZZ"]),
+            for flag, values in (("--points", ["B", "C", "Q", "B,B", "B," * 300]),
+                                 ("--links", ["BC", "ZZ", "BC," * 300, "AB,BC,CD,AC"]),
                                  ("--unit", ["mm", "m", "km"]),
                                  ("--progress", ["on", "off", "auto", "x"])):
                 if rng.random() < 0.3:

@@ -385,3 +385,24 @@ def test_the_api_load_refuses_wrong_types_with_its_own_errors(tmp_path):
         polygons.load_scene("a\x00b.toml")
     with pytest.raises(SceneError, match="directory"):
         polygons.solve(tmp_path)
+
+
+# ---------------------------------------------------------------- found while fuzzing
+def test_a_sweep_of_a_large_mechanism_is_plotted_with_a_short_key(tmp_path):
+    """A chain of 21 links: 20 ω curves by default; the key names the first 8 (a key of
+    dozens could not fit: matplotlib's layout warning was an internal error)."""
+    from chains import chain_scene
+    path = tmp_path / "chain.toml"
+    path.write_text(chain_scene(10), encoding="utf-8")
+    code, out, err = run("sweep", path, "--steps", "24", "--formats", "svg", "-o", tmp_path)
+    assert code == 0 and err == ""
+    svg = (tmp_path / "chain-sweep.svg").read_text(encoding="utf-8")
+    assert svg.count("key: the first 8 of 20 curves") == 2      # the ω and α panels
+
+
+def test_repeated_sweep_labels_are_taken_once(scene, tmp_path):
+    code, out, err = run("sweep", scene(), "--points", "C,C,C", "--links", "BC,BC",
+                         "--steps", "4", "--no-plot", "-o", tmp_path)
+    assert code == 0 and err == ""
+    header = (tmp_path / "s-sweep.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    assert len(header) == len(set(header)) and header.count("C.x [m]") == 1

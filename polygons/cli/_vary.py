@@ -74,13 +74,14 @@ def run_vary(args, scene: Scene) -> int:
     b = solve_many(scene, values, grid=args.grid)
     drv = scene.driver
     if args.points:
-        points = [p.strip() for p in args.points.split(",") if p.strip()]
+        points = list(dict.fromkeys(p.strip() for p in args.points.split(",") if p.strip()))
     else:
         sliders = [s for s in scene.sliders
                    if isinstance(drv, Crank) or s != getattr(drv, "point", None)]
         points = sliders or [b.plan.dyads[-1].placed[-1]]
     crank = drv.link if isinstance(drv, Crank) else None
-    links = ([p.strip() for p in args.links.split(",") if p.strip()] if args.links else
+    links = (list(dict.fromkeys(p.strip() for p in args.links.split(",") if p.strip()))
+             if args.links else
              [name for name in b._links[0] if name != crank])
     cols = [("row", "", np.arange(b.n))]
     cols += [(name, _unit_of(name), b.inputs[name]) for name in values]

@@ -34,6 +34,8 @@ PLOT_POINTS = 4000
 PLOT_FORMATS = ("png", "svg", "pdf")
 #: the longest scene title a plot shows (cut with an ellipsis beyond)
 PLOT_TITLE = 120
+#: most curves named in one panel's key (a large mechanism has dozens of links)
+PLOT_KEYED = 8
 
 
 def _formats(text: str) -> tuple[str, ...]:
@@ -93,6 +95,9 @@ def _options(scene: Scene, args) -> dict:
         else (list(sw.points) if sw.points is not None else None)
     links = list(labels(args.links, file=scene.file, where="--links")) if args.links \
         else (list(sw.links) if sw.links is not None else None)
+    # each label once (a repeat would add columns and curves, never information)
+    points = list(dict.fromkeys(points)) if points is not None else None
+    links = list(dict.fromkeys(links)) if links is not None else None
     steps = args.steps if args.steps is not None else (sw.steps or 360)
     if not 2 <= steps <= MAX_STEPS:      # the scene's [sweep] steps bound, before any work
         raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
@@ -258,6 +263,12 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
                 al.lines.append(Line(f"α {name}" if first else "", x[sl][d],
                                      sw.alpha[name][sl][d], "-", c))
         panels += [om, al]
+    for panel in panels:          # a key of dozens of curves cannot fit the figure
+        keyed = [ln for ln in panel.lines if ln.label]
+        if len(keyed) > PLOT_KEYED:
+            for ln in keyed[PLOT_KEYED:]:
+                ln.label = ""
+            panel.title = f"key: the first {PLOT_KEYED} of {len(keyed)} curves"
     markers = []
     for lim in sw.limits:
         if lim.kind in ("limit", "toggle", "near-toggle"):
