@@ -96,8 +96,8 @@ class Batch:
         return out
 
     def _known(self, name, table):
-        if name not in table:
-            raise UnknownLabelError(f"unknown name {name!r}: {suggest(name, table)}",
+        if not isinstance(name, str) or name not in table:
+            raise UnknownLabelError(f"unknown name {show(name)}: {suggest(str(name), table)}",
                                     file=self.scene.file)
         return name
 

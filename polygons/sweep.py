@@ -116,13 +116,21 @@ class Sweep:
 
     def position(self, label: str) -> np.ndarray:
         """(N, 2) positions of ``label``."""
-        return _as_n2(self.pos[label], self.n)
+        return _as_n2(self.pos[self._known(label)], self.n)
 
     def velocity(self, label: str) -> np.ndarray:
-        return _as_n2(self.vel[label], self.n)
+        return _as_n2(self.vel[self._known(label)], self.n)
 
     def acceleration(self, label: str) -> np.ndarray:
-        return _as_n2(self.acc[label], self.n)
+        return _as_n2(self.acc[self._known(label)], self.n)
+
+    def _known(self, label) -> str:
+        """``label`` if the sweep solved it, else a one-line UnknownLabelError."""
+        if isinstance(label, str) and label in self.pos:
+            return label
+        from .errors import UnknownLabelError, suggest
+        raise UnknownLabelError(f"unknown point {show(label)}: {suggest(str(label), self.pos)}",
+                                file=self.scene.file)
 
 
 def _as_n2(xy, n: int) -> np.ndarray:

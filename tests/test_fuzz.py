@@ -691,7 +691,7 @@ def test_fuzz_output_paths(tmp_path):
     assert not failures, "\n".join(failures)
 
 
-API_VALUES = [None, True, 0, -1, 2.5, 1e300, -1e300, float("nan"), float("inf"), 5e-324,
+API_VALUES = [None, True, 0, -1, 3, 24, 2.5, 1e300, -1e300, float("nan"), float("inf"), 5e-324,
               -0.0, "", "abc", "0.1", b"\x00", [], [[]], [1, "a"], [[0.1, 0.2]], {"a": 1},
               (0.1, 0.2), range(3), 10 ** 400, 1j, [0.1, float("nan")], object()]
 
@@ -738,11 +738,15 @@ def test_fuzz_the_python_api():
                 last = list(scene.links)[-1]
                 w = b.omega(last)[b.ok]
                 assert np.isfinite(w).all(), "non-finite ω in a row reported solved"
+                getattr(b, rng.choice(["position", "velocity", "acceleration", "omega",
+                                       "alpha"]))(rng.choice(names + ["B", _api_value(rng)]))
             elif kind == "sweep":
                 kw = rng.choice([{"steps": _api_value(rng)}, {"inputs": _api_value(rng)},
                                  {"chunk": _api_value(rng), "steps": 8}])
                 sw = sweep(scene, **kw)
                 assert sw.n <= 10_000_000
+                getattr(sw, rng.choice(["position", "velocity", "acceleration"]))(
+                    rng.choice(["B", "A", "Q", _api_value(rng)]))
             else:
                 res = polygons_api().solve(scene)
                 getattr(res, rng.choice(["svg", "centres", "least_velocity"]))(
