@@ -128,6 +128,9 @@ def _default_links(sw: Sweep) -> list[str]:
 
 def run(args) -> int:
     scene = load_scene(args.scene)
+    if args.steps is not None and not 2 <= args.steps <= MAX_STEPS:    # checked with --vary too
+        raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
+                         f"{args.steps:,}", file=scene.file, where="--steps")
     if args.vary:
         from ._vary import run_vary
         return run_vary(args, scene)
