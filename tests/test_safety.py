@@ -406,3 +406,26 @@ def test_repeated_sweep_labels_are_taken_once(scene, tmp_path):
     assert code == 0 and err == ""
     header = (tmp_path / "s-sweep.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     assert len(header) == len(set(header)) and header.count("C.x [m]") == 1
+
+
+# ---------------------------------------------------------------- every count has a bound
+#: every whole-number option of the command line, with a value beyond its documented bound
+#: (README, "Counts"): a new one must be added here, with its bound checked before work
+BOUNDED_COUNTS = {("sweep", "--steps"): "10000001"}
+
+
+def test_every_whole_number_option_is_bounded_before_work(scene):
+    from polygons.cli import build_parser
+    parser = build_parser()
+    sub = next(a for a in parser._actions if a.dest == "command")
+    found = set()
+    for name, p in sub.choices.items():
+        for action in p._actions:
+            if action.type is int:
+                found.add((name, action.option_strings[-1] if action.option_strings
+                           else action.dest))
+    assert found == set(BOUNDED_COUNTS), "an unbounded whole-number option: " + str(
+        found ^ set(BOUNDED_COUNTS))
+    for (name, flag), value in BOUNDED_COUNTS.items():
+        code, out, err = run(name, scene(), flag, value)
+        assert code in (1, 2) and err.count("\n") == 1 and "polygons: error: " in err
