@@ -411,10 +411,12 @@ def test_repeated_sweep_labels_are_taken_once(scene, tmp_path):
 # ---------------------------------------------------------------- every count has a bound
 #: every whole-number option of the command line, with a value beyond its documented bound
 #: (README, "Counts"): a new one must be added here, with its bound checked before work
-BOUNDED_COUNTS = {("sweep", "--steps"): "10000001"}
+BOUNDED_COUNTS = {("sweep", "--steps"): ["--steps", "10000001"],
+                  ("exam", "--variants"): ["--variants", "1000000000000", "--out", "{tmp}"],
+                  ("exam", "--seed"): ["--variants", "1", "--seed", "-1", "--out", "{tmp}"]}
 
 
-def test_every_whole_number_option_is_bounded_before_work(scene):
+def test_every_whole_number_option_is_bounded_before_work(scene, tmp_path):
     from polygons.cli import build_parser
     parser = build_parser()
     sub = next(a for a in parser._actions if a.dest == "command")
@@ -426,6 +428,7 @@ def test_every_whole_number_option_is_bounded_before_work(scene):
                            else action.dest))
     assert found == set(BOUNDED_COUNTS), "an unbounded whole-number option: " + str(
         found ^ set(BOUNDED_COUNTS))
-    for (name, flag), value in BOUNDED_COUNTS.items():
-        code, out, err = run(name, scene(), flag, value)
-        assert code in (1, 2) and err.count("\n") == 1 and "polygons: error: " in err
+    for (name, flag), extra in BOUNDED_COUNTS.items():
+        code, out, err = run(name, scene(), *(a.format(tmp=tmp_path / "o") for a in extra))
+        assert code in (1, 2) and err.count("\n") == 1 and "polygons: error: " in err, err
+        assert not (tmp_path / "o").exists()        # refused before any work
