@@ -48,7 +48,7 @@ def refuse_overwriting_input(args) -> None:
     scene file itself or would overwrite it: the input is never written over."""
     inputs = [v for v in (getattr(args, "scene", None), getattr(args, "cases", None))
               if isinstance(v, str) and v]
-    for key, flag in (("out", "-o"), ("svg", "--svg")):
+    for key, flag in (("out", "--out"), ("svg", "--svg")):
         target = getattr(args, key, None)
         if not isinstance(target, str) or not target:
             continue
