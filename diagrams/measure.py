@@ -281,7 +281,8 @@ def read_quantity(sol, readings: dict, q: Quantity, ruler: float | None = RULER_
             slot = scene.model.slot[P]
             if sp is None:
                 return None
-            e = space_vec(slot.line.origin, P)
+            # the pin and the lever's point under it share one mark on the space diagram
+            e = space_vec(slot.line.origin, P if P in sp.points else slot.coincident)
             if fn == "vs":
                 a, b = V(slot.coincident), V(P)
             else:
