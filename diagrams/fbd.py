@@ -333,15 +333,10 @@ def _dot(p):
 
 
 def _lead(box, to):
-    """A leader from 0.5 mm off a label's box to the point ``to`` (None when beside it)."""
-    cx = min(max(to[0], box.x0), box.x1)
-    cy = min(max(to[1], box.y0), box.y1)
-    d = math.hypot(to[0] - cx, to[1] - cy)
-    if d < 1.5:
-        return None
-    u = ((to[0] - cx) / d, (to[1] - cy) / d)
-    return ((round(cx + 0.5 * u[0], 3), round(cy + 0.5 * u[1], 3)),
-            (round(to[0] - 0.5 * u[0], 3), round(to[1] - 0.5 * u[1], 3)))
+    """A leader from 0.5 mm off a label's box to 0.5 mm short of ``to`` (None when beside
+    it): :func:`labels.leader`."""
+    from .labels import leader
+    return leader(box, to, 0.5)
 
 
 def _along_member(tail, tip, segments) -> tuple[float, float] | None:

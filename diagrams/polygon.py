@@ -30,7 +30,7 @@ from polygons.plan import Step
 
 from . import crowd, inset, scale as scales
 from .labels import (Box, Placer, bounds, box_hits_segment, box_segment_distance, clip_line,
-                     largest_gap_direction)
+                     largest_gap_direction, leader)
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
@@ -382,16 +382,8 @@ def _leader_to(box: Box, seg):
 
 
 def _leader(box: Box, to: Pt):
-    """A thin line from a label's box (0.5 mm off it) to the point it names, or None when
-    the label sits right by it."""
-    cx = min(max(to[0], box.x0), box.x1)
-    cy = min(max(to[1], box.y0), box.y1)
-    d = math.hypot(to[0] - cx, to[1] - cy)
-    if d < 1.5:
-        return None
-    u = ((to[0] - cx) / d, (to[1] - cy) / d)
-    return ((round(cx + 0.5 * u[0], 3), round(cy + 0.5 * u[1], 3)),
-            (round(to[0] - 0.3 * u[0], 3), round(to[1] - 0.3 * u[1], 3)))
+    """A thin line from a label's box to the point it names (:func:`labels.leader`)."""
+    return leader(box, to, 0.3)
 
 
 def _right_angle(con: Construction, st: Stroke, g, size: float = 1.6):
