@@ -504,8 +504,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                    options=options, loads=None, prescribed=MappingProxyType(prescribed),
                    model=model, crossing=MappingProxyType(crossing))
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
-    scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
+    # (read off the scene without them, then a new record with them: never set afterwards)
+    loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
+    scene = record(Scene, **{**vars(scene), "loads": loads})
     exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
     return scene
 
