@@ -168,13 +168,22 @@ def bodies(solution) -> tuple[Body, ...]:
              and all(x in ground for x in axis(b))]
     drv = model.inputs[0]
     order = [drv] if drv in model.named and drv not in fixed else []
+    waiting: dict[str, list] = {}           # a label → the bodies that wait for it
+    for b in model.moving:
+        if b.name not in fixed and b.name not in order:
+            for x in axis(b):
+                waiting.setdefault(x, []).append(b)
+    seen = set(order) | set(fixed)
+    rank = {b.name: k for k, b in enumerate(model.bodies)}
     placed = set(ground)
     steps = [tuple(d.placed) for d in solution.plan.dyads]
     for step in steps + [tuple(pos)]:
         placed.update(step)
-        for b in model.moving:
-            if b.name not in order and b.name not in fixed and all(x in placed for x in axis(b)):
-                order.append(b.name)
+        ready = {b.name: b for x in step for b in waiting.get(x, ())
+                 if b.name not in seen and all(y in placed for y in axis(b))}
+        for name in sorted(ready, key=rank.__getitem__):    # the model's order in a step
+            order.append(name)
+            seen.add(name)
     wanted = _numbers(scene, model, order)
     if wanted:
         rest = iter(n for n in range(2, len(order) + 2) if n not in wanted.values())
@@ -319,9 +328,10 @@ def _find(solution):
 
 
 def _windows(solution, bods, known, close) -> None:
-    """Kennedy step by step in the construction's order: for the links each step numbers,
-    the window of those links, the links they are paired with, the frame and any link whose
-    centre I_1j is still unknown; widened by neighbours while a centre I_1j stays unknown."""
+    """Kennedy link by link in the construction's order: for each newly numbered link, the
+    window of it, the links whose centre I_1j is still unknown, the links they are paired
+    with and the frame; at the end, windows widened by neighbours around any link whose I_1j
+    is still unknown, then (only if that fails) the whole diagram."""
     nb: dict[int, set[int]] = {b.number: set() for b in bods}
     for (i, j), c in known.items():
         if c.primary:
@@ -329,24 +339,29 @@ def _windows(solution, bods, known, close) -> None:
             nb[j].add(i)
     pending: set[int] = set()
     numbered: set[int] = {1}
+
+    def around(xs) -> set[int]:
+        out = {1} | set(xs)
+        for x in xs:
+            if x != 1:
+                out |= nb[x] & numbered
+        return out
+
     for b in bods[1:]:
-        new = {b.number}
-        numbered |= new
-        pending |= new
-        window = {1} | pending
-        for x in list(window):
-            window |= nb[x] & numbered
-        for _ in range(4):
-            close(window)
-            pending = {j for j in pending if (1, j) not in known}
-            if not pending:
-                break
-            grown = set(window)
-            for x in window:
-                grown |= nb[x] & numbered
-            if grown == window:
-                break
-            window = grown
+        numbered.add(b.number)
+        pending.add(b.number)
+        close(around(pending))
+        pending = {j for j in pending if (1, j) not in known}
+    window = around(pending)
+    for _ in range(8):
+        if not pending:
+            return
+        close(window)
+        pending = {j for j in pending if (1, j) not in known}
+        grown = around(window)
+        if grown == window:
+            break
+        window = grown
     if pending:                          # still unknown: the whole diagram, once
         close(range(1, len(bods) + 1))
 
