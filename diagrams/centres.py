@@ -121,7 +121,13 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
             n = math.hypot(*d)
             d = (d[0] / n, d[1] / n)
             text = f"{label_of(c)} (off the page)"
-        s = P(start)
+        s0 = P(start)
+        # no sense at infinity: the side clear of the drawing, starting past what is there
+        ways = [(d, (-d[0], -d[1])) if c.point is None else (d,)][0]
+        cost, d, off = min(((_arrow_cost(placer, s0, u, off) + 0.25 * off, u, off)
+                            for off in (1.6, 4.5, 7.5, 10.5, 13.5) for u in ways),
+                           key=lambda t: t[0])
+        s = (s0[0] + off * d[0], s0[1] + off * d[1])
         tip = (s[0] + 14.0 * d[0], s[1] + 14.0 * d[1])
         head, shaft = arrow_head(s, tip, 2.6, 0.9)
         arrows.append(Arrow(_r(s), _r(tip), "construction", tuple(_r(h) for h in head),
@@ -262,6 +268,28 @@ def _leader_cost(placer, q: Pt, box: Box) -> float:
     if any(_cross(a, b, p0, p1) for p0, p1 in placer.soft_segments):
         c += 0.3
     return c + 0.15 * math.dist(a, b)
+
+
+def _arrow_cost(placer, s: Pt, d: Pt, off: float) -> float:
+    """How much an arrow from ``off`` past ``s`` along ``d`` would cover: labels, then
+    lines."""
+    a = (s[0] + off * d[0], s[1] + off * d[1])
+    b = (a[0] + 16.0 * d[0], a[1] + 16.0 * d[1])
+    c = 6.0 * sum(box_hits_segment(o, a, b, 0.5) for o in placer.boxes
+                  if not (o.x0 <= s[0] <= o.x1 and o.y0 <= s[1] <= o.y1))
+    c += sum(_cross(a, b, p0, p1) or _near(p0, p1, a, b) for p0, p1, _ in placer.hard_segments)
+    return c
+
+
+def _near(p0: Pt, p1: Pt, a: Pt, b: Pt) -> bool:
+    """Whether segment p0p1 runs along ab (within 1 mm of its middle)."""
+    m = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+    n2 = dx * dx + dy * dy
+    if n2 == 0:
+        return math.dist(m, p0) < 1.0
+    t = max(0.0, min(1.0, ((m[0] - p0[0]) * dx + (m[1] - p0[1]) * dy) / n2))
+    return math.dist(m, (p0[0] + t * dx, p0[1] + t * dy)) < 1.0
 
 
 def _cross(a: Pt, b: Pt, c: Pt, d: Pt) -> bool:
