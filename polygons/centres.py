@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
-from .errors import UnsupportedError
+from .errors import SceneError, UnsupportedError, show, suggest
 from .kennedy import SAME, canonical, kennedy, pair_name
 from .model import FRAME
 from .scene import Crank
@@ -201,26 +201,25 @@ def bodies(solution) -> tuple[Body, ...]:
 
 
 def _numbers(scene, model, order) -> dict[str, int]:
-    """The scene's ``[centres] numbers`` (body → number), checked: names of moving bodies,
-    distinct numbers from 2 to the number of links."""
-    opts = getattr(scene, "options", None)
-    spec = getattr(opts, "centres", None) if opts is not None else None
-    numbers = dict(getattr(spec, "numbers", None) or {})
+    """The scene's ``[centres] numbers`` (a body of the model → its number), checked against
+    the mechanism: each name a moving link, each number within 2 .. the number of links."""
+    numbers = scene.options.centres.numbers
     if not numbers:
         return {}
     titles = {model.body(n).title: n for n in order} | {n: n for n in order}
     out: dict[str, int] = {}
     for name, num in numbers.items():
         if name not in titles:
-            raise UnsupportedError(f"[centres] numbers names {name!r}, not a moving link of this "
-                                   f"mechanism (links: {', '.join(titles)})", file=scene.file)
-        if not 2 <= num <= len(order) + 1:
-            raise UnsupportedError(f"[centres] numbers gives {name} the number {num}: the "
-                                   f"moving links are numbered 2 to {len(order) + 1} "
-                                   f"(1 is the frame)", file=scene.file)
-        if num in out.values():
-            raise UnsupportedError(f"[centres] numbers gives the number {num} twice",
-                                   file=scene.file)
+            raise SceneError(f"{show(name)} is not a moving link of this mechanism: "
+                             f"{suggest(name, list(titles))}", file=scene.file,
+                             where=f"centres.numbers.{name}")
+        if num > len(order) + 1:
+            raise SceneError(f"{show(name)} cannot be number {num}: the moving links are "
+                             f"numbered 2 to {len(order) + 1} (1 is the frame)",
+                             file=scene.file, where=f"centres.numbers.{name}")
+        if titles[name] in out:
+            raise SceneError(f"{show(name)} is numbered twice", file=scene.file,
+                             where="centres.numbers")
         out[titles[name]] = num
     return out
 
