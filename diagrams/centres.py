@@ -14,7 +14,7 @@ import math
 from polygons.centres import FULL_BODIES, Centres, instant_centres, pair_name, sub
 
 from . import scale as scales
-from .labels import Box, bounds, box_hits_segment
+from .labels import Box, Placer, bounds, box_hits_segment, width
 from .layout import arrow_head, compose
 from .model import Arrow, Circle, Group, Segment, Text
 from .space import LABEL_SIZE, PAD_MM, space_layout
@@ -98,10 +98,8 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
             continue                      # a pin: drawn as the pin
         q = members[0][1]
         text = " = ".join(label_of(c) for c, _ in members if not big or c.i == 1)
-        x, base, _, tb = placer.place_any(
-            text, NOTE + 0.4, [(q, [2 * math.pi * i / 24 for i in range(24)])],
-            distances=(1.8, 2.6, 3.6, 5.0, 7.0, 9.5, 13.0),
-            extra_cost=lambda _, b, q=q: _leader_cost(placer, q, b))
+        x, base, _, tb = _place(placer, text, NOTE + 0.4, q,
+                                (1.8, 2.6, 3.6, 5.0, 7.0, 9.5, 13.0), leader=True)
         labels.append(Text(x, base, text, NOTE + 0.4, role="centre", cls="centre-label"))
         lead = _leader(q, tb)
         if lead is not None:
@@ -124,7 +122,8 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
         s0 = P(start)
         # no sense at infinity: the side clear of the drawing, starting past what is there
         ways = [(d, (-d[0], -d[1])) if c.point is None else (d,)][0]
-        cost, d, off = min(((_arrow_cost(placer, s0, u, off) + 0.25 * off, u, off)
+        here = _local(placer, s0, 36.0)
+        cost, d, off = min(((_arrow_cost(here, s0, u, off) + 0.25 * off, u, off)
                             for off in (1.6, 4.5, 7.5, 10.5, 13.5) for u in ways),
                            key=lambda t: t[0])
         s = (s0[0] + off * d[0], s0[1] + off * d[1])
@@ -133,7 +132,7 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
         arrows.append(Arrow(_r(s), _r(tip), "construction", tuple(_r(h) for h in head),
                             _r(shaft), name=_ident(c), role="infinity", title=text))
         placer.hard(s, tip, 0.6)
-        x, base, _, _ = placer.place(text, tip, NOTE, distances=(0.8, 1.5, 2.5, 4.0, 6.0))
+        x, base, _, tb = _place(placer, text, NOTE, tip, (0.8, 1.5, 2.5, 4.0, 6.0))
         labels.append(Text(x, base, text, NOTE, role="centre", cls="centre-label"))
 
     # the point of least velocity on each link asked for ([least_velocity]): the foot of the
@@ -268,6 +267,38 @@ def _leader_cost(placer, q: Pt, box: Box) -> float:
     if any(_cross(a, b, p0, p1) for p0, p1 in placer.soft_segments):
         c += 0.3
     return c + 0.15 * math.dist(a, b)
+
+
+def _place(placer: Placer, text: str, size: float, at: Pt, distances, leader=False):
+    """``placer.place`` around ``at`` (24 directions), with a leader's cost when ``leader``,
+    tried first among the obstacles within reach of its candidates only (the same choice, at
+    a cost that does not grow with the drawing), then, if none is free there, in the whole
+    drawing; the label's box is added to ``placer``."""
+    dirs = [(at, [2 * math.pi * i / 24 for i in range(24)])]
+    reach = max(distances) + width(text, size) + 2.0 * size + 3.0
+    for here, required in ((_local(placer, at, reach), False), (placer, True)):
+        cost = (lambda _, b, here=here: _leader_cost(here, at, b)) if leader else None
+        got = here.place_any(text, size, dirs, distances=distances, extra_cost=cost,
+                             required=required)
+        if got is not None:
+            if here is not placer:
+                placer.block(got[3])
+            return got
+    raise AssertionError("unreachable: the whole drawing's placer always places")
+
+
+def _local(placer: Placer, at: Pt, reach: float) -> Placer:
+    """A placer holding only ``placer``'s obstacles within ``reach`` (mm) of ``at``."""
+    x0, y0, x1, y1 = at[0] - reach, at[1] - reach, at[0] + reach, at[1] + reach
+
+    def near(a, b) -> bool:
+        return not (max(a[0], b[0]) < x0 or min(a[0], b[0]) > x1
+                    or max(a[1], b[1]) < y0 or min(a[1], b[1]) > y1)
+
+    return Placer([h for h in placer.hard_segments if near(h[0], h[1])],
+                  [h for h in placer.soft_segments if near(h[0], h[1])],
+                  [b for b in placer.boxes if near((b.x0, b.y0), (b.x1, b.y1))],
+                  placer.frame, placer.soft_cost)
 
 
 def _arrow_cost(placer, s: Pt, d: Pt, off: float) -> float:
