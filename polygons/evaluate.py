@@ -139,6 +139,13 @@ class Solution:
                     v[0] * e[0] + v[1] * e[1] if "velocity" in solved else None,
                     a[0] * e[0] + a[1] * e[1] if "acceleration" in solved else None, None)
         along = {s.at: s.carrier for s in model.slots() + model.collars()}
+        for s in model.crossings():       # a pin in two slots: one slide per slot
+            key = f"{s.at} in {s.carrier}"
+            e = self._at(("slot_e", key))
+            if e is not None:
+                slides[key] = SlideResult(s.at, s.carrier, e, self._one(("slide_v", key)),
+                                          self._one(("slide_a", key)),
+                                          self._at(("coriolis", key)))
         for pin, link in along.items():
             e = self._at(("slot_e", pin))
             if e is not None:

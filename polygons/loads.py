@@ -46,6 +46,7 @@ from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, 
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
                         Friction, Joint, Loads, MassItem, Spring, bodies_of,
                         slot_contacts)
+from .model import BUILT, check_handles
 from .reader import Reader, record
 from .schema import Key, Table
 
@@ -201,6 +202,12 @@ def has_loads(extra: Mapping[str, Any]) -> bool:
 AnswerFields = Callable[..., dict]
 
 
+#: the kinds of body and pair the force analysis handles (polygons.model): not a collar
+#: driven along a link, whose prescribed slide has no force model yet, nor a pin in two
+#: moving slots (two slot normals at one massless pin: not modelled yet)
+HANDLES = BUILT - {"collar", "cross-block"}
+
+
 def _guides(model) -> tuple[str, ...]:
     """The blocks on fixed guides (sliders and yokes), by their labels."""
     return tuple(s.at for s in model.sliding if s.carrier == "frame")
@@ -241,6 +248,8 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
                       driver_body=driver_body, active=False, flywheel=None, efficiency=None)
     r = _Values(file)
     active = has_loads(ex)
+    if active:
+        check_handles("polygons forces", HANDLES, scene.model, file)
     reversed_names = {b.b + b.a: n for n, b in bodies.items() if b.kind == "link"}
 
     slots = slot_contacts(scene.model, members, file) if active else []

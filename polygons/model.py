@@ -15,7 +15,9 @@ drawing-board emulation — and none of them reads the scene's joint tables ([li
   in the slot), as the textbooks draw a pin in a slot;
 * per fixed guide, its **slider** (``block``), or, for a Scotch yoke, the **yoke** (``yoke``,
   sliding on the guide) and the block of the pin in its slot (``pin-block``);
-* per prescribed slide ([driver.slide]), the **collar** (``collar``) sliding along its link.
+* per prescribed slide ([driver.slide]), the **collar** (``collar``) sliding along its link;
+* per pin in two moving slots ([crossing]), two blocks (``cross-block``) pinned together at
+  the pin, each sliding in its lever's slot.
 
 **Pairs**: a turning pair (:class:`Turning`) at every label carried by two or more bodies (a
 pin joining k bodies counts k − 1 revolutes), a sliding pair (:class:`Sliding`) per block,
@@ -38,7 +40,7 @@ Vec = tuple[float, float]
 FRAME = "frame"
 
 #: every kind of body the model holds (``Body.kind``)
-BODY_KINDS = ("frame", "link", "lever", "block", "yoke", "pin-block", "collar")
+BODY_KINDS = ("frame", "link", "lever", "block", "yoke", "pin-block", "collar", "cross-block")
 #: every kind of pair: the lower pairs the model builds today, the higher ones to come
 PAIR_KINDS = ("turning", "sliding", "rolling", "cam")
 
@@ -157,6 +159,7 @@ class Mechanism:
     guide: Mapping[str, Sliding]               # label → its block's pair on a fixed guide
     slot: Mapping[str, Sliding]                # pin → its block's pair in a lever's slot
     collar: Mapping[str, Sliding]              # point → its collar's prescribed slide
+    under: Mapping[str, Sliding]               # a carrier's point under a block → its pair
 
     def body(self, name: str) -> Body:
         return self.named[name]
@@ -183,6 +186,10 @@ class Mechanism:
     def yoke_slots(self) -> tuple[Sliding, ...]:
         return tuple(s for s in self.sliding if s.key.endswith(".pin"))
 
+    def crossings(self) -> tuple[Sliding, ...]:
+        """The pairs of pins in two moving slots at once ([crossing]), two per pin."""
+        return tuple(s for s in self.sliding if s.key.startswith("crossing."))
+
     def collars(self) -> tuple[Sliding, ...]:
         return tuple(self.collar.values())
 
@@ -200,7 +207,7 @@ class Mechanism:
                          + [p.kind for p in self.sliding])
 
 
-def build(*, ground, links, sliders, slots, points, prescribed, driver,
+def build(*, ground, links, sliders, slots, points, prescribed, driver, crossing=None,
           along_lever=lambda slot: False) -> Mechanism:
     """The model of a scene's joint tables (its parsed records: ``links`` name → Link,
     ``sliders`` label → Guide, ``slots`` pin → Slot, ``points`` label → BodyPoint,
@@ -257,6 +264,18 @@ def build(*, ground, links, sliders, slots, points, prescribed, driver,
                                              labels(*carrier.labels, sl.coincident),
                                              carrier.length)
 
+    for pin, cr in (crossing or {}).items():      # a pin in two moving slots
+        for lever, under in zip(cr.levers, cr.coincident):
+            block = f"block {pin} in {lever}"
+            bodies.append(Body(block, "cross-block", pin, None, (pin,)))
+            link = links[lever]
+            sliding.append(Sliding(pin, block, lever, SlideLine(origin=link.a, toward=link.b),
+                                   f"crossing.{pin}", under, far=link.b))
+            carrier = bodies.index(next(b for b in bodies if b.name == lever))
+            c = bodies[carrier]
+            bodies[carrier] = Body(c.name, c.kind, c.a, c.b, labels(*c.labels, under),
+                                   c.length)
+
     members: dict[str, list[str]] = {}
     for b in bodies:
         for x in b.labels:
@@ -270,24 +289,43 @@ def build(*, ground, links, sliders, slots, points, prescribed, driver,
                      MappingProxyType({k: tuple(v) for k, v in members.items()}),
                      MappingProxyType({b.name: b for b in bodies}),
                      by(lambda s: s.carrier == FRAME), by(lambda s: s.key.startswith("slots.")),
-                     by(lambda s: s.prescribed))
+                     by(lambda s: s.prescribed),
+                     MappingProxyType({s.coincident: s for s in sliding if s.coincident}))
 
 
 # ---------------------------------------------------------------- capabilities
-def refuse(method: str, what: str, file: str | None = None) -> UnsupportedError:
+#: each kind of body and pair in words, for a refusal
+KIND_WORDS = {
+    "frame": "the frame", "link": "a link", "lever": "a slotted lever",
+    "block": "a slider on a fixed guide", "yoke": "a Scotch yoke",
+    "pin-block": "a pin sliding in a slot",
+    "cross-block": "a pin sliding in the slots of two moving levers (crossing slots)",
+    "collar": "a collar driven along a link (a "
+    "prescribed slide, a second input)", "turning": "a turning pair", "sliding": "a sliding "
+    "pair", "rolling": "a rolling contact", "cam": "a cam contact"}
+#: every kind the model builds today (rolling and cam contact are to come)
+BUILT = frozenset(BODY_KINDS) | {"turning", "sliding"}
+
+
+def refuse(method: str, kind: str, where: str = "", file: str | None = None
+           ) -> UnsupportedError:
     """The one-line refusal of a kind a method does not handle, naming both."""
-    return UnsupportedError(f"{method} does not handle {what}", file=file)
+    at = f" ({where})" if where else ""
+    return UnsupportedError(f"{method} does not handle {KIND_WORDS.get(kind, kind)}{at}",
+                            file=file)
 
 
 def check_handles(method: str, handles: frozenset[str], model: Mechanism,
                   file: str | None = None) -> None:
-    """Refuse, naming ``method`` and the kind, a mechanism with a kind of body or pair that
-    ``method`` does not declare in ``handles``."""
-    missing = sorted(model.kinds - handles)
-    if missing:
-        raise refuse(method, f"a {missing[0]} " + ("pair" if missing[0] in PAIR_KINDS else
-                                                    "body"), file)
+    """Refuse, in one line naming ``method`` and the kind, a mechanism holding a kind of body
+    or pair that ``method`` does not declare in ``handles`` (its ``HANDLES``)."""
+    for b in model.bodies:
+        if b.kind not in handles:
+            raise refuse(method, b.kind, b.name, file)
+    for p in model.turning + model.sliding:
+        if p.kind not in handles:
+            raise refuse(method, p.kind, getattr(p, "label", None) or p.at, file)
 
 
 __all__ = ["BODY_KINDS", "PAIR_KINDS", "FRAME", "Body", "Turning", "SlideLine", "Sliding",
-           "Mechanism", "build", "refuse", "check_handles"]
+           "Mechanism", "build", "refuse", "check_handles", "KIND_WORDS", "BUILT"]

@@ -54,9 +54,9 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
         deg = math.degrees(scene.model.guide[X].line.angle)
         return f"{f(t[0].value)} {t[0].unit} along the guide ({f(deg)}°)"
     if op in (Op.SLIDE_VELOCITY, Op.SLIDE_ACCELERATION):
-        (A,) = s.args
+        A = s.args[0]
         val = t[0].value
-        slot = scene.model.slot[A]
+        slot = scene.model.slot[A] if len(s.args) == 1 else scene.model.under[s.args[1]]
         pivot = slot.line.origin
         if slot.along_lever:
             ends = (pivot, slot.far) if val >= 0 else (slot.far, pivot)

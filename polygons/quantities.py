@@ -82,6 +82,13 @@ def quantity(sol: Solution, expr: str) -> float:
     if fn == "alpha":
         return link(p).alpha
     if fn in ("vs", "as", "cor"):
+        if q is not None:      # vs(P,P2): P sliding relative to the lever's point P2 under it
+            pair = scene.model.under.get(q)
+            if pair is None or pair.at != p:
+                raise UnknownLabelError(f"{q!r} in {expr!r} is not a lever's point under "
+                                        f"{p}", file=scene.file)
+            p = p if p in sol.slides and pair.key.startswith("slots.") else \
+                f"{p} in {pair.carrier}"
         if p not in sol.slides:
             raise UnknownLabelError(f"{p!r} in {expr!r} is not a slider or a pin in a slot: "
                                     f"{suggest(p, sol.slides)}", file=scene.file)
