@@ -36,12 +36,14 @@ from typing import Mapping
 
 from .errors import SceneError, UnsupportedError, show, suggest
 from .kennedy import SAME, canonical, kennedy, pair_name
-from .model import FRAME
+from .model import BODY_KINDS, FRAME, check_handles
 from .scene import Crank
 from .steps import sense
 
 Vec = tuple[float, float]
 
+#: the kinds of body and pair the centres handle (a rolling or cam pair is refused in words)
+HANDLES = frozenset(BODY_KINDS) | {"turning", "sliding"}
 #: up to this many bodies every centre is found (the full circle diagram); beyond, only those
 #: the velocities need
 FULL_BODIES = 16
@@ -257,6 +259,8 @@ def _primary(solution, bods: tuple[Body, ...]) -> dict[tuple[int, int], Centre]:
             how = f"{block} on its guide: at infinity ⟂ the guide"
         elif s.prescribed:
             how = f"{block} along {s.carrier}: at infinity ⟂ {s.carrier}"
+        elif " in " in block:
+            how = f"{block}: at infinity ⟂ the slot"
         else:
             how = f"{block} in the slot of {model.body(s.carrier).title}: at infinity ⟂ the slot"
         known[(i, j)] = Centre(i, j, (names[i], names[j]), None, d, how, True, 0)
@@ -271,6 +275,7 @@ def find_centres(solution) -> tuple[tuple[Body, ...], tuple[Centre, ...]]:
 
 
 def _find(solution):
+    check_handles("polygons centres", HANDLES, solution.scene.model, solution.scene.file)
     bods = bodies(solution)
     n = len(bods)
     names = {b.number: b.name for b in bods}
