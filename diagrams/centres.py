@@ -414,7 +414,7 @@ def _start_of(c, cs: Centres, pos, mid) -> Pt:
     if shared:
         return pos[shared[0]]
     for b in (bj, bi):
-        if b.kind in ("block", "pin-block", "collar", "yoke") and b.labels[0] in pos:
+        if (b.kind.endswith("block") or b.kind in ("collar", "yoke")) and b.labels[0] in pos:
             return pos[b.labels[0]]
     for lab in bj.labels:
         if lab in pos:
