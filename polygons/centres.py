@@ -157,27 +157,26 @@ class Centres:
 # ---------------------------------------------------------------- links
 def bodies(solution) -> tuple[Body, ...]:
     """The links of the circle diagram, numbered 1 (frame), 2 (the driver), then in the order
-    the construction places them, or as the scene's ``[centres] numbers`` says."""
+    the construction places them, or as the scene's ``[centres] numbers`` says.  Bodies fixed
+    to one another (:func:`rigid_groups`: a link between two fixed pivots, a triangle of
+    links on a body) are one link of the circle diagram."""
     scene = solution.scene
     model = scene.model
-    ground = set(scene.ground)
     pos = solution.placement.points
 
     def axis(b) -> tuple[str, ...]:
         return tuple(x for x in (b.a, b.b) if x is not None)
 
-    fixed = [b.name for b in model.moving if b.kind == "link" and axis(b)
-             and all(x in ground for x in axis(b))]
     drv = model.inputs[0]
-    order = [drv] if drv in model.named and drv not in fixed else []
+    order = [drv] if drv in model.named else []
     waiting: dict[str, list] = {}           # a label → the bodies that wait for it
     for b in model.moving:
-        if b.name not in fixed and b.name not in order:
+        if b.name not in order:
             for x in axis(b):
                 waiting.setdefault(x, []).append(b)
-    seen = set(order) | set(fixed)
+    seen = set(order)
     rank = {b.name: k for k, b in enumerate(model.bodies)}
-    placed = set(ground)
+    placed = set(model.bodies[0].labels)
     steps = [tuple(d.placed) for d in solution.plan.dyads]
     for step in steps + [tuple(pos)]:
         placed.update(step)
@@ -186,20 +185,88 @@ def bodies(solution) -> tuple[Body, ...]:
         for name in sorted(ready, key=rank.__getitem__):    # the model's order in a step
             order.append(name)
             seen.add(name)
+    group = rigid_groups(model)
+    members: dict[str, list[str]] = {}
+    for name in [FRAME] + order:
+        members.setdefault(group[name], []).append(name)
+    first = {g: m[0] for g, m in members.items()}           # each group by its first placed
+    order = [name for name in order if first[group[name]] == name]
     wanted = _numbers(scene, model, order)
     if wanted:
         rest = iter(n for n in range(2, len(order) + 2) if n not in wanted.values())
         numbered = {name: wanted.get(name) or next(rest) for name in order}
         order = sorted(order, key=numbered.__getitem__)
-    frame = model.bodies[0]
-    fl = tuple(dict.fromkeys(frame.labels + tuple(x for f in fixed
-                                                  for x in model.body(f).labels)))
-    out = [Body(1, "frame", "frame", tuple(x for x in fl if x in pos), FRAME, tuple(fixed))]
-    for name in order:
+    out = []
+    for name in [FRAME] + order:
+        others = tuple(m for m in members[group[name]] if m != name)
         b = model.body(name)
-        out.append(Body(len(out) + 1, b.title, b.kind, tuple(x for x in b.labels if x in pos),
-                        name))
+        labels = tuple(dict.fromkeys(x for m in (name,) + others for x in model.body(m).labels
+                                     if x in pos))
+        title = "frame" if name == FRAME else b.title
+        if others and name != FRAME:
+            titles = [model.body(m).title for m in others]
+            title += (f" (with {', '.join(titles)})" if len(titles) <= 3 else
+                      f" (with {len(titles)} links fixed to it)")
+        out.append(Body(len(out) + 1, title, b.kind, labels, name, others))
     return tuple(out)
+
+
+def rigid_groups(model) -> dict[str, str]:
+    """Each body of the model → the first body of the rigid group it belongs to (the frame's
+    name for the frame's): a link whose two points are on one group joins it (a link between
+    two fixed pivots is part of the frame), and so do two links pinned together whose other
+    points are two points of one group (a triangle: a truss carried by a link)."""
+    parent = {b.name: b.name for b in model.bodies}
+
+    def find(x: str) -> str:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    def join(a: str, b: str) -> None:
+        ra, rb = find(a), find(b)
+        if ra != rb:
+            keep, drop = sorted((ra, rb), key=rank.__getitem__)
+            parent[drop] = keep
+
+    rank = {b.name: k for k, b in enumerate(model.bodies)}
+    bars = [b for b in model.moving if b.kind in ("link", "lever")]
+
+    def on(label: str, besides: str) -> set[str]:
+        """The groups carrying ``label`` other than ``besides``'s."""
+        own = find(besides)
+        return {find(m) for m in model.members.get(label, ()) if find(m) != own}
+
+    changed = True
+    while changed:
+        changed = False
+        for b in bars:
+            labs = b.labels
+            for k, x in enumerate(labs):
+                for y in labs[k + 1:]:
+                    common = on(x, b.name) & on(y, b.name)
+                    if common:
+                        join(b.name, min(common, key=rank.__getitem__))
+                        changed = True
+                        break
+                else:
+                    continue
+                break
+        for t in model.turning:
+            at = [model.body(n) for n in t.bodies if model.body(n).kind in ("link", "lever")]
+            for a, p in enumerate(at):
+                for q in at[a + 1:]:
+                    if find(p.name) == find(q.name):
+                        continue
+                    hits = {g for x in p.labels if x != t.label for y in q.labels
+                            if y != t.label and y != x for g in on(x, p.name) & on(y, q.name)}
+                    if hits:
+                        g = min(hits, key=rank.__getitem__)
+                        join(p.name, g)
+                        join(q.name, g)
+                        changed = True
+    return {b.name: find(b.name) for b in model.bodies}
 
 
 def _numbers(scene, model, order) -> dict[str, int]:

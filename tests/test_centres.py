@@ -626,3 +626,29 @@ def test_large_mechanism_centres_the_velocities_need_in_linear_time():
         assert all((1, j) in {(c.i, c.j) for c in cs.centres} for j in range(2, n + 1))
     assert sizes[9][0] == 7 * 9 + 6 and sizes[19][0] == 7 * 19 + 6
     assert sizes[19][1] < 1.0
+
+
+def test_a_truss_on_a_four_bar_is_one_link_of_the_circle_diagram():
+    """Triangles of links built on the coupler BC (each new point pinned to the two before)
+    are rigid with it: one link of the circle diagram, every point's velocity ω₃ · I₁₃X, the
+    polygon's."""
+    pts = {"A": (0.0, 0.0), "D": (0.1, 0.0), "B": (0.02, 0.05), "C": (0.115, 0.06),
+           "T1": (0.07, 0.1), "T2": (0.09, 0.14)}
+    links = {a + b: f"{math.dist(pts[a], pts[b])!r} m"
+             for a, b in (("A", "B"), ("B", "C"), ("D", "C"), ("B", "T1"), ("C", "T1"),
+                          ("C", "T2"), ("T1", "T2"))}
+    near = {x: {"near": [f"{pts[x][0]!r} m", f"{pts[x][1]!r} m"]} for x in ("C", "T1", "T2")}
+    sol = solve(parse_scene({
+        "ground": {"A": ["0 m", "0 m"], "D": ["0.1 m", "0 m"]},
+        "links": links, "assembly": near,
+        "driver": {"crank": "AB", "angle": f"{math.degrees(math.atan2(0.05, 0.02))!r} deg",
+                   "omega": "10 rad/s", "sense": "CCW"}}))
+    cs = instant_centres(sol)
+    assert [b.name for b in cs.bodies] == ["frame", "AB", "BC (with 4 links fixed to it)",
+                                           "DC"]
+    assert cs.bodies[2].fixed == ("BT1", "CT1", "CT2", "T1T2") and cs.complete
+    for name in ("BT1", "CT2", "T1T2"):
+        assert cs.omega(name) == pytest.approx(sol.links[name].omega, rel=1e-12)
+    assert cs.velocities["T2"].how.startswith("v_T2 = ω₃ · I₁₃T2 = ")
+    for label, pv in cs.velocities.items():
+        assert math.dist(pv.velocity, sol.points[label].velocity) <= 1e-12 * _scale(sol)
