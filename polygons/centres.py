@@ -109,6 +109,10 @@ class Omega:
     omega: float                 # CCW positive, rad/s
     velocity: Vec | None         # a translating link's velocity (ω = 0, I_1j at infinity)
     how: str
+    rule: str = ""               # given | ratio | same | translates | field | fixed
+    via: int | None = None       # the link i whose ω gave it, through I_ij
+    speed: float | None = None   # |v| of I_ij (ratio, translates)
+    radius: float | None = None  # |I_1j I_ij| (ratio)
 
 
 @dataclass(frozen=True)
@@ -515,14 +519,15 @@ def instant_centres(solution, points=None) -> Centres:
     names = {b.number: b.name for b in bods}
     n = len(bods)
     motion: dict[int, tuple[float, Vec]] = {1: (0.0, (0.0, 0.0))}
-    omegas: dict[int, Omega] = {1: Omega(1, "frame", 0.0, None, "fixed")}
+    omegas: dict[int, Omega] = {1: Omega(1, "frame", 0.0, None, "fixed", "fixed")}
     if field is not None:
         for b in bods[1:]:
             w, v0, how = field[b.number]
             motion[b.number] = (w, v0)
             c = found[(1, b.number)]
             omegas[b.number] = Omega(b.number, b.name, w, v0 if c.point is None else None,
-                                     f"from the velocity field (two inputs given): {how}")
+                                     f"from the velocity field (two inputs given): {how}",
+                                     "field")
     else:
         _propagate(solution, bods, found, motion, omegas, names, size)
     carriers: dict[str, int] = {}
@@ -563,12 +568,13 @@ def _propagate(solution, bods, found, motion, omegas, names, size) -> None:
     if isinstance(drv, Crank):
         c = found[(1, n2)]
         motion[n2] = (drv.omega, _v0(drv.omega, c.point))
-        omegas[n2] = Omega(n2, names[n2], drv.omega, None, "given (the driver)")
+        omegas[n2] = Omega(n2, names[n2], drv.omega, None, "given (the driver)", "given")
     else:
         e = model.guide[drv.point].line.at(pos)[1]
         u = (drv.velocity * e[0], drv.velocity * e[1])
         motion[n2] = (0.0, u)
-        omegas[n2] = Omega(n2, names[n2], 0.0, u, "given (the driver translates)")
+        omegas[n2] = Omega(n2, names[n2], 0.0, u, "given (the driver translates)", "given",
+                           speed=abs(drv.velocity))
     adj: dict[int, list[int]] = {b.number: [] for b in bods}
     for (i, j) in sorted(found):
         adj[i].append(j)
@@ -615,7 +621,7 @@ def _omega_from(i, j, mi, found, names, size):
         if c1j.point is None:           # link j translates: every point moves as I_ij
             return (0.0, v), Omega(j, names[j], 0.0, v, (
                 f"I{n1j} at infinity: link {j} translates with v_I{nij} = "
-                f"{_f(math.hypot(*v))} m/s"))
+                f"{_f(math.hypot(*v))} m/s"), "translates", i, math.hypot(*v))
         r = (cij.point[0] - c1j.point[0], cij.point[1] - c1j.point[1])
         rr = r[0] * r[0] + r[1] * r[1]
         if math.sqrt(rr) <= SAME * size:
@@ -628,12 +634,14 @@ def _omega_from(i, j, mi, found, names, size):
                   f"{_f(math.hypot(*v))} m/s")
         return (wj, _v0(wj, c1j.point)), Omega(j, names[j], wj, None, (
             f"{vi}; ω{sub(j)} = v_I{nij} / I{n1j}I{nij} = {_f(math.hypot(*v))} / "
-            f"{_f(math.sqrt(rr))} = {_f(abs(wj))} rad/s {sense(wj)}".rstrip()))
+            f"{_f(math.sqrt(rr))} = {_f(abs(wj))} rad/s {sense(wj)}".rstrip()), "ratio", i,
+            math.hypot(*v), math.sqrt(rr))
     if cij.direction is None or c1j.point is None:
         return None
     # I_ij at infinity: links i and j translate relative to each other, ω_j = ω_i
     return (wi, _v0(wi, c1j.point)), Omega(j, names[j], wi, None, (
-        f"I{nij} at infinity: ω{sub(j)} = ω{sub(i)} = {_f(abs(wi))} rad/s {sense(wi)}".rstrip()))
+        f"I{nij} at infinity: ω{sub(j)} = ω{sub(i)} = {_f(abs(wi))} rad/s {sense(wi)}".rstrip()),
+        "same", i)
 
 
 def _point_velocity(x, j, p, motion, found, names) -> PointVelocity:

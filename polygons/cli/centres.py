@@ -79,7 +79,8 @@ def to_json(sol, cs) -> dict:
                     for c in cs.centres],
         "omegas": [{"number": o.number, "name": o.name, "omega": o.omega,
                     "velocity": list(o.velocity) if o.velocity is not None else None,
-                    "how": o.how} for o in cs.omegas],
+                    "how": o.how, "rule": o.rule, "via": o.via, "speed": o.speed,
+                    "radius": o.radius} for o in cs.omegas],
         "velocities": {x: {"link": v.number, "velocity": list(v.velocity), "speed": v.speed,
                            "radius": v.radius, "omega": v.omega, "how": v.how}
                        for x, v in cs.velocities.items()},
@@ -121,8 +122,21 @@ def table(sol, cs, units: str = "mm") -> str:
     lines += ["", "angular velocities by the centres:"]
     for o in cs.omegas[1:]:
         sense = "" if o.omega == 0 else ("CCW" if o.omega > 0 else "CW")
-        lines.append(f"  ω{sub(o.number)} ({o.name}) = {_g(abs(o.omega))} rad/s {sense}   "
-                     f"[{o.how}]")
+        head = f"  ω{sub(o.number)} ({o.name}) = {_g(abs(o.omega))} rad/s {sense}".rstrip()
+        j, i = o.number, o.via
+        if o.rule == "ratio":
+            ij = sub(pair_name(min(i, j), max(i, j)))
+            lines.append(f"{head}   [ω{sub(j)} = v_I{ij} / I{sub(pair_name(1, j))}I{ij} = "
+                         f"{_g(o.speed * vf)} {vu} / {_g(o.radius * lf)} {lu}; v_I{ij} from "
+                         f"link {i} ({names[i]})]")
+        elif o.rule == "translates":
+            ij = sub(pair_name(min(i, j), max(i, j)))
+            lines.append(f"{head}   [I{sub(pair_name(1, j))} at infinity: {o.name} translates "
+                         f"with v_I{ij} = {_g(o.speed * vf)} {vu}]")
+        elif o.rule == "given" and o.speed is not None:
+            lines.append(f"{head}   [given: the driver translates at {_g(o.speed * vf)} {vu}]")
+        else:
+            lines.append(f"{head}   [{o.how}]")
     lines += ["", f"velocities by the centres (v = ω × distance from the link's centre I1j):"]
     for x, v in cs.velocities.items():
         j = v.number
