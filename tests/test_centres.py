@@ -652,3 +652,41 @@ def test_a_truss_on_a_four_bar_is_one_link_of_the_circle_diagram():
     assert cs.velocities["T2"].how.startswith("v_T2 = ω₃ · I₁₃T2 = ")
     for label, pv in cs.velocities.items():
         assert math.dist(pv.velocity, sol.points[label].velocity) <= 1e-12 * _scale(sol)
+
+
+@pytest.mark.parametrize("stem", ["s003-fig7", "new-watt-six-bar", "centres-double-slider",
+                                  "new-rotary-engine"])
+def test_centre_labels_sit_on_no_other_label(stem):
+    """Each centre's label (I₁₃, textbook subscripts) is on no other text of the drawing —
+    the space diagram's labels and the ω/α notes included — and no line of centres runs
+    through a label."""
+    from diagrams.centres import drawing, label_of
+    from diagrams.labels import box_hits_segment, text_box
+    from diagrams.model import Segment, Text
+    sol = solve(load_scene(ROOT / f"cases/{stem}.toml"))
+    cs = instant_centres(sol)
+    d = drawing(sol, cs)
+    texts = [t for t in d.items() if isinstance(t, Text)]
+    mine = [t for t in texts if t.cls == "centre-label"]
+    assert {label_of(c) for c in cs.centres} <= {p.split(" ")[0] for t in mine
+                                                 for p in t.text.split(" = ")}
+    boxes = [(t, text_box(t.x, t.baseline, t.text, t.size, t.anchor)) for t in texts]
+    for t in mine:
+        b = text_box(t.x, t.baseline, t.text, t.size, t.anchor)
+        for o, ob in boxes:
+            assert o is t or not b.overlaps(ob), (t.text, o.text)
+    for seg in d.items("lines-of-centres"):
+        if isinstance(seg, Segment):
+            for o, ob in boxes:
+                assert not box_hits_segment(ob, seg.a, seg.b, 0.0), (seg.cls, o.text)
+
+
+def test_a_large_mechanism_draws_each_links_centre_and_says_so():
+    """18 links: I1j of each link drawn (I₁,₁₀ ... past link 9), no line of centres, no circle
+    diagram, the caption saying what is drawn; SVG ids without commas."""
+    from diagrams.centres import svg
+    sol = solve(parse_scene(chain_scene(7)))
+    cs = instant_centres(sol)
+    text = svg(sol, cs)
+    assert "I₁,₁₇" in text and "chord" not in text and 'id="I1,' not in text
+    assert "drawn are the centre I1j of every link" in text
