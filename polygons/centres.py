@@ -394,11 +394,12 @@ def _find(solution):
                     known[(i, j)] = _field_centre(i, j, motion, names, size)
     missing = [f"I{pair_name(1, b.number)}" for b in bods[1:] if (1, b.number) not in known]
     if missing:
+        named = ", ".join(missing[:4]) + (f" and {len(missing) - 4} more" if len(missing) > 4
+                                          else "")
         raise UnsupportedError(f"Kennedy's theorem does not fix the centre"
-                               f"{'s' if len(missing) > 1 else ''} {', '.join(missing)} of "
-                               f"this mechanism at this instant (no two distinct lines of "
-                               f"centres meet there: a toggle or a locked group of links)",
-                               file=solution.scene.file)
+                               f"{'s' if len(missing) > 1 else ''} {named} of this mechanism "
+                               f"at this instant (no two distinct lines of centres meet there: "
+                               f"a toggle, or links locked together)", file=solution.scene.file)
     return bods, known, motion, size
 
 
@@ -596,8 +597,11 @@ def _propagate(solution, bods, found, motion, omegas, names, size) -> None:
             else:
                 left.append(j)
         if len(left) == len(todo):
-            raise UnsupportedError(f"the centres do not give the angular velocity of "
-                                   f"{', '.join(names[j] for j in left)}", file=scene.file)
+            named = ", ".join(names[j] for j in left[:4]) + (
+                f" and {len(left) - 4} more" if len(left) > 4 else "")
+            raise UnsupportedError(f"the centres do not give the angular velocity of {named} "
+                                   f"at this instant (each shares its centres with the frame "
+                                   f"and the links of known ω at one point)", file=scene.file)
         todo = left
 
 
