@@ -99,7 +99,9 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
         q = members[0][1]
         text = " = ".join(label_of(c) for c, _ in members if not big or c.i == 1)
         x, base, _, tb = _place(placer, text, NOTE + 0.4, q,
-                                (1.8, 2.6, 3.6, 5.0, 7.0, 9.5, 13.0), leader=True)
+                                (1.8, 3.0, 5.0, 8.0, 12.0) if big else
+                                (1.8, 2.6, 3.6, 5.0, 7.0, 9.5, 13.0), leader=True,
+                                directions=12 if big else 24)
         labels.append(Text(x, base, text, NOTE + 0.4, role="centre", cls="centre-label"))
         lead = _leader(q, tb)
         if lead is not None:
@@ -269,12 +271,13 @@ def _leader_cost(placer, q: Pt, box: Box) -> float:
     return c + 0.15 * math.dist(a, b)
 
 
-def _place(placer: Placer, text: str, size: float, at: Pt, distances, leader=False):
-    """``placer.place`` around ``at`` (24 directions), with a leader's cost when ``leader``,
+def _place(placer: Placer, text: str, size: float, at: Pt, distances, leader=False,
+           directions: int = 24):
+    """``placer.place`` around ``at`` (``directions`` of them), with a leader's cost when ``leader``,
     tried first among the obstacles within reach of its candidates only (the same choice, at
     a cost that does not grow with the drawing), then, if none is free there, in the whole
     drawing; the label's box is added to ``placer``."""
-    dirs = [(at, [2 * math.pi * i / 24 for i in range(24)])]
+    dirs = [(at, [2 * math.pi * i / directions for i in range(directions)])]
     reach = max(distances) + width(text, size) + 2.0 * size + 3.0
     for here, required in ((_local(placer, at, reach), False), (placer, True)):
         cost = (lambda _, b, here=here: _leader_cost(here, at, b)) if leader else None
