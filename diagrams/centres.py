@@ -92,16 +92,21 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
         for c, _ in members:
             dots.append(Circle(q, 0.9, "vertex", cls=f"centre {_ident(c)}", ident=_ident(c)))
         placer.block(Box(q[0] - 1.0, q[1] - 1.0, q[0] + 1.0, q[1] + 1.0))
+    unlabelled = 0
     for key in sorted(groups, key=lambda g: (groups[g][0][0].i, groups[g][0][0].j)):
         members = groups[key]
-        if big and all(c.i != 1 for c, _ in members):
+        if big and all(c.i != 1 or c.primary for c, _ in members):
             continue                      # a pin: drawn as the pin
         q = members[0][1]
-        text = " = ".join(label_of(c) for c, _ in members if not big or c.i == 1)
-        x, base, _, tb = _place(placer, text, NOTE + 0.4, q,
-                                (1.8, 3.0, 5.0, 8.0, 12.0) if big else
-                                (1.8, 2.6, 3.6, 5.0, 7.0, 9.5, 13.0), leader=True,
-                                directions=12 if big else 24)
+        text = " = ".join(label_of(c) for c, _ in members
+                          if not big or (c.i == 1 and not c.primary))
+        got = _place(placer, text, NOTE + 0.4, q,
+                     (1.8, 3.0, 5.0, 8.0, 12.0) if big else (1.8, 2.6, 3.6, 5.0, 7.0, 9.5, 13.0),
+                     leader=True, directions=12 if big else 24, required=not big)
+        if got is None:                   # no room (a crowded large drawing): dot only
+            unlabelled += 1
+            continue
+        x, base, _, tb = got
         labels.append(Text(x, base, text, NOTE + 0.4, role="centre", cls="centre-label"))
         lead = _leader(q, tb)
         if lead is not None:
@@ -201,9 +206,12 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
     if big:
         caption = [f"{len(cs.bodies)} links: drawn are the centre I1j of every link (the one "
                    f"its velocities use) and the primary centres at the pins (the pins "
-                   f"themselves); the lines of centres, the circle diagram and the other "
-                   f"centres are left out (polygons centres --json lists the "
-                   f"{len(cs.centres)} found)."]
+                   f"themselves, not labelled again); the lines of centres, the circle diagram "
+                   f"and the other centres are left out (polygons centres --json lists the "
+                   f"{len(cs.centres)} found)."
+                   + (f" {unlabelled} centre{'s' if unlabelled > 1 else ''} too crowded to "
+                      f"label {'are' if unlabelled > 1 else 'is'} drawn as a dot only."
+                      if unlabelled else "")]
     elif any(c.by_field for c in cs.centres):
         caption = ["Two inputs are given at this instant: each link's centre I1j is read off "
                    "its velocity field (the polygon's velocities), the others from the pairs "
@@ -272,22 +280,23 @@ def _leader_cost(placer, q: Pt, box: Box) -> float:
 
 
 def _place(placer: Placer, text: str, size: float, at: Pt, distances, leader=False,
-           directions: int = 24):
+           directions: int = 24, required: bool = True):
     """``placer.place`` around ``at`` (``directions`` of them), with a leader's cost when ``leader``,
     tried first among the obstacles within reach of its candidates only (the same choice, at
     a cost that does not grow with the drawing), then, if none is free there, in the whole
-    drawing; the label's box is added to ``placer``."""
+    drawing (only when ``required``: else None); the label's box is added to ``placer``."""
     dirs = [(at, [2 * math.pi * i / directions for i in range(directions)])]
     reach = max(distances) + width(text, size) + 2.0 * size + 3.0
-    for here, required in ((_local(placer, at, reach), False), (placer, True)):
+    tries = [(_local(placer, at, reach), False)] + ([(placer, True)] if required else [])
+    for here, must in tries:
         cost = (lambda _, b, here=here: _leader_cost(here, at, b)) if leader else None
         got = here.place_any(text, size, dirs, distances=distances, extra_cost=cost,
-                             required=required)
+                             required=must)
         if got is not None:
             if here is not placer:
                 placer.block(got[3])
             return got
-    raise AssertionError("unreachable: the whole drawing's placer always places")
+    return None
 
 
 def _local(placer: Placer, at: Pt, reach: float) -> Placer:
