@@ -10,8 +10,9 @@ parallel to it).  The line through two centres is
 
 Two lines of centres meet at a finite point, or at infinity in their common direction when
 they are parallel; a finite line meets the line at infinity at the point at infinity in its own
-direction (the plain double slider: I13 at infinity-free (60, 80) mm comes from two finite
-lines, I24 from the line I12–I14 at infinity and the finite line I23–I34).
+direction (the plain double slider: I13, the bar's centre at (60, 80) mm, is where two finite
+lines meet, each through a pin in the direction of a block's centre at infinity; I24 is where
+the line at infinity I12–I14 meets the finite line I23–I34: at infinity along AB).
 
 The closure takes a *window* of link numbers and, for each unknown pair of it, every line of
 centres the window offers (I_ik–I_kj for each k of the window with both known), keeps the first
