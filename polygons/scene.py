@@ -43,6 +43,7 @@ from typing import Any, Mapping
 from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
+from .exam_table import spec as exam_spec
 from .loads import parse as parse_loads
 from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record
@@ -61,7 +62,7 @@ OPTION_KEYS = ("sweep", "diagram", "handout", "centres")
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                   "force_answers", "flywheel", "efficiency", "pins", "least_velocity",
-                  "pin_answers")
+                  "pin_answers", "exam")
 DIAGRAMS = ("velocity", "acceleration")
 #: the text keys of [source] (where the case comes from; shown in reports and handouts)
 SOURCE_TEXT = ("id", "seed", "example", "category", "statement", "conventions", "notes",
@@ -541,6 +542,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
     scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
+    exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
     return scene
 
 
