@@ -387,11 +387,23 @@ def _find(solution):
         close(range(1, n + 1))
     else:
         _windows(solution, bods, known, close)
-    if motion is not None:              # whatever Kennedy leaves, from the velocity fields
+    open_ = [b.number for b in bods[1:] if (1, b.number) not in known]
+    partial = False
+    if open_ and motion is None and "velocity" in solution.scene.solve:
+        # Kennedy leaves these open (the links of a group of three on a plate — a class-III
+        # group — or a toggle): each one's centre from its velocity field, said so; Kennedy
+        # then gives what it can from them
+        motion, partial = _field(solution, bods), True
+        for j in open_:
+            known[(1, j)] = _field_centre(1, j, motion, names, size, open_=True)
+        close(range(1, n + 1) if n <= FULL_BODIES else
+              {1} | set(open_) | {k for (i, k) in list(known) if i in open_}
+              | {i for (i, k) in list(known) if k in open_})
+    if motion is not None and n <= FULL_BODIES:     # whatever is left, from the fields
         for i in range(1, n + 1):
             for j in range(i + 1, n + 1):
                 if (i, j) not in known:
-                    known[(i, j)] = _field_centre(i, j, motion, names, size)
+                    known[(i, j)] = _field_centre(i, j, motion, names, size, open_=partial)
     missing = [f"I{pair_name(1, b.number)}" for b in bods[1:] if (1, b.number) not in known]
     if missing:
         named = ", ".join(missing[:4]) + (f" and {len(missing) - 4} more" if len(missing) > 4
@@ -400,7 +412,7 @@ def _find(solution):
                                f"{'s' if len(missing) > 1 else ''} {named} of this mechanism "
                                f"at this instant (no two distinct lines of centres meet there: "
                                f"a toggle, or links locked together)", file=solution.scene.file)
-    return bods, known, motion, size
+    return bods, known, (None if partial else motion), size
 
 
 def _windows(solution, bods, known, close) -> None:
@@ -485,24 +497,28 @@ def _field(solution, bods):
     return out
 
 
-def _field_centre(i, j, motion, names, size) -> Centre:
+def _field_centre(i, j, motion, names, size, open_: bool = False) -> Centre:
     """I_ij where the two velocity fields agree: the relative motion's point of zero
-    velocity, or at infinity ⟂ the relative velocity when the two turn alike."""
+    velocity, or at infinity ⟂ the relative velocity when the two turn alike.  ``open_``:
+    read off the fields because Kennedy's theorem leaves it open (one input), not because
+    two inputs are given."""
     wi, vi, hi = motion[i]
     wj, vj, hj = motion[j]
     dw = wj - wi
     dv = (vj[0] - vi[0], vj[1] - vi[1])
     why = "; ".join(h for h in (hi, hj) if h)
+    cause = ("Kennedy's theorem leaves it open: no two distinct lines of centres meet there"
+             if open_ else "two inputs given")
     speed = max(math.hypot(*dv), abs(dw) * size)
     if abs(dw) * size > SAME * speed and speed > 0:
         p = (-dv[1] / dw, dv[0] / dw)
-        how = (f"from the velocity field (two inputs given: the point of zero "
-               f"{'velocity' if i == 1 else 'relative velocity'}; {why})")
+        how = (f"from the velocity field ({cause}; the point of zero "
+               f"{'velocity' if i == 1 else 'relative velocity'}: {why})")
         return Centre(i, j, (names[i], names[j]), p, None, how, False, 0, (), None, True)
     if math.hypot(*dv) > 0:
         return Centre(i, j, (names[i], names[j]), None, canonical((-dv[1], dv[0])),
-                      f"from the velocity field (two inputs given: {names[j]} translates "
-                      f"relative to {names[i]}; {why})", False, 0, (), None, True)
+                      f"from the velocity field ({cause}; {names[j]} translates "
+                      f"relative to {names[i]}: {why})", False, 0, (), None, True)
     return Centre(i, j, (names[i], names[j]), None, None,
                   f"{names[i]} and {names[j]} have no relative motion at this instant: every "
                   f"point is a centre", False, 0, (), None, True)
@@ -535,6 +551,7 @@ def instant_centres(solution, points=None) -> Centres:
     for b in bods:
         for x in b.labels:
             carriers.setdefault(x, b.number)
+    carriers |= _construction_points(solution, bods, carriers)
     labels = list(points) if points is not None else [x for x in pos if x in carriers]
     vel = {}
     for x in labels:
@@ -548,6 +565,12 @@ def instant_centres(solution, points=None) -> Centres:
         note = ("two inputs are given at this instant: each body's centre I1j is read off its "
                 "velocity field (the polygon's velocities), the rest from the pairs and "
                 "Kennedy's theorem")
+    elif any(c.by_field for c in found.values()):
+        opened = sum(c.by_field for c in found.values())
+        note = (f"{n} links: Kennedy's theorem leaves {opened} of the {total} centres open (no "
+                f"two distinct lines of centres meet there: a group of three links on a plate, "
+                f"or a toggle); those are read off the velocity fields (the polygon's "
+                f"velocities), the rest from the pairs and Kennedy's theorem")
     elif count < total:
         note = (f"{n} links: the {count} centres the velocities need and every primary one "
                 f"are found, not all {total}")
@@ -556,6 +579,26 @@ def instant_centres(solution, points=None) -> Centres:
     return Centres(bods, tuple(found[k] for k in sorted(found)),
                    tuple(omegas[k] for k in sorted(omegas)), MappingProxyType(vel), size,
                    count == total, note)
+
+
+def _construction_points(solution, bods, carriers) -> dict[str, int]:
+    """A point the construction places that no body carries (a triad's auxiliary point S) is
+    a point of the one link carrying every other point its step places (the triad's plate)."""
+    on: dict[str, set[int]] = {}
+    for b in bods:
+        for x in b.labels:
+            on.setdefault(x, set()).add(b.number)
+    out: dict[str, int] = {}
+    for d in solution.plan.dyads:
+        placed = tuple(d.placed)
+        for x in placed:
+            if x in carriers or x not in solution.placement.points:
+                continue
+            sets = [on[y] for y in placed if y != x and y in on]
+            common = set.intersection(*sets) if sets else set()
+            if len(common) == 1:
+                out[x] = common.pop()
+    return out
 
 
 def _propagate(solution, bods, found, motion, omegas, names, size) -> None:

@@ -690,3 +690,20 @@ def test_a_large_mechanism_draws_each_links_centre_and_says_so():
     text = svg(sol, cs)
     assert "I₁,₁₇" in text and "chord" not in text and 'id="I1,' not in text
     assert "drawn are the centre I1j of every link" in text
+
+
+def test_a_triad_centres_kennedy_leaves_open_from_the_velocity_field():
+    """A class-III group (a plate on three links): Kennedy's theorem gives no two lines of
+    centres for I13 and I14; those are read off the polygon's velocity fields, said so; the
+    rest by the pairs and Kennedy; the triad's auxiliary point S is a point of the plate."""
+    sol = solve(load_scene(ROOT / "cases/triad-ternary-coupler.toml"))
+    cs = instant_centres(sol)
+    assert "leaves 6 of the 15 centres open" in cs.note
+    for i, j in ((1, 3), (1, 4)):
+        c = cs.centre(i, j)
+        assert c.by_field and "Kennedy's theorem leaves it open" in c.how
+    assert cs.centre(2, 4).how.startswith("Kennedy: ") and not cs.centre(2, 4).by_field
+    sol8 = solve(load_scene(ROOT / "cases/triad-eight-bar.toml"))
+    cs8 = instant_centres(sol8)
+    s = next(x for x in sol8.points if x.startswith("S"))
+    assert cs8.velocities[s].number == cs8.body("BC").number
