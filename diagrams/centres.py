@@ -212,6 +212,12 @@ def drawing(sol, centres: Centres | None = None, paper: str | None = None):
                    + (f" {unlabelled} centre{'s' if unlabelled > 1 else ''} too crowded to "
                       f"label {'are' if unlabelled > 1 else 'is'} drawn as a dot only."
                       if unlabelled else "")]
+    elif any(c.by_field for c in cs.centres) and len(scene.model.inputs) == 1:
+        caption = ["Kennedy's theorem leaves some centres open here (no two distinct lines of "
+                   "centres meet there: a group of three links on a plate, or a toggle); those "
+                   "marked 'from the velocity field' in the legend are read off the polygon's "
+                   "velocities, the others come from the pairs and Kennedy's theorem. Solid "
+                   "chords of the circle diagram: centres at the pairs; dashed: found."]
     elif any(c.by_field for c in cs.centres):
         caption = ["Two inputs are given at this instant: each link's centre I1j is read off "
                    "its velocity field (the polygon's velocities), the others from the pairs "
