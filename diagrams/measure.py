@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from polygons.evaluate import link_ends
+from polygons.notation import vertex, vertices_in
 from polygons.scene import Quantity
 from polygons.units import UNITS
 
@@ -356,9 +357,11 @@ def table(sol, readings: dict, ruler: float | None = RULER_MM) -> str:
             if key in seen:
                 continue
             seen.add(key)
-            lines.append(f"  {v.frm + v.to:<12} {v.mm:8.1f} mm   {number(r.si(v.mm, ruler)):>10} {unit}"
+            name = vertex(v.frm) + vertex(v.to)              # p4_1p4 → p₄′p₄, as printed
+            lines.append(f"  {name:<12} {v.mm:8.1f} mm   {number(r.si(v.mm, ruler)):>10} {unit}"
                          f"   {v.role}")
     rows = compare(sol, readings, ruler)
+    names = {n for vx in sol.vertices.values() for n in vx}
     if rows:
         lines.append("")
         lines.append(f"answers scaled from the drawings (ruler {ruler or 0:g} mm)")
@@ -377,5 +380,6 @@ def table(sol, readings: dict, ruler: float | None = RULER_MM) -> str:
             else:
                 note = ("within drawing tolerance" if row.within else "OUTSIDE tolerance") + \
                        f" ({row.how})"
+            note = vertices_in(note, names)
             lines.append(f"{row.quantity:<16} {row.unit:<9} {sc:>11} {tut:>11} {diff:>7}  {note}")
     return "\n".join(lines) + "\n"

@@ -34,7 +34,7 @@ import math
 import re
 from dataclasses import dataclass
 
-from .errors import SceneError, UnknownLabelError, suggest
+from .errors import SceneError, UnknownLabelError, show, suggest
 from .schema import Key, Table
 
 
@@ -88,7 +88,7 @@ _FROM = re.compile(r"^\s*(.*?)\s+from\s+(.+?)\s*$", re.IGNORECASE)
 _DEAD_WORDS = {"idc": "idc", "inner dead centre": "idc", "inner dead center": "idc",
                "tdc": "idc", "odc": "odc", "outer dead centre": "odc",
                "outer dead center": "odc", "bdc": "odc"}
-_LINE = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
+_LINE = re.compile(r"[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*\Z")     # \Z: no "AB\n"
 #: the axes an angle may be measured from (the direction of each, CCW from +x)
 _AXES = {"+x": 0.0, "x": 0.0, "-x": math.pi, "+y": math.pi / 2, "y": math.pi / 2,
          "-y": -math.pi / 2}
@@ -126,7 +126,12 @@ def rate_with_sense(drv, key: str, sense_key: str, dimension: str, r) -> tuple[f
     written after the value as books do ('300 rad/s CW', '120 rpm clockwise'); both may be
     given only if they agree."""
     text, written = sense_in(drv[key])
-    value = abs(r.quantity(text, dimension, f"driver.{key}"))
+    value = r.quantity(text, dimension, f"driver.{key}")
+    if value < 0:           # a magnitude: its sense is stated in words, never by a sign
+        raise SceneError(f"{key} = {show(drv[key])} is negative: give its magnitude and its "
+                         f"sense in words ('{key} = \"{show(text.strip().lstrip('-'))[1:-1]}\"' "
+                         f"with {sense_key} = \"CW\" or \"CCW\")", file=r.file,
+                         where=f"driver.{key}")
     if sense_key not in drv:
         return value, written
     turn = r.sense(drv[sense_key], f"driver.{sense_key}")

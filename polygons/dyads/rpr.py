@@ -176,12 +176,12 @@ class RPR:
         else:
             k1 = b.fresh(A1)
             b.add(Kind.VECTOR, Op.CENTRIPETAL, (lev, B, A1), f"{b_}{k1}", b_, k1,
-                  "centripetal", f"(a_{A1})^n", f"(a_{A1})^n = ω_{lev}² × {B}{A}",
+                  "centripetal", f"(a_{A1})_{B}^n", f"(a_{A1})_{B}^n = ω_{lev}² × {B}{A}",
                   f"From {b_} draw the centripetal acceleration of {A1} about {B}, ω² × "
                   f"{B}{A}, pointing towards {B}; call its end {k1}.",
                   component=C.CENTRIPETAL, link=lev)
             n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"{a1} line", k1, None, "tangential",
-                       f"(a_{A1})^t", f"(a_{A1})^t = α_{lev} × {B}{A} ⟂ {B}{A}",
+                       f"(a_{A1})_{B}^t", f"(a_{A1})_{B}^t = α_{lev} × {B}{A} ⟂ {B}{A}",
                        f"Through {k1} draw a line perpendicular to {B}{A} for the tangential "
                        f"acceleration of {A1}, of unknown length.", component=C.TANGENTIAL,
                        link=lev, relative=(A1, B))
