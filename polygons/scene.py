@@ -57,7 +57,7 @@ from .units import dimension_of
 _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
 
 #: option tables, read and checked at load by :mod:`polygons.options` (``Scene.options``)
-OPTION_KEYS = ("sweep", "diagram", "handout")
+OPTION_KEYS = ("sweep", "diagram", "handout", "centres")
 #: tables read by extension modules (forces, loads, pins); stored raw in ``Scene.extra`` and
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",

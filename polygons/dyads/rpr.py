@@ -126,13 +126,6 @@ class RPR:
         return (f"the pin {self.pin} is on the pivot {self.pivot} of lever {self.lever}: the "
                 f"slot direction is undefined")
 
-    def circle_bodies(self, scene):
-        """The lever (its slot pin is a sliding pair on the common normal); an offset slot
-        is not modelled by the instant centres (None)."""
-        if scene.slots[self.pin].offset:
-            return None
-        return ((self.lever, "lever"),)
-
     def toggle_reason(self, scene, pos) -> str:
         slot = scene.slots[self.pin]
         if slot.length is not None:
