@@ -159,6 +159,15 @@ def redact_answers(text: str) -> str:
 
 
 # ---------------------------------------------------------------- the document
+#: a stacked pair ((a_P2)ⁿ_O2): the superscript over the subscript, both right after the
+#: parenthesis.  A column flex box whose first item (the superscript, moved first by
+#: ``order``) gives the box its baseline, raised to a superscript's height, so the subscript
+#: falls below the text's baseline (this overrides the notation's shared rule, which put the
+#: superscript at the subscript's height and the subscript below it in Chromium's print).
+SUBSUP_CSS = (".subsup{display:inline-flex;flex-direction:column;vertical-align:0.55em;"
+              "line-height:1;font-size:0.7em;margin-left:0.05em}"
+              ".subsup sub,.subsup sup{display:block;font-size:1em;vertical-align:baseline;"
+              "line-height:1}.subsup sup{order:-1}")
 CSS = """
 @page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
 html { background: #ffffff; }
@@ -227,7 +236,7 @@ table.wide td.q { width: 30%; }
   section.plate { border-top: 0.3mm dashed #999; margin-top: 8mm; padding-top: 4mm;
                   overflow-x: auto; }
 }
-""" + NOTATION_CSS + "\n"
+""" + NOTATION_CSS + "\n" + SUBSUP_CSS + "\n"
 
 
 class _Doc:
