@@ -57,15 +57,26 @@ def test_handout_narrates_every_step_with_its_figure_and_numbers(path):
     sol, key, _ = pages(path)
     text = text_of(key)
     assert sol.scene.title in htmllib.unescape(key)
-    for step in sol.steps:
-        li = re.search(rf'<li class="step" id="{step.diagram}-step-{step.number}".*?</li>',
-                       key, re.S)
-        assert li, (step.diagram, step.number)
-        body = li.group(0)
-        if step.kind in ("vector", "image", "line", "intersection"):
-            assert "<svg" in body, f"{step.diagram} {step.number} has no stage figure"
-        if step.substituted:
-            assert 'class="formula answer"' in body
+    from diagrams.figures import cells
+    for diagram in sol.scene.solve:
+        groups = cells(sol, diagram)
+        for i, cell in enumerate(groups):
+            first = cell[0].number
+            li = re.search(rf'<li class="step" id="{diagram}-step-{first}".*?</li>', key, re.S)
+            assert li, (diagram, first)
+            body = li.group(0)
+            for step in cell:
+                assert f'<span class="num">{step.number}.</span>' in body
+                if step.substituted:
+                    assert 'class="formula answer"' in body
+            # one figure a group of steps ending in a drawn point; the group completing the
+            # diagram points to the finished diagram instead (printed full size after it)
+            drawn = cell[-1].kind in ("vector", "image", "intersection")
+            final = drawn and not any(c[-1].kind in ("vector", "image", "intersection")
+                                      for c in groups[i + 1:])
+            assert ("<svg" in body) == (drawn and not final), (diagram, first)
+            if final:
+                assert "the finished diagram follows" in body
     # every finished diagram and the space diagram, inline
     for name in ("space", *sol.scene.solve):
         assert f'id="plate-{name}"' in key or f'id="{name}"' in key
@@ -99,9 +110,14 @@ def test_acceleration_components_are_explained_where_they_occur():
     for page in (key, ws):
         for what in ("centripetal", "tangential", "coriolis"):
             assert page.count(f'data-explains="{what}"') == 1, what
-    # the Coriolis box comes just before the step that draws 2ωv
+    # the Coriolis box comes just before the group of steps that draws 2ωv
+    from diagrams.figures import cells
+    sol = pages(CASES / "s003-fig7.toml")[0]
+    groups = cells(sol, "acceleration")
+    at = next(i for i, c in enumerate(groups) if any(s.number == 4 for s in c))
     box = key.index('data-explains="coriolis"')
-    assert key.index('id="acceleration-step-4"') > box > key.index('id="acceleration-step-3"')
+    assert key.index(f'id="acceleration-step-{groups[at][0].number}"') > box
+    assert at == 0 or box > key.index(f'id="acceleration-step-{groups[at - 1][0].number}"')
     _, key, _ = pages(CASES / "s001-we6.toml")
     assert 'data-explains="coriolis"' not in key
 
@@ -312,7 +328,10 @@ def test_handout_and_worksheet_commands(tmp_path):
               "--scale", "velocity=0.05 m/s")
     assert out.returncode == 0, out.stderr
     ws = (tmp_path / "ws.html").read_text(encoding="utf-8")
-    assert 'content="worksheet"' in ws and "Scale 1 cm = 50 mm/s" in ws
+    # a forced scale at which the diagram does not fit the page: the round scale that does,
+    # stated with the one asked
+    assert 'content="worksheet"' in ws and "Scale 1 cm = 0.1 m/s" in ws
+    assert "rather than 1 cm = 50 mm/s" in ws
 
 
 def test_gallery_links_every_case(tmp_path):
