@@ -248,6 +248,8 @@ def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3
                 ys.extend(p[1] for p in pts)
             elif isinstance(it, Text):
                 b = text_box(it.x, it.baseline, it.text, it.size, it.anchor)
+                if it.weight == "bold":          # bold is about a tenth wider than regular
+                    b = type(b)(b.x0, b.y0, b.x1 + 0.1 * (b.x1 - b.x0), b.y1)
                 xs.extend((b.x0, b.x1))
                 ys.extend((b.y0, b.y1))
     walk(groups)

@@ -195,10 +195,12 @@ td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space:
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
 li.step { margin: 0 0 4mm 0; }
-ol.steps.staged { display: grid; grid-template-columns: 1fr 1fr; column-gap: 5mm; }
-ol.steps.staged li.step { margin: 0 0 2.5mm 0; font-size: 9pt; line-height: 1.3; }
+ol.steps.staged { display: block; }
+ol.steps.staged li.step { display: inline-block; vertical-align: top; width: calc(50% - 4.5mm);
+                          margin: 0 2.5mm 2.5mm 0; font-size: 9pt; line-height: 1.3;
+                          break-inside: avoid; page-break-inside: avoid; }
 ol.steps.staged figure { margin: 1mm 0 0 0; }
-ol.steps.staged > aside.explain { grid-column: 1 / -1; margin: 0 0 3mm 0; }
+ol.steps.staged > aside.explain { display: block; margin: 0 0 2mm 0; }
 li.step .say { margin: 0.5mm 0; }
 li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
                display: inline-block; min-width: 8mm; }
@@ -214,6 +216,9 @@ figure svg { display: block; max-width: 100%; height: auto; }
 figure svg.drawing-area { max-width: none; }
 figcaption, .figure-note { font-size: 8.5pt; color: #333; }
 section.plate { margin-top: 4mm; }
+section.plate div.sheet { float: left; width: 100%; break-inside: avoid;
+                          page-break-inside: avoid; margin-bottom: 3mm; }
+section.plate + section, #results { clear: none; }
 section.plate h2, section.plate h3 { break-after: avoid; page-break-after: avoid; }
 section.plate figure { margin: 0; }
 figure.centres { float: left; margin: 0 4mm 2mm 0; }
@@ -410,8 +415,13 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
     else:
         k = min(PORTRAIT[0] / w, PORTRAIT[1] / h)
         width, reduced = w * k, k
+    head = f"<{level}>{esc(heading)}</{level}>\n"
+    # the drawing (with its heading unless that opens a section) floats: when it does not
+    # fit what is left of the page, it goes to the next page and the text after it fills
+    # this one, instead of leaving the rest of the page empty
     doc.add(f'<section class="plate portrait" id="{esc(ident or "plate-" + name)}">\n'
-            f"<{level}>{esc(heading)}</{level}>\n{intro}")
+            + (head + intro if level == "h2" else intro)
+            + '<div class="sheet">' + ("" if level == "h2" else head))
     doc.add(f'<figure class="diagram full">{inline_svg(svg, name, "figure", width, label)}'
             f"</figure>\n")
     scale_txt = figs.drawing[name].scale_statement if name in figs.drawing else ""
@@ -425,7 +435,7 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
     else:
         msg = (f"Reduced to {math.floor(reduced * 100)} % to fit the page: measure with its "
                f"scale bar, not with the stated scale.")
-    doc.add(f'<p class="figure-note">{esc(msg)}</p>\n</section>\n')
+    doc.add(f'<p class="figure-note">{esc(msg)}</p>\n</div>\n</section>\n')
 
 
 def _space(doc: _Doc, sol: Solution, figs: Figures, worksheet: bool) -> None:
