@@ -23,7 +23,7 @@ MAX_SCALE_TEXT = 6.0
 #: labels of the stage figures are set at least this much larger than on the full-size drawings
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
-STAGE_HEIGHT = 48.0
+STAGE_HEIGHT = 44.0
 #: the printable area (mm) of the handout's A4 portrait page, and the height a finished
 #: diagram's heading and note take on it: a finished diagram is printed at its stated scale,
 #: so it must fit this (else it is drawn at the round scale that does, and says so)

@@ -43,6 +43,9 @@ PORTRAIT = (180.0, 262.0)
 #: 14 mm scale bar): A5 when the key's drawing fits it, else as large as a page allows
 AREAS = {"A5": (150.0, 100.0), "portrait": (172.0, 222.0)}
 
+#: a stage figure printed this narrow (mm) or narrower sits beside its steps' text
+NARROW_STAGE = 46.0
+
 UNIT_OF = {"velocity": "m/s", "acceleration": "m/s²"}
 WHAT = {"velocity": "velocity", "acceleration": "acceleration"}
 
@@ -200,6 +203,8 @@ ol.steps.staged li.step { display: inline-block; vertical-align: top; width: cal
                           margin: 0 2.5mm 2.5mm 0; font-size: 9pt; line-height: 1.3;
                           break-inside: avoid; page-break-inside: avoid; }
 ol.steps.staged figure { margin: 1mm 0 0 0; }
+ol.steps.staged figure.narrow { float: right; margin: 0 0 1mm 2mm; }
+ol.steps.staged figure.narrow figcaption { max-width: 40mm; }
 ol.steps.staged > aside.explain { display: block; margin: 0 0 2mm 0; }
 li.step .say { margin: 0.5mm 0; }
 li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
@@ -235,6 +240,7 @@ code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
 .off { font-weight: bold; }
 @media print {
   body { max-width: none; padding: 0; }
+  .screen-only { display: none; }     /* a command line is no use on paper */
 }
 table.wide { width: 100%; }
 table.wide td.q { width: 30%; }
@@ -532,8 +538,29 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
             k = cell_stage(sol, cell)
             name = f"{diagram}-{k}" if k is not None else None
             nums = [s.number for s in cell]
+            last = k is not None and k == stage_of(sol, [s for s in sol.steps
+                                                       if s.diagram == diagram
+                                                       and s.kind in DRAWABLE][-1])
+            fig, narrow = "", False
+            if last:
+                fig = (f'<p class="figure-note">This completes the {what} diagram: the '
+                       f"finished diagram is printed full size.</p>\n")
+            elif name and name in figs.svg:
+                svg = figs.svg[name]
+                w, h = svg_size(svg)
+                width = stage_width(w, h)
+                narrow = width <= NARROW_STAGE
+                drawn = [s.number for s in cell if s.kind in DRAWABLE]
+                steps = (f"step {drawn[0]}" if len(drawn) == 1 else
+                         f"steps {', '.join(map(str, drawn[:-1]))} and {drawn[-1]}")
+                fig = (f'<figure class="diagram stage{" narrow" if narrow else ""}">'
+                       f"{inline_svg(svg, name, 'figure', width, f'{what} diagram, {steps}')}"
+                       f"<figcaption>The {what} diagram after {steps}"
+                       f"</figcaption></figure>\n")
             doc.add(f'<li class="step" id="{diagram}-step-{nums[0]}" data-step="'
                     f'{" ".join(map(str, nums))}">\n')
+            if narrow:           # beside the text, which it would otherwise follow
+                doc.add(fig)
             for step in cell:
                 anchor = (f' id="{diagram}-step-{step.number}"' if step.number != nums[0]
                           else "")
@@ -542,22 +569,8 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                 f = formula_with_numbers(step, sol.scene)
                 if f:
                     doc.add(f'<p class="formula answer">{sym(words(f))}</p>\n')
-            last = k is not None and k == stage_of(sol, [s for s in sol.steps
-                                                       if s.diagram == diagram
-                                                       and s.kind in DRAWABLE][-1])
-            if last:
-                doc.add(f'<p class="figure-note">This completes the {what} diagram: the '
-                        f"finished diagram follows.</p>\n")
-            elif name and name in figs.svg:
-                svg = figs.svg[name]
-                w, h = svg_size(svg)
-                drawn = [s.number for s in cell if s.kind in DRAWABLE]
-                steps = (f"step {drawn[0]}" if len(drawn) == 1 else
-                         f"steps {', '.join(map(str, drawn[:-1]))} and {drawn[-1]}")
-                doc.add(f'<figure class="diagram stage">'
-                        f"{inline_svg(svg, name, 'figure', stage_width(w, h), f'{what} diagram, {steps}')}"
-                        f"<figcaption>The {what} diagram after {steps}"
-                        f"</figcaption></figure>\n")
+            if not narrow:
+                doc.add(fig)
             doc.add("</li>\n")
     doc.add("</ol>\n")
     if sol.min_intersection_angle_deg is not None and not worksheet:
@@ -813,7 +826,7 @@ def _blanks(doc: _Doc, sol: Solution, file: str) -> None:
                     f'<td class="blank"></td></tr>\n')
         doc.add("</tbody>\n</table>\n")
         example = " ".join(f"{textbook_name(q)}=…" for q in qs[:3])
-        doc.add(f'<p class="note">Check your values: <code>polygons check {esc(file)} '
+        doc.add(f'<p class="note screen-only">Check your values: <code>polygons check {esc(file)} '
                 f"--measured {esc(example)}</code> (numbers in the units above, or write the "
                 f"unit: <code>{esc(textbook_name(qs[0]))}='…'</code> with e.g. "
                 f"<code>mm/s</code>; add CW or CCW after an ω or α).</p>\n")
@@ -827,7 +840,8 @@ def _footer(doc: _Doc, sol: Solution, worksheet: bool, file: str) -> None:
     except Exception:   # pragma: no cover - not installed
         v = ""
     cmd = f"polygons handout {file}" + (" --worksheet" if worksheet else "")
-    doc.add(f"<footer>Generated by polygons {esc(v)} from <code>{esc(file)}</code> "
+    tag = '<footer class="screen-only">' if worksheet else "<footer>"
+    doc.add(f"{tag}Generated by polygons {esc(v)} from <code>{esc(file)}</code> "
             f"(regenerate: <code>{esc(cmd)} -o FILE.html</code>)."
             + ("" if worksheet else " The answer key's worksheet: add --worksheet.")
             + "</footer>\n")

@@ -76,7 +76,7 @@ def test_handout_narrates_every_step_with_its_figure_and_numbers(path):
                                       for c in groups[i + 1:])
             assert ("<svg" in body) == (drawn and not final), (diagram, first)
             if final:
-                assert "the finished diagram follows" in body
+                assert "finished diagram is printed full size" in body
     # every finished diagram and the space diagram, inline
     for name in ("space", *sol.scene.solve):
         assert f'id="plate-{name}"' in key or f'id="{name}"' in key
