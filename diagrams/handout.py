@@ -198,14 +198,15 @@ td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space:
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
 li.step { margin: 0 0 4mm 0; }
-ol.steps.staged { display: block; }
-ol.steps.staged li.step { display: inline-block; vertical-align: top; width: calc(50% - 4.5mm);
-                          margin: 0 2.5mm 2.5mm 0; font-size: 9pt; line-height: 1.3;
-                          break-inside: avoid; page-break-inside: avoid; }
+/* the steps in two columns (a step may continue in the next column; its figure never
+   breaks); the multicolumn list starts below a finished diagram floated to this page
+   (Chromium's columns and floats on one page otherwise overlap) */
+ol.steps.staged { column-count: 2; column-gap: 6mm; clear: both; }
+ol.steps.staged li.step { margin: 0 0 2.5mm 0; font-size: 9pt; line-height: 1.3; }
 ol.steps.staged figure { margin: 1mm 0 0 0; }
 ol.steps.staged figure.narrow { float: right; margin: 0 0 1mm 2mm; }
 ol.steps.staged figure.narrow figcaption { max-width: 40mm; }
-ol.steps.staged > aside.explain { display: block; margin: 0 0 2mm 0; }
+ol.steps.staged > aside.explain { column-span: all; margin: 0 0 2mm 0; }
 li.step .say { margin: 0.5mm 0; }
 li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
                display: inline-block; min-width: 8mm; }
