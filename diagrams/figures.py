@@ -12,7 +12,7 @@ from polygons.plan import Step
 
 DRAWABLE = ("vector", "image", "line", "intersection")
 #: width (mm) of a stage figure: the narration runs in two columns, two or three stages a page
-STAGE_WIDTH = 86.0
+STAGE_WIDTH = 56.0
 #: every label of a stage figure prints at least this high (mm) once the figure is reduced
 #: to its column: the labels are set larger on the reduced figures (and placed anew)
 PRINTED_LABEL = 2.5
@@ -29,6 +29,14 @@ STAGE_HEIGHT = 44.0
 #: so it must fit this (else it is drawn at the round scale that does, and says so)
 PAGE = (180.0, 262.0)
 PLATE_ROOM = 26.0
+#: margin (mm) of a finished diagram as the handout prints it (:func:`plate`): its heading
+#: left out (the page's heading names it) and cropped to its drawing, key and legend
+PLATE_MARGIN = 3.0
+
+
+def plate(d):
+    """Finished drawing ``d`` as the handout prints it: without its heading, cropped."""
+    return trimmed(d, ("heading",), PLATE_MARGIN)
 
 
 @dataclass
@@ -51,18 +59,18 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
     scale that fits, recorded in ``rescaled``); the stage figures are cropped to their
     drawing, with labels set so that they print :data:`PRINTED_LABEL` mm high or more."""
     import diagrams
-    from .layout import restack
+    from .layout import MARGIN, restack
     from .svg import to_svg
     out = Figures()
     finals = []
     for d in diagrams.drawings(sol, scales, paper, False):
         first = d.scale_statement
-        d = restack(d, PAGE[0])
+        d = restack(d, PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
         for _ in range(12):                        # the next round scales, up to 10⁴ ×
             fit = _fitting_scale(d)
             if fit is None:
                 break
-            d = restack(_redrawn(sol, d, fit, paper), PAGE[0])
+            d = restack(_redrawn(sol, d, fit, paper), PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
         finals.append(d)
         out.drawing[d.name] = d
         out.svg[d.name] = to_svg(d)
@@ -81,7 +89,8 @@ def _fitting_scale(d):
     """None if drawing ``d`` fits the page at its scale, else the next round scale (a larger
     value per cm): only the drawing itself shrinks with it, not its text."""
     from .scale import QUANTITY_OF, make, parse, round_up
-    if d.width <= PAGE[0] + 1e-9 and d.height <= PAGE[1] - PLATE_ROOM + 1e-9:
+    t = plate(d)
+    if t.width <= PAGE[0] + 1e-9 and t.height <= PAGE[1] - PLATE_ROOM + 1e-9:
         return None
     lay = d.meta.get("layout")
     scale = lay.scale if lay is not None else d.meta.get("scale") or parse(

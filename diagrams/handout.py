@@ -44,7 +44,7 @@ PORTRAIT = (180.0, 262.0)
 AREAS = {"A5": (150.0, 100.0), "portrait": (172.0, 222.0)}
 
 #: a stage figure printed this narrow (mm) or narrower sits beside its steps' text
-NARROW_STAGE = 46.0
+NARROW_STAGE = 30.0
 
 UNIT_OF = {"velocity": "m/s", "acceleration": "m/s²"}
 WHAT = {"velocity": "velocity", "acceleration": "acceleration"}
@@ -179,17 +179,17 @@ body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size
 h1, h2, h3, .figure-note, table, .formula, .explain h4, .badge, footer, .data dt {
        font-family: "DejaVu Sans", Verdana, Arial, sans-serif; }
 h1 { font-size: 17pt; line-height: 1.2; margin: 0 0 2mm 0; }
-h2 { font-size: 13pt; margin: 7mm 0 2mm 0; border-bottom: 0.4mm solid #000;
+h2 { font-size: 13pt; margin: 5mm 0 2mm 0; border-bottom: 0.4mm solid #000;
      break-after: avoid; page-break-after: avoid; }
 h3 { font-size: 11pt; margin: 4mm 0 1.5mm 0; break-after: avoid; page-break-after: avoid; }
-p { margin: 1.2mm 0 1.8mm 0; }
+p { margin: 1mm 0 1.4mm 0; }
 .sub { font-size: 9.5pt; color: #333; margin: 0 0 3mm 0; }
 .badge { display: inline-block; border: 0.3mm solid #000; padding: 0 1.5mm; font-size: 8.5pt;
          font-weight: bold; margin-right: 1.5mm; }
 .statement { border-left: 1mm solid #999; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
 .statement p { margin: 0.8mm 0; }
-table { border-collapse: collapse; font-size: 9pt; margin: 2mm 0 3mm 0;
-        break-inside: avoid; page-break-inside: avoid; }
+table { border-collapse: collapse; font-size: 9pt; margin: 2mm 0 3mm 0; }
+tr { break-inside: avoid; page-break-inside: avoid; }
 th, td { border-bottom: 0.2mm solid #999; padding: 0.8mm 2.2mm; text-align: left;
          vertical-align: top; }
 th { border-bottom: 0.4mm solid #000; font-weight: bold; }
@@ -201,12 +201,12 @@ li.step { margin: 0 0 4mm 0; }
 /* the steps in two columns (a step may continue in the next column; its figure never
    breaks); the multicolumn list starts below a finished diagram floated to this page
    (Chromium's columns and floats on one page otherwise overlap) */
-ol.steps.staged { column-count: 2; column-gap: 6mm; clear: both; }
+ol.steps.staged { column-count: 3; column-gap: 5mm; clear: both; }
 ol.steps.staged li.step { margin: 0 0 2.5mm 0; font-size: 9pt; line-height: 1.3; }
 ol.steps.staged figure { margin: 1mm 0 0 0; }
 ol.steps.staged figure.narrow { float: right; margin: 0 0 1mm 2mm; }
 ol.steps.staged figure.narrow figcaption { max-width: 40mm; }
-ol.steps.staged > aside.explain { column-span: all; margin: 0 0 2mm 0; }
+ol.steps.staged > aside.explain { margin: 0 0 2mm 0; }
 li.step .say { margin: 0.5mm 0; }
 li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
                display: inline-block; min-width: 8mm; }
@@ -232,8 +232,8 @@ section#centres { overflow: hidden; break-inside: avoid; }
 section.plate h3 { margin-top: 0; }
 .note { font-size: 9.5pt; }
 .slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
-.about p { font-size: 9pt; color: #222; margin: 0.5mm 0 1.5mm 0; }
-.about h3 { font-size: 9.5pt; margin-bottom: 0.5mm; }
+.about p { font-size: 8.5pt; color: #222; margin: 0.3mm 0 1mm 0; }
+.about h3 { font-size: 9pt; margin: 2mm 0 0.3mm 0; }
 footer { font-size: 8pt; color: #333; margin-top: 6mm; border-top: 0.2mm solid #999;
          padding-top: 1.5mm; }
 code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
@@ -413,9 +413,9 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
     d = figs.drawing.get(name)
     if d is None or name not in figs.svg:
         return
-    from .figures import trimmed
+    from .figures import plate
     from .svg import to_svg
-    svg = to_svg(trimmed(d, ("heading",)))       # the page's heading names it
+    svg = to_svg(plate(d))       # the page's heading names it
     w, h = svg_size(svg)
     if w <= PORTRAIT[0] + 0.05 and h <= PORTRAIT[1] + 0.05:
         width, reduced = w, None
