@@ -61,7 +61,8 @@ def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE,
         if i % k == 0 or i == n:
             items.append(Text(10.0 * i, tick_y + 0.8, vals[i], size, "middle",
                               role="scale"))
-    unit_x = 10.0 * n + 2.0
+    # the unit after the last number, clear of it however large the numbers are set
+    unit_x = 10.0 * n + max(2.0, width(vals[n], size) / 2.0 + 1.0)
     items.append(Text(unit_x, -0.4, display(scale.unit), size, role="scale"))
     text = f"Scale {scale.statement}"
     sx = unit_x + width(display(scale.unit), size) + 4.0
