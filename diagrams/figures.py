@@ -19,7 +19,7 @@ PRINTED_LABEL = 2.5
 #: the scale bar's numbers on a reduced stage figure are printed at least this high (mm)
 PRINTED_SCALE_TEXT = 2.5
 #: ... but never drawn larger than this (mm), so a much-reduced figure's bar stays a bar
-MAX_SCALE_TEXT = 6.0
+MAX_SCALE_TEXT = 10.0
 #: labels of the stage figures are set at least this much larger than on the full-size drawings
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
@@ -135,7 +135,14 @@ def _stages(sol: Solution, diagram: str, scale, paper):
             continue
         new = {s.number for s in cell if s.kind == "line"}
         t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
-        t = trimmed(readable_scale_bar(t, stage_width(t.width, t.height) / t.width), drop)
+        k = stage_width(t.width, t.height) / t.width
+        for _ in range(3):      # the larger bar may enlarge the figure, reducing it more
+            r = trimmed(readable_scale_bar(t, k * 0.999), drop)
+            k2 = stage_width(r.width, r.height) / r.width
+            if k2 >= k * 0.999:
+                break
+            k = k2
+        t = r
         out.append(t)
     return out
 
