@@ -79,7 +79,7 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
     for d in finals:
         lay = d.meta.get("layout")
         if lay is not None:
-            for st in _stages(sol, d.name, lay.scale, paper):
+            for st in _stages(sol, d.name, lay.scale, paper, lay):
                 out.drawing[st.name] = st
                 out.svg[st.name] = to_svg(st)
     return out
@@ -109,22 +109,26 @@ def _redrawn(sol: Solution, d, scale, paper):
     return polygon.drawing(sol, polygon.layout(sol, d.kind, scale, paper))
 
 
-def _stages(sol: Solution, diagram: str, scale, paper):
-    """The stage figures of ``diagram`` at ``scale``, cropped, labels readable in print."""
+def _stages(sol: Solution, diagram: str, scale, paper, final=None):
+    """The stage figures of ``diagram`` at ``scale``, cropped, labels readable in print.
+
+    The labels' enlargement is estimated from the finished layout ``final`` (labels at their
+    own size: the figure's reduction barely depends on them), with a tenth to spare, and
+    checked on the figure drawn: one label placement per diagram, rarely two."""
     from . import polygon
     drop = ("heading", "caption", "key", "legend")
 
-    def made(text_scale):
-        lay = polygon.layout(sol, diagram, scale, paper, text_scale)
-        n = len(lay.con.steps)
-        last = trimmed(polygon.drawing(sol, lay, n), drop)
-        return lay, n, stage_width(last.width, last.height) / last.width
+    def reduction(lay):
+        last = trimmed(polygon.drawing(sol, lay, len(lay.con.steps)), drop)
+        return stage_width(last.width, last.height) / last.width
 
     smallest = min(polygon.LABEL_SIZE, polygon.LINE_LABEL_SIZE, polygon.VECTOR_LABEL_SIZE)
     ts = STAGE_TEXT_SCALE
+    if final is not None:
+        ts = max(ts, round(1.1 * PRINTED_LABEL / (smallest * min(reduction(final), 1.0)), 2))
     for _ in range(3):
-        lay, n, k = made(ts)
-        printed = smallest * ts * min(k, 1.0)
+        lay = polygon.layout(sol, diagram, scale, paper, ts)
+        printed = smallest * ts * min(reduction(lay), 1.0)
         if printed >= PRINTED_LABEL - 1e-6:
             break
         ts = round(ts * PRINTED_LABEL / printed * 1.02, 2)
