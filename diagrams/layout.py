@@ -53,6 +53,9 @@ def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE,
     k = 1
     while any(width(v, size) + 2.0 > 10.0 * k for v in vals) and k < n:
         k += 1
+    if n % k and n > k:     # end on a labelled centimetre: the last number has room too
+        n -= n % k
+        vals = vals[:n + 1]
     items = [Segment((0.0, 0.0), (10.0 * n, 0.0), "scalebar", cls="scale-bar-line")]
     tick_y = 1.5
     for i in range(n + 1):
