@@ -285,7 +285,7 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
     else:
         k = min(PORTRAIT[0] / w, PORTRAIT[1] / h)
         width, reduced = w * k, k
-    head = f"<{level}>{esc(heading)}</{level}>\n"
+    head = f"<{level}>{esc(heading) if level == 'h2' else sym(heading)}</{level}>\n"
     # the drawing (with its heading unless that opens a section) floats: when it does not
     # fit what is left of the page, it goes to the next page and the text after it fills
     # this one, instead of leaving the rest of the page empty
