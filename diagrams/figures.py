@@ -12,44 +12,168 @@ from polygons.plan import Step
 
 DRAWABLE = ("vector", "image", "line", "intersection")
 #: width (mm) of a stage figure: the narration runs in two columns, two or three stages a page
-STAGE_WIDTH = 86.0
+STAGE_WIDTH = 56.0
+#: every label of a stage figure prints at least this high (mm) once the figure is reduced
+#: to its column: the labels are set larger on the reduced figures (and placed anew)
+PRINTED_LABEL = 2.5
 #: the scale bar's numbers on a reduced stage figure are printed at least this high (mm)
-PRINTED_SCALE_TEXT = 2.3
+PRINTED_SCALE_TEXT = 2.5
 #: ... but never drawn larger than this (mm), so a much-reduced figure's bar stays a bar
-MAX_SCALE_TEXT = 4.5
-#: labels of the stage figures are set this much larger than on the full-size drawings
+MAX_SCALE_TEXT = 10.0
+#: labels of the stage figures are set at least this much larger than on the full-size drawings
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
-STAGE_HEIGHT = 52.0
+STAGE_HEIGHT = 44.0
+#: the printable area (mm) of the handout's A4 portrait page, and the height a finished
+#: diagram's heading and note take on it: a finished diagram is printed at its stated scale,
+#: so it must fit this (else it is drawn at the round scale that does, and says so)
+PAGE = (180.0, 262.0)
+PLATE_ROOM = 26.0
+#: margin (mm) of a finished diagram as the handout prints it (:func:`plate`): its heading
+#: left out (the page's heading names it) and cropped to its drawing, key and legend
+PLATE_MARGIN = 3.0
+
+
+def plate(d):
+    """Finished drawing ``d`` as the handout prints it: without its heading, cropped."""
+    return trimmed(d, ("heading",), PLATE_MARGIN)
 
 
 @dataclass
 class Figures:
     """The diagrams of one solution: SVG bytes and the drawing records, by name
-    ('space', 'velocity', 'velocity-1', ...)."""
+    ('space', 'velocity', 'velocity-1', ...); ``rescaled`` names the finished diagrams drawn
+    at another round scale than asked or chosen for the landscape sheet, so that they print
+    on the handout's page at their stated scale: name → (scale first chosen, scale drawn)."""
     svg: dict = field(default_factory=dict)
     drawing: dict = field(default_factory=dict)
     error: str = ""
+    rescaled: dict = field(default_factory=dict)
 
 
 def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
-    """Every diagram of ``sol`` with its stages, through the public API of :mod:`diagrams`."""
+    """Every diagram of ``sol`` with its stages, through the public API of :mod:`diagrams`.
+
+    The finished diagrams fit the handout's portrait page at their stated scale (key and
+    legend moved below the drawing when beside it they are too wide; else the next round
+    scale that fits, recorded in ``rescaled``); the stage figures are cropped to their
+    drawing, with labels set so that they print :data:`PRINTED_LABEL` mm high or more."""
     import diagrams
+    from .layout import MARGIN, restack
     from .svg import to_svg
     out = Figures()
-    for d in diagrams.drawings(sol, scales, paper, True):
+    finals = []
+    for d in diagrams.drawings(sol, scales, paper, False):
+        first = d.scale_statement
+        d = restack(d, PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
+        for _ in range(12):                        # the next round scales, up to 10⁴ ×
+            fit = _fitting_scale(d)
+            if fit is None:
+                break
+            d = restack(_redrawn(sol, d, fit, paper), PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
+        finals.append(d)
         out.drawing[d.name] = d
-        if d.stage is None:
-            out.svg[d.name] = to_svg(d)
-    # the stage figures print reduced: their labels are set larger (placed anew, clear of
-    # each other as on every drawing) and their scale bar readable
-    for d in diagrams.drawings(sol, scales, paper, True, STAGE_TEXT_SCALE):
-        if d.stage is not None:
-            t = trimmed(d, ("heading", "caption", "key", "legend"))
-            t = trimmed(readable_scale_bar(t, stage_width(t.width, t.height) / t.width),
-                        ("heading", "caption", "key", "legend"))
-            out.svg[d.name] = to_svg(t)
+        out.svg[d.name] = to_svg(d)
+        if d.scale_statement != first:
+            out.rescaled[d.name] = (first, d.scale_statement)
+    for d in finals:
+        lay = d.meta.get("layout")
+        if lay is not None:
+            for st in _stages(sol, d.name, lay.scale, paper, lay):
+                out.drawing[st.name] = st
+                out.svg[st.name] = to_svg(st)
     return out
+
+
+def _fitting_scale(d):
+    """None if drawing ``d`` fits the page at its scale, else the next round scale (a larger
+    value per cm): only the drawing itself shrinks with it, not its text."""
+    from .scale import QUANTITY_OF, make, parse, round_up
+    t = plate(d)
+    if t.width <= PAGE[0] + 1e-9 and t.height <= PAGE[1] - PLATE_ROOM + 1e-9:
+        return None
+    lay = d.meta.get("layout")
+    scale = lay.scale if lay is not None else d.meta.get("scale") or parse(
+        d.scale_statement, QUANTITY_OF.get(d.kind, "length"))
+    return make(scale.quantity, round_up(scale.per_cm * 1.01), forced=True)
+
+
+def _redrawn(sol: Solution, d, scale, paper):
+    """Finished drawing ``d`` drawn anew at ``scale``."""
+    from dataclasses import replace
+
+    from . import polygon, space
+    if d.kind == "space":
+        new = space.drawing(sol, scale, paper)
+        return replace(new, meta={**new.meta, "scale": scale})
+    return polygon.drawing(sol, polygon.layout(sol, d.kind, scale, paper))
+
+
+def _stages(sol: Solution, diagram: str, scale, paper, final=None):
+    """The stage figures of ``diagram`` at ``scale``, cropped, labels readable in print.
+
+    The labels' enlargement is estimated from the finished layout ``final`` (labels at their
+    own size: the figure's reduction barely depends on them), with a tenth to spare, and
+    checked on the figure drawn: one label placement per diagram, rarely two."""
+    from . import polygon
+    drop = ("heading", "caption", "key", "legend")
+
+    def reduction(lay):
+        last = trimmed(polygon.drawing(sol, lay, len(lay.con.steps)), drop)
+        return stage_width(last.width, last.height) / last.width
+
+    smallest = min(polygon.LABEL_SIZE, polygon.LINE_LABEL_SIZE, polygon.VECTOR_LABEL_SIZE)
+    ts = STAGE_TEXT_SCALE
+    if final is not None:
+        ts = max(ts, round(1.1 * PRINTED_LABEL / (smallest * min(reduction(final), 1.0)), 2))
+    for _ in range(3):
+        lay = polygon.layout(sol, diagram, scale, paper, ts)
+        printed = smallest * ts * min(reduction(lay), 1.0)
+        if printed >= PRINTED_LABEL - 1e-6:
+            break
+        ts = round(ts * PRINTED_LABEL / printed * 1.02, 2)
+    out = []
+    for cell in cells(sol, diagram):
+        stage = cell_stage(sol, cell)
+        if stage is None:
+            continue
+        new = {s.number for s in cell if s.kind == "line"}
+        t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
+        k = stage_width(t.width, t.height) / t.width
+        for _ in range(3):      # the larger bar may enlarge the figure, reducing it more
+            r = trimmed(readable_scale_bar(t, k * 0.999), drop)
+            k2 = stage_width(r.width, r.height) / r.width
+            if k2 >= k * 0.999:
+                break
+            k = k2
+        t = r
+        out.append(t)
+    return out
+
+
+def _as_new(d, steps: set[int]):
+    """``d`` with the construction lines of ``steps`` drawn as the new step (heavier), not
+    faded: the lines a figure's intersection uses are drawn with it."""
+    from dataclasses import replace
+
+    from .model import Group
+    if not steps:
+        return d
+    marks = {f"step-{n}" for n in steps}
+
+    def fix(it):
+        if isinstance(it, Group):
+            return replace(it, items=tuple(fix(i) for i in it.items))
+        cls = set(getattr(it, "cls", "").split())
+        if not cls & marks:
+            return it
+        if "construction-line" in cls:
+            style = it.style if it.style.endswith("-new") else it.style + "-new"
+            return replace(it, faded=False, style=style)
+        if "line-label" in cls:
+            return replace(it, faded=False)
+        return it
+    return replace(d, groups=tuple(fix(g) for g in d.groups))
 
 
 def readable_scale_bar(d, reduction: float):
@@ -144,6 +268,8 @@ def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3
                 ys.extend(p[1] for p in pts)
             elif isinstance(it, Text):
                 b = text_box(it.x, it.baseline, it.text, it.size, it.anchor)
+                if it.weight == "bold":          # bold is about a tenth wider than regular
+                    b = type(b)(b.x0, b.y0, b.x1 + 0.1 * (b.x1 - b.x0), b.y1)
                 xs.extend((b.x0, b.x1))
                 ys.extend((b.y0, b.y1))
     walk(groups)
@@ -167,6 +293,32 @@ def stage_of(sol: Solution, step: Step) -> int | None:
             if s.number == step.number:
                 return k
     return None
+
+
+def cells(sol: Solution, diagram: str) -> list[list[Step]]:
+    """The steps of ``diagram`` grouped as the handout shows them, one figure a group: a
+    construction line is drawn in the figure of the step that uses it (the intersection
+    where it meets another), each vector, image or intersection closes a group; steps that
+    draw nothing go with the next figure (the last ones, after every figure, form a group
+    of their own)."""
+    out: list[list[Step]] = []
+    cur: list[Step] = []
+    for s in sol.steps:
+        if s.diagram != diagram:
+            continue
+        cur.append(s)
+        if s.kind in DRAWABLE and s.kind != "line":
+            out.append(cur)
+            cur = []
+    if cur:
+        out.append(cur)
+    return out
+
+
+def cell_stage(sol: Solution, cell: list[Step]) -> int | None:
+    """The stage figure of a group of steps (that of its last drawn step), else None."""
+    last = cell[-1]
+    return stage_of(sol, last) if last.kind in DRAWABLE and last.kind != "line" else None
 
 
 # ---------------------------------------------------------------- words

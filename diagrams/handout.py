@@ -30,9 +30,9 @@ from polygons.plan import Step
 from polygons.report import check_answers, sense
 from polygons.scene import Crank
 
-from .figures import Figures, figures, stage_of, stage_width
+from .figures import Figures, cell_stage, cells, figures, stage_of, stage_width
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
-from .notation import HTML_CSS as NOTATION_CSS
+from .handout_style import CSS, EXPLAIN, SUBSUP_CSS  # noqa: F401 (SUBSUP_CSS: public)
 from .notation import join_vectors, link_names, name_bare_omegas, slot_names
 
 DRAWABLE = ("vector", "image", "line", "intersection")
@@ -43,54 +43,11 @@ PORTRAIT = (180.0, 262.0)
 #: 14 mm scale bar): A5 when the key's drawing fits it, else as large as a page allows
 AREAS = {"A5": (150.0, 100.0), "portrait": (172.0, 222.0)}
 
+#: a stage figure printed this narrow (mm) or narrower sits beside its steps' text
+NARROW_STAGE = 30.0
+
 UNIT_OF = {"velocity": "m/s", "acceleration": "m/s²"}
 WHAT = {"velocity": "velocity", "acceleration": "acceleration"}
-
-
-EXPLAIN = {
-    "relative_velocity": (
-        "Relative velocity",
-        "Two points of one rigid link keep their distance, so the only way one can move "
-        "relative to the other is by turning about it: the relative velocity is ω × length, "
-        "at right angles to the line joining them. A fixed point has no velocity, so every "
-        "fixed point is the pole."),
-    "slider_line": (
-        "A slider on a guide",
-        "A slider can only move along its guide, so its velocity (and its acceleration) lie "
-        "along the guide: the line through the pole parallel to the guide."),
-    "sliding": (
-        "A pin in a slot",
-        "Where a pin slides in the slot of a turning lever, its velocity is the velocity of "
-        "the point of the lever under it (at right angles to the lever) plus the sliding "
-        "velocity along the slot."),
-    "centripetal": (
-        "Centripetal acceleration",
-        "A point turning about another point of the same link at angular velocity ω, at "
-        "radius r, accelerates towards it by ω²r = v²/r, where v is their relative velocity "
-        "from the velocity diagram. It is always known once the velocity diagram is drawn, "
-        "so it is drawn first: parallel to the link, pointing towards the centre it turns "
-        "about."),
-    "tangential": (
-        "Tangential acceleration",
-        "If the link's angular velocity is changing (angular acceleration α), the point "
-        "also accelerates by αr at right angles to the link. Its size is not known until "
-        "the diagram closes, so only its line is drawn; where two such lines cross fixes "
-        "the point, and the length of the tangential vector divided by r gives α."),
-    "coriolis": (
-        "Coriolis acceleration",
-        "When a point slides along a link that is itself turning, its acceleration relative "
-        "to the coincident point of the link has, besides the sliding acceleration along "
-        "the slot, a component 2ωv at right angles to the slot (ω the link's angular "
-        "velocity, v the sliding velocity from the velocity diagram). Its sense is that of "
-        "v turned through 90° in the sense of ω. It is known, so it is drawn as a known "
-        "vector, and the unknown sliding acceleration lies along the slot from its end."),
-    "image": (
-        "Velocity and acceleration images",
-        "The points of one rigid link make, on the velocity or the acceleration diagram, a "
-        "figure similar to the link itself (turned, and scaled by the diagram): once two "
-        "points of the link are on the diagram, any third point follows by copying the "
-        "shape."),
-}
 
 
 def quantity_words(expr: str) -> str:
@@ -159,77 +116,6 @@ def redact_answers(text: str) -> str:
 
 
 # ---------------------------------------------------------------- the document
-CSS = """
-@page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
-html { background: #ffffff; }
-body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 10.5pt;
-       line-height: 1.42; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
-h1, h2, h3, .figure-note, table, .formula, .explain h4, .badge, footer, .data dt {
-       font-family: "DejaVu Sans", Verdana, Arial, sans-serif; }
-h1 { font-size: 17pt; line-height: 1.2; margin: 0 0 2mm 0; }
-h2 { font-size: 13pt; margin: 7mm 0 2mm 0; border-bottom: 0.4mm solid #000;
-     break-after: avoid; page-break-after: avoid; }
-h3 { font-size: 11pt; margin: 4mm 0 1.5mm 0; break-after: avoid; page-break-after: avoid; }
-p { margin: 1.2mm 0 1.8mm 0; }
-.sub { font-size: 9.5pt; color: #333; margin: 0 0 3mm 0; }
-.badge { display: inline-block; border: 0.3mm solid #000; padding: 0 1.5mm; font-size: 8.5pt;
-         font-weight: bold; margin-right: 1.5mm; }
-.statement { border-left: 1mm solid #999; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
-.statement p { margin: 0.8mm 0; }
-table { border-collapse: collapse; font-size: 9pt; margin: 2mm 0 3mm 0;
-        break-inside: avoid; page-break-inside: avoid; }
-th, td { border-bottom: 0.2mm solid #999; padding: 0.8mm 2.2mm; text-align: left;
-         vertical-align: top; }
-th { border-bottom: 0.4mm solid #000; font-weight: bold; }
-table.data th { border-bottom: 0.2mm solid #999; }
-td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
-td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
-ol.steps { list-style: none; padding: 0; margin: 0; }
-li.step { margin: 0 0 4mm 0; break-inside: avoid; page-break-inside: avoid; }
-ol.steps.staged { display: grid; grid-template-columns: 1fr 1fr; column-gap: 5mm; }
-ol.steps.staged li.step { margin: 0 0 3mm 0; font-size: 9.5pt; }
-ol.steps.staged figure { margin: 1mm 0 0 0; }
-ol.steps.staged > aside.explain { grid-column: 1 / -1; margin: 0 0 3mm 0; }
-li.step .say { margin: 0.5mm 0; }
-li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
-               display: inline-block; min-width: 8mm; }
-.formula { font-size: 9.5pt; margin: 0.5mm 0 1mm 8mm; }
-.formula.symbolic { color: #333; }
-.explain { border: 0.3mm solid #000; padding: 1.5mm 3mm; margin: 2mm 0 3mm 8mm;
-           break-inside: avoid; page-break-inside: avoid; font-size: 9.5pt; }
-.explain h4 { margin: 0 0 0.8mm 0; font-size: 9.5pt; }
-.explain p { margin: 0; }
-figure { margin: 1.5mm 0 1mm 8mm; break-inside: avoid; page-break-inside: avoid; }
-figure svg { display: block; max-width: 100%; height: auto; }
-figure svg.drawing-area { max-width: none; }
-figcaption, .figure-note { font-size: 8.5pt; color: #333; }
-section.plate { break-inside: avoid; page-break-inside: avoid; margin-top: 4mm; }
-section.plate figure { margin: 0; }
-figure.centres { float: left; margin: 0 4mm 2mm 0; }
-section#centres { overflow: hidden; break-inside: avoid; }
-section.plate h3 { margin-top: 0; }
-.note { font-size: 9.5pt; }
-.slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
-.about p { font-size: 9pt; color: #222; margin: 0.5mm 0 1.5mm 0; }
-.about h3 { font-size: 9.5pt; margin-bottom: 0.5mm; }
-footer { font-size: 8pt; color: #333; margin-top: 6mm; border-top: 0.2mm solid #999;
-         padding-top: 1.5mm; }
-code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
-.ok { font-weight: normal; }
-.off { font-weight: bold; }
-@media print {
-  body { max-width: none; padding: 0; }
-}
-table.wide { width: 100%; }
-table.wide td.q { width: 30%; }
-@media screen {
-  body { padding: 8mm 6mm; }
-  section.plate { border-top: 0.3mm dashed #999; margin-top: 8mm; padding-top: 4mm;
-                  overflow-x: auto; }
-}
-""" + NOTATION_CSS + "\n"
-
-
 class _Doc:
     def __init__(self):
         self.parts: list[str] = []
@@ -386,44 +272,45 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
     doc.add("</section>\n")
 
 
-def _room(intro: str, page_width: float, level: str) -> float:
-    """Height (mm) taken on a plate's page by its heading, ``intro`` HTML and figure note."""
-    text = re.sub(r"<[^>]+>", "", intro)
-    paragraphs = [p for p in intro.split("</p>") if p.strip()]
-    chars_per_line = page_width / 1.85             # 10.5 pt serif, average advance
-    lines = sum(math.ceil(len(re.sub(r"<[^>]+>", "", p)) / chars_per_line)
-                for p in paragraphs) if text.strip() else 0
-    heading = 14.0 if level == "h2" else 9.0
-    return heading + 5.4 * lines + 3.0 * len(paragraphs) + 8.0 + 6.0   # note + slack
-
-
 def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
            intro: str = "", ident: str | None = None, level: str = "h3") -> None:
-    """A finished diagram on a page of its own, full size when it fits A4 either way round
-    below its heading and ``intro`` HTML, else reduced to fit."""
-    svg = figs.svg.get(name)
-    if svg is None:
+    """A finished diagram printed at its stated scale (full size: a key laid over a student's
+    drawing matches it), below its heading and ``intro`` HTML; :func:`figures` has chosen a
+    scale at which it fits the portrait page (stated here when it is not the first choice).
+    Only a drawing that no round scale makes fit is reduced, and then says so."""
+    d = figs.drawing.get(name)
+    if d is None or name not in figs.svg:
         return
+    from .figures import plate
+    from .svg import to_svg
+    svg = to_svg(plate(d))       # the page's heading names it
     w, h = svg_size(svg)
-    room_p = _room(intro, PORTRAIT[0], level)
-    if w <= PORTRAIT[0] and h <= PORTRAIT[1] - room_p:
-        cls, width, reduced = "plate portrait", w, None
+    if w <= PORTRAIT[0] + 0.05 and h <= PORTRAIT[1] + 0.05:
+        width, reduced = w, None
     else:
-        k = min(PORTRAIT[0] / w, (PORTRAIT[1] - room_p) / h)
-        cls, width, reduced = "plate portrait", w * k, k
-    doc.add(f'<section class="{cls}" id="{esc(ident or "plate-" + name)}">\n'
-            f"<{level}>{esc(heading)}</{level}>\n{intro}")
+        k = min(PORTRAIT[0] / w, PORTRAIT[1] / h)
+        width, reduced = w * k, k
+    head = f"<{level}>{esc(heading) if level == 'h2' else sym(heading)}</{level}>\n"
+    # the drawing (with its heading unless that opens a section) floats: when it does not
+    # fit what is left of the page, it goes to the next page and the text after it fills
+    # this one, instead of leaving the rest of the page empty
+    doc.add(f'<section class="plate portrait" id="{esc(ident or "plate-" + name)}">\n'
+            + (head + intro if level == "h2" else intro)
+            + '<div class="sheet">' + ("" if level == "h2" else head))
     doc.add(f'<figure class="diagram full">{inline_svg(svg, name, "figure", width, label)}'
             f"</figure>\n")
     scale_txt = figs.drawing[name].scale_statement if name in figs.drawing else ""
     if reduced is None:
         msg = (f"Full size: printed at 100 % this drawing is at its stated scale "
-               f"({scale_txt})." if scale_txt else "Full size.")
+               f"({scale_txt}), so it can be laid over a drawing made at that scale."
+               if scale_txt else "Full size.")
+        if name in figs.rescaled:
+            msg += (f" (Drawn at {scale_txt} rather than {figs.rescaled[name][0]} so that it "
+                    f"fits an A4 page at its scale.)")
     else:
         msg = (f"Reduced to {math.floor(reduced * 100)} % to fit the page: measure with its "
-               f"scale bar, "
-               f"not with the stated scale.")
-    doc.add(f'<p class="figure-note">{esc(msg)}</p>\n</section>\n')
+               f"scale bar, not with the stated scale.")
+    doc.add(f'<p class="figure-note">{esc(msg)}</p>\n</div>\n</section>\n')
 
 
 def _space(doc: _Doc, sol: Solution, figs: Figures, worksheet: bool) -> None:
@@ -487,10 +374,11 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
         intro += f" Scale <strong>{esc(scale.statement)}</strong>."
     doc.add(f"<p>{intro}</p>\n")
     if not worksheet:
-        doc.add(f'<p class="figure-note">Each step below shows the drawing so far, the new '
-                f"step drawn heavier and the earlier ones lighter, with the scale bar it is drawn "
-                f"to (the stage figures may be reduced: measure on the finished {what} "
-                f"diagram that follows them, printed full size when the page allows).</p>\n")
+        doc.add(f'<p class="figure-note">The figures below show the drawing so far, the '
+                f"new steps drawn heavier and the earlier ones lighter (construction lines "
+                f"with the point where they meet), reduced, with the scale bar they are drawn "
+                f"to: measure on the finished {what} diagram that follows them, printed full "
+                f"size.</p>\n")
     links = link_names(scene)
     vertices = list(sol.vertices.get(diagram, ()))
 
@@ -499,33 +387,60 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
         return join_vectors(name_bare_omegas(slot_names(text, scene), links), vertices)
 
     doc.add(f'<ol class="steps{"" if worksheet else " staged"}" id="{diagram}-steps">\n')
-    for step in sol.steps:
-        if step.diagram != diagram:
-            continue
-        for key in _explains_for(step):
-            _explain(doc, key)
-        k = stage_of(sol, step)
-        fig_ref = f" (stage {k})" if k is not None and not worksheet else ""
-        doc.add(f'<li class="step" id="{diagram}-step-{step.number}" '
-                f'data-step="{step.number}">\n'
-                f'<p class="say"><span class="num">{step.number}.</span>'
-                f"{sym(words(step.reason))}{esc(fig_ref)}</p>\n")
-        if worksheet:
+    if worksheet:
+        for step in sol.steps:
+            if step.diagram != diagram:
+                continue
+            for key in _explains_for(step):
+                _explain(doc, key)
+            doc.add(f'<li class="step" id="{diagram}-step-{step.number}" '
+                    f'data-step="{step.number}">\n<p class="say"><span class="num">'
+                    f"{step.number}.</span>{sym(words(step.reason))}</p>\n")
             if step.kind != "intersection":
                 doc.add(f'<p class="formula symbolic">{sym(words(step.formula))}</p>\n')
-        else:
-            f = formula_with_numbers(step, sol.scene)
-            if f:
-                doc.add(f'<p class="formula answer">{sym(words(f))}</p>\n')
+            doc.add("</li>\n")
+    else:
+        for cell in cells(sol, diagram):
+            for step in cell:
+                for key in _explains_for(step):
+                    _explain(doc, key)
+            k = cell_stage(sol, cell)
             name = f"{diagram}-{k}" if k is not None else None
-            if name and name in figs.svg:
+            nums = [s.number for s in cell]
+            last = k is not None and k == stage_of(sol, [s for s in sol.steps
+                                                       if s.diagram == diagram
+                                                       and s.kind in DRAWABLE][-1])
+            fig, narrow = "", False
+            if last:
+                fig = (f'<p class="figure-note">This completes the {what} diagram: the '
+                       f"finished diagram is printed full size.</p>\n")
+            elif name and name in figs.svg:
                 svg = figs.svg[name]
                 w, h = svg_size(svg)
-                doc.add(f'<figure class="diagram stage">'
-                        f"{inline_svg(svg, name, 'figure', stage_width(w, h), f'{what} diagram, stage {k}')}"
-                        f"<figcaption>Stage {k} of the {what} diagram"
-                        f"</figcaption></figure>\n")
-        doc.add("</li>\n")
+                width = stage_width(w, h)
+                narrow = width <= NARROW_STAGE
+                drawn = [s.number for s in cell if s.kind in DRAWABLE]
+                steps = (f"step {drawn[0]}" if len(drawn) == 1 else
+                         f"steps {', '.join(map(str, drawn[:-1]))} and {drawn[-1]}")
+                fig = (f'<figure class="diagram stage{" narrow" if narrow else ""}">'
+                       f"{inline_svg(svg, name, 'figure', width, f'{what} diagram, {steps}')}"
+                       f"<figcaption>The {what} diagram after {steps}"
+                       f"</figcaption></figure>\n")
+            doc.add(f'<li class="step" id="{diagram}-step-{nums[0]}" data-step="'
+                    f'{" ".join(map(str, nums))}">\n')
+            if narrow:           # beside the text, which it would otherwise follow
+                doc.add(fig)
+            for step in cell:
+                anchor = (f' id="{diagram}-step-{step.number}"' if step.number != nums[0]
+                          else "")
+                doc.add(f'<p class="say"{anchor}><span class="num">{step.number}.</span>'
+                        f"{sym(words(step.reason))}</p>\n")
+                f = formula_with_numbers(step, sol.scene)
+                if f:
+                    doc.add(f'<p class="formula answer">{sym(words(f))}</p>\n')
+            if not narrow:
+                doc.add(fig)
+            doc.add("</li>\n")
     doc.add("</ol>\n")
     if sol.min_intersection_angle_deg is not None and not worksheet:
         angles = [s.angle_deg for s in sol.steps if s.diagram == diagram and s.angle_deg]
@@ -539,7 +454,8 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
     if worksheet:
         _area(doc, sol, figs, diagram)
     else:
-        _plate(doc, figs, diagram, f"The finished {what} diagram",
+        title = figs.drawing[diagram].title if diagram in figs.drawing else what
+        _plate(doc, figs, diagram, f"The finished {title[:1].lower()}{title[1:]}",
                f"Finished {what} diagram")
 
 
@@ -594,6 +510,9 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     if k != 1.0:
         note += (f" (The answer key is drawn at {lay.scale.statement}, which needs a sheet "
                  f"larger than A4.)")
+    elif diagram in figs.rescaled:
+        note += (f" ({scale.statement} rather than {figs.rescaled[diagram][0]}, at which the "
+                 f"diagram would not fit an A4 page.)")
     doc.add(f'<section class="{cls}" id="plate-area-{diagram}">\n'
             f"<h3>Draw the {what} diagram here</h3>\n"
             f'<figure class="area">{svg}</figure>\n'
@@ -776,7 +695,7 @@ def _blanks(doc: _Doc, sol: Solution, file: str) -> None:
                     f'<td class="blank"></td></tr>\n')
         doc.add("</tbody>\n</table>\n")
         example = " ".join(f"{textbook_name(q)}=…" for q in qs[:3])
-        doc.add(f'<p class="note">Check your values: <code>polygons check {esc(file)} '
+        doc.add(f'<p class="note screen-only">Check your values: <code>polygons check {esc(file)} '
                 f"--measured {esc(example)}</code> (numbers in the units above, or write the "
                 f"unit: <code>{esc(textbook_name(qs[0]))}='…'</code> with e.g. "
                 f"<code>mm/s</code>; add CW or CCW after an ω or α).</p>\n")
@@ -790,7 +709,8 @@ def _footer(doc: _Doc, sol: Solution, worksheet: bool, file: str) -> None:
     except Exception:   # pragma: no cover - not installed
         v = ""
     cmd = f"polygons handout {file}" + (" --worksheet" if worksheet else "")
-    doc.add(f"<footer>Generated by polygons {esc(v)} from <code>{esc(file)}</code> "
+    tag = '<footer class="screen-only">' if worksheet else "<footer>"
+    doc.add(f"{tag}Generated by polygons {esc(v)} from <code>{esc(file)}</code> "
             f"(regenerate: <code>{esc(cmd)} -o FILE.html</code>)."
             + ("" if worksheet else " The answer key's worksheet: add --worksheet.")
             + "</footer>\n")

@@ -106,7 +106,7 @@ def grid_svg(width_mm: float, height_mm: float, scale_statement: str, per_cm_dis
            f'viewBox="{-pad:g} 0 {W:g} {H:g}" width="{W:g}mm" height="{H:g}mm" role="img" '
            f'aria-label="{esc(title)}">',
            f"<title>{esc(title)}</title>",
-           f'<rect x="0" y="0" width="{W:g}" height="{height_mm:g}" fill="#ffffff" '
+           f'<rect x="0" y="0" width="{width_mm:g}" height="{height_mm:g}" fill="#ffffff" '
            f'stroke="#000000" stroke-width="0.3"/>']
     minor, major = [], []
     x = 5.0
@@ -128,7 +128,14 @@ def grid_svg(width_mm: float, height_mm: float, scale_statement: str, per_cm_dis
         out.append(f'<circle cx="{px:.1f}" cy="{py:.1f}" r="1.2" fill="none" stroke="#000000" '
                    f'stroke-width="0.3"/>')
         if pole_label:
-            out.append(f'<text x="{px + 2.2:.1f}" y="{py + 4.2:.1f}" font-size="3" '
+            # beside the ring, on whichever side and above or below it the whole note fits
+            # inside the area (it is clipped at the area's edge otherwise)
+            from .text import width as text_width
+            w = text_width(pole_label, 3.0)
+            right = px + 2.2 + w <= width_mm - 1.0 or px - 2.2 - w < 1.0
+            x, anchor = (px + 2.2, "start") if right else (px - 2.2, "end")
+            y = py + 4.2 if py + 4.2 <= height_mm - 1.0 else py - 2.2
+            out.append(f'<text x="{x:.1f}" y="{y:.1f}" font-size="3" text-anchor="{anchor}" '
                        f'font-family="{FONT_FAMILY}" fill="#000000">{esc(pole_label)}</text>')
     # scale bar: whole centimetres under the area
     n = int(max(2, min(10, math.floor((width_mm - 60.0) / 10.0))))

@@ -5,6 +5,7 @@ Works in mm with y up (the model's convention); no svgwrite here.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from .labels import Box
 from .model import Arrow, Drawing, Group, Segment, Text
@@ -52,6 +53,9 @@ def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE,
     k = 1
     while any(width(v, size) + 2.0 > 10.0 * k for v in vals) and k < n:
         k += 1
+    if n % k and n > k:     # end on a labelled centimetre: the last number has room too
+        n -= n % k
+        vals = vals[:n + 1]
     items = [Segment((0.0, 0.0), (10.0 * n, 0.0), "scalebar", cls="scale-bar-line")]
     tick_y = 1.5
     for i in range(n + 1):
@@ -60,7 +64,8 @@ def scale_bar(scale: Scale, max_len_mm: float, size: float = SCALE_SIZE,
         if i % k == 0 or i == n:
             items.append(Text(10.0 * i, tick_y + 0.8, vals[i], size, "middle",
                               role="scale"))
-    unit_x = 10.0 * n + 2.0
+    # the unit after the last number, clear of it however large the numbers are set
+    unit_x = 10.0 * n + max(2.0, width(vals[n], size) / 2.0 + 1.0)
     items.append(Text(unit_x, -0.4, display(scale.unit), size, role="scale"))
     text = f"Scale {scale.statement}"
     sx = unit_x + width(display(scale.unit), size) + 4.0
@@ -176,3 +181,115 @@ def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: st
     meta = dict(meta)
     meta["content_offset"] = (dx, dy)
     return Drawing(name, kind, stage, W, H, title, desc, tuple(groups), scale_statement, meta)
+
+
+def extent(items) -> Box | None:
+    """The box (mm) the drawn ``items`` cover (recursively, text by its typeset box)."""
+    from .labels import text_box
+    from .model import Circle, Polyline
+    xs: list[float] = []
+    ys: list[float] = []
+
+    def walk(its):
+        for it in its:
+            if isinstance(it, Segment):
+                xs.extend((it.a[0], it.b[0]))
+                ys.extend((it.a[1], it.b[1]))
+            elif isinstance(it, Polyline):
+                xs.extend(p[0] for p in it.points)
+                ys.extend(p[1] for p in it.points)
+            elif isinstance(it, Circle):
+                xs.extend((it.centre[0] - it.r, it.centre[0] + it.r))
+                ys.extend((it.centre[1] - it.r, it.centre[1] + it.r))
+            elif isinstance(it, Arrow):
+                sx, sy = getattr(it, "shift", (0.0, 0.0)) or (0.0, 0.0)
+                pts = [*it.drawn, *((p[0] + sx, p[1] + sy) for p in it.head)]
+                xs.extend(p[0] for p in pts)
+                ys.extend(p[1] for p in pts)
+            elif isinstance(it, Text):
+                b = text_box(it.x, it.baseline, it.text, it.size, it.anchor)
+                if it.weight == "bold":          # bold is about a tenth wider than regular
+                    b = type(b)(b.x0, b.y0, b.x1 + 0.1 * (b.x1 - b.x0), b.y1)
+                xs.extend((b.x0, b.x1))
+                ys.extend((b.y0, b.y1))
+            elif hasattr(it, "items"):
+                walk(it.items)
+    walk(items)
+    return Box(min(xs), min(ys), max(xs), max(ys)) if xs else None
+
+
+#: groups :func:`compose` puts around the drawing itself
+FURNITURE = ("heading", "key", "legend", "scale-bar", "caption")
+
+
+def restack(d: Drawing, max_width: float) -> Drawing:
+    """``d`` (made by :func:`compose`) no wider than ``max_width`` mm if moving its key and
+    legend from beside the drawing to below it achieves that (a portrait page's width); the
+    drawing itself is not touched: same scale, same positions relative to each other."""
+    if d.width <= max_width + 1e-9:
+        return d
+    by = {g.ident: g for g in d.groups if g.ident in FURNITURE}
+    content = [g for g in d.groups if g.ident not in FURNITURE]
+    if not content or not ("key" in by or "legend" in by):
+        return d
+    old = extent(d.groups)
+    drop = 0.0
+    head = by.get("heading")
+    hb = extent(head.items) if head is not None else None
+    if hb is not None and hb.x1 > max_width - MARGIN:      # wrap the title and subtitle
+        items, drop = [], 0.0
+        texts = [it for it in head.items if isinstance(it, Text)]
+        y = texts[0].baseline if texts else 0.0
+        for i, it in enumerate(texts):
+            if i:
+                y -= LINE * it.size
+            lines = wrap(it.text, max_width - 2 * MARGIN - (it.x - MARGIN), it.size)
+            for j, ln in enumerate(lines):
+                if j:
+                    y -= LINE * it.size
+                items.append(replace(it, text=ln, baseline=y))
+        drop = y - texts[-1].baseline if texts else 0.0
+        by["heading"] = replace(head, items=tuple(items))
+        content = [g.moved(0.0, drop) for g in content]
+        by = {k: (g if k == "heading" else g.moved(0.0, drop)) for k, g in by.items()}
+    cb = extent(content)
+    moved: dict[str, Group] = {}
+    # with the heading wrapped, is the key beside the drawing narrow enough?
+    if extent([*content, *by.values()]).x1 + MARGIN > max_width + 1e-9:
+        top = cb.y0 - 3.0
+        x = MARGIN
+        bottom = top
+        for name in ("key", "legend"):
+            g = by.get(name)
+            if g is None:
+                continue
+            b = extent(g.items)
+            w = b.x1 - b.x0
+            if x > MARGIN and x + w > max_width - MARGIN:     # no room beside the key: below it
+                x, top = MARGIN, bottom - LINE * LEGEND_SIZE
+            moved[name] = g.moved(x - b.x0, top - b.y1)
+            bottom = min(bottom, top - (b.y1 - b.y0))
+            x += w + GAP
+        below = bottom - 4.0
+        for name in ("scale-bar", "caption"):
+            g = by.get(name)
+            if g is None:
+                continue
+            b = extent(g.items)
+            moved[name] = g.moved(0.0, below - b.y1)
+            below -= (b.y1 - b.y0) + 3.0
+    content_iter = iter(content)
+    groups = [moved.get(g.ident, by[g.ident]) if g.ident in FURNITURE else next(content_iter)
+              for g in d.groups]
+    new = extent(groups)
+    lift = old.y0 - new.y0                     # the same margin under the lowest item
+    groups = [g.moved(0.0, lift) for g in groups]
+    width = round(max(new.x1 + (d.width - old.x1), cb.x1 + MARGIN), 1)
+    if width >= d.width:
+        return d
+    height = round(new.y1 + lift + (d.height - old.y1), 1)
+    meta = dict(d.meta)
+    if "content_offset" in meta:
+        dx, dy = meta["content_offset"]
+        meta["content_offset"] = (dx, dy + lift + drop)
+    return replace(d, width=width, height=height, groups=tuple(groups), meta=meta)

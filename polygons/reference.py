@@ -60,6 +60,30 @@ def _type_words(k: Key) -> str:
 _EXAMPLE_NAME = {"<LABEL>": "C", "<LINK>": "AB"}
 
 
+def example_value(k: Key) -> str:
+    """``k``'s example as TOML writes the value: a table whose keys declare their example
+    as the bare words (``C``, ``300 mm``) gets them quoted (``"C"``, ``"300 mm"``), so that
+    every line of the reference copied into a scene parses (examples already TOML stay)."""
+    import json
+    import tomllib
+    try:
+        tomllib.loads(f"x = {k.example}")
+        return k.example
+    except tomllib.TOMLDecodeError:
+        return json.dumps(k.example, ensure_ascii=False)
+
+
+def _example(k: Key):
+    """``k``'s example as the value TOML reads."""
+    import tomllib
+    return tomllib.loads(f"x = {example_value(k)}")["x"]
+
+
+def example_line(k: Key) -> str:
+    """The reference's example for ``k``: ``name = value``, one line of TOML."""
+    return f"{_EXAMPLE_NAME.get(k.name, k.name)} = {example_value(k)}"
+
+
 def _toml(value) -> str:
     """A default as it is written in a scene: true, "3 %", ["velocity", "acceleration"]."""
     import json
@@ -119,9 +143,9 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
             name = f"`{k.name}`" + (" (required)" if k.required else "")
             default = "" if k.default is None else f"`{_toml(k.default)}`"
             doc = k.doc.replace("|", "\\|")
-            ex = k.example.replace("|", "\\|")
+            ex = example_line(k).replace("|", "\\|") if k.example else ""
             lines.append(f"| {name} | {_type_words(k)} | {default} | {k.sign} | "
-                         f"`{_EXAMPLE_NAME.get(k.name, k.name)} = {ex}` | {doc} |")
+                         f"{f'`{ex}`' if ex else ''} | {doc} |")
         lines.append("")
     lines += ["## Units", "", "Accepted spellings by dimension (SI unit inside in brackets):",
               ""]
@@ -184,7 +208,10 @@ def _key_schema(k: Key) -> dict:
     elif k.type == "array":
         d |= {"anyOf": [{"type": "array", "items": {"type": "string"}}, {"type": "string"}]}
     elif k.type in ("string", "scale"):
-        d["type"] = "string"
+        # a text key whose example is a number (a mass's centre: 0.5 of the link, or
+        # "90 mm") is read as either
+        d |= ({"anyOf": [{"type": "number"}, {"type": "string"}]}
+              if k.example and isinstance(_example(k), (int, float)) else {"type": "string"})
     elif k.type == "bool":
         d["type"] = "boolean"
     elif k.type == "integer":
@@ -196,7 +223,7 @@ def _key_schema(k: Key) -> dict:
     if k.default is not None:
         d["default"] = k.default
     if k.example:
-        d["examples"] = [k.example]
+        d["examples"] = [_example(k)]
     return d
 
 

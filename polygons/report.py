@@ -251,11 +251,12 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
         lines.append(f"{'answer':<34} {'unit':<8} {'polygons':>12} {'tutorial':>10} {'diff %':>8}  note")
         for c in checks:
             a = c.answer
-            if a.tutorial is None:
-                continue
-            note = "SLIP in the tutorial (see reference)" if a.slip else (
-                "within drawing tolerance" if c.within else
-                f"outside ±{a.tolerance * 100:g}%") + undefined_note(a.tutorial, c.diff_pct)
+            if a.tutorial is None:       # asked, with no printed value: ours, and the exact
+                note = f"exact {_g(a.exact, 6)}" if a.exact is not None else "asked"
+            else:
+                note = "SLIP in the tutorial (see reference)" if a.slip else (
+                    "within drawing tolerance" if c.within else
+                    f"outside ±{a.tolerance * 100:g}%") + undefined_note(a.tutorial, c.diff_pct)
             lines.append(f"{a.desc[:34]:<34} {a.unit:<8} {_g(c.compared, 6):>12} "
                          f"{_g(a.tutorial, 6):>10} "
                          f"{_pct(c.diff_pct):>8}  {note}")

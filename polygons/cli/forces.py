@@ -36,9 +36,11 @@ def register(sub) -> None:
 
 def run(args) -> int:
     scene = load_scene(args.scene)
-    if not has_forces(scene):
-        raise SceneError("this scene has no [masses], [forces], [torques] or [springs]: "
-                            "there is nothing for a force analysis to do", file=scene.file)
+    if not has_forces(scene) and scene.loads.efficiency is None \
+            and scene.loads.flywheel is None:
+        raise SceneError("this scene has no [masses], [forces], [torques], [springs], "
+                         "[efficiency] or [flywheel]: there is nothing for a force analysis "
+                         "to do", file=scene.file)
     an = analyse(scene)
     paths = []
     if args.svg:
@@ -209,10 +211,59 @@ def _machine(an: Analysis, st: State) -> list[dict]:
     eff = model.parsed.efficiency
     if eff is not None:
         add("efficiency", "efficiency η", eff.eta, "-")
-        if model.mode == "kinetostatic":
+        if model.mode == "kinetostatic" and model.parsed.active:
             add("input_with_efficiency", "input effort with the losses (T_in/η when driving)",
                 machine.input_with_efficiency(model, st), _effort_unit(an))
+        _outputs(an, st, add)
     return out
+
+
+def output_bodies(model) -> list[str]:
+    """The mechanism's outputs, for the machine results an efficiency gives unasked: the
+    bodies carrying a stated torque or force (the load), else the bodies pivoted on the frame
+    and the slider blocks — every one but the driver's."""
+    drv = model.parsed.driver_body
+    loaded = [x.body for x in (*model.parsed.torques, *model.parsed.forces)]
+    if not loaded:
+        loaded = [m for j in model.parsed.joints if j.ground for m in j.members]
+        loaded += [n for n, b in model.bodies.items() if b.kind == "block"]
+    out: list[str] = []
+    for name in loaded:
+        if name != drv and name in model.bodies and name not in out:
+            out.append(name)
+    return out
+
+
+def _outputs(an: Analysis, st: State, add) -> None:
+    """Velocity ratio, mechanical advantage and the output effort that the [efficiency]
+    table's input gives, for each output body (:func:`output_bodies`)."""
+    model = an.model
+    eff = model.parsed.efficiency
+    crank = isinstance(model.scene.driver, Crank)
+    for name in output_bodies(model):
+        out = model.bodies[name]
+        try:
+            vr = machine.velocity_ratio(model, st, out)
+        except SceneError:          # the output is at rest at this instant
+            add(f"velocity_ratio_{name}", f"velocity ratio: {name} is at rest at this instant",
+                None, "-")
+            continue
+        block = out.kind == "block"
+        drv = model.scene.driver
+        rate_in = f"ω_{drv.link}" if crank else f"v_{drv.point}"
+        rate_out = f"v_{name}" if block else f"ω_{name}"
+        vr_unit = "-" if crank != block else ("1/m" if block else "m")
+        add(f"velocity_ratio_{name}", f"velocity ratio {rate_in}/{rate_out}", vr, vr_unit)
+        if vr_unit == "-" and not block:
+            add(f"mechanical_advantage_{name}", f"mechanical advantage η {rate_in}/{rate_out} "
+                f"(output torque per input torque)", machine.mechanical_advantage(model, st, out),
+                "-")
+        if eff.input_effort is not None:
+            what = "force on" if block else "torque on"
+            add(f"output_{'force' if block else 'torque'}_{name}",
+                f"output {what} {name} from the input {_g(eff.input_effort)} {_effort_unit(an)}"
+                f" with the losses (η × input × ratio)", machine.output_effort(model, st, out),
+                "N" if block else "N m")
 
 
 def to_dict(an: Analysis) -> dict:
@@ -413,7 +464,10 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
         out.append(f"  section {lab} of {link} (on the part from {model.bodies[link].a}): "
                    f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = {m:.6g} N m (CCW)")
     for m in (_machine(an, st) if (model.parsed.flywheel or model.parsed.efficiency) else ()):
-        out.append(f"  {m['words']}: {m['value']:.8g} {m['unit']}")
+        if m["value"] is None:
+            out.append(f"  {m['words']}")
+        else:
+            out.append(f"  {m['words']}: {m['value']:.8g} {m['unit']}")
     out.append(f"  equations: {ne.equations}, residual {ne.residual:.1e}")
     for w in st.warnings:
         out.append(f"  warning: {w}")
