@@ -1,7 +1,8 @@
-import sys
-from pathlib import Path
-
+import json
 import os
+import sys
+from functools import cache
+from pathlib import Path
 
 import pytest
 from hypothesis import settings
@@ -9,7 +10,13 @@ from hypothesis import settings
 
 ROOT = Path(__file__).resolve().parents[1]
 CASES = ROOT / "cases"
-REFERENCE = ROOT.parent / "shared" / "reference" / "cases.json"
+#: the project's copy of the reference answers (exact values, tutorial answers, slips): see
+#: tests/reference/README.md for where it comes from.  Always present: a fresh clone checks
+#: every answer with nothing beside it.
+REFERENCE = Path(__file__).resolve().parent / "reference" / "cases.json"
+#: the steering side's reference, beside the repository on CI and developers' machines: only an
+#: extra cross-check (tests/test_cases.py) that the copy above is still the same, where present.
+SHARED_REFERENCE = ROOT.parent / "shared" / "reference" / "cases.json"
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -19,9 +26,48 @@ settings.register_profile("ci", derandomize=True, database=None)
 if os.environ.get("CI"):
     settings.load_profile("ci")
 
+#: ``POLYGONS_DEEP=1`` runs every property test at its full depth (the number written in its
+#: settings); by default each runs a quarter of it (at least 10 examples), which keeps the
+#: suite within its time budget.  CI and developers' everyday runs use the default; run deep
+#: before a release or after touching a solver.
+DEEP = os.environ.get("POLYGONS_DEEP", "") not in ("", "0")
+
+
+def examples(full: int) -> int:
+    """The number of hypothesis examples to run for a property test whose full depth is ``full``."""
+    return full if DEEP else max(10, full // 4)
+
 
 def case_files():
     return sorted(CASES.glob("*.toml"))
+
+
+@cache
+def _reference(path: Path) -> dict:
+    return {c["id"]: c for c in json.loads(path.read_text(encoding="utf-8"))["cases"]}
+
+
+def reference_cases() -> dict:
+    """The project reference's records by case id (``S001-WE2`` …)."""
+    return _reference(REFERENCE)
+
+
+def shared_reference_cases() -> dict | None:
+    """The shared reference's records by case id, or None where it is not beside the repository."""
+    return _reference(SHARED_REFERENCE) if SHARED_REFERENCE.is_file() else None
+
+
+def pytest_cmdline_main(config):
+    """The whole suite (``pytest`` with no path: the README's test command) runs on every core
+    when pytest-xdist is installed (it is in the test extras); ``-n N`` chooses, ``-n 0`` runs in
+    one process, and a run of chosen files or tests stays in one process unless ``-n`` is given."""
+    if (config.pluginmanager.hasplugin("xdist") and not hasattr(config, "workerinput")
+            and getattr(config.option, "numprocesses", 0) is None
+            and not getattr(config.option, "dist", "no") != "no"
+            and config.args_source == pytest.Config.ArgsSource.TESTPATHS
+            and not config.getoption("collectonly")
+            and not config.getoption("usepdb", False)):
+        config.option.numprocesses = "auto"
 
 
 @pytest.fixture

@@ -1,7 +1,8 @@
 """Checks of tests/analytic.py (the independent closed-form oracle).
 
-1. Against the exact answers in /work/shared/reference/cases.json (produced by
-   a separate reference implementation): every kinematic case, 1e-9 relative.
+1. Against the exact answers of the project's reference, tests/reference/cases.json (a copy
+   of the steering side's reference, produced by a separate reference implementation: see
+   tests/reference/README.md): every kinematic case, 1e-9 relative.
 2. Against central finite differences of the position solution for random
    geometries (~1e-6 relative), plus the relative-velocity/acceleration
    identities that a velocity/acceleration polygon must satisfy.
@@ -10,7 +11,6 @@
 
 from __future__ import annotations
 
-import json
 import math
 import sys
 from pathlib import Path
@@ -21,15 +21,9 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import analytic as an  # noqa: E402
 
-CASES_JSON = Path(__file__).resolve().parents[2] / "shared" / "reference" / "cases.json"
-if not CASES_JSON.is_file():
-    pytest.skip(
-        f"reference answers not found at {CASES_JSON} (the shared reference "
-        "directory is not mounted); analytic-oracle tests skipped",
-        allow_module_level=True,
-    )
+from conftest import REFERENCE as CASES_JSON, reference_cases  # noqa: E402
 
-CASES = {c["id"]: c for c in json.loads(CASES_JSON.read_text())["cases"]}
+CASES = reference_cases()
 
 REL = 1e-9  # relative tolerance against cases.json
 ATOL_POINT = 1e-9  # cases.json stores points rounded to 9 decimals
