@@ -26,15 +26,15 @@ settings.register_profile("ci", derandomize=True, database=None)
 if os.environ.get("CI"):
     settings.load_profile("ci")
 
-#: ``POLYGONS_DEEP=1`` runs every property test at its full depth (the number written in its
-#: settings); by default each runs a quarter of it (at least 10 examples), which keeps the
-#: suite within its time budget.  CI and developers' everyday runs use the default; run deep
-#: before a release or after touching a solver.
-DEEP = os.environ.get("POLYGONS_DEEP", "") not in ("", "0")
+#: Property tests (hypothesis) run at full depth (the number their settings pass to ``examples``)
+#: on CI, whose examples are the same every run, and with ``POLYGONS_DEEP=1``; an everyday run
+#: draws a quarter as many (at least 10), new ones each run, to keep the suite within its time
+#: budget.  ``POLYGONS_DEEP=0`` makes CI shallow too.
+DEEP = os.environ.get("POLYGONS_DEEP", "1" if os.environ.get("CI") else "") not in ("", "0")
 
 
 def examples(full: int) -> int:
-    """The number of hypothesis examples to run for a property test whose full depth is ``full``."""
+    """The number of hypothesis examples for a property test whose full depth is ``full``."""
     return full if DEEP else max(10, full // 4)
 
 
@@ -57,6 +57,7 @@ def shared_reference_cases() -> dict | None:
     return _reference(SHARED_REFERENCE) if SHARED_REFERENCE.is_file() else None
 
 
+@pytest.hookimpl(tryfirst=True)
 def pytest_cmdline_main(config):
     """The whole suite (``pytest`` with no path: the README's test command) runs on every core
     when pytest-xdist is installed (it is in the test extras); ``-n N`` chooses, ``-n 0`` runs in
