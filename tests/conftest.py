@@ -60,15 +60,16 @@ def shared_reference_cases() -> dict | None:
 @pytest.hookimpl(tryfirst=True)
 def pytest_cmdline_main(config):
     """The whole suite (``pytest`` with no path: the README's test command) runs on every core
-    when pytest-xdist is installed (it is in the test extras); ``-n N`` chooses, ``-n 0`` runs in
-    one process, and a run of chosen files or tests stays in one process unless ``-n`` is given."""
+    when pytest-xdist is installed (it is in the test extras), each idle worker taking tests
+    from a busy one (``worksteal``: a few tests take seconds, most milliseconds).  ``-n N``
+    chooses, ``-n 0`` runs in one process; a run of chosen files or tests stays in one process
+    unless ``-n`` is given.  (Before xdist's own hook, which turns ``-n`` into workers.)"""
     if (config.pluginmanager.hasplugin("xdist") and not hasattr(config, "workerinput")
-            and getattr(config.option, "numprocesses", 0) is None
-            and not getattr(config.option, "dist", "no") != "no"
+            and config.option.numprocesses is None and config.option.dist == "no"
             and config.args_source == pytest.Config.ArgsSource.TESTPATHS
-            and not config.getoption("collectonly")
-            and not config.getoption("usepdb", False)):
+            and not config.getoption("collectonly") and not config.getoption("usepdb")):
         config.option.numprocesses = "auto"
+        config.option.dist = "worksteal"
 
 
 @pytest.fixture
