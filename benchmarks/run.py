@@ -279,7 +279,7 @@ def bench_mechanism(title, kind, path, sizes, avail, quick, log):
     t0 = time.perf_counter()
     res = drawing.emulate(scene, xs, trials=trials, seed=7)
     t_em = time.perf_counter() - t0
-    summ = drawing.summary(res, MIN_ANGLE)
+    summ = {q.display: v for q, v in drawing.summary(res, MIN_ANGLE).items()}
     worst_med = max(summ.items(), key=lambda kv: kv[1]["median"])
     worst_p95 = max(summ.items(), key=lambda kv: kv[1]["p95"])
     rows.append(dict(method="drawing board (student)", n=1,

@@ -42,8 +42,8 @@ def body_forces(an: Analysis, st: State, body: str) -> tuple[list[Vector], list[
     sol, ne = st.sol, st.ne
     vecs: list[Vector] = []
     couples: list[Couple] = []
-    seen = {model.scene.slots[s.pin].coincident for s in model.slots
-            if s.lever == body and s.pin in model.scene.slots}   # reported under the pin
+    seen = {s.coincident for s in model.slots
+            if s.lever == body and s.coincident is not None}   # reported under the pin
     for lab in b.labels + tuple(s.pin for s in model.slots if s.lever == body):
         if lab in seen:
             continue
@@ -71,7 +71,7 @@ def body_forces(an: Analysis, st: State, body: str) -> tuple[list[Vector], list[
     drv = model.scene.driver
     if body == model.driver_body and ne.effort is not None:
         if b.kind == "block":
-            e = np.array(model.scene.sliders[body].direction)
+            e = np.array(model.scene.model.guide[body].line.direction)
             vecs.append(Vector("input force", _pos(sol, body), ne.effort * e, "input"))
         else:
             couples.append(Couple("input torque", _pos(sol, drv.pivot), ne.effort))
@@ -125,7 +125,7 @@ def drawings(an: Analysis):
             items = []
             if body.kind == "block":
                 c = P(pts[body.a])
-                e = np.array(model.scene.sliders[body.a].direction)
+                e = np.array(model.scene.model.guide[body.a].line.direction)
                 n = np.array([-e[1], e[0]])
                 corners = [np.array(c) + sx * 6 * e + sy * 4 * n
                            for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]

@@ -337,18 +337,23 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
     for name, ln in scene.links.items():
         if ln.length is not None:
             rows.append((f"link {name}", _fmt_len(ln.length)))
-    for pin, slot in scene.slots.items():
-        txt = (f"{pin} slides in the slot of the lever {slot.lever}, which turns about "
-               f"{slot.pivot}; {slot.coincident} is the point of the lever under {pin}")
-        if slot.far and slot.far_length:
-            txt += f"; {slot.pivot}{slot.far} = {_fmt_len(slot.far_length)}"
-        rows.append((f"slot {slot.lever}", txt))
-    for lab, g in scene.sliders.items():
-        txt = (f"slides on a fixed guide through ({_g(g.through[0] * 1000)}, "
-               f"{_g(g.through[1] * 1000)}) mm at {_g(math.degrees(g.angle))}°")
-        if g.pin:
-            txt += (f"; it carries a slot at {_g(math.degrees(g.slot_angle))}° in which "
-                    f"{g.pin} slides")
+    model = scene.model
+    for pin, slot in model.slot.items():
+        lever, pivot = slot.carrier, slot.line.origin
+        txt = (f"{pin} slides in the slot of the lever {lever}, which turns about "
+               f"{pivot}; {slot.coincident} is the point of the lever under {pin}")
+        far_length = model.body(lever).length
+        if slot.far and far_length:
+            txt += f"; {pivot}{slot.far} = {_fmt_len(far_length)}"
+        rows.append((f"slot {lever}", txt))
+    for lab, g in model.guide.items():
+        through, angle = g.line.through, g.line.angle
+        txt = (f"slides on a fixed guide through ({_g(through[0] * 1000)}, "
+               f"{_g(through[1] * 1000)}) mm at {_g(math.degrees(angle))}°")
+        for yoke in model.yoke_slots():
+            if yoke.carrier == lab:
+                txt += (f"; it carries a slot at {_g(math.degrees(yoke.line.angle))}° in "
+                        f"which {yoke.at} slides")
         rows.append((f"slider {lab}", txt))
     for lab, bp in scene.points.items():
         if bp.along is not None:
@@ -689,7 +694,7 @@ def _comparison(doc: _Doc, sol: Solution) -> None:
             a = c.answer
             ours = num(c.compared, 5)
             if a.sense and a.mode == "abs":
-                ours_sense = sense(c.ours) if a.quantity.startswith(("omega", "alpha")) else ""
+                ours_sense = sense(c.ours) if a.q.fn in ("omega", "alpha") else ""
                 ours += f" {ours_sense}" if ours_sense else ""
             tut = f"{a.tutorial:g}" + (f" {esc(a.sense)}" if a.sense else "")
             if c.diff_pct is None:
@@ -748,7 +753,7 @@ def worksheet_questions(sol: Solution) -> list[str]:
     for a in sol.scene.answers:
         if a.tutorial is None or a.quantity in seen:
             continue
-        fn = a.quantity.split("(")[0]
+        fn = a.q.fn
         if fn in ("v", "a", "an", "at", "omega", "alpha", "cor", "vs", "as"):
             seen.append(a.quantity)
     return seen

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from polygons.evaluate import link_ends
+from polygons.scene import Quantity
 from polygons.units import UNITS
 
 from .scale import DiagramError
@@ -164,7 +165,6 @@ class Scaled:
         return abs(self.tutorial - self.scaled) <= self.tolerance * base + self.resolution
 
 
-_CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?\)\s*$")
 
 
 def _unit_factor(unit: str) -> float:
@@ -173,12 +173,12 @@ def _unit_factor(unit: str) -> float:
     return UNITS[unit][1]
 
 
-def read_quantity(sol, readings: dict, expr: str, ruler: float | None = RULER_MM):
-    """(SI value, SI resolution, how) of ``expr`` read off the drawings, or None."""
-    m = _CALL.match(expr)
-    if not m:
+def read_quantity(sol, readings: dict, q: Quantity, ruler: float | None = RULER_MM):
+    """(SI value, SI resolution, how) of the quantity ``q`` (typed at load: an answer's
+    ``q``) read off the drawings, or None."""
+    if len(q.args) > 2:
         return None
-    fn, P, Q = m.groups()
+    fn, P, Q = q.fn, q.args[0], (q.args[1] if len(q.args) > 1 else None)
     scene = sol.scene
     V = sol.vertex_of
     vel, acc, sp = (readings.get(k) for k in ("velocity", "acceleration", "space"))
@@ -276,11 +276,11 @@ def read_quantity(sol, readings: dict, expr: str, ruler: float | None = RULER_MM
         r = vel if fn == "vs" else acc
         if r is None:
             return None
-        if P in scene.slots:
-            slot = scene.slots[P]
+        if P in scene.model.slot:
+            slot = scene.model.slot[P]
             if sp is None:
                 return None
-            e = space_vec(slot.pivot, P)
+            e = space_vec(slot.line.origin, P)
             if fn == "vs":
                 a, b = V(slot.coincident), V(P)
             else:
@@ -288,8 +288,8 @@ def read_quantity(sol, readings: dict, expr: str, ruler: float | None = RULER_MM
                 if s is None:
                     return None
                 a, b = s.start, s.end
-        elif P in scene.sliders:
-            e = scene.sliders[P].direction
+        elif P in scene.model.guide:
+            e = scene.model.guide[P].line.direction
             a, b = sol.pole, V(P)
         else:
             return None
@@ -312,7 +312,7 @@ def compare(sol, readings: dict, ruler: float | None = RULER_MM) -> list[Scaled]
     """Every scene answer read off the drawings (``readings``: kind -> :class:`Reading`)."""
     out = []
     for ans in sol.scene.answers:
-        got = read_quantity(sol, readings, ans.quantity, ruler)
+        got = read_quantity(sol, readings, ans.q, ruler)
         f = _unit_factor(ans.unit)
         if got is None or got[0] is None:
             out.append(Scaled(ans.quantity, ans.unit, None, ans.tutorial, ans.exact,

@@ -23,7 +23,6 @@ the step's sentence in the drawings' notation as the caption.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field, replace
 
 from polygons.evaluate import Solution
@@ -163,11 +162,9 @@ def asked_quantities(sol: Solution, diagram: str) -> list[tuple[str, ...]]:
     fn = "v" if diagram == "velocity" else "a"
     out = []
     for ans in sol.scene.answers:
-        m = re.fullmatch(r"\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?\)\s*",
-                         ans.quantity)
-        if not m or m.group(1) != fn:
+        if ans.q is None or ans.q.fn != fn:
             continue
-        args = tuple(g for g in m.groups()[1:] if g)
+        args = ans.q.args
         if all(a in sol.points for a in args) and args not in out:
             out.append(args)
     return out
@@ -651,7 +648,8 @@ def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None
     measure (the way its sliding vector is drawn)."""
     if sol is None or m.value in (None, 0):
         return ""
-    guide = next((sol.scene.sliders[a] for a in m.args if a in sol.scene.sliders), None)
+    guides = sol.scene.model.guide
+    guide = next((guides[a].line for a in m.args if a in guides), None)
     if guide is not None:
         return f" {along_words(guide.angle + (0.0 if m.value > 0 else math.pi))}"
     if con is not None and m.theorem == "sliding":

@@ -12,6 +12,7 @@ import math
 
 from polygons.evaluate import Solution, link_ends
 from polygons.scene import Crank
+from polygons.model import BUILT, check_handles
 
 from . import scale as scales
 from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
@@ -25,6 +26,9 @@ NOTE_SIZE = 2.8
 PIN_R = 1.1
 PAD_MM = 30.0            # room (mm) around the mechanism for symbols and labels
 
+
+#: the kinds of body and pair the space diagram draws (polygons.model)
+HANDLES = BUILT
 
 def _add(p, q, k=1.0):
     return (p[0] + k * q[0], p[1] + k * q[1])
@@ -58,6 +62,7 @@ def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
 
 
 def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | None = None):
+    check_handles("the space diagram", HANDLES, sol.scene.model, sol.scene.file)
     scene = sol.scene
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
     bb = bounds(list(pos.values()))
@@ -85,35 +90,51 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
 
     # slotted levers
     slotted = set()
-    for slot in scene.slots.values():
-        if slot.pin not in P or slot.pivot not in P:
+    for slot in scene.model.slots() + scene.model.crossings():
+        pivot, lever = slot.line.origin, slot.carrier
+        if slot.at not in P or pivot not in P:
             continue
-        piv, pin = P[slot.pivot], P[slot.pin]
+        piv, pin = P[pivot], P[slot.at]
         e = _unit((pin[0] - piv[0], pin[1] - piv[1]))
         n = (-e[1], e[0])
         end = P[slot.far] if slot.far and slot.far in P else _add(pin, e, 12.0)
         s0, s1 = _add(pin, e, -9.0), _add(pin, e, 9.0)
-        link(piv, s0, cls=f"link {slot.lever}")
+        link(piv, s0, cls=f"link {lever}")
         if math.hypot(end[0] - s1[0], end[1] - s1[1]) > 0.5 and \
                 (end[0] - pin[0]) * e[0] + (end[1] - pin[1]) * e[1] > 9.0:
-            link(s1, end, cls=f"link {slot.lever}")
+            link(s1, end, cls=f"link {lever}")
         w = 1.9
         outline = (_add(s0, n, w), _add(s1, n, w), _add(s1, n, -w), _add(s0, n, -w))
         links.append(Polyline(tuple(_r(p) for p in outline), "slot", closed=True,
-                              cls=f"slot {slot.lever}"))
+                              cls=f"slot {lever}"))
         for p, q in zip(outline, outline[1:] + outline[:1]):
             placer.hard(p, q, 0.6)
         blk = (_add(_add(pin, e, -2.6), n, 1.5), _add(_add(pin, e, 2.6), n, 1.5),
                _add(_add(pin, e, 2.6), n, -1.5), _add(_add(pin, e, -2.6), n, -1.5))
         symbols.append(Polyline(tuple(_r(p) for p in blk), "block", closed=True,
                                 cls="slot-block"))
-        slotted.add(slot.lever)
-        neighbours[slot.pivot].append(pin)
-        neighbours[slot.pin] += [piv, end]
+        slotted.add(lever)
+        neighbours[pivot].append(pin)
+        neighbours[slot.at] += [piv, end]
         if slot.coincident in neighbours:
             neighbours[slot.coincident] += [piv, end]
         if slot.far and slot.far in neighbours:
             neighbours[slot.far].append(piv)
+
+    # collars: a block driven along its link (a prescribed slide, the second input)
+    for collar in scene.model.collars():
+        o, t = collar.line.origin, collar.line.toward
+        if collar.at not in P or o not in P or t not in P:
+            continue
+        c = P[collar.at]
+        e = _unit((P[t][0] - P[o][0], P[t][1] - P[o][1]))
+        n = (-e[1], e[0])
+        blk = tuple(_add(_add(c, e, sx * 3.2), n, sy * 2.2)
+                    for sx, sy in ((-1, 1), (1, 1), (1, -1), (-1, -1)))
+        symbols.append(Polyline(tuple(_r(p) for p in blk), "block", closed=True,
+                                cls="collar-block"))
+        for p, q in zip(blk, blk[1:] + blk[:1]):
+            placer.hard(p, q, 0.4)
 
     # binary links
     for name, ln in scene.links.items():
@@ -158,11 +179,11 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             neighbours[b].append(px)
 
     # slider guides and blocks
-    for lab, g in scene.sliders.items():
+    for lab, guide in scene.model.guide.items():
         if lab not in P:
             continue
         c = P[lab]
-        e = (math.cos(g.angle), math.sin(g.angle))
+        e = guide.line.direction
         n = (-e[1], e[0])
         path = clip_line(c, e, frame)
         if path:
@@ -176,8 +197,9 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             symbols += _hatch(a, b, (n[0] * side, n[1] * side))
             placer.hard(a, b, 0.4)
             placer.hard(_add(a, n, side * 1.8), _add(b, n, side * 1.8), 0.2)
-        pin = getattr(g, "pin", None)
-        sd = getattr(g, "slot_direction", None)
+        yoke = next((y for y in scene.model.yoke_slots() if y.carrier == lab), None)
+        pin = yoke.at if yoke is not None else None
+        sd = yoke.line.direction if yoke is not None else None
         if pin and sd and pin in P:      # a yoke: the slider carries a straight slot
             q = P[pin]
             t = (q[0] - c[0]) * sd[0] + (q[1] - c[1]) * sd[1]
@@ -285,9 +307,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             notes.append((text, [tip, pts[12], pts[0]],
                           math.atan2(tip[1] - c[1], tip[0] - c[0])))
     elif not isinstance(drv, Crank) and drv.point in P:
-        g = scene.sliders[drv.point]
         c = P[drv.point]
-        e = (math.cos(g.angle), math.sin(g.angle))
+        e = scene.model.guide[drv.point].line.direction
         n = (-e[1], e[0])
         for i, (val, sym, unit, style) in enumerate(
                 [(drv.velocity, "v", "m/s", "input"), (drv.acceleration, "a", "m/s²",
@@ -345,12 +366,14 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     for name, ln in scene.links.items():
         if ln.a in sol.placement.points and ln.b in sol.placement.points:
             legend.append((f"{name} = {number(ln.length * 1000)} mm", "normal"))
-    for slot in scene.slots.values():
-        legend.append((f"{slot.pin} slides in the slot of {slot.lever} "
-                       f"(pivot {slot.pivot})", "normal"))
-    for lab, g in scene.sliders.items():
-        legend.append((f"{lab} slides on a guide at {number(math.degrees(g.angle), 4)}°",
+    for slot in scene.model.slots() + scene.model.crossings():
+        legend.append((f"{slot.at} slides in the slot of {slot.carrier} "
+                       f"(pivot {slot.line.origin})", "normal"))
+    for lab, g in scene.model.guide.items():
+        legend.append((f"{lab} slides on a guide at {number(math.degrees(g.line.angle), 4)}°",
                        "normal"))
+    for collar in scene.model.collars():
+        legend.append((f"collar {collar.at} slides along {collar.carrier}", "normal"))
     drv = scene.driver
     legend.append(("", "normal"))
     legend.append(("Input:", "bold"))
@@ -364,6 +387,10 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     else:
         legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
                        f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))
+    for point, sl in scene.prescribed.items():      # the second input's values
+        legend.append((f"collar {point}: {number(sl.position * 1000)} mm from "
+                       f"{sl.p}, ṡ = {number(sl.velocity)} m/s, s̈ = "
+                       f"{number(sl.acceleration)} m/s² along {sl.link}", "normal"))
     sid = scene.source.get("id", "")
     subtitle = f"{sid}: {scene.title}" if sid else scene.title
     desc = (f"Space diagram of {scene.title} at the instant solved, drawn to scale "
@@ -373,7 +400,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     key = [("link", "link (rigid body)", False)]
     if len(scene.ground) >= 2:
         key.append(("centre", "line of centres", False))
-    if scene.sliders:
+    if scene.model.guide:
         key.append(("guide-path", "guide path of a slider", False))
     if isinstance(drv, Crank):
         key.append(("input", "input ω (sense of rotation)", True))

@@ -31,7 +31,6 @@ from .errors import UnsupportedError
 from .plan import Plan
 from .scene import Crank, Scene
 from .steps import Diagram, Op, Step, Vertices
-from .topology import slot_along_lever
 
 #: the staged solver's thresholds (polygons.geometry; a test keeps them equal)
 PARALLEL_DEG = 1e-5
@@ -206,19 +205,32 @@ class _Steps:
         return self.g.let(f"{a[0]} * {b[0]} + {a[1]} * {b[1]}")
 
     def slider_e(self, X, attr="direction"):
+        """The unit vector of the fixed guide of ``X`` (``attr`` 'slot_direction': of the slot
+        its yoke carries), read off the mechanism model."""
         g = self.g
-        return (g.param(lambda s: getattr(s.sliders[X], attr)[0]),
-                g.param(lambda s: getattr(s.sliders[X], attr)[1]))
+        if attr == "direction":
+            return (g.param(lambda s: s.model.guide[X].line.direction[0]),
+                    g.param(lambda s: s.model.guide[X].line.direction[1]))
+        pin = next(p.at for p in self.scene.model.yoke_slots() if p.carrier == X)
+        return (g.param(lambda s: s.model.slide_of(f"block {pin}").line.direction[0]),
+                g.param(lambda s: s.model.slide_of(f"block {pin}").line.direction[1]))
 
-    def slot_e(self, A_):
-        """The unit vector along the slot of pin ``A_``: pivot → far end
-        for an offset slot or a lever placed before its pin, else pivot → pin."""
-        slot = self.scene.slots[A_]
-        if slot.far is not None and slot_along_lever(self.scene, slot):
-            r = self.r(slot.pivot, slot.far)
-        else:
-            r = self.r(slot.pivot, A_)
-        return self.unit(r), slot
+    def slide_key(self, args) -> str:
+        """Where a slide's numbers are kept (the key of ``Solution.slides`` and of a sweep's
+        ``slide_v``): the pin (args (A,)), or 'A in LEVER' for a pin in two slots (args
+        (A, A1), A1 the lever's point under the pin)."""
+        if len(args) == 1:
+            return args[0]
+        return f"{args[0]} in {self.scene.model.under[args[1]].carrier}"
+
+    def slot_e(self, A_, under=None):
+        """The unit vector along the slot of pin ``A_`` (the model's slide line: pivot → far
+        end for an offset slot or a lever placed before its pin, else pivot → pin); and the
+        slot's sliding pair.  ``under`` (the lever's point under the pin) names the slot of a
+        pin in two slots."""
+        model = self.scene.model
+        slot = model.slot[A_] if under is None else model.under[under]
+        return self.unit(self.r(slot.line.origin, slot.line.toward)), slot
 
     def unit(self, r):
         """r / |r|."""
@@ -325,7 +337,7 @@ class _Steps:
         (A_,) = s.args
         g = self.g
         e, slot = self.slot_e(A_)
-        w = self.omega[slot.lever]
+        w = self.omega[slot.carrier]
         v_s = self.slide_v[A_]
         ve = g.vec(f"{v_s} * {e[0]}", f"{v_s} * {e[1]}")
         w2 = g.let(f"2.0 * {w}")
@@ -335,36 +347,35 @@ class _Steps:
         ln = self.line(s, e, anchor)
         neg = g.vec(f"-{a_cor[0]}", f"-{a_cor[1]}")
         return dict(at=ln[0], vector=neg, direction=ln[1]), None, None, "m/s^2", (
-            (f"ω_{slot.lever}", ("abs", w), "rad/s"),
+            (f"ω_{slot.carrier}", ("abs", w), "rad/s"),
             (f"(v_{A_})_{slot.coincident}", ("abs", v_s), "m/s"),
             ("2ωv", ("hypot", a_cor), "m/s^2"))
 
     def coriolis_op(self, s):
         """2 ω × ṡ e: the offset line's when it computed it, else computed here (a pin found
         in a lever's slot; a prescribed slide, ṡ given, along its link)."""
-        (A_,) = s.args
+        A_, key = s.args[0], self.slide_key(s.args)
         g = self.g
-        if A_ in self.cor:
-            a_cor = self.cor[A_]
+        if key in self.cor:
+            a_cor = self.cor[key]
             return self.vector(s, a_cor, "m/s^2", (("2ωv", ("hypot", a_cor), "m/s^2"),))
-        sl = self.scene.prescribed.get(A_)
+        sl = self.scene.model.collar.get(A_)
         if sl is not None:
-            e = self.unit(self.r(sl.p, sl.q))
-            L, v_s = sl.link, g.param(lambda sc: sc.prescribed[A_].velocity)
+            e = self.unit(self.r(sl.line.origin, sl.line.toward))
+            L, v_s = sl.carrier, g.param(lambda sc: sc.prescribed[A_].velocity)
         else:
-            e, slot = self.slot_e(A_)
-            L, v_s = slot.lever, self.slide_v[A_]
+            e, slot = self.slot_e(*s.args)
+            L, v_s = slot.carrier, self.slide_v[key]
         w = self.omega[L]
         ve = g.vec(f"{v_s} * {e[0]}", f"{v_s} * {e[1]}")
         w2 = g.let(f"2.0 * {w}")
-        a_cor = self.cor[A_] = g.vec(f"{w2} * -{ve[1]}", f"{w2} * {ve[0]}")
+        a_cor = self.cor[key] = g.vec(f"{w2} * -{ve[1]}", f"{w2} * {ve[0]}")
         return self.vector(s, a_cor, "m/s^2", ((f"ω_{L}", ("abs", w), "rad/s"),
                                                (f"ṡ_{A_}", ("abs", v_s), "m/s"),
                                                ("2ωv", ("hypot", a_cor), "m/s^2")))
 
     def line_slide(self, s):
-        (A_,) = s.args
-        e, _ = self.slot_e(A_)
+        e, _ = self.slot_e(*s.args)
         return self.line_result(s, self.line(s, e, self.vx[s.diagram][s.start]))
 
     def slide_drive(self, s):
@@ -435,15 +446,15 @@ class _Steps:
         return {}, val, None, unit, ((s.quantity, val, unit),)
 
     def slide_value(self, s):
-        (A_,) = s.args
-        e, slot = self.slot_e(A_)
+        A_, key = s.args[0], self.slide_key(s.args)
+        e, slot = self.slot_e(*s.args)
         rel = self.sub(self.of(s.diagram, A_), self.of(s.diagram, slot.coincident))
         if s.diagram == V:
             val = self.dot(rel, e)
-            self.slide_v[A_] = val
+            self.slide_v[key] = val
         else:
-            val = self.dot(self.sub(rel, self.cor[A_]), e)
-            self.slide_a[A_] = val
+            val = self.dot(self.sub(rel, self.cor[key]), e)
+            self.slide_a[key] = val
         unit = _unit_of(s.diagram)
         return {}, val, None, unit, ((s.quantity, val, unit),)
 
@@ -585,13 +596,18 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
         for d in (V, A):
             for vertex, (x, y) in st.vx[d].items():
                 index[("vx", d.value, vertex)] = (put(x), put(y))
-        for pin, sl in scene.slots.items():
+        for pin, sl in scene.model.slot.items():
             if sl.coincident in g.placed:
                 e, _ = st.slot_e(pin)
                 index[("slot_e", pin)] = (put(e[0]), put(e[1]))
-        for pin, sl in scene.prescribed.items():
+        for sl in scene.model.crossings():
+            if sl.coincident in g.placed:
+                e, _ = st.slot_e(sl.at, sl.coincident)
+                key = st.slide_key((sl.at, sl.coincident))
+                index[("slot_e", key)] = (put(e[0]), put(e[1]))
+        for pin, sl in scene.model.collar.items():
             if pin in g.placed:
-                e = st.unit(st.r(sl.p, sl.q))
+                e = st.unit(st.r(sl.line.origin, sl.line.toward))
                 index[("slot_e", pin)] = (put(e[0]), put(e[1]))
     lines = g.lines
     if arrays:
@@ -643,5 +659,5 @@ def _lazy(v, put):
 def _slot_kinds(scene: Scene) -> tuple:
     """What of the slots the generated code is shaped by (part of the cache key): whether each
     is offset (the lever's far end from the pin) and runs along its lever (pivot → far end)."""
-    return tuple(sorted((pin, bool(sl.offset), sl.far is not None and
-                         slot_along_lever(scene, sl)) for pin, sl in scene.slots.items()))
+    return tuple(sorted((pin, bool(sl.line.offset), sl.along_lever)
+                        for pin, sl in scene.model.slot.items()))

@@ -37,10 +37,14 @@ from .position import assemble, driver_input, dyad_failure
 from .reader import record
 from .scene import Scene
 from .steps import Diagram, Step, Term, noise_floor
+from .model import BUILT, check_handles
 
 _FIELDS = ("at", "vector", "point", "direction")
 _CACHE: dict = {}
 
+
+#: the kinds of body and pair the compiled evaluator handles (polygons.model)
+HANDLES = BUILT
 
 def _cached(key, make) -> _Code:
     """The code kept under ``key`` (a topology), made by ``make()`` the first time."""
@@ -136,6 +140,7 @@ def _step_index(steps, diagram, number) -> int:
 def compile_scene(scene: Scene, plan: Plan | None = None) -> Program:
     """Plan ``scene``, take its closures from the staged assembly, and compile (or fetch from
     the cache, keyed on the plan's dyads and steps) the float function of its construction."""
+    check_handles("the compiled evaluator", HANDLES, scene.model, scene.file)
     plan = plan or make_plan(scene)
     steps = construction(plan)
     sigma = _sigmas(plan)

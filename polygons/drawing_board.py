@@ -25,14 +25,19 @@ import math
 import numpy as np
 
 from .compiled import compile_given, given_params
-from .scene import Crank
+from .scene import Crank, Quantity
 from .sweep import Program, compile_plan, place, run
+from .model import BUILT, check_handles
 
 PENCIL_MM = 0.25
 PROTRACTOR_DEG = 0.25
 SPACE_MM = 150.0      # the mechanism's extent on paper
 POLYGON_MM = 100.0    # the longest vector of each polygon on paper
 
+
+#: the kinds of body and pair the emulation handles (polygons.model): every kind the step
+#: program draws
+HANDLES = BUILT
 
 class Paper:
     """The instruments of a drawing board: every stroke of the step program is drawn with
@@ -75,6 +80,7 @@ def emulate(scene, thetas, trials: int = 200, seed: int = 1) -> dict:
     marked, every answer read off with the rule.  Returns ``{"errors": {name: (errors
     (trials, positions), exact (positions,))}, "scales": {...}, "angle_deg": ...}``; every
     error is |drawn − exact| / |exact|."""
+    check_handles("the drawing-board emulation", HANDLES, scene.model, scene.file)
     prog: Program = compile_plan(scene)
     xs = np.asarray(thetas, dtype=float)
     exact = run(prog, xs)
@@ -144,15 +150,16 @@ def _errors(errors, exact, k, paper, pts, prog, given, grid) -> None:
         ae = np.hypot(*exact["acc"][lab])
         vd = paper.read(np.hypot(*k.vel[lab]), "velocity")
         ad = paper.read(np.hypot(*k.acc[lab]), "acceleration")
-        errors[f"|v_{lab}|"] = (np.abs(grid(vd) - ve) / ve, ve)
-        errors[f"|a_{lab}|"] = (np.abs(grid(ad) - ae) / ae, ae)
+        errors[Quantity("v", (lab,))] = (np.abs(grid(vd) - ve) / ve, ve)
+        errors[Quantity("a", (lab,))] = (np.abs(grid(ad) - ae) / ae, ae)
     for name, w in k.omega.items():
         if name in given or name not in exact["omega"] or not np.ndim(exact["omega"][name]):
             continue
         we, ae = exact["omega"][name], exact["alpha"][name]
-        errors[f"ω_{name}"] = (np.abs(grid(w) - we) / np.abs(we), np.abs(we))
+        errors[Quantity("omega", (name,))] = (np.abs(grid(w) - we) / np.abs(we), np.abs(we))
         if name in k.alpha:
-            errors[f"α_{name}"] = (np.abs(grid(k.alpha[name]) - ae) / np.abs(ae), np.abs(ae))
+            errors[Quantity("alpha", (name,))] = (np.abs(grid(k.alpha[name]) - ae) / np.abs(ae),
+                                                  np.abs(ae))
 
 
 

@@ -110,8 +110,10 @@ class Solution:
     def links(self) -> Mapping[str, LinkResult]:
         scene, pos, solved = self.scene, self.placement.points, self.scene.solve
         links = {}
-        for name in list(scene.links) + [s.lever for s in scene.slots.values()]:
-            a, b = link_ends(scene, name)
+        for body in scene.model.bodies:
+            if body.kind not in ("link", "lever"):
+                continue
+            name, a, b = body.name, body.a, body.b
             if a not in pos or b not in pos:
                 continue
             r = (pos[b][0] - pos[a][0], pos[b][1] - pos[a][1])
@@ -125,18 +127,25 @@ class Solution:
 
     @cached_property
     def slides(self) -> Mapping[str, SlideResult]:
-        scene, solved = self.scene, self.scene.solve
+        model, solved = self.scene.model, self.scene.solve
         slides = {}
-        for label, g in scene.sliders.items():
-            if label in self.placement.points:
-                e = g.direction
+        for guide in model.sliding:
+            label = guide.at
+            if guide.carrier == "frame" and label in self.placement.points:
+                e = guide.line.at(self.placement.points)[1]
                 v, a = self._vel("velocity", label), self._vel("acceleration", label)
                 slides[label] = SlideResult(
                     label, "guide", e,
                     v[0] * e[0] + v[1] * e[1] if "velocity" in solved else None,
                     a[0] * e[0] + a[1] * e[1] if "acceleration" in solved else None, None)
-        along = {pin: slot.lever for pin, slot in scene.slots.items()}
-        along.update({pin: sl.link for pin, sl in scene.prescribed.items()})
+        along = {s.at: s.carrier for s in model.slots() + model.collars()}
+        for s in model.crossings():       # a pin in two slots: one slide per slot
+            key = f"{s.at} in {s.carrier}"
+            e = self._at(("slot_e", key))
+            if e is not None:
+                slides[key] = SlideResult(s.at, s.carrier, e, self._one(("slide_v", key)),
+                                          self._one(("slide_a", key)),
+                                          self._at(("coriolis", key)))
         for pin, link in along.items():
             e = self._at(("slot_e", pin))
             if e is not None:
@@ -197,9 +206,9 @@ def planned(scene: Scene, targets: tuple[str, ...] | None = None):
 
 
 def link_ends(scene: Scene, name: str) -> tuple[str, str]:
-    if name in scene.links:
-        return scene.links[name].a, scene.links[name].b
-    for slot in scene.slots.values():
-        if slot.lever == name:
-            return slot.pivot, slot.coincident
-    raise KeyError(name)
+    """A link's or slotted lever's axis (its ends; a lever's pivot and the point under the
+    pin), read off the mechanism model."""
+    body = scene.model.body(name)
+    if body.kind not in ("link", "lever"):
+        raise KeyError(name)
+    return body.a, body.b

@@ -1,9 +1,11 @@
 """The frozen records of a scene's force tables (built by :mod:`polygons.loads`), all SI."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Mapping
 
+from .errors import UnsupportedError
 from .reader import record
 
 Vec = tuple[float, float]
@@ -36,6 +38,8 @@ class SlotContact:
     pivot: str | None   # the lever's pivot (the slot runs through it); None for a yoke
     carrier: str
     direction: Vec | None = None   # a yoke's slot keeps this direction
+    coincident: str | None = None  # the lever's point under the pin
+    far: str | None = None         # an offset slot runs along pivot → far, not pivot → pin
 
 
 @dataclass(frozen=True)
@@ -158,28 +162,40 @@ class Loads:
         return [m for m in self.masses if m.body == body]
 
 
-def bodies_of(scene) -> dict[str, Body]:
-    """The moving bodies of a scene: its links, its slotted levers, its slider blocks."""
+def bodies_of(model) -> dict[str, Body]:
+    """The moving bodies that carry loads, read off the mechanism model
+    (:mod:`polygons.model`): its links and slotted levers (kind 'link'), its slider blocks and
+    yokes ('block').  The blocks of pins in slots and collars are massless: the force analysis
+    meets them as contacts (:func:`slot_contacts`)."""
     bodies: dict[str, Body] = {}
-    levers = {s.lever: s for s in scene.slots.values()}
-    on_link: dict[str, list[str]] = {}          # the extra points each link carries
-    for p, bp in scene.points.items():
-        on_link.setdefault(bp.link, []).append(p)
-    for name, link in scene.links.items():
-        labels = [link.a, link.b]
-        if name in levers:
-            labels.append(levers[name].coincident)
-        if name in on_link:
-            labels += on_link[name]
-        bodies[name] = record(Body, name=name, kind="link", a=link.a, b=link.b,
-                              labels=tuple(dict.fromkeys(labels)), length=link.length)
-    for name, slot in levers.items():
-        if name in bodies:
-            continue
-        labels = [slot.pivot, slot.coincident] + on_link.get(name, [])
-        bodies[name] = record(Body, name=name, kind="link", a=slot.pivot, b=slot.coincident,
-                              labels=tuple(dict.fromkeys(labels)), length=None)
-    for label in scene.sliders:
-        bodies[label] = record(Body, name=label, kind="block", a=label, b=None, labels=(label,),
-                               length=None)
+    for b in model.moving:
+        if b.kind in ("link", "lever"):
+            bodies[b.name] = record(Body, name=b.name, kind="link", a=b.a, b=b.b,
+                                    labels=b.labels, length=b.length)
+        elif b.kind in ("block", "yoke"):
+            bodies[b.name] = record(Body, name=b.name, kind="block", a=b.name, b=None,
+                                    labels=(b.name,), length=None)
     return bodies
+
+
+def slot_contacts(model, members, file: str | None) -> list[SlotContact]:
+    """Each pin sliding in the slot of a lever or of a yoke, as a contact between the body
+    carrying the pin and the slotted body (the massless block between them left out)."""
+    out = []
+    for s in model.sliding:
+        if s.prescribed or s.carrier == "frame":
+            continue
+        carriers = [b for b in members.get(s.at, []) if b != s.carrier]
+        yoke = s.line.toward is None
+        if not carriers:
+            what = f"the yoke {s.carrier}" if yoke else s.carrier
+            raise UnsupportedError(f"the pin {s.at} in the slot of {what} is on no moving body",
+                                   file=file, where=s.key)
+        if yoke:
+            out.append(SlotContact(s.at, s.carrier, None, carriers[0],
+                                   (math.cos(s.line.angle), math.sin(s.line.angle))))
+        else:
+            out.append(SlotContact(s.at, s.carrier, s.line.origin, carriers[0],
+                                   coincident=s.coincident,
+                                   far=s.line.toward if s.line.offset else None))
+    return out

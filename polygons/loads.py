@@ -44,7 +44,9 @@ from typing import Any, Callable, Mapping
 
 from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, suggest
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
-                        Friction, Joint, Loads, MassItem, SlotContact, Spring, bodies_of)
+                        Friction, Joint, Loads, MassItem, Spring, bodies_of,
+                        slot_contacts)
+from .model import BUILT, check_handles
 from .reader import Reader, record
 from .schema import Key, Table
 
@@ -200,6 +202,17 @@ def has_loads(extra: Mapping[str, Any]) -> bool:
 AnswerFields = Callable[..., dict]
 
 
+#: the kinds of body and pair the force analysis handles (polygons.model): not a collar
+#: driven along a link, whose prescribed slide has no force model yet, nor a pin in two
+#: moving slots (two slot normals at one massless pin: not modelled yet)
+HANDLES = BUILT - {"collar", "cross-block"}
+
+
+def _guides(model) -> tuple[str, ...]:
+    """The blocks on fixed guides (sliders and yokes), by their labels."""
+    return tuple(s.at for s in model.sliding if s.carrier == "frame")
+
+
 def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads:
     """Read and check the force tables of ``scene`` (every problem is a :class:`SceneError`).
 
@@ -210,7 +223,7 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     (``shortcut=False`` reads them all the same; the tests compare the two)."""
     file = scene.file
     ex = scene.extra
-    bodies = bodies_of(scene)
+    bodies = bodies_of(scene.model)
     labels = scene.labels
     members: dict[str, list[str]] = {lab: [] for lab in labels}
     for b in bodies.values():
@@ -229,29 +242,17 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     if shortcut and not any(k in ex for k in READS):
         return record(Loads, file=file, bodies=MappingProxyType(bodies),
                       members=MappingProxyType({k: tuple(v) for k, v in members.items()}),
-                      joints=tuple(joints), slots=(), guides=tuple(scene.sliders), masses=(),
+                      joints=tuple(joints), slots=(), guides=_guides(scene.model), masses=(),
                       forces=(), torques=(), frictions=(), springs=(), gravity=NO_GRAVITY,
                       mode=DEFAULT_MODE, after=(), steps=DEFAULT_STEPS, answers=(),
                       driver_body=driver_body, active=False, flywheel=None, efficiency=None)
     r = _Values(file)
     active = has_loads(ex)
+    if active:
+        check_handles("polygons forces", HANDLES, scene.model, file)
     reversed_names = {b.b + b.a: n for n, b in bodies.items() if b.kind == "link"}
 
-    slots = []
-    for slot in scene.slots.values() if active else ():
-        carriers = [b for b in members.get(slot.pin, []) if b != slot.lever]
-        if not carriers:
-            raise UnsupportedError(f"the pin {slot.pin} in the slot of {slot.lever} is on no "
-                                   f"moving body", file=file, where=f"slots.{slot.pin}")
-        slots.append(SlotContact(slot.pin, slot.lever, slot.pivot, carriers[0]))
-    for lab, g in scene.sliders.items() if active else ():
-        if g.pin is None:
-            continue
-        carriers = [b for b in members.get(g.pin, []) if b != lab]
-        if not carriers:
-            raise UnsupportedError(f"the pin {g.pin} in the slot of the yoke {lab} is on no "
-                                   f"moving body", file=file, where=f"sliders.{lab}.pin")
-        slots.append(SlotContact(g.pin, lab, None, carriers[0], g.slot_direction))
+    slots = slot_contacts(scene.model, members, file) if active else []
 
     def body_name(name, where) -> str:
         if not isinstance(name, str):
@@ -302,7 +303,7 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     answers = _answers(r, ex.get("force_answers", []), answer_fields)
     return Loads(file, MappingProxyType(bodies),
                  MappingProxyType({k: tuple(v) for k, v in members.items()}), tuple(joints),
-                 tuple(slots), tuple(scene.sliders), tuple(masses), tuple(forces),
+                 tuple(slots), _guides(scene.model), tuple(masses), tuple(forces),
                  tuple(torques), tuple(frictions), tuple(springs), gravity, mode, after, steps,
                  answers, driver_body, active, flywheel, efficiency)
 

@@ -12,11 +12,9 @@ inputs: F = 0 is a locked structure (a frame), F < 0 an over-constrained one, F 
 more inputs.  After assembly, a link whose two ends were placed by other links (a redundant
 link) must have its stated length.
 
-The body model read from the scene: the frame holds every [ground] point and every fixed guide;
-each [links] entry is a body with its two end points plus the [points] declared on it; a slotted
-lever not in [links] is a body (pivot, far end, its points); each slider on a fixed guide, each
-slot's pin and each Scotch-yoke pin is a sliding block (a body pinned at its point, sliding on
-its guide, lever or yoke); a yoke is a body sliding on the frame.
+The bodies and pairs are the mechanism model's (:mod:`polygons.model`, built once at load):
+the frame, the links and slotted levers, a block for each slider, each pin in a slot and each
+collar (a prescribed slide, a second input), a yoke for each Scotch yoke.
 """
 from __future__ import annotations
 
@@ -24,9 +22,8 @@ import math
 from dataclasses import dataclass
 
 from .errors import SceneError
+from .model import FRAME  # noqa: F401  (the frame's name, as the model writes it)
 
-#: the frame's name in the body model
-FRAME = "frame"
 
 
 class MobilityError(SceneError):
@@ -56,65 +53,16 @@ class Mobility:
         return f"F = 3({n} − 1) − 2 × {j} = {self.dof}"
 
 
-def bodies_at(scene) -> tuple[dict[str, set[str]], int, tuple[str, ...]]:
-    """(label → the bodies pinned there, number of sliding pairs, moving bodies)."""
-    at: dict[str, set[str]] = {}
-    moving: list[str] = []
-
-    def put(label, body):
-        at.setdefault(label, set()).add(body)
-
-    for g in scene.ground:
-        put(g, FRAME)
-    for name, link in scene.links.items():
-        moving.append(name)
-        put(link.a, name)
-        put(link.b, name)
-    prismatic = 0
-    for pin, slot in scene.slots.items():
-        lever = slot.lever
-        if lever not in scene.links:
-            moving.append(lever)
-        put(slot.pivot, lever)
-        if slot.far:
-            put(slot.far, lever)
-        block = f"block {pin}"
-        moving.append(block)
-        put(pin, block)           # the block turns on the pin ...
-        prismatic += 1            # ... and slides in the lever's slot
-    for label, guide in scene.sliders.items():
-        if guide.pin is not None:            # a Scotch yoke
-            yoke = f"yoke {label}"
-            moving.append(yoke)
-            put(label, yoke)
-            block = f"block {guide.pin}"
-            moving.append(block)
-            put(guide.pin, block)
-            prismatic += 2                   # yoke on the frame, block in the yoke's slot
-        else:
-            block = f"slider {label}"
-            moving.append(block)
-            put(label, block)
-            prismatic += 1                   # on its fixed guide
-    for label, bp in scene.points.items():
-        put(label, bp.link)
-    return at, prismatic, tuple(moving)
-
-
-def inputs_of(scene) -> tuple[str, ...]:
-    drv = scene.driver
-    names = [getattr(drv, "link", None) or f"slider {getattr(drv, 'point', '?')}"]
-    extra = getattr(scene, "inputs", ())
-    return tuple(names) + tuple(extra)
-
-
 def mobility(scene) -> Mobility:
-    """F = 3(n − 1) − 2 j₁ − j₂ for the scene's body model."""
-    at, prismatic, moving = bodies_at(scene)
-    revolutes = sum(len(bodies) - 1 for bodies in at.values())
-    n = len(moving) + 1
-    dof = 3 * (n - 1) - 2 * (revolutes + prismatic)
-    return Mobility(moving, revolutes, prismatic, inputs_of(scene), dof)
+    """F = 3(n − 1) − 2 j₁ − j₂ for the scene's mechanism model (:mod:`polygons.model`): a pin
+    joining k bodies counts k − 1 revolutes, each sliding pair one prismatic."""
+    model = scene.model
+    revolutes = sum(len(p.bodies) - 1 for p in model.turning)
+    prismatic = len(model.sliding)
+    moving = tuple(b.name for b in model.moving)
+    dof = 3 * len(moving) - 2 * (revolutes + prismatic)
+    inputs = tuple(model.body(n).title for n in model.inputs)
+    return Mobility(moving, revolutes, prismatic, inputs, dof)
 
 
 def check_mobility(scene, redundant: tuple[str, ...] = ()) -> Mobility:

@@ -12,7 +12,6 @@ import math
 from functools import partial
 
 from .steps import Op, Step, number, sense, unit_text
-from .topology import slot_along_lever
 
 
 
@@ -52,17 +51,18 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
         return _rate(t, _RATES[op], f)
     if op in (Op.SLIDER_VELOCITY, Op.SLIDER_ACCELERATION):
         (X,) = s.args
-        deg = math.degrees(scene.sliders[X].angle)
+        deg = math.degrees(scene.model.guide[X].line.angle)
         return f"{f(t[0].value)} {t[0].unit} along the guide ({f(deg)}°)"
     if op in (Op.SLIDE_VELOCITY, Op.SLIDE_ACCELERATION):
-        (A,) = s.args
+        A = s.args[0]
         val = t[0].value
-        slot = scene.slots[A]
-        if slot.far is not None and slot_along_lever(scene, slot):
-            ends = (slot.pivot, slot.far) if val >= 0 else (slot.far, slot.pivot)
+        slot = scene.model.slot[A] if len(s.args) == 1 else scene.model.under[s.args[1]]
+        pivot = slot.line.origin
+        if slot.along_lever:
+            ends = (pivot, slot.far) if val >= 0 else (slot.far, pivot)
             return f"{f(val)} {t[0].unit} (along {''.join(ends)})"
         return (f"{f(val)} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
-                f"{slot.pivot})")
+                f"{pivot})")
     if op is Op.IMAGE:
         return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"
     return ""

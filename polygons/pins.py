@@ -161,7 +161,7 @@ def spec(scene: Scene) -> PinSpec:
 
 
 def _link_names(scene: Scene) -> list[str]:
-    return list(scene.links) + [s.lever for s in scene.slots.values()]
+    return [b.name for b in scene.model.bodies if b.kind in ("link", "lever")]
 
 
 def _parse_quantity(q: str, file, where) -> tuple[str, str]:
@@ -175,25 +175,26 @@ def _parse_quantity(q: str, file, where) -> tuple[str, str]:
 
 # ---------------------------------------------------------------- results
 def _turning(solution) -> dict[str, tuple[float, tuple[str, ...]]]:
-    """Every body at a pin: name -> (ω, labels).  The frame and slider blocks do not turn."""
-    scene = solution.scene
+    """Every body at a pin, read off the mechanism model: name -> (ω, labels).  The frame
+    and slider blocks do not turn; the block on a pin in a lever's slot turns with the lever,
+    in a yoke's slot it translates."""
+    scene, model = solution.scene, solution.scene.model
     out: dict[str, tuple[float, tuple[str, ...]]] = {"frame": (0.0, tuple(scene.ground))}
-    for name, lr in solution.links.items():
-        if lr.omega is None:
-            continue
-        labels = [lr.a, lr.b]
-        if name in scene.links:
-            labels += [p for p, bp in scene.points.items() if bp.link == name]
-        out[name] = (lr.omega, tuple(labels))
-    for label, g in scene.sliders.items():
-        if g.pin is None:
-            out[f"slider {label}"] = (0.0, (label,))
-        else:                         # the block on the pin, in the yoke's slot, translates
-            out[f"block at {g.pin}"] = (0.0, (g.pin,))
-    for pin, slot in scene.slots.items():   # the block on the pin turns with the lever
-        lr = solution.links.get(slot.lever)
-        if lr is not None and lr.omega is not None:
-            out[f"block at {pin}"] = (lr.omega, (pin,))
+    for b in model.moving:
+        if b.kind in ("link", "lever"):
+            lr = solution.links.get(b.name)
+            if lr is not None and lr.omega is not None:
+                out[b.name] = (lr.omega, b.labels)
+        elif b.kind == "block":
+            out[f"slider {b.name}"] = (0.0, (b.name,))
+        elif b.kind == "pin-block":
+            carrier = model.slide_of(b.name).carrier
+            if model.body(carrier).kind == "yoke":
+                out[f"block at {b.a}"] = (0.0, (b.a,))
+            else:
+                lr = solution.links.get(carrier)
+                if lr is not None and lr.omega is not None:
+                    out[f"block at {b.a}"] = (lr.omega, (b.a,))
     return out
 
 

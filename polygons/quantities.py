@@ -62,11 +62,7 @@ def quantity(sol: Solution, expr: str) -> float:
 
     def link_of(x, y):
         for name, lr in sol.links.items():
-            ends = set(link_ends(scene, name))
-            body = {bp.label for bp in scene.points.values() if bp.link == name}
-            slot_far = {x for s in scene.slots.values() if s.lever == name
-                        for x in (s.far, s.coincident, s.pivot) if x}
-            if {x, y} <= ends | body | slot_far:
+            if {x, y} <= set(scene.model.body(name).labels):
                 return lr
         raise SceneError(f"{x} and {y} are not on one link, so {expr!r} has no "
                          f"centripetal/tangential split", file=scene.file)
@@ -86,6 +82,13 @@ def quantity(sol: Solution, expr: str) -> float:
     if fn == "alpha":
         return link(p).alpha
     if fn in ("vs", "as", "cor"):
+        if q is not None:      # vs(P,P2): P sliding relative to the lever's point P2 under it
+            pair = scene.model.under.get(q)
+            if pair is None or pair.at != p:
+                raise UnknownLabelError(f"{q!r} in {expr!r} is not a lever's point under "
+                                        f"{p}", file=scene.file)
+            p = p if p in sol.slides and pair.key.startswith("slots.") else \
+                f"{p} in {pair.carrier}"
         if p not in sol.slides:
             raise UnknownLabelError(f"{p!r} in {expr!r} is not a slider or a pin in a slot: "
                                     f"{suggest(p, sol.slides)}", file=scene.file)

@@ -44,13 +44,14 @@ from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
 from .loads import parse as parse_loads
+from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record
+from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  # noqa: F401
+                      SliderDrive, Slot, Vec)
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
 from .units import dimension_of
-
-Vec = tuple[float, float]
 
 _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
 
@@ -67,122 +68,8 @@ SOURCE_TEXT = ("id", "seed", "example", "category", "statement", "conventions", 
                "backsolved", "slips", "mechanism")
 
 
-# ---------------------------------------------------------------- value objects
-@dataclass(frozen=True)
-class Link:
-    """A rigid binary link between pins ``a`` and ``b`` (``length`` None for a slotted lever)."""
-
-    name: str
-    a: str
-    b: str
-    length: float | None
-
-
-@dataclass(frozen=True)
-class Guide:
-    """A fixed straight slider guide through ``through`` at ``angle`` (rad, CCW from +x).
-
-    A slider may carry a straight slot (a Scotch yoke): ``pin`` slides in it, and the slot
-    keeps the fixed direction ``slot_angle`` because the slider only translates.  The
-    slider's label is then the point of the yoke on its guide, under the slot line."""
-
-    through: Vec
-    angle: float
-    pin: str | None = None
-    slot_angle: float | None = None
-
-    @property
-    def direction(self) -> Vec:
-        return (math.cos(self.angle), math.sin(self.angle))
-
-    @property
-    def slot_direction(self) -> Vec | None:
-        if self.slot_angle is None:
-            return None
-        return (math.cos(self.slot_angle), math.sin(self.slot_angle))
-
-
-@dataclass(frozen=True)
-class Crank:
-    """Driver: link ``link`` turning about fixed ``pivot``; ``tip`` is its other end."""
-
-    link: str
-    pivot: str
-    tip: str
-    angle: float
-    omega: float   # signed, CCW positive
-    alpha: float   # signed, CCW positive
-
-
-@dataclass(frozen=True)
-class SliderDrive:
-    """Driver: point ``point`` pushed along its guide; ``position`` measured from the guide's
-    ``through`` point along its direction, ``velocity``/``acceleration`` signed the same way."""
-
-    point: str
-    position: float
-    velocity: float
-    acceleration: float
-
-
-@dataclass(frozen=True)
-class Slot:
-    """Pin ``pin`` slides in the straight slot of ``lever``, which turns about fixed ``pivot``;
-    the slot runs through the pivot along the lever.  ``coincident`` is the point of the lever
-    under the pin at this instant (P4 under P2, A1 under A); ``far`` is the lever's other
-    labelled end when it has a stated length (C of lever BC), else None."""
-
-    pin: str
-    lever: str
-    pivot: str
-    coincident: str
-    far: str | None
-    far_length: float | None
-    offset: float = 0.0     # the slot line's distance left of the lever's line (topology)
-    length: float | None = None     # the slot's stated length from the pivot (topology)
-
-
-@dataclass(frozen=True)
-class BodyPoint:
-    """Point ``label`` rigidly attached to link ``link`` (ends P, Q): at distance ``along`` from
-    P towards Q plus ``left`` perpendicular (to the left of P→Q)."""
-
-    label: str
-    link: str
-    along: float | None
-    fraction: float | None
-    left: float
-
-
-@dataclass(frozen=True)
-class Branch:
-    """Assembly choice for ``label``: ``relation`` ('above', 'below', 'left of', 'right of',
-    'near') a reference (a point label, a line of two labels, or coordinates for 'near')."""
-
-    label: str
-    text: str
-    relation: str
-    ref: tuple[str, ...] = ()
-    near: Vec | None = None
-
-
-@dataclass(frozen=True)
-class Answer:
-    """One printed (tutorial) answer and/or exact reference value for a result quantity."""
-
-    quantity: str
-    unit: str
-    tutorial: float | None      # in `unit`
-    exact: float | None         # in `unit`
-    mode: str                   # 'abs' compares magnitudes, 'signed' compares signed values
-    sense: str | None           # the tutorial's direction word (CW/CCW/...), if any
-    tolerance: float            # relative drawing tolerance for the tutorial value
-    slip: bool                  # the reference found a slip: we must NOT reproduce it
-    ref: str | None             # key in the reference cases.json
-    desc: str
-    note: str
-
-
+# ---------------------------------------------------------------- the scene
+# (the records of its tables: polygons.records)
 @dataclass(frozen=True)
 class Scene:
     file: str
@@ -201,6 +88,10 @@ class Scene:
     extra: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
     options: Options = Options()
     loads: Any = None           # polygons.loads.Loads: the force tables, parsed and checked
+    #: the mechanism model (polygons.model.Mechanism): bodies and pairs, read once at load
+    model: Any = None
+    #: pins in two moving slots at once ([crossing]; polygons.records.Crossing)
+    crossing: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))
     #: second inputs: prescribed slides along a link (:mod:`polygons.topology`)
     prescribed: Mapping[str, topology.Slide] = field(
         default_factory=lambda: MappingProxyType({}))
@@ -225,6 +116,10 @@ class Scene:
         for sl in self.prescribed.values():
             seen[sl.coincident] = None
             seen[sl.point] = None
+        for cr in self.crossing.values():
+            seen[cr.pin] = None
+            for c in cr.coincident:
+                seen[c] = None
         return tuple(seen)
 
     def link_between(self, p: str, q: str) -> Link | None:
@@ -366,7 +261,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                 extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
     r = _Reader(file)
-    r.table(data, "", TOP_KEYS + OPTION_KEYS + extra_keys,
+    r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
             required=("ground", "links", "driver"))
     options = parse_options(data, file)
     title = r.string(data["title"], "title") if "title" in data else path_stem(file)
@@ -514,6 +409,17 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             need_label(r.label(label, where), where)
             sliders[label] = Guide(through, angle)
 
+    # crossing slots: a pin in the slots of two moving levers
+    crossing = {}
+    for pin, spec in r.named(data.get("crossing", {}), "crossing").items():
+        if pin in slots or pin in sliders or pin in crossing:
+            raise SceneError(f"{pin} already slides in a slot or on a guide; a pin in two "
+                             f"slots is stated once, in [crossing.{pin}]", file=file,
+                             where=f"crossing.{pin}")
+        cr = topology.parse_crossing(pin, spec, r, links, known | set(sliders))
+        crossing[pin] = cr
+        known |= {pin, *cr.coincident}
+
     # driver
     drv = data["driver"]
     r.table(drv, "driver", KEYS["driver"])
@@ -614,6 +520,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 
     check_proportions(file, ground, drawn, links, sliders, points, assembly, driver)
 
+    # the joint tables read once into bodies and pairs: every method reads this model
+    model = build_model(ground=ground, links=links, sliders=sliders, slots=slots,
+                        points=points, prescribed=prescribed, driver=driver,
+                        crossing=crossing,
+                        along_lever=lambda slot: bool(slot.offset) or topology.guided_pin_in(
+                            links, driver, slot))
     # (every field of Scene, set at once; loads set below, before the scene is handed out)
     scene = record(Scene, file=file, title=title, source=MappingProxyType(dict(source)),
                    ground=MappingProxyType(ground), links=MappingProxyType(links),
@@ -624,7 +536,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                        [s for s in DIAGRAMS if s in solve]),
                    drawn=MappingProxyType(drawn),
                    extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
-                   options=options, loads=None, prescribed=MappingProxyType(prescribed))
+                   options=options, loads=None, prescribed=MappingProxyType(prescribed),
+                   model=model, crossing=MappingProxyType(crossing))
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
     scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
@@ -734,7 +647,7 @@ _CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
 QUANTITY_FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x",
                       "y", "dir_v", "dir_a", "angle", "arm")
 _ARITY = {"angle": (3,), "arm": (3,), "v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,),
-          "dist": (2,)}
+          "dist": (2,), "vs": (1, 2), "as": (1, 2), "cor": (1, 2)}
 
 
 def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None = None):
@@ -769,9 +682,9 @@ def _parse_answers(answers_raw: list, r: _Reader, default_tol: float) -> tuple[A
     for i, spec in enumerate(answers_raw):
         where = f"answers[{i}]"
         fields = answer_fields(spec, r, where, default_tol)
-        if fields["quantity"] not in _READ_EXPR:      # else read, and well formed, before
-            parse_quantity_expr(fields["quantity"], file=r.file, where=where + ".quantity")
-        answers.append(record(Answer, **fields))
+        fn, args = parse_quantity_expr(fields["quantity"], file=r.file,
+                                       where=where + ".quantity")
+        answers.append(record(Answer, **fields, q=Quantity(fn, args)))
     return tuple(answers)
 
 

@@ -183,10 +183,7 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
         kind, x0, rate, rate2 = "crank", drv.angle, drv.omega, drv.alpha
     else:
         kind, x0, rate, rate2 = "slider", drv.position, drv.velocity, drv.acceleration
-    links = [(name, link.a, link.b) for name, link in scene.links.items()]
-    for slot in scene.slots.values():
-        if slot.lever not in scene.links:
-            links.append((slot.lever, slot.pivot, slot.coincident))
+    links = [(b.name, b.a, b.b) for b in scene.model.bodies if b.kind in ("link", "lever")]
     ground = {k: (float(v[0]), float(v[1])) for k, v in scene.ground.items()}
     return Program(scene, plan, construction(plan, tuple(Diagram)), sigma, ground, kind,
                    float(x0), float(rate), float(rate2), tuple(links), size_of(scene))
@@ -232,11 +229,11 @@ def _evaluate(prog: Program, t: np.ndarray, rates: bool) -> dict:
         margin = np.minimum(margin, m)
     P = {k: (v[0], v[1]) if k not in prog.ground else prog.ground[k] for k, v in pos.items()}
     travel = {}
-    for label, g in scene.sliders.items():
+    for label, g in scene.model.guide.items():
         if label in pos and label not in prog.ground:
-            e = g.direction
-            travel[label] = ((pos[label][0] - g.through[0]) * e[0]
-                             + (pos[label][1] - g.through[1]) * e[1])
+            e, through = g.line.direction, g.line.through
+            travel[label] = ((pos[label][0] - through[0]) * e[0]
+                             + (pos[label][1] - through[1]) * e[1])
     return {"pos": P, "travel": travel, "margin": margin}
 
 
@@ -288,11 +285,11 @@ def from_arrays(prog: Program, code, params, xs: np.ndarray) -> dict:
             W[name] = angular_velocity(rr, _diff(V[b], V[a]))
             AL[name] = angular_acceleration(rr, _diff(A[b], A[a]))
         travel, SV, SA = {}, {}, {}
-        for label, g in scene.sliders.items():
+        for label, g in scene.model.guide.items():
             if label in pos and label not in prog.ground:
-                e = g.direction
-                travel[label] = ((pos[label][0] - g.through[0]) * e[0]
-                                 + (pos[label][1] - g.through[1]) * e[1])
+                e, through = g.line.direction, g.line.through
+                travel[label] = ((pos[label][0] - through[0]) * e[0]
+                                 + (pos[label][1] - through[1]) * e[1])
                 SV[label] = V[label][0] * e[0] + V[label][1] * e[1]
                 SA[label] = A[label][0] * e[0] + A[label][1] * e[1]
         for (key, k), i in idx.items():
@@ -651,10 +648,10 @@ def harmonic(sw: Sweep, point: str) -> Harmonic:
     if not isinstance(drv, Crank):
         raise PolygonsError("the simple-harmonic comparison needs a crank driver",
                             file=scene.file)
-    if point not in scene.sliders or point not in sw.travel:
+    if point not in scene.model.guide or point not in sw.travel:
         raise PolygonsError(f"the simple-harmonic comparison is for a slider; {point} has no "
                             f"guide", file=scene.file, where=point)
-    ex, ey = scene.sliders[point].direction
+    ex, ey = scene.model.guide[point].line.direction
     px, py = scene.ground[drv.pivot]
     (ax, ay), (vx, vy), (aax, aay) = sw.pos[drv.tip], sw.vel[drv.tip], sw.acc[drv.tip]
     proj = (ax - px) * ex + (ay - py) * ey

@@ -72,6 +72,15 @@ TABLES: tuple[Table, ...] = (
                   sign="positive from the link's first label towards its second"),
               Key("coincident", "label", "the link's point under the sliding point", "C1"),
           )),
+    Table("crossing", "[crossing.P]: a pin P sliding in the straight slots of two moving "
+          "levers at once (crossing slots): each lever is a link in [links] placed by the rest "
+          "of the mechanism, its slot running along the link from its first label through its "
+          "second (open-ended); P is where the two slots cross.", (
+              Key("levers", "array", "the two slotted levers (links in [links])",
+                  '["O2Q", "O4R"]', required=True),
+              Key("coincident", "array", "each lever's point under P (default: P followed "
+                  "by the lever's first label's digits, or P1 and P2)", '["P2", "P4"]'),
+          ), many=True),
 )
 
 
@@ -203,6 +212,49 @@ def parse_slide(spec, r, links, split_link_name, labels=()) -> Slide:
                  r.quantity(spec["velocity"], "velocity", where + ".velocity"),
                  r.quantity(spec.get("acceleration", "0 m/s^2"), "acceleration",
                             where + ".acceleration"))
+
+
+def parse_crossing(pin, spec, r, links, taken) -> "Crossing":
+    """``[crossing.P]`` → :class:`polygons.records.Crossing` (``taken``: the labels already
+    in use, which the points under the pin must not reuse)."""
+    from .records import Crossing
+    where = f"crossing.{pin}"
+    r.label(pin, where)
+    r.table(spec, where, ("levers", "coincident"), required=("levers",))
+    levers = spec["levers"]
+    if not isinstance(levers, list) or len(levers) != 2:
+        raise SceneError(f"levers must name the two slotted levers, e.g. levers = [\"O2Q\", "
+                         f"\"O4R\"]", file=r.file, where=where + ".levers")
+    levers = tuple(r.string(v, f"{where}.levers") for v in levers)
+    for lev in levers:
+        if lev not in links or links[lev].length is None:
+            raise UnknownLabelError(f"the slotted lever {show_text(lev)} must be a link with a "
+                                    f"length in [links]: {suggest(lev, links)}", file=r.file,
+                                    where=where + ".levers")
+        if pin in (links[lev].a, links[lev].b):
+            raise SceneError(f"{pin} slides in the slot of {lev}, so it cannot be an end of "
+                             f"{lev}", file=r.file, where=where + ".levers")
+    if levers[0] == levers[1]:
+        raise SceneError("the two slots must be cut in two different levers", file=r.file,
+                         where=where + ".levers")
+    default = [pin + (links[lev].a[1:] or str(i + 1)) for i, lev in enumerate(levers)]
+    if len(set(default)) < 2:
+        default = [f"{pin}1", f"{pin}2"]
+    coincident = spec.get("coincident", default)
+    if not isinstance(coincident, list) or len(coincident) != 2:
+        raise SceneError("coincident must name each lever's point under the pin, e.g. "
+                         "coincident = [\"P2\", \"P4\"]", file=r.file,
+                         where=where + ".coincident")
+    coincident = tuple(r.label(c, where + ".coincident") for c in coincident)
+    if len(set(coincident) | {pin}) < 3 or set(coincident) & set(taken):
+        raise SceneError(f"the points under {pin} need labels of their own, different from "
+                         f"{pin} and from every other point", file=r.file,
+                         where=where + ".coincident")
+    return Crossing(pin, levers, coincident)
+
+
+def show_text(x) -> str:
+    return repr(x)[:60]
 
 
 def lever_as_crank(drv: dict, r, slots_raw, links_raw) -> dict:
@@ -376,11 +428,16 @@ def guided_pin(scene, slot) -> bool:
     """Whether the pin of ``slot`` is found in the slot of a lever placed first (the lever
     driven, or placed by its own links): the lever has a far end and the pin hangs from
     exactly one link of known length that is not the driving crank."""
+    return guided_pin_in(scene.links, scene.driver, slot)
+
+
+def guided_pin_in(links, driver, slot) -> bool:
+    """:func:`guided_pin` from the parsed [links] and driver (before the scene is built)."""
     if slot.far is None:
         return False
-    joints = [l for l in scene.links.values()
+    joints = [l for l in links.values()
               if slot.pin in (l.a, l.b) and l.length is not None and l.name != slot.lever]
-    return len(joints) == 1 and joints[0].name != getattr(scene.driver, "link", None)
+    return len(joints) == 1 and joints[0].name != getattr(driver, "link", None)
 
 
 def slot_along_lever(scene, slot) -> bool:

@@ -177,5 +177,28 @@ def fd_check(position, x0, rate, rate2, h=1e-4):
     return d1 * rate, d2 * rate * rate + d1 * rate2
 
 
+def crossing_slots(A, Q, B, R):
+    """A pin P in the slots of two turning levers: P = A + t1 u1 = B + t2 u2, u1 = (Q − A)/|Q −
+    A| turning at (ω1, α1), u2 likewise.  Differentiating the loop once,
+    ṫ1 u1 − ṫ2 u2 = Ḃ − Ȧ + i(t2 ω2 u2 − t1 ω1 u1); twice,
+    ẗ1 u1 − ẗ2 u2 = B̈ − Ä + 2i(ṫ2 ω2 u2 − ṫ1 ω1 u1) + (iα2 − ω2²) t2 u2 − (iα1 − ω1²) t1 u1.
+    Returns (P motion, (t1, ṫ1, ẗ1), (t2, ṫ2, ẗ2)): t along each slot from its pivot."""
+    u1 = (Q[0] - A[0]) / abs(Q[0] - A[0])
+    u2 = (R[0] - B[0]) / abs(R[0] - B[0])
+    w1, al1 = rates(A, Q)
+    w2, al2 = rates(B, R)
+    t1, t2 = _solve2(u1, -u2, B[0] - A[0], "crossing position")
+    td1, td2 = _solve2(u1, -u2, B[1] - A[1] + 1j * (t2 * w2 * u2 - t1 * w1 * u1),
+                       "crossing velocity")
+    rhs = (B[2] - A[2] + 2j * (td2 * w2 * u2 - td1 * w1 * u1)
+           + (1j * al2 - w2 * w2) * t2 * u2 - (1j * al1 - w1 * w1) * t1 * u1)
+    tdd1, tdd2 = _solve2(u1, -u2, rhs, "crossing acceleration")
+    z = A[0] + t1 * u1
+    v = A[1] + td1 * u1 + 1j * w1 * t1 * u1
+    a = A[2] + tdd1 * u1 + 2j * w1 * td1 * u1 + (1j * al1 - w1 * w1) * t1 * u1
+    return (z, v, a), (t1, td1, tdd1), (t2, td2, tdd2)
+
+
 __all__ = ["vec", "fixed", "crank", "rates", "image", "rrr", "rrp", "slot", "lever_point",
-           "guided", "collar", "trammel", "fd_check", "_cross"]
+           "guided", "collar", "trammel", "fd_check", "_cross", "crossing_slots"]
+

@@ -16,9 +16,12 @@ LAYERS = ("base", "scene", "plan", "interpreters", "forces", "render", "commands
 WHERE = {
     "polygons.errors": "base", "polygons.units": "base", "polygons.schema": "base",
     "polygons.theorems": "base", "polygons.steps": "base",
-    "polygons.scene": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
+    "polygons.scene": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
+    # the mechanism model: the joint tables read once into bodies and pairs, the last step of
+    # loading a scene (polygons.scene builds it; every layer above reads it)
+    "polygons.model": "scene",
     "polygons.reference": "commands", "polygons.__main__": "commands",
     "polygons.plan": "plan", "polygons.dyads": "plan", "polygons.mobility": "plan",
     "polygons.geometry": "interpreters",

@@ -68,8 +68,17 @@ def run_cli(tmp_path, text):
 
 @pytest.mark.parametrize("path", case_files(), ids=lambda p: p.stem)
 def test_every_shipped_case_has_one_degree_of_freedom_per_input(path):
-    m = mobility(load_scene(path))
-    assert m.dof == len(m.inputs) == 1
+    scene = load_scene(path)
+    m = mobility(scene)
+    # a prescribed slide (a collar driven along a link) is a second input and a body of its own
+    assert m.dof == len(m.inputs) == 1 + len(scene.prescribed)
+
+
+def test_a_collar_on_a_rotating_rod_has_two_degrees_of_freedom():
+    # frame, rod OA, collar C: n = 3; pin O and the collar's slide on OA: j = 2 → F = 6 − 4 = 2
+    m = mobility(load_scene(case_files()[0].parent / "new-collar-on-rotating-rod.toml"))
+    assert (len(m.bodies) + 1, m.revolutes, m.prismatics, m.dof) == (3, 1, 1, 2)
+    assert m.inputs == ("OA", "collar C")
 
 
 def test_hand_count_of_a_slider_crank():

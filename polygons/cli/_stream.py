@@ -35,7 +35,7 @@ def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> in
             raise UnknownLabelError(f"unknown link {name!r}: {suggest(name, probe['omega'])}",
                                     file=scene.file, where="sweep.links")
     drv = scene.driver
-    points = opt["points"] or ([s for s in scene.sliders if s in probe["travel"]
+    points = opt["points"] or ([s for s in scene.model.guide if s in probe["travel"]
                                 and not (not isinstance(drv, Crank) and s == drv.point)]
                                or [st.prog.plan.dyads[-1].placed[-1]])
     crank = drv.link if isinstance(drv, Crank) else None

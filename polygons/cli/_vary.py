@@ -69,7 +69,7 @@ def run_vary(args, scene: Scene) -> int:
     if args.points:
         points = [p.strip() for p in args.points.split(",") if p.strip()]
     else:
-        sliders = [s for s in scene.sliders
+        sliders = [s for s in scene.model.guide
                    if isinstance(drv, Crank) or s != getattr(drv, "point", None)]
         points = sliders or [b.plan.dyads[-1].placed[-1]]
     crank = drv.link if isinstance(drv, Crank) else None

@@ -386,14 +386,10 @@ def emulated_tolerances(sol: Solution, trials: int = 400) -> dict[str, float]:
     except UnsupportedError:  # a dyad the emulation does not draw: the stated ± % applies
         return {}
     out = {}
-    for name, stats in result.items():
-        m = re.match(r"^\|([va])_(.+)\|$", name) or re.match(r"^(ω|α)_(.+)$", name)
-        if not m or not isinstance(stats, dict) or "p95" not in stats:
-            continue
-        fn = {"v": "v", "a": "a", "ω": "omega", "α": "alpha"}[m.group(1)]
+    for q, stats in result.items():        # keyed by the typed quantity (scene.Quantity)
         p95 = float(stats["p95"])
         if math.isfinite(p95) and p95 > 0:
-            out[f"{fn}({m.group(2)})"] = p95
+            out[str(q)] = p95
     return out
 
 

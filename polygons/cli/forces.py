@@ -171,7 +171,7 @@ def _components(an: Analysis, st: State, lab: str, body: str, f) -> list[dict]:
                {"key": f"{body}_across", "words": f"component across {body} (90° CCW from "
                 f"{b.a}→{b.b})", "value": float(f @ perp(u))}]
     else:
-        u = np.array(model.scene.sliders[body].direction)
+        u = np.array(model.scene.model.guide[body].line.direction)
         out = [{"key": f"{body}_along_guide", "words": f"component along the guide of {body} "
                 f"(towards {_deg(u):.6g}°)", "value": float(f @ u)},
                {"key": f"{body}_across_guide", "words": f"component across the guide of "

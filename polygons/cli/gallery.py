@@ -114,10 +114,11 @@ def _mechanism(sol) -> str:
         return words
     scene = sol.scene
     parts = [f"{len(scene.links)} link{'s' if len(scene.links) != 1 else ''}"]
-    if scene.sliders:
-        parts.append(f"{len(scene.sliders)} slider{'s' if len(scene.sliders) != 1 else ''}")
-    if scene.slots:
-        parts.append(f"{len(scene.slots)} slot{'s' if len(scene.slots) != 1 else ''}")
+    model = scene.model
+    if model.guide:
+        parts.append(f"{len(model.guide)} slider{'s' if len(model.guide) != 1 else ''}")
+    if model.slot:
+        parts.append(f"{len(model.slot)} slot{'s' if len(model.slot) != 1 else ''}")
     return ", ".join(parts)
 
 

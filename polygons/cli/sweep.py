@@ -88,7 +88,7 @@ def _options(scene: Scene, args) -> dict:
 def _default_points(sw: Sweep) -> list[str]:
     scene = sw.scene
     drv = scene.driver
-    sliders = [s for s in scene.sliders if s in sw.travel
+    sliders = [s for s in scene.model.guide if s in sw.travel
                and not (not isinstance(drv, Crank) and s == drv.point)]
     if sliders:
         return sliders
@@ -329,7 +329,7 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
     for lab in points:
         if lab in sw.travel and lab in sw.slide_v:
             s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
-            e = scene.sliders[lab].angle
+            e = scene.model.guide[lab].line.angle
             out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
                        f"{np.nanmin(s) * f:.6g} … {np.nanmax(s) * f:.6g} {lu} "
                        f"(stroke {(np.nanmax(s) - np.nanmin(s)) * f:.6g} {lu})")

@@ -10,7 +10,8 @@ dyad").
 """
 from __future__ import annotations
 
-from . import crank, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive
+from . import crank, crossing, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive
+from .crossing import Crossing
 from .guided import Guided
 from .slide import SlideDyad
 from .crank import CrankDyad
@@ -26,9 +27,11 @@ DRIVERS = (crank, slider_drive)
 #: modules with ``matches(scene, placed) -> iterable of dyads`` (tried first in every pass)
 SLOT_KINDS = (rpr, slide)
 #: modules with ``claims(scene, x)`` and ``match(scene, x, placed, known) -> dyad | None``
-POINT_KINDS = (rpp, image, rrp, guided, rrr)
+POINT_KINDS = (rpp, image, rrp, guided, crossing, rrr)
 
-Dyad = CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP | Guided | SlideDyad
+Dyad = (CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP | Guided | SlideDyad
+        | Crossing)
 
-__all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad", "Guided", "SlideDyad",
+__all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad", "Guided",
+           "SlideDyad", "Crossing",
            "DRIVERS", "SLOT_KINDS", "POINT_KINDS"]

@@ -74,7 +74,7 @@ def input_with_efficiency(model: ForceModel, st: State) -> float:
 def velocity_ratio(model: ForceModel, st: State, out: Body) -> float:
     """|q̇_in / q̇_out|: ω_in/ω_out for a link, ω_in/v_out (1/m) for a slider block."""
     if out.kind == "block":
-        direction = np.array(st.vsol.scene.sliders[out.a].direction)
+        direction = np.array(st.vsol.scene.model.guide[out.a].line.direction)
         rate = float(np.array(st.vsol.points[out.a].velocity) @ direction)
     else:
         rate = body_omega(st.vsol, out)

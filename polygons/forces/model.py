@@ -154,8 +154,7 @@ def body_angle(sol: Solution, body: Body) -> float:
 def unit_r(sol: Solution, body: Body) -> np.ndarray:
     """Unit vector along ``body`` (its first label towards its second; a block: its guide)."""
     if body.kind == "block":
-        g = sol.scene.sliders[body.a]
-        return np.array(g.direction)
+        return np.array(sol.scene.model.guide[body.a].line.direction)
     d = position(sol, body.b) - position(sol, body.a)
     return d / float(np.hypot(*d))
 

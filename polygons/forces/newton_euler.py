@@ -86,7 +86,8 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
     slot_cols = []
     for s in model.slots:
         rp = _pos(sol, s.pin)
-        u = np.array(s.direction) if s.direction else rp - _pos(sol, s.pivot)
+        u = (np.array(s.direction) if s.direction else
+             _pos(sol, s.far) - _pos(sol, s.pivot) if s.far else rp - _pos(sol, s.pivot))
         n = perp(u / float(np.hypot(*u)))
         c = col(f"slot_{s.pin}_on_{s.lever}", f"slot force on {s.lever} at {s.pin} (⟂ slot)")
         add_force(c, s.lever, rp, n)
@@ -94,7 +95,7 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
         slot_cols.append((s, c, n))
     guide_cols = []
     for lab in model.guides:
-        n = perp(np.array(scene.sliders[lab].direction))
+        n = perp(np.array(scene.model.guide[lab].line.direction))
         r = _pos(sol, lab)
         cn = col(f"guide_force_{lab}", f"guide force on {lab} (⟂ guide)")
         add_force(cn, lab, r, n)
@@ -126,7 +127,7 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
             add_couple(cdrv, drv.link, 1.0)
         else:
             add_force(cdrv, drv.point, _pos(sol, drv.point),
-                      np.array(scene.sliders[drv.point].direction))
+                      np.array(scene.model.guide[drv.point].line.direction))
     else:
         cols[cdrv] = ("input angular acceleration" if isinstance(drv, Crank)
                       else "input acceleration")
@@ -178,8 +179,8 @@ def contact_force(model: ForceModel, ne: NEResult, label: str, body: str) -> np.
         found = True
     for s in model.slots:
         labs = {s.pin}
-        if s.lever == body and s.pin in model.scene.slots:
-            labs.add(model.scene.slots[s.pin].coincident)
+        if s.lever == body and s.coincident is not None:
+            labs.add(s.coincident)
         if label in labs and body in (s.lever, s.carrier):
             value, n = ne.slot[s.pin]
             f = f + (value * n if body == s.lever else -value * n)

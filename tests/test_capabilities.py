@@ -1,0 +1,135 @@
+"""Every kind × every method: each method handles a kind of dyad, body and pair or refuses it
+in one line naming both (polygons.model.check_handles) — never leaves it out silently.
+
+A representative shipped case is taken for every dyad kind the planner knows and for every
+kind of body and pair the mechanism model builds; each method runs on it and must either
+finish or raise an ``UnsupportedError`` whose words name the method and the kind.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from polygons import dyads
+from polygons.errors import UnsupportedError
+from polygons.evaluate import solve
+from polygons.model import BUILT, KIND_WORDS
+from polygons.scene import load_scene, parse_scene
+
+CASES = sorted((Path(__file__).resolve().parents[1] / "cases").glob("*.toml"))
+
+
+def _dyad_kinds() -> set[str]:
+    mods = dyads.DRIVERS + dyads.SLOT_KINDS + dyads.POINT_KINDS
+    return {name for name in dyads.__all__ if isinstance(getattr(dyads, name), type)
+            and any(getattr(m, name, None) is getattr(dyads, name) for m in mods)}
+
+
+def _kinds_of(path: Path) -> set[str]:
+    scene = load_scene(path)
+    sol = solve(scene)
+    return ({type(d).__name__ for d in sol.plan.dyads} | set(scene.model.kinds))
+
+
+KINDS = {p: _kinds_of(p) for p in CASES}
+
+
+def _representatives() -> dict[str, Path]:
+    out: dict[str, Path] = {}
+    for p in CASES:
+        for k in sorted(KINDS[p]):
+            out.setdefault(k, p)
+    return out
+
+
+REPS = _representatives()
+
+
+def test_every_dyad_kind_and_every_built_body_and_pair_kind_has_a_case():
+    assert _dyad_kinds() - set(REPS) == set()
+    assert set(BUILT) - set(REPS) == set()
+
+
+# ---------------------------------------------------------------- the methods
+def _forces(path: Path):
+    from polygons.forces.analysis import analyse
+    text = path.read_text(encoding="utf-8")
+    if "[masses" not in text:                   # give the force analysis something to do
+        first = load_scene(path).model.moving[0].name
+        text += f'\n[masses.{first}]\nmass = "1 kg"\n'
+    import tomllib
+    scene = parse_scene(tomllib.loads(text), file=str(path))
+    analyse(scene)
+
+
+def _centres(path: Path):
+    from polygons.centres import instant_centres
+    instant_centres(solve(load_scene(path)))
+
+
+def _space(path: Path):
+    from diagrams.space import drawing
+    drawing(solve(load_scene(path)))
+
+
+def _board(path: Path):
+    from polygons.drawing_board import emulate
+    from polygons.position import driver_input
+    scene = load_scene(path)
+    emulate(scene, [driver_input(scene)], trials=2)
+
+
+def _compiled(path: Path):
+    from polygons.compiled import compile_scene
+    scene = load_scene(path)
+    prog = compile_scene(scene)
+    assert prog is not None
+
+
+METHODS = {"polygons forces": _forces, "polygons centres": _centres,
+           "the space diagram": _space, "the drawing-board emulation": _board,
+           "the compiled evaluator": _compiled}
+
+
+@pytest.mark.parametrize("method", sorted(METHODS))
+@pytest.mark.parametrize("kind", sorted(REPS))
+def test_each_method_handles_each_kind_or_refuses_it_in_words(kind, method):
+    path = REPS[kind]
+    try:
+        METHODS[method](path)
+    except UnsupportedError as e:
+        msg = str(e)
+        assert method in msg, f"{path.name}: the refusal does not name {method!r}: {msg}"
+        assert any(w in msg for w in KIND_WORDS.values()), \
+            f"{path.name}: the refusal does not name a kind in words: {msg}"
+        assert "\n" not in msg and "Dyad" not in msg and "dyad" not in msg.split(":")[-1]
+
+
+def test_a_refusal_names_the_method_and_the_kind():
+    from polygons.model import check_handles
+    scene = load_scene(REPS["collar"])
+    with pytest.raises(UnsupportedError) as e:
+        check_handles("polygons forces", BUILT - {"collar"}, scene.model)
+    assert "polygons forces does not handle a collar driven along a link" in str(e.value)
+    check_handles("the space diagram", BUILT, scene.model)      # handled: no error
+
+
+def test_the_model_of_a_quick_return():
+    m = load_scene(next(p for p in CASES if p.stem == "s003-fig7")).model
+    assert [b.kind for b in m.bodies] == ["frame", "link", "lever", "pin-block"]
+    (slot,) = m.slots()
+    assert (slot.at, slot.carrier, slot.block, slot.coincident) == ("P2", "O4P4", "block P2",
+                                                                   "P4")
+    assert sorted((t.label, t.bodies) for t in m.turning) == [
+        ("O2", ("frame", "O2P2")), ("O4", ("frame", "O4P4")), ("P2", ("O2P2", "block P2"))]
+    pos = {"O4": (0.0, 0.0), "P2": (0.3, 0.4)}
+    through, e = slot.line.at(pos)
+    assert through == (0.0, 0.0) and math.isclose(e[0], 0.6) and math.isclose(e[1], 0.8)
+
+
+def test_the_model_is_frozen():
+    m = load_scene(CASES[0]).model
+    with pytest.raises(Exception):
+        m.bodies = ()           # type: ignore[misc]
