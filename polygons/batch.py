@@ -259,7 +259,9 @@ def _solve_located(scene: Scene, cols: dict, shape, n: int) -> Batch:
     for g, (gx, gy) in vs.ground.items():
         pos[g] = np.array([np.broadcast_to(gx, (n,)), np.broadcast_to(gy, (n,))], dtype=float)
     for d in plan.dyads:
-        pts, m = d.locate(vs, pos, prog.sigma.get(d.placed[0]), x)
+        sig = ({k: prog.sigma[k] for k in d.sigma_keys} if getattr(d, "many_closures", False)
+               else prog.sigma.get(d.placed[0]))
+        pts, m = d.locate(vs, pos, sig, x)
         pos.update({k: np.broadcast_to(v, (2, n)) for k, v in pts.items()})
         if m is not None:
             m = np.broadcast_to(m, (n,))

@@ -97,6 +97,31 @@ class Program:
             raise self._error(self.code.fails[f.args[0]], x) from None
 
 
+    def solve_along(self, xs, start: int = 0) -> list:
+        """:meth:`solve` at each input of ``xs`` (a path of neighbouring inputs), outwards from
+        ``xs[start]``: a group of several closures (a triad) follows its closure from each
+        position to the next, as a sweep does.  None where the construction fails."""
+        from dataclasses import replace
+        from .errors import PolygonsError
+        groups = [d for d in self.plan.dyads if getattr(d, "many_closures", False)]
+        out: list = [None] * len(xs)
+        for order in (range(start, len(xs)), range(start, -1, -1)):
+            prog = self
+            for k in order:
+                try:
+                    sol = prog.solve(float(xs[k]))
+                except (PolygonsError, ArithmeticError, ValueError):
+                    continue            # this frame fails (a toggle): the next follows on
+                out[k] = sol
+                if groups:
+                    sigma = dict(prog.sigma)
+                    for d in groups:
+                        B, X = sol.position(d.b), sol.position(d.x)
+                        sigma.update(zip(d.sigma_keys, (B[0], B[1], X[0], X[1])))
+                    prog = replace(prog, sigma=sigma,
+                                   params=_params(prog.code, prog.scene, sigma))
+        return out
+
     def _error(self, why, x):
         scene = self.scene
         if why[0] == "dyad":

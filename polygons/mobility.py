@@ -111,6 +111,7 @@ def used_links(dyads) -> set[str]:
             name = getattr(d, attr, None)
             if name:
                 used.add(name)
+        used.update(getattr(d, "links", ()))
     return used
 
 

@@ -75,6 +75,12 @@ def _order(scene: Scene) -> list[Dyad]:
                 dyads.append(d)
                 placed.update(d.placed)
                 progress = True
+        if not progress:        # no dyad fits: a group of a higher class (a triad) may
+            for module in kinds.GROUP_KINDS:
+                for d in module.matches(scene, placed):
+                    dyads.append(d)
+                    placed.update(d.placed)
+                    progress = True
         if all(lab in placed for lab in labels) or not progress:
             break
 

@@ -61,6 +61,14 @@ def assemble(plan: Plan) -> Placement:
 def _place(plan: Plan, scene: Scene, pos, chosen, sigmas, size, x_in) -> None:
     """Each dyad's ``locate`` in order; a closure that fails says why in the dyad's words."""
     for dyad in plan.dyads:
+        if getattr(dyad, "many_closures", False):
+            pts, why = _choose_group(dyad, scene, pos, size)
+            pos.update(pts)
+            ref = (pts[dyad.b][0], pts[dyad.b][1], pts[dyad.x][0], pts[dyad.x][1])
+            sigmas.update(zip(dyad.sigma_keys, (float(v) for v in ref)))
+            if why:
+                chosen.append((dyad.b, why))
+            continue
         if dyad.two_closures:
             x = dyad.placed[0]
             c1, m1 = dyad.locate(scene, pos, 1.0, x_in)
@@ -154,6 +162,46 @@ def _choose(x, cands, scene: Scene, pos, size, default_ref):
                           f"{_fmt(c2)} satisfies '{branch.text}'; use another reference or "
                           f"near = [...]", file=scene.file, where=where)
     return ok[0], f"{branch.text} → {_fmt(ok[0])}"
+
+
+def _choose_group(dyad, scene: Scene, pos, size):
+    """The closure of a group with several (a triad: up to six) that the scene's words choose:
+    ``[assembly]`` on any of its points (words or ``near``), or its [drawn] positions; one
+    closure needs no words.  Returns (points, description)."""
+    cands = dyad.closures(scene, pos)
+    if not cands:
+        raise AssemblyError(dyad.why_not(scene, pos), file=scene.file, where=dyad.placed[0])
+    labels = dyad.placed[:3]
+    stated = [(k, scene.assembly[k]) for k in labels if k in scene.assembly]
+    stated += [(k, Branch(k, f"{k} as drawn", "near", near=scene.drawn[k])) for k in labels
+               if k in scene.drawn and k not in scene.assembly]
+    listing = "; ".join(", ".join(f"{k} {_fmt(c[k])}" for k in labels) for c in cands)
+    if not stated:
+        if len(cands) == 1:
+            return cands[0], ""
+        k = labels[-1]
+        raise BranchError(
+            f"the class-III group {''.join(labels)} has {len(cands)} closures ({listing}); say "
+            f"which in [assembly], e.g. {k} = {{ near = [x, y] }} or {k} = \"{k} above ...\"",
+            file=scene.file, where=f"assembly.{k}")
+    ok = list(cands)
+    for k, branch in stated:
+        if branch.relation == "near":
+            nx, ny = branch.near
+            dist = [math.hypot(float(c[k][0]) - nx, float(c[k][1]) - ny) for c in ok]
+            best = min(dist)
+            ok = [c for c, dd in zip(ok, dist) if dd <= best + 1e-9 * size]
+        else:
+            ok = [c for c in ok if satisfies(branch, c[k], pos, scene)]
+    if len(ok) != 1:
+        words = " and ".join(f"'{b.text}'" for _, b in stated)
+        raise BranchError(f"{'more than one' if ok else 'none'} of the {len(cands)} closures "
+                          f"of the class-III group {''.join(labels)} ({listing}) satisfies "
+                          f"{words}; add words for another corner or near = [...]",
+                          file=scene.file, where=f"assembly.{stated[0][0]}")
+    pick = ok[0]
+    return pick, (f"{' and '.join(b.text for _, b in stated)} → "
+                  f"{', '.join(f'{k} {_fmt(pick[k])}' for k in labels)}")
 
 
 def _fmt(c) -> str:

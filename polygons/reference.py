@@ -14,7 +14,7 @@ from .schema import Key, Table
 
 #: modules that declare scene tables (a module that does not exist yet is skipped)
 MODULES = ("polygons.scene", "polygons.topology", "polygons.options", "polygons.loads",
-           "polygons.pins")
+           "polygons.pins", "polygons.exam_table")
 REFERENCE = "docs/scene-reference.md"
 JSON_SCHEMA = "polygons/scene.schema.json"
 _LABEL_RE = r"^[A-Z][a-z0-9_']*$"
@@ -158,8 +158,16 @@ def _key_schema(k: Key) -> dict:
         d["anyOf"] = [{"const": "drawn"}, {"type": "string",
                                           "pattern": _unit_pattern("length")}]
     elif k.type == "point":
-        d |= {"type": "array", "minItems": 2, "maxItems": 2,
-              "items": {"type": "string", "pattern": _unit_pattern("length")}}
+        arr = {"type": "array", "minItems": 2, "maxItems": 2,
+               "items": {"type": "string", "pattern": _unit_pattern("length")}}
+        if k.name == "<LABEL>" and "from" in k.doc:     # a pivot placed from another
+            d["anyOf"] = [arr, {"type": "object", "additionalProperties": False,
+                                "required": ["from", "distance", "angle"],
+                                "properties": {"from": {"type": "string", "pattern": _LABEL_RE},
+                                               "distance": {"type": "string"},
+                                               "angle": {"type": "string"}}}]
+        else:
+            d |= arr
     elif k.type == "label":
         d |= {"type": "string", "pattern": _LABEL_RE}
     elif k.type == "link":

@@ -43,6 +43,7 @@ from typing import Any, Mapping
 from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
+from .exam_table import spec as exam_spec
 from .loads import parse as parse_loads
 from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record
@@ -61,7 +62,7 @@ OPTION_KEYS = ("sweep", "diagram", "handout")
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                   "force_answers", "flywheel", "efficiency", "pins", "least_velocity",
-                  "pin_answers")
+                  "pin_answers", "exam")
 DIAGRAMS = ("velocity", "acceleration")
 #: the text keys of [source] (where the case comes from; shown in reports and handouts)
 SOURCE_TEXT = ("id", "seed", "example", "category", "statement", "conventions", "notes",
@@ -262,7 +263,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
-            required=("ground", "links", "driver"))
+            required=("ground", "driver"))
     options = parse_options(data, file)
     title = r.string(data["title"], "title") if "title" in data else path_stem(file)
     source = data.get("source", {})
@@ -278,7 +279,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     ground = {}
     for name, value in ground_raw.items():
         where = f"ground.{name}"
-        ground[r.label(name, where)] = r.vec(value, where)
+        ground[r.label(name, where)] = (topology.ground_from(value, r, where, ground)
+                                        if isinstance(value, dict) else r.vec(value, where))
     if not ground:
         raise SceneError("at least one fixed pivot is needed", file=file, where="ground")
 
@@ -288,7 +290,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     placed = {**drawn, **ground}
 
     # links
-    links_raw = r.named(data["links"], "links")
+    links_raw = r.named(data.get("links", {}), "links")
     links: dict[str, Link] = {}
     for name, value in links_raw.items():
         a, b = split_link_name(name, file=file, where=f"links.{name}")
@@ -358,7 +360,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise UnknownLabelError(f"link {show(on)} is not defined: "
                                     f"{suggest(on, list(links) + [s.lever for s in slots.values()])}",
                                     file=file, where=where + ".on")
-        along, fraction, left = topology.point_on_link(spec, r, where)
+        along, fraction, left = topology.point_on_link(
+            spec, r, where, links[on].length if on in links else None)
         points[label] = BodyPoint(label, on, along, fraction, left)
 
     known = set(ground)
@@ -374,8 +377,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                     file=file, where=where)
         return label
 
+    slider_labels = set(data.get("sliders", {})) if isinstance(data.get("sliders"), dict) \
+        else set()
     for slot in slots.values():
-        if slot.pin not in known:
+        if slot.pin not in known and slot.pin not in slider_labels:
             raise SceneError(f"the pin {slot.pin} sliding in the slot of {slot.lever} is on no "
                              f"link: make it the end of a link (a crank, a rocker) or a point "
                              f"of one in [points]", file=file, where=f"slots.{slot.pin}")
@@ -406,7 +411,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             known.add(label)
             sliders[label] = Guide(through, angle, pin, slot_angle)
         else:
-            need_label(r.label(label, where), where)
+            if label in slots:      # the pin of a slot driven along a fixed guide (a collar on
+                known.add(r.label(label, where))        # a screw moving a slotted arm)
+            else:
+                need_label(r.label(label, where), where)
             sliders[label] = Guide(through, angle)
 
     # crossing slots: a pin in the slots of two moving levers
@@ -423,7 +431,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     # driver
     drv = data["driver"]
     r.table(drv, "driver", KEYS["driver"])
-    drv = topology.lever_as_crank(drv, r, data.get("slots", {}), data["links"])
+    drv = topology.lever_as_crank(drv, r, data.get("slots", {}), data.get("links", {}))
     prescribed = {}
     if "slide" in drv:
         sl = topology.parse_slide(drv["slide"], r, links, split_link_name,
@@ -480,13 +488,21 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         driver = record(Crank, link=name, pivot=pivot, tip=tip, angle=angle, omega=omega,
                         alpha=alpha)
     else:
-        r.table(drv, "driver", ("slider", "position", "velocity", "acceleration"),
-                required=("slider", "position", "velocity"))
+        r.table(drv, "driver", ("slider", "position", "velocity", "acceleration", "rod",
+                                "rod_angle"), required=("slider", "velocity"))
         point = need_label(r.label(drv["slider"], "driver.slider"), "driver.slider")
         if point not in sliders:
             raise SceneError(f"slider driver {point} needs a guide: add [sliders.{point}]",
                              file=file, where="driver.slider")
-        driver = SliderDrive(point, r.quantity(drv["position"], "length", "driver.position"),
+        if ("position" in drv) == ("rod" in drv or "rod_angle" in drv):
+            raise SceneError("place the slider driver by its position (position = \"150 mm\") "
+                             "or by the angle of its rod (rod = \"BA\", rod_angle = "
+                             "\"30 deg\"): give exactly one", file=file, where="driver")
+        position = (r.quantity(drv["position"], "length", "driver.position")
+                    if "position" in drv else topology.slider_by_rod(
+                        drv, r, point, sliders, links, ground, data.get("assembly", {}),
+                        split_link_name))
+        driver = SliderDrive(point, position,
                              r.quantity(drv["velocity"], "velocity", "driver.velocity"),
                              r.quantity(drv.get("acceleration", "0 m/s^2"), "acceleration",
                                         "driver.acceleration"))
@@ -541,6 +557,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
     scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
+    exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
     return scene
 
 

@@ -155,7 +155,15 @@ class Program:
 
     @property
     def branches(self) -> Mapping[str, int]:
-        return {k: int(v) for k, v in self.sigma.items()}
+        """label -> σ of each two-closure dyad; a group of several closures (a triad's, kept
+        as 'B#bx' ... in ``sigma`` and followed by continuation) -> 0 under the corner the
+        scene's [assembly] names (else its first)."""
+        out = {k: int(v) for k, v in self.sigma.items() if "#" not in k}
+        for d in self.plan.dyads:
+            if getattr(d, "many_closures", False):
+                named = [k for k in d.placed[:3] if k in self.scene.assembly] or [d.placed[0]]
+                out[named[0]] = 0
+        return out
 
 
 def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
@@ -178,6 +186,8 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
                     f"): the two closures coincide, so there is no branch to follow; state the "
                     f"scene at another input", file=scene.file, where=x)
             sigma[x] = placement.sigmas[x]      # the closure the assembly took
+        elif getattr(d, "many_closures", False):     # a triad: the closure's corners
+            sigma.update({k: placement.sigmas[k] for k in d.sigma_keys})
     drv = scene.driver
     if isinstance(drv, Crank):
         kind, x0, rate, rate2 = "crank", drv.angle, drv.omega, drv.alpha

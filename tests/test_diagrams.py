@@ -151,6 +151,8 @@ def test_arrows_join_their_vertices_in_the_sense_of_the_step_vectors(path):
         r = measure.read_svg(to_svg(d))
         drawn = {(v.frm, v.to): v for v in r.vectors}
         for v in r.vectors:          # tail at `frm`, tip at `to`
+            if v.mm < 0.05:          # shorter than a vertex mark: its ends share one mark
+                continue
             for end, name in ((v.tail, v.frm), (v.tip, v.to)):
                 assert math.dist(end, r.vertices[name]) < 0.01, (kind, v)
         for s in sol.steps:

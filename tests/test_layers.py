@@ -18,6 +18,8 @@ WHERE = {
     "polygons.theorems": "base", "polygons.steps": "base",
     "polygons.scene": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
+    "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
+    "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
     # the mechanism model: the joint tables read once into bodies and pairs, the last step of
     # loading a scene (polygons.scene builds it; every layer above reads it)

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from polygons.mobility import MobilityError
+from polygons.errors import BranchError
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
@@ -679,11 +680,16 @@ def _crank_scene(**extra):
     return parse_scene(data)
 
 
-def test_a_triad_is_named_as_a_class_iii_group():
+def test_a_triad_is_solved_as_a_class_iii_group_once_its_closure_is_chosen():
+    # the group closes in several ways: refused, listing them, until [assembly] chooses one
     scene = _crank_scene(links={"AB": "0.2 m", "BC": "0.15 m", "CD": "0.2 m", "BX": "0.1 m",
                                 "XE": "0.1 m", "CX": "0.12 m"})
-    with pytest.raises(UnsupportedError, match="class-III Assur group"):
+    with pytest.raises(BranchError, match="class-III group BCX has 4 closures"):
         solve(scene)
+    chosen = _crank_scene(links={"AB": "0.2 m", "BC": "0.15 m", "CD": "0.2 m", "BX": "0.1 m",
+                                 "XE": "0.1 m", "CX": "0.12 m"},
+                          assembly={"X": {"near": ["0.21 m", "0.22 m"]}})
+    assert solve(chosen).points["X"].position == pytest.approx((0.21068, 0.22052), abs=1e-5)
 
 
 def test_a_point_on_one_link_is_named():

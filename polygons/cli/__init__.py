@@ -23,6 +23,8 @@ COMMANDS = {
                                         "worksheet"),
     "centres": ("polygons.cli.centres", "instantaneous centres (Kennedy), rubbing and least "
                                         "velocities"),
+    "exam": ("polygons.cli.exam", "seeded exam variants: Moodle XML, GIFT, QTI, key and "
+                                  "worksheets"),
     "gallery": ("polygons.cli.gallery", "write every case's handout and worksheet and an "
                                         "index page"),
 }

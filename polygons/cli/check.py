@@ -573,7 +573,10 @@ def register(sub) -> None:
                     "the tolerance of a careful drawing; hints name the step to recheck. "
                     "Exit 0: all within tolerance; 3: some off; 1: error.")
     p.add_argument("scene", help="scene file (TOML)")
-    p.add_argument("--measured", nargs="+", required=True, metavar="NAME=VALUE",
+    p.add_argument("--drawing", metavar="FILE",
+                   help="grade a drawn velocity or acceleration polygon (JSON or the "
+                        "interactive page's SVG; README, 'Exams and grading')")
+    p.add_argument("--measured", nargs="+", metavar="NAME=VALUE",
                    help="measured values, SI unless a unit is written: v_C=7.1 "
                         "alpha_CD=150000CW omega_BC='230 rad/s'")
     p.add_argument("--tolerance", help="one relative tolerance for every value instead of "
@@ -589,6 +592,22 @@ def register(sub) -> None:
 def run(args) -> int:
     scene = load_scene(args.scene)
     sol = solve(scene)
+    if not args.measured and not args.drawing:
+        raise MeasuredError("give --measured NAME=VALUE ... or --drawing FILE")
+    if args.drawing:
+        if args.measured or args.scale or args.tolerance is not None:
+            raise MeasuredError("--drawing takes neither --measured, --scale nor --tolerance "
+                                "(the drawing states its scale; its tolerances are the "
+                                "emulation's)")
+        from . import _drawing
+        g = _drawing.grade_file(sol, args.drawing, emulated_tolerances(sol),
+                                stated_tolerance(sol))
+        if args.json:
+            from ..report import json_text
+            emit(json_text(_drawing.to_json(sol, g, args.drawing)), args.out)
+        else:
+            emit(_drawing.report(sol, g, args.drawing), args.out)
+        return 0 if g.ok else 3
     measured = parse_measured(sol, args.measured)
     pct = None
     if args.tolerance is not None:

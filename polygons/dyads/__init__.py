@@ -10,8 +10,9 @@ dyad").
 """
 from __future__ import annotations
 
-from . import crank, crossing, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive
+from . import crank, crossing, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive, triad
 from .crossing import Crossing
+from .triad import Triad
 from .guided import Guided
 from .slide import SlideDyad
 from .crank import CrankDyad
@@ -28,10 +29,13 @@ DRIVERS = (crank, slider_drive)
 SLOT_KINDS = (rpr, slide)
 #: modules with ``claims(scene, x)`` and ``match(scene, x, placed, known) -> dyad | None``
 POINT_KINDS = (rpp, image, rrp, guided, crossing, rrr)
+#: modules with ``matches(scene, placed)``: groups of a higher class (a triad), tried when no
+#: dyad can be placed
+GROUP_KINDS = (triad,)
 
 Dyad = (CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP | Guided | SlideDyad
-        | Crossing)
+        | Crossing | Triad)
 
 __all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad", "Guided",
-           "SlideDyad", "Crossing",
+           "SlideDyad", "Crossing", "Triad", "GROUP_KINDS",
            "DRIVERS", "SLOT_KINDS", "POINT_KINDS"]

@@ -22,6 +22,7 @@ import math
 import numpy as np
 
 from ..theorems import perp
+from .triad_math import triad_cols, triad_scalar
 
 #: a closure discriminant within this fraction of the squared size is a double closure
 CLOSE_TOL = 1e-12
@@ -170,7 +171,7 @@ def end_margin_cols(m0, t, lo, hi, tol):
 
 #: the array form of each scalar fast path (for the compiled program run on arrays)
 ARRAY_TWIN = {circle_circle_scalar: circle_circle_cols, circle_line_scalar: circle_line_cols,
-              end_margin_scalar: end_margin_cols}
+              end_margin_scalar: end_margin_cols, triad_scalar: triad_cols}
 
 
 def as_col(v, like):

@@ -1,0 +1,323 @@
+"""The class-III Assur group (a triad): a rigid plate with corners B, C, X, each joined by a
+binary link to a placed point (AB, DC, EX).  No dyad places it: the three corners close
+together.
+
+The scene states it as the book draws it, with no table of its own: the plate is a link BC
+carrying a point X ([points.X] on = "BC", a ternary link), or a triangle of three links BC,
+CX, BX (its mirror image is then a closure too); each corner has one more link to a placed
+point.  ``[assembly]`` (words or ``near``) on any corner chooses the closure.
+
+Position: every closure, numerically (:mod:`polygons.dyads.triad_math`); the one the scene's
+words or ``near`` choose, followed by continuation through a sweep.
+
+Velocity, by the auxiliary (Assur) point S, where the lines of AB and DC cross: S is a point
+of the plate on AB produced, so v_S − v_A = ω_AB × AB + ω_plate × BS is ⟂ AB, and likewise
+v_S − v_D ⟂ DC: s is where the line ⟂ AB through a meets the line ⟂ DC through d.  Then
+v_X − v_S ⟂ SX and v_X − v_E ⟂ EX give x, and b, c are images on the plate (s, x).
+
+Acceleration, the same with the normal parts known: a_S = a_A + ω_AB² (A − B) + ω_p² (B − S)
++ [⟂ AB] = a_D + ω_DC² (D − C) + ω_p² (C − S) + [⟂ DC] gives s′; a_X = a_S + ω_p² (S − X)
++ [⟂ SX] = a_E + ω_EX² (E − X) + [⟂ EX] gives x′; b′, c′ are images.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..steps import Builder, Component, Kind, Op
+from . import image
+from .base import size_of
+from .triad_math import triad_cols, triad_scalar
+
+
+@dataclass(frozen=True)
+class Triad:
+    """Plate ``plate`` with corners ``b``, ``c``, ``x`` joined by ``link_b``, ``link_c``,
+    ``link_x`` to the placed ``ob``, ``oc``, ``ox``; ``s`` the Assur point (on AB and DC
+    produced); ``ternary``: the plate is a link with a [points] corner (else a triangle of
+    links, whose mirror image is a closure too)."""
+    b: str
+    c: str
+    x: str
+    ob: str
+    oc: str
+    ox: str
+    link_b: str
+    link_c: str
+    link_x: str
+    plate: str
+    plate_links: tuple[str, ...]
+    s: str
+    ternary: bool
+    two_closures = False
+    many_closures = True
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.b, self.c, self.x, self.s)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.ob, self.oc, self.ox)
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        return (self.link_b, self.link_c, self.link_x) + self.plate_links
+
+    @property
+    def sigma_keys(self) -> tuple[str, ...]:
+        """Where the chosen closure is kept (the record of the assembly), under B's label: B's
+        and X's coordinates, the reference a sweep follows ('#': no label holds it)."""
+        return (f"{self.b}#bx", f"{self.b}#by", f"{self.b}#xx", f"{self.b}#xy")
+
+    # ------------------------------------------------------------ geometry
+    def shape(self, scene) -> tuple[float, float, float]:
+        """The plate in its own frame: C = (L, 0), X = (ξ, η) from B."""
+        if self.ternary:
+            L = scene.links[self.plate].length
+            bp = scene.points[self.x]
+            along = bp.along if bp.along is not None else bp.fraction * L
+            return L, along, bp.left
+        lbc, lbx, lcx = (scene.links[n].length for n in self.plate_links)
+        xi = (lbc * lbc + lbx * lbx - lcx * lcx) / (2.0 * lbc)
+        return lbc, xi, np.sqrt(np.maximum(lbx * lbx - xi * xi, 0.0))   # (batch: arrays)
+
+    def _params(self, scene, pos):
+        L, xi, eta = self.shape(scene)
+        (ax, ay), (dx, dy), (ex, ey) = (pos[k] for k in (self.ob, self.oc, self.ox))
+        lk = scene.links
+        return (ax, ay, lk[self.link_b].length, dx, dy, lk[self.link_c].length, ex, ey,
+                lk[self.link_x].length, L, xi, eta, 0.0 if self.ternary else 1.0)
+
+    def closures(self, scene, pos) -> list[dict]:
+        """Every closure at the positions ``pos``: {B, C, X, S} each."""
+        from .triad_math import all_corners
+        p = tuple(float(v) for v in self._params(scene, pos))
+        out = []
+        for B, C, X in all_corners(p, size_of(scene)):
+            pts = {self.b: np.array(B), self.c: np.array(C), self.x: np.array(X)}
+            pts[self.s] = self._assur(pos, pts)
+            out.append(pts)
+        return out
+
+    def _assur(self, pos, pts):
+        """S = A + t (B − A) on CD produced: t = ((D − A) × (C − D)) / ((B − A) × (C − D))."""
+        a, d = pos[self.ob], pos[self.oc]
+        u, w = pts[self.b] - a, pts[self.c] - d
+        den = u[0] * w[1] - u[1] * w[0]
+        q = d - a
+        with np.errstate(all="ignore"):
+            t = (q[0] * w[1] - q[1] * w[0]) / np.where(den != 0.0, den, np.nan)
+        return a + t * u
+
+    def locate(self, scene, pos, sigma, x):
+        """The closure nearest the reference ``sigma`` ({key: value} of :attr:`sigma_keys`;
+        None: the first closure), over one position or (2, N) arrays (continuation)."""
+        p = self._params(scene, pos)
+        ref = [sigma[k] for k in self.sigma_keys] if sigma else None
+        size = size_of(scene)
+        if np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1 \
+                and np.ndim(pos[self.ox]) == 1:
+            if ref is None:
+                cands = self.closures(scene, pos)
+                if not cands:
+                    return self._nan(pos), -1.0
+                B, X = cands[0][self.b], cands[0][self.x]
+                ref = [B[0], B[1], X[0], X[1]]
+            r = triad_scalar(*(float(v) for v in p), *ref, size)
+        else:
+            r = triad_cols(*p, *(ref or [0.0] * 4), size)
+        pts = {self.b: np.array([r[0], r[1]]), self.c: np.array([r[2], r[3]]),
+               self.x: np.array([r[4], r[5]])}
+        pts[self.s] = self._assur(pos, pts)
+        return pts, r[6]
+
+    def _nan(self, pos):
+        return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
+                for k in self.placed}
+
+    def source(self, g) -> None:
+        """:meth:`locate` as generated code: every closure by triad_math (its array twin
+        follows the closure through a sweep), the one nearest the assembly's; then S."""
+        (ax, ay), (dx, dy), (ex, ey) = (g.pos(k) for k in (self.ob, self.oc, self.ox))
+        lb = g.param(lambda s: s.links[self.link_b].length)
+        lc = g.param(lambda s: s.links[self.link_c].length)
+        lx = g.param(lambda s: s.links[self.link_x].length)
+        L = g.param(lambda s: self.shape(s)[0])
+        xi = g.param(lambda s: self.shape(s)[1])
+        eta = g.param(lambda s: self.shape(s)[2])
+        refs = [g.sigma(k) for k in self.sigma_keys]
+        size = g.param(lambda s: size_of(s))
+        bx, by, cx, cy, xx, xy, m = g.call(
+            triad_scalar, ax, ay, lb, dx, dy, lc, ex, ey, lx, L, xi, eta,
+            "0.0" if self.ternary else "1.0", *refs, size, n=7)
+        g.margin(m)
+        g.place(self.b, bx, by)
+        g.place(self.c, cx, cy)
+        g.place(self.x, xx, xy)
+        ux, uy = g.let(f"{bx} - {ax}"), g.let(f"{by} - {ay}")
+        wx, wy = g.let(f"{cx} - {dx}"), g.let(f"{cy} - {dy}")
+        den = g.let(f"{ux} * {wy} - {uy} * {wx}")
+        safe = g.let(f"where({den} != 0.0, {den}, nan)" if g.arrays else
+                     f"({den} if {den} != 0.0 else nan)")
+        t = g.let(f"(({dx} - {ax}) * {wy} - ({dy} - {ay}) * {wx}) / {safe}")
+        g.place(self.s, g.let(f"{ax} + {t} * {ux}"), g.let(f"{ay} + {t} * {uy}"))
+
+    def why_not(self, scene, pos) -> str:
+        return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c}, "
+                f"{self.x} on the links {self.link_b}, {self.link_c}, {self.link_x}) cannot "
+                f"close at this input: no position of the plate gives all three links their "
+                f"lengths")
+
+    def toggle_reason(self, scene, pos) -> str:
+        return (f"two closures of the class-III group {self.b}{self.c}{self.x} meet here "
+                f"(the plate {self.plate} cannot turn further this way)")
+
+    # ------------------------------------------------------------ construction
+    def emit(self, b: Builder) -> None:
+        B, C, X, S = self.b, self.c, self.x, self.s
+        A, D, E = self.ob, self.oc, self.ox
+        P, LB, LC, LX = self.plate, self.link_b, self.link_c, self.link_x
+        V = b.names.of
+        a, d, e, s, x = V(A), V(D), V(E), V(S), V(X)
+        Cm = Component
+        if b.velocity:
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (A, B), f"line ⟂ {A}{B}", a, None,
+                       "relative_velocity", f"(v_{S})_{A}", f"(v_{S})_{A} ⟂ {A}{B}",
+                       f"The auxiliary point {S}, where {A}{B} and {D}{C} produced meet, is a "
+                       f"point of the plate {P} on {A}{B} produced: its velocity relative to "
+                       f"{A} is perpendicular to {A}{B}. Through {a} draw a line ⟂ {A}{B}.",
+                       component=Cm.CONSTRUCTION, link=LB)
+            n2 = b.add(Kind.LINE, Op.LINE_PERP, (D, C), f"line ⟂ {D}{C}", d, None,
+                       "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
+                       f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
+                       component=Cm.CONSTRUCTION, link=LC)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
+                  f"{s} = intersection of the two lines",
+                  f"The lines meet at {s}: {b.names.pole}{s} is the velocity of the "
+                  f"auxiliary point {S}.", (n1, n2), component=Cm.RESULTANT)
+            n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
+                       "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
+                       f"{X} and {S} are points of the plate: through {s} draw a line "
+                       f"⟂ {S}{X}.", component=Cm.CONSTRUCTION, link=P)
+            n4 = b.add(Kind.LINE, Op.LINE_PERP, (E, X), f"line ⟂ {E}{X}", e, None,
+                       "relative_velocity", f"(v_{X})_{E}", f"(v_{X})_{E} ⟂ {E}{X}",
+                       f"Through {e} draw a line ⟂ {E}{X}: the velocity of {X} relative to "
+                       f"{E}.", component=Cm.CONSTRUCTION, link=LX)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
+                  f"{x} = intersection of the two lines",
+                  f"The lines meet at {x}: {b.names.pole}{x} is the velocity of {X}.",
+                  (n3, n4), component=Cm.RESULTANT)
+            self._rates(b, Op.OMEGA)
+            return
+        k = [b.fresh(B), b.fresh(S), b.fresh(C), b.fresh(S), b.fresh(X), b.fresh(X)]
+        self._normal(b, LB, A, B, a, k[0], f"(a_{B})_{A}^n")
+        self._normal(b, P, B, S, k[0], k[1], f"(a_{S})_{B}^n")
+        n1 = self._tangent_line(b, A, B, k[1], LB)
+        self._normal(b, LC, D, C, d, k[2], f"(a_{C})_{D}^n")
+        self._normal(b, P, C, S, k[2], k[3], f"(a_{S})_{C}^n")
+        n2 = self._tangent_line(b, D, C, k[3], LC)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
+              f"{s} = intersection of the two lines",
+              f"The lines meet at {s}: {b.names.pole}{s} is the acceleration of the "
+              f"auxiliary point {S}.", (n1, n2), component=Cm.RESULTANT)
+        self._normal(b, P, S, X, s, k[4], f"(a_{X})_{S}^n")
+        n3 = self._tangent_line(b, S, X, k[4], P)
+        self._normal(b, LX, E, X, e, k[5], f"(a_{X})_{E}^n")
+        n4 = self._tangent_line(b, E, X, k[5], LX)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
+              f"{x} = intersection of the two lines",
+              f"The lines meet at {x}: {b.names.pole}{x} is the acceleration of {X}.",
+              (n3, n4), component=Cm.RESULTANT)
+        self._rates(b, Op.ALPHA)
+
+    def _rates(self, b: Builder, op) -> None:
+        """The plate's ω (α) from s and x, the images b and c, each link's ω (α)."""
+        B, C, X, S = self.b, self.c, self.x, self.s
+        V = b.names.of
+        sym, what, th = (("ω", "angular velocity", "angular_velocity") if op is Op.OMEGA
+                         else ("α", "angular acceleration", "angular_acceleration"))
+        comp = Component.RELATIVE if op is Op.OMEGA else Component.TANGENTIAL
+        P = self.plate
+        b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{P}", None, None, th, f"{sym}_{P}",
+              f"{sym}_{P} = {V(S)}{V(X)} / {S}{X}",
+              f"The {what} of the plate {P} is {V(S)}{V(X)} (its part ⟂ {S}{X}) divided by "
+              f"{S}{X}.", component=comp, link=P)
+        image.emit_image(b, B, P, S, X)
+        image.emit_image(b, C, P, S, X)
+        for L, O, Q in ((self.link_b, self.ob, B), (self.link_c, self.oc, C),
+                        (self.link_x, self.ox, X)):
+            b.add(Kind.MEASURE, op, (L, O, Q), f"{sym}_{L}", None, None, th, f"{sym}_{L}",
+                  f"{sym}_{L} = {V(O)}{V(Q)} / {O}{Q}",
+                  f"The {what} of {L} is {V(O)}{V(Q)} (its part ⟂ {O}{Q}) divided by "
+                  f"{O}{Q}.", component=comp, link=L)
+
+    @staticmethod
+    def _normal(b: Builder, L, P, Q, frm, to, name) -> None:
+        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, Q), f"{frm}{to}", frm, to, "centripetal",
+              name, f"{name} = ω_{L}² × {P}{Q}",
+              f"From {frm} draw the centripetal acceleration of {Q} relative to {P}, ω_{L}² × "
+              f"{P}{Q}, pointing from {Q} towards {P}; call its end {to}.",
+              component=Component.CENTRIPETAL, link=L)
+
+    @staticmethod
+    def _tangent_line(b: Builder, P, Q, frm, L):
+        return b.add(Kind.LINE, Op.LINE_PERP, (P, Q), f"line ⟂ {P}{Q}", frm, None,
+                     "tangential", f"(a_{Q})_{P}^t", f"(a_{Q})_{P}^t ⟂ {P}{Q}",
+                     f"Through {frm} draw a line ⟂ {P}{Q} for the tangential accelerations, "
+                     f"of unknown length.", component=Component.CONSTRUCTION, link=L)
+
+
+# ---------------------------------------------------------------- finding the groups
+def _plates(scene):
+    """(corners (B, C, X), plate name, plate links, ternary) of every rigid plate: a link
+    with a [points] corner, or a triangle of three links."""
+    links = {n: l for n, l in scene.links.items() if l.length is not None}
+    for label, bp in scene.points.items():
+        ln = links.get(bp.link)
+        if ln is not None:
+            yield (ln.a, ln.b, label), ln.name, (ln.name,), True
+    ends = {}
+    for n, l in links.items():
+        ends.setdefault(l.a, {})[l.b] = n
+        ends.setdefault(l.b, {})[l.a] = n
+    seen = set()
+    for n, l in links.items():
+        for x in set(ends.get(l.a, {})) & set(ends.get(l.b, {})):
+            key = frozenset((l.a, l.b, x))
+            if key in seen:
+                continue
+            seen.add(key)
+            yield (l.a, l.b, x), n, (n, ends[l.a][x], ends[l.b][x]), False
+
+
+def _aux_label(scene, taken) -> str:
+    for lab in ("S",) + tuple(f"S{i}" for i in range(1, 100)):
+        if lab not in scene.labels and lab not in taken:
+            return lab
+    return "S_aux"
+
+
+def matches(scene, placed):
+    """Every triad whose three outer points are placed and whose corners are not."""
+    found = []
+    taken = set(placed)
+    for (B, C, X), plate, plate_links, ternary in _plates(scene):
+        corners = (B, C, X)
+        if any(k in placed or k in scene.sliders or k in scene.slots for k in corners):
+            continue
+        outer = []
+        for k in corners:
+            out = [(l.b if l.a == k else l.a, l.name) for l in scene.links.values()
+                   if k in (l.a, l.b) and l.length is not None and l.name not in plate_links
+                   and (l.b if l.a == k else l.a) not in corners]
+            outer.append(out)
+        if not all(len(o) == 1 and o[0][0] in placed for o in outer):
+            continue
+        (ob, lb), (oc, lc), (ox, lx) = (o[0] for o in outer)
+        s = _aux_label(scene, taken)
+        taken.add(s)
+        found.append(Triad(B, C, X, ob, oc, ox, lb, lc, lx, plate, plate_links, s, ternary))
+    return found

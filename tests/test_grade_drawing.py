@@ -1,0 +1,208 @@
+"""`polygons check --drawing`: a drawn polygon graded vector by vector.
+
+Drawings made from the true construction (its vertices at a round scale, every vertex marked
+with the emulated pencil's error, ±0.25 mm) pass; the typical mistakes — the Coriolis
+component reversed, a line drawn ∥ a link instead of ⟂, the polygon drawn at another scale
+than the one stated, a missing vector — are each caught and named, with the step to recheck.
+"""
+import json
+import math
+import random
+from pathlib import Path
+
+import pytest
+
+from polygons.cli import main
+from polygons.cli.check import emulated_tolerances, stated_tolerance
+from polygons.drawing_format import (DrawingError, StudentDrawing, parse_json, parse_svg,
+                                     read_drawing)
+from polygons.evaluate import solve
+from polygons.grade_drawing import expected_vectors, grade
+from polygons.scene import load_scene
+
+CASES = Path(__file__).resolve().parents[1] / "cases"
+WE3 = CASES / "s001-we3.toml"
+FIG7 = CASES / "s003-fig7.toml"
+
+
+@pytest.fixture(scope="module")
+def sols():
+    out = {}
+    for path in (WE3, FIG7):
+        sol = solve(load_scene(path))
+        out[path.name] = (sol, emulated_tolerances(sol), stated_tolerance(sol))
+    return out
+
+
+def _scale(sol, diagram):
+    """SI per mm that draws the polygon's farthest vertex 100 mm from the pole."""
+    return max(math.hypot(*p) for p in sol.vertices[diagram].values()) / 100.0
+
+
+def _drawing(sol, diagram, verts, k, seed=None, vectors=None):
+    rng = random.Random(seed)
+    noise = (lambda: rng.uniform(-0.25, 0.25)) if seed is not None else (lambda: 0.0)
+    P = {n: (p[0] / k + 40 + noise(), p[1] / k - 20 + noise()) for n, p in verts.items()}
+    vectors = vectors or tuple((e.start, e.end) for e in expected_vectors(sol, diagram))
+    return StudentDrawing(diagram, k, f"1 mm = {k:.6g}", P, tuple(vectors), "<test>")
+
+
+def _meet(p, d, q, e):
+    den = d[0] * e[1] - d[1] * e[0]
+    t = ((q[0] - p[0]) * e[1] - (q[1] - p[1]) * e[0]) / den
+    return (p[0] + t * d[0], p[1] + t * d[1])
+
+
+def _step(sol, diagram, number):
+    return next(s for s in sol.steps if s.diagram == diagram and s.number == number)
+
+
+@pytest.mark.parametrize("case", [WE3.name, FIG7.name])
+@pytest.mark.parametrize("diagram", ["velocity", "acceleration"])
+def test_true_construction_with_pencil_noise_passes(sols, case, diagram):
+    sol, em, st = sols[case]
+    k = _scale(sol, diagram)
+    for seed in range(25):
+        g = grade(sol, _drawing(sol, diagram, sol.vertices[diagram], k, seed), em, st)
+        assert g.ok, (seed, [(m.name, m.problem) for m in g.marks if m.mark < 1])
+        assert g.score == g.out_of == len(expected_vectors(sol, diagram))
+        assert g.closures and all(c.ok for c in g.closures)
+
+
+def test_expected_vectors_follow_the_steps(sols):
+    sol = sols[WE3.name][0]
+    vel = [(e.start, e.end, e.rule) for e in expected_vectors(sol, "velocity")]
+    assert vel == [("a", "b", "⟂ AB"), ("b", "c", "⟂ BC"), ("a", "c", "⟂ DC")]
+    acc = {(e.start, e.end): e.rule for e in expected_vectors(sol, "acceleration")}
+    assert acc[("b", "c1")] == "∥ BC, towards B" and acc[("c1", "c")] == "⟂ BC"
+    sol7 = sols[FIG7.name][0]
+    cor = [e for e in expected_vectors(sol7, "acceleration") if e.coriolis]
+    assert len(cor) == 1 and cor[0].vector == pytest.approx(
+        tuple(-x for x in _step(sol7, "acceleration", 4).vector))   # 2ωv, drawn p4 → p2_1
+
+
+def test_parallel_instead_of_perpendicular_is_named(sols):
+    sol, em, st = sols[WE3.name]
+    V = dict(sol.vertices["velocity"])
+    line_bc, line_dc = _step(sol, "velocity", 2), _step(sol, "velocity", 3)
+    d = line_bc.direction
+    wrong = (-d[1], d[0])                       # ∥ BC instead of ⟂ BC
+    V["c"] = _meet(V["b"], wrong, V["a"], line_dc.direction)
+    g = grade(sol, _drawing(sol, "velocity", V, _scale(sol, "velocity"), 3), em, st)
+    bad = {m.name: m for m in g.marks if m.mark < 1}
+    assert "bc" in bad and bad["bc"].problem == "drawn ∥ BC instead of ⟂ BC"
+    assert bad["bc"].hint.startswith("bc must be ⟂ BC (velocity step 2")
+    assert not g.ok
+
+
+def test_reversed_coriolis_is_named(sols):
+    sol, em, st = sols[FIG7.name]
+    A = dict(sol.vertices["acceleration"])
+    cor = (A["p2_1"][0] - A["p4"][0], A["p2_1"][1] - A["p4"][1])     # 2ωv as drawn
+    tangential, slot = _step(sol, "acceleration", 3), _step(sol, "acceleration", 4)
+    # the student sets 2ωv off the wrong way: p2_1 = p4 − 2ωv, then p2_1 → p2 ∥ the slot
+    A["p4"] = _meet(A["p4_1"], tangential.direction,
+                    (A["p2"][0] + cor[0], A["p2"][1] + cor[1]), slot.direction)
+    A["p2_1"] = (A["p4"][0] - cor[0], A["p4"][1] - cor[1])
+    g = grade(sol, _drawing(sol, "acceleration", A, _scale(sol, "acceleration"), 5), em, st)
+    bad = {m.name: m for m in g.marks if m.mark < 1}
+    assert bad["p4p2_1"].problem == "the Coriolis component is reversed"
+    assert "2ω × v" in bad["p4p2_1"].hint and "acceleration step 6" in bad["p4p2_1"].hint
+    assert "o2p2" not in bad and "o2p4_1" not in bad            # the rest stays right
+
+
+def test_wrong_scale_is_named(sols):
+    sol, em, st = sols[WE3.name]
+    k = _scale(sol, "velocity")
+    drawing = _drawing(sol, "velocity", sol.vertices["velocity"], k / 2, 1)  # drawn twice big
+    stated = StudentDrawing("velocity", k, drawing.scale_text.replace(
+        f"{k / 2:.6g}", f"{k:.6g}"), drawing.vertices, drawing.vectors, "<test>")
+    g = grade(sol, stated, em, st)
+    assert g.scale_ratio == pytest.approx(2.0, rel=0.02)
+    assert all(m.problem.startswith("wrong scale") for m in g.marks)
+    assert all(m.direction_ok for m in g.marks) and not g.ok
+
+
+def test_missing_and_reversed_arrows(sols):
+    sol, em, st = sols[WE3.name]
+    k = _scale(sol, "velocity")
+    g = grade(sol, _drawing(sol, "velocity", sol.vertices["velocity"], k, 2,
+                            vectors=(("a", "b"), ("c", "b"))), em, st)
+    marks = {m.name: m for m in g.marks}
+    assert marks["ab"].mark == 1 and marks["cb"].mark == 1     # a line: either arrow
+    assert marks["ac"].problem == "missing" and "⟂ DC" in marks["ac"].hint
+    g = grade(sol, _drawing(sol, "velocity", sol.vertices["velocity"], k, 2,
+                            vectors=(("b", "a"), ("b", "c"), ("a", "c"))), em, st)
+    assert {m.name: m.mark for m in g.marks}["ab"] == 0        # the given vector has a sense
+
+
+SVG = """<svg xmlns="http://www.w3.org/2000/svg" data-polygons-drawing="velocity"
+ data-scale="{scale}" viewBox="0 0 300 300">
+{body}</svg>"""
+
+
+def test_json_and_svg_files_through_the_command(sols, tmp_path, capsys):
+    sol = sols[WE3.name][0]
+    k = 0.5                                      # 1 mm = 0.5 m/s
+    V = sol.vertices["velocity"]
+    js = {"diagram": "velocity", "scale": "1 mm = 0.5 m/s",
+          "vertices": {("o" if n == "a" else n): [p[0] / k + 150, p[1] / k + 150]
+                       for n, p in V.items()},
+          "vectors": [["o", "b"], ["b", "c"], ["o", "c"]]}
+    path = tmp_path / "we3.json"
+    path.write_text(json.dumps(js), encoding="utf-8")
+    assert main(["check", str(WE3), "--drawing", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "3 of 3 vectors — all right" in out
+    body = "".join(f'<circle data-vertex="{n}" cx="{x}" cy="{300 - y}" r="0.8"/>\n'
+                   for n, (x, y) in js["vertices"].items())
+    body += "".join(f'<line data-from="{a}" data-to="{b}"/>\n' for a, b in js["vectors"])
+    svg = tmp_path / "we3.svg"
+    svg.write_text(SVG.format(scale="1 cm = 5 m/s", body=body), encoding="utf-8")
+    d_svg, d_json = read_drawing(str(svg)), read_drawing(str(path))
+    assert d_svg.scale == pytest.approx(d_json.scale)
+    for n in d_json.vertices:        # y down in SVG: the same shape, mirrored back
+        dx = d_svg.vertices[n][0] - d_json.vertices[n][0]
+        dy = d_svg.vertices[n][1] + 300 - d_json.vertices[n][1]
+        assert abs(dx) < 1e-9 and abs(dy) < 1e-9
+    assert main(["check", str(WE3), "--drawing", str(svg), "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["all_ok"] and report["score"] == 3
+    # a wrong drawing: exit 3 and the hint names the step
+    js["vertices"]["c"][0] += 8
+    path.write_text(json.dumps(js), encoding="utf-8")
+    assert main(["check", str(WE3), "--drawing", str(path)]) == 3
+    assert "hint:" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("text,words", [
+    ("{", "not valid JSON"),
+    ('{"diagram": "force", "scale": 1, "vertices": {}, "vectors": []}', "diagram must be"),
+    ('{"diagram": "velocity", "scale": "fast", "vertices": {}, "vectors": []}', "scale"),
+    ('{"diagram": "velocity", "scale": -1, "vertices": {}, "vectors": []}', "positive"),
+    ('{"diagram": "velocity", "scale": 1, "vertices": {"a": [1e300, 0]}, "vectors": []}',
+     "coordinate"),
+    ('{"diagram": "velocity", "scale": 1, "vertices": {"a": [0, 0]}, "vectors": [["a", "z"]]}',
+     "not among"),
+    ('{"diagram": "velocity", "scale": 1, "vertices": {"<b>": [0, 0]}, "vectors": []}',
+     "vertex name"),
+    ('<?xml version="1.0"?><!DOCTYPE x [<!ENTITY a "aaaa">]><svg/>', "DOCTYPE"),
+    ('<svg xmlns="http://www.w3.org/2000/svg"/>', "not a polygons drawing"),
+])
+def test_bad_drawing_files_are_one_line_errors(tmp_path, capsys, text, words):
+    path = tmp_path / "bad.json"
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", str(WE3), "--drawing", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and words in err and "polygons: error:" in err
+
+
+def test_too_many_vertices_is_refused():
+    data = {"diagram": "velocity", "scale": 1,
+            "vertices": {f"v{i}": [0, 0] for i in range(201)}, "vectors": []}
+    with pytest.raises(DrawingError, match="at most 200"):
+        parse_json(json.dumps(data))
+    with pytest.raises(DrawingError):
+        parse_svg('<svg data-polygons-drawing="velocity" data-scale="1">'
+                  + "".join(f'<circle data-vertex="v{i}" cx="0" cy="0"/>' for i in range(202))
+                  + "</svg>")
