@@ -1,7 +1,8 @@
 """Checks of tests/analytic.py (the independent closed-form oracle).
 
-1. Against the exact answers in /work/shared/reference/cases.json (produced by
-   a separate reference implementation): every kinematic case, 1e-9 relative.
+1. Against the exact answers of the project's reference, tests/reference/cases.json (a copy
+   of the steering side's reference, produced by a separate reference implementation: see
+   tests/reference/README.md): every kinematic case, 1e-9 relative.
 2. Against central finite differences of the position solution for random
    geometries (~1e-6 relative), plus the relative-velocity/acceleration
    identities that a velocity/acceleration polygon must satisfy.
@@ -10,7 +11,6 @@
 
 from __future__ import annotations
 
-import json
 import math
 import sys
 from pathlib import Path
@@ -21,15 +21,11 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import analytic as an  # noqa: E402
 
-CASES_JSON = Path(__file__).resolve().parents[2] / "shared" / "reference" / "cases.json"
-if not CASES_JSON.is_file():
-    pytest.skip(
-        f"reference answers not found at {CASES_JSON} (the shared reference "
-        "directory is not mounted); analytic-oracle tests skipped",
-        allow_module_level=True,
-    )
+from conftest import CASES as CASES_DIR, REFERENCE as CASES_JSON  # noqa: E402
+from conftest import case_files, reference_cases  # noqa: E402
+from polygons.scene import load_scene  # noqa: E402
 
-CASES = {c["id"]: c for c in json.loads(CASES_JSON.read_text())["cases"]}
+CASES = reference_cases()
 
 REL = 1e-9  # relative tolerance against cases.json
 ATOL_POINT = 1e-9  # cases.json stores points rounded to 9 decimals
@@ -377,6 +373,124 @@ def test_we7_affine_in_alpha():
     r1 = an.four_bar(*args, 80000.0, g["branch"])
     slope = r0["omega_CD"] / -480.0
     assert math.isclose(r1["alpha_CD"] - r0["alpha_CD"], 80000.0 * slope, rel_tol=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# 1b. the case files' exact values that have no reference key (derived quantities:
+#     a lever's end, a coupler point, a signed twin of a reference magnitude), recomputed
+#     here from tests/analytic.py on the case's geometry -- not from the solver
+# ---------------------------------------------------------------------------
+RPM = 2 * math.pi / 60
+
+
+def _mag(value, mode):
+    return value if mode == "signed" else abs(value)
+
+
+def _derived_s000():
+    g, i = CASES["S000-D225-2003-Q3"]["geometry"], CASES["S000-D225-2003-Q3"]["inputs"]
+    r = an.slotted_lever(g["O_disc"], g["R"], deg(g["crank_angle_deg"]), i["omega_disc"],
+                         i["alpha_disc"], g["B_pivot"])
+    w4, a4, e = r["omega_lever"], r["alpha_lever"], (r["A"] - g["B_pivot"]) / r["s"]
+    C = np.asarray(g["B_pivot"]) + g["BC"] * e
+    return {"v(A)": _norm(r["vA"]), "a(A)": _norm(r["aA"]), "vs(A)": r["s_dot"],
+            "a(A1)": _norm(r["aA1"]), "an(A1,B)": w4 ** 2 * r["s"],
+            "x(A)": r["A"][0] * 1e3, "y(A)": r["A"][1] * 1e3,
+            "v(C)": abs(w4) * g["BC"], "a(C)": g["BC"] * math.hypot(a4, w4 ** 2),
+            "x(C)": C[0] * 1e3, "y(C)": C[1] * 1e3}
+
+
+def _derived_four_bar(D, CD, theta, omega, branch):
+    r = an.four_bar((0, 0), D, 0.1, 0.2, CD, deg(theta), omega, 0.0, branch)
+    return {"omega(DC)": r["omega_CD"], "v(C)": _norm(r["vC"]), "alpha(BC)": r["alpha_BC"],
+            "alpha(DC)": r["alpha_CD"], "at(C,D)": abs(r["alpha_CD"]) * CD,
+            "an(C,D)": r["omega_CD"] ** 2 * CD, "a(C)": _norm(r["aC"])}
+
+
+def _derived_sae4q3():
+    # the case file's pivot C is exact (15 sqrt 3 - 90 mm); the reference rounds it to 1e-9 m
+    theta, w, al = deg(60.0), 100.0, 10000.0
+    r = an.four_bar((0, 0), (0.135, 0.015 * math.sqrt(3) - 0.09), 0.03, 0.12, 0.09, theta, w,
+                    al, +1)
+    A, e = r["B"], (r["C"] - r["B"]) / 0.12
+    rD = 0.168 * e
+    vA, aA = w * _perp(A), al * _perp(A) - w * w * A
+    D = A + rD
+    vD = vA + r["omega_BC"] * _perp(rD)
+    return {"v(B,A)": abs(r["omega_BC"]) * 0.12, "v(D)": _norm(vD), "omega(AB)": r["omega_BC"],
+            "alpha(AB)": r["alpha_BC"], "x(D)": D[0] * 1e3, "y(D)": D[1] * 1e3}
+
+
+def _derived_we1(r):
+    g, i = CASES["S001-WE1"]["geometry"], CASES["S001-WE1"]["inputs"]
+    res = an.slider_crank(g["O"], r, g["L"], 0.0, i["omega"], 0.0, g["line_point"],
+                          deg(g["line_dir_deg"]), g["branch"])
+    return {"as(B)": res["s_ddot"] * 1e3, "v(B)": _norm(res["vB"]) * 1e3,
+            "dist(O,B)": _norm(res["B"] - np.asarray(g["O"], float)) * 1e3}
+
+
+def _derived_we5():
+    g, i = CASES["S001-WE5"]["geometry"], CASES["S001-WE5"]["inputs"]
+    r = an.four_bar(g["C_wheel"], g["O_lever"], g["CB"], g["BA"], g["OA"],
+                    deg(g["theta_CB_deg"]), i["omega_wheel"], 0.0, g["branch"])
+    return {"v(B)": _norm(r["vB"]), "at(A,B)": abs(r["alpha_BC"]) * g["BA"]}
+
+
+def _derived_we8():
+    res, g, _ = _sc(CASES["S001-WE8"])
+    return {"omega(PC)": res["omega_AB"], "alpha(PC)": res["alpha_AB"],
+            "at(P,C)": abs(res["alpha_AB"]) * g["L"], "x(C)": res["A"][0] * 1e3,
+            "y(C)": res["A"][1] * 1e3, "x(P)": res["B"][0] * 1e3}
+
+
+def _derived_ex316():
+    g = CASES["S002-Ex3.16"]["geometry"]
+    return {"x(A)": g["L"], "dist(O,S)": g["spring_at"], "v(A)": 0.0}   # released from rest
+
+
+def _derived_ex317():
+    g, i = CASES["S002-Ex3.17"]["geometry"], CASES["S002-Ex3.17"]["inputs"]
+    return {"v(A)": i["omega1"] * _norm(np.subtract(g["A"], g["O"]))}
+
+
+DERIVED = {
+    "s000-d225-2003-q3": _derived_s000,
+    # D = C - DC (cos 60, sin 60) etc. as the case files state them exactly
+    "s001-sae2-q1": lambda: _derived_four_bar((0.25, 0.05 * math.sqrt(3) + 0.06), 0.06, 60.0,
+                                              500 * RPM, -1),
+    "s001-sae2-q2": lambda: _derived_four_bar((0.1775, 0.1 - 0.0225 * math.sqrt(3)), 0.045, 90.0,
+                                              -60 * RPM, +1),
+    "s001-sae4-q3": _derived_sae4q3,
+    "s001-we1": lambda: _derived_we1(CASES["S001-WE1"]["geometry"]["r"]),
+    "s001-we1-r10": lambda: _derived_we1(0.010),
+    "s001-we5": _derived_we5,
+    "s001-we8": _derived_we8,
+    "s002-ex3.16": _derived_ex316,
+    "s002-ex3.17": _derived_ex317,
+}
+
+
+@pytest.mark.parametrize("stem", sorted(DERIVED))
+def test_case_exact_values_without_a_reference_key_are_the_closed_form(stem):
+    scene = load_scene(CASES_DIR / f"{stem}.toml")
+    closed = DERIVED[stem]()
+    own = [a for a in scene.answers if a.ref is None and a.exact is not None]
+    assert own
+    for a in own:
+        assert a.quantity in closed, f"{stem}: {a.quantity} is not recomputed here"
+        expected = _mag(closed[a.quantity], a.mode)
+        assert a.exact == pytest.approx(expected, rel=REL, abs=1e-12), (stem, a.quantity)
+
+
+def test_every_exact_value_of_a_reference_case_has_a_source():
+    """Each `exact` of a case with a reference record is the reference's (test_cases.py) or
+    recomputed above."""
+    for path in case_files():
+        scene = load_scene(path)
+        if scene.source.get("id") not in CASES:
+            continue
+        own = [a.quantity for a in scene.answers if a.ref is None and a.exact is not None]
+        assert not own or path.stem in DERIVED, f"{path.name}: {own} have no independent source"
 
 
 # ---------------------------------------------------------------------------

@@ -1,12 +1,18 @@
 """Every shipped scene file is a textbook case: it must reproduce the reference's exact answers
 to 1e-9 relative, the tutorial's printed answers within the drawing tolerance stated in the file,
 and must NOT reproduce the printed values the reference identifies as slips."""
-import json
+import math
+from pathlib import Path
 
+import numpy as np
 import pytest
 
-from conftest import REFERENCE, case_files
+import analytic
+
+from conftest import (REFERENCE, ROOT, SHARED_REFERENCE, case_files, reference_cases,
+                      shared_reference_cases)
 from polygons.evaluate import solve
+from polygons.forces import has_forces
 from polygons.report import check_answers
 from polygons.scene import load_scene
 
@@ -66,49 +72,150 @@ def test_case_senses_agree_with_tutorial(path, solved):
             assert (c.ours > 0) == (a.sense == "CCW"), f"{a.quantity}: tutorial says {a.sense}"
 
 
-#: cases outside the reference whose exact answers a test recomputes from tests/analytic.py
-OWN_EXACT_CHECK = {"BJ-SP15.3-15.8": "tests/test_units.py"}
+#: the cases outside the reference, and the test that recomputes their `exact` values from an
+#: independent closed form (tests/analytic.py or one written out in the test), not from the solver
+OWN_EXACT_CHECK = {
+    "bj-engine-imperial": ("test_units.py", "test_imperial_case_exact_answers_are_the_closed_form"),
+    "efficiency-four-bar": ("test_cases.py", "test_exact_values_outside_the_reference_are_closed_forms"),
+    "khurmi-ex7.2": ("test_centres.py", "test_khurmi_exact_answers_are_the_closed_form_and_ours"),
+    "new-crossing-slots": ("test_crossing.py",
+                           "test_the_case_exact_answers_come_from_the_loop_solution"),
+    "new-screw-slotted-arm": ("test_book_forms.py",
+                              "test_the_screw_case_exact_answers_are_the_closed_form"),
+    **{name: ("test_triad.py", "test_the_case_exact_answers_come_from_the_oracle")
+       for name in ("triad-eight-bar", "triad-plate-point", "triad-ternary-coupler")},
+    "khurmi-flywheel-steam-engine": ("test_cases.py",
+                                     "test_exact_values_outside_the_reference_are_closed_forms"),
+    "rest-slider-crank": ("test_cases.py", "test_exact_values_outside_the_reference_are_closed_forms"),
+    "scotch-yoke": ("test_cases.py", "test_exact_values_outside_the_reference_are_closed_forms"),
+    **{name: ("test_new_dyads.py", "test_case_exact_answers_are_the_analytic_values")
+       for name in ("new-collar-on-rotating-rod", "new-elliptic-trammel", "new-engine-from-idc",
+                    "new-offset-slot", "new-oscillating-cylinder", "new-rotary-engine",
+                    "new-shaper-ram", "new-slot-on-moving-lever", "new-stephenson-six-bar",
+                    "new-toggle-press", "new-watt-six-bar", "new-whitworth")},
+}
+REF = reference_cases()
+IN_REFERENCE = [f for f in FILES if load_scene(f).source.get("id") in REF]
 
 
-def reference_case(scene, path):
-    """The reference record of ``scene`` (skips when the reference or the record is absent)."""
-    if not REFERENCE.exists():
-        pytest.skip(f"reference {REFERENCE} not present")
-    ref = {c["id"]: c for c in json.loads(REFERENCE.read_text())["cases"]}
-    if scene.source.get("id") not in ref and scene.source.get("synthetic"):
-        pytest.skip(f"{path.name}: a synthetic scene with no reference record")
-    if scene.source.get("id") in OWN_EXACT_CHECK:
-        pytest.skip(f"{path.name}: not in the reference; its exact values are recomputed by "
-                    f"{OWN_EXACT_CHECK[scene.source['id']]}")
-    if scene.source.get("id") not in ref and ("seed" not in scene.source
-                                              or scene.source.get("category") == "textbook"):
-        pytest.skip(f"{path.name}: a textbook case outside the seeds (its exact values are "
-                    f"checked against closed forms in its own tests)")
-    return ref[scene.source["id"]]
+def test_every_case_has_an_independent_source_for_its_exact_values():
+    """Each case's `exact` values are the reference's (tests below) or recomputed from a closed
+    form by the named test, which exists and reads that case."""
+    here = Path(__file__).resolve().parent
+    for path in FILES:
+        if path in IN_REFERENCE:
+            assert path.stem not in OWN_EXACT_CHECK, f"{path.name} is in the reference"
+            continue
+        assert path.stem in OWN_EXACT_CHECK, (
+            f"{path.name}: no reference record, so a test must recompute its exact values from "
+            f"an independent closed form: name it in OWN_EXACT_CHECK (tests/test_cases.py)")
+        test_file, test_name = OWN_EXACT_CHECK[path.stem]
+        text = (here / test_file).read_text(encoding="utf-8")
+        assert f"def {test_name}(" in text, f"{test_file}::{test_name} not found"
+        assert path.stem in text, f"{test_file} never reads {path.name}"
+    assert set(OWN_EXACT_CHECK) <= {f.stem for f in FILES}
 
 
-@pytest.mark.parametrize("path", FILES, ids=IDS)
+def test_every_reference_case_has_a_case_file():
+    """Each kinematic record of the reference is a scene of cases/ (the two torque-driven Ex 3.16
+    and 3.17 included: their kinematic answers are in their scenes too)."""
+    ours = {load_scene(f).source.get("id") for f in IN_REFERENCE}
+    assert set(REF) <= ours, sorted(set(REF) - ours)
+
+
+def _reference_value(answer, case):
+    """The reference's exact value for ``answer`` in the case file's unit and mode."""
+    value = case["exact_answers"][answer.ref]
+    if isinstance(value, list):     # a point [x, y] in m, stored to 9 decimals
+        axis = answer.quantity[:2]
+        assert axis in ("x(", "y("), (answer.quantity, answer.ref)
+        value = value[0 if axis == "x(" else 1]
+    if answer.unit == "mm" and not answer.ref.endswith("_mm"):
+        value *= 1e3
+    return abs(value) if answer.mode == "abs" else value
+
+
+@pytest.mark.parametrize("path", IN_REFERENCE, ids=[f.stem for f in IN_REFERENCE])
 def test_case_exact_values_are_the_reference_values(path):
-    """The `exact` numbers in the scene files are copied from the reference, not from us."""
+    """The `exact` numbers in the scene files are copied from the reference, not from us; the
+    tutorial's printed values are the reference's too."""
     scene = load_scene(path)
-    case = reference_case(scene, path)
+    case = REF[scene.source["id"]]
+    checked = 0
     for a in scene.answers:
         if a.ref is None or a.exact is None:
             continue
-        value = case["exact_answers"][a.ref]
-        if isinstance(value, list):
-            continue
-        if a.unit == "mm" and not a.ref.endswith("_mm"):
-            value *= 1e3
-        expected = abs(value) if a.mode == "abs" else value
-        assert a.exact == pytest.approx(expected, rel=1e-12, abs=1e-15), a.ref
+        if isinstance(case["exact_answers"][a.ref], list):
+            # points: the reference rounds them to 1e-9 m
+            tol = 1e-6 if a.unit == "mm" else 1e-9
+            assert a.exact == pytest.approx(_reference_value(a, case), rel=0, abs=tol), a.quantity
+        else:
+            assert a.exact == pytest.approx(_reference_value(a, case), rel=1e-12, abs=1e-15), a.ref
+        checked += 1
+        if a.tutorial is not None and a.ref in case["tutorial_answers"]:
+            printed = case["tutorial_answers"][a.ref]
+            if printed["unit"] == a.unit:
+                assert a.tutorial == printed["value"], (a.quantity, a.ref)
+    # the torque-driven Ex 3.16 and 3.17 have their reference values in their force answers
+    # (tests/test_forces.py); every other case has some in its kinematic answers
+    assert checked or has_forces(scene), f"{path.name}: no exact value is the reference's"
 
 
-@pytest.mark.parametrize("path", FILES, ids=IDS)
+@pytest.mark.parametrize("path", IN_REFERENCE, ids=[f.stem for f in IN_REFERENCE])
 def test_case_slips_are_those_of_the_reference(path):
     scene = load_scene(path)
-    case = reference_case(scene, path)
+    case = REF[scene.source["id"]]
     slips_ref = {k for k, v in case["tutorial_answers"].items() if v["slip"]}
     slips_ref |= {v["exact_key"] for v in case["tutorial_answers"].values() if v["slip"]}
     slips_ours = {a.ref for a in scene.answers if a.slip}
     assert slips_ours <= slips_ref, f"{path.name}: slips not in the reference: {slips_ours - slips_ref}"
+
+
+FACTS = ("geometry", "inputs", "exact_answers", "tutorial_answers", "slips", "compute")
+
+
+def test_project_reference_is_the_shared_reference():
+    """Where the steering side's reference is beside the repository, every one of its cases is in
+    the project's copy with the same facts (refresh tests/reference/ when this fails).  Without
+    it the copy stands alone: this cross-check then has nothing to compare and passes."""
+    shared = shared_reference_cases()
+    if shared is None:
+        pytest.skip(f"by design: no shared reference beside the repository ({SHARED_REFERENCE}); "
+                    f"the project's copy {REFERENCE.relative_to(ROOT)} stands alone")
+    for cid, case in shared.items():
+        assert cid in REF, f"{cid} is in {SHARED_REFERENCE} but not in {REFERENCE}"
+        for key in FACTS:
+            assert REF[cid].get(key) == case.get(key), f"{cid}: {key} differs from the shared reference"
+
+
+def _closed_forms():
+    """The four cases outside the reference that no other test recomputes, by tests/analytic.py
+    (loop closure differentiated by hand), in the case files' units: {stem: {quantity: value}}."""
+    norm = lambda v: float(np.hypot(*v))                        # noqa: E731
+    rest = analytic.slider_crank((0, 0), 0.1, 0.4, math.radians(45), 0.0, 200.0, (0, 0), 0.0, +1)
+    fb = analytic.four_bar((0, 0), (0.45, 0), 0.1, 0.4, 0.35, math.radians(90), 12.0, 0.0, +1)
+    w = -120 * 2 * math.pi / 60                                 # 120 rev/min CW
+    engine = analytic.slider_crank((0, 0), 0.2, 0.6, math.radians(135), w, 0.0, (0, 0), 0.0, -1)
+    r, th, om = 0.05, math.radians(30), 10.0                    # Scotch yoke: x = R sin(ωt)
+    return {
+        "rest-slider-crank": {"v(B)": norm(rest["vB"]), "a(A)": norm(rest["aA"]),
+                              "a(B)": norm(rest["aB"]), "alpha(AB)": rest["alpha_AB"]},
+        "efficiency-four-bar": {"omega(CD)": fb["omega_CD"], "omega(BC)": fb["omega_BC"],
+                                "v(C)": norm(fb["vC"])},
+        "khurmi-flywheel-steam-engine": {"vs(P)": engine["vB"][0], "as(P)": engine["aB"][0],
+                                         "x(P)": engine["B"][0] * 1e3},
+        "scotch-yoke": {"y(Y)": r * math.sin(th) * 1e3, "vs(Y)": om * r * math.cos(th),
+                        "as(Y)": -om * om * r * math.sin(th)},
+    }
+
+
+def test_exact_values_outside_the_reference_are_closed_forms():
+    """rest-slider-crank, efficiency-four-bar, khurmi-flywheel-steam-engine, scotch-yoke: every
+    `exact` of their [[answers]] is the closed form's (not the solver's), to 1e-12."""
+    for stem, closed in _closed_forms().items():
+        scene = load_scene(ROOT / "cases" / f"{stem}.toml")
+        assert {a.quantity for a in scene.answers} == set(closed), stem
+        for a in scene.answers:
+            value = closed[a.quantity]
+            value = value if a.mode == "signed" else abs(value)
+            assert a.exact == pytest.approx(value, rel=1e-12, abs=1e-15), (stem, a.quantity)

@@ -9,6 +9,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import analytic
+from conftest import examples
 from scenes import crank_driver, m, rad, slider_crank_case
 from polygons.errors import AssemblyError, ParallelLinesError
 from polygons.evaluate import solve
@@ -21,7 +22,9 @@ lengths = st.floats(0.01, 1.0)
 angles = st.floats(0.0, 2 * math.pi)
 omegas = st.floats(0.5, 500.0) | st.floats(-500.0, -0.5)
 alphas = st.floats(-1e4, 1e4)
-settings_ = settings(max_examples=150, deadline=None,
+# full depth 150 examples (60 for the finite differences): POLYGONS_DEEP=1 and CI run it, an
+# everyday run a quarter (tests/conftest.py: examples)
+settings_ = settings(max_examples=examples(150), deadline=None,
                      suppress_health_check=[HealthCheck.filter_too_much])
 
 
@@ -102,7 +105,7 @@ def test_slotted_lever_matches_closed_form(r, dist, theta, omega, alpha, lever):
     assert close(sol.points["A1"].acceleration, ref["aA1"], as_ + vs * vs / ref["s"])
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(ad=st.floats(0.2, 1.0), ab=lengths, bc=lengths, cd=lengths, theta=angles,
        omega=omegas)
 def test_four_bar_velocity_matches_finite_differences_of_positions(ad, ab, bc, cd, theta, omega):
