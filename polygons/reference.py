@@ -54,7 +54,8 @@ def _type_words(k: Key) -> str:
                                                        else "fraction (number or %)")
     return {"label": "point label", "link": "link name", "branch": "assembly words or "
             "{ near = [x, y] }", "array": "array", "bool": "true/false", "number": "number",
-            "integer": "integer", "string": "text"}.get(k.type, k.type)
+            "integer": "integer", "string": "text",
+            "bool-or-string": "true/false or text"}.get(k.type, k.type)
 
 
 _EXAMPLE_NAME = {"<LABEL>": "C", "<LINK>": "AB"}
@@ -174,6 +175,8 @@ def _key_schema(k: Key) -> dict:
         d["type"] = "string"
     elif k.type == "bool":
         d["type"] = "boolean"
+    elif k.type == "bool-or-string":
+        d["anyOf"] = [{"type": "boolean"}, {"type": "string"}]
     elif k.type == "integer":
         d["type"] = "integer"
     elif k.type == "number":

@@ -32,6 +32,7 @@ WHERE = {
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
+    "polygons.classic": "interpreters",
     "polygons.streams": "interpreters",
     "polygons.forces": "forces",
     "polygons.report": "render", "diagrams": "render",
