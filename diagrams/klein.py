@@ -46,9 +46,9 @@ def _extent(f: Figure) -> list[Pt]:
     pts = list(f.points.values())
     O, r = f.points["O"], math.dist(f.points["O"], f.points["A"])
     pts += [(O[0] - r, O[1] - r), (O[0] + r, O[1] + r)]
-    for (c, R) in ((f.klein_circle if f.method == "klein" else (f.points["A"], 0.0)),
-                   f.rod_circle):
-        pts += [(c[0] - R, c[1] - R), (c[0] + R, c[1] + R)]
+    if f.method == "klein":
+        for (c, R) in (f.klein_circle, f.rod_circle):
+            pts += [(c[0] - R, c[1] - R), (c[0] + R, c[1] + R)]
     return pts
 
 
@@ -120,6 +120,8 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
                  Segment(O, M, style("resultant", 2), cls="ob")]
         for a, b in ((O, M), (A, M)):
             placer.hard(a, b)
+        # the perpendicular through O runs on past M to the crank circle: keep labels off it
+        placer.soft((O[0] - n[0] * r, O[1] - n[1] * r), (O[0] + n[0] * r, O[1] + n[1] * r))
         groups.append(Group("velocity", "velocity", "Velocity triangle O A M (turned 90°)",
                             tuple(items)))
         labels.append("M")
@@ -148,7 +150,7 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
             items += [Segment(M, K, "construction", cls="parallel-MK"),
                       Segment(O, K, "construction", cls="crank-produced"),
                       Segment(K, Q, "construction", cls="parallel-KQ")]
-            for a, b in ((M, K), (K, Q)):
+            for a, b in ((M, K), (K, Q), (O, K)):
                 placer.hard(a, b)
             labels += ["K", "Q"]
         groups.append(Group("circles", "construction", STAGES[2], tuple(items)))
@@ -162,6 +164,8 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
             # the chord produced to N
             end = min((Kp, Lp), key=lambda p: math.dist(p, N))
             items.append(Segment(end, N, "construction", cls="chord-produced"))
+            placer.hard(Kp, Lp)
+            placer.hard(end, N)
             del far
         else:
             items.append(Segment(Q, N, "construction", cls="perpendicular-QN"))
