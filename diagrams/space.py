@@ -136,9 +136,37 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         for p, q in zip(blk, blk[1:] + blk[:1]):
             placer.hard(p, q, 0.4)
 
-    # binary links
+    # binary links (a cam's or curved slot's equivalent link dashed, its arcs drawn thin:
+    # polygons.contacts)
+    equivalent = {q.link: q for q in scene.equivalents if q.link}
+    eq_notes = []
+    for q in scene.equivalents:
+        if q.centre not in P or q.at not in P:
+            continue
+        c, at = P[q.centre], P[q.at]
+        if q.link is None:        # a flat face: the yoke's slot through the centre stands for it
+            eq_notes.append((f"flat face ≡ slot through {q.centre} (equivalent)", c))
+            continue
+        # the slot's or the profile's arc about the centre of curvature, ±30° about the contact
+        th = math.atan2(at[1] - c[1], at[0] - c[0])
+        # (a slot: its two sides, 1.5 mm of paper either side of the pin's path)
+        for rad in ((q.radius * k - 1.5, q.radius * k + 1.5) if q.kind == "curved slot"
+                    else (q.radius * k,)):
+            arc = tuple(_r((c[0] + rad * math.cos(th + math.radians(t)),
+                            c[1] + rad * math.sin(th + math.radians(t))))
+                        for t in range(-20, 21, 2))
+            back.append(Polyline(arc, "slot", cls="contact-arc"))
+        if q.roller:
+            back.append(Circle(_r(at), round(q.roller * k, 3), "slot", cls="roller"))
     for name, ln in scene.links.items():
         if name in slotted or ln.a not in P or ln.b not in P:
+            continue
+        if name in equivalent:
+            links.append(Segment(_r(P[ln.a]), _r(P[ln.b]), "equivalent",
+                                 cls=f"link {name} equivalent"))
+            placer.hard(P[ln.a], P[ln.b], 1.0)
+            eq_notes.append((f"equivalent link {name}", (
+                (P[ln.a][0] + P[ln.b][0]) / 2, (P[ln.a][1] + P[ln.b][1]) / 2)))
             continue
         link(P[ln.a], P[ln.b], cls=f"link {name}")
         neighbours[ln.a].append(P[ln.b])
@@ -334,6 +362,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
                                        distances=(1.5, 2.5, 3.5, 5.0, 7.0, 10.0))
         labels.append(Text(x, base, text, LABEL_SIZE, role="point", weight="bold",
                            cls="point-label"))
+    for text, at in eq_notes:      # beside the equivalent link's middle (or the yoke's pin)
+        notes.append((text, [at], None))
     for text, anchors, prefer in notes:
         dirs = [2 * math.pi * k / 24 for k in range(24)]
         x, base, _, box = placer.place_any(display(text), NOTE_SIZE,
@@ -398,6 +428,9 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
             ", ".join(f"{lab} ({number(p[0] * 1000)} mm, {number(p[1] * 1000)} mm)"
                       for lab, p in sol.placement.points.items()) + ".")
     key = [("link", "link (rigid body)", False)]
+    if any(q.link for q in scene.equivalents):
+        key.append(("equivalent", "equivalent link (this instant)", False))
+        key.append(("slot", "curved slot / cam profile at the contact", False))
     if len(scene.ground) >= 2:
         key.append(("centre", "line of centres", False))
     if scene.model.guide:

@@ -59,6 +59,9 @@ def run(args) -> int:
         if fig is not None:
             from ..classic.klein import to_dict as klein_dict
             data["klein"] = klein_dict(fig)
+        if scene.equivalents:
+            from ..contacts import to_list
+            data["equivalent_links"] = to_list(sol)
         text = json_text(data)
     else:
         text = table(sol, steps=not args.no_steps, units=args.units)
@@ -69,5 +72,8 @@ def run(args) -> int:
         if fig is not None:
             from ..classic.klein import report_lines
             text += "\n" + "\n".join(report_lines(fig)) + "\n"
+        if scene.equivalents:
+            from ..contacts import report_lines as equivalent_lines
+            text += "\n" + "\n".join(equivalent_lines(sol)) + "\n"
     emit(text, args.out)
     return 0
