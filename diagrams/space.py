@@ -185,7 +185,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         pa, pb, px = P[a], P[b], P[lab]
         ab = (pb[0] - pa[0], pb[1] - pa[1])
         L2 = ab[0] ** 2 + ab[1] ** 2
-        off = abs(ab[0] * (px[1] - pa[1]) - ab[1] * (px[0] - pa[0])) / math.sqrt(L2)
+        off = (abs(ab[0] * (px[1] - pa[1]) - ab[1] * (px[0] - pa[0])) / math.sqrt(L2)
+               if L2 > 0.0 else math.inf)      # a link too short to draw: no continuation
         if off < 0.05:
             t = ((px[0] - pa[0]) * ab[0] + (px[1] - pa[1]) * ab[1]) / L2
             if t > 1:

@@ -119,11 +119,11 @@ LIMITS: dict[str, tuple[float, float]] = {
     "angular_acceleration": (0.0, 1e12),
     "velocity": (0.0, 1e6),
     "acceleration": (0.0, 1e12),
-    "mass": (0.0, 1e9),
+    "mass": (1e-9, 1e9),                     # a µg: a subnormal mass would make inertia 0
     "force": (0.0, 1e12),
     "torque": (0.0, 1e12),
     "pressure": (0.0, 1e12),
-    "inertia": (0.0, 1e9),
+    "inertia": (1e-18, 1e9),                 # α = T / I must stay finite
     "stiffness": (0.0, 1e12),
     "torsional_stiffness": (0.0, 1e12),
     "time": (0.0, 1e9),

@@ -326,7 +326,7 @@ def test_gallery_links_every_case(tmp_path):
     assert "broken.toml" in out.stderr and len(out.stderr.strip().splitlines()) == 1
     index = (tmp_path / "site" / "index.html").read_text(encoding="utf-8")
     for stem in ("s001-we4", "s003-fig7"):
-        assert f'href="{stem}.html"' in index and f'href="{stem}-worksheet.html"' in index
+        assert f'href="./{stem}.html"' in index and f'href="./{stem}-worksheet.html"' in index
         assert (tmp_path / "site" / f"{stem}.html").stat().st_size > 10000
         assert (tmp_path / "site" / f"{stem}-worksheet.html").exists()
     assert "could not be solved" in index

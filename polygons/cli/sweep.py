@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import SceneError, UnknownLabelError, suggest
-from ..options import labels
+from ..options import MAX_STEPS, labels
 from ..scene import Crank, Scene, load_scene
 from ..sweep import Sweep, harmonic, sweep
 
@@ -30,6 +30,24 @@ PROGRESS_FROM = 100_000
 STREAM_FROM = 1_000_000
 #: most points drawn per curve (the maxima are always taken from every position)
 PLOT_POINTS = 4000
+#: the formats a plot can be written in (--formats)
+PLOT_FORMATS = ("png", "svg", "pdf")
+#: the longest scene title a plot shows (cut with an ellipsis beyond)
+PLOT_TITLE = 120
+#: most curves named in one panel's key (a large mechanism has dozens of links)
+PLOT_KEYED = 8
+
+
+def _formats(text: str) -> tuple[str, ...]:
+    """--formats: a comma-separated list of PLOT_FORMATS, refused by the parser."""
+    import argparse
+    formats = tuple(dict.fromkeys(f.strip().lower() for f in text.split(",") if f.strip()))
+    bad = [f for f in formats if f not in PLOT_FORMATS]
+    if bad or not formats:
+        head = f"unknown plot format {bad[0][:40]!r}" if bad else "no plot format"
+        raise argparse.ArgumentTypeError(f"{head}: choose from {', '.join(PLOT_FORMATS)} "
+                                         f"(comma-separated)")
+    return formats
 
 
 def register(sub) -> None:
@@ -40,14 +58,17 @@ def register(sub) -> None:
                                    "acceleration of chosen points and ω/α of chosen links.")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--steps", type=int, default=None,
-                   help="positions over the cycle (default: [sweep] steps or 360)")
+                   help=f"positions over the cycle, 2 .. {MAX_STEPS:,} (default: [sweep] steps "
+                        f"or 360)")
     p.add_argument("--points", help="comma-separated point labels to plot (default: [sweep] "
                                     "points, else the sliders, else the last point placed)")
     p.add_argument("--links", help="comma-separated link names for ω/α (default: [sweep] "
                                    "links, else every link but the crank)")
     p.add_argument("-o", "--out", default="out", metavar="DIR",
                    help="output directory (default: out)")
-    p.add_argument("--formats", default="png,svg", help="plot formats (default: png,svg)")
+    p.add_argument("--formats", type=_formats, default=("png", "svg"),
+                   help=f"plot formats, comma-separated: {', '.join(PLOT_FORMATS)} "
+                        f"(default: png,svg)")
     p.add_argument("--no-plot", action="store_true", help="write the CSV only")
     p.add_argument("--shm", action="store_true", default=None,
                    help="overlay the simple-harmonic curve on each slider (crank pin "
@@ -74,10 +95,13 @@ def _options(scene: Scene, args) -> dict:
         else (list(sw.points) if sw.points is not None else None)
     links = list(labels(args.links, file=scene.file, where="--links")) if args.links \
         else (list(sw.links) if sw.links is not None else None)
+    # each label once (a repeat would add columns and curves, never information)
+    points = list(dict.fromkeys(points)) if points is not None else None
+    links = list(dict.fromkeys(links)) if links is not None else None
     steps = args.steps if args.steps is not None else (sw.steps or 360)
-    if steps < 2:
-        raise SceneError(f"steps must be a whole number ≥ 2, got {steps!r}", file=scene.file,
-                         where="--steps")
+    if not 2 <= steps <= MAX_STEPS:      # the scene's [sweep] steps bound, before any work
+        raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
+                         f"{steps:,}", file=scene.file, where="--steps")
     shm = args.shm if args.shm is not None else bool(sw.shm)
     unit = args.unit or sw.unit
     if unit is None:
@@ -104,6 +128,9 @@ def _default_links(sw: Sweep) -> list[str]:
 
 def run(args) -> int:
     scene = load_scene(args.scene)
+    if args.steps is not None and not 2 <= args.steps <= MAX_STEPS:    # checked with --vary too
+        raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
+                         f"{args.steps:,}", file=scene.file, where="--steps")
     if args.vary:
         from ._vary import run_vary
         return run_vary(args, scene)
@@ -145,8 +172,7 @@ def run(args) -> int:
     stem = out / f"{Path(args.scene).stem}-sweep"
     written = [write_csv(sw, points, links, stem.with_suffix(".csv"))]
     if not args.no_plot:
-        formats = [f.strip() for f in args.formats.split(",") if f.strip()]
-        written += plot(sw, points, links, shm, opt["unit"], stem, formats)
+        written += plot(sw, points, links, shm, opt["unit"], stem, list(args.formats))
     sys.stdout.write(summary(sw, points, links, shm, opt["unit"], written))
     return 0
 
@@ -240,6 +266,12 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
                 al.lines.append(Line(f"α {name}" if first else "", x[sl][d],
                                      sw.alpha[name][sl][d], "-", c))
         panels += [om, al]
+    for panel in panels:          # a key of dozens of curves cannot fit the figure
+        keyed = [ln for ln in panel.lines if ln.label]
+        if len(keyed) > PLOT_KEYED:
+            for ln in keyed[PLOT_KEYED:]:
+                ln.label = ""
+            panel.title = f"key: the first {PLOT_KEYED} of {len(keyed)} curves"
     markers = []
     for lim in sw.limits:
         if lim.kind in ("limit", "toggle", "near-toggle"):
@@ -257,13 +289,20 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
     drv = sw.scene.driver
     rate = (f"ω = {abs(drv.omega):.4g} rad/s {'CCW' if drv.omega > 0 else 'CW'}"
             if isinstance(drv, Crank) else f"v = {drv.velocity:.4g} m/s")
-    title = f"{sw.scene.title}\n{rate}, {sw.n} positions"
+    title = f"{plot_title(sw.scene.title)}\n{rate}, {sw.n} positions"
     if not sw.full_cycle:
         title += " (reachable range)"
     cw = isinstance(drv, Crank) and drv.omega < 0     # the axis in the crank's sense of rotation
     if cw:
         xlabel += "; axis reversed: the crank turns CW, time runs left to right"
     return plot_panels(title, xlabel, panels, stem, formats, markers, xlim, xticks, reverse_x=cw)
+
+
+def plot_title(title: str) -> str:
+    """A scene title as a plot shows it: one line, at most PLOT_TITLE characters (a longer one
+    cannot fit the figure)."""
+    text = " ".join(str(title).split())
+    return text if len(text) <= PLOT_TITLE else text[:PLOT_TITLE - 1] + "…"
 
 
 def _add(disp, vel, acc, sw, x, name, s, v, a, style, color):
