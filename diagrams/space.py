@@ -90,9 +90,11 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
 
     # slotted levers
     slotted = set()
+    # a bar bearing on a fixed circle is drawn as the bar (its slot is only the equivalent)
+    bearing = {q.at for q in scene.equivalents if q.kind == "bearing"}
     for slot in scene.model.slots() + scene.model.crossings():
         pivot, lever = slot.line.origin, slot.carrier
-        if slot.at not in P or pivot not in P:
+        if slot.at not in P or pivot not in P or slot.at in bearing:
             continue
         piv, pin = P[pivot], P[slot.at]
         e = _unit((pin[0] - piv[0], pin[1] - piv[1]))
@@ -138,12 +140,28 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
 
     # binary links (a cam's or curved slot's equivalent link dashed, its arcs drawn thin:
     # polygons.contacts)
-    equivalent = {q.link: q for q in scene.equivalents if q.link}
+    equivalent = {q.link: q for q in scene.equivalents if q.kind in ("cam", "curved slot")}
     eq_notes = []
     for q in scene.equivalents:
         if q.centre not in P or q.at not in P:
             continue
         c, at = P[q.centre], P[q.at]
+        if q.kind == "rolling":   # the wheel, the surface under it, the contact (instant centre)
+            e = (math.cos(q.face), math.sin(q.face))
+            rad = q.radius * k
+            I = (c[0] + rad * e[1], c[1] - rad * e[0])
+            back.append(Circle(_r(c), round(rad, 3), "link-thin", cls="wheel"))
+            s1, s2 = _add(I, e, -rad * 1.1), _add(I, e, rad * 1.1)
+            back.append(Segment(_r(s1), _r(s2), "ground", cls="rolling-surface"))
+            placer.hard(s1, s2, 1.0)
+            back.append(Circle(_r(I), 0.6, "vertex", cls="instant-centre"))
+            eq_notes.append((f"I: instant centre of wheel {q.at}", _add(I, e, -rad * 0.9)))
+            continue
+        if q.kind == "bearing":   # the fixed circle the bar leans on
+            back.append(Circle(_r(c), round(q.radius * k, 3), "link-thin", cls="cylinder"))
+            eq_notes.append((f"fixed circle about {q.centre} (equivalent: {q.centre} in a "
+                             f"slot ∥ {q.link})", _add(c, (0.0, -1.0), q.radius * k)))
+            continue
         if q.link is None:        # a flat face: the yoke's slot through the centre stands for it
             eq_notes.append((f"flat face ≡ slot through {q.centre} (equivalent)", c))
             continue
@@ -383,6 +401,9 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     box = frame
     for g in content:
         for it in g.items:
+            if isinstance(it, Circle) and it.cls in ("wheel", "cylinder"):   # contacts
+                c, rr = it.centre, it.r
+                box = box.union(Box(c[0] - rr, c[1] - rr, c[0] + rr, c[1] + rr))
             if isinstance(it, Text):
                 from .labels import text_box
                 box = box.union(text_box(it.x, it.baseline, it.text, it.size))
@@ -429,7 +450,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
             ", ".join(f"{lab} ({number(p[0] * 1000)} mm, {number(p[1] * 1000)} mm)"
                       for lab, p in sol.placement.points.items()) + ".")
     key = [("link", "link (rigid body)", False)]
-    if any(q.link for q in scene.equivalents):
+    if any(q.kind in ("cam", "curved slot") for q in scene.equivalents):
         key.append(("equivalent", "equivalent link (this instant)", False))
         key.append(("slot", "curved slot / cam profile at the contact", False))
     if len(scene.ground) >= 2:

@@ -131,3 +131,69 @@ def test_space_diagram_draws_the_equivalent_link():
     assert any(isinstance(t, Text) and t.text == "equivalent link KP" for t in d.items())
     svg = to_svg(d).decode()
     assert "equivalent" in svg and "contact-arc" in svg
+
+
+def test_rolling_wheel_is_the_offset_slider_crank_and_turns_at_v_over_r():
+    from polygons.contacts import higher
+    sol = solve(load_scene(ROOT / "rolling-wheel-driven.toml"))
+    ex = slider_crank(0.04, 0.15, math.radians(50), 12.0, e=0.02)
+    _near(sol.points["W"].velocity, (ex["v_B"], 0.0))
+    _near(sol.points["W"].acceleration, (ex["a_B"], 0.0))
+    h = higher(sol, sol.scene.equivalents[0])
+    assert abs(h["omega"] - (-ex["v_B"] / 0.05)) < 1e-9 * abs(h["omega"])
+    assert abs(h["alpha"] - (-ex["a_B"] / 0.05)) < 1e-9 * abs(h["alpha"])
+    # the contact is the wheel's instant centre: every wheel point's velocity is ω k × (p − I)
+    I, W = h["instant_centre"], sol.points["W"].position
+    _near(I, (ex["x_B"], -0.03), 1e-12)
+    _near((-h["omega"] * (W[1] - I[1]), h["omega"] * (W[0] - I[0])), sol.points["W"].velocity)
+
+
+def _bar(x, R, d, v):
+    """φ, φ̇, φ̈ of a bar from A = (x, 0) tangent to the circle (d, R) of radius R, A moving at
+    the steady v: (d − x) sin φ − R cos φ = R, differentiated by hand."""
+    # tangent line from A: φ = atan2(R, d − x) · 2 (the circle touches the floor)
+    phi = 2 * math.atan2(R, d - x)
+    s, c = math.sin(phi), math.cos(phi)
+    D = (d - x) * c + R * s
+    w = v * s / D
+    Nd = v * c * w
+    Dd = -v * c - (d - x) * s * w + R * c * w
+    return phi, w, (Nd * D - v * s * Dd) / (D * D)
+
+
+def test_bar_on_a_half_cylinder():
+    from polygons.contacts import higher
+    sol = solve(load_scene(ROOT / "bar-on-half-cylinder.toml"))
+    phi, w, a = _bar(0.0, 0.1, 0.3, 0.5)
+    link = sol.links["AQ"]
+    assert abs(link.omega - w) < 1e-9 and abs(link.alpha - a) < 1e-9
+    Q = sol.points["Q"].position
+    assert abs(math.atan2(Q[1], Q[0]) - phi) < 1e-12
+    h = higher(sol, sol.scene.equivalents[0])
+    T, I, K = h["contact"], h["instant_centre"], (0.3, 0.1)
+    assert abs(math.dist(T, K) - 0.1) < 1e-12
+    # Kennedy: I on the vertical through A and on the normal KT
+    assert abs(I[0]) < 1e-12
+    assert abs((I[0] - K[0]) * (T[1] - K[1]) - (I[1] - K[1]) * (T[0] - K[0])) < 1e-12
+    rng = random.Random(9)
+    for _ in range(10):
+        x, v = rng.uniform(-0.2, 0.1), rng.uniform(-1, 1)
+        text = (ROOT / "bar-on-half-cylinder.toml").read_text().replace(
+            'position = "0 mm"', f'position = "{x * 1000!r} mm"').replace(
+            'velocity = "0.5 m/s"', f'velocity = "{v!r} m/s"').split("[[answers]]")[0]
+        sol = solve(parse(text))
+        phi, w, a = _bar(x, 0.1, 0.3, v)
+        assert abs(sol.links["AQ"].omega - w) < 1e-9 * max(1, abs(w))
+        assert abs(sol.links["AQ"].alpha - a) < 1e-9 * max(1, abs(a))
+
+
+@pytest.mark.parametrize("table,words", [
+    ('[bearing.K]\nbar = "AQ"\nradius = "100 mm"\n', "missing key 'side'"),
+    ('[bearing.K]\nbar = "AX"\nradius = "100 mm"\nside = "left"\n', "bar must be a link"),
+    ('[bearing.Z]\nbar = "AQ"\nradius = "100 mm"\nside = "left"\n', "[ground] point"),
+])
+def test_bearing_refusals(table, words):
+    text = (ROOT / "bar-on-half-cylinder.toml").read_text().split("[bearing.K]")[0] + table
+    with pytest.raises(PolygonsError) as exc:
+        parse(text)
+    assert words in str(exc.value)
