@@ -16,6 +16,7 @@ from polygons.evaluate import solve
 from polygons.scene import load_scene, parse_scene as _parse, parse_toml
 
 ROOT = Path(__file__).resolve().parents[1] / "cases"
+FLOOR = Path(__file__).resolve().parent / "data" / "bar-on-half-cylinder-floor.toml"
 
 
 def parse(text):
@@ -163,7 +164,7 @@ def _bar(x, R, d, v):
 
 def test_bar_on_a_half_cylinder():
     from polygons.contacts import higher
-    sol = solve(load_scene(ROOT / "bar-on-half-cylinder.toml"))
+    sol = solve(load_scene(FLOOR))
     phi, w, a = _bar(0.0, 0.1, 0.3, 0.5)
     link = sol.links["AQ"]
     assert abs(link.omega - w) < 1e-9 and abs(link.alpha - a) < 1e-9
@@ -178,7 +179,7 @@ def test_bar_on_a_half_cylinder():
     rng = random.Random(9)
     for _ in range(10):
         x, v = rng.uniform(-0.2, 0.1), rng.uniform(-1, 1)
-        text = (ROOT / "bar-on-half-cylinder.toml").read_text().replace(
+        text = FLOOR.read_text().replace(
             'position = "0 mm"', f'position = "{x * 1000!r} mm"').replace(
             'velocity = "0.5 m/s"', f'velocity = "{v!r} m/s"').split("[[answers]]")[0]
         sol = solve(parse(text))
@@ -193,7 +194,34 @@ def test_bar_on_a_half_cylinder():
     ('[bearing.Z]\nbar = "AQ"\nradius = "100 mm"\nside = "left"\n', "[ground] point"),
 ])
 def test_bearing_refusals(table, words):
-    text = (ROOT / "bar-on-half-cylinder.toml").read_text().split("[bearing.K]")[0] + table
+    text = FLOOR.read_text().split("[bearing.K]")[0] + table
     with pytest.raises(PolygonsError) as exc:
         parse(text)
     assert words in str(exc.value)
+
+
+def _bar_general(A, vA, aA, K, R):
+    """φ, φ̇, φ̈ of a bar from A tangent to the circle (K, R) on its right:
+    (K − A) × u = R, u = (cos φ, sin φ), differentiated by hand."""
+    dx, dy = K[0] - A[0], K[1] - A[1]
+    phi = math.atan2(dy, dx) + math.asin(R / math.hypot(dx, dy))
+    s, c = math.sin(phi), math.cos(phi)
+    D = dx * c + dy * s
+    N = vA[0] * s - vA[1] * c
+    w = N / D
+    Nd = aA[0] * s + vA[0] * c * w - aA[1] * c + vA[1] * s * w
+    Dd = -vA[0] * c - vA[1] * s + w * (-dx * s + dy * c)
+    return phi, w, (Nd * D - N * Dd) / (D * D)
+
+
+def test_bar_on_a_half_cylinder_driven_by_a_crank():
+    sol = solve(load_scene(ROOT / "bar-on-half-cylinder.toml"))
+    th, r, om, O = math.radians(30), 0.04, 10.0, (-0.1, 0.06)
+    A = (O[0] + r * math.cos(th), O[1] + r * math.sin(th))
+    vA = (-om * r * math.sin(th), om * r * math.cos(th))
+    aA = (-om * om * r * math.cos(th), -om * om * r * math.sin(th))
+    phi, w, a = _bar_general(A, vA, aA, (0.3, 0.1), 0.1)
+    link = sol.links["AQ"]
+    assert abs(link.omega - w) < 1e-9 and abs(link.alpha - a) < 1e-9
+    Q = sol.points["Q"].position
+    assert abs(math.atan2(Q[1] - A[1], Q[0] - A[0]) - phi) < 1e-12
