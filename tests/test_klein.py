@@ -153,3 +153,13 @@ def test_labels_do_not_overlap():
             for i, a in enumerate(boxes):
                 for b in boxes[i + 1:]:
                     assert not a.overlaps(b)
+
+
+def test_handout_carries_the_construction_and_the_equivalent_linkage(tmp_path):
+    from polygons.cli.handout import build
+    html = build(str(ROOT / "cases" / "klein-offset-engine.toml"))
+    assert 'id="klein"' in html and "Klein circle" in html
+    assert html.index('id="klein"') < html.index("</body>")
+    html = build(str(ROOT / "cases" / "curved-slot-pin.toml"))
+    assert 'id="equivalent"' in html and "equivalent link KP" in html
+    assert 'id="klein"' not in build(str(ROOT / "cases" / "s001-we3.toml"))
