@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 from .errors import SceneError
 from .model import FRAME  # noqa: F401  (the frame's name, as the model writes it)
+from .memo import memo_of
 
 
 
@@ -124,7 +125,7 @@ def used_links(dyads) -> set[str]:
 
 def _unused(plan) -> tuple[str, ...]:
     """The links with a length that no dyad of ``plan`` uses (kept with the frozen plan)."""
-    memo = plan.__dict__
+    memo = memo_of(plan)
     if "_unused" not in memo:
         used = used_links(plan.dyads)
         memo["_unused"] = tuple(n for n, ln in plan.scene.links.items()

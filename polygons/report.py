@@ -11,6 +11,7 @@ from . import geometry
 from .errors import PolygonsError
 from .evaluate import Solution
 from .quantities import quantity
+from .notation import vertex, vertices_in
 from .steps import noise_floor, percent_diff, sense as steps_sense
 from .scene import Answer
 from .units import SYSTEMS, UNITS
@@ -227,13 +228,14 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
     if steps:
         for diagram in scene.solve:
             lines.append("")
-            lines.append(f"{diagram} construction (pole {sol.pole}):")
+            lines.append(f"{diagram} construction (pole {vertex(sol.pole)}):")
             for s in sol.steps:
                 if s.diagram != diagram:
                     continue
                 text = f"  {s.number:>2}. {s.reason}"
                 if s.substituted:
                     text += f"  [{s.substituted}]"
+                text = vertices_in(text, sol.vertices[diagram])   # p4_1 → p₄′
                 lines.append(text)
     lines.append("")
     if sol.min_intersection_angle_deg is not None:

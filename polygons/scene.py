@@ -57,7 +57,7 @@ from .units import dimension_of
 _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
 
 #: option tables, read and checked at load by :mod:`polygons.options` (``Scene.options``)
-OPTION_KEYS = ("sweep", "diagram", "handout")
+OPTION_KEYS = ("sweep", "diagram", "handout", "centres")
 #: tables read by extension modules (forces, loads, pins); stored raw in ``Scene.extra`` and
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
@@ -507,8 +507,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                    options=options, loads=None, prescribed=MappingProxyType(prescribed),
                    model=model, crossing=MappingProxyType(crossing), equivalents=equivalents)
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
-    scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
+    # (read off the scene without them, then a new record with them: never set afterwards)
+    loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
+    scene = record(Scene, **{**vars(scene), "loads": loads})
     exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
     return scene
 

@@ -43,6 +43,7 @@ from .position import assemble, driver_input
 from .scene import Crank, Scene
 from .steps import Diagram, Step
 from .theorems import angular_acceleration, angular_velocity
+from .memo import memo_of
 
 #: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
 PARALLEL_DEG = 1e-5
@@ -259,7 +260,7 @@ def arrays_program(prog: Program):
     """The construction of ``prog`` generated for (N,) arrays of inputs (:mod:`polygons.codegen`
     via :func:`polygons.compiled.compile_arrays`) and the scene's parameters: made once per
     program and kept with it."""
-    memo = prog.__dict__
+    memo = memo_of(prog)
     if "_arrays" not in memo:
         from .compiled import compile_arrays
         memo["_arrays"] = compile_arrays(prog.scene, prog.plan, dict(prog.sigma))

@@ -22,6 +22,7 @@ import numpy as np
 from ..errors import SceneError, UnknownLabelError, suggest
 from ..options import MAX_STEPS, labels
 from ..scene import Crank, Scene, load_scene
+from ..steps import number
 from ..sweep import Sweep, harmonic, sweep
 
 #: above this many positions the summary draws a progress bar (on a terminal)
@@ -110,14 +111,27 @@ def _options(scene: Scene, args) -> dict:
 
 
 def _default_points(sw: Sweep) -> list[str]:
+    """The points a user asks about: those the scene's ``[[answers]]`` name (moving points
+    only, in the order asked); else the sliders; else the last point placed — never a lever
+    point under a pin (P4 under P2) unless it is asked for."""
     scene = sw.scene
     drv = scene.driver
+    asked = []
+    for ans in scene.answers:
+        if ans.q is None or ans.q.fn in ("omega", "alpha", "angle", "arm", "dist"):
+            continue
+        for lab in ans.q.args:
+            if lab in sw.pos and lab not in scene.ground and lab not in asked:
+                asked.append(lab)
+    if asked:
+        return asked
     sliders = [s for s in scene.model.guide if s in sw.travel
                and not (not isinstance(drv, Crank) and s == drv.point)]
     if sliders:
         return sliders
-    last = sw.plan.dyads[-1].placed
-    return [last[-1]]
+    under = set(scene.model.under)                  # lever points under a pin (P4)
+    placed = [lab for d in sw.plan.dyads for lab in d.placed if lab not in under]
+    return [placed[-1]] if placed else [sw.plan.dyads[-1].placed[-1]]
 
 
 def _default_links(sw: Sweep) -> list[str]:
@@ -237,17 +251,13 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
     colors = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink"]
     disp, vel, acc = Panel(f"displacement ({lu})", zero_line=False), Panel(f"velocity ({vu})"), \
         Panel(f"acceleration ({au})")
+    here, x0 = _at_scene(sw)
     for i, lab in enumerate(points):
         c = colors[i % len(colors)]
-        if lab in sw.travel and lab in sw.slide_v:
-            series = [(f"{lab} along its guide", sw.travel[lab], sw.slide_v[lab],
-                       sw.slide_a[lab], "-")]
-        else:
-            P, V, A = sw.position(lab), sw.velocity(lab), sw.acceleration(lab)
-            series = [(f"{lab} x", P[:, 0], V[:, 0], A[:, 0], "-"),
-                      (f"{lab} y", P[:, 1], V[:, 1], A[:, 1], "--")]
-        for name, s, v, a, style in series:
+        for (name, s, v, a, style), mark in zip(_series(sw, lab), _series(here, lab)):
             _add(disp, vel, acc, sw, x, name, s * f, v * f, a * f, style, c)
+            for panel, y in zip((disp, vel, acc), mark[1:4]):   # the scene's own position
+                panel.lines.append(Line("", [x0], [float(y[0]) * f], "none", c, marker="o"))
         if lab in shm:
             h = shm[lab]
             _add(disp, vel, acc, sw, x, f"{lab} simple harmonic (pin {h.pin} projected)",
@@ -265,6 +275,10 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
                                      sw.omega[name][sl][d], "-", c))
                 al.lines.append(Line(f"α {name}" if first else "", x[sl][d],
                                      sw.alpha[name][sl][d], "-", c))
+            om.lines.append(Line("", [x0], [float(here.omega[name][0])], "none", c,
+                                 marker="o"))
+            al.lines.append(Line("", [x0], [float(here.alpha[name][0])], "none", c,
+                                 marker="o"))
         panels += [om, al]
     for panel in panels:          # a key of dozens of curves cannot fit the figure
         keyed = [ln for ln in panel.lines if ln.label]
@@ -272,7 +286,9 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
             for ln in keyed[PLOT_KEYED:]:
                 ln.label = ""
             panel.title = f"key: the first {PLOT_KEYED} of {len(keyed)} curves"
-    markers = []
+    where = (f"θ = {number(x0)}°" if sw.input_kind == "crank"
+             else f"s = {number(x0)} mm")
+    markers = [Marker(x0, f"scene: {where} (dots)", "0.35")]
     for lim in sw.limits:
         if lim.kind in ("limit", "toggle", "near-toggle"):
             xm = math.degrees(lim.input) if sw.input_kind == "crank" else lim.input * 1e3
@@ -296,6 +312,28 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
     if cw:
         xlabel += "; axis reversed: the crank turns CW, time runs left to right"
     return plot_panels(title, xlabel, panels, stem, formats, markers, xlim, xticks, reverse_x=cw)
+
+
+def _series(sw: Sweep, lab: str):
+    """(name, s, v, a, line style) of the curves drawn for point ``lab``."""
+    if lab in sw.travel and lab in sw.slide_v:
+        return [(f"{lab} along its guide", sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab],
+                 "-")]
+    P, V, A = sw.position(lab), sw.velocity(lab), sw.acceleration(lab)
+    return [(f"{lab} x", P[:, 0], V[:, 0], A[:, 0], "-"),
+            (f"{lab} y", P[:, 1], V[:, 1], A[:, 1], "--")]
+
+
+def _at_scene(sw: Sweep):
+    """The sweep solved at the scene's own input (its branch), and that input on the x axis:
+    the dots on every curve where the drawings and ``solve`` stand."""
+    drv = sw.scene.driver
+    x0 = drv.angle if sw.input_kind == "crank" else drv.position
+    here = sweep(sw.scene, inputs=[x0])
+    if sw.input_kind == "crank":
+        deg = math.degrees(x0)
+        return here, (deg % 360.0 if sw.full_cycle else deg)
+    return here, x0 * 1e3
 
 
 def plot_title(title: str) -> str:
@@ -370,18 +408,18 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
             s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
             e = scene.model.guide[lab].line.angle
             out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
-                       f"{np.nanmin(s) * f:.6g} … {np.nanmax(s) * f:.6g} {lu} "
-                       f"(stroke {(np.nanmax(s) - np.nanmin(s)) * f:.6g} {lu})")
+                       f"{number(np.nanmin(s) * f)} … {number(np.nanmax(s) * f)} {lu} "
+                       f"(stroke {number((np.nanmax(s) - np.nanmin(s)) * f)} {lu})")
             iv, ia = int(np.nanargmax(np.abs(v))), int(np.nanargmax(np.abs(a)))
-            out.append(f"  max |v| = {abs(v[iv]) * f:.10g} {vu} at {_at(sw, iv)}")
-            out.append(f"  max |a| = {abs(a[ia]) * f:.16g} {au} at {_at(sw, ia)}")
+            out.append(f"  max |v| = {number(abs(v[iv]) * f)} {vu} at {_at(sw, iv)}")
+            out.append(f"  max |a| = {number(abs(a[ia]) * f)} {au} at {_at(sw, ia)}")
         else:
             V, A = sw.velocity(lab), sw.acceleration(lab)
             vm, am = np.hypot(V[:, 0], V[:, 1]), np.hypot(A[:, 0], A[:, 1])
             iv, ia = int(np.nanargmax(vm)), int(np.nanargmax(am))
             out.append(f"point {lab}:")
-            out.append(f"  max |v| = {vm[iv] * f:.10g} {vu} at {_at(sw, iv)}")
-            out.append(f"  max |a| = {am[ia] * f:.16g} {au} at {_at(sw, ia)}")
+            out.append(f"  max |v| = {number(vm[iv] * f)} {vu} at {_at(sw, iv)}")
+            out.append(f"  max |a| = {number(am[ia] * f)} {au} at {_at(sw, ia)}")
         if lab in shm:
             h = shm[lab]
             a = sw.slide_a[lab]
@@ -392,16 +430,16 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
             dv = float(np.nanmax(np.abs(sw.slide_v[lab] - h.velocity)))
             ds = float(np.nanmax(np.abs(sw.travel[lab] - h.travel)))
             out.append(f"  simple harmonic (crank pin {h.pin} projected on the guide): max |a| "
-                       f"= {hmax * f:.10g} {au}")
-            out.append(f"  difference from SHM: max |Δa| = {abs(d[idd]) * f:.6g} {au} at "
+                       f"= {number(hmax * f)} {au}")
+            out.append(f"  difference from SHM: max |Δa| = {number(abs(d[idd]) * f)} {au} at "
                        f"{_at(sw, idd)} ({abs(d[idd]) / amax * 100 if amax else 0:.3g} % of "
-                       f"max |a|), max |Δv| = {dv * f:.6g} {vu}, max |Δs| = {ds * f:.6g} {lu} "
-                       f"(travel offset {h.offset * f:.6g} {lu})")
+                       f"max |a|), max |Δv| = {number(dv * f)} {vu}, max |Δs| = "
+                       f"{number(ds * f)} {lu} (travel offset {number(h.offset * f)} {lu})")
     for name in links:
         w, al = sw.omega[name], sw.alpha[name]
         iw, ia = int(np.nanargmax(np.abs(w))), int(np.nanargmax(np.abs(al)))
-        out.append(f"link {name}: max |ω| = {abs(w[iw]):.6g} rad/s at {_at(sw, iw)}; "
-                   f"max |α| = {abs(al[ia]):.6g} rad/s² at {_at(sw, ia)}")
+        out.append(f"link {name}: max |ω| = {number(abs(w[iw]))} rad/s at {_at(sw, iw)}; "
+                   f"max |α| = {number(abs(al[ia]))} rad/s² at {_at(sw, ia)}")
     out.append("")
     out.append("written: " + ", ".join(str(p) for p in written))
     return "\n".join(out) + "\n"
