@@ -225,3 +225,16 @@ def test_bar_on_a_half_cylinder_driven_by_a_crank():
     assert abs(link.omega - w) < 1e-9 and abs(link.alpha - a) < 1e-9
     Q = sol.points["Q"].position
     assert abs(math.atan2(Q[1] - A[1], Q[0] - A[0]) - phi) < 1e-12
+
+
+def test_the_bar_s_instant_centre_is_kennedy_s():
+    """The instant centre read off the bearing (normal at the contact × normal to A's path)
+    is the one polygons centres finds by Kennedy's theorem on the equivalent linkage."""
+    from polygons.centres import instant_centres
+    from polygons.contacts import higher
+    sol = solve(load_scene(ROOT / "bar-on-half-cylinder.toml"))
+    h = higher(sol, sol.scene.equivalents[0])
+    cs = instant_centres(sol)
+    bar = next(b.number for b in cs.bodies if b.name == "AQ")
+    frame = next(b.number for b in cs.bodies if b.name == "frame")
+    _near(cs.centre(frame, bar).point, h["instant_centre"], 1e-12)
