@@ -34,8 +34,9 @@ def options(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = 
 
 
 def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
-             stages: bool | None = None, text_scale: float = 1.0):
-    """Every drawing of a solution, in order: space, then each polygon and its stages.
+             stages: bool | None = None, text_scale: float = 1.0, klein: str | None = None):
+    """Every drawing of a solution, in order: space, then each polygon and its stages, then
+    (``klein`` or the scene's ``[diagram] klein``) Klein's construction and its stages.
 
     ``text_scale`` enlarges the polygons' labels (for figures printed reduced)."""
     from . import polygon, space
@@ -50,11 +51,17 @@ def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None =
         if opts["stages"]:
             for k in range(1, len(lay.con.steps) + 1):
                 out.append(polygon.drawing(sol, lay, k))
+    method = klein or sol.scene.options.diagram.klein
+    if method:
+        from polygons.classic.klein import figure
+        from . import klein as klein_drawing
+        out += klein_drawing.drawings(sol, figure(sol, method), sc.get("space"), paper,
+                                      opts["stages"])
     return out
 
 
 def write(sol, outdir, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
-          stages: bool | None = None) -> list[Path]:
+          stages: bool | None = None, klein: str | None = None) -> list[Path]:
     """Write every drawing of ``sol`` as ``outdir/<name>.svg``; return the paths."""
     from .svg import to_svg
     outdir = Path(outdir)
@@ -62,7 +69,7 @@ def write(sol, outdir, scales: Mapping[str, Scale] | None = None, paper: str | N
         raise DiagramError(f"{outdir} exists and is not a folder", where=str(outdir))
     outdir.mkdir(parents=True, exist_ok=True)
     paths = []
-    for d in drawings(sol, scales, paper, stages):
+    for d in drawings(sol, scales, paper, stages, klein=klein):
         path = outdir / f"{d.name}.svg"
         path.write_bytes(to_svg(d))
         paths.append(path)

@@ -91,9 +91,11 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
 
     # slotted levers
     slotted = set()
+    # a bar bearing on a fixed circle is drawn as the bar (its slot is only the equivalent)
+    bearing = {q.at for q in scene.equivalents if q.kind == "bearing"}
     for slot in scene.model.slots() + scene.model.crossings():
         pivot, lever = slot.line.origin, slot.carrier
-        if slot.at not in P or pivot not in P:
+        if slot.at not in P or pivot not in P or slot.at in bearing:
             continue
         piv, pin = P[pivot], P[slot.at]
         e = _unit((pin[0] - piv[0], pin[1] - piv[1]))
@@ -137,9 +139,53 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         for p, q in zip(blk, blk[1:] + blk[:1]):
             placer.hard(p, q, 0.4)
 
-    # binary links
+    # binary links (a cam's or curved slot's equivalent link dashed, its arcs drawn thin:
+    # polygons.contacts)
+    equivalent = {q.link: q for q in scene.equivalents if q.kind in ("cam", "curved slot")}
+    eq_notes = []
+    for q in scene.equivalents:
+        if q.centre not in P or q.at not in P:
+            continue
+        c, at = P[q.centre], P[q.at]
+        if q.kind == "rolling":   # the wheel, the surface under it, the contact (instant centre)
+            e = (math.cos(q.face), math.sin(q.face))
+            rad = q.radius * k
+            I = (c[0] + rad * e[1], c[1] - rad * e[0])
+            back.append(Circle(_r(c), round(rad, 3), "link-thin", cls="wheel"))
+            s1, s2 = _add(I, e, -rad * 1.1), _add(I, e, rad * 1.1)
+            back.append(Segment(_r(s1), _r(s2), "ground", cls="rolling-surface"))
+            placer.hard(s1, s2, 1.0)
+            back.append(Circle(_r(I), 0.6, "vertex", cls="instant-centre"))
+            eq_notes.append((f"I: instant centre of wheel {q.at}", _add(I, e, -rad * 0.9)))
+            continue
+        if q.kind == "bearing":   # the fixed circle the bar leans on
+            back.append(Circle(_r(c), round(q.radius * k, 3), "link-thin", cls="cylinder"))
+            eq_notes.append((f"fixed circle about {q.centre} (equivalent: {q.centre} in a "
+                             f"slot ∥ {q.link})", _add(c, (0.0, -1.0), q.radius * k)))
+            continue
+        if q.link is None:        # a flat face: the yoke's slot through the centre stands for it
+            eq_notes.append((f"flat face ≡ slot through {q.centre} (equivalent)", c))
+            continue
+        # the slot's or the profile's arc about the centre of curvature, ±30° about the contact
+        th = math.atan2(at[1] - c[1], at[0] - c[0])
+        # (a slot: its two sides, 1.5 mm of paper either side of the pin's path)
+        for rad in ((q.radius * k - 1.5, q.radius * k + 1.5) if q.kind == "curved slot"
+                    else (q.radius * k,)):
+            arc = tuple(_r((c[0] + rad * math.cos(th + math.radians(t)),
+                            c[1] + rad * math.sin(th + math.radians(t))))
+                        for t in range(-20, 21, 2))
+            back.append(Polyline(arc, "slot", cls="contact-arc"))
+        if q.roller:
+            back.append(Circle(_r(at), round(q.roller * k, 3), "slot", cls="roller"))
     for name, ln in scene.links.items():
         if name in slotted or ln.a not in P or ln.b not in P:
+            continue
+        if name in equivalent:
+            links.append(Segment(_r(P[ln.a]), _r(P[ln.b]), "equivalent",
+                                 cls=f"link {name} equivalent"))
+            placer.hard(P[ln.a], P[ln.b], 1.0)
+            eq_notes.append((f"equivalent link {name}", (
+                (P[ln.a][0] + P[ln.b][0]) / 2, (P[ln.a][1] + P[ln.b][1]) / 2)))
             continue
         link(P[ln.a], P[ln.b], cls=f"link {name}")
         neighbours[ln.a].append(P[ln.b])
@@ -336,6 +382,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
                                        distances=(1.5, 2.5, 3.5, 5.0, 7.0, 10.0))
         labels.append(Text(x, base, text, LABEL_SIZE, role="point", weight="bold",
                            cls="point-label"))
+    for text, at in eq_notes:      # beside the equivalent link's middle (or the yoke's pin)
+        notes.append((text, [at], None))
     for text, anchors, prefer in notes:
         dirs = [2 * math.pi * k / 24 for k in range(24)]
         x, base, _, box = placer.place_any(display(text), NOTE_SIZE,
@@ -354,6 +402,9 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     box = frame
     for g in content:
         for it in g.items:
+            if isinstance(it, Circle) and it.cls in ("wheel", "cylinder"):   # contacts
+                c, rr = it.centre, it.r
+                box = box.union(Box(c[0] - rr, c[1] - rr, c[0] + rr, c[1] + rr))
             if isinstance(it, Text):
                 from .labels import text_box
                 box = box.union(text_box(it.x, it.baseline, it.text, it.size))
@@ -400,6 +451,9 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
             ", ".join(f"{lab} ({number(p[0] * 1000)} mm, {number(p[1] * 1000)} mm)"
                       for lab, p in sol.placement.points.items()) + ".")
     key = [("link", "link (rigid body)", False)]
+    if any(q.kind in ("cam", "curved slot") for q in scene.equivalents):
+        key.append(("equivalent", "equivalent link (this instant)", False))
+        key.append(("slot", "curved slot / cam profile at the contact", False))
     if len(scene.ground) >= 2:
         key.append(("centre", "line of centres", False))
     if scene.model.guide:

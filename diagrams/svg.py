@@ -44,6 +44,7 @@ STYLES = {
     "scalebar": (0.3, None),
     "link": (0.8, None),
     "link-thin": (0.35, None),
+    "equivalent": (0.7, "2.4 1.2"),
     "slot": (0.3, None),
     "hatch": (0.2, None),
     "ground": (0.35, None),

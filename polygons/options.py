@@ -18,6 +18,7 @@ them with their own flags (``--steps``, ``--scale`` ...).
     space_scale = "20 mm"
     paper = "A4"                        # A5 or A4
     stages = false                      # only the finished diagrams
+    klein = true                        # also Klein's construction (or "ritterhaus")
 """
 from __future__ import annotations
 
@@ -35,6 +36,8 @@ MAX_STEPS = 10_000_000
 #: the diagram kinds and the quantity each one's scale measures
 SCALE_QUANTITY = {"space": "length", "velocity": "velocity", "acceleration": "acceleration"}
 PAPERS = ("A5", "A4")
+#: the slider-crank constructions [diagram] klein names (polygons.classic.klein.METHODS)
+KLEIN_METHODS = ("klein", "ritterhaus")
 
 TABLES: tuple[Table, ...] = (
     Table("sweep", "How `polygons sweep` solves and plots a full input revolution (its flags "
@@ -67,6 +70,10 @@ TABLES: tuple[Table, ...] = (
                                "a vector would be too short to read on A5", example='"A4"'),
         Key("stages", "bool", "also write the construction stage by stage "
                               "(velocity-1.svg ...)", example="false", default=True),
+        Key("klein", "bool-or-string", "a slider-crank's classic construction, printed by "
+                                         "`solve` and drawn by `draw` (klein.svg): true or 'klein' (Klein's, in-line "
+                               "or offset), 'ritterhaus' (in-line only); a crank turning "
+                               "uniformly", example="true"),
     )),
     Table("centres", "How `polygons centres` numbers the links of the circle diagram (by "
                      "default 1 the frame, 2 the driver, then in the order the construction "
@@ -102,6 +109,7 @@ class DiagramOptions:
     scales: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
     paper: str | None = None
     stages: bool | None = None
+    klein: str | None = None       # 'klein' | 'ritterhaus' | None (not asked)
 
 
 @dataclass(frozen=True)
@@ -213,8 +221,16 @@ def parse_options(data: Mapping, file: str) -> Options:
     if paper is not None and paper not in PAPERS:
         raise SceneError(f"paper must be one of {', '.join(PAPERS)}, got {show(paper)}",
                          file=file, where="diagram.paper")
+    klein = dg.get("klein")
+    if klein is True:
+        klein = "klein"
+    elif klein is False:
+        klein = None
+    elif klein is not None and klein not in KLEIN_METHODS:
+        raise SceneError(f"klein must be true, false, 'klein' or 'ritterhaus', got "
+                         f"{show(klein)}", file=file, where="diagram.klein")
     diagram = DiagramOptions(MappingProxyType(scales), paper,
-                             _bool(dg, "stages", "diagram", file))
+                             _bool(dg, "stages", "diagram", file), klein)
     _table(data, "handout", file)
     return Options(sweep, diagram, _centres(_table(data, "centres", file), file))
 

@@ -14,7 +14,7 @@ from .schema import Key, Table
 
 #: modules that declare scene tables (a module that does not exist yet is skipped)
 MODULES = ("polygons.scene", "polygons.topology", "polygons.options", "polygons.loads",
-           "polygons.pins", "polygons.exam_table")
+           "polygons.pins", "polygons.exam_table", "polygons.contacts")
 REFERENCE = "docs/scene-reference.md"
 JSON_SCHEMA = "polygons/scene.schema.json"
 _LABEL_RE = r"^[A-Z][a-z0-9_']*$"
@@ -54,7 +54,8 @@ def _type_words(k: Key) -> str:
                                                        else "fraction (number or %)")
     return {"label": "point label", "link": "link name", "branch": "assembly words or "
             "{ near = [x, y] }", "array": "array", "bool": "true/false", "number": "number",
-            "integer": "integer", "string": "text"}.get(k.type, k.type)
+            "integer": "integer", "string": "text",
+            "bool-or-string": "true/false or text"}.get(k.type, k.type)
 
 
 _EXAMPLE_NAME = {"<LABEL>": "C", "<LINK>": "AB"}
@@ -214,6 +215,8 @@ def _key_schema(k: Key) -> dict:
               if k.example and isinstance(_example(k), (int, float)) else {"type": "string"})
     elif k.type == "bool":
         d["type"] = "boolean"
+    elif k.type == "bool-or-string":
+        d["anyOf"] = [{"type": "boolean"}, {"type": "string"}]
     elif k.type == "integer":
         d["type"] = "integer"
     elif k.type == "number":

@@ -39,7 +39,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from . import topology
+from . import contacts, topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
 from .exam_table import spec as exam_spec
@@ -96,6 +96,8 @@ class Scene:
     #: second inputs: prescribed slides along a link (:mod:`polygons.topology`)
     prescribed: Mapping[str, topology.Slide] = field(
         default_factory=lambda: MappingProxyType({}))
+    #: cams and curved slots replaced by their equivalent links (:mod:`polygons.contacts`)
+    equivalents: tuple = ()
 
     @property
     def labels(self) -> tuple[str, ...]:
@@ -210,6 +212,7 @@ def load_scene(path: str | Path) -> Scene:
 def parse_scene(data: dict, *, file: str = "<scene>",
                 extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
+    data, equivalents = contacts.rewrite(data, file) if isinstance(data, dict) else (data, ())
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
             required=("ground", "driver"))
@@ -502,7 +505,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                    drawn=MappingProxyType(drawn),
                    extra=MappingProxyType({k: data[k] for k in extra_keys if k in data}),
                    options=options, loads=None, prescribed=MappingProxyType(prescribed),
-                   model=model, crossing=MappingProxyType(crossing))
+                   model=model, crossing=MappingProxyType(crossing), equivalents=equivalents)
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
     # (read off the scene without them, then a new record with them: never set afterwards)
     loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(

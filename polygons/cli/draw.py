@@ -35,11 +35,12 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
-def write_diagrams(sol, args, out):
+def write_diagrams(sol, args, out, klein: str | None = None):
     import diagrams
     from diagrams.scale import parse_cli
     scales = parse_cli(args.scale)
-    return diagrams.write(sol, out, scales, args.paper, False if args.no_stages else None)
+    return diagrams.write(sol, out, scales, args.paper, False if args.no_stages else None,
+                          klein=klein)
 
 
 def run(args) -> int:

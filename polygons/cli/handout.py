@@ -52,7 +52,13 @@ def build(scene_path: str, *, worksheet: bool = False, scale=None, paper=None,
     from diagrams.scale import parse_cli
     sol = solve(load_scene(scene_path))
     figs = figures(sol, parse_cli(scale), paper)
-    return handout(sol, worksheet=worksheet, figs=figs, centres=centres)
+    text = handout(sol, worksheet=worksheet, figs=figs, centres=centres)
+    from diagrams.handout_klein import sections      # Klein's construction, equivalent links
+    extra = "" if worksheet else sections(sol, parse_cli(scale).get("space"), paper)
+    if extra and "</body>" in text:
+        head, tail = text.rsplit("</body>", 1)
+        text = head + extra + "</body>" + tail
+    return text
 
 
 def write(scene_path: str, out: str | Path, *, worksheet: bool = False, pdf: bool = False,

@@ -22,6 +22,10 @@ def register(sub) -> None:
                                                           "the table")
     p.add_argument("--svg", metavar="DIR", help="also write the labelled SVG diagrams (as "
                                                "'polygons draw -o DIR') to this folder")
+    p.add_argument("--klein", nargs="?", const="klein", choices=("klein", "ritterhaus"),
+                   help="also Klein's construction for a slider-crank (in-line or offset; "
+                        "--klein ritterhaus: Ritterhaus's, in-line only): the piston's velocity "
+                        "and acceleration read off the space diagram (as [diagram] klein)")
     from .draw import add_diagram_options
     add_diagram_options(p)
     p.set_defaults(func=run)
@@ -37,9 +41,14 @@ def run(args) -> int:
         from ..forces import analyse
         from .forces import forces_table, to_dict
         forces = analyse(scene)
+    method = args.klein or scene.options.diagram.klein
+    fig = None
+    if method:
+        from ..classic.klein import figure
+        fig = figure(sol, method)
     if args.svg:
         from .draw import write_diagrams
-        write_diagrams(sol, args, args.svg)
+        write_diagrams(sol, args, args.svg, klein=method)
     from .. import pins
     if args.json:
         data = to_json(sol)
@@ -47,6 +56,12 @@ def run(args) -> int:
             data["pins"] = pins.to_dict(sol)
         if forces is not None:
             data["forces"] = to_dict(forces)
+        if fig is not None:
+            from ..classic.klein import to_dict as klein_dict
+            data["klein"] = klein_dict(fig)
+        if scene.equivalents:
+            from ..contacts import to_list
+            data["equivalent_links"] = to_list(sol)
         text = json_text(data)
     else:
         text = table(sol, steps=not args.no_steps, units=args.units)
@@ -54,5 +69,11 @@ def run(args) -> int:
             text += "\n" + "\n".join(pins.report_lines(sol)) + "\n"
         if forces is not None:
             text += "\n" + forces_table(forces, header=False)
+        if fig is not None:
+            from ..classic.klein import report_lines
+            text += "\n" + "\n".join(report_lines(fig)) + "\n"
+        if scene.equivalents:
+            from ..contacts import report_lines as equivalent_lines
+            text += "\n" + "\n".join(equivalent_lines(sol)) + "\n"
     emit(text, args.out)
     return 0

@@ -1,0 +1,431 @@
+"""Higher pairs stated as the books state them, replaced at load by their equivalent linkage.
+
+At one instant a curved contact moves like a link joining the two centres of curvature (the
+classic *equivalent linkage*): its velocity and acceleration polygons are the equivalent
+mechanism's.  Two forms (scene layer; the rewrite happens on the parsed TOML before the
+scene is read, so every method sees ordinary links, sliders and yokes):
+
+    [curved_slots.P]        # the pin P in a circular-arc slot
+    centre = "K"            # the slot's centre of curvature: a [ground] point (a slot in the
+    radius = "150 mm"       #   frame) or a point of the link carrying it; the arc's radius
+                            # → the equivalent link KP = radius
+
+    [cams.R]                # a roller follower: R the roller's centre
+    centre = "C"            # the cam profile's centre of curvature at the contact (a point of
+    radius = "40 mm"        #   the cam: the end of the crank OC, or [points] on it), and the
+    roller = "10 mm"        #   profile's radius of curvature there; the roller's radius
+                            # → the equivalent link CR = radius + roller (radius − roller
+                            #   when the roller bears on a concave arc: concave = true)
+
+    [cams.F]                # a translating flat-faced follower ([sliders.F] its guide)
+    follower = "flat"
+    centre = "C"
+    radius = "40 mm"
+    face = "0 deg"          # the face's direction (fixed: the follower only translates)
+                            # → a Scotch yoke: C slides in a slot ∥ the face, carried by F
+
+Refused in words where the curvature is not given (no ``centre`` / ``radius``), and for the
+force analysis (the equivalent link carries the contact force along the common normal only at
+the instant; forces are not modelled for contacts yet).  :data:`Equivalent` records what was
+replaced; ``Scene.equivalents`` holds them, the reports name the equivalent link and the
+space diagram draws it dashed, labelled as such.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import SceneError, UnsupportedError
+from .schema import Key, Table
+from .units import parse_quantity
+
+TABLES: tuple[Table, ...] = (
+    Table("curved_slots", "A pin in a circular-arc slot, replaced at the instant by the "
+                          "equivalent link from the slot's centre of curvature to the pin.", (
+        Key("centre", "label", "the slot's centre of curvature: a [ground] point (a slot in "
+                               "the frame) or a point of the link that carries the slot",
+            example='"K"', required=True),
+        Key("radius", "quantity", "the arc's radius (the pin's centre line)", example='"150 mm"',
+            dimension="length", required=True),
+    ), many=True),
+    Table("cams", "A cam and its follower at the contact, replaced at the instant by the "
+                  "equivalent linkage through the profile's centre of curvature.", (
+        Key("centre", "label", "the cam profile's centre of curvature at the contact (a point "
+                               "of the cam: its crank's end or a [points] entry on it)",
+            example='"C"', required=True),
+        Key("radius", "quantity", "the profile's radius of curvature at the contact",
+            example='"40 mm"', dimension="length", required=True),
+        Key("follower", "string", "'roller' (the table's label is the roller's centre) or "
+                                  "'flat' (a translating flat face; the label is the "
+                                  "follower's point on its guide, [sliders.LABEL])",
+            example='"roller"', default="roller"),
+        Key("roller", "quantity", "the roller's radius (roller follower)", example='"10 mm"',
+            dimension="length"),
+        Key("concave", "bool", "the roller bears on a concave arc of the profile (the "
+                               "equivalent link is radius − roller)", example="false",
+            default=False),
+        Key("face", "quantity", "the flat face's direction, CCW from +x (flat follower)",
+            example='"0 deg"', dimension="angle"),
+    ), many=True),
+    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a fixed straight "
+                     "surface; the table's label is the wheel's centre. Its centre moves on "
+                     "the line ∥ the surface at the radius (the equivalent slider), its "
+                     "instant centre is the contact point and ω = −v/r.", (
+        Key("radius", "quantity", "the wheel's radius", example='"50 mm"', dimension="length",
+            required=True),
+        Key("through", "point", "a point of the surface", example='["0 mm", "-30 mm"]',
+            dimension="length", required=True),
+        Key("direction", "quantity", "the surface's direction, CCW from +x; the wheel is on "
+                                     "its left", example='"0 deg"', dimension="angle",
+            required=True),
+    ), many=True),
+    Table("bearing", "A bar bearing on a fixed circle (a bar leaning on a half-cylinder): "
+                     "the bar stays tangent, the contact slides along it. The table's label "
+                     "is the circle's centre (a [ground] point); the equivalent: that centre "
+                     "slides in a slot ∥ the bar at the radius from it.", (
+        Key("bar", "link", "the bar (a [links] entry) from its first label", example='"AQ"',
+            required=True),
+        Key("radius", "quantity", "the circle's radius", example='"100 mm"',
+            dimension="length", required=True),
+        Key("side", "string", "the side of the bar, looking from its first label to its "
+                              "second, on which the circle lies: 'left' or 'right'",
+            example='"right"', required=True),
+    ), many=True),
+)
+
+#: the scene tables this module rewrites
+NAMES = ("curved_slots", "cams", "rolling", "bearing")
+#: the force tables a scene with contacts cannot carry yet
+FORCE_TABLES = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
+                "force_answers", "flywheel", "efficiency")
+
+
+@dataclass(frozen=True)
+class Equivalent:
+    """One contact replaced by its equivalent: ``kind`` 'curved slot' | 'cam' (roller) |
+    'flat-faced cam'; ``at`` the pin / roller centre / follower; ``centre`` the centre of
+    curvature; ``link`` the equivalent link's name (None for the flat face: a yoke);
+    ``length`` the equivalent link's length (m); ``radius``/``roller`` as stated."""
+
+    kind: str
+    at: str
+    centre: str
+    link: str | None
+    length: float | None
+    radius: float
+    roller: float | None = None
+    face: float | None = None       # a flat face's / rolling surface's angle; bearing: side
+    surface: tuple | None = None    # a point of a rolling surface
+
+    @property
+    def words(self) -> str:
+        if self.kind == "rolling":
+            return (f"the wheel {self.at} (radius {self.radius * 1000:.6g} mm) rolls without "
+                    f"slipping on the fixed surface at {math.degrees(self.face):.6g}°: its "
+                    f"centre moves on the line ∥ the surface {self.radius * 1000:.6g} mm from "
+                    f"it (the equivalent slider), its instant centre is the contact point")
+        if self.kind == "bearing":
+            return (f"the bar {self.link} bears on the fixed circle about {self.at} (radius "
+                    f"{self.radius * 1000:.6g} mm): {self.at} slides in the equivalent slot ∥ "
+                    f"the bar, {self.radius * 1000:.6g} mm from it")
+        if self.kind == "curved slot":
+            return (f"the pin {self.at} in the circular slot (centre of curvature {self.centre}, "
+                    f"radius {self.radius * 1000:.6g} mm) moves at this instant as the "
+                    f"equivalent link {self.link} = {self.length * 1000:.6g} mm")
+        if self.kind == "cam":
+            return (f"the roller {self.at} (radius {self.roller * 1000:.6g} mm) on the cam arc "
+                    f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) "
+                    f"moves at this instant as the equivalent link {self.link} = "
+                    f"{self.length * 1000:.6g} mm")
+        return (f"the flat face of {self.at} (at {math.degrees(self.face):.6g}°) on the cam arc "
+                f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) moves "
+                f"at this instant as a Scotch yoke: {self.centre} slides in a slot ∥ the face "
+                f"carried by {self.at}")
+
+
+def _q(value, dim, file, where):
+    try:
+        return parse_quantity(value, dim)
+    except SceneError as exc:
+        raise exc.located(file=file, where=where) from None
+    except Exception:   # noqa: BLE001 - any unreadable value: one line naming the key
+        raise SceneError(f"cannot read {value!r} as a {dim}", file=file, where=where) from None
+
+
+def _entry(table, name, label, file):
+    where = f"{name}.{label}"
+    if not isinstance(table, dict):
+        raise SceneError(f"[{where}] must be a table", file=file, where=where)
+    keys = {k.name for t in TABLES if t.name == name for k in t.keys}
+    for k in table:
+        if k not in keys:
+            raise SceneError(f"unknown key {k!r}: one of {', '.join(sorted(keys))}",
+                             file=file, where=f"{where}.{k}")
+    if "centre" not in table or "radius" not in table:
+        what = "the slot's centre of curvature and radius" if name == "curved_slots" else \
+            "the profile's centre of curvature and radius of curvature at the contact"
+        raise SceneError(f"the equivalent linkage needs {what} (centre = ..., radius = ...): "
+                         f"without the curvature at the contact the instant's accelerations "
+                         f"are not defined by this construction", file=file, where=where)
+    centre = table["centre"]
+    if not isinstance(centre, str) or not centre[:1].isupper():
+        raise SceneError(f"centre must be a point label such as \"K\", got {centre!r}",
+                         file=file, where=f"{where}.centre")
+    radius = _q(table["radius"], "length", file, f"{where}.radius")
+    if not (radius > 0 and math.isfinite(radius)):
+        raise SceneError("radius must be positive", file=file, where=f"{where}.radius")
+    return where, centre, radius
+
+
+def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
+    """``data`` with [curved_slots] and [cams] replaced by their equivalent links and yokes."""
+    if not any(name in data for name in NAMES):
+        return data, ()
+    data = dict(data)
+    raw = {name: data.pop(name, {}) for name in NAMES}
+    force = [t for t in FORCE_TABLES if t in data]
+    if force:
+        raise UnsupportedError(f"polygons forces does not handle a cam contact (a cam or a "
+                               f"curved slot, [{force[0]}] with [cams]/[curved_slots]): its "
+                               f"equivalent linkage gives the velocities and accelerations "
+                               f"only", file=file, where=force[0])
+    links = dict(data.get("links", {})) if isinstance(data.get("links"), dict) else None
+    if links is None:
+        raise SceneError("[links] must be a table", file=file, where="links")
+    sliders = dict(data.get("sliders", {})) if isinstance(data.get("sliders", {}), dict) \
+        else data.get("sliders")
+    out: list[Equivalent] = []
+    slots = dict(data.get("slots", {})) if isinstance(data.get("slots", {}), dict) else None
+    for name in ("rolling", "bearing"):
+        if not isinstance(raw[name], dict):
+            raise SceneError(f"[{name}] must be a table of labels", file=file, where=name)
+        for label, table in raw[name].items():
+            out.append(_higher(name, label, table, file, sliders, slots, links, data))
+    if slots:
+        data["slots"] = slots
+    for name in ("curved_slots", "cams"):
+        if not isinstance(raw[name], dict):
+            raise SceneError(f"[{name}] must be a table of labels", file=file, where=name)
+        for label, table in raw[name].items():
+            where, centre, radius = _entry(table, name, label, file)
+            if centre == label:
+                raise SceneError("the centre of curvature must differ from the contact's point",
+                                 file=file, where=f"{where}.centre")
+            follower = table.get("follower", "roller") if name == "cams" else None
+            if follower not in (None, "roller", "flat"):
+                raise SceneError(f"follower must be 'roller' or 'flat', got {follower!r}",
+                                 file=file, where=f"{where}.follower")
+            if follower == "flat":
+                if "face" not in table:
+                    raise SceneError("a flat-faced follower needs face = \"<angle>\" (the "
+                                     "face's direction)", file=file, where=f"{where}.face")
+                if "roller" in table or table.get("concave"):
+                    raise SceneError("roller and concave are for a roller follower",
+                                     file=file, where=where)
+                face = _q(table["face"], "angle", file, f"{where}.face")
+                g = sliders.get(label) if isinstance(sliders, dict) else None
+                if not isinstance(g, dict):
+                    raise SceneError(f"a flat-faced follower {label} slides on a fixed guide: "
+                                     f"state it as [sliders.{label}] (through, direction)",
+                                     file=file, where=where)
+                if "pin" in g or "slot" in g:
+                    raise SceneError(f"[sliders.{label}] already carries a slot", file=file,
+                                     where=f"sliders.{label}")
+                g = dict(g)
+                g["pin"] = centre
+                g["slot"] = f"{math.degrees(face)!r} deg"
+                sliders[label] = g
+                out.append(Equivalent("flat-faced cam", label, centre, None, None, radius,
+                                      face=face))
+                continue
+            length = radius
+            roller = None
+            if name == "cams":
+                if "face" in table:
+                    raise SceneError("face is for a flat-faced follower (follower = \"flat\")",
+                                     file=file, where=f"{where}.face")
+                if "roller" not in table:
+                    raise SceneError("a roller follower needs roller = \"<radius>\" (the "
+                                     "roller's radius)", file=file, where=f"{where}.roller")
+                roller = _q(table["roller"], "length", file, f"{where}.roller")
+                concave = table.get("concave", False)
+                if not isinstance(concave, bool):
+                    raise SceneError("concave must be true or false", file=file,
+                                     where=f"{where}.concave")
+                if not (roller >= 0 and math.isfinite(roller)):
+                    raise SceneError("roller must be zero or positive", file=file,
+                                     where=f"{where}.roller")
+                length = radius - roller if concave else radius + roller
+                if not length > 0:
+                    raise SceneError("a roller on a concave arc must be smaller than the arc "
+                                     "(radius − roller > 0)", file=file, where=where)
+            link = centre + label
+            if link in links or label + centre in links:
+                raise SceneError(f"the equivalent link {link} is already in [links]",
+                                 file=file, where=where)
+            links[link] = f"{length!r} m"
+            out.append(Equivalent("curved slot" if name == "curved_slots" else "cam", label,
+                                  centre, link, length, radius, roller))
+    data["links"] = links
+    if isinstance(sliders, dict) and sliders:
+        data["sliders"] = sliders
+    return data, tuple(out)
+
+
+def _check_keys(table, name, label, file):
+    where = f"{name}.{label}"
+    if not isinstance(table, dict):
+        raise SceneError(f"[{where}] must be a table", file=file, where=where)
+    keys = {k.name: k for t in TABLES if t.name == name for k in t.keys}
+    for k in table:
+        if k not in keys:
+            raise SceneError(f"unknown key {k!r}: one of {', '.join(sorted(keys))}",
+                             file=file, where=f"{where}.{k}")
+    for k, key in keys.items():
+        if key.required and k not in table:
+            raise SceneError(f"missing key {k!r} ({key.doc})", file=file, where=where)
+    return where
+
+
+def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent:
+    """[rolling.W] → a slider W on the line ∥ the surface; [bearing.K] → K in an offset slot
+    of the bar."""
+    where = _check_keys(table, name, label, file)
+    radius = _q(table["radius"], "length", file, f"{where}.radius")
+    if not (radius > 0 and math.isfinite(radius)):
+        raise SceneError("radius must be positive", file=file, where=f"{where}.radius")
+    if name == "rolling":
+        if not isinstance(sliders, dict) or label in sliders:
+            raise SceneError(f"the wheel's centre {label} is also in [sliders]: the rolling "
+                             f"contact places it", file=file, where=where)
+        pt = table["through"]
+        if not (isinstance(pt, list) and len(pt) == 2):
+            raise SceneError("through must be [x, y] with units", file=file,
+                             where=f"{where}.through")
+        x, y = (_q(v, "length", file, f"{where}.through") for v in pt)
+        ang = _q(table["direction"], "angle", file, f"{where}.direction")
+        nx, ny = -math.sin(ang), math.cos(ang)
+        sliders[label] = {"through": [f"{x + radius * nx!r} m", f"{y + radius * ny!r} m"],
+                          "direction": f"{math.degrees(ang)!r} deg"}
+        return Equivalent("rolling", label, label, None, None, radius,
+                          face=ang, surface=(x, y))
+    bar, side = table["bar"], table["side"]
+    if not isinstance(bar, str) or bar not in links:
+        raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
+                         where=f"{where}.bar")
+    if side not in ("left", "right"):
+        raise SceneError(f"side must be 'left' or 'right', got {side!r}", file=file,
+                         where=f"{where}.side")
+    ground = data.get("ground", {})
+    if not isinstance(ground, dict) or label not in ground:
+        raise SceneError(f"the circle's centre {label} must be a [ground] point (a fixed "
+                         f"circle)", file=file, where=where)
+    if slots is None or label in slots:
+        raise SceneError(f"{label} is already in [slots]", file=file, where=where)
+    coincident = label + "1"
+    n = 1
+    while coincident in str(data):         # a label the scene does not use
+        n += 1
+        coincident = f"{label}{n}"
+    off = radius if side == "left" else -radius
+    slots[label] = {"lever": bar, "coincident": coincident, "offset": f"{off!r} m"}
+    return Equivalent("bearing", label, label, bar, None, radius, roller=None,
+                      face=1.0 if side == "left" else -1.0, surface=None)
+
+
+def higher(sol, q: Equivalent) -> dict | None:
+    """The higher pair's own numbers read off the solved equivalent linkage: a rolling wheel's
+    ω, α, instant centre (the contact) and the acceleration of its point there; a bar on a
+    circle: the contact point, the bar's instant centre (where the normal to the path of its
+    first end meets the normal at the contact) and the contact's sliding along the bar."""
+    pts = sol.points
+    if q.kind == "rolling":
+        p = pts.get(q.at)
+        if p is None or p.velocity is None:
+            return None
+        e = (math.cos(q.face), math.sin(q.face))
+        n = (-e[1], e[0])
+        w = -(p.velocity[0] * e[0] + p.velocity[1] * e[1]) / q.radius
+        out = {"omega": w, "instant_centre": (p.position[0] - q.radius * n[0],
+                                              p.position[1] - q.radius * n[1])}
+        if p.acceleration is not None:
+            out["alpha"] = -(p.acceleration[0] * e[0] + p.acceleration[1] * e[1]) / q.radius
+            out["contact_acceleration"] = (q.radius * w * w * n[0], q.radius * w * w * n[1])
+        return out
+    if q.kind == "bearing":
+        link = sol.links.get(q.link)
+        if link is None or link.omega is None:
+            return None
+        A, B, K = pts[link.a].position, pts[link.b].position, pts[q.at].position
+        L = math.dist(A, B)
+        u = ((B[0] - A[0]) / L, (B[1] - A[1]) / L)
+        t = (K[0] - A[0]) * u[0] + (K[1] - A[1]) * u[1]
+        out = {"contact": (A[0] + t * u[0], A[1] + t * u[1]), "omega": link.omega,
+               "alpha": link.alpha}
+        vA = pts[link.a].velocity
+        if link.omega != 0.0:
+            out["instant_centre"] = (A[0] - vA[1] / link.omega, A[1] + vA[0] / link.omega)
+        slide = sol.slides.get(q.at)
+        if slide is not None:
+            out["sliding_velocity"] = -slide.velocity   # the contact along the bar
+        return out
+    return None
+
+
+def report_lines(sol) -> list[str]:
+    """The equivalences and the follower's (pin's) velocity and acceleration."""
+    eqs = getattr(sol.scene, "equivalents", ())
+    if not eqs:
+        return []
+    lines = ["Equivalent linkage at this instant (valid for velocity and acceleration here "
+             "only):"]
+    for q in eqs:
+        lines.append(f"  {q.words}")
+        p = sol.points.get(q.at)
+        if p is not None and p.velocity is not None:
+            v = math.hypot(*p.velocity)
+            text = f"    {q.at}: |v| = {v:.6g} m/s"
+            if p.acceleration is not None:
+                text += f", |a| = {math.hypot(*p.acceleration):.6g} m/s²"
+            lines.append(text)
+        h = higher(sol, q)
+        if h is None:
+            continue
+        mm = lambda p: f"({p[0] * 1000:.6g}, {p[1] * 1000:.6g}) mm"   # noqa: E731
+        def sense(x):
+            return "CCW" if x > 0 else ("CW" if x < 0 else "")
+        if q.kind == "rolling":
+            lines.append(f"    wheel {q.at}: ω = v/r = {abs(h['omega']):.6g} rad/s "
+                         f"{sense(h['omega'])}" + (f", α = a/r = {abs(h['alpha']):.6g} rad/s² "
+                                                    f"{sense(h['alpha'])}" if 'alpha' in h
+                                                    else ""))
+            lines.append(f"    instant centre of the wheel: the contact point "
+                         f"{mm(h['instant_centre'])}" + (
+                             f"; the wheel's point there accelerates at r·ω² = "
+                             f"{math.hypot(*h['contact_acceleration']):.6g} m/s² towards "
+                             f"{q.at}" if "contact_acceleration" in h else ""))
+        else:
+            lines.append(f"    contact with the bar at {mm(h['contact'])}"
+                         + (f", sliding along the bar at {abs(h['sliding_velocity']):.6g} m/s"
+                            if "sliding_velocity" in h else ""))
+            if "instant_centre" in h:
+                lines.append(f"    instant centre of {q.link}: {mm(h['instant_centre'])} "
+                             f"(on the normal to the bar at the contact, through {q.at})")
+    return lines
+
+
+def to_list(sol) -> list[dict]:
+    out = []
+    for q in getattr(sol.scene, "equivalents", ()):
+        d = {"kind": q.kind, "at": q.at, "centre": q.centre, "link": q.link,
+             "length_m": q.length, "radius_m": q.radius, "roller_m": q.roller,
+             "face_rad": q.face}
+        h = higher(sol, q)
+        if h:
+            d["higher_pair"] = {k: (list(v) if isinstance(v, tuple) else v)
+                                for k, v in h.items()}
+        out.append(d)
+    return out
+
+
+__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list"]
