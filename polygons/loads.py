@@ -756,9 +756,9 @@ def _efficiency(r: _Values, scene, raw) -> Efficiency | None:
         return None
     r.table(raw, "efficiency", _keys("efficiency"), required=("eta",))
     eta = r.quantity(raw["eta"], "fraction", "efficiency.eta")
-    if not 0.0 < eta <= 1.0:
-        raise SceneError(f"an efficiency is a fraction in (0, 1], got {raw['eta']!r}",
-                         file=r.file, where="efficiency.eta")
+    if not 1e-6 <= eta <= 1.0:      # (an η of 1e-320 would make T_in/η infinite)
+        raise SceneError(f"an efficiency is a fraction from 1e-6 (0.0001 %) to 1 (100 %), got "
+                         f"{raw['eta']!r}", file=r.file, where="efficiency.eta")
     crank = _is_crank(scene.driver)
     key, dim = ("input_torque", "torque") if crank else ("input_force", "force")
     wrong = "input_force" if crank else "input_torque"

@@ -415,7 +415,7 @@ def find_range(prog: Program, probe: int = PROBE):
     else:
         span = 2.0 * (sum(l.length for l in prog.scene.links.values() if l.length)
                       + max([math.hypot(*g) for g in prog.ground.values()] + [0.0]))
-        span = max(span, prog.scale)
+        span = max(span, prog.scale, 4.0 * abs(x0))    # (no links: the input's own size)
         half = probe // 2
         step = span / half
         xs = x0 + step * np.arange(-half, half + 1)

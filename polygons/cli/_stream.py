@@ -17,6 +17,7 @@ from ..errors import UnknownLabelError, suggest
 from ..scene import Crank, Scene
 from ..streams import Extremes, evaluate_compiled, plan_stream, stream
 from ..sweep import _segments, sweep
+from ..steps import number
 
 PLOT_POINTS = 4000
 
@@ -35,9 +36,9 @@ def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> in
             raise UnknownLabelError(f"unknown link {name!r}: {suggest(name, probe['omega'])}",
                                     file=scene.file, where="sweep.links")
     drv = scene.driver
-    points = opt["points"] or ([s for s in scene.model.guide if s in probe["travel"]
-                                and not (not isinstance(drv, Crank) and s == drv.point)]
-                               or [st.prog.plan.dyads[-1].placed[-1]])
+    from .sweep import default_points
+    points = opt["points"] or default_points(scene, st.prog.plan, probe["pos"],
+                                             probe["travel"])
     crank = drv.link if isinstance(drv, Crank) else None
     links = opt["links"] if opt["links"] is not None else [k for k in probe["omega"]
                                                            if k != crank]
@@ -155,20 +156,20 @@ def _summary(st, ext: Extremes, points, links, unit, units, written, k_plot) -> 
     for lab in points:
         if f"travel:{lab}" in ext.max:
             s_lo, s_hi = ext.max[f"travel:{lab}"]
-            out.append(f"point {lab}: travel {s_lo * f:.6g} … {s_hi * f:.6g} {lu} (stroke "
-                       f"{(s_hi - s_lo) * f:.6g} {lu})")
+            out.append(f"point {lab}: travel {number(s_lo * f)} … {number(s_hi * f)} {lu} "
+                       f"(stroke {number((s_hi - s_lo) * f)} {lu})")
         else:
             out.append(f"point {lab}:")
         for tag, u in (("v", vu), ("a", au)):
             key = f"{tag}_s:{lab}" if f"{tag}_s:{lab}" in ext.max else f"{tag}:{lab}"
             if key in ext.max:
                 val, x = ext.max[key]
-                out.append(f"  max |{tag}| = {val * f:.10g} {u} at {_at(st, x)}")
+                out.append(f"  max |{tag}| = {number(val * f)} {u} at {_at(st, x)}")
     for name in links:
         w, xw = ext.max.get(f"omega:{name}", (math.nan, math.nan))
         a, xa = ext.max.get(f"alpha:{name}", (math.nan, math.nan))
-        out.append(f"link {name}: max |ω| = {w:.6g} rad/s at {_at(st, xw)}; max |α| = "
-                   f"{a:.6g} rad/s² at {_at(st, xa)}")
+        out.append(f"link {name}: max |ω| = {number(w)} rad/s at {_at(st, xw)}; max |α| = "
+                   f"{number(a)} rad/s² at {_at(st, xa)}")
     out.append("")
     if k_plot:
         out.append(f"plots drawn from every {k_plot}th position")
