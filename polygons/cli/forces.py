@@ -12,7 +12,7 @@ import numpy as np
 from ..errors import PolygonsError, SceneError
 from ..forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
                       spring_state)
-from ..forces import machine
+from ..forces import effort, machine
 from ..forces.model import position, unit_r
 from ..report import json_text
 from ._output import add_out_option, emit
@@ -87,7 +87,21 @@ def _mode_words(an: Analysis) -> str:
 
 
 def _effort_unit(an: Analysis) -> str:
-    return "N m" if isinstance(an.model.scene.driver, Crank) else "N"
+    return effort.unit(an.model)
+
+
+def _effort_value(an: Analysis, st: State, e: float) -> str:
+    """An effort in words: a torque with its sense; a force with its direction (a force
+    has no rotation sense), an actuator's as pushing or pulling."""
+    model = an.model
+    if effort.is_torque(model):
+        return f"{abs(e):.8g} N m {_sense(e)}"
+    spec = model.parsed.effort
+    if spec is not None and spec.kind == "actuator":
+        return f"{abs(e):.8g} N {'pushing (compression)' if e >= 0 else 'pulling (tension)'}"
+    t = effort.terms(model, st.sol)[0]
+    d = _deg(t.direction * (1.0 if e >= 0 else -1.0))
+    return f"{abs(e):.8g} N towards {d:.6g}° (along the guide)"
 
 
 # ---------------------------------------------------------------- JSON
@@ -109,8 +123,11 @@ def _state_dict(an: Analysis, st: State) -> dict:
                          "acceleration": st.sol.slides[drv.point].acceleration}
     if model.mode == "kinetostatic":
         out["input"] = {"newton_euler": ne.effort, "virtual_work": st.vw_effort,
-                        "unit": _effort_unit(an), "sense": _sense(ne.effort),
-                        "turning_moment": -ne.effort,
+                        "unit": _effort_unit(an), "key": effort.key(model),
+                        "words": effort.words(model),
+                        "sense": _sense(ne.effort) if effort.is_torque(model) else None,
+                        "turning_moment": (-ne.effort if effort.is_torque(model)
+                                           and model.parsed.effort is None else None),
                         "breakdown": _shares(st)}
     else:
         out["alpha_in"] = ne.alpha
@@ -248,6 +265,9 @@ def _sections(an: Analysis, st: State):
     out = []
     loaded = {ld.at for ld in st.ne.loads if ld.at} | {j.label for j in model.joints}
     loaded |= {s.pin for s in model.slots}
+    spec = model.parsed.effort
+    loaded |= {lab for lab, _ in spec.ends} if spec is not None and spec.kind == "actuator" \
+        else set()
     for name, body in model.bodies.items():
         items = model.items_of(name)
         if body.kind != "link" or not items or any(i.kind == "link" and not i.rod
@@ -369,14 +389,14 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     unit = _effort_unit(an)
     if model.mode == "kinetostatic":
         e = ne.effort
-        what = "torque" if unit == "N m" else "force along the guide"
-        out.append(f"  input {what} on {model.driver_body}: {abs(e):.8g} {unit} {_sense(e)}"
-                   f" (Newton–Euler); virtual work {abs(st.vw_effort):.8g} {unit} "
-                   f"{_sense(st.vw_effort)}; difference {abs(e - st.vw_effort):.1e}")
-        if unit == "N m":
+        what = "torque" if unit == "N m" else "force"
+        out.append(f"  {effort.words(model)}: {_effort_value(an, st, e)} (Newton–Euler); "
+                   f"virtual work {_effort_value(an, st, st.vw_effort)}; difference "
+                   f"{abs(e - st.vw_effort):.1e}")
+        if unit == "N m" and model.parsed.effort is None:
             out.append(f"  the mechanism's turning moment on {model.driver_body}: "
                        f"{abs(e):.8g} N m {_sense(-e)}")
-        out.append(f"  virtual-work breakdown ({unit} of input {what} per term):")
+        out.append(f"  virtual-work breakdown ({unit} of the {what} per term):")
     else:
         a = ne.alpha
         out.append(f"  input angular acceleration from the loads: {abs(a):.10g} rad/s² "
