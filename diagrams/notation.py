@@ -37,7 +37,7 @@ SHIFT = {"sub": 0.22, "sup": -0.36}
 _PRIMES = {"1": "′", "2": "″", "3": "‴"}
 
 _TOKEN = re.compile(
-    r"(?P<sym>(?<![A-Za-z])(?:omega|alpha|[vaωα]))_(?P<symsub>[A-Za-z0-9]+)"
+    r"(?P<sym>(?<![A-Za-z])(?:omega|alpha|[vaωαFNRWI]))_(?P<symsub>[A-Za-z0-9]+)"
     r"|\)_(?P<psub>[A-Za-z0-9]+)"
     r"|\^(?P<sup>n|t|slide|r)\b"
     r"|(?<![\w/′.\-])(?P<vl>[a-z])(?P<vd>\d+)(?:_(?P<vp>[123]))?(?![\w])")

@@ -15,6 +15,7 @@ from ..forces import (Analysis, State, analyse, check_force_answers, has_forces,
 from ..forces import effort, machine
 from ..forces.model import position, unit_r
 from ..report import json_text
+from . import _graphical
 from ._output import add_out_option, emit
 from ..scene import Crank, load_scene
 from ..theorems import perp
@@ -43,7 +44,8 @@ def run(args) -> int:
     paths = []
     if args.svg:
         from diagrams.fbd import write
-        paths = write(an, args.svg)
+        from diagrams.forcepoly import write as write_graphical
+        paths = write(an, args.svg) + write_graphical(an, args.svg)
     text = json_text(to_dict(an)) if args.json else forces_table(an)
     if paths and not args.json:
         text += f"\ndiagrams: {len(paths)} SVG files in {args.svg}\n"
@@ -168,6 +170,8 @@ def _state_dict(an: Analysis, st: State) -> dict:
                        for k, name, x in zip(ne.keys, ne.names, ne.values)]
     if model.parsed.flywheel is not None or model.parsed.efficiency is not None:
         out["machine"] = _machine(an, st)
+    out["force_polygons"] = _graphical.polygons_dict(an, st)
+    out["zhukovsky"] = _graphical.lever_dict(an, st)
     return out
 
 
@@ -434,6 +438,8 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     for m in (_machine(an, st) if (model.parsed.flywheel or model.parsed.efficiency) else ()):
         out.append(f"  {m['words']}: {m['value']:.8g} {m['unit']}")
     out.append(f"  equations: {ne.equations}, residual {ne.residual:.1e}")
+    out += _graphical.polygons_lines(an, st)
+    out += _graphical.lever_lines(an, st)
     for w in st.warnings:
         out.append(f"  warning: {w}")
     return out

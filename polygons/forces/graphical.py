@@ -209,7 +209,7 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
                     for k in ks), 0.0)
 
     def words(body, about, m):
-        return f"moments about {about} of {body}'s known forces: {m:.6g} N m (CCW)"
+        return f"moments about {about} of {body}'s known forces: {m + 0.0:.6g} N m (CCW)"
 
     for gi in range(len(groups) - 1, -1, -1):
         kind, d, bodies = groups[gi]
@@ -262,7 +262,7 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
             pin[(d.p, link)] = t1.force + n1.force
             r = -(K(ks[blk]) + nn.force)
             pin[(d.x, blk)] = r
-            couple = -M(ks[blk], x)
+            couple = -M(ks[blk], x) + 0.0
             guide[blk] = (nval, ng, couple)
             rv = float(np.hypot(*r))
             reac = (Found(f"R_{d.x} on slider {blk}", blk, d.x,
@@ -283,14 +283,15 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
             te = Found(f"T on {body}", body, d.pivot, np.zeros(2), effort, "effort")
             out.append(Group(gi + 1, kind, f"group {gi + 1}: the crank {body} (driver)",
                              bodies, allk, (), (fo,), (te,),
-                             (f"moments about {d.pivot}: T + {M(ks[body], o):.6g} N m = 0",)))
+                             (f"moments about {d.pivot}: T + ({M(ks[body], o) + 0.0:.6g} N m) "
+                              f"= 0, T = {effort + 0.0:.6g} N m (CCW)",)))
         else:                                     # slider driver
             blk = d.point
             x = P(blk)
             e = np.array(scene.model.guide[blk].line.direction)
             ng = perp(e)
             effort, nval = _solve2(e, ng, -K(ks[blk]), file, f"the slider {blk}")
-            couple = -M(ks[blk], x)
+            couple = -M(ks[blk], x) + 0.0
             guide[blk] = (nval, ng, couple)
             fin = Found(f"F_in on slider {blk}", blk, blk, e, effort, "effort")
             nn = Found(f"N_{blk} (guide)", blk, blk, ng, nval, "polygon")
