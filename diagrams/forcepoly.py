@@ -96,7 +96,8 @@ def _vectors(g: graphical.Group):
     start_closing = len(seq)
     for f in close:
         look = "force-effort" if f.how == "effort" else "force-closing"
-        seq.append((f.name, f.force, look, cstage, f"{f.name}: {_fmt(f.value)} N"))
+        seq.append((f.name, f.force, look, cstage, f"{f.name}: {_fmt(abs(f.value))} N ∠"
+                    f"{_dir(f.force) if f.value else _dir(f.direction):.1f}°"))
     if len(close) == 2:
         lines.append((start_closing, close[0].direction, cstage))
         lines.append((len(seq), close[1].direction, cstage))
@@ -108,7 +109,7 @@ def _vectors(g: graphical.Group):
 
 def group_drawings(an, st):
     """(stem, Drawing) of each group's force polygon and its stages at ``st``."""
-    from .labels import bounds, text_box
+    from .labels import bounds, box_hits_segment, text_box
     from .layout import arrow_head, compose
     from .model import Arrow, Circle, Group, Segment, Text
     from .scale import Scale, round_up
@@ -162,12 +163,20 @@ def group_drawings(an, st):
                          for j in range(len(seq)) if j != i
                          and float(np.hypot(*seq[j][1])) > 0):
                     n = -n                      # a collinear partner is drawn on that side
-                for off in (2.5, 5.5, 8.5, 11.5):
-                    at = mid + off * n
+                segs = [(tuple(map(float, verts[j])), tuple(map(float, verts[j + 1])))
+                        for j in range(len(seq)) if stage is None or seq[j][3] <= stage]
+                for off, side in ((2.5, 1), (5.0, 1), (2.5, -1), (8.0, 1), (5.0, -1),
+                                  (11.0, 1), (14.0, 1)):
+                    at = mid + side * off * n
+                    anchor = "start" if side * n[0] >= 0 else "end"
+                    bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
+                    if not any(bx.overlaps(o) for o in placed) and not any(
+                            box_hits_segment(bx, a, b, 0.3) for a, b in segs):
+                        break
+                else:
+                    at = mid + 2.5 * n
                     anchor = "start" if n[0] >= 0 else "end"
                     bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
-                    if not any(bx.overlaps(o) for o in placed):
-                        break
                 placed.append(bx)
                 labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor))
             lo = np.min(np.array(verts), axis=0) - 8.0
@@ -271,7 +280,7 @@ def _stage_caption(g, stage, nst) -> str:
 
 def lever_drawings(an, st):
     """(stem, Drawing) of Zhukovsky's lever at ``st`` and its stages."""
-    from .labels import bounds, text_box
+    from .labels import bounds, box_hits_segment, text_box
     from .layout import arrow_head, compose
     from .model import Arrow, Circle, Group, Segment, Text
     from .scale import Scale, round_up
@@ -288,15 +297,19 @@ def lever_drawings(an, st):
     allf = lv.applied + lv.effort_forces
     fbig = max([float(np.hypot(*a.force)) for a in allf] + [1e-9])
     kf = 18.0 / fbig                                  # the longest force 18 mm
+    # an effort nil next to the loads (torque-driven: the applied torques balance) is not drawn
+    nil = all(float(np.hypot(*a.force)) <= 1e-9 * fbig for a in lv.effort_forces)
     out = []
     for stage in (1, 2, 3, None):
         items, arrows, labels, placed = [], [], [], []
 
         def label(x, y, text, size=2.8, anchor="start"):
+            segs = [(ar.tail, ar.tip) for ar in arrows]
             for j in range(30):
                 dy = (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)
                 bx = text_box(x, y + dy, text, size, anchor)
-                if not any(bx.overlaps(o) for o in placed):
+                if not any(bx.overlaps(o) for o in placed) and not any(
+                        box_hits_segment(bx, a, b, 0.3) for a, b in segs):
                     break
             placed.append(bx)
             labels.append(_text(x, y + dy, text, size, anchor))
@@ -311,20 +324,13 @@ def lever_drawings(an, st):
             items.append(Segment(tuple(map(float, a * kv)), tuple(map(float, b * kv)),
                                  "c-force-lever" + ("" if faded1 else "-new"), faded=faded1,
                                  cls="lever"))
-        for lab, p in imgs.items():
-            q = tuple(map(float, p * kv))
-            if lab in model.scene.ground:
-                continue
-            items.append(Segment((0.0, 0.0), q, "c-force-lever", faded=True, cls="ray"))
-            items.append(Circle(q, 0.5, "vertex", cls="image"))
-            label(q[0] + 1.2, q[1] + 1.2, lab.lower(), 3.0)
-        items.append(Circle((0.0, 0.0), 0.9, "pole", cls="pole"))
-        label(1.2, -3.5, "o (pivot)", 3.0)
         show = [] if stage == 1 else (lv.applied if stage == 2 else allf)
-        for a in show:
+        show = [a for a in show if a.kind != "effort" or not nil]
+        drawn = [a for a in show if float(np.hypot(*a.lever)) * kv > 0.05
+                 and float(np.hypot(*a.force)) > 0.0]
+        tips = []
+        for a in drawn:                      # arrows first, then the names clear of them
             mag = float(np.hypot(*a.force))
-            if mag == 0.0:
-                continue
             tail = tuple(map(float, a.lever * kv))
             tip = (tail[0] + a.force[0] * kf, tail[1] + a.force[1] * kf)
             look = KIND_LOOK.get(a.kind, "force-load")
@@ -334,8 +340,22 @@ def lever_drawings(an, st):
             arrows.append(Arrow(tail, tip, f"c-{look}" + ("-new" if new else ""), head, shaft,
                                 name=a.name, role="known", title=f"{a.name} {_fmt(mag)} N",
                                 faded=stage is not None and not new))
+            tips.append((a.name, tail, tip))
+        images = []
+        for lab, p in imgs.items():
+            q = tuple(map(float, p * kv))
+            if lab in model.scene.ground:
+                continue
+            items.append(Segment((0.0, 0.0), q, "c-force-lever", faded=True, cls="ray"))
+            items.append(Circle(q, 0.5, "vertex", cls="image"))
+            images.append((lab, q))
+        items.append(Circle((0.0, 0.0), 0.9, "pole", cls="pole"))
+        label(1.2, -3.5, "o (pivot)", 3.0)
+        for lab, q in images:
+            label(q[0] + 1.2, q[1] + 1.2, lab.lower(), 3.0)
+        for name, tail, tip in tips:
             u = np.subtract(tip, tail) / math.dist(tail, tip)
-            label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0, a.name, 2.6,
+            label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0, name, 2.6,
                   "start" if u[0] >= -0.2 else "end")
         pts = [(0.0, 0.0)] + [tuple(map(float, p * kv)) for p in imgs.values()]
         pts += [q for ar in arrows for q in (ar.tail, ar.tip)]
@@ -345,9 +365,12 @@ def lever_drawings(an, st):
         box = box.grown(6.0)
         unit = effort_mod.unit(model)
         legend = [(f"{a.name}: {_fmt(float(np.hypot(*a.force)))} N, moment about o "
-                   f"{_fmt(a.moment)} N m/s", "normal") for a in (show or [])]
+                   + (f"{_fmt(a.moment + 0.0)} N m/s" if a in drawn else "0 (applied at o)"),
+                   "normal") for a in (show or [])]
         if stage in (3, None):
-            legend.append((f"{effort_mod.words(model)} = {lv.effort:.6g} {unit}", "bold"))
+            legend.append((f"{effort_mod.words(model)} = "
+                           + (f"0 {unit} (the loads balance)" if nil else
+                              f"{lv.effort:.6g} {unit}"), "bold"))
         looks = ["force-lever"] + list(dict.fromkeys(KIND_LOOK.get(a.kind, "force-load")
                                                      for a in show))
         key = [(f"c-{lk}", LOOKS[lk].name, lk != "force-lever") for lk in looks]

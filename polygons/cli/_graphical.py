@@ -96,8 +96,8 @@ def polygons_lines(an, st) -> list[str]:
         for f in g.closing:
             if f.how == "effort":
                 continue
-            out.append(f"      the polygon closes on: {f.name} = {_f(f.value)} N ∠"
-                       f"{_deg(f.direction):.2f}°")
+            out.append(f"      the polygon closes on: {f.name} = {_f(abs(f.value))} N ∠"
+                       f"{_deg(f.force) if f.value else _deg(f.direction):.2f}°")
         for f in g.reactions:
             if f.how == "reaction":
                 out.append(f"      diagonal: {f.name} = {_f(f.value)} N ∠"
@@ -123,7 +123,7 @@ def lever_lines(an, st) -> list[str]:
            f"    {'force':<26} {'N':>11} {'∠°':>8} {'applied at image':>22} "
            f"{'moment about o':>15}"]
     for a in lv.applied + lv.effort_forces:
-        img = f"({a.lever[0]:.4g}, {a.lever[1]:.4g})"
+        img = f"({a.lever[0] + 0.0:.4g}, {a.lever[1] + 0.0:.4g})"
         out.append(f"    {a.name[:26]:<26} {_f(float(np.hypot(*a.force))):>11} "
                    f"{_deg(a.force) if a.force.any() else 0:>8.2f} {img:>22} "
                    f"{_f(a.moment):>15}")
