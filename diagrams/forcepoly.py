@@ -136,6 +136,19 @@ def group_drawings(an, st):
         for stage in list(range(1, nst + 1)) + [None]:
             arrows, labels, extra = [], [], []
             placed = []
+            lo = np.min(np.array(verts), axis=0) - 8.0
+            hi = np.max(np.array(verts), axis=0) + 8.0
+            for vi, d, lst in lines:
+                if stage is not None and lst != stage:
+                    continue
+                p = verts[vi]
+                reach = [t for i in range(2) if abs(d[i]) > 1e-12
+                         for t in ((lo[i] - p[i]) / d[i], (hi[i] - p[i]) / d[i])]
+                tmin = max(min(reach[j], reach[j + 1]) for j in range(0, len(reach), 2))
+                tmax = min(max(reach[j], reach[j + 1]) for j in range(0, len(reach), 2))
+                a, b = p + tmin * d, p + tmax * d
+                extra.append(Segment(tuple(map(float, a)), tuple(map(float, b)),
+                                     "construction", cls="closing-line"))
             for i, (name, f, look, sst, _) in enumerate(seq):
                 if stage is not None and sst > stage:
                     continue
@@ -165,8 +178,10 @@ def group_drawings(an, st):
                     n = -n                      # a collinear partner is drawn on that side
                 segs = [(tuple(map(float, verts[j])), tuple(map(float, verts[j + 1])))
                         for j in range(len(seq)) if stage is None or seq[j][3] <= stage]
+                segs += [(e.a, e.b) for e in extra]
                 for off, side in ((2.5, 1), (5.0, 1), (2.5, -1), (8.0, 1), (5.0, -1),
-                                  (11.0, 1), (14.0, 1)):
+                                  (11.0, 1), (8.0, -1), (14.0, 1), (11.0, -1), (17.0, 1),
+                                  (14.0, -1), (20.0, 1)):
                     at = mid + side * off * n
                     anchor = "start" if side * n[0] >= 0 else "end"
                     bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
@@ -179,19 +194,6 @@ def group_drawings(an, st):
                     bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
                 placed.append(bx)
                 labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor))
-            lo = np.min(np.array(verts), axis=0) - 8.0
-            hi = np.max(np.array(verts), axis=0) + 8.0
-            for vi, d, lst in lines:
-                if stage is not None and lst != stage:
-                    continue
-                p = verts[vi]
-                reach = [t for i in range(2) if abs(d[i]) > 1e-12
-                         for t in ((lo[i] - p[i]) / d[i], (hi[i] - p[i]) / d[i])]
-                tmin = max(min(reach[j], reach[j + 1]) for j in range(0, len(reach), 2))
-                tmax = min(max(reach[j], reach[j + 1]) for j in range(0, len(reach), 2))
-                a, b = p + tmin * d, p + tmax * d
-                extra.append(Segment(tuple(map(float, a)), tuple(map(float, b)),
-                                     "construction", cls="closing-line"))
             if diag and (stage is None or stage == nst):
                 for a_i, b_i, name in diag:
                     tail, tip = tuple(map(float, verts[a_i])), tuple(map(float, verts[b_i]))

@@ -199,3 +199,33 @@ def test_forces_command_prints_both_methods_and_json(tmp_path):
     an2 = analyse(load_scene(ROOT / "cases" / "s000-d225-2003-q3.toml"))
     st2 = to_dict(an2)["states"][0]
     assert "does not handle" in st2["force_polygons"]["refused"]
+
+
+def toggle_torque_exact() -> float:
+    """The toggle press of forces-toggle-press: T ω + Σ F·v − Σ m a_G·v_G − Σ I α ω = 0 on the
+    closed-form loop solution (tests/analytic_more.py), uniform rods, g 9.81, 5 kN up at D."""
+    import analytic_more as am
+    w = 200 * 2 * math.pi / 60
+    O = am.fixed(0, 0)
+    A = am.crank(O, 0.08, math.radians(45), w, 0.0)
+    C = am.fixed(0.3, 0.25)
+    B, (wab, aab), (wcb, acb) = am.rrr(A, 0.32, C, 0.2, 0.38 + 0.07j)
+    D, (wbd, abd), _ = am.rrp(B, 0.22, complex(0.3, 0), math.radians(90), 0.3 - 0.14j)
+    g = -9.81j
+    p = (5000j * D[1].conjugate()).real            # the stone's force on the head
+    for (P, Q, m, L, om, al) in ((A, B, 3.0, 0.32, wab, aab), (C, B, 2.0, 0.2, wcb, acb),
+                                 (B, D, 2.5, 0.22, wbd, abd)):
+        G = am.image(P, Q, L / 2)
+        p += (m * (g - G[2]) * G[1].conjugate()).real - m * L * L / 12 * al * om
+    p += (20.0 * (g - D[2]) * D[1].conjugate()).real
+    return -p / w
+
+
+def test_toggle_press_torque_equals_the_closed_form(analysed):
+    an = analysed(ROOT / "cases" / "forces-toggle-press.toml")
+    st = an.states[0]
+    fp = graphical.construct(an, st)
+    x = toggle_torque_exact()
+    assert [g.kind for g in fp.groups] == ["RRP", "RRR", "crank"]
+    assert fp.effort == pytest.approx(x, rel=REL)
+    assert zhukovsky.construct(an, st).effort == pytest.approx(x, rel=REL)
