@@ -102,7 +102,7 @@ def _vectors(g: graphical.Group):
         lines.append((start_closing, close[0].direction, cstage))
         lines.append((len(seq), close[1].direction, cstage))
     if g.kind in ("RRR", "RRP"):
-        s1 = next(i for i, s in enumerate(seq) if s[3] == 2)      # after the first link
+        s1 = sum(1 for s in seq if s[3] == 1)          # the vertex after the first link
         diag.append((start_closing + 1, s1, g.reactions[0].name))
     return seq, lines, diag
 
@@ -134,6 +134,9 @@ def group_drawings(an, st):
         centre = sum(verts, np.zeros(2)) / len(verts)
         nst = max(s[3] for s in seq) + (1 if diag else 0)
         for stage in list(range(1, nst + 1)) + [None]:
+            if stage is not None and not (diag and stage == nst) and not any(
+                    s[3] == stage and float(np.hypot(*s[1])) > 0 for s in seq):
+                continue                      # nothing to draw at this stage (massless)
             arrows, labels, extra = [], [], []
             placed = []
             lo = np.min(np.array(verts), axis=0) - 8.0

@@ -229,3 +229,40 @@ def test_toggle_press_torque_equals_the_closed_form(analysed):
     assert [g.kind for g in fp.groups] == ["RRP", "RRR", "crank"]
     assert fp.effort == pytest.approx(x, rel=REL)
     assert zhukovsky.construct(an, st).effort == pytest.approx(x, rel=REL)
+
+
+def test_drawings_of_every_loaded_case(analysed):
+    """Every loaded case draws its group polygons (when handled) and its lever; each SVG is
+    well-formed, the stages come before the finished drawing, no two labels overlap."""
+    import xml.etree.ElementTree as ET
+    from diagrams.forcepoly import group_drawings, lever_drawings
+    from diagrams.labels import text_box
+    from diagrams.model import Text
+    from diagrams.svg import to_svg
+    for path in LOADED:
+        an = analysed(path)
+        st = an.states[0]
+        ds = group_drawings(an, st) + lever_drawings(an, st)
+        stems = [s for s, _ in ds]
+        assert any(s.startswith("zhukovsky-") for s in stems), path.name
+        if graphical.handled(load_scene(path)) is None:
+            assert any(s.startswith("group-") for s in stems), path.name
+        for stem, d in ds[:12]:
+            ET.fromstring(to_svg(d))
+            for cls in ("labels",):
+                texts = [t for t in d.items(cls) if isinstance(t, Text)]
+                assert texts, (path.name, stem)
+                boxes = [text_box(t.x, t.baseline, t.text, t.size, t.anchor) for t in texts]
+                for i, a in enumerate(boxes):
+                    for b in boxes[i + 1:]:
+                        assert not a.overlaps(b), (path.name, stem)
+
+
+def test_forces_svg_writes_the_force_methods(tmp_path):
+    out = subprocess.run([sys.executable, "-m", "polygons", "forces",
+                          str(ROOT / "cases" / "forces-toggle-press.toml"), "--svg",
+                          str(tmp_path)], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"group-instant-1.svg", "group-instant-2.svg", "group-instant-3.svg",
+            "group-instant-3-4.svg", "zhukovsky-instant.svg", "zhukovsky-instant-3.svg"} <= names

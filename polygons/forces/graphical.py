@@ -112,7 +112,7 @@ def groups_of(scene):
     check_handles(METHOD, HANDLES, scene.model, file)
     if scene.loads is not None and scene.loads.effort is not None:
         e = scene.loads.effort
-        if not (e.kind == "torque" and e.body == scene.loads.driver_body):
+        if not (e.kind in ("torque", "force") and e.body == scene.loads.driver_body):
             raise UnsupportedError(f"{METHOD} finds the driver's effort, group by group to "
                                    f"the driver; [dynamics] effort = {e.text!r} is found by "
                                    f"Newton–Euler and Zhukovsky's lever", file=file)
