@@ -11,7 +11,7 @@ from ..forces import effort, graphical, zhukovsky
 
 
 def _deg(v) -> float:
-    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+    return round(math.degrees(math.atan2(v[1], v[0])), 2) % 360.0
 
 
 def _vec(v) -> list[float]:

@@ -79,8 +79,8 @@ def _g(x, digits=6) -> str:
 def _mode_words(an: Analysis) -> str:
     m = an.model.mode
     if m == "kinetostatic":
-        return ("kinetostatic: the driver's motion is given; the input torque that keeps it is "
-                "found")
+        return (f"kinetostatic: the driver's motion is given; the "
+                f"{effort.words(an.model).removeprefix('effort: ')} that keeps it is found")
     if m == "torque-driven":
         return ("torque-driven: the driver's ω is given, its α follows from the applied "
                 "torques (acceleration polygon affine in α: solved at α = 0 and α = 1)")
