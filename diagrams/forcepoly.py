@@ -244,7 +244,7 @@ def group_drawings(an, st):
             if g.kind == "slider driver":
                 legend.append((f"input force {fp.effort:.5g} N along the guide", "bold"))
             for f in g.reactions:
-                if f.how == "reaction":
+                if f.how == "reaction" and (stage is None or stage == nst):
                     legend.append((f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°",
                                    "bold"))
             stem = f"group-{_slug(st.name)}-{g.index}" + (f"-{stage}" if stage else "")
@@ -373,9 +373,12 @@ def lever_drawings(an, st):
                    + (f"{_fmt(a.moment + 0.0)} N m/s" if a in drawn else "0 (applied at o)"),
                    "normal") for a in (show or [])]
         if stage in (3, None):
-            legend.append((f"{effort_mod.words(model)} = "
+            spec = model.parsed.effort
+            sign = (" (pulling)" if lv.effort < 0 else " (pushing)") \
+                if spec is not None and spec.kind == "actuator" else ""
+            legend.append((f"effort {effort_mod.short(model)} = "
                            + (f"0 {unit} (the loads balance)" if nil else
-                              f"{lv.effort:.6g} {unit}"), "bold"))
+                              f"{lv.effort:.6g} {unit}{sign}"), "bold"))
         looks = ["force-lever"] + list(dict.fromkeys(KIND_LOOK.get(a.kind, "force-load")
                                                      for a in show))
         key = [(f"c-{lk}", LOOKS[lk].name, lk != "force-lever") for lk in looks]

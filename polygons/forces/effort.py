@@ -67,6 +67,19 @@ def words(model: ForceModel) -> str:
     return f"effort: actuator force along {a}{b} (positive pushing {a} and {b} apart)"
 
 
+def short(model: ForceModel) -> str:
+    """The effort's short name for a drawing: 'T on OA', 'F at P', 'F along HF'."""
+    e = model.parsed.effort
+    drv = model.scene.driver
+    if e is None:
+        return f"T on {drv.link}" if isinstance(drv, Crank) else f"F at {drv.point}"
+    if e.kind == "torque":
+        return f"T on {e.body}"
+    if e.kind == "force":
+        return f"F at {e.body}"
+    return f"F along {e.ends[0][0]}{e.ends[1][0]}"
+
+
 def terms(model: ForceModel, sol: Solution) -> list[Term]:
     """The unit effort's action (1 N m, or 1 N) on the bodies at ``sol``."""
     e = model.parsed.effort

@@ -119,7 +119,7 @@ def construct(an: Analysis, st: State) -> Lever:
                                f"moment about the pole (its point does not move along it): it "
                                f"cannot balance the loads", file=model.scene.file)
     e = -msum / munit
-    found = tuple(Applied(a.name.replace("effort", effort_mod.words(model)), "effort", a.body,
+    found = tuple(Applied(a.name.replace("effort", effort_mod.short(model)), "effort", a.body,
                           a.force * e, a.at, a.lever, a.moment * e, a.label) for a in unit)
     return Lever(st.name, rate == 0.0, images, tuple(applied), found, e, msum, munit)
 
