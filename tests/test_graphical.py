@@ -158,7 +158,7 @@ def test_a_slider_drivers_effort_is_a_force_without_a_sense(tmp_path):
     out = subprocess.run([sys.executable, "-m", "polygons", "forces", str(case)],
                          capture_output=True, text=True, cwd=ROOT)
     assert out.returncode == 0, out.stderr
-    line = next(x for x in out.stdout.splitlines() if "input force on slider" in x)
+    line = next(x for x in out.stdout.splitlines() if "(Newton–Euler)" in x)
     assert " N towards " in line and " CW" not in line and "CCW" not in line
     assert "turning moment" not in out.stdout
 
