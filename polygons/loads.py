@@ -308,6 +308,9 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     flywheel = _flywheel(r, scene, ex.get("flywheel"), mode)
     efficiency = _efficiency(r, scene, ex.get("efficiency"))
     effort = parse_effort(ctx, ex.get("dynamics", {}).get("effort"), mode)
+    if effort is not None and (flywheel is not None or efficiency is not None):
+        raise SceneError("[flywheel] and [efficiency] work on the driver's own effort: remove "
+                         "dynamics.effort", file=file, where="dynamics.effort")
     answers = _answers(r, ex.get("force_answers", []), answer_fields)
     return Loads(file, MappingProxyType(bodies),
                  MappingProxyType({k: tuple(v) for k, v in members.items()}), tuple(joints),

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import UnsupportedError
 from ..evaluate import Solution
 from ..scene import Crank
 from .model import ForceModel, body_omega, image, position
@@ -98,7 +99,12 @@ def terms(model: ForceModel, sol: Solution) -> list[Term]:
                      0.0)]
     (a, ba), (b, bb) = e.ends
     d = position(sol, a) - position(sol, b)
-    d = d / float(np.hypot(*d))                      # from F towards E: pushes E away from F
+    length = float(np.hypot(*d))
+    if not length > 0.0:
+        raise UnsupportedError(f"the actuator {a}{b} has no length at this instant ({a} and "
+                               f"{b} coincide): its force has no direction",
+                               file=model.scene.file)
+    d = d / length                                   # from F towards E: pushes E away from F
     out = []
     if ba is not None:
         out.append(Term(ba, position(sol, a), d, 0.0))
