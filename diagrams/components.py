@@ -60,3 +60,22 @@ def component_of(step) -> str:
 def new_width(look: Look) -> float:
     """Stroke width of a component in the stage that draws it (heavier)."""
     return round(look.width * 1.5, 3)
+
+
+#: the component of the vector found on a line of unknown length, by the line's op, when the
+#: step does not say (a dyad that leaves its line 'construction': the triad's auxiliary lines)
+_ON_LINE = {"line_perp": ("relative", "tangential"), "line_slide": ("sliding", "sliding"),
+            "line_along": ("sliding", "sliding"), "line_slot": ("sliding", "sliding")}
+
+
+def carried_by(line) -> str:
+    """The component kind of the vector the construction finds on ``line`` (a 'line' step):
+    its own component, else the one its op draws (⟂ a link: relative velocity or tangential
+    acceleration; along a slot or guide: sliding) — never a thin grey construction arrow."""
+    kind = component_of(line)
+    if kind != "construction":
+        return kind
+    pair = _ON_LINE.get(str(line.op))
+    if pair is None:
+        return kind
+    return pair[0] if str(line.diagram) == "velocity" else pair[1]

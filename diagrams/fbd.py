@@ -137,33 +137,19 @@ def drawings(an: Analysis):
                 for lab, p in pts.items():
                     if lab not in (body.a, body.b):
                         items.append(Segment(a, P(p), "link-thin", cls=f"body {name}"))
+            # geometry first (body, arrows, arcs), then every label by the placer, clear of
+            # all of them and of each other (diagrams.labels)
+            arrows, labels, leaders, texts = [], [], [], []
+            L = 16.0
+            segments = [(it.a, it.b) for it in items if isinstance(it, Segment)]
             for lab, p in pts.items():
                 q = P(p)
                 if lab.startswith("G:"):
                     items.append(Circle(q, 0.7, "vertex", cls="centre-of-mass"))
-                    items.append(Text(q[0] + 1.2, q[1] - 3.2, "G " + lab[2:], 2.6,
-                                      role="vertex"))
+                    texts.append((f"G_{lab[2:]}", q, 2.6, "vertex", "normal", None))
                 else:
                     items.append(Circle(q, 1.1, "pin", cls="point"))
-                    items.append(Text(q[0] + 1.5, q[1] + 1.5, lab, 3.2, role="vertex",
-                                      weight="bold"))
-            arrows, labels = [], []
-            placed: list = []
-
-            def label(x, y, text, size=2.5, anchor="start"):
-                """A label at (x, y), moved down/up in steps until it overlaps no other."""
-                for k in range(40):
-                    dy = (k + 1) // 2 * (1.5 * size) * (1 if k % 2 else -1)
-                    bx = text_box(x, y + dy, text, size, anchor)
-                    if not any(bx.overlaps(o) for o in placed):
-                        break
-                placed.append(bx)
-                labels.append(Text(x, y + dy, text, size, anchor=anchor, role="label"))
-                return y + dy
-
-            L = 16.0
-            leaders = []
-            segments = [(it.a, it.b) for it in items if isinstance(it, Segment)]
+                    texts.append((lab, q, 3.2, "vertex", "bold", None))
             for v in vecs:
                 mag = float(np.hypot(*v.force))
                 if mag == 0.0:
@@ -174,26 +160,16 @@ def drawings(an: Analysis):
                 text = f"{v.name} {_fmt(mag)} N ∠{_dir(v.force):.1f}°"
                 side = _along_member(tail, tip, segments)
                 if side is not None:
-                    # beside a two-force member: the arrow parallel to the rod, off it, and
-                    # its label further out with a leader to the arrow's middle
+                    # beside a two-force member: the arrow parallel to the rod, off it
                     tail = (tail[0] + BESIDE * side[0], tail[1] + BESIDE * side[1])
                     tip = (tip[0] + BESIDE * side[0], tip[1] + BESIDE * side[1])
-                    mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
-                    at = (mid[0] + LEADER * side[0], mid[1] + LEADER * side[1])
-                    anchor = "start" if side[0] >= -0.2 else "end"
-                    y = label(at[0], at[1] + (2.0 if side[1] > 0 else -0.5), text,
-                              anchor=anchor)
-                    leaders.append(Segment((round(mid[0] + 0.8 * side[0], 3),
-                                            round(mid[1] + 0.8 * side[1], 3)),
-                                           (round(at[0], 3), round(y - 0.8, 3)), "hatch",
-                                           cls="leader"))
-                else:
-                    label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0, text,
-                          anchor="start" if u[0] >= -0.2 else "end")
+                mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
+                texts.append((text, mid, 2.5, "label", "normal", (tail, tip)))
                 head, shaft = arrow_head(tail, tip)
                 style = "result" if v.kind == "inertia" else "vector"
                 arrows.append(Arrow(tail, tip, style, head, shaft, name=v.name,
                                     role="known", title=f"{v.name} = {_fmt(mag)} N"))
+            arcs = []
             for cpl in couples:
                 c = P(cpl.at)
                 r = 6.0
@@ -201,17 +177,20 @@ def drawings(an: Analysis):
                 angs = [math.radians(200) + sgn * math.radians(t) for t in range(0, 241, 20)]
                 arc = tuple((c[0] + r * math.cos(t), c[1] + r * math.sin(t)) for t in angs)
                 items.append(Polyline(arc[:-1], "vector", cls="couple"))
+                arcs += list(zip(arc, arc[1:]))
                 head, shaft = arrow_head(arc[-2], arc[-1], length=2.2, half=0.8)
                 arrows.append(Arrow(arc[-2], arc[-1], "vector", head, shaft, name=cpl.name,
                                     role="known", title=f"{cpl.name} {_fmt(abs(cpl.value))} N m"))
-                label(c[0], c[1] - r - 3.5, f"{cpl.name} {_fmt(abs(cpl.value))} N m "
-                      f"{'CCW' if cpl.value > 0 else 'CW'}", anchor="middle")
+                texts.append((f"{cpl.name} {_fmt(abs(cpl.value))} N m "
+                              f"{'CCW' if cpl.value > 0 else 'CW'}", c, 2.5, "label", "normal",
+                              "arc"))
+            placed = _place_labels(texts, segments, arrows, arcs, labels, leaders)
             content = [Group("body", "body", f"{name}", tuple(items)),
                        Group("forces", "forces", "forces on the body", tuple(arrows)),
                        Group("labels", "labels", "values", tuple(labels))]
             if leaders:
                 content.append(Group("leaders", "leaders", "leaders from the values to the "
-                                     "forces beside a two-force member", tuple(leaders)))
+                                     "forces they name", tuple(leaders)))
             xs = [q for it in items + arrows + leaders for q in _pts(it)]
             box = bounds(xs)
             for o in placed:
@@ -252,15 +231,13 @@ def drawings(an: Analysis):
                 style = "result" if v.kind == "inertia" else "vector"
                 parr.append(Arrow(tail, tip, style, head, shaft, name=v.name, role="known",
                                   title=f"{v.name} = {_fmt(float(np.hypot(*v.force)))} N"))
-                mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
-                u = v.force / float(np.hypot(*v.force))
-                side = 1.0 if -u[1] >= 0 else -1.0
-                plab.append(Text(mid[0] - 2.5 * u[1], mid[1] + 2.5 * u[0] - 1.0, v.name, 2.8,
-                                 anchor="start" if side > 0 else "end", role="label"))
             gap = float(np.hypot(*cur))
+            pleaders: list = []
+            _place_labels([(a.name, None, 2.8, "label", "normal", (a.tail, a.tip))
+                           for a in parr], [], parr, [], plab, pleaders)
             start = Circle((0.0, 0.0), 0.8, "pole", cls="start")
             pts2 = [(0.0, 0.0)] + [q for a in parr for q in (a.tail, a.tip)]
-            box2 = bounds(pts2)
+            box2 = bounds(pts2 + [q for it in pleaders for q in (it.a, it.b)])
             for t in plab:
                 box2 = box2.union(text_box(t.x, t.baseline, t.text, t.size, t.anchor))
             box2 = box2.grown(6.0)
@@ -274,7 +251,9 @@ def drawings(an: Analysis):
                 desc=f"Force polygon of {name}",
                 content=[Group("polygon", "force-polygon", f"forces on {name}",
                                tuple([start] + parr)),
-                         Group("labels", "labels", "names", tuple(plab))],
+                         Group("labels", "labels", "names", tuple(plab)),
+                         Group("leaders", "leaders", "leaders from the names to the forces",
+                               tuple(pleaders))],
                 content_box=box2,
                 legend=[(f"{v.name}: {_fmt(float(np.hypot(*v.force)))} N ∠"
                          f"{_dir(v.force):.2f}°", "normal") for v in drawn],
@@ -287,9 +266,77 @@ def drawings(an: Analysis):
     return out
 
 
-#: a force along a member is drawn this far beside it (mm of paper); its label this much further
+#: a force along a member is drawn this far beside it (mm of paper)
 BESIDE = 3.0
-LEADER = 9.0
+
+
+def _place_labels(texts, segments, arrows, arcs, labels: list, leaders: list) -> list:
+    """Place every label of a free-body diagram with :class:`diagrams.labels.Placer`: point
+    labels by their points, a force's value beside its arrow (nearer it than any other, else
+    further out with a leader), a couple's value outside its arc.  Appends the ``Text`` items
+    to ``labels`` and the leader ``Segment`` items to ``leaders``; returns the boxes."""
+    from .labels import Placer, box_segment_distance
+    from .model import Segment, Text
+    placer = Placer()
+    for a, b in segments:
+        placer.hard(a, b, 0.6)
+    for ar in arrows:
+        placer.hard(ar.tail, ar.tip, 0.8)
+    for a, b in arcs:
+        placer.hard(a, b, 0.4)
+    boxes = []
+    for text, at, size, role, weight, own in texts:       # points first: they are fixed
+        if own is not None:
+            continue
+        placer.block(_dot(at))
+    for text, at, size, role, weight, own in texts:
+        if own is None:
+            x, base, _, box = placer.place(text, at, size, prefer=math.radians(45),
+                                           distances=(0.9, 1.6, 2.6, 4.0, 6.0))
+        elif own == "arc":
+            x, base, _, box = placer.place(text, at, size, prefer=math.radians(-90),
+                                           distances=(7.0, 8.5, 10.0, 12.0, 15.0))
+        else:
+            tail, tip = own
+            others = [(ar.tail, ar.tip) for ar in arrows if (ar.tail, ar.tip) != own]
+
+            def mine(_ai, box, own=own, others=others):
+                d = box_segment_distance(box, *own)
+                near = min((box_segment_distance(box, a, b) for a, b in others),
+                           default=math.inf)
+                return 6.0 if near < d + 2.5 else 0.0
+            ang = math.atan2(tip[1] - tail[1], tip[0] - tail[0])
+            anchors = [((tail[0] + f * (tip[0] - tail[0]), tail[1] + f * (tip[1] - tail[1])),
+                        [ang + math.pi / 2, ang - math.pi / 2]) for f in (0.5, 0.7, 0.3, 0.9)]
+            got = placer.place_any(text, size, anchors, distances=(0.8, 1.6, 2.6, 4.0),
+                                   extra_cost=mine, required=False)
+            if got is not None and mine(0, got[3]) > 0:
+                placer.boxes.remove(got[3])
+                got = None
+            if got is None:
+                mid = ((tail[0] + tip[0]) / 2, (tail[1] + tip[1]) / 2)
+                got = placer.place(text, mid, size, distances=(5.0, 7.0, 9.0, 12.0, 16.0))
+                lead = _lead(got[3], mid)
+                if lead is not None:
+                    leaders.append(Segment(lead[0], lead[1], "hatch", cls="leader"))
+                    placer.hard(lead[0], lead[1], 0.3)
+            x, base, _, box = got
+        labels.append(Text(x, base, text, size, role="vertex" if role == "vertex" else "label",
+                           weight=weight))
+        boxes.append(box)
+    return boxes
+
+
+def _dot(p):
+    from .labels import Box
+    return Box(p[0] - 1.2, p[1] - 1.2, p[0] + 1.2, p[1] + 1.2)
+
+
+def _lead(box, to):
+    """A leader from 0.5 mm off a label's box to 0.5 mm short of ``to`` (None when beside
+    it): :func:`labels.leader`."""
+    from .labels import leader
+    return leader(box, to, 0.5)
 
 
 def _along_member(tail, tip, segments) -> tuple[float, float] | None:

@@ -669,10 +669,10 @@ def _centres(doc: _Doc, sol: Solution) -> None:
     vel = "; ".join(sym(pv.how) for lab, pv in cs.velocities.items()
                     if lab not in sol.scene.ground)
     doc.add(f'<section id="centres">\n<h2>{doc.sec()}. Instantaneous '
-            f"centres</h2>\n<p>The same velocities found another way: every centre by "
-            f"Kennedy's theorem (any three links' centres lie on one line), then v = ω × the "
-            f"radius from the link's centre relative to the frame. They agree with the "
-            f"polygon.</p>\n<figure class=\"diagram centres\">"
+            f"centres</h2>\n<p>The same velocities found another way: {esc(cs.note)}; then v "
+            f"= ω × the radius from the link's centre relative to the frame (Kennedy: any "
+            f"three links' centres lie on one line). They agree with the polygon.</p>\n"
+            f"<figure class=\"diagram centres\">"
             f"{inline_svg(svg, 'centres', 'figure', min(w, 0.7 * PORTRAIT[0]), 'Instant centres')}"
             f"</figure>\n<p>Velocities by the centres: {vel}.</p>\n</section>\n")
 

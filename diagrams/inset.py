@@ -159,15 +159,16 @@ def _labels(ins: Inset, points: dict, segments, boxes, size: float, names_of) ->
     for g in groups:
         p = ins.show(points[g[0]])
         placer.block(Box(p[0] - 0.8, p[1] - 0.8, p[0] + 0.8, p[1] + 0.8))
+    text = f"detail ×{ins.k}"           # the caption first: no vertex label on it
+    tb = text_box(C[0], C[1] - R - 1.0 - CAPTION_SIZE * 0.76, text, CAPTION_SIZE, "middle")
+    caption = (text, C[0], C[1] - R - 1.0 - CAPTION_SIZE * 0.76, tb)
+    placer.block(tb)
     labels = []
     for g in groups:
         at = ins.show(points[g[0]])
         text = " = ".join(names_of(n) for n in g)
         x, base, _, box = placer.place(text, at, size)
         labels.append((tuple(g), text, x, base, box))
-    text = f"detail ×{ins.k}"
-    tb = text_box(C[0], C[1] - R - 1.0 - CAPTION_SIZE * 0.76, text, CAPTION_SIZE, "middle")
-    caption = (text, C[0], C[1] - R - 1.0 - CAPTION_SIZE * 0.76, tb)
     return replace(ins, labels=tuple(labels), caption=caption)
 
 
@@ -218,10 +219,9 @@ def items(ins: Inset, strokes, points: dict, visible, pole: str, old=()):
         vis = [n for n in names if n in shown]
         if not vis:
             continue
-        at = ins.show(points[names[0]])
-        for n in vis:
-            out.append(Circle(at, 0.9 if n == pole else 0.55, "pole" if n == pole else "vertex",
-                              n in old, cls="inset-vertex"))
+        for n in vis:             # each at its own place (a group lies within 0.6 mm)
+            out.append(Circle(_r(ins.show(points[n])), 0.9 if n == pole else 0.55,
+                              "pole" if n == pole else "vertex", n in old, cls="inset-vertex"))
     return out
 
 

@@ -226,3 +226,16 @@ def largest_gap_direction(at: Pt, others: list[Pt]) -> float | None:
             for i in range(len(angs))]
     i = max(range(len(gaps)), key=lambda k: (gaps[k], -k))
     return angs[i] + gaps[i] / 2
+
+
+def leader(box, to, gap_to: float = 0.3):
+    """A thin line from a label's box (0.5 mm off it) to the point ``to`` it names, ending
+    ``gap_to`` mm short of it, or None when the label sits right by it (within 1.5 mm)."""
+    cx = min(max(to[0], box.x0), box.x1)
+    cy = min(max(to[1], box.y0), box.y1)
+    d = math.hypot(to[0] - cx, to[1] - cy)
+    if d < 1.5:
+        return None
+    u = ((to[0] - cx) / d, (to[1] - cy) / d)
+    return ((round(cx + 0.5 * u[0], 3), round(cy + 0.5 * u[1], 3)),
+            (round(to[0] - gap_to * u[0], 3), round(to[1] - gap_to * u[1], 3)))

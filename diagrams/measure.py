@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from polygons.evaluate import link_ends
+from polygons.notation import vertex, vertices_in
 from polygons.scene import Quantity
 from polygons.units import UNITS
 
@@ -280,7 +281,8 @@ def read_quantity(sol, readings: dict, q: Quantity, ruler: float | None = RULER_
             slot = scene.model.slot[P]
             if sp is None:
                 return None
-            e = space_vec(slot.line.origin, P)
+            # the pin and the lever's point under it share one mark on the space diagram
+            e = space_vec(slot.line.origin, P if P in sp.points else slot.coincident)
             if fn == "vs":
                 a, b = V(slot.coincident), V(P)
             else:
@@ -356,9 +358,11 @@ def table(sol, readings: dict, ruler: float | None = RULER_MM) -> str:
             if key in seen:
                 continue
             seen.add(key)
-            lines.append(f"  {v.frm + v.to:<12} {v.mm:8.1f} mm   {number(r.si(v.mm, ruler)):>10} {unit}"
+            name = vertex(v.frm) + vertex(v.to)              # p4_1p4 → p₄′p₄, as printed
+            lines.append(f"  {name:<12} {v.mm:8.1f} mm   {number(r.si(v.mm, ruler)):>10} {unit}"
                          f"   {v.role}")
     rows = compare(sol, readings, ruler)
+    names = {n for vx in sol.vertices.values() for n in vx}
     if rows:
         lines.append("")
         lines.append(f"answers scaled from the drawings (ruler {ruler or 0:g} mm)")
@@ -377,5 +381,6 @@ def table(sol, readings: dict, ruler: float | None = RULER_MM) -> str:
             else:
                 note = ("within drawing tolerance" if row.within else "OUTSIDE tolerance") + \
                        f" ({row.how})"
+            note = vertices_in(note, names)
             lines.append(f"{row.quantity:<16} {row.unit:<9} {sc:>11} {tut:>11} {diff:>7}  {note}")
     return "\n".join(lines) + "\n"

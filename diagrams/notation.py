@@ -25,6 +25,8 @@ from __future__ import annotations
 import html as _html
 import re
 
+from polygons.notation import PRIMES, VERTEX
+
 from .metrics import plain_width
 
 #: invisible separator between two vertex names in a vector's name (never drawn)
@@ -34,13 +36,18 @@ SMALL = 0.7
 #: baseline shifts of sub- and superscripts, × font size (y down, as in SVG)
 SHIFT = {"sub": 0.22, "sup": -0.36}
 
-_PRIMES = {"1": "′", "2": "″", "3": "‴"}
+_PRIMES = PRIMES
 
 _TOKEN = re.compile(
-    r"(?P<sym>(?<![A-Za-z])(?:omega|alpha|[vaωαFNRWI]))_(?P<symsub>[A-Za-z0-9]+)"
+    r"(?P<sym>(?<![A-Za-z])(?:omega|alpha|[vaωαRWNIGFT]))_(?P<symsub>[A-Za-z0-9]+)"
     r"|\)_(?P<psub>[A-Za-z0-9]+)"
     r"|\^(?P<sup>n|t|slide|r)\b"
-    r"|(?<![\w/′.\-])(?P<vl>[a-z])(?P<vd>\d+)(?:_(?P<vp>[123]))?(?![\w])")
+    rf"|(?<![\w/′.\-]){VERTEX}(?![\w])"
+    # a space label marked by :func:`mark_labels` (O⁣2): its digits subscripted
+    r"|(?P<ul>[A-Z])\u2063(?P<ud>\d+)")
+#: invisible mark (never drawn) between a space label's letter and its digits: O2 → O₂
+MARK = "\u2063"
+_CAPS = re.compile(r"(?<![\w/′.])[A-Z][A-Za-z0-9]*(?![\w])")
 
 Run = tuple[str, str]
 
@@ -83,7 +90,7 @@ def runs(text: str) -> list[Run]:
     out: list[Run] = []
 
     def add(s: str, kind: str) -> None:
-        s = s.replace(JOIN, "")
+        s = s.replace(JOIN, "").replace(MARK, "")
         if not s:
             return
         if out and out[-1][1] == kind:
@@ -102,6 +109,9 @@ def runs(text: str) -> list[Run]:
             add(m.group("psub"), "sub")
         elif m.group("sup"):
             out.append((m.group("sup"), "sup"))
+        elif m.group("ul"):
+            add(m.group("ul"), "base")
+            add(m.group("ud"), "sub")
         else:
             add(m.group("vl"), "base")
             add(m.group("vd"), "sub")
@@ -140,11 +150,14 @@ def svg_runs(text: str, size: float) -> list[tuple[str, float, float, float | No
     rs = runs(text)
     out = []
     shift = 0.0
-    for i, (s, kind) in enumerate(rs):
+    carry = 0.0      # a stacked superscript narrower than its subscript: what follows
+    for i, (s, kind) in enumerate(rs):   # starts after the subscript, not after it
         target = SHIFT.get(kind, 0.0) * size
-        dx = 0.0
+        dx, carry = carry, 0.0
         if stacked(rs, i):
-            dx = -plain_width(rs[i - 1][0], size * SMALL)
+            under = plain_width(rs[i - 1][0], size * SMALL)
+            dx = -under
+            carry = max(0.0, under - plain_width(s, size * SMALL))
         out.append((s, round(dx, 3), round(target - shift, 3),
                     None if kind == "base" else round(size * SMALL, 3)))
         shift = target
@@ -229,3 +242,37 @@ def link_names(scene) -> dict[str, str]:
         for key in (name, f"{ln.a}{ln.b}", f"{ln.b}{ln.a}"):
             out.setdefault(key, name)
     return out
+
+
+def mark_labels(text: str, labels) -> str:
+    """Mark the space labels with digits in ``text`` so they typeset with subscripts (O2 →
+    O₂, the link O2P2 → O₂P₂): only words made wholly of the scene's ``labels`` (so 'Q3' of
+    'SAE4 Q3' stays unless Q3 is a point), never a subscript already (ω_O4P4)."""
+    names = sorted({n for n in labels if n}, key=lambda n: (-len(n), n))
+    if not any(ch.isdigit() for n in names for ch in n):
+        return text
+
+    def split(w):
+        if not w:
+            return []
+        for n in names:
+            if w.startswith(n):
+                rest = split(w[len(n):])
+                if rest is not None:
+                    return [n] + rest
+        return None
+
+    def repl(m):
+        parts = split(m.group(0))
+        if not parts or not any(ch.isdigit() for ch in m.group(0)):
+            return m.group(0)
+        return "".join(re.sub(r"^([A-Z])(\d+)$", rf"\1{MARK}\2", p) for p in parts)
+    return _CAPS.sub(repl, text)
+
+
+def mark_drawing(drawing, labels):
+    """``drawing`` carrying the scene's ``labels`` (``meta['labels']``): the SVG writer
+    typesets them where its texts name them (:func:`mark_labels`); the texts themselves
+    stay as written, so readers of the drawing model match plain words."""
+    from dataclasses import replace as _replace
+    return _replace(drawing, meta={**drawing.meta, "labels": tuple(sorted(labels))})

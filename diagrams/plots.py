@@ -32,7 +32,7 @@ class Line:
     style: str = "-"          # matplotlib line style: '-', '--', ':'
     color: str | None = None
     width: float = 1.5
-    marker: str | None = None  # plot_xy: the marker ('o', 's', ...); style 'none' for no line
+    marker: str | None = None  # the marker ('o', 's', ...); style 'none' for no line
 
 
 @dataclass
@@ -45,7 +45,8 @@ class Panel:
 
 @dataclass
 class Marker:
-    """A vertical line at ``x`` (a limit or toggle position) with a short label."""
+    """A vertical line at ``x`` (a limit or toggle position, the scene's own input) with a
+    short label."""
     x: float
     label: str
     color: str = "tab:red"
@@ -70,7 +71,8 @@ def plot_panels(title: str, xlabel: str, panels: Sequence[Panel], stem: str | Pa
         axes = fig.subplots(len(panels), 1, sharex=True, squeeze=False)[:, 0]
         for ax, panel in zip(axes, panels):
             for ln in panel.lines:
-                ax.plot(ln.x, ln.y, ln.style, color=ln.color, lw=ln.width, label=ln.label)
+                ax.plot(ln.x, ln.y, linestyle=ln.style, marker=ln.marker, color=ln.color,
+                        lw=ln.width, ms=4.5, label=ln.label or None)
             for mk in markers:
                 ax.axvline(mk.x, color=mk.color, lw=0.9, ls="--")
             if panel.zero_line:

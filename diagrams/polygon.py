@@ -29,11 +29,14 @@ from polygons.evaluate import Solution
 from polygons.plan import Step
 
 from . import crowd, inset, scale as scales
-from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
+from .labels import (Box, Placer, bounds, box_hits_segment, box_segment_distance, clip_line,
+                     largest_gap_direction, leader)
 from .layout import arrow_head, compose
-from .components import LOOKS, ORDER, component_of
+from .components import LOOKS, ORDER
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
-from .notation import join_vectors, link_names, name_bare_omegas, slot_names, vector
+from .notation import (join_vectors, link_names, mark_drawing, name_bare_omegas, slot_names,
+                       vector)
+from .strokes import Construction, Stroke, construction, sliding_arrow
 from .text import ASCENT, DESCENT, display, number, token
 
 Pt = tuple[float, float]
@@ -43,170 +46,6 @@ LINE_LABEL_SIZE = 2.7
 VECTOR_LABEL_SIZE = 2.6
 FRAME_MARGIN = 10.0     # construction lines run this far (mm) beyond the polygon
 QUANTITY = {"velocity": "velocity", "acceleration": "acceleration"}
-UNIT_SI = {"velocity": "m/s", "acceleration": "m/s²"}
-DRAWABLE = ("vector", "image", "line", "intersection")
-
-
-@dataclass(frozen=True)
-class Stroke:
-    """One thing drawn on the polygon, in polygon coordinates (SI)."""
-    step: int           # the step that draws it
-    kind: str           # 'arrow' | 'line' | 'offset' | 'side'
-    role: str           # arrows: 'known' 'resolved' 'result' 'coriolis' 'join' 'image'
-    a: Pt               # arrow tail / line anchor / segment start
-    b: Pt               # arrow tip / line direction / segment end
-    frm: str = ""
-    to: str = ""
-    label: str = ""     # lines: what the step draws; arrows: the quantity
-    title: str = ""
-    component: str = "construction"   # diagrams.components kind
-
-
-@dataclass(frozen=True)
-class Construction:
-    diagram: str
-    pole: str
-    pole_label: str
-    steps: tuple[Step, ...]          # the drawable steps, in order (stage k = steps[k-1])
-    measures: tuple[Step, ...]
-    strokes: tuple[Stroke, ...]
-    vertices: dict                   # name -> SI polygon coordinates
-    born: dict                       # vertex -> step number that creates it (pole: 0)
-
-
-def construction(sol: Solution, diagram: str) -> Construction:
-    """The strokes of ``diagram`` from the solution's evaluated steps (no recomputation)."""
-    steps = [s for s in sol.steps if s.diagram == diagram]
-    vx = dict(sol.vertices[diagram])
-    pole = sol.pole
-    aliases = [pole] + [g.lower() for g in sol.scene.ground if g.lower() != pole]
-    born = {pole: 0}
-    strokes: list[Stroke] = []
-    lines: dict[int, Step] = {}
-    measures = []
-    unit = UNIT_SI[diagram]
-    for s in steps:
-        comp = component_of(s)
-        if s.kind in ("vector", "image"):
-            role = {"coriolis": "coriolis", "join": "join"}.get(
-                s.op, "image" if s.kind == "image" else "known")
-            label = _image_quantity(sol, s) if s.kind == "image" else s.quantity
-            if s.op == "coriolis":
-                label = "2ωv"
-            strokes.append(Stroke(s.number, "arrow", role, s.at, s.point, s.start, s.end,
-                                  label, f"{vector(s.start, s.end)}: {label}", comp))
-            q = sol.vertex_of(s.args[2]) if s.kind == "image" else None
-            # a flat image (D on AB produced) has no side of its own: it lies on the vectors
-            if q is not None and not _in_line(s.at, s.point, vx[q]):
-                strokes.append(Stroke(s.number, "side", "image-side", vx[q], s.point, q, s.end,
-                                      component="image"))
-            born.setdefault(s.end, s.number)
-        elif s.kind == "line":
-            lines[s.number] = s
-            strokes.append(Stroke(s.number, "line", "construction", s.at, s.direction,
-                                  s.start or "", "", slot_names(s.draws, sol.scene), s.reason))
-            if s.op == "coriolis_offset_line" and s.start is not None:
-                # the step back from the pin's vertex: anchor + 2ωv = the pin's vertex
-                strokes.append(Stroke(s.number, "offset", "offset", s.at, vx[s.start],
-                                      "", s.start, "2ωv", "Coriolis offset 2ωv", "coriolis"))
-        elif s.kind == "intersection":
-            born.setdefault(s.end, s.number)
-            made = set()
-            for n in s.lines:
-                ln = lines[n]
-                if ln.op == "coriolis_offset_line" or ln.start is None:
-                    continue
-                if _points_back(sol, ln, s.end):   # e.g. the slot line: pin relative to
-                    tail, tip, frm, to = s.point, ln.at, s.end, ln.start   # the lever point
-                else:
-                    tail, tip, frm, to = ln.at, s.point, ln.start, s.end
-                strokes.append(Stroke(s.number, "arrow", "resolved", tail, tip, frm, to,
-                                      ln.quantity, f"{vector(frm, to)}: {ln.quantity}",
-                                      component_of(ln)))
-                made.add((frm, to))
-            if (pole, s.end) not in made:
-                strokes.append(Stroke(s.number, "arrow", "result", vx[pole], s.point, pole,
-                                      s.end, s.quantity, f"{vector(pole, s.end)}: {s.quantity}",
-                                      "resultant"))
-        elif s.kind == "measure":
-            measures.append(s)
-    strokes += _asked(sol, diagram, strokes, born, vx)
-    drawable = tuple(s for s in steps if s.kind in DRAWABLE)
-    return Construction(diagram, pole, " = ".join(aliases), drawable, tuple(measures),
-                        tuple(strokes), vx, born)
-
-
-def _in_line(a: Pt, b: Pt, c: Pt) -> bool:
-    """True when a, b, c lie on one line (to 1e-9 of the sides' lengths)."""
-    u = (b[0] - a[0], b[1] - a[1])
-    v = (c[0] - a[0], c[1] - a[1])
-    return abs(u[0] * v[1] - u[1] * v[0]) <= 1e-9 * (math.hypot(*u) * math.hypot(*v) or 1.0)
-
-
-def _image_quantity(sol: Solution, s: Step) -> str:
-    """The quantity of an image step's arrow start → end: '(v_D)_A' (not the absolute 'v_D')."""
-    sym = "v" if s.diagram == "velocity" else "a"
-    x = s.args[-1]
-    ref = next((lab for lab in s.args[1:-1] if sol.vertex_of(lab) == s.start), None)
-    if ref is None or sol.vertex_of(ref) == sol.pole:
-        return f"{sym}_{x}"
-    return f"({sym}_{x})_{ref}"
-
-
-def asked_quantities(sol: Solution, diagram: str) -> list[tuple[str, ...]]:
-    """The scene's asked ``[[answers]]`` of this diagram as point labels: [('D',), ('B', 'A')].
-
-    'v(D)' / 'a(D)' ask for the absolute vector (drawn from the pole), 'v(B,A)' for B
-    relative to A.  Other quantities (ω, components, sliding) are drawn by their steps.
-    """
-    fn = "v" if diagram == "velocity" else "a"
-    out = []
-    for ans in sol.scene.answers:
-        if ans.q is None or ans.q.fn != fn:
-            continue
-        args = ans.q.args
-        if all(a in sol.points for a in args) and args not in out:
-            out.append(args)
-    return out
-
-
-def _asked(sol: Solution, diagram: str, strokes, born, vx) -> list[Stroke]:
-    """Arrows for the asked quantities the construction has not drawn yet (od for v_D)."""
-    sym = "v" if diagram == "velocity" else "a"
-    drawn = {(st.frm, st.to) for st in strokes if st.kind == "arrow"}
-    out = []
-    for args in asked_quantities(sol, diagram):
-        x = sol.vertex_of(args[0])
-        y = sol.pole if len(args) == 1 else sol.vertex_of(args[1])
-        if x == y or (y, x) in drawn or x not in vx or y not in vx or x not in born:
-            continue
-        step = max(born[x], born.get(y, 0))
-        if y == sol.pole:
-            label, role, comp = f"{sym}_{args[0]}", "result", "resultant"
-        else:
-            label, role = f"({sym}_{args[0]})_{args[1]}", "join"
-            comp = "relative" if diagram == "velocity" else "resultant"
-        out.append(Stroke(step, "arrow", role, vx[y], vx[x], y, x, label,
-                          f"{vector(y, x)}: {label} (asked)", comp))
-        drawn.add((y, x))
-    return out
-
-
-def _points_back(sol: Solution, line: Step, end: str) -> bool:
-    """True when the vector on ``line`` runs from the new vertex back to the line's anchor.
-
-    A line of unknown length carries a relative vector '(v_X)_Y' (X relative to Y, drawn
-    y → x).  Usually the line goes through y and the intersection makes x; when it goes
-    through x (the slot line through the pin's vertex) the arrow points back at the anchor.
-    """
-    if line.relative:
-        x, ref = line.relative
-        if line.start == sol.vertex_of(x) and end == sol.vertex_of(ref):
-            return True
-        if line.start == sol.vertex_of(ref):
-            return False
-    return line.op == "line_along"
-
 
 # ---------------------------------------------------------------- layout of the final drawing
 @dataclass(frozen=True)
@@ -222,6 +61,7 @@ class Layout:
     text_scale: float = 1.0          # labels × this (a figure printed reduced: larger labels)
     shifts: dict = field(default_factory=dict)   # (step, frm, to) -> (dx, dy) mm: drawn beside
     insets: tuple = ()               # diagrams.inset.Inset: tight clusters drawn enlarged
+    leaders: tuple = ()              # (step, (frm, to), (a, b)): a vector's name led to it
 
     def size(self, base: float) -> float:
         return round(base * self.text_scale, 3)
@@ -385,12 +225,16 @@ def _place_labels(lay: Layout) -> Layout:
         x, base, _, box = placer.place(text, at, lay.size(LABEL_SIZE), prefer=prefer)
         vlabels.append((tuple(gr), x, base, box))
         placer.block(Box(at[0] - 0.8, at[1] - 0.8, at[0] + 0.8, at[1] + 0.8))
+    # every drawn stroke, so a label can be set nearer its own than any other (a reader
+    # tells which line or vector it names)
+    drawn = [(st, g if st.kind == "line" else _drawn(lay, st, g)) for st, g in geo
+             if g is not None and st.kind in ("line", "arrow", "offset")]
     llabels = {}
+    leaders = []
     for st, g in geo:
         if st.kind != "line" or g is None:
             continue
         (x0, y0), (x1, y1) = g
-        L = math.hypot(x1 - x0, y1 - y0)
         ang = math.atan2(y1 - y0, x1 - x0)
         anchors = []
         for f in (0.96, 0.04, 0.88, 0.12, 0.75, 0.25):
@@ -398,33 +242,148 @@ def _place_labels(lay: Layout) -> Layout:
             anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
         text = display(st.label)
         placer.hard(g[0], g[1], 0.7)            # not across its own line
+        owner = _owner_cost(st, g, drawn)
         x, base, _, box = placer.place_any(text, lay.size(LINE_LABEL_SIZE), anchors,
-                                           distances=(0.3, 0.8, 1.8, 3.3, 5.3, 8.0))
+                                           distances=(0.3, 0.8, 1.8, 3.3, 5.3, 8.0),
+                                           extra_cost=owner)
         placer.hard_segments.pop()
+        if owner(0, box) > 0:          # as near another line: further out, led to its own
+            placer.boxes.remove(box)
+            far = placer.place_any(
+                text, lay.size(LINE_LABEL_SIZE), anchors, distances=(4.0, 6.0, 8.5, 12.0),
+                required=False, extra_cost=lambda _ai, b, st=st, g=g: _crossings(
+                    _leader_to(b, g), st, drawn) * 3.0 + _through(_leader_to(b, g), placer))
+            lead = None if far is None else _leader_to(far[3], g)
+            if far is None or (lead is not None and _through(lead, placer_without(placer,
+                                                                                  far[3]))):
+                if far is not None:
+                    placer.boxes.remove(far[3])
+                placer.block(box)
+            else:
+                x, base, _, box = far
+                if lead is not None:
+                    leaders.append((st.step, (st.frm, st.to), lead))
+                    placer.hard(lead[0], lead[1], 0.3)
         llabels[st.step] = (text, x, base, box)
     vec_labels = {}
-    # the component named at each vector's midpoint, longest first; a vector too short to
-    # carry its name beside it is named in the side panel only
+    asked = asked_vectors(con)
+    # the component named at each vector's midpoint, asked ones first, then longest first; a
+    # name with no free place nearer its own vector than any other goes where there is
+    # room, with a leader to the vector; a vector too short to carry its name (and not
+    # asked) is named in the side panel only
     arrows = [(st, _drawn(lay, st, g)) for st, g in geo
               if st.kind in ("arrow", "offset") and st.label]
-    arrows.sort(key=lambda sg: (-math.hypot(sg[1][1][0] - sg[1][0][0],
+    arrows.sort(key=lambda sg: ((sg[0].frm, sg[0].to) not in asked,
+                                -math.hypot(sg[1][1][0] - sg[1][0][0],
                                             sg[1][1][1] - sg[1][0][1]), sg[0].step))
     for st, g in arrows:
         L = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
-        if L < 4.0:
+        want = (st.frm, st.to) in asked and st.kind == "arrow"
+        if L < 4.0 and not want:
             continue
         ang = math.atan2(g[1][1] - g[0][1], g[1][0] - g[0][0])
         anchors = []
         for f in (0.5, 0.4, 0.6, 0.3, 0.7):
             pt = (g[0][0] + f * (g[1][0] - g[0][0]), g[0][1] + f * (g[1][1] - g[0][1]))
             anchors.append((pt, [ang + math.pi / 2, ang - math.pi / 2]))
+        owner = _owner_cost(st, g, drawn)
         placed = placer.place_any(st.label, lay.size(VECTOR_LABEL_SIZE), anchors,
-                                  distances=(0.5, 1.1, 2.0, 3.2), required=False)
+                                  distances=(0.5, 1.1, 2.0, 3.2), required=False,
+                                  extra_cost=owner)
+        near = None
+        if placed is not None and owner(0, placed[3]) > 0:
+            placer.boxes.remove(placed[3])        # beside another vector: lead it instead
+            near, placed = placed, None
+        if placed is None:
+            mid = ((g[0][0] + g[1][0]) / 2, (g[0][1] + g[1][1]) / 2)
+            placed = placer.place_any(
+                st.label, lay.size(VECTOR_LABEL_SIZE),
+                [(mid, [2 * math.pi * k / 24 for k in range(24)])],
+                distances=(4.0, 6.0, 8.5, 12.0, 16.0), required=False,
+                extra_cost=lambda _ai, box, mid=mid, st=st: _crossings(
+                    _leader(box, mid), st, drawn) * 3.0 + _through(_leader(box, mid), placer))
+            lead = None if placed is None else _leader(placed[3], mid)
+            if lead is not None and _through(lead, placer_without(placer, placed[3])):
+                placer.boxes.remove(placed[3])    # no clear way to it: the near place
+                placed, lead = None, None
+            if placed is None and near is not None:
+                placer.block(near[3])
+                placed = near
+            elif placed is None and want:
+                placed = placer.place(st.label, mid, lay.size(VECTOR_LABEL_SIZE))
+            if lead is not None:
+                leaders.append((st.step, (st.frm, st.to), lead))
+                placer.hard(lead[0], lead[1], 0.3)
         if placed is not None:
             x, base, _, box = placed
             vec_labels[(st.step, st.frm, st.to)] = (st.label, x, base, box)
     return replace(lay, vertex_labels=tuple(vlabels), line_labels=llabels,
-                   vector_labels=vec_labels)
+                   vector_labels=vec_labels, leaders=tuple(leaders))
+
+
+#: a label this much (mm) nearer another stroke than its own would read as the other's
+OWNER_MARGIN = 2.5
+
+
+def on_line(g, seg, tol: float = 0.3) -> bool:
+    """True when segment ``g`` lies on the line of ``seg`` (a vector on its own construction
+    line, p₁p on the slot line): a label by one is by the other."""
+    return _dist_to_line(g[0], seg) < tol and _dist_to_line(g[1], seg) < tol
+
+
+def _owner_cost(own: Stroke, seg, drawn):
+    """extra_cost for a label of stroke ``own`` (paper segment ``seg``): dear when another
+    drawn line or vector is about as near the label's box as its own."""
+    others = [g for st, g in drawn if st is not own and not on_line(g, seg)]
+
+    def cost(_ai, box) -> float:
+        mine = box_segment_distance(box, seg[0], seg[1])
+        near = min((box_segment_distance(box, a, b) for a, b in others), default=math.inf)
+        return 6.0 if near < mine + OWNER_MARGIN else 0.0
+    return cost
+
+
+def _crossings(lead, own: Stroke, drawn) -> int:
+    """How many drawn strokes other than ``own`` the leader ``lead`` crosses."""
+    if lead is None:
+        return 0
+    return sum(1 for st, g in drawn if st is not own and _cross(lead, g))
+
+
+def placer_without(placer: Placer, box: Box) -> Placer:
+    """A copy of ``placer``'s boxes without ``box`` (a label's own, when testing its leader)."""
+    return Placer(boxes=[b for b in placer.boxes if b is not box])
+
+
+def _through(lead, placer: Placer) -> float:
+    """Dear (100) when the leader ``lead`` passes through a label already placed."""
+    if lead is None:
+        return 0.0
+    return 100.0 if any(box_hits_segment(b, lead[0], lead[1], 0.35) for b in placer.boxes
+                        if b.x1 - b.x0 > 1.7) else 0.0      # (a vertex's dot it may pass)
+
+
+def _cross(p, q) -> bool:
+    (a, b), (c, d) = p, q
+
+    def side(o, e, f):
+        return (e[0] - o[0]) * (f[1] - o[1]) - (e[1] - o[1]) * (f[0] - o[0])
+    return (side(a, b, c) * side(a, b, d) < 0) and (side(c, d, a) * side(c, d, b) < 0)
+
+
+def _leader_to(box: Box, seg):
+    """A leader from a label's box to the nearest point of the segment ``seg``."""
+    (x0, y0), (x1, y1) = seg
+    c = box.centre
+    L2 = (x1 - x0) ** 2 + (y1 - y0) ** 2
+    t = 0.0 if L2 == 0 else max(0.0, min(1.0, ((c[0] - x0) * (x1 - x0)
+                                               + (c[1] - y0) * (y1 - y0)) / L2))
+    return _leader(box, (x0 + t * (x1 - x0), y0 + t * (y1 - y0)))
+
+
+def _leader(box: Box, to: Pt):
+    """A thin line from a label's box to the point it names (:func:`labels.leader`)."""
+    return leader(box, to, 0.3)
 
 
 def _right_angle(con: Construction, st: Stroke, g, size: float = 1.6):
@@ -482,6 +441,7 @@ def stroke_items(lay: Layout, stage: int | None):
     upto = _stage_number(con, stage)
     lines_g, vec_g, pts_g, lab_g = [], [], [], []
     shown = []          # (a, b, style, head?, open head?, faded) for the insets
+    asked = asked_vectors(con)
     for st, g in _geometry(lay):
         if upto is not None and st.step > upto:
             continue
@@ -496,6 +456,10 @@ def stroke_items(lay: Layout, stage: int | None):
             text, x, base, _ = lay.line_labels[st.step]
             lab_g.append(Text(x, base, text, lay.size(LINE_LABEL_SIZE), role="line", faded=faded,
                               cls=f"line-label step-{st.step}"))
+            for step, fv, (a, b) in lay.leaders:
+                if step == st.step and fv == (st.frm, st.to):
+                    lines_g.append(Segment(a, b, "leader", faded,
+                                           cls=f"label-leader step-{st.step}"))
         elif st.kind == "side":
             lines_g.append(Segment(g[0], g[1], _style("image", False), faded,
                                    cls=f"image-side step-{st.step}"))
@@ -530,9 +494,15 @@ def stroke_items(lay: Layout, stage: int | None):
             lab = lay.vector_labels.get((st.step, st.frm, st.to))
             if lab is not None:
                 text, x, base, _ = lab
+                mark = st.kind == "arrow" and (st.frm, st.to) in asked
                 lab_g.append(Text(x, base, text, lay.size(VECTOR_LABEL_SIZE), role="component",
-                                  faded=faded, cls=f"component-label {st.component}",
+                                  faded=faded, cls=f"component-label {st.component}"
+                                  + (" asked" if mark else ""),
                                   ink=LOOKS[st.component].colour))
+            for step, fv, (a, b) in lay.leaders:
+                if step == st.step and fv == (st.frm, st.to):
+                    lines_g.append(Segment(a, b, "leader", faded,
+                                           cls=f"label-leader step-{st.step}"))
     for names, x, base, box in lay.vertex_labels:
         text = _vertex_text(con, names, upto)
         if not text:
@@ -543,7 +513,8 @@ def stroke_items(lay: Layout, stage: int | None):
         faded = upto is not None and newest < upto
         for n in visible:
             pole = n == con.pole
-            pts_g.append(Circle(at, 0.9 if pole else 0.55, "pole" if pole else "vertex",
+            pts_g.append(Circle(lay.P(con.vertices[n]), 0.9 if pole else 0.55,   # its own
+                                "pole" if pole else "vertex",                       # place
                                 faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
         lab_g.append(Text(x, base, text, lay.size(LABEL_SIZE), role="vertex", faded=faded,
                           cls="vertex-label", weight="bold" if not faded else "normal"))
@@ -563,7 +534,8 @@ def stroke_items(lay: Layout, stage: int | None):
             Group(f"{con.diagram}-vectors", "vectors", "Vectors",
                   tuple(Group(f"{con.diagram}-vec-{i}-{token(a.name)}",
                               f"vector {a.role} {a.style.split('-')[1]} from-{token(a.frm)} "
-                              f"to-{token(a.to)}",
+                              f"to-{token(a.to)}" + (" asked" if (a.frm, a.to) in asked
+                                                     else ""),
                               f"{a.title} — {number(lay.scale.si(_len(a)) / lay.scale.factor)}"
                               f" {display(lay.scale.unit)} at {lay.scale.statement}",
                               (a,)) for i, a in enumerate(vec_g))),
@@ -596,6 +568,15 @@ def _content_box(lay: Layout) -> Box:
     return box.grown(1.0)
 
 
+def asked_vectors(con: Construction) -> set[tuple[str, str]]:
+    """(frm, to) of every drawn vector that shows an asked quantity, both ways round."""
+    out = set()
+    for a in con.asked:
+        if a.vector is not None:
+            out |= {a.vector, a.vector[::-1]}
+    return out
+
+
 def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     """Vector lengths read off the drawing (mm ÷ scale) and the step's measured values;
     the asked quantities (the scene's ``[[answers]]``) are marked 'asked'."""
@@ -606,12 +587,8 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         out.append((f"Every vertex lies at the pole {lay.con.pole_label}: every "
                     f"{lay.con.diagram} of this diagram is zero.", "normal"))
     seen = set()
-    asked = set()
-    if sol is not None:
-        for args in asked_quantities(sol, lay.con.diagram):
-            x = sol.vertex_of(args[0])
-            y = sol.pole if len(args) == 1 else sol.vertex_of(args[1])
-            asked |= {(y, x), (x, y)}
+    asked = asked_vectors(lay.con)
+    asked_m = {a.measure for a in lay.con.asked if a.measure is not None}
     for st, g in _geometry(lay):
         if st.kind != "arrow":
             continue
@@ -621,14 +598,19 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         mm = math.hypot(g[1][0] - g[0][0], g[1][1] - g[0][1])
         val = sc.si(mm) / sc.factor
         what = "Coriolis 2ωv" if st.component == "coriolis" else st.label
-        mark = "  ← asked" if (st.frm, st.to) in asked else ""
+        mark = "\u2003← asked" if (st.frm, st.to) in asked else ""
         out.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
                     f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
+    for a in lay.con.asked:
+        if a.zero:
+            out.append((f"{a.zero} = 0: no vector to draw\u2003← asked", "bold"))
     if lay.con.measures:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))
         for m in lay.con.measures:
-            out.append((prose(sol, lay.con, measure_text(m, sol, lay.con)), "normal"))
+            mark = "\u2003← asked" if m.number in asked_m else ""
+            out.append((prose(sol, lay.con, measure_text(m, sol, lay.con, sc)) + mark,
+                        "bold" if mark else "normal"))
     return out
 
 
@@ -653,21 +635,26 @@ def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None
     if guide is not None:
         return f" {along_words(guide.angle + (0.0 if m.value > 0 else math.pi))}"
     if con is not None and m.theorem == "sliding":
-        arrow = next((st for st in con.strokes if st.kind == "arrow"
-                      and st.component == "sliding"), None)
+        x = sol.vertex_of(m.args[0]) if m.args and m.args[0] in sol.points else None
+        arrow = sliding_arrow(con.strokes, con.steps, x, m.args[1:])
         if arrow is not None:
             d = (arrow.b[0] - arrow.a[0], arrow.b[1] - arrow.a[1])
-            return (f" {along_words(math.atan2(d[1], d[0]))} "
-                    f"({vector(arrow.frm, arrow.to)})")
+            return f" {along_words(math.atan2(d[1], d[0]))}"
     return ""
 
 
-def measure_text(m: Step, sol: Solution | None = None, con: Construction | None = None) -> str:
+def measure_text(m: Step, sol: Solution | None = None, con: Construction | None = None,
+                 scale: scales.Scale | None = None) -> str:
     """'ω_BC = 45.62 rad/s CW  (bc / BC)': a measure step's value, its sense, its formula;
-    a signed slider result with its direction words ('1589 m/s² to the left')."""
+    a signed slider result with its direction words ('1589 m/s² to the left').  A speed or
+    acceleration is given in the unit of the drawing's ``scale`` (mm/s on a mm/s scale)."""
     unit = display(m.unit)
     if m.value is None:
         return display(m.draws)
+    if scale is not None and display(m.unit) in ("m/s", "m/s²") and scale.factor != 1.0 \
+            and scale.quantity in ("velocity", "acceleration"):
+        m = replace(m, value=m.value / scale.factor)
+        unit = display(scale.unit)
     if m.unit.startswith("rad"):
         sense = "" if m.value == 0 else (" CCW" if m.value > 0 else " CW")
         val = f"{number(abs(m.value))} {unit}{sense}"
@@ -735,9 +722,10 @@ def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
         legend_lines = []
         desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {prose(sol, con, s.reason)}"
     content = stroke_items(lay, stage)
-    return compose(name=name, kind=con.diagram, stage=stage, title=title, subtitle=subtitle,
+    page = compose(name=name, kind=con.diagram, stage=stage, title=title, subtitle=subtitle,
                    desc=desc, content=content, content_box=_content_box(lay),
                    legend=legend_lines, scale=lay.scale, caption=caption,
                    scale_statement=lay.scale.statement,
                    meta={"layout": lay},
                    key=[(f"c-{c}", LOOKS[c].name, c != "construction") for c in key(lay, stage)])
+    return mark_drawing(page, sol.points)       # O4P2 → O₄P₂: the scene's labels typeset

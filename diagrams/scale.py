@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 
 from polygons.errors import PolygonsError, SceneError, suggest
-from polygons.units import UNITS
+from polygons.units import ROUND, UNITS, round_up  # noqa: F401 (one rule for round scales)
 
 from .text import plain
 
@@ -24,7 +24,6 @@ class ScaleError(DiagramError):
 
 
 #: the mantissas of a round drawing scale (units per cm)
-ROUND = (1.0, 2.0, 2.5, 5.0)
 #: the area (mm) the polygon or mechanism must fit, by paper size (landscape, less margins,
 #: title, scale bar and legend)
 PAPER = {"A5": (150.0, 100.0), "A4": (230.0, 150.0)}
@@ -80,19 +79,6 @@ def make(quantity: str, per_cm: float, forced: bool = False) -> Scale:
     else:
         unit, factor = (big if per_cm >= 0.1 - 1e-12 else small)
     return Scale(quantity, per_cm, unit, factor, forced)
-
-
-def round_up(x: float) -> float:
-    """The smallest round scale value (1, 2, 2.5, 5 × 10ⁿ) ≥ ``x``."""
-    if not (x > 0 and math.isfinite(x)):
-        return 1.0
-    n = math.floor(math.log10(x))
-    for k in (n - 1, n, n + 1):
-        for m in ROUND:
-            v = float(f"{m}e{k}")
-            if v >= x * (1 - 1e-12):
-                return v
-    raise AssertionError(x)  # pragma: no cover
 
 
 def choose(quantity: str, extent: tuple[float, float], vectors: list[float] = (),

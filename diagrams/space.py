@@ -19,6 +19,7 @@ from .labels import Box, Placer, bounds, clip_line, largest_gap_direction
 from .layout import arrow_head, compose
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
 from .text import display, number, token
+from .notation import mark_drawing
 
 Pt = tuple[float, float]
 LABEL_SIZE = 3.8
@@ -157,7 +158,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         pa, pb, px = P[a], P[b], P[lab]
         ab = (pb[0] - pa[0], pb[1] - pa[1])
         L2 = ab[0] ** 2 + ab[1] ** 2
-        off = abs(ab[0] * (px[1] - pa[1]) - ab[1] * (px[0] - pa[0])) / math.sqrt(L2)
+        off = (abs(ab[0] * (px[1] - pa[1]) - ab[1] * (px[0] - pa[0])) / math.sqrt(L2)
+               if L2 > 0.0 else math.inf)      # a link too short to draw: no continuation
         if off < 0.05:
             t = ((px[0] - pa[0]) * ab[0] + (px[1] - pa[1]) * ab[1]) / L2
             if t > 1:
@@ -410,7 +412,8 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
         key.append(("input", "input velocity of the slider", True))
         if drv.acceleration:
             key.append(("input-alpha", "input acceleration (open head)", True))
-    return compose(name="space", kind="space", stage=None, title="Space diagram",
+    page = compose(name="space", kind="space", stage=None, title="Space diagram",
                    subtitle=subtitle, desc=desc, content=content, content_box=box,
                    legend=legend, scale=sc, caption=[], scale_statement=sc.statement, key=key,
                    meta={"positions": {k: tuple(v) for k, v in sol.placement.points.items()}})
+    return mark_drawing(page, sol.points)       # O2 → O₂: the scene's labels typeset

@@ -19,7 +19,7 @@ import svgwrite
 
 from .components import LOOKS, new_width
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
-from .notation import plain, svg_runs
+from .notation import mark_labels, plain, svg_runs
 from .text import FONT_FAMILY
 
 INK = "#000000"
@@ -94,6 +94,8 @@ def _stroke_attrs(style: str, faded: bool) -> dict:
 class _Writer:
     def __init__(self, d: Drawing):
         self.d = d
+        #: the scene's labels, typeset where the text names them (O2 → O₂; notation)
+        self.labels = d.meta.get("labels", ())
         self.H = d.height
         self.dwg = svgwrite.Drawing(size=(f"{d.width}mm", f"{d.height}mm"),
                                     viewBox=f"0 0 {d.width} {d.height}", profile="full",
@@ -176,7 +178,7 @@ class _Writer:
                 kw["class_"] = cls
             if it.ident:
                 kw["id"] = it.ident
-            parts = svg_runs(it.text, it.size)
+            parts = svg_runs(mark_labels(it.text, self.labels), it.size)
             if len(parts) == 1 and parts[0][3] is None:
                 return dwg.text(parts[0][0], insert=(_n(it.x), _n(self.H - it.baseline)), **kw)
             t = dwg.text("", insert=(_n(it.x), _n(self.H - it.baseline)), **kw)
@@ -194,7 +196,8 @@ class _Writer:
 
     def write(self) -> bytes:
         d, dwg = self.d, self.dwg
-        dwg.set_desc(title=plain(d.title), desc=plain(d.desc))
+        dwg.set_desc(title=plain(mark_labels(d.title, self.labels)),
+                     desc=plain(mark_labels(d.desc, self.labels)))
         dwg.add(dwg.rect((0, 0), (d.width, d.height), id="background", fill="#ffffff"))
         for g in d.groups:
             dwg.add(self.item(g))

@@ -13,12 +13,11 @@ and does so only when a drawing is asked for.
 from __future__ import annotations
 
 import html
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Iterable
 
-from .errors import SceneError, SceneSyntaxError
+from .errors import SceneError, show
 from .scene import Scene, load_scene, parse_scene
 
 DIAGRAMS = ("space", "velocity", "acceleration", "centres")
@@ -38,18 +37,33 @@ def load(source: str | Path | Scene) -> Scene:
         raise SceneError(f"expected a path, TOML text or a Scene, got "
                          f"{type(source).__name__}", file="<api>")
     if "\n" in source or "=" in source:
-        try:
-            data = tomllib.loads(source)
-        except tomllib.TOMLDecodeError as exc:
-            raise SceneSyntaxError(f"not valid TOML: {exc}", file="<text>") from None
-        return parse_scene(data, file="<text>")
+        from .scene import parse_toml        # the loader's own reading (rtoml, the checks)
+        return parse_scene(parse_toml(source, "<text>"), file="<text>")
     return load_scene(source)
 
 
 def solve(source: str | Path | Scene, targets: Iterable[str] | None = None) -> "Result":
     """Solve a scene (a :class:`Scene`, a path or TOML text): a :class:`Result`."""
     from .evaluate import solve as _solve
-    return Result(_solve(load(source), targets))
+    scene = load(source)
+    return Result(_solve(scene, _labels(targets, scene, "targets")))
+
+
+def _labels(value, scene: Scene, what: str) -> tuple[str, ...] | None:
+    """None, or point labels given as an iterable of strings (one comma-separated string is
+    read as the command line reads --points); anything else is refused in one line."""
+    if value is None:
+        return None
+    if isinstance(value, str):
+        value = [v.strip() for v in value.split(",") if v.strip()]
+    try:
+        items = tuple(value)
+    except TypeError:
+        items = None
+    if items is None or not all(isinstance(v, str) for v in items):
+        raise SceneError(f"{what}: expected point labels (a list of strings such as "
+                         f"['B', 'C']), got {show(value)}", file=scene.file)
+    return items
 
 
 @dataclass(frozen=True)
@@ -100,7 +114,7 @@ class Result:
     def centres(self, points: Iterable[str] | None = None):
         """The instantaneous centres (:func:`polygons.centres.instant_centres`)."""
         from .centres import instant_centres
-        return instant_centres(self.solution, points)
+        return instant_centres(self.solution, _labels(points, self.scene, "points"))
 
     def rubbing(self):
         """Rubbing velocities at the scene's [pins] (:func:`polygons.pins.rubbing_velocities`)."""
@@ -110,14 +124,17 @@ class Result:
     def least_velocity(self, link: str):
         """The point of ``link`` with least velocity (:func:`polygons.pins.least_velocity`)."""
         from .pins import least_velocity
+        if not isinstance(link, str):
+            raise SceneError(f"least_velocity: expected a link name such as 'BC', got "
+                             f"{show(link)}", file=self.scene.file)
         return least_velocity(self.solution, link)
 
     # ---------------------------------------------------------------- drawings
     def svg(self, diagram: str = "space") -> str:
         """One finished diagram as SVG text: 'space', 'velocity', 'acceleration' or
         'centres'."""
-        if diagram not in DIAGRAMS:
-            raise SceneError(f"unknown diagram {diagram!r}: one of {', '.join(DIAGRAMS)}",
+        if not isinstance(diagram, str) or diagram not in DIAGRAMS:
+            raise SceneError(f"unknown diagram {show(diagram)}: one of {', '.join(DIAGRAMS)}",
                              file=self.scene.file)
         if diagram == "centres":
             from diagrams.centres import svg

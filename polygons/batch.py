@@ -27,10 +27,11 @@ from typing import Mapping
 
 import numpy as np
 
-from .errors import PolygonsError, UnknownLabelError, suggest
+from .errors import PolygonsError, UnitError, UnknownLabelError, show, suggest
 from .plan import construction, make_plan
 from .scene import Crank, Scene
 from .steps import Diagram
+from .units import LIMITS, SI_UNIT
 from .sweep import compile_plan
 
 #: the staged solver's threshold (polygons.geometry.PARALLEL_DEG)
@@ -95,8 +96,8 @@ class Batch:
         return out
 
     def _known(self, name, table):
-        if name not in table:
-            raise UnknownLabelError(f"unknown name {name!r}: {suggest(name, table)}",
+        if not isinstance(name, str) or name not in table:
+            raise UnknownLabelError(f"unknown name {show(name)}: {suggest(str(name), table)}",
                                     file=self.scene.file)
         return name
 
@@ -117,23 +118,32 @@ def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
     'compiled' (the construction compiled for arrays, :mod:`polygons.compiled`) or 'located'
     (the points placed by each dyad's numpy ``locate``, then the step program for arrays on
     them): the same numbers to rounding."""
+    if not isinstance(scene, Scene):
+        raise PolygonsError(f"solve_many: expected a Scene (polygons.load(...)), got "
+                            f"{type(scene).__name__}", file="<api>")
+    if engine not in ("compiled", "located"):
+        raise PolygonsError(f"solve_many: engine must be 'compiled' or 'located', got "
+                            f"{show(engine)}", file=scene.file)
+    if values is not None and not isinstance(values, Mapping):
+        raise PolygonsError(f"solve_many: values must be a mapping of quantity → values, got "
+                            f"{type(values).__name__}", file=scene.file)
     given = dict(values or {})
     given.update(arrays)
     names = _quantities(scene)
     cols = {}
     for name, v in given.items():
         if name not in names:
-            raise UnknownLabelError(f"cannot vary {name!r}: {suggest(name, names)} (a link's "
-                                    f"length by its name, a fixed point's G_x / G_y, the input "
-                                    f"{', '.join(n for n in names if n in _DRIVER_NAMES)})",
+            raise UnknownLabelError(f"cannot vary {show(name)}: {suggest(name, names)} (a "
+                                    f"link's length by its name, a fixed point's G_x / G_y, the "
+                                    f"input {', '.join(n for n in names if n in _DRIVER_NAMES)})",
                                     file=scene.file)
-        a = np.asarray(v, dtype=float)
-        if a.ndim > 1:
-            raise PolygonsError(f"{name}: expected a 1-D array of values, got shape {a.shape}",
-                                file=scene.file)
-        cols[name] = a
+        cols[name] = _column(scene, name, v)
     if grid:
         shape = tuple(np.atleast_1d(a).shape[0] for a in cols.values())
+        if math.prod(shape) > MAX_ROWS:
+            raise PolygonsError(f"{' × '.join(f'{k:,}' for k in shape)} = "
+                                f"{math.prod(shape):,} combinations: a batch solves at most "
+                                f"{MAX_ROWS:,} rows", file=scene.file)
         mesh = np.meshgrid(*(np.atleast_1d(a) for a in cols.values()), indexing="ij")
         cols = {k: m.reshape(-1) for k, m in zip(cols, mesh)}
     else:
@@ -147,6 +157,9 @@ def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
                                 file=scene.file) from None
         cols = {k: np.atleast_1d(v) for k, v in zip(cols, b)}
         shape = (next(iter(cols.values())).shape[0],) if cols else (1,)
+        if shape[0] > MAX_ROWS:
+            raise PolygonsError(f"{shape[0]:,} rows: a batch solves at most {MAX_ROWS:,}",
+                                file=scene.file)
     n = int(np.prod(shape))
     solve = {"compiled": _solve_compiled, "located": _solve_located}[engine]
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -154,6 +167,47 @@ def solve_many(scene: Scene, values: Mapping[str, object] | None = None, *,
 
 
 _DRIVER_NAMES = ("theta", "s", "omega", "alpha", "velocity", "acceleration")
+#: the most rows one batch solves (about 1 kB of memory a row for a six-bar), checked before
+#: any array is made: the same bound for solve_many and ``polygons sweep --vary``
+MAX_ROWS = 1_000_000
+#: the dimension of each driver quantity (any other name is a length: a link, G_x, G_y)
+_DIMENSION = {"theta": "angle", "omega": "angular_velocity", "alpha": "angular_acceleration",
+              "s": "length", "velocity": "velocity", "acceleration": "acceleration"}
+
+
+def _column(scene: Scene, name: str, v) -> np.ndarray:
+    """The values of ``name`` as a float array, refused (one line) unless they are numbers
+    within the scene file's domain limits (:data:`polygons.units.LIMITS`), at most MAX_ROWS."""
+    size = getattr(v, "size", None)
+    if size is None:
+        size = len(v) if isinstance(v, (list, tuple)) else 1
+    if size > MAX_ROWS:
+        raise PolygonsError(f"{name}: {size:,} values: a batch solves at most {MAX_ROWS:,} "
+                            f"rows", file=scene.file, where=name)
+    try:
+        a = np.asarray(v, dtype=float)
+    except (TypeError, ValueError, OverflowError):
+        raise PolygonsError(f"expected numbers (SI units), got {show(v)}",
+                            file=scene.file, where=name) from None
+    if a.ndim > 1:
+        raise PolygonsError(f"expected a 1-D array of values, got shape {a.shape}",
+                            file=scene.file, where=name)
+    if a.size > MAX_ROWS:
+        raise PolygonsError(f"{name}: {a.size:,} values: a batch solves at most {MAX_ROWS:,} "
+                            f"rows", file=scene.file, where=name)
+    dim = _DIMENSION.get(name, "length")
+    low, high = LIMITS[dim]
+    with np.errstate(invalid="ignore"):
+        mag = np.abs(a)
+        bad = ~np.isfinite(a) | (mag > high) | ((a != 0) & (mag < low))
+    if bad.any():
+        i = int(np.flatnonzero(np.atleast_1d(bad))[0])
+        shown = f"{high * 180 / math.pi:g} deg" if dim == "angle" else \
+            f"{high:g} {SI_UNIT.get(dim, '')}".rstrip()
+        raise UnitError(f"value {float(np.atleast_1d(a)[i])!r} (row {i}) is outside "
+                        f"the domain: finite and at most {shown} in magnitude, as in a scene "
+                        f"file", file=scene.file, where=name)
+    return a
 
 
 def _quantities(scene: Scene) -> list[str]:

@@ -525,6 +525,13 @@ def check_compilable(scene: Scene, plan: Plan, steps: tuple[Step, ...]) -> None:
                               f"{str(s.op)!r} yet", file=scene.file)
 
 
+def _code_name(text: str) -> str:
+    """The scene's title as the generated code's file name: printable characters only (a NUL
+    is refused by ``compile``), at most 80 of them."""
+    text = "".join(c if c.isprintable() else "?" for c in str(text)[:80])
+    return text if text else "scene"
+
+
 def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
              arrays: bool = False, meet=None, instruments=None, positions: bool = False
              ) -> _Code:
@@ -620,7 +627,8 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
     src = (f"def _solve(x, _k):\n    ({params}{',' if len(g.getters) == 1 else ''}) = _k\n"
            f"    {body}\n    return ({', '.join(out)},)\n")
     ns = dict(g.namespace)
-    exec(compile(src, f"<polygons.compiled {scene.title or scene.file}>", "exec"), ns)
+    exec(compile(src, f"<polygons.compiled {_code_name(scene.title or scene.file)}>", "exec"),
+         ns)
     return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src)
 
 

@@ -326,8 +326,7 @@ def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
         filled = _copy(step, vals, value=None if value is None else zero(value, o.unit),
                        unit=o.unit, angle_deg=None if o.angle is None else r[o.angle],
                        terms=tuple(Term(sym, zero(v, u), u) for sym, v, u in terms))
-        filled.__dict__["substituted"] = substitute(filled, scene)
-        done.append(filled)
+        done.append(_copy(filled, {}, substituted=substitute(filled, scene)))
     return tuple(done)
 
 

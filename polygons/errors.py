@@ -111,6 +111,10 @@ def show(value, limit: int = MAX_VALUE) -> str:
         text = repr(value)
     except RecursionError:         # a value nested thousands deep
         text = f"<{type(value).__name__} nested too deeply to show>"
+    except Exception:              # noqa: BLE001 - a value whose repr fails
+        text = f"<{type(value).__name__}>"
+    if "\n" in text:              # a numpy array's repr: one line
+        text = " ".join(text.split())
     return text if len(text) <= limit else text[:limit - 1] + "…"
 
 

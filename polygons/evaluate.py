@@ -20,6 +20,7 @@ from .plan import Plan, construction, make_plan
 from .position import Placement, assemble
 from .scene import Scene
 from .steps import Step, pole_of
+from .memo import memo_of
 
 Vec = tuple[float, float]
 
@@ -196,7 +197,7 @@ def solve(scene: Scene, targets: Iterable[str] | None = None) -> Solution:
 def planned(scene: Scene, targets: tuple[str, ...] | None = None):
     """(plan, construction steps, staged program) of ``scene``, made on first use and kept
     with the scene."""
-    cache = scene.__dict__.setdefault("_planned", {})   # a memo beside the frozen fields
+    cache = memo_of(scene).setdefault("planned", {})   # a memo beside the frozen record
     hit = cache.get(targets)
     if hit is None:
         plan = make_plan(scene, targets)

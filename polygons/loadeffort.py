@@ -16,6 +16,14 @@ from __future__ import annotations
 
 from .errors import SceneError
 from .loadmodel import Effort
+from .schema import Key
+
+#: the [dynamics] key (polygons.loads declares it in its TABLES)
+EFFORT_KEY = Key("effort", "string", "kinetostatic: where the balancing effort is found, the "
+                 "driver staying the kinematic input: 'torque on LINK' (a couple, CCW "
+                 "positive), 'force at C' (on slider C along its guide) or 'force along E F' (a "
+                 "massless actuator between the points E and F, positive pushing them apart)",
+                 "force at C", default="torque on the driver (a force for a slider driver)")
 
 WHERE = "dynamics.effort"
 FORMS = "'torque on LINK', 'force at C' (a slider) or 'force along E F' (an actuator)"
@@ -32,11 +40,14 @@ def _split(text: str, labels) -> tuple[str, str] | None:
     return splits[0] if len(splits) == 1 else None
 
 
-def parse_effort(ctx, raw, mode: str) -> Effort | None:
+def parse_effort(ctx, raw, mode: str, flywheel=None, efficiency=None) -> Effort | None:
     """The :class:`Effort` of ``raw`` (None when the key is absent: the driver's effort)."""
     if raw is None:
         return None
     file = ctx.r.file
+    if flywheel is not None or efficiency is not None:
+        raise SceneError("[flywheel] and [efficiency] work on the driver's own effort: remove "
+                         "dynamics.effort", file=file, where=WHERE)
     if not isinstance(raw, str):
         raise SceneError(f"effort is a string: {FORMS}", file=file, where=WHERE)
     if mode != "kinetostatic":

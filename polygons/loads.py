@@ -42,11 +42,11 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Mapping
 
-from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, suggest
+from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, show, suggest
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
                         Friction, Joint, Loads, MassItem, Spring, bodies_of,
                         slot_contacts)
-from .loadeffort import parse_effort
+from .loadeffort import EFFORT_KEY, parse_effort
 from .model import BUILT, check_handles
 from .reader import Reader, record
 from .schema import Key, Table
@@ -64,6 +64,8 @@ READS = FORCE_TABLES + ("flywheel", "efficiency", "force_answers")
 NO_GRAVITY = (0.0, 0.0)
 DEFAULT_MODE = MODES[0]
 DEFAULT_STEPS = 200
+#: bounds of [dynamics]: RK4 steps per interval (each a solve, ~4 ms) and rotations reported
+MAX_RELEASE_STEPS, MAX_AFTER = 10_000, 20
 
 _Q = "quantity"
 TABLES: tuple[Table, ...] = (
@@ -138,14 +140,12 @@ TABLES: tuple[Table, ...] = (
     Table("dynamics", "Which problem the force analysis solves.", (
         Key("mode", "string", "'kinetostatic' (find the input torque), 'torque-driven' (find "
             "the input's α) or 'release' (no motor)", "release", default="kinetostatic"),
-        Key("after", "array", "release: rotations of the driver at which to report",
+        Key("after", "array", f"release: rotations of the driver at which to report (at most "
+                              f"{MAX_AFTER})",
             "[\"30 deg\"]", "angle"),
-        Key("steps", "number", "release: RK4 steps per interval", "200", default=200),
-        Key("effort", "string", "kinetostatic: where the balancing effort is found, the "
-            "driver staying the kinematic input: 'torque on LINK' (a couple, CCW positive), "
-            "'force at C' (on slider C along its guide) or 'force along E F' (a massless "
-            "actuator between the points E and F, positive pushing them apart)",
-            "force at C", default="torque on the driver (a force for a slider driver)"),
+        Key("steps", "integer", f"release: RK4 steps per interval, 4 .. {MAX_RELEASE_STEPS:,}",
+            "200", default=200),
+        EFFORT_KEY,
     )),
     Table("flywheel", "A flywheel on the crank shaft: its angular acceleration from the torque "
           "surplus, α = (T − T_R)/I (kinetostatic: the crank's ω as given).", (
@@ -307,10 +307,7 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     mode, after, steps = _dynamics(r, scene, ex.get("dynamics", {}), active)
     flywheel = _flywheel(r, scene, ex.get("flywheel"), mode)
     efficiency = _efficiency(r, scene, ex.get("efficiency"))
-    effort = parse_effort(ctx, ex.get("dynamics", {}).get("effort"), mode)
-    if effort is not None and (flywheel is not None or efficiency is not None):
-        raise SceneError("[flywheel] and [efficiency] work on the driver's own effort: remove "
-                         "dynamics.effort", file=file, where="dynamics.effort")
+    effort = parse_effort(ctx, ex.get("dynamics", {}).get("effort"), mode, flywheel, efficiency)
     answers = _answers(r, ex.get("force_answers", []), answer_fields)
     return Loads(file, MappingProxyType(bodies),
                  MappingProxyType({k: tuple(v) for k, v in members.items()}), tuple(joints),
@@ -569,6 +566,10 @@ def _springs(ctx: _Context, raw) -> list[Spring]:
             if not isinstance(ends, list) or len(ends) != 2:
                 raise SceneError("between = [\"S\", \"H\"]: the two points the spring joins",
                                  file=file, where=where + ".between")
+            if ends[0] == ends[1]:
+                raise SceneError(f"the spring joins {show(ends[0])} to itself: a linear spring "
+                                 f"joins two different points", file=file,
+                                 where=where + ".between")
             if ("free_length" in spec) == ("extension" in spec):
                 raise SceneError("give exactly one of free_length or extension (at this "
                                  "instant; negative when compressed)", file=file, where=where)
@@ -611,13 +612,18 @@ def _dynamics(r: _Values, scene, draw, active: bool) -> tuple[str, tuple[float, 
     if not isinstance(after_raw, list):
         raise SceneError("after = [\"30 deg\"]: the rotations of the driver at which to report",
                          file=file, where="dynamics.after")
+    if len(after_raw) > MAX_AFTER:
+        raise SceneError(f"{len(after_raw):,} rotations: at most {MAX_AFTER} are reported",
+                         file=file, where="dynamics.after")
     after = tuple(abs(r.quantity(a, "angle", f"dynamics.after[{i}]"))
                   for i, a in enumerate(after_raw))
     if after and mode != "release":
         raise SceneError("'after' is for mode = \"release\"", file=file, where="dynamics.after")
     steps = draw.get("steps", DEFAULT_STEPS)
-    if isinstance(steps, bool) or not isinstance(steps, int) or steps < 4:
-        raise SceneError("steps must be a whole number ≥ 4", file=file, where="dynamics.steps")
+    if (isinstance(steps, bool) or not isinstance(steps, int)
+            or not 4 <= steps <= MAX_RELEASE_STEPS):
+        raise SceneError(f"steps must be a whole number from 4 to {MAX_RELEASE_STEPS:,}, got "
+                         f"{show(steps)}", file=file, where="dynamics.steps")
     if not active:
         return mode, after, steps
     drv = scene.driver

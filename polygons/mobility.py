@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 from .errors import SceneError
 from .model import FRAME  # noqa: F401  (the frame's name, as the model writes it)
+from .memo import memo_of
 
 
 
@@ -74,6 +75,13 @@ def check_mobility(scene, redundant: tuple[str, ...] = ()) -> Mobility:
     named = ", ".join(links)
     if m.dof == k:
         return m
+    frame = [n for n, ln in scene.links.items() if ln.a in scene.ground and ln.b in scene.ground]
+    if frame:              # not a locked structure: the mechanism moves, this link cannot
+        n, ln = frame[0], scene.links[frame[0]]
+        raise MobilityError(
+            f"link {n} joins the fixed points {ln.a} and {ln.b}: it is part of the frame (the "
+            f"fixed link, stated by [ground]), not a moving link, and redundant in [links]; "
+            f"remove it", dof=m.dof, links=tuple(frame), file=scene.file, where=f"links.{n}")
     blame = (f"{', '.join(redundant)} {'is' if len(redundant) == 1 else 'are'} redundant "
              f"(both ends already placed by the other links)" if redundant else
              "remove the redundant link")
@@ -117,7 +125,7 @@ def used_links(dyads) -> set[str]:
 
 def _unused(plan) -> tuple[str, ...]:
     """The links with a length that no dyad of ``plan`` uses (kept with the frozen plan)."""
-    memo = plan.__dict__
+    memo = memo_of(plan)
     if "_unused" not in memo:
         used = used_links(plan.dyads)
         memo["_unused"] = tuple(n for n, ln in plan.scene.links.items()

@@ -58,10 +58,10 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
         val = t[0].value
         slot = scene.model.slot[A] if len(s.args) == 1 else scene.model.under[s.args[1]]
         pivot = slot.line.origin
-        if slot.along_lever:
+        if slot.along_lever:                      # the sign is in the words, not the number
             ends = (pivot, slot.far) if val >= 0 else (slot.far, pivot)
-            return f"{f(val)} {t[0].unit} (along {''.join(ends)})"
-        return (f"{f(val)} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
+            return f"{f(abs(val))} {t[0].unit} (along {''.join(ends)})"
+        return (f"{f(abs(val))} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
                 f"{pivot})")
     if op is Op.IMAGE:
         return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"

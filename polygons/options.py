@@ -68,6 +68,15 @@ TABLES: tuple[Table, ...] = (
         Key("stages", "bool", "also write the construction stage by stage "
                               "(velocity-1.svg ...)", example="false", default=True),
     )),
+    Table("centres", "How `polygons centres` numbers the links of the circle diagram (by "
+                     "default 1 the frame, 2 the driver, then in the order the construction "
+                     "places them).", (
+        Key("numbers", "table", "the number of each link named (2 and up; 1 is the frame): "
+                                "a link's name, or a block's as the centres table names it "
+                                "('slider C', 'block P2', 'collar C', 'yoke Y'); the links "
+                                "not named take the numbers left, in the default order",
+            example='{ O2P2 = 2, "block P2" = 3, O4P4 = 4 }'),
+    )),
     Table("handout", "Reserved for handout options; it accepts no key yet (any key is "
                      "refused, naming it).", ()),
 )
@@ -96,9 +105,18 @@ class DiagramOptions:
 
 
 @dataclass(frozen=True)
+class CentresOptions:
+    """``[centres]``: ``numbers`` maps a link's name to its number in the circle diagram
+    (checked against the mechanism's links by :mod:`polygons.centres`)."""
+
+    numbers: Mapping[str, int] = field(default_factory=lambda: MappingProxyType({}))
+
+
+@dataclass(frozen=True)
 class Options:
     sweep: SweepOptions = SweepOptions()
     diagram: DiagramOptions = DiagramOptions()
+    centres: CentresOptions = CentresOptions()
 
 
 #: the options of a scene without [sweep], [diagram] or [handout]
@@ -168,8 +186,8 @@ def _bool(table, key, name, file):
 
 def parse_options(data: Mapping, file: str) -> Options:
     """Check and read ``[sweep]``, ``[diagram]`` and ``[handout]`` of parsed TOML ``data``."""
-    if "sweep" not in data and "diagram" not in data and "handout" not in data:
-        return DEFAULT      # what reading the three empty tables gives (frozen: shared)
+    if not any(t in data for t in ("sweep", "diagram", "handout", "centres")):
+        return DEFAULT      # what reading the empty tables gives (frozen: shared)
     sw = _table(data, "sweep", file)
     steps = sw.get("steps")
     if steps is not None and (isinstance(steps, bool) or not isinstance(steps, int)
@@ -198,8 +216,33 @@ def parse_options(data: Mapping, file: str) -> Options:
     diagram = DiagramOptions(MappingProxyType(scales), paper,
                              _bool(dg, "stages", "diagram", file))
     _table(data, "handout", file)
-    return Options(sweep, diagram)
+    return Options(sweep, diagram, _centres(_table(data, "centres", file), file))
 
 
-__all__ = ["TABLES", "Options", "SweepOptions", "DiagramOptions", "parse_options",
+#: the largest number a link may be given in [centres] numbers
+MAX_NUMBER = 10_000
+
+
+def _centres(table, file: str) -> CentresOptions:
+    numbers = table.get("numbers", {})
+    where = "centres.numbers"
+    if not isinstance(numbers, dict):
+        raise SceneError(f"numbers must be a table of link = number, e.g. "
+                         f"{{ O2P2 = 2, O4P4 = 4 }}, got {show(numbers)}", file=file,
+                         where=where)
+    for name, n in numbers.items():
+        if isinstance(n, bool) or not isinstance(n, int) or not 2 <= n <= MAX_NUMBER:
+            raise SceneError(f"the number of {show(name)} must be a whole number from 2 to "
+                             f"{MAX_NUMBER:,} (1 is the frame), got {show(n)}", file=file,
+                             where=f"{where}.{name}")
+    seen: dict[int, str] = {}
+    for name, n in numbers.items():
+        if n in seen:
+            raise SceneError(f"{show(seen[n])} and {show(name)} both have the number {n}",
+                             file=file, where=where)
+        seen[n] = name
+    return CentresOptions(MappingProxyType(dict(numbers)))
+
+
+__all__ = ["TABLES", "Options", "SweepOptions", "DiagramOptions", "CentresOptions", "parse_options",
            "scale_per_cm", "labels", "MAX_STEPS"]

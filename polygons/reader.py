@@ -3,16 +3,19 @@ and the fields every answer table shares ([[answers]], [[force_answers]], [[pin_
 from __future__ import annotations
 
 import math
+import os
 import re
+import stat
+from pathlib import Path
 
-from .errors import SceneError, UnitError, UnknownKeyError, show, suggest
+from .errors import SceneError, SceneSyntaxError, UnitError, UnknownKeyError, show, suggest
 from .scene_tables import ANSWER_KEYS
 from .units import UNITS, parse_quantity
 
 Vec = tuple[float, float]
 
 #: a point label: a capital letter, then lower-case letters, digits, '_' or primes
-LABEL = re.compile(r"^[A-Z][a-z0-9_']*$")
+LABEL = re.compile(r"[A-Z][a-z0-9_']*\Z")     # \Z, not $: "Z\n" is no label
 _LABEL = LABEL
 
 
@@ -27,6 +30,36 @@ def record(cls, **fields):
 
 
 _new = object.__new__
+
+
+#: a TOML escape that gives a control character (a raw one is not valid TOML): NUL, backspace,
+#: form feed, escape, DEL, C1 ... (tab, newline and carriage return are text)
+_CONTROL_ESCAPE = re.compile(r"\\(?:[bfe]|x[0-9A-Fa-f]{2}|u00[0189][0-9A-Fa-f]|u007[Ff]"
+                             r"|U0000[0189][0-9A-Fa-f]|U00007[Ff])")
+_CONTROL = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f]")
+
+
+def refuse_control_characters(text: str, data, file: str) -> None:
+    """Refuse a text value (or key) holding a control character other than tab and line
+    ends: it would land in file names, SVG and HTML (where XML forbids it).  Walked only when
+    ``text``, the TOML read, has an escape that can give one, so a scene costs one search."""
+    if "\\" not in text or not _CONTROL_ESCAPE.search(text):
+        return
+    stack = [("", data)]
+    while stack:
+        where, value = stack.pop()
+        if isinstance(value, str):
+            m = _CONTROL.search(value)
+            if m:
+                raise SceneError(f"control character U+{ord(m.group(0)):04X} in the text "
+                                 f"{show(value)}: only printable characters, tabs and line "
+                                 f"breaks are allowed", file=file, where=where or None)
+        elif isinstance(value, dict):
+            for k, v in value.items():
+                stack.append((f"{where}.{k}" if where else str(k), k))
+                stack.append((f"{where}.{k}" if where else str(k), v))
+        elif isinstance(value, list):
+            stack.extend((f"{where}[{i}]", v) for i, v in enumerate(value))
 
 
 class Reader:
@@ -87,6 +120,83 @@ class Reader:
         if not isinstance(value, str):
             raise SceneError(f"expected text, got {show(value)}", file=self.file, where=where)
         return value
+
+
+# ---------------------------------------------------------------- the scene file
+#: largest scene file read (bytes): a scene is a few kB; checked before parsing, and no more
+#: than this plus one byte is ever read (so /dev/zero or a huge file cannot exhaust memory)
+MAX_SCENE_BYTES = 1_000_000
+
+
+def _read_bounded(fd: int) -> bytes:
+    """At most ``MAX_SCENE_BYTES + 1`` bytes of the open file ``fd``: asked for by the file's
+    stated size (one ``read`` of a 1 MB buffer costs more than parsing a scene), the rest, if
+    any, read up to the bound (a file that grew, a pipe or a device stating no size).  Read
+    with ``os.read`` (a buffered file object costs more to set up than the read itself)."""
+    size = os.fstat(fd).st_size
+    want = size + 1 if 0 < size <= MAX_SCENE_BYTES else MAX_SCENE_BYTES + 1
+    parts = []
+    got = 0
+    while got < want:
+        chunk = os.read(fd, want - got)
+        if not chunk:
+            break
+        parts.append(chunk)
+        got += len(chunk)
+        if got == want and want <= MAX_SCENE_BYTES:
+            want = MAX_SCENE_BYTES + 1          # more than its stated size: read on
+    return parts[0] if len(parts) == 1 else b"".join(parts)
+
+
+#: bytes as they are (Windows would translate line ends without O_BINARY), not inherited
+_OPEN_FLAGS = getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0)
+
+
+#: opening a FIFO or a terminal must not wait for a writer (regular files ignore the flag)
+_NONBLOCK = getattr(os, "O_NONBLOCK", 0)
+_KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+          (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+          (stat.S_ISSOCK, "a socket"))
+
+
+def _regular_file(mode: int, file: str) -> None:
+    """Refuse anything but a regular file (a FIFO, a device, a directory): it could block or
+    never end, and a scene is a file of a few kB."""
+    if stat.S_ISREG(mode):
+        return
+    kind = next((words for test, words in _KINDS if test(mode)), "not a regular file")
+    raise SceneError(f"is {kind}, not a scene file (a scene is a regular file)", file=file)
+
+
+def read_scene_text(path: str | Path) -> str:
+    """The text of a scene file: at most :data:`MAX_SCENE_BYTES`, UTF-8, valid TOML nesting."""
+    file = str(path)
+    try:
+        _regular_file(os.stat(path).st_mode, file)     # a FIFO would block the open itself
+        fd = os.open(path, os.O_RDONLY | _OPEN_FLAGS | _NONBLOCK)
+        try:
+            _regular_file(os.fstat(fd).st_mode, file)  # (replaced between the two looks)
+            raw = _read_bounded(fd)
+        finally:
+            os.close(fd)
+    except FileNotFoundError:
+        raise SceneError("no such scene file", file=file) from None
+    except IsADirectoryError:
+        raise SceneError("is a directory, not a scene file", file=file) from None
+    except OSError as exc:
+        raise SceneError(f"cannot read the scene file ({exc.strerror or exc})",
+                         file=file) from None
+    except ValueError:                # a NUL in the path (the Python API)
+        raise SceneError("a file name cannot hold a NUL character", file=show(file)) from None
+    if len(raw) > MAX_SCENE_BYTES:
+        raise SceneError(f"the file is larger than the {MAX_SCENE_BYTES:,} byte limit for a "
+                         f"scene file (a scene is a few kB)", file=file)
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw[:exc.start].count(b"\n") + 1
+        raise SceneSyntaxError(f"not UTF-8 text: byte 0x{raw[exc.start]:02x} at line {line} "
+                               f"(save the file as UTF-8)", file=file) from None
 
 
 # ---------------------------------------------------------------- answer tables

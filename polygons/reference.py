@@ -101,7 +101,12 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
              "**Domain.** Values must be finite; lengths and coordinates at most 1e6 m, a link "
              "at least 1e-9 m and at least 1e-6 of the mechanism's size, coordinates within "
              "1e6 × the size of the origin; angles within ±1e6° (orientations are reduced to "
-             "one turn exactly); ω up to 1e6 rad/s, α up to 1e12 rad/s².", ""]
+             "one turn exactly); ω up to 1e6 rad/s, α up to 1e12 rad/s² (magnitudes: the "
+             "sense is written in words, a negative rate is refused); a point of `[points]` "
+             "within 1e4 × the size of its link's first label; a mass 0 or at least 1e-9 kg, "
+             "an inertia 0 or at least 1e-18 kg m². Text holds no control character but "
+             "tabs and line breaks. Counts: `[sweep] steps` 2 … 10,000,000, `[dynamics] "
+             "steps` 4 … 10,000, at most 20 `after` rotations.", ""]
     for module, t in entries:
         lines += [f"## {_heading(t)}", "", t.doc + ("  *Required.*" if t.required else ""),
                   "", f"Read by `{module}`.", ""]
@@ -158,8 +163,16 @@ def _key_schema(k: Key) -> dict:
         d["anyOf"] = [{"const": "drawn"}, {"type": "string",
                                           "pattern": _unit_pattern("length")}]
     elif k.type == "point":
-        d |= {"type": "array", "minItems": 2, "maxItems": 2,
-              "items": {"type": "string", "pattern": _unit_pattern("length")}}
+        arr = {"type": "array", "minItems": 2, "maxItems": 2,
+               "items": {"type": "string", "pattern": _unit_pattern("length")}}
+        if k.name == "<LABEL>" and "from" in k.doc:     # a pivot placed from another
+            d["anyOf"] = [arr, {"type": "object", "additionalProperties": False,
+                                "required": ["from", "distance", "angle"],
+                                "properties": {"from": {"type": "string", "pattern": _LABEL_RE},
+                                               "distance": {"type": "string"},
+                                               "angle": {"type": "string"}}}]
+        else:
+            d |= arr
     elif k.type == "label":
         d |= {"type": "string", "pattern": _LABEL_RE}
     elif k.type == "link":

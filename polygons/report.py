@@ -11,7 +11,8 @@ from . import geometry
 from .errors import PolygonsError
 from .evaluate import Solution
 from .quantities import quantity
-from .steps import noise_floor, sense as steps_sense
+from .notation import vertex, vertices_in
+from .steps import noise_floor, percent_diff, sense as steps_sense
 from .scene import Answer
 from .units import SYSTEMS, UNITS
 
@@ -45,8 +46,7 @@ def check_answers(sol: Solution) -> list[AnswerCheck]:
             if ans.tutorial == 0:      # a printed zero: no percentage; ours must vanish too
                 within = abs(compared) <= 1e-9
             else:
-                if compared != 0:
-                    diff = (ans.tutorial - compared) / abs(compared) * 100.0
+                diff = percent_diff(ans.tutorial, compared)
                 within = (abs(ans.tutorial - compared)
                           <= ans.tolerance * max(abs(ans.tutorial), abs(compared)))
         if ans.exact is not None:
@@ -54,6 +54,11 @@ def check_answers(sol: Solution) -> list[AnswerCheck]:
             rel = abs(compared - exact) / abs(exact) if exact != 0 else abs(compared)
         out.append(AnswerCheck(ans, ours, compared, diff, within, rel))
     return out
+
+
+def undefined_note(tutorial: float | None, diff: float | None) -> str:
+    """'; diff % undefined (ours ≈ 0)' when a non-zero printed answer has no percentage."""
+    return "; diff % undefined (ours ≈ 0)" if tutorial and diff is None else ""
 
 
 def sense(value: float | None) -> str:
@@ -223,13 +228,14 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
     if steps:
         for diagram in scene.solve:
             lines.append("")
-            lines.append(f"{diagram} construction (pole {sol.pole}):")
+            lines.append(f"{diagram} construction (pole {vertex(sol.pole)}):")
             for s in sol.steps:
                 if s.diagram != diagram:
                     continue
                 text = f"  {s.number:>2}. {s.reason}"
                 if s.substituted:
                     text += f"  [{s.substituted}]"
+                text = vertices_in(text, sol.vertices[diagram])   # p4_1 → p₄′
                 lines.append(text)
     lines.append("")
     if sol.min_intersection_angle_deg is not None:
@@ -249,7 +255,7 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
                 continue
             note = "SLIP in the tutorial (see reference)" if a.slip else (
                 "within drawing tolerance" if c.within else
-                f"outside ±{a.tolerance * 100:g}%")
+                f"outside ±{a.tolerance * 100:g}%") + undefined_note(a.tutorial, c.diff_pct)
             lines.append(f"{a.desc[:34]:<34} {a.unit:<8} {_g(c.compared, 6):>12} "
                          f"{_g(a.tutorial, 6):>10} "
                          f"{_pct(c.diff_pct):>8}  {note}")

@@ -32,7 +32,6 @@ answers and the exact ones, used by the tests and the reports).
 from __future__ import annotations
 
 import math
-import os
 import re
 import tomllib
 from dataclasses import dataclass, field
@@ -46,7 +45,8 @@ from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
 from .exam_table import spec as exam_spec
 from .loads import parse as parse_loads
 from .model import build as build_model
-from .reader import LABEL as _LABEL, Reader, answer_fields, record
+from .reader import LABEL as _LABEL, Reader, answer_fields, record, refuse_control_characters
+from .reader import MAX_SCENE_BYTES, read_scene_text  # noqa: F401  (the file is read there)
 from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  # noqa: F401
                       SliderDrive, Slot, Vec)
 from .options import Options, parse_options
@@ -57,7 +57,7 @@ from .units import dimension_of
 _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
 
 #: option tables, read and checked at load by :mod:`polygons.options` (``Scene.options``)
-OPTION_KEYS = ("sweep", "diagram", "handout")
+OPTION_KEYS = ("sweep", "diagram", "handout", "centres")
 #: tables read by extension modules (forces, loads, pins); stored raw in ``Scene.extra`` and
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
@@ -157,62 +157,6 @@ _LINK_ENDS: dict[str, tuple[str, str]] = {}
 _Reader = Reader     # the name the loader's helpers use
 
 
-#: largest scene file read (bytes): a scene is a few kB; checked before parsing, and no more
-#: than this plus one byte is ever read (so /dev/zero or a huge file cannot exhaust memory)
-MAX_SCENE_BYTES = 1_000_000
-
-
-def _read_bounded(fd: int) -> bytes:
-    """At most ``MAX_SCENE_BYTES + 1`` bytes of the open file ``fd``: asked for by the file's
-    stated size (one ``read`` of a 1 MB buffer costs more than parsing a scene), the rest, if
-    any, read up to the bound (a file that grew, a pipe or a device stating no size).  Read
-    with ``os.read`` (a buffered file object costs more to set up than the read itself)."""
-    size = os.fstat(fd).st_size
-    want = size + 1 if 0 < size <= MAX_SCENE_BYTES else MAX_SCENE_BYTES + 1
-    parts = []
-    got = 0
-    while got < want:
-        chunk = os.read(fd, want - got)
-        if not chunk:
-            break
-        parts.append(chunk)
-        got += len(chunk)
-        if got == want and want <= MAX_SCENE_BYTES:
-            want = MAX_SCENE_BYTES + 1          # more than its stated size: read on
-    return parts[0] if len(parts) == 1 else b"".join(parts)
-
-
-#: bytes as they are (Windows would translate line ends without O_BINARY), not inherited
-_OPEN_FLAGS = getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0)
-
-
-def read_scene_text(path: str | Path) -> str:
-    """The text of a scene file: at most :data:`MAX_SCENE_BYTES`, UTF-8, valid TOML nesting."""
-    file = str(path)
-    try:
-        fd = os.open(path, os.O_RDONLY | _OPEN_FLAGS)
-        try:
-            raw = _read_bounded(fd)       # (a directory opens, and refuses to be read)
-        finally:
-            os.close(fd)
-    except FileNotFoundError:
-        raise SceneError("no such scene file", file=file) from None
-    except IsADirectoryError:
-        raise SceneError("is a directory, not a scene file", file=file) from None
-    except OSError as exc:
-        raise SceneError(f"cannot read the scene file ({exc.strerror or exc})",
-                         file=file) from None
-    if len(raw) > MAX_SCENE_BYTES:
-        raise SceneError(f"the file is larger than the {MAX_SCENE_BYTES:,} byte limit for a "
-                         f"scene file (a scene is a few kB)", file=file)
-    try:
-        return raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        line = raw[:exc.start].count(b"\n") + 1
-        raise SceneSyntaxError(f"not UTF-8 text: byte 0x{raw[exc.start]:02x} at line {line} "
-                               f"(save the file as UTF-8)", file=file) from None
-
-
 def parse_toml(text: str, file: str) -> dict:
     """The TOML ``text`` as a dict: read by rtoml (compiled, ~13× faster than tomllib on a case
     file); anything rtoml refuses is read again by ``tomllib``, whose words every failure
@@ -221,11 +165,16 @@ def parse_toml(text: str, file: str) -> dict:
     fast = _rtoml()
     if fast is not None:
         try:
-            return fast.loads(text)
+            data = fast.loads(text)
         except Exception:         # noqa: BLE001 - any refusal is tomllib's to explain
             pass
+        else:
+            refuse_control_characters(text, data, file)
+            return data
     try:
-        return tomllib.loads(text)
+        data = tomllib.loads(text)
+        refuse_control_characters(text, data, file)
+        return data
     except tomllib.TOMLDecodeError as exc:
         raise SceneSyntaxError(f"not valid TOML: {' '.join(str(exc).split())[:200]}",
                                file=file) from None
@@ -263,7 +212,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
-            required=("ground", "links", "driver"))
+            required=("ground", "driver"))
     options = parse_options(data, file)
     title = r.string(data["title"], "title") if "title" in data else path_stem(file)
     source = data.get("source", {})
@@ -279,7 +228,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     ground = {}
     for name, value in ground_raw.items():
         where = f"ground.{name}"
-        ground[r.label(name, where)] = r.vec(value, where)
+        ground[r.label(name, where)] = (topology.ground_from(value, r, where, ground)
+                                        if isinstance(value, dict) else r.vec(value, where))
     if not ground:
         raise SceneError("at least one fixed pivot is needed", file=file, where="ground")
 
@@ -289,7 +239,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     placed = {**drawn, **ground}
 
     # links
-    links_raw = r.named(data["links"], "links")
+    links_raw = r.named(data.get("links", {}), "links")
     links: dict[str, Link] = {}
     for name, value in links_raw.items():
         a, b = split_link_name(name, file=file, where=f"links.{name}")
@@ -359,7 +309,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise UnknownLabelError(f"link {show(on)} is not defined: "
                                     f"{suggest(on, list(links) + [s.lever for s in slots.values()])}",
                                     file=file, where=where + ".on")
-        along, fraction, left = topology.point_on_link(spec, r, where)
+        along, fraction, left = topology.point_on_link(
+            spec, r, where, links[on].length if on in links else None)
         points[label] = BodyPoint(label, on, along, fraction, left)
 
     known = set(ground)
@@ -375,8 +326,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                     file=file, where=where)
         return label
 
+    slider_labels = set(data.get("sliders", {})) if isinstance(data.get("sliders"), dict) \
+        else set()
     for slot in slots.values():
-        if slot.pin not in known:
+        if slot.pin not in known and slot.pin not in slider_labels:
             raise SceneError(f"the pin {slot.pin} sliding in the slot of {slot.lever} is on no "
                              f"link: make it the end of a link (a crank, a rocker) or a point "
                              f"of one in [points]", file=file, where=f"slots.{slot.pin}")
@@ -407,7 +360,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             known.add(label)
             sliders[label] = Guide(through, angle, pin, slot_angle)
         else:
-            need_label(r.label(label, where), where)
+            if label in slots:      # the pin of a slot driven along a fixed guide (a collar on
+                known.add(r.label(label, where))        # a screw moving a slotted arm)
+            else:
+                need_label(r.label(label, where), where)
             sliders[label] = Guide(through, angle)
 
     # crossing slots: a pin in the slots of two moving levers
@@ -424,7 +380,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     # driver
     drv = data["driver"]
     r.table(drv, "driver", KEYS["driver"])
-    drv = topology.lever_as_crank(drv, r, data.get("slots", {}), data["links"])
+    drv = topology.lever_as_crank(drv, r, data.get("slots", {}), data.get("links", {}))
     prescribed = {}
     if "slide" in drv:
         sl = topology.parse_slide(drv["slide"], r, links, split_link_name,
@@ -481,13 +437,21 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         driver = record(Crank, link=name, pivot=pivot, tip=tip, angle=angle, omega=omega,
                         alpha=alpha)
     else:
-        r.table(drv, "driver", ("slider", "position", "velocity", "acceleration"),
-                required=("slider", "position", "velocity"))
+        r.table(drv, "driver", ("slider", "position", "velocity", "acceleration", "rod",
+                                "rod_angle"), required=("slider", "velocity"))
         point = need_label(r.label(drv["slider"], "driver.slider"), "driver.slider")
         if point not in sliders:
             raise SceneError(f"slider driver {point} needs a guide: add [sliders.{point}]",
                              file=file, where="driver.slider")
-        driver = SliderDrive(point, r.quantity(drv["position"], "length", "driver.position"),
+        if ("position" in drv) == ("rod" in drv or "rod_angle" in drv):
+            raise SceneError("place the slider driver by its position (position = \"150 mm\") "
+                             "or by the angle of its rod (rod = \"BA\", rod_angle = "
+                             "\"30 deg\"): give exactly one", file=file, where="driver")
+        position = (r.quantity(drv["position"], "length", "driver.position")
+                    if "position" in drv else topology.slider_by_rod(
+                        drv, r, point, sliders, links, ground, data.get("assembly", {}),
+                        split_link_name))
+        driver = SliderDrive(point, position,
                              r.quantity(drv["velocity"], "velocity", "driver.velocity"),
                              r.quantity(drv.get("acceleration", "0 m/s^2"), "acceleration",
                                         "driver.acceleration"))
@@ -540,8 +504,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                    options=options, loads=None, prescribed=MappingProxyType(prescribed),
                    model=model, crossing=MappingProxyType(crossing))
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
-    scene.__dict__["loads"] = parse_loads(scene, lambda spec, where, **kw: answer_fields(
+    # (read off the scene without them, then a new record with them: never set afterwards)
+    loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
+    scene = record(Scene, **{**vars(scene), "loads": loads})
     exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
     return scene
 
@@ -553,6 +519,9 @@ MIN_RELATIVE = 1e-6
 #: the shortest link accepted (m)
 MIN_LENGTH = 1e-9
 MAX_RELATIVE = 1e6
+#: the farthest a point of [points] may lie from its link's first label, as a multiple of the
+#: mechanism's size: farther, the mechanism shrinks to nothing in every drawing
+MAX_POINT_RELATIVE = 1e4
 
 
 def check_proportions(file, ground, drawn, links, sliders, points, assembly, driver) -> None:
@@ -579,6 +548,15 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
             value = getattr(point, key)
             if value and abs(value) < shortest:
                 _too_short(file, f"points.{label}.{key}", value, size)
+    for label, point in points.items():
+        link = links.get(point.link)
+        reach = math.hypot((point.along or 0.0) + (point.fraction or 0.0) * (
+            link.length if link is not None and link.length else size), point.left or 0.0)
+        if reach > MAX_POINT_RELATIVE * size:
+            raise SceneError(f"the point lies {reach:.4g} m from {point.link}'s first label, too "
+                             f"far for a mechanism of size {size:.4g} m: a point of [points] "
+                             f"must be within {MAX_POINT_RELATIVE:g} × the size",
+                             file=file, where=f"points.{label}")
     farthest = MAX_RELATIVE * size
     for table, suffix, values in (
             ("ground", "", ground.items()), ("drawn", "", drawn.items()),

@@ -68,16 +68,19 @@ TABLES: tuple[Table, ...] = (
                                              "answers", example='"3 %"', dimension="fraction",
             default="3 %"),
     )),
-    Table("ground", "Fixed pivots: one entry per label, its coordinates.", (
-        Key("<LABEL>", "point", "position [x, y] of a fixed pivot", example='["0 mm", "0 mm"]',
-            dimension="length", sign="x to the right, y up"),
+    Table("ground", "Fixed pivots: one entry per label, its coordinates [x, y]; or, as books "
+                    "place a pivot from another, a table { from = \"A\", distance = "
+                    "\"300 mm\", angle = \"30 deg\" } (the angle CCW from +x, or \"30 deg CW\"; "
+                    "from a pivot given before it).", (
+        Key("<LABEL>", "point", "position [x, y] of a fixed pivot (or { from, distance, angle })",
+            example='["0 mm", "0 mm"]', dimension="length", sign="x to the right, y up"),
     ), required=True),
     Table("links", "Binary links, named by their two end labels.", (
         Key("<LINK>", "length_or_drawn", "the link's length, or \"drawn\" to take it from the "
                                   "positions in [ground]/[drawn]; a slotted lever whose "
                                   "length is not needed is left out", example='"50 mm"',
             dimension="length"),
-    ), required=True),
+    )),
     Table("driver", "The input: a crank turning about its first label, or a slider pushed "
                     "along its guide (give exactly one of crank / slider).", (
         Key("crank", "link", "the driving link, pivot label first (the pivot must be in "
@@ -110,6 +113,13 @@ TABLES: tuple[Table, ...] = (
         Key("position", "quantity", "slider driver: position along the guide, from the "
                                     "guide's `through` point in its `direction`",
             example='"120 mm"', dimension="length", sign="positive along `direction`"),
+        Key("rod", "link", "slider driver placed by the angle of its rod instead of position "
+                           "('the connecting rod AB makes 30° with the line of stroke'): the "
+                           "rod, a link at the slider whose other end is on a fixed guide or "
+                           "joined by one link to a fixed pivot (two positions: [assembly] "
+                           "near chooses)", example='"BA"'),
+        Key("rod_angle", "string", "with rod: the rod's direction, first label → second, CCW "
+                                   "from +x (or '30 deg CW')", example='"150 deg"'),
         Key("velocity", "quantity", "slider driver: velocity along the guide",
             example='"2 m/s"', dimension="velocity", sign="positive along `direction`"),
         Key("acceleration", "quantity", "slider driver: acceleration along the guide",
@@ -180,6 +190,12 @@ TABLES: tuple[Table, ...] = (
         Key("angle", "string", "with distance: the angle from the link (first → second label) "
                                "to the point, CCW (or '30 deg CW')", example='"30 deg"',
             sign="CCW from first → second label"),
+        Key("distances", "array", "a corner of a plate by its distances from the link's first "
+                                  "and second labels, as books state it ('BX = 100 mm, "
+                                  "CX = 120 mm'), with side; instead of along/left",
+            example='["100 mm", "120 mm"]'),
+        Key("side", "string", "with distances: 'left' or 'right' of the link's first → second "
+                              "label", example='"left"'),
     ), many=True),
     Table("assembly", "Which of the two closures of a dyad, in words: C = \"C above AD\", "
                       "\"below AD\", \"left of B\", \"right of B\" (the leading label is "

@@ -225,6 +225,21 @@ def noise_floor(magnitudes) -> float:
     return 1e-12 * max(magnitudes, default=0.0)
 
 
+#: ours (a printed answer's reference) is a zero beside the tutorial's value below this
+#: ratio: no percentage of it
+ZERO_RATIO = 1e-9
+
+
+def percent_diff(tutorial: float, ours: float) -> float | None:
+    """(tutorial − ours) / |ours| × 100; None — undefined — when ours is zero or a computed
+    zero (|ours| ≤ 1e-9 |tutorial|: 3.9e-30 for 0, a subnormal mass's forces) or the ratio is
+    not finite, so that no 1.5e34 % or inf is ever printed."""
+    if not abs(ours) > ZERO_RATIO * abs(tutorial):
+        return None
+    diff = (tutorial - ours) / abs(ours) * 100.0
+    return diff if math.isfinite(diff) else None
+
+
 def sense(w: float) -> str:
     """'CCW' for a positive angular quantity, 'CW' for a negative one, '' for zero."""
     if w == 0.0:

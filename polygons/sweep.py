@@ -37,12 +37,13 @@ from typing import Callable, Iterable, Mapping, Sequence
 import numpy as np
 
 from .dyads.base import size_of
-from .errors import ConstructionError, PolygonsError
+from .errors import ConstructionError, PolygonsError, show
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input
 from .scene import Crank, Scene
 from .steps import Diagram, Step
 from .theorems import angular_acceleration, angular_velocity
+from .memo import memo_of
 
 #: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
 PARALLEL_DEG = 1e-5
@@ -116,13 +117,21 @@ class Sweep:
 
     def position(self, label: str) -> np.ndarray:
         """(N, 2) positions of ``label``."""
-        return _as_n2(self.pos[label], self.n)
+        return _as_n2(self.pos[self._known(label)], self.n)
 
     def velocity(self, label: str) -> np.ndarray:
-        return _as_n2(self.vel[label], self.n)
+        return _as_n2(self.vel[self._known(label)], self.n)
 
     def acceleration(self, label: str) -> np.ndarray:
-        return _as_n2(self.acc[label], self.n)
+        return _as_n2(self.acc[self._known(label)], self.n)
+
+    def _known(self, label) -> str:
+        """``label`` if the sweep solved it, else a one-line UnknownLabelError."""
+        if isinstance(label, str) and label in self.pos:
+            return label
+        from .errors import UnknownLabelError, suggest
+        raise UnknownLabelError(f"unknown point {show(label)}: {suggest(str(label), self.pos)}",
+                                file=self.scene.file)
 
 
 def _as_n2(xy, n: int) -> np.ndarray:
@@ -251,7 +260,7 @@ def arrays_program(prog: Program):
     """The construction of ``prog`` generated for (N,) arrays of inputs (:mod:`polygons.codegen`
     via :func:`polygons.compiled.compile_arrays`) and the scene's parameters: made once per
     program and kept with it."""
-    memo = prog.__dict__
+    memo = memo_of(prog)
     if "_arrays" not in memo:
         from .compiled import compile_arrays
         memo["_arrays"] = compile_arrays(prog.scene, prog.plan, dict(prog.sigma))
@@ -470,6 +479,39 @@ def find_range(prog: Program, probe: int = PROBE):
 
 
 # ---------------------------------------------------------------- the sweep
+def _check_sweep_args(scene, steps, inputs, chunk):
+    """The arguments of :func:`sweep` refused (one line) as the scene's ``[sweep] steps`` is:
+    ``steps`` a whole number from 2 to MAX_STEPS, ``inputs`` at most MAX_STEPS finite
+    numbers, ``chunk`` a positive whole number.  Returns ``inputs`` as an array (or None)."""
+    from .options import MAX_STEPS
+    if not isinstance(scene, Scene):
+        raise PolygonsError(f"sweep: expected a Scene (polygons.load(...)), got "
+                            f"{type(scene).__name__}", file="<api>")
+    for name, value, low in (("steps", steps, 2), ("chunk", chunk, 1)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
+                or not low <= value <= (MAX_STEPS if name == "steps" else 1 << 40):
+            raise PolygonsError(f"{name} must be a whole number from {low} to "
+                                f"{MAX_STEPS if name == 'steps' else 1 << 40:,}, got "
+                                f"{show(value)}", file=scene.file, where=f"sweep {name}")
+    if inputs is None:
+        return None
+    if getattr(inputs, "size", None) is None and not isinstance(inputs, (list, tuple)):
+        raise PolygonsError(f"inputs must be a sequence of numbers, got "
+                            f"{type(inputs).__name__}", file=scene.file, where="sweep inputs")
+    if (inputs.size if hasattr(inputs, "size") else len(inputs)) > MAX_STEPS:
+        raise PolygonsError(f"at most {MAX_STEPS:,} inputs in one sweep", file=scene.file,
+                            where="sweep inputs")
+    try:
+        xs = np.asarray(inputs, dtype=float).reshape(-1)
+    except (TypeError, ValueError, OverflowError):
+        raise PolygonsError(f"inputs must be numbers (θ in rad or s in m), got "
+                            f"{show(inputs)}", file=scene.file, where="sweep inputs") from None
+    if not np.isfinite(xs).all() or (xs.size and float(np.max(np.abs(xs))) > 1e6):
+        raise PolygonsError("inputs must be finite and at most 1e6 (rad or m) in magnitude",
+                            file=scene.file, where="sweep inputs")
+    return xs
+
+
 def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = None,
           chunk: int = CHUNK, progress: Callable[[int], None] | None = None,
           probe: int = PROBE) -> Sweep:
@@ -482,12 +524,11 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
     m) exactly those positions are solved, all of them in the branch of the scene's own
     position.  ``progress(k)`` is called with the number of positions done after each chunk.
     """
+    inputs = _check_sweep_args(scene, steps, inputs, chunk)
     prog = compile_plan(scene)
     limits: tuple[Limit, ...] = ()
     toggles: tuple[Limit, ...] = ()
     if inputs is None:
-        if steps < 2:
-            raise PolygonsError(f"a sweep needs at least 2 steps, got {steps}", file=scene.file)
         full, (lo, hi), limits, toggles = find_range(prog, probe)
         if full:
             xs = 2.0 * math.pi * np.arange(steps) / steps

@@ -34,7 +34,7 @@ import math
 import re
 from dataclasses import dataclass
 
-from .errors import SceneError, UnknownLabelError, suggest
+from .errors import SceneError, UnknownLabelError, show, suggest
 from .schema import Key, Table
 
 
@@ -88,7 +88,7 @@ _FROM = re.compile(r"^\s*(.*?)\s+from\s+(.+?)\s*$", re.IGNORECASE)
 _DEAD_WORDS = {"idc": "idc", "inner dead centre": "idc", "inner dead center": "idc",
                "tdc": "idc", "odc": "odc", "outer dead centre": "odc",
                "outer dead center": "odc", "bdc": "odc"}
-_LINE = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
+_LINE = re.compile(r"[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*\Z")     # \Z: no "AB\n"
 #: the axes an angle may be measured from (the direction of each, CCW from +x)
 _AXES = {"+x": 0.0, "x": 0.0, "-x": math.pi, "+y": math.pi / 2, "y": math.pi / 2,
          "-y": -math.pi / 2}
@@ -126,7 +126,12 @@ def rate_with_sense(drv, key: str, sense_key: str, dimension: str, r) -> tuple[f
     written after the value as books do ('300 rad/s CW', '120 rpm clockwise'); both may be
     given only if they agree."""
     text, written = sense_in(drv[key])
-    value = abs(r.quantity(text, dimension, f"driver.{key}"))
+    value = r.quantity(text, dimension, f"driver.{key}")
+    if value < 0:           # a magnitude: its sense is stated in words, never by a sign
+        raise SceneError(f"{key} = {show(drv[key])} is negative: give its magnitude and its "
+                         f"sense in words ('{key} = \"{show(text.strip().lstrip('-'))[1:-1]}\"' "
+                         f"with {sense_key} = \"CW\" or \"CCW\")", file=r.file,
+                         where=f"driver.{key}")
     if sense_key not in drv:
         return value, written
     turn = r.sense(drv[sense_key], f"driver.{sense_key}")
@@ -137,10 +142,62 @@ def rate_with_sense(drv, key: str, sense_key: str, dimension: str, r) -> tuple[f
     return value, turn
 
 
-def point_on_link(spec, r, where) -> tuple[float | None, float | None, float]:
+def ground_from(spec, r, where, ground) -> tuple[float, float]:
+    """A fixed pivot placed from another, as books do ('D is 300 mm from A at 30°'):
+    ``{ from = "A", distance = "300 mm", angle = "30 deg" }`` (CCW from +x, or '30 deg CW')."""
+    r.table(spec, where, ("from", "distance", "angle"), required=("from", "distance", "angle"))
+    frm = r.label(spec["from"], where + ".from")
+    if frm not in ground:
+        raise SceneError(f"{frm} must be a fixed pivot given before this one in [ground] "
+                         f"({', '.join(ground) or 'none yet'})", file=r.file,
+                         where=where + ".from")
+    d = r.quantity(spec["distance"], "length", where + ".distance")
+    text, turn = _turn_of(spec["angle"]) if isinstance(spec["angle"], str) else (
+        spec["angle"], 1.0)
+    phi = turn * r.quantity(text, "angle", where + ".angle")
+    x0, y0 = ground[frm]
+    return (x0 + d * math.cos(phi), y0 + d * math.sin(phi))
+
+
+def plate_corner(spec, r, where, length) -> tuple[float, float]:
+    """(along, left) of a plate's corner X given by its distances from the link's ends,
+    d₁ = |first label X|, d₂ = |second label X|: along = (L² + d₁² − d₂²) / 2L,
+    left = ±√(d₁² − along²), on the stated side."""
+    if any(k in spec for k in ("along", "fraction", "left", "distance", "angle")):
+        raise SceneError("give the corner either by distances (and side) or by along/left "
+                         "or distance/angle, not both", file=r.file, where=where)
+    if length is None:
+        raise SceneError(f"distances need the link {spec.get('on')}'s length in [links]",
+                         file=r.file, where=where + ".distances")
+    ds = spec["distances"]
+    if not isinstance(ds, list) or len(ds) != 2:
+        raise SceneError("distances = [from the first label, from the second], e.g. "
+                         "[\"100 mm\", \"120 mm\"]", file=r.file, where=where + ".distances")
+    d1, d2 = (r.quantity(v, "length", where + ".distances") for v in ds)
+    side = spec.get("side")
+    if side not in ("left", "right"):
+        raise SceneError("side must be 'left' or 'right' (of the link's first → second label)",
+                         file=r.file, where=where + ".side")
+    L = length
+    along = (L * L + d1 * d1 - d2 * d2) / (2.0 * L)
+    h2 = d1 * d1 - along * along
+    if not h2 > 1e-18 * L * L:
+        raise SceneError(f"no triangle has the sides {1e3 * L:.6g}, {1e3 * d1:.6g} and "
+                         f"{1e3 * d2:.6g} mm (each must be shorter than the other two "
+                         f"together)", file=r.file, where=where + ".distances")
+    return along, math.sqrt(h2) * (1.0 if side == "left" else -1.0)
+
+
+def point_on_link(spec, r, where, length=None) -> tuple[float | None, float | None, float]:
     """(along, fraction, left) of ``[points.X]``: given as they are, or in polar form from
     the link's first label, ``distance`` and ``angle`` (CCW from first → second label, or
-    '30 deg CW'): along = d cos φ, left = d sin φ."""
+    '30 deg CW'): along = d cos φ, left = d sin φ; or a plate's corner by its two distances
+    (:func:`plate_corner`, ``length`` the link's)."""
+    if "distances" in spec or "side" in spec:
+        if "distances" not in spec:
+            raise SceneError("side goes with distances = [..., ...]", file=r.file, where=where)
+        along, left = plate_corner(spec, r, where, length)
+        return along, None, left
     polar = ("distance" in spec) or ("angle" in spec)
     if polar:
         if not ("distance" in spec and "angle" in spec) or any(
@@ -255,6 +312,73 @@ def parse_crossing(pin, spec, r, links, taken) -> "Crossing":
 
 def show_text(x) -> str:
     return repr(x)[:60]
+
+
+def slider_by_rod(drv, r, point, sliders, links, ground, assembly, split) -> float:
+    """The position of a slider driver placed by the angle of its rod, as books state it ("the
+    connecting rod AB makes 30° with the line of stroke"): ``rod`` (a link at the slider,
+    its angle measured first label → second label) at ``rod_angle`` (CCW from +x, or
+    '30 deg CW').  The rod's other end R is on a fixed guide (R = S + L u must lie on it:
+    one position) or joined to a fixed pivot D (|S + L u − D| = l: two positions, the
+    scene's [assembly] word for the slider or near = [...] chooses)."""
+    where = "driver.rod"
+    if "rod" not in drv or "rod_angle" not in drv:
+        raise SceneError("give both rod = \"BA\" and rod_angle = \"30 deg\"", file=r.file,
+                         where="driver")
+    name = r.string(drv["rod"], where)
+    p, q = split(name, file=r.file, where=where)
+    link = links.get(name) or links.get(q + p)
+    if link is None or link.length is None or point not in (p, q):
+        raise SceneError(f"rod {name!r} must be a link with a length in [links] with the "
+                         f"slider {point} at one end", file=r.file, where=where)
+    text, turn = _turn_of(drv["rod_angle"]) if isinstance(drv["rod_angle"], str) else (
+        drv["rod_angle"], 1.0)
+    phi = turn * r.quantity(text, "angle", "driver.rod_angle")
+    L = link.length
+    sign = 1.0 if p == point else -1.0          # R − S = sign L u(φ)
+    other = q if p == point else p
+    ux, uy = sign * L * math.cos(phi), sign * L * math.sin(phi)
+    g = sliders[point]
+    (tx, ty), (ex, ey) = g.through, (math.cos(g.angle), math.sin(g.angle))
+
+    def cross(ax, ay, bx, by):
+        return ax * by - ay * bx
+    if other in sliders and sliders[other].pin is None:          # R on a fixed guide
+        g2 = sliders[other]
+        fx, fy = math.cos(g2.angle), math.sin(g2.angle)
+        den = cross(ex, ey, fx, fy)
+        if abs(den) < 1e-12:
+            raise SceneError(f"the guides of {point} and {other} are parallel: the rod's angle "
+                             f"does not place the slider", file=r.file, where=where)
+        return cross(g2.through[0] - tx - ux, g2.through[1] - ty - uy, fx, fy) / den
+    pivots = [(l2, l2.b if l2.a == other else l2.a) for l2 in links.values()
+              if other in (l2.a, l2.b) and l2 is not link and l2.length is not None
+              and (l2.b if l2.a == other else l2.a) in ground]
+    if len(pivots) != 1:
+        raise SceneError(f"the rod's angle places the slider {point} when the rod's other end "
+                         f"{other} slides on a fixed guide or is joined by one link to a fixed "
+                         f"pivot; give position = \"...\" instead", file=r.file, where=where)
+    l2, D = pivots[0]
+    wx, wy = tx + ux - ground[D][0], ty + uy - ground[D][1]
+    b = ex * wx + ey * wy
+    c = wx * wx + wy * wy - l2.length ** 2
+    disc = b * b - c
+    if disc < 0:
+        raise SceneError(f"no position of {point} on its guide puts {name} at this angle: "
+                         f"{other} cannot reach {l2.name}'s circle", file=r.file, where=where)
+    roots = sorted({-b - math.sqrt(disc), -b + math.sqrt(disc)})
+    if len(roots) == 1:
+        return roots[0]
+    spec = assembly.get(point)
+    if isinstance(spec, dict) and "near" in spec:
+        nx, ny = (r.quantity(v, "length", f"assembly.{point}.near") for v in spec["near"])
+        return min(roots, key=lambda s: math.hypot(tx + s * ex - nx, ty + s * ey - ny))
+    s1, s2 = roots
+    raise SceneError(f"two positions of {point} put {name} at this angle, "
+                     f"({1e3 * (tx + s1 * ex):.4g}, {1e3 * (ty + s1 * ey):.4g}) mm and "
+                     f"({1e3 * (tx + s2 * ex):.4g}, {1e3 * (ty + s2 * ey):.4g}) mm; say which: "
+                     f"[assembly] {point} = {{ near = [x, y] }}", file=r.file,
+                     where=f"assembly.{point}")
 
 
 def lever_as_crank(drv: dict, r, slots_raw, links_raw) -> dict:

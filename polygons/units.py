@@ -119,11 +119,11 @@ LIMITS: dict[str, tuple[float, float]] = {
     "angular_acceleration": (0.0, 1e12),
     "velocity": (0.0, 1e6),
     "acceleration": (0.0, 1e12),
-    "mass": (0.0, 1e9),
+    "mass": (1e-9, 1e9),                     # a µg: a subnormal mass would make inertia 0
     "force": (0.0, 1e12),
     "torque": (0.0, 1e12),
     "pressure": (0.0, 1e12),
-    "inertia": (0.0, 1e9),
+    "inertia": (1e-18, 1e9),                 # α = T / I must stay finite
     "stiffness": (0.0, 1e12),
     "torsional_stiffness": (0.0, 1e12),
     "time": (0.0, 1e9),
@@ -279,3 +279,21 @@ def _example(dimension: str) -> str:
             "angular_acceleration": "0 rad/s^2", "velocity": "7 m/s",
             "acceleration": "1505 m/s^2", "mass": "0.5 kg", "force": "20 N"}.get(
                 dimension, f"1 {units_of(dimension)[0] if units_of(dimension) else ''}")
+
+
+#: the round values of a drawing scale (1, 2, 2.5, 5 × 10ⁿ)
+ROUND = (1.0, 2.0, 2.5, 5.0)
+
+
+def round_up(x: float) -> float:
+    """The smallest round scale value (1, 2, 2.5, 5 × 10ⁿ) ≥ ``x`` (1 for a value that is
+    not positive and finite)."""
+    if not (x > 0 and math.isfinite(x)):
+        return 1.0
+    n = math.floor(math.log10(x))
+    for k in (n - 1, n, n + 1):
+        for m in ROUND:
+            v = float(f"{m}e{k}")
+            if v >= x * (1 - 1e-12):
+                return v
+    raise AssertionError(x)  # pragma: no cover

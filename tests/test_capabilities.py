@@ -57,8 +57,13 @@ def _forces(path: Path):
     from polygons.forces.analysis import analyse
     text = path.read_text(encoding="utf-8")
     if "[masses" not in text:                   # give the force analysis something to do
-        first = load_scene(path).model.moving[0].name
-        text += f'\n[masses.{first}]\nmass = "1 kg"\n'
+        moving = load_scene(path).model.moving
+        body = next((b for b in moving if b.kind == "link" and b.length), None) or next(
+            (b for b in moving if b.kind == "block"), None)
+        if body is None:                        # a lever without a length: its centre
+            text += f'\n[masses.{moving[0].name}]\nmass = "1 kg"\ncentre = "10 mm"\n'
+        else:
+            text += f'\n[masses.{body.name}]\nmass = "1 kg"\n'
     import tomllib
     scene = parse_scene(tomllib.loads(text), file=str(path))
     analyse(scene)

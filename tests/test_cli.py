@@ -186,7 +186,7 @@ def test_scene_text_is_escaped_in_handouts_svgs_and_the_gallery(tmp_path):
 
 
 def test_dev_zero_and_a_directory_are_one_line_errors(tmp_path):
-    for target, words in (("/dev/zero", "byte limit"), (tmp_path, "directory")):
+    for target, words in (("/dev/zero", "character device"), (tmp_path, "directory")):
         if not Path(target).exists():
             continue
         out = run("solve", target)

@@ -18,7 +18,7 @@ from diagrams import crowd, inset, measure, polygon, scale
 from diagrams.labels import Box, box_hits_segment, text_box
 from diagrams.model import Arrow, Circle, Polyline, Segment, Text
 from diagrams.components import LOOKS
-from diagrams.notation import JOIN
+from diagrams.notation import JOIN, MARK
 from diagrams.svg import to_svg
 from polygons.cli import main
 from polygons.errors import PolygonsError, SceneError, UnknownKeyError
@@ -106,7 +106,7 @@ def test_stage_k_adds_exactly_step_k(path):
                            and s.style == "c-construction-new" for s in d.items())
             if step.kind == "intersection":
                 assert new and all(to == step.end or frm == step.end for frm, to in new)
-            caption = " ".join(t.text for t in d.items("caption")).replace(JOIN, "")
+            caption = " ".join(t.text for t in d.items("caption")).replace(JOIN, "").replace(MARK, "")
             # stages are numbered, never lettered: 'Fig. b' would read as vertex b
             assert caption.startswith(f"Stage {k}. ")
             words = step.reason.replace("⟂", "⊥").split()
@@ -273,7 +273,7 @@ def test_no_two_vectors_overlap_on_one_line(path):
         r = measure.read_svg(to_svg(d))
         segs = [(f"{v.frm}{v.to}", v.drawn) for v in r.vectors]
         assert not _collinear_overlaps(segs), (d.name, _collinear_overlaps(segs))
-        ticks = [it for it in d.items() if isinstance(it, Segment) and "leader" in it.cls]
+        ticks = [it for it in d.items() if isinstance(it, Segment) and it.cls.startswith("leader")]
         moved = [a for a in d.items() if isinstance(a, Arrow) and a.shift != (0.0, 0.0)]
         assert len(ticks) == 2 * len(moved), d.name
         for a in moved:    # moved square to itself by a whole number of offsets

@@ -622,7 +622,8 @@ def test_solve_out_writes_the_same_as_stdout(tmp_path):
 
 def test_fbd_forces_on_a_two_force_member_are_drawn_beside_it(analysed):
     """WE8's massless rod PC: the pin forces act along it; their arrows are drawn parallel to
-    the rod but off it (≥ 2 mm), and each value hangs from a leader, clear of the rod."""
+    the rod but off it (≥ 2 mm), and each value sits clear of the rod (by its arrow, or on a
+    leader)."""
     from diagrams.fbd import drawings
     from diagrams.labels import text_box
     from diagrams.model import Arrow, Segment, Text
@@ -639,7 +640,7 @@ def test_fbd_forces_on_a_two_force_member_are_drawn_beside_it(analysed):
         assert min(off) >= 2.0, off                       # beside the rod, not on it
         assert abs(float((np.array(arr.tip) - arr.tail) @ n)) < 5e-3   # parallel (0.001 mm grid)
     leaders = [x for x in d.items("leaders") if isinstance(x, Segment)]
-    assert len(leaders) == 2
+    assert len(leaders) <= 2          # a value set by its own arrow needs no leader
     for t in (x for x in d.items("labels") if isinstance(x, Text)):
         box = text_box(t.x, t.baseline, t.text, t.size, t.anchor)
         corners = [(box.x0, box.y0), (box.x0, box.y1), (box.x1, box.y0), (box.x1, box.y1)]

@@ -460,11 +460,11 @@ def test_an_integer_of_100000_digits_is_a_syntax_error(tmp_path):
     assert code == 1 and "not valid TOML" in err and len(err) < 400
 
 
-def test_repro_dev_zero_is_refused_by_size(tmp_path):
+def test_repro_dev_zero_is_refused_as_a_device(tmp_path):
     if not Path("/dev/zero").exists():
         pytest.skip("no /dev/zero on this system")
     code, out, err = run_in_process(["solve", "/dev/zero"])
-    assert code == 1 and err.startswith("polygons: error: /dev/zero") and "byte limit" in err
+    assert code == 1 and err.startswith("polygons: error: /dev/zero") and "device" in err
 
 
 def test_repro_large_file_is_refused_before_parsing(tmp_path):
@@ -500,3 +500,301 @@ def test_a_warning_becomes_an_internal_error_not_a_stderr_line(monkeypatch):
     monkeypatch.setattr(solve_cmd, "run", warn)
     code, out, err = run_in_process(["solve", CASES / "s001-we4.toml"])
     assert code == 70 and err.count("\n") == 1 and "RuntimeWarning" in err
+
+
+# ------------------------------------------------------------------ issue 20: more classes
+# Five more classes of input, each seeded and replayable: command-line flags and counts, file
+# kinds given as the scene, output paths, the Python API, and large valid mechanisms.  Their
+# default depth is small (a few seconds in all); POLYGONS_FUZZ scales them with the mutants
+# (POLYGONS_FUZZ=20000: 20 × as many).
+DEPTH = max(1, N_MUTANTS // 1000)
+FLAG_SCENES = ["s001-we4.toml", "scotch-yoke.toml", "new-watt-six-bar.toml",
+               "efficiency-four-bar.toml"]
+COUNTS = ["0", "1", "2", "3", "24", "-1", "-5", "10000001", "1000000000000", "x", "1e3", "",
+          "2.5", "9" * 60, "0x10", " 7 "]
+VARY = ["AB=40..60mm:{n}", "theta=0..360deg:{n}", "omega=1,2,3 rad/s", "omega=1e300 rad/s",
+        "CD=1..2:{n}", "ZZ=1..2mm:{n}", "AB=..:{n}", "AB=40..60mm", "AB=", "=", "O2_x=0..1mm:{n}",
+        "AB=nan mm", "AB=-5 mm", "s=0..1mm:{n}", "AB=40..60mm:{n}:{n}"]
+MEASURED = ["v_B=1", "v_C=2.5 m/s", "omega_BC=230 rad/s CW", "alpha_CD=1e300", "v_B=nan",
+            "a_C=", "=1", "v_Q=1", "omega_AB=-0", "x", "v_B=1 furlong", "vs_B=1"]
+SCALES = ["velocity=2 m/s", "space=20 mm", "acceleration=1 cm = 500 m/s^2", "velocity=0 m/s",
+          "velocity=-1 m/s", "velocity=1e-300 m/s", "bogus=1", "velocity", "space=1e308 m"]
+
+
+def _flag_args(rng: random.Random, path: Path, tmp: Path) -> list:
+    """A random command line: a command, its flags with random (often hostile) values."""
+    command = rng.choice(["solve", "sweep", "sweep", "check", "forces", "centres"])
+    args: list = [command, path]
+    pick = lambda pool: rng.choice(pool)  # noqa: E731
+    n = lambda: pick(["1", "2", "3", "5", "0", "1000001", "1000000000000", "9" * 40])  # noqa
+    if command == "solve":
+        for flag, values in (("--points", ["B", "C,B", "Q", "", ",", "B," * 200]),
+                             ("--units", ["mm", "si", "imperial", "furlong"]),
+                             ("--scale", SCALES), ("--paper", ["A4", "A5", "A3"])):
+            if rng.random() < 0.4:
+                args += [flag, pick(values)]
+        args += [f for f in ("--json", "--no-steps") if rng.random() < 0.5]
+    elif command == "sweep":
+        if rng.random() < 0.35:
+            for _ in range(rng.choice((1, 1, 2, 3))):
+                args += ["--vary", pick(VARY).format(n=n())]
+            if rng.random() < 0.5:
+                args.append("--grid")
+        else:
+            args += ["--steps", pick(COUNTS)]
+            for flag, values in (("--points", ["B", "C", "Q", "B,B", "B," * 300]),
+                                 ("--links", ["BC", "ZZ", "BC," * 300, "AB,BC,CD,AC"]),
+                                 ("--unit", ["mm", "m", "km"]),
+                                 ("--progress", ["off", "auto", "x"])):
+                if rng.random() < 0.3:
+                    args += [flag, pick(values)]
+            args += [f for f in ("--shm",) if rng.random() < 0.3]
+        if rng.random() < 0.9:
+            args.append("--no-plot")
+        else:
+            args += ["--formats", pick(["svg", "png,svg", "bogus", ",", "SVG", "pdf,x"])]
+        args += ["--out", tmp / "sw"]
+    elif command == "check":
+        args += ["--measured", *rng.sample(MEASURED, rng.choice((1, 2, 3)))]
+        if rng.random() < 0.3:
+            args += ["--tolerance", pick(["3 %", "0", "-1 %", "1e300", "x", "200 %"])]
+        if rng.random() < 0.3:
+            args += ["--scale", pick(SCALES)]
+        args += [f for f in ("--json",) if rng.random() < 0.5]
+    else:
+        args += [f for f in ("--json",) if rng.random() < 0.5]
+        if command == "centres" and rng.random() < 0.4:
+            args += ["--points", pick(["B", "Q", "B,C", ""])]
+    if rng.random() < 0.05:
+        args.append(pick(["--no-such-flag", "--steps", "-o"]))
+    return args
+
+
+def test_fuzz_command_line_flags_and_counts(tmp_path):
+    """Random flags and counts (hostile values: 10¹² steps, 10¹² --vary values, 40-digit
+    counts, bad units and scales): every run ends in exit 0/3 with nothing on stderr, or one
+    line ``polygons: error: ...`` and exit 1 or 2 (a usage error); never 70, never a hang."""
+    failures = []
+    for i in range(60 * DEPTH):
+        rng = random.Random(SEED + 7 * i)
+        path = CASES / rng.choice(FLAG_SCENES)
+        args = _flag_args(rng, path, tmp_path / f"f{i}")
+        code, out, err = run_in_process(args)
+        lines = err.splitlines()
+        ok = (code in (0, 3) and err == "") or (
+            code in (1, 2) and len(lines) == 1 and lines[0].startswith("polygons: error: ")
+            and len(lines[0]) < 1200)
+        if not ok:
+            failures.append(f"flags {i}: polygons {' '.join(map(str, args))[:300]} -> exit "
+                            f"{code}: {err[:300]!r}")
+    assert not failures, "\n".join(failures[:20])
+
+
+def _kinds(tmp: Path) -> list[tuple[str, Path]]:
+    """Things that are not a scene file, given where a scene file goes."""
+    import stat as st_
+    fifo = tmp / "fifo.toml"
+    os.mkfifo(fifo)
+    folder = tmp / "folder.toml"
+    folder.mkdir()
+    empty = tmp / "empty.toml"
+    empty.write_bytes(b"")
+    dangling = tmp / "dangling.toml"
+    dangling.symlink_to(tmp / "nowhere.toml")
+    to_fifo = tmp / "to-fifo.toml"
+    to_fifo.symlink_to(fifo)
+    out = [("fifo", fifo), ("directory", folder), ("empty", empty), ("dangling", dangling),
+           ("symlink to a fifo", to_fifo), ("missing", tmp / "missing.toml")]
+    out += [(d, Path(d)) for d in ("/dev/null", "/dev/zero", "/dev/urandom")
+            if Path(d).exists() and st_.S_ISCHR(os.stat(d).st_mode)]
+    return out
+
+
+ALL_COMMANDS = [["solve"], ["forces", "--json"], ["check", "--measured", "v_B=1"],
+                ["sweep", "--steps", "24", "--no-plot"], ["draw"], ["handout"], ["centres"],
+                ["gallery"]]
+
+
+def test_fuzz_file_kinds_as_the_scene(tmp_path):
+    """A FIFO, a directory, a device (/dev/null, /dev/zero, /dev/urandom), an empty file, a
+    dangling symbolic link as the scene of every command, and a FIFO inside a gallery folder:
+    one line, exit 1, in well under a second each (a FIFO is never opened for reading)."""
+    import signal
+
+    def blocked(*_):
+        raise TimeoutError("a command blocked on its input")
+    old = signal.signal(signal.SIGALRM, blocked)
+    signal.alarm(60)
+    failures = []
+    try:
+        for what, target in _kinds(tmp_path):
+            for cmd in ALL_COMMANDS:
+                out = [] if cmd[0] in ("solve", "forces", "check", "centres") else [
+                    "-o", tmp_path / "out" / (what.replace(" ", "-") + (
+                        ".html" if cmd[0] == "handout" else ""))]
+                args = [cmd[0], target, *cmd[1:], *out]
+                code, o, err = run_in_process(args)
+                lines = err.splitlines()
+                named = (f"polygons: error: {target}", "polygons: error: no *.toml") \
+                    if cmd[0] == "gallery" else f"polygons: error: {target}"
+                if not (code == 1 and len(lines) == 1 and lines[0].startswith(named)
+                        and (o == "" or cmd[0] == "gallery")):
+                    failures.append(f"{what}: polygons {' '.join(map(str, args))} -> {code} "
+                                    f"{err[:200]!r}")
+        folder = tmp_path / "gallery"
+        folder.mkdir()
+        os.mkfifo(folder / "pipe.toml")
+        code, o, err = run_in_process(["gallery", folder, "-o", tmp_path / "g"])
+        if not (code == 1 and "FIFO" in err and err.count("\n") == 1):
+            failures.append(f"gallery with a FIFO inside -> {code} {err[:200]!r}")
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+    assert not failures, "\n".join(failures)
+
+
+OUTPUTS = [("solve", "-o"), ("solve", "--svg"), ("check", "-o"), ("forces", "-o"),
+           ("forces", "--svg"), ("handout", "-o"), ("draw", "-o"), ("sweep", "-o"),
+           ("centres", "-o"), ("gallery", "-o")]
+
+
+def test_fuzz_output_paths(tmp_path):
+    """Every output flag given the input file itself (by its path, a symbolic link, a hard
+    link, a './' spelling), a path under a regular file, /dev/full: exit 1 with one line, or
+    exit 0, and the input file unchanged, always."""
+    src = CASES / "s001-we8.toml"         # has masses, so forces has something to do
+    failures = []
+    for i, (command, flag) in enumerate(OUTPUTS):
+        work = tmp_path / f"w{i}"
+        work.mkdir()
+        path = work / "case.toml"
+        path.write_bytes(src.read_bytes())
+        (work / "link.toml").symlink_to(path)
+        os.link(path, work / "hard.toml")
+        targets = [path, work / "link.toml", work / "hard.toml", work / "." / "case.toml"]
+        if command in ("solve", "check", "forces"):
+            targets += [work / "case.toml" / "x.txt"] + (
+                [Path("/dev/full")] if Path("/dev/full").exists() and flag == "-o" else [])
+        for target in targets:
+            extra = ["--measured", "v_B=1"] if command == "check" else []
+            extra += ["--no-plot"] if command == "sweep" else []
+            args = [command, path, flag, target, *extra]
+            code, o, err = run_in_process(args)
+            lines = err.splitlines()
+            clean = code in (0, 3) and err == "" or (
+                code == 1 and len(lines) == 1 and lines[0].startswith("polygons: error: "))
+            if not clean or path.read_bytes() != src.read_bytes() or (
+                    target != work / "case.toml" / "x.txt" and target.name != "full"
+                    and code != 1):
+                failures.append(f"polygons {' '.join(map(str, args))} -> {code} {err[:200]!r}"
+                                f"{'' if path.read_bytes() == src.read_bytes() else ' INPUT LOST'}")
+    assert not failures, "\n".join(failures)
+
+
+API_VALUES = [None, True, 0, -1, 3, 24, 2.5, 1e300, -1e300, float("nan"), float("inf"), 5e-324,
+              -0.0, "", "abc", "0.1", b"\x00", [], [[]], [1, "a"], [[0.1, 0.2]], {"a": 1},
+              (0.1, 0.2), range(3), 10 ** 400, 1j, [0.1, float("nan")], object()]
+
+
+def _api_value(rng: random.Random):
+    r = rng.random()
+    if r < 0.55:
+        return rng.choice(API_VALUES)
+    if r < 0.85:             # a plausible column: a few numbers, sometimes hostile
+        k = rng.choice((1, 2, 5))
+        return [rng.choice([0.1, 0.05, 0.12, 1.0, 12.0, -12.0, 0.0, 1e300, float("nan")])
+                for _ in range(k)]
+    import numpy as np
+    return rng.choice([np.zeros(3, dtype=object), np.array(["a", "b"]), np.ones((2, 2)),
+                       np.array([True, False]), np.zeros(0), np.int8(3), np.float32(0.1)])
+
+
+def test_fuzz_the_python_api():
+    """Random arguments to polygons.load/solve/solve_many/sweep and a Result's methods: each
+    call returns (finite numbers in the rows it solved) or raises a PolygonsError whose
+    message is one line — never a ValueError, KeyError, AttributeError or TypeError."""
+    import numpy as np
+    from polygons.sweep import sweep
+    base = polygons_load(CASES / "s001-we4.toml")
+    four = polygons_load(CASES / "efficiency-four-bar.toml")
+    names = ["OA", "AB", "AC", "theta", "omega", "alpha", "O_x", "O_y", "s", "velocity",
+             "BC", "CD", "AB_x", "x y", ""]
+    failures = []
+    for i in range(150 * DEPTH):
+        rng = random.Random(SEED + 13 * i)
+        scene = rng.choice([base, four])
+        kind = rng.choice(["load", "solve", "many", "many", "many", "sweep", "sweep", "result"])
+        try:
+            if kind == "load":
+                polygons_api().load(_api_value(rng))
+            elif kind == "solve":
+                polygons_api().solve(scene, targets=_api_value(rng))
+            elif kind == "many":
+                cols = {rng.choice(names): _api_value(rng) for _ in range(rng.choice((1, 2)))}
+                b = polygons_api().solve_many(
+                    rng.choice([scene, scene, scene, _api_value(rng)]), cols,
+                    grid=rng.random() < 0.3,
+                    engine=rng.choice(["compiled", "compiled", "located", "x"]))
+                last = list(scene.links)[-1]
+                w = b.omega(last)[b.ok]
+                assert np.isfinite(w).all(), "non-finite ω in a row reported solved"
+                getattr(b, rng.choice(["position", "velocity", "acceleration", "omega",
+                                       "alpha"]))(rng.choice(names + ["B", _api_value(rng)]))
+            elif kind == "sweep":
+                kw = rng.choice([{"steps": _api_value(rng)}, {"inputs": _api_value(rng)},
+                                 {"chunk": _api_value(rng), "steps": 8}])
+                sw = sweep(scene, **kw)
+                assert sw.n <= 10_000_000
+                getattr(sw, rng.choice(["position", "velocity", "acceleration"]))(
+                    rng.choice(["B", "A", "Q", _api_value(rng)]))
+            else:
+                res = polygons_api().solve(scene)
+                getattr(res, rng.choice(["svg", "centres", "least_velocity"]))(
+                    _api_value(rng))
+        except polygons_error() as exc:
+            if "\n" in str(exc) or len(str(exc)) > 1200:
+                failures.append(f"api {i} ({kind}): a message of {len(str(exc))} chars")
+        except Exception as exc:          # noqa: BLE001 - the class under test
+            failures.append(f"api {i} ({kind}): {type(exc).__name__}: {str(exc)[:200]}")
+    assert not failures, "\n".join(failures[:20])
+
+
+def polygons_api():
+    import polygons
+    return polygons
+
+
+def polygons_load(path):
+    return polygons_api().load(path)
+
+
+def polygons_error():
+    from polygons.errors import PolygonsError
+    return PolygonsError
+
+
+def test_fuzz_large_valid_mechanisms(tmp_path):
+    """Large valid scenes (a crank and n RRR dyads, tests/chains.py, up to 61 links, sizes from
+    mm to m scale × 1e-3 … 1e3): solve --json and a sweep end in exit 0 with finite numbers;
+    with POLYGONS_FUZZ ≥ 2000 more sizes, and draw and check on those of up to 25 links."""
+    from chains import chain_scene
+    rng = random.Random(SEED)
+    sizes = [30] + [rng.randrange(5, 31) for _ in range(DEPTH - 1)]
+    for k, n in enumerate(sizes):
+        scale = rng.choice([1.0, 1e-3, 1e3]) if k else 1.0
+        path = tmp_path / f"chain{k}.toml"
+        path.write_text(chain_scene(n, scale=scale, wobble=rng.random() * 5 if k else 0.0),
+                        encoding="utf-8")
+        runs = [(["solve", path, "--json"], True),
+                (["sweep", path, "--steps", "24", "--no-plot", "--out", tmp_path / "sw"], False)]
+        if DEPTH >= 2 and n <= 12:      # (draw and check of 61 links take ~10 s each today)
+            runs += [(["draw", path, "-o", tmp_path / f"d{k}", "--no-stages"], False),
+                     (["check", path, "--measured", f"v_P{n}=1", "--json"], True)]
+        for args, json_out in runs:
+            code, out, err = run_in_process(args)
+            assert code in (0, 3), f"{n} dyads ×{scale}: polygons {args[0]} -> {code} {err!r}"
+            judge(code, out, err, path, args, json_out, f"chain of {n}")
+            if args[0] == "solve":
+                data = json.loads(out)
+                assert len(data["links"]) == 2 * n + 1
+                assert data["min_intersection_angle_deg"] > 10.0

@@ -15,7 +15,7 @@ LAYERS = ("base", "scene", "plan", "interpreters", "forces", "render", "commands
 #: module (or package prefix) → layer; the longest matching prefix wins
 WHERE = {
     "polygons.errors": "base", "polygons.units": "base", "polygons.schema": "base",
-    "polygons.theorems": "base", "polygons.steps": "base",
+    "polygons.theorems": "base", "polygons.steps": "base", "polygons.memo": "base", "polygons.notation": "base",
     "polygons.scene": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
@@ -33,6 +33,7 @@ WHERE = {
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
+    "polygons.kennedy": "interpreters",
     "polygons.streams": "interpreters",
     "polygons.forces": "forces",
     "polygons.report": "render", "diagrams": "render",

@@ -83,8 +83,13 @@ def ref_eight_bar():
                      "BC": ("B", "C")})
 
 
+def ref_plate_distances():
+    """The same mechanism as triad-ternary-coupler, dimensioned as a drawing is."""
+    return ref_ternary_coupler()
+
+
 REFS = {"triad-ternary-coupler": ref_ternary_coupler, "triad-plate-point": ref_plate_point,
-        "triad-eight-bar": ref_eight_bar}
+        "triad-eight-bar": ref_eight_bar, "triad-plate-distances": ref_plate_distances}
 
 
 @pytest.mark.parametrize("case", sorted(REFS))

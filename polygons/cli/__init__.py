@@ -50,6 +50,18 @@ def build_parser(command: str | None = None) -> argparse.ArgumentParser:
     return parser
 
 
+_PARSERS: dict = {}
+
+
+def _parser(command: str | None) -> argparse.ArgumentParser:
+    """:func:`build_parser`, built once per command in a process (a parser is not changed by
+    parsing; building one costs ~10 ms of argparse and gettext, more than many a solve)."""
+    parser = _PARSERS.get(command)
+    if parser is None:
+        parser = _PARSERS[command] = build_parser(command)
+    return parser
+
+
 def _command_of(argv: list[str]) -> str | None:
     for arg in argv:
         if not arg.startswith("-"):
@@ -76,7 +88,7 @@ def main(argv=None) -> int:
     may reach stderr but the one line.
     """
     argv = list(sys.argv[1:] if argv is None else argv)
-    parser = build_parser(_command_of(argv))
+    parser = _parser(_command_of(argv))
     args = parser.parse_args(argv)
     from ..errors import PolygonsError
     import warnings
@@ -85,7 +97,11 @@ def main(argv=None) -> int:
             warnings.simplefilter("error")
             # a character missing from the plot font (a CJK title) is drawn as a box: cosmetic
             warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from font")
-            return int(args.func(args) or 0)
+            from ._output import refuse_overwriting_input
+            refuse_overwriting_input(args)       # the input file is never written over
+            func = args.func     # looked up again: the parser is reused, a test may patch it
+            func = getattr(sys.modules.get(func.__module__), func.__name__, func)
+            return int(func(args) or 0)
     except PolygonsError as exc:
         scene = getattr(args, "scene", None)
         if not exc.file and isinstance(scene, str):

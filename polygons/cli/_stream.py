@@ -76,7 +76,7 @@ def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> in
         toggles = [lim for lim in st.limits if lim.kind == "toggle"]
         sw = replace(sw, full_cycle=st.full_cycle, range=st.range, limits=st.limits,
                      segments=_segments(xs, toggles, st.full_cycle))
-        formats = [f.strip() for f in args.formats.split(",") if f.strip()]
+        formats = list(args.formats)
         written += plot(sw, points, links, {}, opt["unit"], stem, formats)
     sys.stdout.write(_summary(st, ext, points, links, opt["unit"], units, written, k_plot=(
         max(1, math.ceil(n / PLOT_POINTS)) if not args.no_plot else None)))

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..batch import MAX_ROWS
 from ..errors import PolygonsError
 from ..scene import Crank, Scene
 from ..units import parse_quantity
@@ -29,7 +30,7 @@ _RANGE = re.compile(r"^\s*([^.]+?)\s*\.\.\s*(.+?)\s*:\s*(\d+)\s*$")
 
 def parse_vary(spec: str, scene: Scene) -> tuple[str, np.ndarray]:
     """``'AB=40..60mm:5'`` → ('AB', array of 5 lengths in m)."""
-    where = f"--vary {spec}"
+    where = f"--vary {spec if len(spec) <= 60 else spec[:59] + '…'}"
     name, eq, rest = spec.partition("=")
     name = name.strip()
     if not eq or not name or not rest.strip():
@@ -38,7 +39,13 @@ def parse_vary(spec: str, scene: Scene) -> tuple[str, np.ndarray]:
     dim = _DIMENSION.get(name, "length")
     m = _RANGE.match(rest)
     if m:
-        lo, hi, count = m.group(1), m.group(2), int(m.group(3))
+        lo, hi, digits = m.group(1), m.group(2), m.group(3).lstrip("0") or "0"
+        count = int(digits) if len(digits) <= 12 else MAX_ROWS + 1
+        if count > MAX_ROWS:
+            raise PolygonsError(f"{digits[:15]}{'…' if len(digits) > 15 else ''} values: "
+                                f"a --vary gives at most {MAX_ROWS:,} (and with --grid, all "
+                                f"combinations together at most that)", file=scene.file,
+                                where=where)
         unit = re.sub(r"^[-+0-9.eE\s]+", "", hi)
         lo_v = _value(lo if re.search(r"[a-zA-Z/]", lo) else f"{lo} {unit}", dim, scene, where)
         hi_v = _value(hi, dim, scene, where)
@@ -67,13 +74,14 @@ def run_vary(args, scene: Scene) -> int:
     b = solve_many(scene, values, grid=args.grid)
     drv = scene.driver
     if args.points:
-        points = [p.strip() for p in args.points.split(",") if p.strip()]
+        points = list(dict.fromkeys(p.strip() for p in args.points.split(",") if p.strip()))
     else:
         sliders = [s for s in scene.model.guide
                    if isinstance(drv, Crank) or s != getattr(drv, "point", None)]
         points = sliders or [b.plan.dyads[-1].placed[-1]]
     crank = drv.link if isinstance(drv, Crank) else None
-    links = ([p.strip() for p in args.links.split(",") if p.strip()] if args.links else
+    links = (list(dict.fromkeys(p.strip() for p in args.links.split(",") if p.strip()))
+             if args.links else
              [name for name in b._links[0] if name != crank])
     cols = [("row", "", np.arange(b.n))]
     cols += [(name, _unit_of(name), b.inputs[name]) for name in values]

@@ -18,6 +18,9 @@ def register(sub) -> None:
     p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
     p.add_argument("--points", help="comma-separated labels whose velocities to report "
                                     "(default: every point)")
+    p.add_argument("--units", choices=("mm", "si", "imperial"), default="mm",
+                   help="units of the table: mm (positions in mm, speeds in m/s; default), "
+                        "si (m, m/s) or imperial (in, ft/s); JSON is always SI")
     p.add_argument("-o", "--out", metavar="DIR", help="write centres.svg to this folder")
     p.add_argument("--paper", choices=("A5", "A4"), help="paper for the drawing (default A4)")
     p.set_defaults(func=run)
@@ -51,7 +54,7 @@ def run(args) -> int:
         sys.stdout.write(json_text(to_json(sol, cs) | ({"pins": to_dict(sol)}
                                                         if to_dict(sol) else {})))
     else:
-        sys.stdout.write(table(sol, cs) + "".join(
+        sys.stdout.write(table(sol, cs, args.units) + "".join(
             ln + "\n" for ln in (["", *report_lines(sol)] if report_lines(sol) else [])))
         if args.out:
             sys.stdout.write(f"wrote {args.out}/centres.svg\n")
@@ -63,19 +66,23 @@ def to_json(sol, cs) -> dict:
         "scene": sol.scene.file,
         "units": {"length": "m", "velocity": "m/s", "omega": "rad/s (CCW positive)",
                   "direction": "unit vector of a centre at infinity (no sense)"},
+        "note": cs.note,
+        "complete": cs.complete,
         "links": [{"number": b.number, "name": b.name, "kind": b.kind, "labels": list(b.labels)}
                   for b in cs.bodies],
         "centres": [{"label": c.label, "i": c.i, "j": c.j, "names": list(c.names),
                      "point": list(c.point) if c.point is not None else None,
                      "direction": list(c.direction) if c.direction is not None else None,
                      "how": c.how, "primary": c.primary, "order": c.order,
+                     "from_velocity_field": c.by_field,
                      "lines": [list(x) for x in c.lines], "angle_deg": c.angle_deg}
                     for c in cs.centres],
         "omegas": [{"number": o.number, "name": o.name, "omega": o.omega,
                     "velocity": list(o.velocity) if o.velocity is not None else None,
-                    "how": o.how} for o in cs.omegas],
+                    "how": o.how, "rule": o.rule, "via": o.via, "speed": o.speed,
+                    "radius": o.radius} for o in cs.omegas],
         "velocities": {x: {"link": v.number, "velocity": list(v.velocity), "speed": v.speed,
-                           "radius": v.radius, "how": v.how}
+                           "radius": v.radius, "omega": v.omega, "how": v.how}
                        for x, v in cs.velocities.items()},
     }
 
@@ -84,29 +91,62 @@ def _g(x: float) -> str:
     return "0" if x == 0 else f"{x:.5g}"
 
 
-def table(sol, cs) -> str:
+def table(sol, cs, units: str = "mm") -> str:
+    """The centres, the ω of each link and each point's velocity as a book writes it
+    (v_C = ω₃ · I₁₃C = ω × distance), in the unit system ``units`` (mm, si, imperial)."""
+    from ..centres import pair_name, sub
+    from ..units import SYSTEMS, UNITS
+    lu, vu = SYSTEMS[units]["length"], SYSTEMS[units]["velocity"]
+    lf, vf = 1.0 / UNITS[lu][1], 1.0 / UNITS[vu][1]
     scene = sol.scene
     size = cs.size
+    names = {b.number: b.name for b in cs.bodies}
     lines = [scene.title, f"  scene: {scene.file}", "",
              "links: " + ", ".join(f"{b.number} {b.name}" for b in cs.bodies), "",
-             f"{'centre':<7} {'links':<22} {'x mm':>10} {'y mm':>10}   how"]
+             cs.note, "",
+             f"{'centre':<7} {'links':<22} {'x ' + lu:>10} {'y ' + lu:>10}   how"]
 
-    def mm(x):
-        return _g(0.0 if abs(x) < 1e-9 * size else x * 1000)
+    def ln(x):
+        return _g(0.0 if abs(x) < 1e-9 * size else x * lf)
 
     for c in cs.centres:
         if c.point is not None:
-            x, y = mm(c.point[0]), mm(c.point[1])
-        else:
+            x, y = ln(c.point[0]), ln(c.point[1])
+        elif c.direction is not None:
             ang = round(math.degrees(math.atan2(c.direction[1], c.direction[0])), 6) + 0.0
             x, y = "∞", f"∞ {_g(ang)}°"
+        else:
+            x, y = "any", "any"
         lines.append(f"{c.label:<7} {c.names[0] + ' / ' + c.names[1]:<22} {x:>10} {y:>10}   "
                      f"{c.how}")
     lines += ["", "angular velocities by the centres:"]
     for o in cs.omegas[1:]:
         sense = "" if o.omega == 0 else ("CCW" if o.omega > 0 else "CW")
-        lines.append(f"  ω{o.number} ({o.name}) = {_g(abs(o.omega))} rad/s {sense}   [{o.how}]")
-    lines += ["", "velocities by the centres (v = ω × I1j X):"]
+        head = f"  ω{sub(o.number)} ({o.name}) = {_g(abs(o.omega))} rad/s {sense}".rstrip()
+        j, i = o.number, o.via
+        if o.rule == "ratio":
+            ij = sub(pair_name(min(i, j), max(i, j)))
+            lines.append(f"{head}   [ω{sub(j)} = v_I{ij} / I{sub(pair_name(1, j))}I{ij} = "
+                         f"{_g(o.speed * vf)} {vu} / {_g(o.radius * lf)} {lu}; v_I{ij} from "
+                         f"link {i} ({names[i]})]")
+        elif o.rule == "translates":
+            ij = sub(pair_name(min(i, j), max(i, j)))
+            lines.append(f"{head}   [I{sub(pair_name(1, j))} at infinity: {o.name} translates "
+                         f"with v_I{ij} = {_g(o.speed * vf)} {vu}]")
+        elif o.rule == "given" and o.speed is not None:
+            lines.append(f"{head}   [given: the driver translates at {_g(o.speed * vf)} {vu}]")
+        else:
+            lines.append(f"{head}   [{o.how}]")
+    lines += ["", f"velocities by the centres (v = ω × distance from the link's centre I1j):"]
     for x, v in cs.velocities.items():
-        lines.append(f"  v_{x} = {_g(v.speed)} m/s   [{v.how}]")
+        j = v.number
+        if j == 1:
+            lines.append(f"  v_{x} = 0   (a fixed point)")
+        elif v.radius is None:
+            lines.append(f"  v_{x} = v{sub(j)} = {_g(v.speed * vf)} {vu}   ({names[j]} "
+                         f"translates: I{sub(pair_name(1, j))} at infinity)")
+        else:
+            lines.append(f"  v_{x} = ω{sub(j)} · I{sub(pair_name(1, j))}{x} = "
+                         f"{_g(abs(v.omega))} rad/s × {_g(v.radius * lf)} {lu} = "
+                         f"{_g(v.speed * vf)} {vu}   (on {names[j]})")
     return "\n".join(lines) + "\n"

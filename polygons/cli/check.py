@@ -35,6 +35,7 @@ from dataclasses import dataclass
 from ..errors import UnsupportedError, PolygonsError, SceneError
 from ..evaluate import Solution, link_ends, solve
 from ..plan import Step
+from ..notation import vertices_in
 from ..quantities import dimension_of_quantity, quantity
 from ..scene import load_scene
 from ..units import parse_quantity
@@ -320,7 +321,7 @@ def describe_step(sol: Solution, step: Step) -> str:
                 k = stage_number(sol, drawn)
                 text += (f" The line it is read from ends at {drawn.end}, fixed in step "
                          f"{drawn.number}" + (f" (stage {k})" if k else "") + ".")
-    return text
+    return vertices_in(text, sol.vertices[step.diagram])     # p4_1 → p₄′, as printed
 
 
 # ---------------------------------------------------------------- grading

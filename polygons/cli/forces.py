@@ -14,7 +14,7 @@ from ..forces import (Analysis, State, analyse, check_force_answers, has_forces,
                       spring_state)
 from ..forces import effort, machine
 from ..forces.model import position, unit_r
-from ..report import json_text
+from ..report import json_text, undefined_note
 from . import _graphical
 from ._output import add_out_option, emit
 from ..scene import Crank, load_scene
@@ -362,6 +362,7 @@ def forces_table(an: Analysis, header: bool = True) -> str:
                 continue
             note = "SLIP in the tutorial (see reference)" if a.slip else (
                 "within drawing tolerance" if c.within else f"outside ±{a.tolerance * 100:g}%")
+            note += undefined_note(a.tutorial, c.diff_pct)
             state = f" [{a.state}]" if a.state else ""
             desc = (a.desc + state)[:40]
             diff = f"{c.diff_pct:>8.2f}" if c.diff_pct is not None else f"{'-':>8}"

@@ -8,6 +8,9 @@ that cannot be solved is listed with its one-line error; the command then exits 
 """
 from __future__ import annotations
 
+import hashlib
+import html
+import re
 import sys
 from pathlib import Path
 
@@ -68,26 +71,27 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
                     written.append(print_pdf(target, target.with_suffix(".pdf")))
                     pages[kind + "-pdf"] = target.with_suffix(".pdf").name
         except PolygonsError as exc:
-            errors.append(f"{path}: {exc}")
-            rows.append(f'<article class="card failed" id="case-{esc(stem)}"><h2>'
+            errors.append(str(exc) if exc.file else f"{path}: {exc}")
+            rows.append(f'<article class="card failed" id="case-{_anchor(stem)}"><h2>'
                         f'<span class="id">{esc(stem)}</span></h2><p>could not be solved: '
                         f"{esc(str(exc))}</p></article>")
             continue
         src = sol.scene.source
-        links = [f'<a href="{esc(pages["handout"])}">handout</a>',
-                 f'<a href="{esc(pages["worksheet"])}">worksheet</a>']
+        links = [f'<a href="{_href(pages["handout"])}">handout</a>',
+                 f'<a href="{_href(pages["worksheet"])}">worksheet</a>']
         if pdf:
-            links += [f'<a href="{esc(pages["handout-pdf"])}">PDF</a>',
-                      f'<a href="{esc(pages["worksheet-pdf"])}">worksheet PDF</a>']
+            links += [f'<a href="{_href(pages["handout-pdf"])}">PDF</a>',
+                      f'<a href="{_href(pages["worksheet-pdf"])}">worksheet PDF</a>']
         tags = (" <em>(synthetic geometry)</em>" if src.get("synthetic")
                 and "SYNTHETIC" not in sol.scene.title.upper() else "")
         ident = src.get("id", stem)
         if ids.count(ident) > 1:
             ident = f"{ident} ({stem})"
-        rows.append(f'<article class="card" id="case-{esc(stem)}">'
-                    f'<a class="thumb" href="{esc(pages["handout"])}">{_thumbnail(figs, stem)}</a>'
+        rows.append(f'<article class="card" id="case-{_anchor(stem)}">'
+                    f'<a class="thumb" href="{_href(pages["handout"])}">'
+                    f'{_thumbnail(figs, stem)}</a>'
                     f'<h2><span class="id">{esc(ident)}</span> '
-                    f'<a href="{esc(pages["handout"])}">{esc(sol.scene.title)}</a>{tags}</h2>'
+                    f'<a href="{_href(pages["handout"])}">{esc(sol.scene.title)}</a>{tags}</h2>'
                     f'<p class="mech">{esc(_mechanism(sol))}</p>'
                     f'<p class="answers">{esc(_summary(sol))}</p>'
                     f'<p class="links">{" · ".join(links)}</p></article>')
@@ -98,13 +102,31 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
 
 
 def _source_id(path: Path) -> str:
-    """The ``[source] id`` of a scene file read without solving it ('' when absent)."""
-    import tomllib
+    """The ``[source] id`` of a scene file read without solving it (its stem when absent);
+    read as every scene is (a FIFO or a device in the folder is refused, never waited on)."""
+    from ..scene import parse_toml, read_scene_text
     try:
-        with open(path, "rb") as fh:
-            return str(tomllib.load(fh).get("source", {}).get("id", path.stem))
-    except (OSError, ValueError):
+        source = parse_toml(read_scene_text(path), str(path)).get("source", {})
+        return str(source.get("id", path.stem)) if isinstance(source, dict) else path.stem
+    except PolygonsError:
         return path.stem
+
+
+def _href(name: str) -> str:
+    """A link to a file written beside the index: relative ('./'), every character of the
+    name that is not safe in a URL percent-encoded (a case named 'javascript:x.toml' links to
+    './javascript%3Ax.html', never runs), then escaped for the attribute."""
+    from urllib.parse import quote
+    return html.escape("./" + quote(name, safe=""), quote=True)
+
+
+def _anchor(stem: str) -> str:
+    """An id token for a case: letters, digits, '-' and '_' only (anything else becomes '-'),
+    with a short digest of the name so that two names that read alike stay apart."""
+    token = re.sub(r"[^A-Za-z0-9_-]", "-", stem)[:60]
+    if token != stem:
+        token += "-" + hashlib.sha1(stem.encode("utf-8", "surrogatepass")).hexdigest()[:8]
+    return token
 
 
 def _mechanism(sol) -> str:
@@ -131,7 +153,7 @@ def _thumbnail(figs, stem: str) -> str:
     if d is None:
         return ""
     t = trimmed(d, ("heading", "caption", "key", "legend", "scale-bar"))
-    return inline_svg(to_svg(t), f"thumb-{stem}", "thumb", 70.0,
+    return inline_svg(to_svg(t), f"thumb-{_anchor(stem)}", "thumb", 70.0,
                       f"Space diagram of {stem}")
 
 

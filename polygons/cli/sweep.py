@@ -20,8 +20,9 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import SceneError, UnknownLabelError, suggest
-from ..options import labels
+from ..options import MAX_STEPS, labels
 from ..scene import Crank, Scene, load_scene
+from ..steps import number
 from ..sweep import Sweep, harmonic, sweep
 
 #: above this many positions the summary draws a progress bar (on a terminal)
@@ -30,6 +31,24 @@ PROGRESS_FROM = 100_000
 STREAM_FROM = 1_000_000
 #: most points drawn per curve (the maxima are always taken from every position)
 PLOT_POINTS = 4000
+#: the formats a plot can be written in (--formats)
+PLOT_FORMATS = ("png", "svg", "pdf")
+#: the longest scene title a plot shows (cut with an ellipsis beyond)
+PLOT_TITLE = 120
+#: most curves named in one panel's key (a large mechanism has dozens of links)
+PLOT_KEYED = 8
+
+
+def _formats(text: str) -> tuple[str, ...]:
+    """--formats: a comma-separated list of PLOT_FORMATS, refused by the parser."""
+    import argparse
+    formats = tuple(dict.fromkeys(f.strip().lower() for f in text.split(",") if f.strip()))
+    bad = [f for f in formats if f not in PLOT_FORMATS]
+    if bad or not formats:
+        head = f"unknown plot format {bad[0][:40]!r}" if bad else "no plot format"
+        raise argparse.ArgumentTypeError(f"{head}: choose from {', '.join(PLOT_FORMATS)} "
+                                         f"(comma-separated)")
+    return formats
 
 
 def register(sub) -> None:
@@ -40,14 +59,17 @@ def register(sub) -> None:
                                    "acceleration of chosen points and ω/α of chosen links.")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--steps", type=int, default=None,
-                   help="positions over the cycle (default: [sweep] steps or 360)")
+                   help=f"positions over the cycle, 2 .. {MAX_STEPS:,} (default: [sweep] steps "
+                        f"or 360)")
     p.add_argument("--points", help="comma-separated point labels to plot (default: [sweep] "
                                     "points, else the sliders, else the last point placed)")
     p.add_argument("--links", help="comma-separated link names for ω/α (default: [sweep] "
                                    "links, else every link but the crank)")
     p.add_argument("-o", "--out", default="out", metavar="DIR",
                    help="output directory (default: out)")
-    p.add_argument("--formats", default="png,svg", help="plot formats (default: png,svg)")
+    p.add_argument("--formats", type=_formats, default=("png", "svg"),
+                   help=f"plot formats, comma-separated: {', '.join(PLOT_FORMATS)} "
+                        f"(default: png,svg)")
     p.add_argument("--no-plot", action="store_true", help="write the CSV only")
     p.add_argument("--shm", action="store_true", default=None,
                    help="overlay the simple-harmonic curve on each slider (crank pin "
@@ -74,10 +96,13 @@ def _options(scene: Scene, args) -> dict:
         else (list(sw.points) if sw.points is not None else None)
     links = list(labels(args.links, file=scene.file, where="--links")) if args.links \
         else (list(sw.links) if sw.links is not None else None)
+    # each label once (a repeat would add columns and curves, never information)
+    points = list(dict.fromkeys(points)) if points is not None else None
+    links = list(dict.fromkeys(links)) if links is not None else None
     steps = args.steps if args.steps is not None else (sw.steps or 360)
-    if steps < 2:
-        raise SceneError(f"steps must be a whole number ≥ 2, got {steps!r}", file=scene.file,
-                         where="--steps")
+    if not 2 <= steps <= MAX_STEPS:      # the scene's [sweep] steps bound, before any work
+        raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
+                         f"{steps:,}", file=scene.file, where="--steps")
     shm = args.shm if args.shm is not None else bool(sw.shm)
     unit = args.unit or sw.unit
     if unit is None:
@@ -86,14 +111,27 @@ def _options(scene: Scene, args) -> dict:
 
 
 def _default_points(sw: Sweep) -> list[str]:
+    """The points a user asks about: those the scene's ``[[answers]]`` name (moving points
+    only, in the order asked); else the sliders; else the last point placed — never a lever
+    point under a pin (P4 under P2) unless it is asked for."""
     scene = sw.scene
     drv = scene.driver
+    asked = []
+    for ans in scene.answers:
+        if ans.q is None or ans.q.fn in ("omega", "alpha", "angle", "arm", "dist"):
+            continue
+        for lab in ans.q.args:
+            if lab in sw.pos and lab not in scene.ground and lab not in asked:
+                asked.append(lab)
+    if asked:
+        return asked
     sliders = [s for s in scene.model.guide if s in sw.travel
                and not (not isinstance(drv, Crank) and s == drv.point)]
     if sliders:
         return sliders
-    last = sw.plan.dyads[-1].placed
-    return [last[-1]]
+    under = set(scene.model.under)                  # lever points under a pin (P4)
+    placed = [lab for d in sw.plan.dyads for lab in d.placed if lab not in under]
+    return [placed[-1]] if placed else [sw.plan.dyads[-1].placed[-1]]
 
 
 def _default_links(sw: Sweep) -> list[str]:
@@ -104,6 +142,9 @@ def _default_links(sw: Sweep) -> list[str]:
 
 def run(args) -> int:
     scene = load_scene(args.scene)
+    if args.steps is not None and not 2 <= args.steps <= MAX_STEPS:    # checked with --vary too
+        raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
+                         f"{args.steps:,}", file=scene.file, where="--steps")
     if args.vary:
         from ._vary import run_vary
         return run_vary(args, scene)
@@ -145,8 +186,7 @@ def run(args) -> int:
     stem = out / f"{Path(args.scene).stem}-sweep"
     written = [write_csv(sw, points, links, stem.with_suffix(".csv"))]
     if not args.no_plot:
-        formats = [f.strip() for f in args.formats.split(",") if f.strip()]
-        written += plot(sw, points, links, shm, opt["unit"], stem, formats)
+        written += plot(sw, points, links, shm, opt["unit"], stem, list(args.formats))
     sys.stdout.write(summary(sw, points, links, shm, opt["unit"], written))
     return 0
 
@@ -211,17 +251,13 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
     colors = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink"]
     disp, vel, acc = Panel(f"displacement ({lu})", zero_line=False), Panel(f"velocity ({vu})"), \
         Panel(f"acceleration ({au})")
+    here, x0 = _at_scene(sw)
     for i, lab in enumerate(points):
         c = colors[i % len(colors)]
-        if lab in sw.travel and lab in sw.slide_v:
-            series = [(f"{lab} along its guide", sw.travel[lab], sw.slide_v[lab],
-                       sw.slide_a[lab], "-")]
-        else:
-            P, V, A = sw.position(lab), sw.velocity(lab), sw.acceleration(lab)
-            series = [(f"{lab} x", P[:, 0], V[:, 0], A[:, 0], "-"),
-                      (f"{lab} y", P[:, 1], V[:, 1], A[:, 1], "--")]
-        for name, s, v, a, style in series:
+        for (name, s, v, a, style), mark in zip(_series(sw, lab), _series(here, lab)):
             _add(disp, vel, acc, sw, x, name, s * f, v * f, a * f, style, c)
+            for panel, y in zip((disp, vel, acc), mark[1:4]):   # the scene's own position
+                panel.lines.append(Line("", [x0], [float(y[0]) * f], "none", c, marker="o"))
         if lab in shm:
             h = shm[lab]
             _add(disp, vel, acc, sw, x, f"{lab} simple harmonic (pin {h.pin} projected)",
@@ -239,8 +275,20 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
                                      sw.omega[name][sl][d], "-", c))
                 al.lines.append(Line(f"α {name}" if first else "", x[sl][d],
                                      sw.alpha[name][sl][d], "-", c))
+            om.lines.append(Line("", [x0], [float(here.omega[name][0])], "none", c,
+                                 marker="o"))
+            al.lines.append(Line("", [x0], [float(here.alpha[name][0])], "none", c,
+                                 marker="o"))
         panels += [om, al]
-    markers = []
+    for panel in panels:          # a key of dozens of curves cannot fit the figure
+        keyed = [ln for ln in panel.lines if ln.label]
+        if len(keyed) > PLOT_KEYED:
+            for ln in keyed[PLOT_KEYED:]:
+                ln.label = ""
+            panel.title = f"key: the first {PLOT_KEYED} of {len(keyed)} curves"
+    where = (f"θ = {number(x0)}°" if sw.input_kind == "crank"
+             else f"s = {number(x0)} mm")
+    markers = [Marker(x0, f"scene: {where} (dots)", "0.35")]
     for lim in sw.limits:
         if lim.kind in ("limit", "toggle", "near-toggle"):
             xm = math.degrees(lim.input) if sw.input_kind == "crank" else lim.input * 1e3
@@ -257,13 +305,42 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
     drv = sw.scene.driver
     rate = (f"ω = {abs(drv.omega):.4g} rad/s {'CCW' if drv.omega > 0 else 'CW'}"
             if isinstance(drv, Crank) else f"v = {drv.velocity:.4g} m/s")
-    title = f"{sw.scene.title}\n{rate}, {sw.n} positions"
+    title = f"{plot_title(sw.scene.title)}\n{rate}, {sw.n} positions"
     if not sw.full_cycle:
         title += " (reachable range)"
     cw = isinstance(drv, Crank) and drv.omega < 0     # the axis in the crank's sense of rotation
     if cw:
         xlabel += "; axis reversed: the crank turns CW, time runs left to right"
     return plot_panels(title, xlabel, panels, stem, formats, markers, xlim, xticks, reverse_x=cw)
+
+
+def _series(sw: Sweep, lab: str):
+    """(name, s, v, a, line style) of the curves drawn for point ``lab``."""
+    if lab in sw.travel and lab in sw.slide_v:
+        return [(f"{lab} along its guide", sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab],
+                 "-")]
+    P, V, A = sw.position(lab), sw.velocity(lab), sw.acceleration(lab)
+    return [(f"{lab} x", P[:, 0], V[:, 0], A[:, 0], "-"),
+            (f"{lab} y", P[:, 1], V[:, 1], A[:, 1], "--")]
+
+
+def _at_scene(sw: Sweep):
+    """The sweep solved at the scene's own input (its branch), and that input on the x axis:
+    the dots on every curve where the drawings and ``solve`` stand."""
+    drv = sw.scene.driver
+    x0 = drv.angle if sw.input_kind == "crank" else drv.position
+    here = sweep(sw.scene, inputs=[x0])
+    if sw.input_kind == "crank":
+        deg = math.degrees(x0)
+        return here, (deg % 360.0 if sw.full_cycle else deg)
+    return here, x0 * 1e3
+
+
+def plot_title(title: str) -> str:
+    """A scene title as a plot shows it: one line, at most PLOT_TITLE characters (a longer one
+    cannot fit the figure)."""
+    text = " ".join(str(title).split())
+    return text if len(text) <= PLOT_TITLE else text[:PLOT_TITLE - 1] + "…"
 
 
 def _add(disp, vel, acc, sw, x, name, s, v, a, style, color):
@@ -331,18 +408,18 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
             s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
             e = scene.model.guide[lab].line.angle
             out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
-                       f"{np.nanmin(s) * f:.6g} … {np.nanmax(s) * f:.6g} {lu} "
-                       f"(stroke {(np.nanmax(s) - np.nanmin(s)) * f:.6g} {lu})")
+                       f"{number(np.nanmin(s) * f)} … {number(np.nanmax(s) * f)} {lu} "
+                       f"(stroke {number((np.nanmax(s) - np.nanmin(s)) * f)} {lu})")
             iv, ia = int(np.nanargmax(np.abs(v))), int(np.nanargmax(np.abs(a)))
-            out.append(f"  max |v| = {abs(v[iv]) * f:.10g} {vu} at {_at(sw, iv)}")
-            out.append(f"  max |a| = {abs(a[ia]) * f:.16g} {au} at {_at(sw, ia)}")
+            out.append(f"  max |v| = {number(abs(v[iv]) * f)} {vu} at {_at(sw, iv)}")
+            out.append(f"  max |a| = {number(abs(a[ia]) * f)} {au} at {_at(sw, ia)}")
         else:
             V, A = sw.velocity(lab), sw.acceleration(lab)
             vm, am = np.hypot(V[:, 0], V[:, 1]), np.hypot(A[:, 0], A[:, 1])
             iv, ia = int(np.nanargmax(vm)), int(np.nanargmax(am))
             out.append(f"point {lab}:")
-            out.append(f"  max |v| = {vm[iv] * f:.10g} {vu} at {_at(sw, iv)}")
-            out.append(f"  max |a| = {am[ia] * f:.16g} {au} at {_at(sw, ia)}")
+            out.append(f"  max |v| = {number(vm[iv] * f)} {vu} at {_at(sw, iv)}")
+            out.append(f"  max |a| = {number(am[ia] * f)} {au} at {_at(sw, ia)}")
         if lab in shm:
             h = shm[lab]
             a = sw.slide_a[lab]
@@ -353,16 +430,16 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
             dv = float(np.nanmax(np.abs(sw.slide_v[lab] - h.velocity)))
             ds = float(np.nanmax(np.abs(sw.travel[lab] - h.travel)))
             out.append(f"  simple harmonic (crank pin {h.pin} projected on the guide): max |a| "
-                       f"= {hmax * f:.10g} {au}")
-            out.append(f"  difference from SHM: max |Δa| = {abs(d[idd]) * f:.6g} {au} at "
+                       f"= {number(hmax * f)} {au}")
+            out.append(f"  difference from SHM: max |Δa| = {number(abs(d[idd]) * f)} {au} at "
                        f"{_at(sw, idd)} ({abs(d[idd]) / amax * 100 if amax else 0:.3g} % of "
-                       f"max |a|), max |Δv| = {dv * f:.6g} {vu}, max |Δs| = {ds * f:.6g} {lu} "
-                       f"(travel offset {h.offset * f:.6g} {lu})")
+                       f"max |a|), max |Δv| = {number(dv * f)} {vu}, max |Δs| = "
+                       f"{number(ds * f)} {lu} (travel offset {number(h.offset * f)} {lu})")
     for name in links:
         w, al = sw.omega[name], sw.alpha[name]
         iw, ia = int(np.nanargmax(np.abs(w))), int(np.nanargmax(np.abs(al)))
-        out.append(f"link {name}: max |ω| = {abs(w[iw]):.6g} rad/s at {_at(sw, iw)}; "
-                   f"max |α| = {abs(al[ia]):.6g} rad/s² at {_at(sw, ia)}")
+        out.append(f"link {name}: max |ω| = {number(abs(w[iw]))} rad/s at {_at(sw, iw)}; "
+                   f"max |α| = {number(abs(al[ia]))} rad/s² at {_at(sw, ia)}")
     out.append("")
     out.append("written: " + ", ".join(str(p) for p in written))
     return "\n".join(out) + "\n"

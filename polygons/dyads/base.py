@@ -22,6 +22,7 @@ import math
 import numpy as np
 
 from ..theorems import perp
+from ..memo import memo_of
 from .triad_math import triad_cols, triad_scalar
 
 #: a closure discriminant within this fraction of the squared size is a double closure
@@ -183,7 +184,7 @@ def size_of(scene) -> float:
     """The mechanism's size: its longest link or ground coordinate (for relative tolerances;
     over every row when a batch gives the lengths or coordinates as arrays).  Kept with the
     scene (a frozen record) after the first call."""
-    memo = getattr(scene, "__dict__", {})
+    memo = memo_of(scene)
     if "_size" in memo:
         return memo["_size"]
 

@@ -52,11 +52,6 @@ class CrankDyad:
     def why_not(self, scene, pos) -> str:
         return ""
 
-    def circle_bodies(self, scene):
-        """The bodies of the circle diagram this dyad brings in: (name, 'link'|'slider'|
-        'lever'), for the instant centres; None where they are not modelled."""
-        return ((self.link, "link"),)
-
     def toggle_reason(self, scene, pos) -> str:
         return self.why_not(scene, pos)
 

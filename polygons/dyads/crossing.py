@@ -122,7 +122,7 @@ class Crossing:
                 f"(a_{X})_{U}^slide", f"(a_{X})_{U} ∥ {A}{Q}",
                 f"Through {k} draw a line parallel to the slot of {lev}: the sliding "
                 f"acceleration of {X} relative to {U} lies on it.",
-                component=C.CONSTRUCTION, relative=(X, U)))
+                component=C.SLIDING, relative=(X, U)))
         what = "velocity" if b.velocity else "acceleration"
         b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection",
               f"{b.q}_{X}", f"{x} = intersection of the two slot lines",

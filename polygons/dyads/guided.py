@@ -118,11 +118,11 @@ class Guided:
             n1 = b.add(Kind.LINE, Op.LINE_SLIDE, (X,), f"slot line ∥ {B}{Q}", x1, None,
                        "sliding", f"(v_{X})_{X1}", f"(v_{X})_{X1} ∥ {B}{Q}",
                        f"Through {x1} draw a line parallel to the slot of {lev}: the velocity "
-                       f"of {X} sliding relative to {X1}.", component=C.CONSTRUCTION)
+                       f"of {X} sliding relative to {X1}.", component=C.SLIDING)
             n2 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", p, None,
                        "relative_velocity", f"(v_{X})_{P}", f"(v_{X})_{P} ⟂ {P}{X}",
                        f"Through {p} draw a line perpendicular to {P}{X}: the velocity of {X} "
-                       f"relative to {P}, of unknown length.", component=C.CONSTRUCTION,
+                       f"relative to {P}, of unknown length.", component=C.RELATIVE,
                        link=L)
             b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
                   f"{x} = intersection of the two lines",
@@ -147,7 +147,7 @@ class Guided:
         n1 = b.add(Kind.LINE, Op.LINE_SLIDE, (X,), f"slot line ∥ {B}{Q}", k1, None, "sliding",
                    f"(a_{X})_{X1}^slide", f"(a_{X})_{X1} ∥ {B}{Q}",
                    f"Through {k1} draw a line parallel to the slot: the sliding acceleration "
-                   f"of {X} lies on it.", component=C.CONSTRUCTION)
+                   f"of {X} lies on it.", component=C.SLIDING)
         x2 = b.fresh(X)
         b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, X), f"{p}{x2}", p, x2, "centripetal",
               f"(a_{X})_{P}^n", f"(a_{X})_{P}^n = ω_{L}² × {P}{X} = v²/{P}{X}",
@@ -156,7 +156,7 @@ class Guided:
         n2 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", x2, None, "tangential",
                    f"(a_{X})_{P}^t", f"(a_{X})_{P}^t = α_{L} × {P}{X} ⟂ {P}{X}",
                    f"Through {x2} draw a line perpendicular to {P}{X} for the tangential "
-                   f"acceleration, of unknown length.", component=C.CONSTRUCTION, link=L)
+                   f"acceleration, of unknown length.", component=C.TANGENTIAL, link=L)
         b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
               f"{x} = intersection of the two lines",
               f"The lines meet at {x}: {b.names.pole}{x} is the acceleration of {X}.",

@@ -59,11 +59,6 @@ class Image:
         return (f"link {self.link} has zero length at this instant, so {self.x} cannot be "
                 f"placed on it")
 
-    def circle_bodies(self, scene):
-        """The bodies of the circle diagram this dyad brings in: (name, 'link'|'slider'|
-        'lever'), for the instant centres; None where they are not modelled."""
-        return ()
-
     def toggle_reason(self, scene, pos) -> str:
         return self.why_not(scene, pos)
 

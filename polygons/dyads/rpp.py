@@ -60,11 +60,6 @@ class RPP:
     def why_not(self, scene, pos) -> str:
         return f"the slot of the yoke {self.x} is parallel to its guide"
 
-    def circle_bodies(self, scene):
-        """The bodies of the circle diagram this dyad brings in: (name, 'link'|'slider'|
-        'lever'), for the instant centres; None where they are not modelled."""
-        return ((self.x, "slider"),)
-
     def toggle_reason(self, scene, pos) -> str:
         return self.why_not(scene, pos)
 

@@ -126,13 +126,6 @@ class RPR:
         return (f"the pin {self.pin} is on the pivot {self.pivot} of lever {self.lever}: the "
                 f"slot direction is undefined")
 
-    def circle_bodies(self, scene):
-        """The lever (its slot pin is a sliding pair on the common normal); an offset slot
-        is not modelled by the instant centres (None)."""
-        if scene.slots[self.pin].offset:
-            return None
-        return ((self.lever, "lever"),)
-
     def toggle_reason(self, scene, pos) -> str:
         slot = scene.slots[self.pin]
         if slot.length is not None:
@@ -183,12 +176,12 @@ class RPR:
         else:
             k1 = b.fresh(A1)
             b.add(Kind.VECTOR, Op.CENTRIPETAL, (lev, B, A1), f"{b_}{k1}", b_, k1,
-                  "centripetal", f"(a_{A1})^n", f"(a_{A1})^n = ω_{lev}² × {B}{A}",
+                  "centripetal", f"(a_{A1})_{B}^n", f"(a_{A1})_{B}^n = ω_{lev}² × {B}{A}",
                   f"From {b_} draw the centripetal acceleration of {A1} about {B}, ω² × "
                   f"{B}{A}, pointing towards {B}; call its end {k1}.",
                   component=C.CENTRIPETAL, link=lev)
             n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"{a1} line", k1, None, "tangential",
-                       f"(a_{A1})^t", f"(a_{A1})^t = α_{lev} × {B}{A} ⟂ {B}{A}",
+                       f"(a_{A1})_{B}^t", f"(a_{A1})_{B}^t = α_{lev} × {B}{A} ⟂ {B}{A}",
                        f"Through {k1} draw a line perpendicular to {B}{A} for the tangential "
                        f"acceleration of {A1}, of unknown length.", component=C.TANGENTIAL,
                        link=lev, relative=(A1, B))

@@ -69,11 +69,6 @@ class RRP:
         return (f"{self.link} is perpendicular to the guide of {self.x} (it reaches the guide "
                 f"no further)")
 
-    def circle_bodies(self, scene):
-        """The bodies of the circle diagram this dyad brings in: (name, 'link'|'slider'|
-        'lever'), for the instant centres; None where they are not modelled."""
-        return ((self.link, "link"), (self.x, "slider"))
-
     def toggle_reason(self, scene, pos) -> str:
         return (f"{self.link} is perpendicular to the guide of {self.x} (it reaches the guide "
                 f"no further)")

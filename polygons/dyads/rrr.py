@@ -71,11 +71,6 @@ class RRR:
             return self.toggle_reason(scene, pos)
         return (f"the links cannot close at this input: {why}, so {self.x} cannot be placed")
 
-    def circle_bodies(self, scene):
-        """The bodies of the circle diagram this dyad brings in: (name, 'link'|'slider'|
-        'lever'), for the instant centres; None where they are not modelled."""
-        return ((self.link_p, "link"), (self.link_q, "link"))
-
     def toggle_reason(self, scene, pos) -> str:
         import math
         r1 = scene.links[self.link_p].length

@@ -45,11 +45,6 @@ class SliderDriveDyad:
     def why_not(self, scene, pos) -> str:
         return ""
 
-    def circle_bodies(self, scene):
-        """The bodies of the circle diagram this dyad brings in: (name, 'link'|'slider'|
-        'lever'), for the instant centres; None where they are not modelled."""
-        return ((self.point, "slider"),)
-
     def toggle_reason(self, scene, pos) -> str:
         return self.why_not(scene, pos)
 

@@ -34,6 +34,7 @@ from ..errors import PolygonsError, SceneError
 from ..evaluate import Solution, solve
 from ..exam_table import ExamSpec, Range, spec as exam_spec
 from ..quantities import dimension_of_quantity, quantity
+from ..units import round_up
 from ..scene import Scene, load_scene, parse_quantity_expr, parse_scene, parse_toml, \
     read_scene_text
 
@@ -41,7 +42,6 @@ from ..scene import Scene, load_scene, parse_quantity_expr, parse_scene, parse_t
 MAX_VARIANTS = 500
 #: the polygon's largest extent on paper at the round scale (mm)
 POLYGON_MM = 120.0
-ROUND = (1.0, 2.0, 2.5, 5.0)
 UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
         "angular_acceleration": "rad/s²"}
 #: the default range when a scene has no [exam] table: the crank angle round the turn
@@ -132,17 +132,6 @@ def symbol(expr: str) -> str:
 
 
 # ---------------------------------------------------------------- scales
-def round_up(x: float) -> float:
-    """The smallest 1, 2, 2.5, 5 × 10ⁿ at or above ``x`` (> 0)."""
-    n = math.floor(math.log10(x))
-    for k in (n - 1, n, n + 1):
-        for m in ROUND:
-            v = float(f"{m}e{k}")
-            if v >= x * (1 - 1e-12):
-                return v
-    raise AssertionError(x)  # pragma: no cover
-
-
 def round_scales(sol: Solution) -> dict[str, float]:
     """diagram -> SI per cm: a round scale that fits the polygon within :data:`POLYGON_MM`."""
     out = {}

@@ -4,6 +4,7 @@
 tutorial's printed values and the exact ones (see README, "Forces")."""
 from __future__ import annotations
 
+import math
 import string
 from dataclasses import dataclass
 
@@ -14,6 +15,7 @@ from ..errors import PolygonsError, SceneError, UnitError, UnknownLabelError, su
 from ..scene import Scene, unit_dimension
 from ..units import UNITS
 from ..loadmodel import ForceAnswer
+from ..steps import percent_diff
 from . import machine
 from .model import (Inertia, centre, cross, perp, position as _pos, spring_state, unit_r)
 from .newton_euler import contact_force, section
@@ -342,13 +344,12 @@ def check_force_answers(an: Analysis) -> list[ForceCheck]:
         compared = abs(ours) if ans.mode == "abs" else ours
         diff = within = rel = None
         if ans.tutorial is not None:
-            diff = ((ans.tutorial - compared) / abs(compared) * 100.0) \
-                if compared and ans.tutorial != 0.0 else None
+            diff = percent_diff(ans.tutorial, compared) if ans.tutorial != 0.0 else None
             if ans.tutorial == 0.0:
                 within = abs(compared) <= 1e-9 * max(1.0, _scale(an))
-            else:
-                within = abs(ans.tutorial - compared) <= ans.tolerance * max(
-                    abs(ans.tutorial), abs(compared))
+            else:                      # (an infinite value is never within: inf <= inf)
+                within = math.isfinite(compared) and abs(ans.tutorial - compared) <= \
+                    ans.tolerance * max(abs(ans.tutorial), abs(compared))
         if ans.exact is not None:
             rel = abs(compared - ans.exact) / abs(ans.exact) if ans.exact else abs(compared)
         out.append(ForceCheck(ans, ours, compared, diff, within, rel))

@@ -15,7 +15,7 @@ from typing import Mapping
 
 import numpy as np
 
-from ..errors import SceneError
+from ..errors import ConstructionError, SceneError
 from ..evaluate import Solution
 from ..loadmodel import (AppliedForce, AppliedTorque, Body, Friction, ForceAnswer, Joint, Loads,
                      MassItem, SlotContact, Spring)
@@ -219,8 +219,13 @@ def spring_state(model: ForceModel, sol: Solution, s: Spring) -> dict:
     F = k·x, T = −k_t·φ, V = ½ k x²."""
     if s.kind == "linear":
         (l1, _), (l2, _) = s.ends
-        d = position(sol, l2) - position(sol, l1)
+        p1, p2 = position(sol, l1), position(sol, l2)
+        d = p2 - p1
         length = float(np.hypot(*d))
+        if not length > 1e-12 * float(np.max(np.abs(np.concatenate([p1, p2])))):
+            raise ConstructionError(f"the ends {l1} and {l2} of the spring coincide: the line "
+                                    f"of its force is undefined", file=model.scene.file,
+                                    where=f"springs.{s.name}")
         ext = length - model.ref[s.name]
         return {"extension": ext, "tension": s.stiffness * ext, "length": length,
                 "energy": 0.5 * s.stiffness * ext * ext, "unit": d / length}

@@ -1,0 +1,44 @@
+"""The textbook spelling of polygon vertex names, shared by the text outputs and the drawings.
+
+A vertex name is written in scene-safe source form — a lower-case letter, digits, and ``_k``
+for the k-th dash: ``p4_1`` — and printed as a tutorial prints it, digits subscripted and
+dashes as primes: p₄′ (``_2`` → ″, ``_3`` → ‴).  :func:`vertex` spells one name,
+:func:`vertices_in` every vertex name in a sentence (``p2_1p2`` → p₂′p₂, a vector named by its
+two ends).  :mod:`diagrams.notation` builds its typesetting on :data:`PRIMES` and
+:data:`VERTEX`, so the table, the hints and the drawings spell a vertex the same way.
+"""
+from __future__ import annotations
+
+import re
+
+#: the dash a vertex name's ``_k`` suffix stands for
+PRIMES = {"1": "′", "2": "″", "3": "‴"}
+#: one vertex name in source form: letter, digits, optional ``_k`` dash
+VERTEX = r"(?P<vl>[a-z])(?P<vd>\d+)(?:_(?P<vp>[123]))?"
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_ONE = re.compile(rf"{VERTEX}|(?P<bare>[a-z])")
+_WORD = re.compile(r"(?<![\w/′.\-])[a-z][a-z0-9_]*(?![\w])")
+
+
+def vertex(name: str) -> str:
+    """'p4_1' → 'p₄′', 'b1' → 'b₁', 'o' → 'o' (anything else unchanged)."""
+    m = re.fullmatch(VERTEX, name)
+    if m is None:
+        return name
+    return m["vl"] + m["vd"].translate(_SUB) + (PRIMES[m["vp"]] if m["vp"] else "")
+
+
+def vertices_in(text: str, names) -> str:
+    """Every vertex name of ``names`` in ``text`` spelled as printed, also two of them
+    written together as a vector ('p2_1p2' → 'p₂′p₂'); other words are left alone."""
+    known = sorted(set(names), key=lambda n: (-len(n), n))
+
+    def repl(m):
+        w = m.group(0)
+        if w in known:
+            return vertex(w)
+        for a in known:
+            if w.startswith(a) and w[len(a):] in known:
+                return vertex(a) + vertex(w[len(a):])
+        return w
+    return _WORD.sub(repl, text)
