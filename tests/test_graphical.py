@@ -266,3 +266,32 @@ def test_forces_svg_writes_the_force_methods(tmp_path):
     names = {p.name for p in tmp_path.iterdir()}
     assert {"group-instant-1.svg", "group-instant-2.svg", "group-instant-3.svg",
             "group-instant-3-4.svg", "zhukovsky-instant.svg", "zhukovsky-instant-3.svg"} <= names
+
+
+def _printed(scene, quantity):
+    return next(a for a in scene.loads.answers if a.quantity == quantity)
+
+
+def test_the_graphical_methods_reproduce_printed_answers(analysed):
+    """Printed answers (read from the case files, with their drawing tolerance): Khurmi &
+    Gupta's steam engine (turning moment 3929 N m, crank-pin radial force 11980 N) by the force
+    polygons and the lever; Example 3.17 (seed 002, R1, R2, R7, R8) by the force polygons."""
+    path = ROOT / "cases" / "khurmi-flywheel-steam-engine.toml"
+    an = analysed(path)
+    st = an.states[0]
+    fp = graphical.construct(an, st)
+    scene = an.model.scene
+    t = _printed(scene, "Tturn")
+    for ours in (-fp.effort, -zhukovsky.construct(an, st).effort):
+        assert abs(abs(ours) - t.tutorial) <= t.tolerance * t.tutorial
+    rr = _printed(scene, "Rr(C,OC)")
+    oc = np.array(st.sol.points["C"].position) - np.array(st.sol.points["O"].position)
+    radial = float(fp.pin[("C", "OC")] @ (oc / np.hypot(*oc)))
+    assert abs(abs(radial) - rr.tutorial) <= rr.tolerance * rr.tutorial
+    path = ROOT / "cases" / "s002-ex3.17.toml"
+    an = analysed(path)
+    fp = graphical.construct(an, an.states[0])
+    for q, (lab, body, i) in {"Rx(O,OA)": ("O", "OA", 0), "Ry(O,OA)": ("O", "OA", 1),
+                              "Rx(D,DB)": ("D", "DB", 0), "Ry(D,DB)": ("D", "DB", 1)}.items():
+        a = _printed(an.model.scene, q)
+        assert abs(fp.pin[(lab, body)][i] - a.tutorial) <= a.tolerance * abs(a.tutorial) + 1e-3
