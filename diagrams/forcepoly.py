@@ -301,7 +301,6 @@ def lever_drawings(an, st):
     kv = vscale.mm_per_si
     allf = lv.applied + lv.effort_forces
     fbig = max([float(np.hypot(*a.force)) for a in allf] + [1e-9])
-    kf = 18.0 / fbig                                  # the longest force 18 mm
     # an effort nil next to the loads (torque-driven: the applied torques balance) is not drawn
     nil = all(float(np.hypot(*a.force)) <= 1e-9 * fbig for a in lv.effort_forces)
     out = []
@@ -337,7 +336,8 @@ def lever_drawings(an, st):
         for a in drawn:                      # arrows first, then the names clear of them
             mag = float(np.hypot(*a.force))
             tail = tuple(map(float, a.lever * kv))
-            tip = (tail[0] + a.force[0] * kf, tail[1] + a.force[1] * kf)
+            ln = _arrow_length(mag, fbig)
+            tip = (tail[0] + a.force[0] / mag * ln, tail[1] + a.force[1] / mag * ln)
             look = KIND_LOOK.get(a.kind, "force-load")
             new = stage is not None and (stage == 2 and a.kind != "effort"
                                          or stage == 3 and a.kind == "effort")
@@ -399,10 +399,17 @@ def lever_drawings(an, st):
                      Group("forces", "forces", "forces at their images", tuple(arrows)),
                      Group("labels", "labels", "names", tuple(labels))],
             content_box=box, legend=legend, scale=vscale,
-            caption=[cap + f" Lever to the velocity scale; force arrows 1 mm = "
-                     f"{1.0 / kf:.4g} N (their points and directions carry the moments)."],
+            caption=[cap + f" Lever to the velocity scale; force arrows "
+                     f"not to scale: 6 mm + 12 mm × √(F/F_max), F_max = {fbig:.4g} N (the "
+                     f"moments come from their points and directions; values in the legend)."],
             scale_statement=vscale.statement, meta={}, key=key)))
     return out
+
+
+def _arrow_length(mag: float, big: float) -> float:
+    """A force arrow's length on the lever (mm): every force visible, longer for larger ones
+    (the lever's moments come from points and directions, not from arrow lengths)."""
+    return 6.0 + 12.0 * math.sqrt(mag / big)
 
 
 def write(an, outdir) -> list[Path]:
