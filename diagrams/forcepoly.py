@@ -60,10 +60,12 @@ def _beside(arrows, tail, tip, n) -> tuple[float, float]:
     for ar in arrows:
         d2 = np.subtract(ar.tip, ar.tail)
         w = np.subtract(ar.tail, tail)
-        if abs(u[0] * d2[1] - u[1] * d2[0]) > 1e-3 * max(1.0, float(np.hypot(*d2))):
-            continue
-        if abs(u[0] * w[1] - u[1] * w[0]) > 1e-3:
-            continue
+        if abs(u[0] * d2[1] - u[1] * d2[0]) > 0.03 * max(1e-9, float(np.hypot(*d2))):
+            continue                                  # not within ~2° of it
+        far = max(abs(u[0] * w[1] - u[1] * w[0]),
+                  abs(u[0] * (w[1] + d2[1]) - u[1] * (w[0] + d2[0])))
+        if far > 1.0:
+            continue                                  # more than 1 mm off its line
         s = sorted(float(np.subtract(p, tail) @ u) for p in (ar.tail, ar.tip))
         if min(ends[1], s[1]) - max(ends[0], s[0]) > 0.1 and ar.shift == (0.0, 0.0) or \
                 min(ends[1], s[1]) - max(ends[0], s[0]) > 0.1 and k == 0:
@@ -251,8 +253,9 @@ def group_drawings(an, st):
             cap = _stage_caption(g, stage, nst)
             out.append((stem, compose(
                 name=stem, kind="force", stage=stage,
-                title=f"Force polygon, {g.title}" + (f" — Stage {stage}" if stage else ""),
-                subtitle=f"{an.model.scene.title} ({st.name})",
+                title=f"Force polygon, group {g.index}" + (f" — Stage {stage}" if stage
+                                                           else ""),
+                subtitle=f"{g.title.split(': ', 1)[1]}; {st.name}",
                 desc=f"Force polygon of {g.title}",
                 content=[Group("polygon", "force-polygon", g.title,
                                tuple([start] + extra + arrows)),
