@@ -87,11 +87,11 @@ def _vectors(g: graphical.Group):
                         f"{k.name}: {_fmt(float(np.hypot(*k.force)))} N ∠"
                         f"{_dir(k.force):.1f}°"
                         + (f" (h = {k.offset * 1e3:.3g} mm)" if k.kind == "inertia" else "")))
-    # the normal components go after their link's knowns
+    # the normal components go after their link's knowns: K1, t1, K2, t2
     for t in g.normals:
-        idx = max([i for i, s in enumerate(seq) if s[3] == (1 if t.body == first else 2)],
-                  default=-1) + 1
-        seq.insert(idx, (t.name, t.force, "force-moments", 1 if t.body == first else 2,
+        stage = 1 if t.body == first else 2
+        idx = sum(1 for s in seq if s[3] <= stage)
+        seq.insert(idx, (t.name, t.force, "force-moments", stage,
                          f"{t.name}: {_fmt(t.value)} N (by moments)"))
     close = [f for f in g.closing if f.how != "effort" or g.kind == "slider driver"]
     cstage = 3 if g.kind in ("RRR", "RRP") else 2
