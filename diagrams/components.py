@@ -36,6 +36,16 @@ LOOKS: dict[str, Look] = {
     "image": Look("image side (rigid body)", "#332288", 0.4, "0.9 0.7"),
     "resultant": Look("resultant (absolute, from the pole)", "#000000", 0.75, "0.5 0.8"),
     "construction": Look("construction line", "#555555", 0.25, "3 1.5"),
+    # the force methods (diagrams.forcepoly): force polygons per group, Zhukovsky's lever
+    "force-load": Look("applied load or weight", "#000000", 0.55, None),
+    "force-inertia": Look("inertia force −m a_G (offset by h)", "#CC79A7", 0.6, "0.6 0.6"),
+    "force-passed": Look("force passed on by a group solved", "#0072B2", 0.45, "1.6 0.6"),
+    "force-moments": Look("normal component, by moments", "#D55E00", 0.5, "2.6 0.9"),
+    "force-closing": Look("closing side (along a link, guide normal)", "#009E73", 0.7, None),
+    "force-reaction": Look("pin reaction (diagonal)", "#000000", 0.75, "0.5 0.8"),
+    "force-effort": Look("balancing effort", "#882255", 0.9, None, open_head=True),
+    "force-lever": Look("Zhukovsky's lever (velocity polygon turned 90°)", "#332288", 0.35,
+                        "0.9 0.7"),
 }
 
 

@@ -135,6 +135,19 @@ class Efficiency:
 
 
 @dataclass(frozen=True)
+class Effort:
+    """Where the force analysis finds the balancing effort ([dynamics] effort), the driver
+    staying the kinematic input: ``kind`` 'torque' (a couple on ``body``, CCW positive),
+    'force' (a force on the slider block ``body`` along its guide, positive along the guide's
+    direction) or 'actuator' (a massless actuator between ``ends`` = ((E, body or None),
+    (F, body or None)), positive pushing E and F apart); ``text`` as written."""
+    kind: str
+    text: str
+    body: str | None = None
+    ends: tuple = ()
+
+
+@dataclass(frozen=True)
 class Loads:
     """Everything the force tables say, in SI, checked against the scene's topology."""
     file: str
@@ -157,6 +170,7 @@ class Loads:
     active: bool                # the scene has masses, forces, torques or springs
     flywheel: Flywheel | None = None
     efficiency: Efficiency | None = None
+    effort: "Effort | None" = None      # [dynamics] effort: the unknown effort's place
 
     def items_of(self, body: str) -> list[MassItem]:
         return [m for m in self.masses if m.body == body]

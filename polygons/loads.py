@@ -46,6 +46,7 @@ from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, 
 from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
                         Friction, Joint, Loads, MassItem, Spring, bodies_of,
                         slot_contacts)
+from .loadeffort import EFFORT_KEY, parse_effort
 from .model import BUILT, check_handles
 from .reader import Reader, record
 from .schema import Key, Table
@@ -144,6 +145,7 @@ TABLES: tuple[Table, ...] = (
             "[\"30 deg\"]", "angle"),
         Key("steps", "integer", f"release: RK4 steps per interval, 4 .. {MAX_RELEASE_STEPS:,}",
             "200", default=200),
+        EFFORT_KEY,
     )),
     Table("flywheel", "A flywheel on the crank shaft: its angular acceleration from the torque "
           "surplus, α = (T − T_R)/I (kinetostatic: the crank's ω as given).", (
@@ -249,7 +251,8 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
                       joints=tuple(joints), slots=(), guides=_guides(scene.model), masses=(),
                       forces=(), torques=(), frictions=(), springs=(), gravity=NO_GRAVITY,
                       mode=DEFAULT_MODE, after=(), steps=DEFAULT_STEPS, answers=(),
-                      driver_body=driver_body, active=False, flywheel=None, efficiency=None)
+                      driver_body=driver_body, active=False, flywheel=None, efficiency=None,
+                      effort=None)
     r = _Values(file)
     active = has_loads(ex)
     if active:
@@ -304,12 +307,13 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     mode, after, steps = _dynamics(r, scene, ex.get("dynamics", {}), active)
     flywheel = _flywheel(r, scene, ex.get("flywheel"), mode)
     efficiency = _efficiency(r, scene, ex.get("efficiency"))
+    effort = parse_effort(ctx, ex.get("dynamics", {}).get("effort"), mode, flywheel, efficiency)
     answers = _answers(r, ex.get("force_answers", []), answer_fields)
     return Loads(file, MappingProxyType(bodies),
                  MappingProxyType({k: tuple(v) for k, v in members.items()}), tuple(joints),
                  tuple(slots), _guides(scene.model), tuple(masses), tuple(forces),
                  tuple(torques), tuple(frictions), tuple(springs), gravity, mode, after, steps,
-                 answers, driver_body, active, flywheel, efficiency)
+                 answers, driver_body, active, flywheel, efficiency, effort)
 
 
 @dataclass(frozen=True)

@@ -21,6 +21,7 @@ WHERE = {
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
     "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
+    "polygons.loadeffort": "scene",
     # the mechanism model: the joint tables read once into bodies and pairs, the last step of
     # loading a scene (polygons.scene builds it; every layer above reads it)
     "polygons.model": "scene",

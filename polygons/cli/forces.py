@@ -12,9 +12,10 @@ import numpy as np
 from ..errors import PolygonsError, SceneError
 from ..forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
                       spring_state)
-from ..forces import machine
+from ..forces import effort, machine
 from ..forces.model import position, unit_r
 from ..report import json_text, undefined_note
+from . import _graphical
 from ._output import add_out_option, emit
 from ..scene import Crank, load_scene
 from ..theorems import perp
@@ -45,7 +46,8 @@ def run(args) -> int:
     paths = []
     if args.svg:
         from diagrams.fbd import write
-        paths = write(an, args.svg)
+        from diagrams.forcepoly import write as write_graphical
+        paths = write(an, args.svg) + write_graphical(an, args.svg)
     text = json_text(to_dict(an)) if args.json else forces_table(an)
     if paths and not args.json:
         text += f"\ndiagrams: {len(paths)} SVG files in {args.svg}\n"
@@ -79,8 +81,8 @@ def _g(x, digits=6) -> str:
 def _mode_words(an: Analysis) -> str:
     m = an.model.mode
     if m == "kinetostatic":
-        return ("kinetostatic: the driver's motion is given; the input torque that keeps it is "
-                "found")
+        return (f"kinetostatic: the driver's motion is given; the "
+                f"{effort.words(an.model).removeprefix('effort: ')} that keeps it is found")
     if m == "torque-driven":
         return ("torque-driven: the driver's ω is given, its α follows from the applied "
                 "torques (acceleration polygon affine in α: solved at α = 0 and α = 1)")
@@ -89,7 +91,21 @@ def _mode_words(an: Analysis) -> str:
 
 
 def _effort_unit(an: Analysis) -> str:
-    return "N m" if isinstance(an.model.scene.driver, Crank) else "N"
+    return effort.unit(an.model)
+
+
+def _effort_value(an: Analysis, st: State, e: float) -> str:
+    """An effort in words: a torque with its sense; a force with its direction (a force
+    has no rotation sense), an actuator's as pushing or pulling."""
+    model = an.model
+    if effort.is_torque(model):
+        return f"{abs(e):.8g} N m {_sense(e)}"
+    spec = model.parsed.effort
+    if spec is not None and spec.kind == "actuator":
+        return f"{abs(e):.8g} N {'pushing (compression)' if e >= 0 else 'pulling (tension)'}"
+    t = effort.terms(model, st.sol)[0]
+    d = _deg(t.direction * (1.0 if e >= 0 else -1.0))
+    return f"{abs(e):.8g} N towards {d:.6g}° (along the guide)"
 
 
 # ---------------------------------------------------------------- JSON
@@ -111,8 +127,11 @@ def _state_dict(an: Analysis, st: State) -> dict:
                          "acceleration": st.sol.slides[drv.point].acceleration}
     if model.mode == "kinetostatic":
         out["input"] = {"newton_euler": ne.effort, "virtual_work": st.vw_effort,
-                        "unit": _effort_unit(an), "sense": _sense(ne.effort),
-                        "turning_moment": -ne.effort,
+                        "unit": _effort_unit(an), "key": effort.key(model),
+                        "words": effort.words(model),
+                        "sense": _sense(ne.effort) if effort.is_torque(model) else None,
+                        "turning_moment": (-ne.effort if effort.is_torque(model)
+                                           and model.parsed.effort is None else None),
                         "breakdown": _shares(st)}
     else:
         out["alpha_in"] = ne.alpha
@@ -153,6 +172,8 @@ def _state_dict(an: Analysis, st: State) -> dict:
                        for k, name, x in zip(ne.keys, ne.names, ne.values)]
     if model.parsed.flywheel is not None or model.parsed.efficiency is not None:
         out["machine"] = _machine(an, st)
+    out["force_polygons"] = _graphical.polygons_dict(an, st)
+    out["zhukovsky"] = _graphical.lever_dict(an, st)
     return out
 
 
@@ -299,6 +320,9 @@ def _sections(an: Analysis, st: State):
     out = []
     loaded = {ld.at for ld in st.ne.loads if ld.at} | {j.label for j in model.joints}
     loaded |= {s.pin for s in model.slots}
+    spec = model.parsed.effort
+    loaded |= {lab for lab, _ in spec.ends} if spec is not None and spec.kind == "actuator" \
+        else set()
     for name, body in model.bodies.items():
         items = model.items_of(name)
         if body.kind != "link" or not items or any(i.kind == "link" and not i.rod
@@ -421,14 +445,14 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     unit = _effort_unit(an)
     if model.mode == "kinetostatic":
         e = ne.effort
-        what = "torque" if unit == "N m" else "force along the guide"
-        out.append(f"  input {what} on {model.driver_body}: {abs(e):.8g} {unit} {_sense(e)}"
-                   f" (Newton–Euler); virtual work {abs(st.vw_effort):.8g} {unit} "
-                   f"{_sense(st.vw_effort)}; difference {abs(e - st.vw_effort):.1e}")
-        if unit == "N m":
+        what = "torque" if unit == "N m" else "force"
+        out.append(f"  {effort.words(model)}: {_effort_value(an, st, e)} (Newton–Euler); "
+                   f"virtual work {_effort_value(an, st, st.vw_effort)}; difference "
+                   f"{abs(e - st.vw_effort):.1e}")
+        if unit == "N m" and model.parsed.effort is None:
             out.append(f"  the mechanism's turning moment on {model.driver_body}: "
                        f"{abs(e):.8g} N m {_sense(-e)}")
-        out.append(f"  virtual-work breakdown ({unit} of input {what} per term):")
+        out.append(f"  virtual-work breakdown ({unit} of the {what} per term):")
     else:
         a = ne.alpha
         out.append(f"  input angular acceleration from the loads: {abs(a):.10g} rad/s² "
@@ -469,6 +493,8 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
         else:
             out.append(f"  {m['words']}: {m['value']:.8g} {m['unit']}")
     out.append(f"  equations: {ne.equations}, residual {ne.residual:.1e}")
+    out += _graphical.polygons_lines(an, st)
+    out += _graphical.lever_lines(an, st)
     for w in st.warnings:
         out.append(f"  warning: {w}")
     return out

@@ -15,6 +15,7 @@ import numpy as np
 from ..errors import UnknownLabelError, UnsupportedError, suggest
 from ..evaluate import Solution
 from ..scene import Crank
+from . import effort
 from .model import (ForceModel, Load, body_alpha, centre, cross, image, inertias, loads, perp,
                     position as _pos, unit_r)
 
@@ -103,8 +104,7 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
         add_couple(cm, lab, 1.0)
         guide_cols.append((lab, cn, cm, n))
     drv = scene.driver
-    what = "torque" if isinstance(drv, Crank) else "force"
-    cdrv = col(f"input_{what}_{model.driver_body}", f"input {what} on {model.driver_body}")
+    cdrv = col(effort.key(model), effort.words(model))
     lds = loads(model, sol, vsol, motion) if lds is None else lds
 
     def inertia_rhs(s: Solution) -> np.ndarray:
@@ -123,11 +123,11 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
             rhs[i + 2] -= cross(ld.pos - ref[ld.body], ld.force)
         rhs[i + 2] -= ld.couple
     if sol1 is None:
-        if isinstance(drv, Crank):
-            add_couple(cdrv, drv.link, 1.0)
-        else:
-            add_force(cdrv, drv.point, _pos(sol, drv.point),
-                      np.array(scene.model.guide[drv.point].line.direction))
+        for t in effort.terms(model, sol):      # the driver's, or [dynamics] effort's
+            if t.couple:
+                add_couple(cdrv, t.body, t.couple)
+            if t.pos is not None:
+                add_force(cdrv, t.body, t.pos, t.direction)
     else:
         cols[cdrv] = ("input angular acceleration" if isinstance(drv, Crank)
                       else "input acceleration")
@@ -266,9 +266,19 @@ def section(model: ForceModel, st, label: str, link: str) -> tuple[float, float,
         if ld.pos is not None:
             M += cross(ld.pos - rx, ld.force)
         M += ld.couple
-    if isinstance(scene.driver, Crank) and scene.driver.link == link and ne.effort:
-        if inside(scene.driver.pivot):
-            M += ne.effort
+    for t in (effort.terms(model, sol) if ne.effort else ()):
+        if t.body != link:
+            continue
+        if t.pos is not None and float((t.pos - pa) @ u) < s_x - 1e-12 * max(1.0, abs(s_x)):
+            F += ne.effort * t.direction
+            M += cross(t.pos - rx, ne.effort * t.direction)
+        if t.couple:
+            drv = scene.driver
+            if not (isinstance(drv, Crank) and drv.link == link):
+                raise UnsupportedError(f"the effort couple on {link} has no point: {link} "
+                                       f"cannot be cut at {label}", file=scene.file)
+            if inside(drv.pivot):
+                M += ne.effort * t.couple
     # inertia of the inner part
     need_f = np.zeros(2)
     need_m = 0.0

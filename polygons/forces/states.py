@@ -7,6 +7,7 @@ from dataclasses import dataclass, field, replace
 from ..errors import SceneError, UnsupportedError
 from ..evaluate import Solution, solve
 from ..scene import Crank, Scene
+from . import effort
 from .model import ForceModel, Inertia, friction_sense, inertias
 from .newton_euler import NEResult, newton_euler
 from .virtual_work import Share, virtual_work
@@ -58,9 +59,22 @@ def kinetostatic(model: ForceModel, scene: Scene, name: str = "instant",
     vsol = virtual_solution(scene)
     ne = newton_euler(model, sol, vsol, motion=motion)
     vw, parts = virtual_work(model, sol, vsol, ne.loads)
+    if model.parsed.effort is not None:       # the effort elsewhere: per its own rate
+        vw, parts = _per_effort(model, vsol, vw, parts)
     return State(name, sol, vsol, ne, inertias(model, sol), vw, parts,
                  driver_applied(model, ne, vsol), warnings=_friction_warnings(model, sol, vsol,
                                                                              motion))
+
+
+def _per_effort(model, vsol, vw, parts):
+    """The virtual work's effort at a place other than the driver: −ΣP* divided by the
+    unit effort's own power at the unit input rate."""
+    r = effort.rate(model, vsol)
+    if abs(r) < 1e-12:
+        raise UnsupportedError(f"the {effort.words(model)} does no work at this instant "
+                               f"(its point does not move along it): it cannot balance the "
+                               f"loads", file=model.scene.file)
+    return vw / r, [replace(t, value=t.value / r) for t in parts]
 
 
 def _friction_warnings(model, sol, vsol, motion) -> list[str]:

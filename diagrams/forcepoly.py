@@ -1,0 +1,431 @@
+"""The drawing board's force methods drawn: the force polygon of each Assur group, stage by
+stage, and Zhukovsky's lever (:mod:`polygons.forces.graphical`,
+:mod:`polygons.forces.zhukovsky`).  Same page, scale bar, key and writer as the velocity and
+acceleration polygons; every vector's kind has its look (:data:`diagrams.components.LOOKS`,
+the ``force-…`` kinds).  Nothing is recomputed: every vector is a record of the construction.
+
+Files (``polygons forces CASE --svg DIR``): ``group-<state>-<n>.svg`` (the finished polygon
+of group n) and ``group-<state>-<n>-<k>.svg`` (its stages); ``zhukovsky-<state>.svg`` and
+``zhukovsky-<state>-<k>.svg``.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from polygons.errors import PolygonsError, UnsupportedError
+from polygons.forces import effort as effort_mod
+from polygons.forces import graphical, zhukovsky
+
+from .components import LOOKS
+
+KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load",
+             "spring": "force-load", "torque": "force-load", "friction": "force-load",
+             "couple": "force-load", "inertia": "force-inertia", "transmitted": "force-passed",
+             "effort": "force-effort"}
+
+
+def _slug(text: str) -> str:
+    return "".join(ch if ch.isalnum() else "-" for ch in text).strip("-").lower()
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.4g}"
+
+
+def _dir(v) -> float:
+    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+
+
+def _text(x, y, text, size, anchor):
+    """A label anchored at its start (an end-anchored typeset label is moved left by its
+    width: sub- and superscript runs keep their places in every renderer)."""
+    from .model import Text
+    from .notation import width
+    if anchor == "end":
+        x -= width(text, size)
+    elif anchor == "middle":
+        x -= width(text, size) / 2
+    return Text(x, y, text, size, anchor="start", role="label")
+
+
+def _beside(arrows, tail, tip, n) -> tuple[float, float]:
+    """The move (mm) that draws the vector tail → tip beside the drawn ones it would lie on
+    (collinear and overlapping): 2.2 mm along ``n``, further for each one already there."""
+    u = np.subtract(tip, tail) / math.dist(tail, tip)
+    ends = sorted(float(np.subtract(p, tail) @ u) for p in (tail, tip))
+    k = 0
+    for ar in arrows:
+        d2 = np.subtract(ar.tip, ar.tail)
+        w = np.subtract(ar.tail, tail)
+        if abs(u[0] * d2[1] - u[1] * d2[0]) > 0.03 * max(1e-9, float(np.hypot(*d2))):
+            continue                                  # not within ~2° of it
+        far = max(abs(u[0] * w[1] - u[1] * w[0]),
+                  abs(u[0] * (w[1] + d2[1]) - u[1] * (w[0] + d2[0])))
+        if far > 1.0:
+            continue                                  # more than 1 mm off its line
+        s = sorted(float(np.subtract(p, tail) @ u) for p in (ar.tail, ar.tip))
+        if min(ends[1], s[1]) - max(ends[0], s[0]) > 0.1 and ar.shift == (0.0, 0.0) or \
+                min(ends[1], s[1]) - max(ends[0], s[0]) > 0.1 and k == 0:
+            k += 1
+    return (float(2.2 * k * n[0]), float(2.2 * k * n[1])) if k else (0.0, 0.0)
+
+
+def _vectors(g: graphical.Group):
+    """(name, force, look, stage, words) head to tail, and the construction lines
+    (point, direction, stage) and diagonals (from-vertex index, to-vertex index, name)."""
+    seq = []
+    lines = []
+    diag = []
+    first = g.bodies[0]
+    for k in g.knowns:
+        if k.force.any():
+            stage = 1 if k.body == first or g.kind in ("crank", "slider driver") else 2
+            seq.append((k.name, k.force, KIND_LOOK.get(k.kind, "force-load"), stage,
+                        f"{k.name}: {_fmt(float(np.hypot(*k.force)))} N ∠"
+                        f"{_dir(k.force):.1f}°"
+                        + (f" (h = {k.offset * 1e3:.3g} mm)" if k.kind == "inertia" else "")))
+    # the normal components go after their link's knowns: K1, t1, K2, t2
+    for t in g.normals:
+        stage = 1 if t.body == first else 2
+        idx = sum(1 for s in seq if s[3] <= stage)
+        seq.insert(idx, (t.name, t.force, "force-moments", stage,
+                         f"{t.name}: {_fmt(t.value)} N (by moments)"))
+    close = [f for f in g.closing if f.how != "effort" or g.kind == "slider driver"]
+    cstage = 3 if g.kind in ("RRR", "RRP") else 2
+    start_closing = len(seq)
+    for f in close:
+        look = "force-effort" if f.how == "effort" else "force-closing"
+        seq.append((f.name, f.force, look, cstage, f"{f.name}: {_fmt(abs(f.value))} N ∠"
+                    f"{_dir(f.force) if f.value else _dir(f.direction):.1f}°"))
+    if len(close) == 2:
+        lines.append((start_closing, close[0].direction, cstage))
+        lines.append((len(seq), close[1].direction, cstage))
+    if g.kind in ("RRR", "RRP"):
+        s1 = sum(1 for s in seq if s[3] == 1)          # the vertex after the first link
+        diag.append((start_closing + 1, s1, g.reactions[0].name))
+    return seq, lines, diag
+
+
+def group_drawings(an, st):
+    """(stem, Drawing) of each group's force polygon and its stages at ``st``."""
+    from .labels import bounds, box_hits_segment, text_box
+    from .layout import arrow_head, compose
+    from .model import Arrow, Circle, Group, Segment, Text
+    from .scale import Scale, round_up
+
+    try:
+        fp = graphical.construct(an, st)
+    except UnsupportedError:
+        return []
+    out = []
+    for g in fp.groups:
+        seq, lines, diag = _vectors(g)
+        if not seq:
+            continue
+        big = max(float(np.hypot(*s[1])) for s in seq)
+        if big == 0.0:
+            continue
+        fscale = Scale("force", round_up(big * 10.0 / 90.0), "N", 1.0)
+        k = fscale.mm_per_si
+        verts = [np.zeros(2)]
+        for s in seq:
+            verts.append(verts[-1] + s[1] * k)
+        centre = sum(verts, np.zeros(2)) / len(verts)
+        nst = max(s[3] for s in seq) + (1 if diag else 0)
+        for stage in list(range(1, nst + 1)) + [None]:
+            if stage is not None and not (diag and stage == nst) and not any(
+                    s[3] == stage and float(np.hypot(*s[1])) > 0 for s in seq):
+                continue                      # nothing to draw at this stage (massless)
+            arrows, labels, extra = [], [], []
+            placed = []
+            lo = np.min(np.array(verts), axis=0) - 8.0
+            hi = np.max(np.array(verts), axis=0) + 8.0
+            for vi, d, lst in lines:
+                if stage is not None and lst != stage:
+                    continue
+                p = verts[vi]
+                reach = [t for i in range(2) if abs(d[i]) > 1e-12
+                         for t in ((lo[i] - p[i]) / d[i], (hi[i] - p[i]) / d[i])]
+                tmin = max(min(reach[j], reach[j + 1]) for j in range(0, len(reach), 2))
+                tmax = min(max(reach[j], reach[j + 1]) for j in range(0, len(reach), 2))
+                a, b = p + tmin * d, p + tmax * d
+                extra.append(Segment(tuple(map(float, a)), tuple(map(float, b)),
+                                     "construction", cls="closing-line"))
+            for i, (name, f, look, sst, _) in enumerate(seq):
+                if stage is not None and sst > stage:
+                    continue
+                tail, tip = tuple(map(float, verts[i])), tuple(map(float, verts[i + 1]))
+                if math.dist(tail, tip) < 1e-6:
+                    continue
+                new = stage is not None and sst == stage
+                head, shaft = arrow_head(tail, tip)
+                u = (np.array(tip) - np.array(tail)) / math.dist(tail, tip)
+                n = np.array([-u[1], u[0]])
+                mid = (np.array(tail) + np.array(tip)) / 2
+                if n @ (mid - centre) < 0:
+                    n = -n
+                shift = _beside(arrows, tail, tip, n)
+                arrows.append(Arrow(tail, tip, f"c-{look}" + ("-new" if new else ""), head,
+                                    shaft, name=name, role="known",
+                                    faded=stage is not None and not new, shift=shift,
+                                    title=f"{name} = {_fmt(float(np.hypot(*f)))} N"))
+                mid = mid + np.array(shift)
+                if shift != (0.0, 0.0):
+                    n = np.array(shift) / float(np.hypot(*shift))
+                elif any(_beside([Arrow(tuple(map(float, verts[j])),
+                                        tuple(map(float, verts[j + 1])), "", (), (0, 0))],
+                                 tail, tip, n) != (0.0, 0.0)
+                         for j in range(len(seq)) if j != i
+                         and float(np.hypot(*seq[j][1])) > 0):
+                    n = -n                      # a collinear partner is drawn on that side
+                segs = [(tuple(map(float, verts[j])), tuple(map(float, verts[j + 1])))
+                        for j in range(len(seq)) if stage is None or seq[j][3] <= stage]
+                segs += [(e.a, e.b) for e in extra]
+                for off, side in ((2.5, 1), (5.0, 1), (2.5, -1), (8.0, 1), (5.0, -1),
+                                  (11.0, 1), (8.0, -1), (14.0, 1), (11.0, -1), (17.0, 1),
+                                  (14.0, -1), (20.0, 1)):
+                    at = mid + side * off * n
+                    anchor = "start" if side * n[0] >= 0 else "end"
+                    bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
+                    if not any(bx.overlaps(o) for o in placed) and not any(
+                            box_hits_segment(bx, a, b, 0.3) for a, b in segs):
+                        break
+                else:
+                    at = mid + 2.5 * n
+                    anchor = "start" if n[0] >= 0 else "end"
+                    bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
+                placed.append(bx)
+                labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor))
+            if diag and (stage is None or stage == nst):
+                for a_i, b_i, name in diag:
+                    tail, tip = tuple(map(float, verts[a_i])), tuple(map(float, verts[b_i]))
+                    if math.dist(tail, tip) > 1e-6:
+                        head, shaft = arrow_head(tail, tip)
+                        u = np.subtract(tip, tail) / math.dist(tail, tip)
+                        n = np.array([-u[1], u[0]])
+                        if n @ (np.add(tail, tip) / 2 - centre) < 0:
+                            n = -n
+                        # on a drawn side (a two-force link): drawn beside it, moved 2.2 mm
+                        shift = _beside(arrows, tail, tip, -n)
+                        arrows.append(Arrow(tail, tip, "c-force-reaction"
+                                            + ("-new" if stage else ""), head, shaft,
+                                            name=name, role="result", title=name,
+                                            shift=shift))
+                        mid = (np.array(tail) + np.array(tip)) / 2 + np.array(shift)
+                        m2 = -1.0 if shift != (0.0, 0.0) else 1.0
+                        for off in (3.0, 6.0, 9.0, 12.0):
+                            at = mid + m2 * off * n
+                            anchor = "start" if m2 * n[0] >= 0 else "end"
+                            bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
+                            if not any(bx.overlaps(o) for o in placed):
+                                break
+                        placed.append(bx)
+                        labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8,
+                                            anchor))
+            start = Circle((0.0, 0.0), 0.8, "pole", cls="start")
+            pts = [tuple(map(float, v)) for v in verts]
+            box = bounds(pts)
+            for t in labels:
+                box = box.union(text_box(t.x, t.baseline, t.text, t.size, t.anchor))
+            box = box.grown(6.0)
+            looks = list(dict.fromkeys([s[2] for s in seq if stage is None or s[3] <= stage]
+                                       + (["force-reaction"] if diag and (stage is None or
+                                                                          stage == nst)
+                                          else [])))
+            key = [(f"c-{lk}", LOOKS[lk].name, True) for lk in looks]
+            if lines and (stage is None or stage == (3 if g.kind in ("RRR", "RRP") else 2)):
+                key.append(("construction", "line of known direction", False))
+            legend = [(s[4], "normal") for s in seq if stage is None or s[3] <= stage]
+            legend += [(m, "normal") for m in g.moments]
+            if g.kind == "crank":
+                legend.append((f"input torque T = {abs(fp.effort):.5g} N m "
+                               f"{'CCW' if fp.effort > 0 else 'CW'}", "bold"))
+            if g.kind == "slider driver":
+                legend.append((f"input force {fp.effort:.5g} N along the guide", "bold"))
+            for f in g.reactions:
+                if f.how == "reaction" and (stage is None or stage == nst):
+                    legend.append((f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°",
+                                   "bold"))
+            stem = f"group-{_slug(st.name)}-{g.index}" + (f"-{stage}" if stage else "")
+            cap = _stage_caption(g, stage, nst)
+            out.append((stem, compose(
+                name=stem, kind="force", stage=stage,
+                title=f"Force polygon, group {g.index}" + (f" — Stage {stage}" if stage
+                                                           else ""),
+                subtitle=f"{g.title.split(': ', 1)[1]}; {st.name}",
+                desc=f"Force polygon of {g.title}",
+                content=[Group("polygon", "force-polygon", g.title,
+                               tuple([start] + extra + arrows)),
+                         Group("labels", "labels", "names", tuple(labels))],
+                content_box=box, legend=legend, scale=fscale, caption=[cap],
+                scale_statement=fscale.statement, meta={}, key=key)))
+    return out
+
+
+def _stage_caption(g, stage, nst) -> str:
+    if g.kind in ("RRR", "RRP"):
+        a = g.bodies[0]
+        b = g.bodies[1] if g.kind == "RRR" else f"slider {g.bodies[1]}"
+        words = {1: f"The known forces on {a}, then the normal component at its outer pin "
+                    f"from moments about the middle pin.",
+                 2: f"The known forces on {b}" + (", then its normal component by moments."
+                                                  if g.kind == "RRR" else "."),
+                 3: "Lines of known direction (along the links, or the guide normal) through "
+                    "the last point and the start: where they meet closes the polygon.",
+                 4: "The pin force between the two bodies is the diagonal."}
+    else:
+        words = {1: "The known forces on the driver, including those passed on.",
+                 2: "The polygon closes on the bearing (guide) force; the input effort "
+                    "follows from moments."}
+    if stage is None:
+        return ("Groups from the one furthest from the driver; each inertia force acts "
+                "offset by h = I_G α / (m a_G). " + " ".join(words[i] for i in sorted(words)))
+    return words.get(stage, "")
+
+
+def lever_drawings(an, st):
+    """(stem, Drawing) of Zhukovsky's lever at ``st`` and its stages."""
+    from .labels import bounds, box_hits_segment, text_box
+    from .layout import arrow_head, compose
+    from .model import Arrow, Circle, Group, Segment, Text
+    from .scale import Scale, round_up
+
+    try:
+        lv = zhukovsky.construct(an, st)
+    except UnsupportedError:
+        return []
+    model = an.model
+    imgs = lv.images
+    ext = max([float(np.hypot(*p)) for p in imgs.values()] + [1e-9])
+    vscale = Scale("velocity", round_up(ext * 10.0 / 70.0), "m/s", 1.0)
+    kv = vscale.mm_per_si
+    allf = lv.applied + lv.effort_forces
+    fbig = max([float(np.hypot(*a.force)) for a in allf] + [1e-9])
+    # an effort nil next to the loads (torque-driven: the applied torques balance) is not drawn
+    nil = all(float(np.hypot(*a.force)) <= 1e-9 * fbig for a in lv.effort_forces)
+    out = []
+    for stage in (1, 2, 3, None):
+        items, arrows, labels, placed = [], [], [], []
+
+        def label(x, y, text, size=2.8, anchor="start"):
+            segs = [(ar.tail, ar.tip) for ar in arrows]
+            for j in range(30):
+                dy = (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)
+                bx = text_box(x, y + dy, text, size, anchor)
+                if not any(bx.overlaps(o) for o in placed) and not any(
+                        box_hits_segment(bx, a, b, 0.3) for a, b in segs):
+                    break
+            placed.append(bx)
+            labels.append(_text(x, y + dy, text, size, anchor))
+
+        faded1 = stage is not None and stage > 1
+        for name, body in model.bodies.items():
+            if body.b is None:
+                continue
+            a, b = imgs.get(body.a), imgs.get(body.b)
+            if a is None or b is None:
+                continue
+            items.append(Segment(tuple(map(float, a * kv)), tuple(map(float, b * kv)),
+                                 "c-force-lever" + ("" if faded1 else "-new"), faded=faded1,
+                                 cls="lever"))
+        show = [] if stage == 1 else (lv.applied if stage == 2 else allf)
+        show = [a for a in show if a.kind != "effort" or not nil]
+        drawn = [a for a in show if float(np.hypot(*a.lever)) * kv > 0.05
+                 and float(np.hypot(*a.force)) > 0.0]
+        tips = []
+        for a in drawn:                      # arrows first, then the names clear of them
+            mag = float(np.hypot(*a.force))
+            tail = tuple(map(float, a.lever * kv))
+            ln = _arrow_length(mag, fbig)
+            tip = (tail[0] + a.force[0] / mag * ln, tail[1] + a.force[1] / mag * ln)
+            look = KIND_LOOK.get(a.kind, "force-load")
+            new = stage is not None and (stage == 2 and a.kind != "effort"
+                                         or stage == 3 and a.kind == "effort")
+            head, shaft = arrow_head(tail, tip)
+            arrows.append(Arrow(tail, tip, f"c-{look}" + ("-new" if new else ""), head, shaft,
+                                name=a.name, role="known", title=f"{a.name} {_fmt(mag)} N",
+                                faded=stage is not None and not new))
+            tips.append((a.name, tail, tip))
+        images = []
+        for lab, p in imgs.items():
+            q = tuple(map(float, p * kv))
+            if lab in model.scene.ground:
+                continue
+            items.append(Segment((0.0, 0.0), q, "c-force-lever", faded=True, cls="ray"))
+            items.append(Circle(q, 0.5, "vertex", cls="image"))
+            images.append((lab, q))
+        items.append(Circle((0.0, 0.0), 0.9, "pole", cls="pole"))
+        label(1.2, -3.5, "o (pivot)", 3.0)
+        for lab, q in images:
+            label(q[0] + 1.2, q[1] + 1.2, lab.lower(), 3.0)
+        for name, tail, tip in tips:
+            u = np.subtract(tip, tail) / math.dist(tail, tip)
+            label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0, name, 2.6,
+                  "start" if u[0] >= -0.2 else "end")
+        pts = [(0.0, 0.0)] + [tuple(map(float, p * kv)) for p in imgs.values()]
+        pts += [q for ar in arrows for q in (ar.tail, ar.tip)]
+        box = bounds(pts)
+        for o in placed:
+            box = box.union(o)
+        box = box.grown(6.0)
+        unit = effort_mod.unit(model)
+        legend = [(f"{a.name}: {_fmt(float(np.hypot(*a.force)))} N, moment about o "
+                   + (f"{_fmt(a.moment + 0.0)} N m/s" if a in drawn else "0 (applied at o)"),
+                   "normal") for a in (show or [])]
+        if stage in (3, None):
+            spec = model.parsed.effort
+            sign = (" (pulling)" if lv.effort < 0 else " (pushing)") \
+                if spec is not None and spec.kind == "actuator" else ""
+            legend.append((f"effort {effort_mod.short(model)} = "
+                           + (f"0 {unit} (the loads balance)" if nil else
+                              f"{lv.effort:.6g} {unit}{sign}"), "bold"))
+        looks = ["force-lever"] + list(dict.fromkeys(KIND_LOOK.get(a.kind, "force-load")
+                                                     for a in show))
+        key = [(f"c-{lk}", LOOKS[lk].name, lk != "force-lever") for lk in looks]
+        words = {1: "The velocity polygon turned 90° CCW about its pole o: a rigid lever "
+                    "pivoted at o; each point's image carries the forces at that point.",
+                 2: "Each force (inertia forces offset by h) applied at its image, parallel "
+                    "to itself; couples as force pairs at the images of the link's ends.",
+                 3: "The effort's moment about o balances the rest: Σ moments = 0."}
+        cap = words[stage] if stage else " ".join(words.values()) + (
+            " Drawn for a unit input rate (the input is at rest)." if lv.unit_rate else "")
+        stem = f"zhukovsky-{_slug(st.name)}" + (f"-{stage}" if stage else "")
+        out.append((stem, compose(
+            name=stem, kind="zhukovsky", stage=stage,
+            title="Zhukovsky's lever" + (f" — Stage {stage}" if stage else ""),
+            subtitle=f"{model.scene.title} ({st.name})",
+            desc="Zhukovsky's lever: the velocity polygon turned 90°",
+            content=[Group("lever", "lever", "the turned velocity polygon", tuple(items)),
+                     Group("forces", "forces", "forces at their images", tuple(arrows)),
+                     Group("labels", "labels", "names", tuple(labels))],
+            content_box=box, legend=legend, scale=vscale,
+            caption=[cap + f" Lever to the velocity scale; force arrows "
+                     f"not to scale: 6 mm + 12 mm × √(F/F_max), F_max = {fbig:.4g} N (the "
+                     f"moments come from their points and directions; values in the legend)."],
+            scale_statement=vscale.statement, meta={}, key=key)))
+    return out
+
+
+def _arrow_length(mag: float, big: float) -> float:
+    """A force arrow's length on the lever (mm): every force visible, longer for larger ones
+    (the lever's moments come from points and directions, not from arrow lengths)."""
+    return 6.0 + 12.0 * math.sqrt(mag / big)
+
+
+def write(an, outdir) -> list[Path]:
+    """Write every group's force polygon (and stages) and Zhukovsky's lever to ``outdir``."""
+    from .svg import to_svg
+    outdir = Path(outdir)
+    if outdir.exists() and not outdir.is_dir():
+        raise PolygonsError(f"{outdir} exists and is not a folder", where=str(outdir))
+    outdir.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for st in an.states:
+        for stem, d in group_drawings(an, st) + lever_drawings(an, st):
+            p = outdir / f"{stem}.svg"
+            p.write_bytes(to_svg(d))
+            paths.append(p)
+    return paths

@@ -1,0 +1,313 @@
+"""The drawing board's force methods (issue 23 items 1, 2, 6): force polygons per Assur group,
+Zhukovsky's lever, and the unknown effort anywhere.
+
+Every reaction of the force polygons equals Newton–Euler's (polygons/forces/newton_euler.py)
+to 1e-9 on every shipped case with loads whose kinds the construction handles (refused in one
+line naming the kind otherwise); the lever's effort equals the virtual work's to 1e-9 on every
+case with loads; the effort cases' answers equal closed forms written here from the loop
+solutions of tests/analytic.py (power balance by hand), independent of all three methods.
+"""
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import analytic
+from polygons.errors import PolygonsError, UnsupportedError
+from polygons.forces import analyse, has_forces
+from polygons.forces import graphical, zhukovsky
+from polygons.scene import load_scene
+
+ROOT = Path(__file__).resolve().parent.parent
+CASES = sorted((ROOT / "cases").glob("*.toml"))
+REL = 1e-9
+
+
+def _loaded():
+    out = []
+    for p in CASES:
+        sc = load_scene(p)
+        if has_forces(sc):
+            out.append(p)
+    return out
+
+
+LOADED = _loaded()
+
+
+@pytest.fixture(scope="module")
+def analysed():
+    memo = {}
+
+    def get(path):
+        if path not in memo:
+            memo[path] = analyse(load_scene(path))
+        return memo[path]
+    return get
+
+
+def test_there_are_cases_for_each_method():
+    handled = [p for p in LOADED if graphical.handled(load_scene(p)) is None]
+    assert len(handled) >= 4 and len(LOADED) >= 8
+    efforts = [p for p in LOADED if load_scene(p).loads.effort is not None]
+    assert len(efforts) >= 2
+
+
+@pytest.mark.parametrize("path", LOADED, ids=[p.stem for p in LOADED])
+def test_force_polygons_equal_newton_euler(path, analysed):
+    scene = load_scene(path)
+    why = graphical.handled(scene)
+    if why is not None:
+        # refused in one line naming the kind (or the effort)
+        assert "\n" not in why and ("does not handle" in why or "effort" in why)
+        with pytest.raises(UnsupportedError):
+            graphical.construct(analysed(path), analysed(path).states[0])
+        return
+    an = analysed(path)
+    for st in an.states:
+        fp = graphical.construct(an, st)
+        ne = st.ne
+        big = max([1.0] + [float(np.hypot(*v)) for v in ne.pin.values()])
+        assert set(fp.pin) == set(ne.pin)
+        for k, v in ne.pin.items():
+            assert np.hypot(*(fp.pin[k] - v)) <= REL * big, (path.name, st.name, k)
+        for k, v in ne.ground.items():
+            assert np.hypot(*(fp.ground[k] - v)) <= REL * big
+        for k, (n, _, c) in ne.guide.items():
+            assert abs(fp.guide[k][0] - n) <= REL * big and abs(fp.guide[k][2] - c) <= REL * big
+        expected = ne.effort if ne.effort is not None else 0.0
+        assert abs(fp.effort - expected) <= REL * max(1.0, abs(expected), big * 0.01)
+        # each group's polygon closes: knowns + found sum to zero
+        for g in fp.groups:
+            total = sum((k.force for k in g.knowns), np.zeros(2))
+            total = total + sum((f.force for f in g.normals + g.closing), np.zeros(2))
+            assert np.hypot(*total) <= REL * big
+
+
+@pytest.mark.parametrize("path", LOADED, ids=[p.stem for p in LOADED])
+def test_zhukovsky_lever_equals_virtual_work(path, analysed):
+    an = analysed(path)
+    for st in an.states:
+        lv = zhukovsky.construct(an, st)
+        scale = max([1.0, abs(st.vw_effort)] + [abs(a.moment / lv.unit_moment)
+                                                 for a in lv.applied])
+        assert abs(lv.effort - st.vw_effort) <= REL * scale, (path.name, st.name)
+        # moments about the pole balance
+        total = lv.moment_sum + sum(a.moment for a in lv.effort_forces)
+        assert abs(total) <= REL * max(1.0, *(abs(a.moment) for a in lv.applied))
+
+
+def test_the_lever_moment_is_minus_the_power():
+    """r × F with r the image turned 90° CCW is −F·v (the lever's principle)."""
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        v, f = rng.normal(size=2), rng.normal(size=2)
+        r = np.array([-v[1], v[0]])
+        assert r[0] * f[1] - r[1] * f[0] == pytest.approx(-(f @ v), abs=1e-12)
+
+
+# ---------------------------------------------------------------- the effort anywhere
+def piston_effort_exact() -> float:
+    """WE8's engine (OC 40 mm, PC 140 mm, 3000 rpm CW at 135°), 150 N m CCW on the crank,
+    piston 0.5 kg: F v_P + T ω − m a_P v_P = 0 (power balance, closed-form kinematics)."""
+    w = -3000 * 2 * math.pi / 60
+    r = analytic.slider_crank((0, 0), 0.04, 0.14, math.radians(135), w, 0.0, (0, 0), 0.0, -1)
+    vp, ap = float(r["s_dot"]), float(r["s_ddot"])
+    return (0.5 * ap * vp - 150.0 * w) / vp
+
+
+def actuator_effort_exact() -> float:
+    """The four-bar of forces-actuator-four-bar: 200 N down at E (200 mm along BC, 40 mm
+    left), rocker CD 2 kg uniform, g 9.81; actuator H (600, 0) → F (mid CD).
+    E (u·v_F) + W·v_E + m g·v_G − m a_G·v_G − I α ω = 0, u from H to F."""
+    r = analytic.four_bar((0, 0), (0.45, 0), 0.1, 0.4, 0.35, math.pi / 2, 12.0, 0.0, 1)
+    e = analytic.coupler_point(r["B"], r["vB"], r["aB"], r["phi_BC"], r["omega_BC"],
+                               r["alpha_BC"], 0.2, 0.04)
+    D = np.array([0.45, 0.0])
+    g = analytic.coupler_point(D, np.zeros(2), np.zeros(2), r["phi_CD"], r["omega_CD"],
+                               r["alpha_CD"], 0.175, 0.0)
+    H = np.array([0.6, 0.0])
+    u = g["P"] - H
+    u = u / np.hypot(*u)
+    m, inertia = 2.0, 2.0 * 0.35 ** 2 / 12
+    p = (np.array([0, -200.0]) @ e["vP"] + m * np.array([0, -9.81]) @ g["vP"]
+         - m * g["aP"] @ g["vP"] - inertia * r["alpha_CD"] * r["omega_CD"])
+    return float(-p / (u @ g["vP"]))
+
+
+@pytest.mark.parametrize("name,exact", [("forces-engine-piston-effort", piston_effort_exact),
+                                        ("forces-actuator-four-bar", actuator_effort_exact)])
+def test_effort_anywhere_equals_the_closed_form(name, exact, analysed):
+    an = analysed(ROOT / "cases" / f"{name}.toml")
+    st = an.states[0]
+    x = exact()
+    assert st.ne.effort == pytest.approx(x, rel=REL)
+    assert st.vw_effort == pytest.approx(x, rel=REL)
+    assert zhukovsky.construct(an, st).effort == pytest.approx(x, rel=REL)
+
+
+def test_a_slider_drivers_effort_is_a_force_without_a_sense(tmp_path):
+    src = (ROOT / "cases" / "new-elliptic-trammel.toml").read_text()
+    case = tmp_path / "t.toml"
+    case.write_text(src + '\n[masses.AB]\nmass = "2 kg"\n')
+    out = subprocess.run([sys.executable, "-m", "polygons", "forces", str(case)],
+                         capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr
+    line = next(x for x in out.stdout.splitlines() if "(Newton–Euler)" in x)
+    assert " N towards " in line and " CW" not in line and "CCW" not in line
+    assert "turning moment" not in out.stdout
+
+
+@pytest.mark.parametrize("effort,words", [
+    ("torque on XY", "unknown link"), ("force at C2", "needs a slider"),
+    ("force along", "must be"), ("force along QQQ", "names two points"),
+    ("push it", "must be"), (3, "is a string")])
+def test_bad_efforts_are_one_line(tmp_path, effort, words):
+    src = (ROOT / "cases" / "forces-engine-piston-effort.toml").read_text()
+    val = f'"{effort}"' if isinstance(effort, str) else str(effort)
+    case = tmp_path / "bad.toml"
+    case.write_text(src.replace('effort = "force at P"', f"effort = {val}"))
+    with pytest.raises(PolygonsError) as e:
+        load_scene(case)
+    assert words in str(e.value) and "dynamics.effort" in str(e.value)
+
+
+def test_effort_with_torque_driven_is_refused(tmp_path):
+    src = (ROOT / "cases" / "s002-ex3.17.toml").read_text()
+    case = tmp_path / "t.toml"
+    case.write_text(src.replace("[dynamics]\n", '[dynamics]\neffort = "torque on DB"\n', 1))
+    with pytest.raises(PolygonsError, match="kinetostatic"):
+        load_scene(case)
+
+
+# ---------------------------------------------------------------- the command
+def test_forces_command_prints_both_methods_and_json(tmp_path):
+    from polygons.cli.forces import to_dict
+    an = analyse(load_scene(ROOT / "cases" / "s001-we8.toml"))
+    data = to_dict(an)
+    st = data["states"][0]
+    assert st["zhukovsky"]["effort"] == pytest.approx(st["input"]["newton_euler"], rel=REL)
+    groups = st["force_polygons"]["groups"]
+    assert [g["kind"] for g in groups] == ["RRP", "crank"]
+    assert st["force_polygons"]["effort"] == pytest.approx(st["input"]["newton_euler"],
+                                                           rel=REL)
+    an2 = analyse(load_scene(ROOT / "cases" / "s000-d225-2003-q3.toml"))
+    st2 = to_dict(an2)["states"][0]
+    assert "does not handle" in st2["force_polygons"]["refused"]
+
+
+def toggle_torque_exact() -> float:
+    """The toggle press of forces-toggle-press: T ω + Σ F·v − Σ m a_G·v_G − Σ I α ω = 0 on the
+    closed-form loop solution (tests/analytic_more.py), uniform rods, g 9.81, 5 kN up at D."""
+    import analytic_more as am
+    w = 200 * 2 * math.pi / 60
+    O = am.fixed(0, 0)
+    A = am.crank(O, 0.08, math.radians(45), w, 0.0)
+    C = am.fixed(0.3, 0.25)
+    B, (wab, aab), (wcb, acb) = am.rrr(A, 0.32, C, 0.2, 0.38 + 0.07j)
+    D, (wbd, abd), _ = am.rrp(B, 0.22, complex(0.3, 0), math.radians(90), 0.3 - 0.14j)
+    g = -9.81j
+    p = (5000j * D[1].conjugate()).real            # the stone's force on the head
+    for (P, Q, m, L, om, al) in ((A, B, 3.0, 0.32, wab, aab), (C, B, 2.0, 0.2, wcb, acb),
+                                 (B, D, 2.5, 0.22, wbd, abd)):
+        G = am.image(P, Q, L / 2)
+        p += (m * (g - G[2]) * G[1].conjugate()).real - m * L * L / 12 * al * om
+    p += (20.0 * (g - D[2]) * D[1].conjugate()).real
+    return -p / w
+
+
+def test_toggle_press_torque_equals_the_closed_form(analysed):
+    an = analysed(ROOT / "cases" / "forces-toggle-press.toml")
+    st = an.states[0]
+    fp = graphical.construct(an, st)
+    x = toggle_torque_exact()
+    assert [g.kind for g in fp.groups] == ["RRP", "RRR", "crank"]
+    assert fp.effort == pytest.approx(x, rel=REL)
+    assert zhukovsky.construct(an, st).effort == pytest.approx(x, rel=REL)
+
+
+def test_drawings_of_every_loaded_case(analysed):
+    """Every loaded case draws its group polygons (when handled) and its lever; each SVG is
+    well-formed, the stages come before the finished drawing, no two labels overlap."""
+    import xml.etree.ElementTree as ET
+    from diagrams.forcepoly import group_drawings, lever_drawings
+    from diagrams.labels import text_box
+    from diagrams.model import Text
+    from diagrams.svg import to_svg
+    for path in LOADED:
+        an = analysed(path)
+        st = an.states[0]
+        ds = group_drawings(an, st) + lever_drawings(an, st)
+        stems = [s for s, _ in ds]
+        assert any(s.startswith("zhukovsky-") for s in stems), path.name
+        if graphical.handled(load_scene(path)) is None:
+            assert any(s.startswith("group-") for s in stems), path.name
+        for stem, d in ds[:12]:
+            ET.fromstring(to_svg(d))
+            for cls in ("labels",):
+                texts = [t for t in d.items(cls) if isinstance(t, Text)]
+                assert texts, (path.name, stem)
+                boxes = [text_box(t.x, t.baseline, t.text, t.size, t.anchor) for t in texts]
+                for i, a in enumerate(boxes):
+                    for b in boxes[i + 1:]:
+                        assert not a.overlaps(b), (path.name, stem)
+
+
+def test_forces_svg_writes_the_force_methods(tmp_path):
+    out = subprocess.run([sys.executable, "-m", "polygons", "forces",
+                          str(ROOT / "cases" / "forces-toggle-press.toml"), "--svg",
+                          str(tmp_path)], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"group-instant-1.svg", "group-instant-2.svg", "group-instant-3.svg",
+            "group-instant-3-4.svg", "zhukovsky-instant.svg", "zhukovsky-instant-3.svg"} <= names
+
+
+def _printed(scene, quantity):
+    return next(a for a in scene.loads.answers if a.quantity == quantity)
+
+
+def test_the_graphical_methods_reproduce_printed_answers(analysed):
+    """Printed answers (read from the case files, with their drawing tolerance): Khurmi &
+    Gupta's steam engine (turning moment 3929 N m, crank-pin radial force 11980 N) by the force
+    polygons and the lever; Example 3.17 (seed 002, R1, R2, R7, R8) by the force polygons."""
+    path = ROOT / "cases" / "khurmi-flywheel-steam-engine.toml"
+    an = analysed(path)
+    st = an.states[0]
+    fp = graphical.construct(an, st)
+    scene = an.model.scene
+    t = _printed(scene, "Tturn")
+    for ours in (-fp.effort, -zhukovsky.construct(an, st).effort):
+        assert abs(abs(ours) - t.tutorial) <= t.tolerance * t.tutorial
+    rr = _printed(scene, "Rr(C,OC)")
+    oc = np.array(st.sol.points["C"].position) - np.array(st.sol.points["O"].position)
+    radial = float(fp.pin[("C", "OC")] @ (oc / np.hypot(*oc)))
+    assert abs(abs(radial) - rr.tutorial) <= rr.tolerance * rr.tutorial
+    path = ROOT / "cases" / "s002-ex3.17.toml"
+    an = analysed(path)
+    fp = graphical.construct(an, an.states[0])
+    for q, (lab, body, i) in {"Rx(O,OA)": ("O", "OA", 0), "Ry(O,OA)": ("O", "OA", 1),
+                              "Rx(D,DB)": ("D", "DB", 0), "Ry(D,DB)": ("D", "DB", 1)}.items():
+        a = _printed(an.model.scene, q)
+        assert abs(fp.pin[(lab, body)][i] - a.tutorial) <= a.tolerance * abs(a.tutorial) + 1e-3
+
+
+def test_the_diagonal_joins_the_two_bodies_parts(analysed):
+    """In each dyad's polygon (K1, t1, K2, t2, closing sides) the diagonal drawn is the middle
+    pin's force: from the closing sides' meeting point back to the end of the first body's
+    part, equal to the reaction found (the massless coupler of efficiency-four-bar too)."""
+    from diagrams.forcepoly import _vectors
+    for name in ("efficiency-four-bar", "forces-toggle-press", "s002-ex3.17", "s001-we8"):
+        an = analysed(ROOT / "cases" / f"{name}.toml")
+        fp = graphical.construct(an, an.states[0])
+        for g in fp.groups:
+            seq, _, diag = _vectors(g)
+            verts = np.cumsum([np.zeros(2)] + [s[1] for s in seq], axis=0)
+            for a, b, _ in diag:
+                r = g.reactions[0]
+                assert np.hypot(*(verts[b] - verts[a] - r.force)) <= 1e-9 * max(1.0, r.value)
