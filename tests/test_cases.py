@@ -93,6 +93,9 @@ OWN_EXACT_CHECK = {
                               "test_double_slider_centre_of_the_bar_where_the_normals_meet"),
     **{name: ("test_klein.py", "test_cases_against_the_loop_closure")
        for name in ("klein-inline-engine", "klein-offset-engine")},
+    **{name: ("test_graphical.py", "test_the_force_cases_kinematic_answers_are_their_sources")
+       for name in ("forces-toggle-press", "forces-actuator-four-bar",
+                    "forces-engine-piston-effort")},
     "cam-roller-follower": ("test_contacts.py", "test_roller_follower_is_the_slider_crank"),
     "cam-flat-follower": ("test_contacts.py", "test_flat_follower_is_the_scotch_yoke"),
     "curved-slot-pin": ("test_contacts.py", "test_curved_slot_case_and_random_instances"),

@@ -16,7 +16,7 @@ import numpy as np
 from ..errors import UnknownLabelError, suggest
 from ..scene import Crank, Scene
 from ..streams import Extremes, evaluate_compiled, plan_stream, stream
-from ..sweep import _segments, sweep
+from ..sweep import _segments, default_points, sweep
 from ..steps import number
 
 PLOT_POINTS = 4000
@@ -36,7 +36,6 @@ def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> in
             raise UnknownLabelError(f"unknown link {name!r}: {suggest(name, probe['omega'])}",
                                     file=scene.file, where="sweep.links")
     drv = scene.driver
-    from .sweep import default_points
     points = opt["points"] or default_points(scene, st.prog.plan, probe["pos"],
                                              probe["travel"])
     crank = drv.link if isinstance(drv, Crank) else None

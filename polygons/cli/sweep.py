@@ -24,7 +24,7 @@ from ..options import MAX_STEPS, labels
 from ..scene import Crank, Scene, load_scene
 from ..steps import number
 from ..dyads.base import size_of
-from ..sweep import Sweep, harmonic, sweep
+from ..sweep import Sweep, default_points, harmonic, sweep
 
 #: above this many positions the summary draws a progress bar (on a terminal)
 PROGRESS_FROM = 100_000
@@ -113,30 +113,6 @@ def _options(scene: Scene, args) -> dict:
 
 def _default_points(sw: Sweep) -> list[str]:
     return default_points(sw.scene, sw.plan, sw.pos, sw.travel)
-
-
-def default_points(scene, plan, placed, travel) -> list[str]:
-    """The points a user asks about: those the scene's ``[[answers]]`` name (moving points
-    only, in the order asked); else the sliders; else the last point placed — never a lever
-    point under a pin (P4 under P2) unless it is asked for.  ``placed``: the labels swept,
-    ``travel``: the sliders with a travel (the in-memory and the streamed sweep alike)."""
-    drv = scene.driver
-    asked = []
-    for ans in scene.answers:
-        if ans.q is None or ans.q.fn in ("omega", "alpha", "angle", "arm", "dist"):
-            continue
-        for lab in ans.q.args:
-            if lab in placed and lab not in scene.ground and lab not in asked:
-                asked.append(lab)
-    if asked:
-        return asked
-    sliders = [s for s in scene.model.guide if s in travel
-               and not (not isinstance(drv, Crank) and s == drv.point)]
-    if sliders:
-        return sliders
-    under = set(scene.model.under)                  # lever points under a pin (P4)
-    last = [lab for d in plan.dyads for lab in d.placed if lab not in under]
-    return [last[-1]] if last else [plan.dyads[-1].placed[-1]]
 
 
 def _default_links(sw: Sweep) -> list[str]:
