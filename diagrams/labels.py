@@ -135,16 +135,18 @@ class Placer:
     def block(self, box: Box) -> None:
         self.boxes.append(box)
 
-    def free(self, box: Box) -> bool:
+    def free(self, box: Box, near=None) -> bool:
+        """No label, vertex or vector in the way (``near``: the obstacles near ``box``, from
+        :meth:`_near`, else looked up)."""
         gapped = box.grown(LABEL_GAP)
-        boxes, hard, _ = self._near(box)
+        boxes, hard, _ = near or self._near(box)
         if any(gapped.overlaps(b) for b in boxes):
             return False
         return not any(box_hits_segment(box, a, b, c) for a, b, c in hard)
 
-    def cost(self, box: Box) -> float:
+    def cost(self, box: Box, near=None) -> float:
         c = 0.0
-        _, hard, soft = self._near(box)
+        _, hard, soft = near or self._near(box)
         for a, b in soft:
             if box_hits_segment(box, a, b, 0.8):
                 c += self.soft_cost
@@ -202,9 +204,10 @@ class Placer:
                     cx, cy = at[0] + (d + half) * ux, at[1] + (d + half) * uy
                     box = Box(round(cx - w / 2, 3), round(cy - h / 2, 3),
                               round(cx + w / 2, 3), round(cy + h / 2, 3))
-                    if not self.free(box):
+                    near = self._near(box)
+                    if not self.free(box, near):
                         continue
-                    c = self.cost(box) + rank * 0.9
+                    c = self.cost(box, near) + rank * 0.9
                     if prefer is not None:
                         diff = abs((th - prefer + math.pi) % (2 * math.pi) - math.pi)
                         c += diff / math.pi * 1.2
@@ -324,7 +327,7 @@ class _Grid:
             got = cells.get(k)
             if got:
                 found.update(got)
-        return [lst[i] for i in sorted(found)]
+        return [lst[i] for i in found]       # each once; every use is order-free
 
 
 def _cover(x0, y0, x1, y1):
