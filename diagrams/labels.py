@@ -272,12 +272,17 @@ class _Grid:
         self.keys: list = []                 # each item's cells (None: tested always)
         self.cells: dict = {}
         self.always: set = set()
+        self.memo: dict = {}                 # a cell range -> its items (until a change)
 
     def _sync(self, lst) -> None:
         if lst is not self.source:
             self.source, self.items, self.keys, self.cells = lst, [], [], {}
             self.always = set()
+            self.memo = {}
         n = len(self.items)
+        if n == len(lst) and (not n or lst[n - 1] is self.items[n - 1]):
+            return                           # unchanged (the common case)
+        self.memo = {}
         while n > len(lst) or (n and lst[n - 1] is not self.items[n - 1]):
             n -= 1                           # popped (or changed): drop it from the cells
             keys = self.keys.pop()
@@ -318,16 +323,24 @@ class _Grid:
 
     def near(self, lst, box: Box) -> list:
         self._sync(lst)
-        keys = _cover(box.x0, box.y0, box.x1, box.y1)
-        if keys is None:
+        x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
+        if not math.isfinite(x0 + x1 + y0 + y1):
             return lst
-        found = set(self.always)
-        cells = self.cells
-        for k in keys:
-            got = cells.get(k)
-            if got:
-                found.update(got)
-        return [lst[i] for i in found]       # each once; every use is order-free
+        span = (math.floor(x0 / _CELL), math.floor(y0 / _CELL), math.floor(x1 / _CELL),
+                math.floor(y1 / _CELL))
+        got = self.memo.get(span)
+        if got is None:
+            keys = _cover(x0, y0, x1, y1)
+            if keys is None:
+                return lst
+            found = set(self.always)
+            cells = self.cells
+            for k in keys:
+                more = cells.get(k)
+                if more:
+                    found.update(more)
+            got = self.memo[span] = [lst[i] for i in found]   # each once; every use is
+        return got                                             # order-free
 
 
 def _cover(x0, y0, x1, y1):
