@@ -260,6 +260,9 @@ def main(argv=None) -> int:
     ap.add_argument("--fit", action="store_true",
                     help="also time 11, 21, 41, 81, 141, 201 links and print each command's "
                          "log-log exponent (the process start subtracted)")
+    ap.add_argument("--readme", action="store_true",
+                    help="--fit without centres, and rewrite README.md's block between "
+                         "<!-- large:begin --> and <!-- large:end --> with the table")
     ap.add_argument("--write", metavar="FILE", help="write the scene of the first --links "
                     "count to FILE and stop")
     args = ap.parse_args(argv)
@@ -269,6 +272,9 @@ def main(argv=None) -> int:
         Path(args.write).write_text(scene_text(args.kind, size_for_links(args.kind, counts[0]),
                                                loads=True))
         return 0
+    if args.readme:
+        args.fit = True
+        cmds = [c for c in cmds if c != "centres"]
     if args.fit:
         counts = sorted(set(counts) | {11, 21, 41, 81, 141, 201})
     rows = {}
@@ -278,17 +284,46 @@ def main(argv=None) -> int:
                           for c, (t, e) in rows[n].items())
         print(f"{args.kind} {links_of(args.kind, size_for_links(args.kind, n)):4d} links: "
               f"{cells}", flush=True)
+    slopes = {}
+    start = None
     if args.fit:
-        base = measure(args.kind, 11, ["solve"])["solve"][0]     # ~ the process start
         start = _start_time()
-        print(f"process start (python -m polygons --help): {start:.2f} s")
+        print(f"process start (python -m polygons --help): {start:.2f} s CPU")
+        xs = [links_of(args.kind, size_for_links(args.kind, n)) for n in counts]
         for c in cmds:
-            xs = [links_of(args.kind, size_for_links(args.kind, n)) for n in counts]
             ys = [max(rows[n][c][0] - start, 1e-3) for n in counts]
-            print(f"{c:8s} exponent {fit_exponent(xs, ys):.2f} "
-                  f"(time − start, {xs[0]}–{xs[-1]} links)")
-        del base
+            slopes[c] = fit_exponent(xs, ys)
+            print(f"{c:8s} exponent {slopes[c]:.2f} (time − start, {xs[0]}–{xs[-1]} links)")
+    md = _markdown(args.kind, counts, cmds, rows, slopes, start)
+    print(md)
+    if args.readme:
+        readme = ROOT / "README.md"
+        text = readme.read_text(encoding="utf-8")
+        head, rest = text.split("<!-- large:begin -->\n", 1)
+        _, tail = rest.split("<!-- large:end -->", 1)
+        readme.write_text(head + "<!-- large:begin -->\n" + md + "\n<!-- large:end -->" + tail,
+                          encoding="utf-8")
+        print("README.md rewritten")
     return 0
+
+
+def _markdown(kind, counts, cmds, rows, slopes, start) -> str:
+    """The table: CPU seconds of each command (fresh process) by size, and the exponents."""
+    head = "| links | " + " | ".join(f"`{c}`" for c in cmds) + " |"
+    out = [f"CPU seconds per command, fresh process (`python benchmarks/large.py --readme`, "
+           f"{kind}, {time.strftime('%Y-%m-%d')}; the machine shared, so CPU rather than wall "
+           f"time):", "", head, "|---" * (len(cmds) + 1) + "|"]
+    for n in counts:
+        cells = []
+        for c in cmds:
+            t, err = rows[n][c]
+            cells.append(f"{t:.2f}" + (f" ({err[:60]})" if err else ""))
+        out.append(f"| {links_of(kind, size_for_links(kind, n))} | " + " | ".join(cells) + " |")
+    if slopes:
+        out.append("| exponent (log-log fit of time − process start) | "
+                   + " | ".join(f"**{slopes[c]:.2f}**" for c in cmds) + " |")
+        out += ["", f"(process start, `python -m polygons --help`: {start:.2f} s CPU)"]
+    return "\n".join(out)
 
 
 def _start_time() -> float:
