@@ -162,8 +162,8 @@ class Placer:
     def _near(self, box: Box):
         """(boxes, hard segments, soft segments) that can matter to a label in ``box``: all of
         them on a small drawing; on a large one those indexed in the grid cells ``box`` covers
-        (:class:`_Grid`; every obstacle within its reach of the box is among them, in the
-        lists' order, so the answers are the same)."""
+        (:class:`_Grid`; every obstacle within its reach of the box is among them, each once,
+        and every use -- any, min, a count -- is order-free, so the answers are the same)."""
         lists = (self.boxes, self.hard_segments, self.soft_segments)
         if sum(map(len, lists)) < _GRID_FROM:
             return lists
