@@ -322,7 +322,21 @@ def _markdown(kind, counts, cmds, rows, slopes, start) -> str:
     if slopes:
         out.append("| exponent (log-log fit of time − process start) | "
                    + " | ".join(f"**{slopes[c]:.2f}**" for c in cmds) + " |")
+        lo, hi = [n for n in counts if n >= 101][:1], counts[-1:]
+        if lo and hi and hi[0] > lo[0]:
+            a, b = lo[0], hi[0]
+            out.append(f"| local exponent, {a} → {b} links | " + " | ".join(
+                f"{math.log(max(rows[b][c][0] - start, 1e-3) / max(rows[a][c][0] - start, 1e-3)) / math.log(b / a):.2f}"
+                for c in cmds) + " |")
         out += ["", f"(process start, `python -m polygons --help`: {start:.2f} s CPU)"]
+    if 101 in rows:
+        worst = max(cmds, key=lambda c: rows[101][c][0])
+        t = rows[101][worst][0]
+        failed = [c for c in cmds if rows[101][c][1]]
+        ok = t <= 10.0 and not failed
+        out += ["", f"Goal of issue 20, every command on the 101-link scene in ≤ 10 s: "
+                    f"**{'met' if ok else 'not met'}** (slowest `{worst}`, {t:.1f} s"
+                    + (f"; failed: {', '.join(failed)}" if failed else "") + ")."]
     return "\n".join(out)
 
 
