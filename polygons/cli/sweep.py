@@ -64,7 +64,7 @@ def register(sub) -> None:
     p.add_argument("--points", help="comma-separated point labels to plot (default: [sweep] "
                                     "points, else the sliders, else the last point placed)")
     p.add_argument("--links", help="comma-separated link names for ω/α (default: [sweep] "
-                                   "links, else the first six links after the crank)")
+                                   "links, else every link but the crank)")
     p.add_argument("-o", "--out", default="out", metavar="DIR",
                    help="output directory (default: out)")
     p.add_argument("--formats", type=_formats, default=("png", "svg"),
@@ -134,15 +134,10 @@ def _default_points(sw: Sweep) -> list[str]:
     return [placed[-1]] if placed else [sw.plan.dyads[-1].placed[-1]]
 
 
-#: the links plotted when none are asked for: the first this many after the driver (one
-#: colour each; a 61-link truss's 60 curves and their legend did not fit the panel)
-DEFAULT_LINKS = 6
-
-
 def _default_links(sw: Sweep) -> list[str]:
     drv = sw.scene.driver
     crank = drv.link if isinstance(drv, Crank) else None
-    return [name for name in sw.omega if name != crank][:DEFAULT_LINKS]
+    return [name for name in sw.omega if name != crank]
 
 
 def run(args) -> int:
