@@ -19,7 +19,13 @@ from typing import Mapping
 
 from .scale import DiagramError, Scale, ScaleError
 
-__all__ = ["drawings", "write", "DiagramError", "ScaleError", "Scale", "options"]
+__all__ = ["drawings", "write", "DiagramError", "ScaleError", "Scale", "options",
+           "MAX_STAGED_STEPS"]
+
+#: stage by stage drawings are made for a polygon of at most this many steps; a longer one is
+#: drawn finished only (stage k redraws k steps, so n stages hold n²/2 strokes: a 101-link
+#: truss's 150 stages were 11,000 strokes and most of ``draw``'s time)
+MAX_STAGED_STEPS = 40
 
 
 def options(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
@@ -35,8 +41,9 @@ def options(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = 
 
 def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None = None,
              stages: bool | None = None, text_scale: float = 1.0, klein: str | None = None):
-    """Every drawing of a solution, in order: space, then each polygon and its stages, then
-    (``klein`` or the scene's ``[diagram] klein``) Klein's construction and its stages.
+    """Every drawing of a solution, in order: space, then each polygon and its stages (for a
+    polygon of at most :data:`MAX_STAGED_STEPS` steps), then (``klein`` or the scene's
+    ``[diagram] klein``) Klein's construction and its stages.
 
     ``text_scale`` enlarges the polygons' labels (for figures printed reduced)."""
     from . import polygon, space
@@ -48,7 +55,7 @@ def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None =
             continue
         lay = polygon.layout(sol, diagram, sc.get(diagram), paper, text_scale)
         out.append(polygon.drawing(sol, lay))
-        if opts["stages"]:
+        if opts["stages"] and len(lay.con.steps) <= MAX_STAGED_STEPS:
             for k in range(1, len(lay.con.steps) + 1):
                 out.append(polygon.drawing(sol, lay, k))
     method = klein or sol.scene.options.diagram.klein

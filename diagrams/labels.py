@@ -124,6 +124,7 @@ class Placer:
     boxes: list[Box] = field(default_factory=list)
     frame: Box | None = None     # labels prefer to stay inside (cost otherwise)
     soft_cost: float = 4.0       # cost of crossing a soft line (≈ 4 steps further out)
+    _grid: tuple | None = field(default=None, repr=False, compare=False)
 
     def hard(self, a: Pt, b: Pt, clearance: float = 0.8) -> None:
         self.hard_segments.append((a, b, clearance))
@@ -134,25 +135,41 @@ class Placer:
     def block(self, box: Box) -> None:
         self.boxes.append(box)
 
-    def free(self, box: Box) -> bool:
+    def free(self, box: Box, near=None) -> bool:
+        """No label, vertex or vector in the way (``near``: the obstacles near ``box``, from
+        :meth:`_near`, else looked up)."""
         gapped = box.grown(LABEL_GAP)
-        if any(gapped.overlaps(b) for b in self.boxes):
+        boxes, hard, _ = near or self._near(box)
+        if any(gapped.overlaps(b) for b in boxes):
             return False
-        return not any(box_hits_segment(box, a, b, c) for a, b, c in self.hard_segments)
+        return not any(box_hits_segment(box, a, b, c) for a, b, c in hard)
 
-    def cost(self, box: Box) -> float:
+    def cost(self, box: Box, near=None) -> float:
         c = 0.0
-        for a, b in self.soft_segments:
+        _, hard, soft = near or self._near(box)
+        for a, b in soft:
             if box_hits_segment(box, a, b, 0.8):
                 c += self.soft_cost
         if self.frame is not None and not (self.frame.contains((box.x0, box.y0))
                                            and self.frame.contains((box.x1, box.y1))):
             c += 1.5
-        # stay clear of vectors where possible
-        near = min((box_segment_distance(box, a, b) - cl for a, b, cl in self.hard_segments),
-                   default=5.0)
+        # stay clear of vectors where possible (a vector farther than 1.5 mm beyond its
+        # clearance adds nothing, so only the near ones are measured)
+        near = min((box_segment_distance(box, a, b) - cl for a, b, cl in hard), default=5.0)
         c += max(0.0, 1.5 - near) * 0.8
         return c
+
+    def _near(self, box: Box):
+        """(boxes, hard segments, soft segments) that can matter to a label in ``box``: all of
+        them on a small drawing; on a large one those indexed in the grid cells ``box`` covers
+        (:class:`_Grid`; every obstacle within its reach of the box is among them, each once,
+        and every use -- any, min, a count -- is order-free, so the answers are the same)."""
+        lists = (self.boxes, self.hard_segments, self.soft_segments)
+        if sum(map(len, lists)) < _GRID_FROM:
+            return lists
+        if self._grid is None:
+            self._grid = (_Grid(_box_reach), _Grid(_hard_reach), _Grid(_soft_reach))
+        return tuple(g.near(lst, box) for g, lst in zip(self._grid, lists))
 
     def place(self, text: str, at: Pt, size: float, *, prefer: float | None = None,
               distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), directions: int = 24,
@@ -187,9 +204,10 @@ class Placer:
                     cx, cy = at[0] + (d + half) * ux, at[1] + (d + half) * uy
                     box = Box(round(cx - w / 2, 3), round(cy - h / 2, 3),
                               round(cx + w / 2, 3), round(cy + h / 2, 3))
-                    if not self.free(box):
+                    near = self._near(box)
+                    if not self.free(box, near):
                         continue
-                    c = self.cost(box) + rank * 0.9
+                    c = self.cost(box, near) + rank * 0.9
                     if prefer is not None:
                         diff = abs((th - prefer + math.pi) % (2 * math.pi) - math.pi)
                         c += diff / math.pi * 1.2
@@ -212,6 +230,127 @@ class Placer:
         self.block(box)
         baseline = box.y0 + DESCENT * size
         return (box.x0, baseline, "start", box)
+
+
+# ---------------------------------------------------------------- the obstacles' grid
+#: from this many obstacles a Placer looks them up in a grid instead of testing every one
+#: (each label tries ~170 boxes: testing all N obstacles made placing N labels cost N²)
+_GRID_FROM = 48
+#: the grid's cell (mm)
+_CELL = 6.0
+#: a segment needing more samples than this is tested against every box instead
+_MAX_SAMPLES = 400
+
+
+def _box_reach(b: Box):
+    """A placed box: its cells, grown by the gap two labels keep (``free``)."""
+    return b.grown(LABEL_GAP + 0.01), None
+
+
+def _hard_reach(seg):
+    """A vector: blocks a box within its clearance (``free``) and costs within 1.5 mm more
+    (``cost``)."""
+    a, b, cl = seg
+    return (a, b), max(cl, 0.0) + 1.5 + 0.01
+
+
+def _soft_reach(seg):
+    """A construction line: costs within 0.8 mm (``cost``)."""
+    a, b = seg
+    return (a, b), 0.8 + 0.01
+
+
+class _Grid:
+    """Obstacles by the square cells (:data:`_CELL` mm) of their reach, kept in step with the
+    Placer's list: items appended are added, items popped from the end removed, a list
+    replaced is indexed afresh."""
+
+    def __init__(self, reach):
+        self.reach = reach
+        self.source = None                   # the list indexed
+        self.items: list = []                # its items, as indexed
+        self.keys: list = []                 # each item's cells (None: tested always)
+        self.cells: dict = {}
+        self.always: set = set()
+        self.memo: dict = {}                 # a cell range -> its items (until a change)
+
+    def _sync(self, lst) -> None:
+        if lst is not self.source:
+            self.source, self.items, self.keys, self.cells = lst, [], [], {}
+            self.always = set()
+            self.memo = {}
+        n = len(self.items)
+        if n == len(lst) and (not n or lst[n - 1] is self.items[n - 1]):
+            return                           # unchanged (the common case)
+        self.memo = {}
+        while n > len(lst) or (n and lst[n - 1] is not self.items[n - 1]):
+            n -= 1                           # popped (or changed): drop it from the cells
+            keys = self.keys.pop()
+            self.items.pop()
+            if keys is None:
+                self.always.discard(n)
+            else:
+                for k in keys:
+                    self.cells[k].discard(n)
+        for i in range(n, len(lst)):
+            keys = self._cells_of(lst[i])
+            self.items.append(lst[i])
+            self.keys.append(keys)
+            if keys is None:
+                self.always.add(i)
+            else:
+                for k in keys:
+                    self.cells.setdefault(k, set()).add(i)
+
+    def _cells_of(self, item):
+        shape, margin = self.reach(item)
+        if isinstance(shape, Box):
+            return _cover(shape.x0, shape.y0, shape.x1, shape.y1)   # None: huge
+        (ax, ay), (bx, by) = shape
+        length = math.hypot(bx - ax, by - ay)
+        if not math.isfinite(length):
+            return None
+        n = int(length / (_CELL / 2)) + 1    # samples at most half a cell apart
+        if n > _MAX_SAMPLES:
+            return None
+        m = margin + _CELL / 4               # every point of the segment within a
+        keys = set()                         # quarter cell of a sample
+        for j in range(n + 1):
+            t = j / n
+            x, y = ax + t * (bx - ax), ay + t * (by - ay)
+            keys.update(_cover(x - m, y - m, x + m, y + m) or ())
+        return keys
+
+    def near(self, lst, box: Box) -> list:
+        self._sync(lst)
+        x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
+        if not math.isfinite(x0 + x1 + y0 + y1):
+            return lst
+        span = (math.floor(x0 / _CELL), math.floor(y0 / _CELL), math.floor(x1 / _CELL),
+                math.floor(y1 / _CELL))
+        got = self.memo.get(span)
+        if got is None:
+            keys = _cover(x0, y0, x1, y1)
+            if keys is None:
+                return lst
+            found = set(self.always)
+            cells = self.cells
+            for k in keys:
+                more = cells.get(k)
+                if more:
+                    found.update(more)
+            got = self.memo[span] = [lst[i] for i in found]   # each once; every use is
+        return got                                             # order-free
+
+
+def _cover(x0, y0, x1, y1):
+    if not math.isfinite(x0 + x1 + y0 + y1):
+        return None
+    i0, i1 = math.floor(x0 / _CELL), math.floor(x1 / _CELL)
+    j0, j1 = math.floor(y0 / _CELL), math.floor(y1 / _CELL)
+    if (i1 - i0 + 1) * (j1 - j0 + 1) > _MAX_SAMPLES:
+        return None                                # huge: tested always / against all
+    return [(i, j) for i in range(i0, i1 + 1) for j in range(j0, j1 + 1)]
 
 
 def largest_gap_direction(at: Pt, others: list[Pt]) -> float | None:

@@ -3,7 +3,9 @@
 Turns a :class:`~diagrams.model.Drawing` (mm, y up) into SVG bytes: the page is sized in mm
 with a viewBox in mm, so the file prints to scale (1 cm on paper is 1 cm of the drawing).
 Output is deterministic (no generated ids, coordinates rounded to 0.001 mm, attributes in a
-fixed order).  svgwrite validates every element and attribute against SVG 1.1 full.
+fixed order).  svgwrite validates every element and attribute against SVG 1.1 full when
+:data:`VALIDATE` is set (the tests set it); drawings are written without it, as the
+validation was ~80 % of the time of a large drawing (the output is the same).
 
 Each vector's component kind has one look (:data:`diagrams.components.LOOKS`): a colour and a
 width/dash pattern, so the meaning survives greyscale printing — styles named ``c-<kind>``
@@ -21,6 +23,9 @@ from .components import LOOKS, new_width
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
 from .notation import mark_labels, plain, svg_runs
 from .text import FONT_FAMILY
+
+#: validate every element and attribute (svgwrite's debug mode); tests/test_diagrams.py sets it
+VALIDATE = False
 
 INK = "#000000"
 FADED = "#8c8c8c"
@@ -100,7 +105,7 @@ class _Writer:
         self.H = d.height
         self.dwg = svgwrite.Drawing(size=(f"{d.width}mm", f"{d.height}mm"),
                                     viewBox=f"0 0 {d.width} {d.height}", profile="full",
-                                    debug=True)
+                                    debug=VALIDATE)
 
     def p(self, pt):
         return (_n(pt[0]), _n(self.H - pt[1]))

@@ -209,6 +209,13 @@ def load_scene(path: str | Path) -> Scene:
     return parse_scene(parse_toml(read_scene_text(path), file), file=file)
 
 
+#: the largest mechanism served (links; fixed, drawn, body points or sliders each), checked
+#: before any work: every command on a 201-link scene takes ~10 s, growing about linearly
+#: (benchmarks/large.py; README "Large mechanisms")
+MAX_LINKS = 250
+MAX_POINTS = 250
+
+
 def parse_scene(data: dict, *, file: str = "<scene>",
                 extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
@@ -216,6 +223,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
             required=("ground", "driver"))
+    for table, most in (("links", MAX_LINKS), ("ground", MAX_POINTS), ("drawn", MAX_POINTS),
+                        ("points", MAX_POINTS), ("sliders", MAX_POINTS)):
+        if isinstance(data.get(table), dict) and len(data[table]) > most:
+            raise SceneError(f"{len(data[table]):,} {table}: at most {most} are served (every "
+                             f"command's cost is measured up to this size)", file=file,
+                             where=table)
     options = parse_options(data, file)
     title = r.string(data["title"], "title") if "title" in data else path_stem(file)
     source = data.get("source", {})

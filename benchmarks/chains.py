@@ -1,0 +1,162 @@
+"""Speed against pylinkage as the mechanism grows: ``python benchmarks/chains.py``.
+
+Chains of N RRR dyads (``benchmarks/large.py``: ``chain(N)``, N = 1 is the four-bar; each
+further dyad a four-bar stage on the point before and a fixed pivot), the same geometry built
+in pylinkage (its ``RRRDyad`` on the crank and on each dyad before).  By the one protocol of
+``benchmarks/protocol.py`` (warm, interleaved, best of several loops, nothing else timed):
+
+* one position: our compiled program pre-built (``prog.solve(θ)``) against pylinkage's
+  pre-built Linkage (the faster of its numba ``step_fast_with_kinematics(1)`` and Python
+  ``step_with_derivatives(1)``), positions, velocities and accelerations of every point;
+* a sweep of ``--positions`` crank angles: ``polygons.sweep.sweep(scene, inputs=...)``
+  against pylinkage's numba ``step_fast_with_kinematics(n)``.
+
+Prints one row per N with both ratios and whether the issue 20 goals hold (compiled ≥ 5×,
+sweep ≥ 2×).  Needs ``pip install -e .[bench]``.
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent))
+
+import large  # noqa: E402
+import protocol  # noqa: E402
+
+
+class ChainLinkage:
+    """pylinkage's model of ``large.scene_text('chain', n)`` (lengths in metres)."""
+
+    def __init__(self, n: int, omega: float, theta0: float):
+        from pylinkage.actuators import Crank
+        from pylinkage.components import Ground
+        from pylinkage.dyads import RRRDyad
+        from pylinkage.simulation import Linkage
+
+        pos = {k: (x * 1e-3, y * 1e-3) for k, (x, y) in large.positions("chain", n).items()}
+        self.pivot, self.r = pos["A"], large.AB * 1e-3
+        a = Ground(*pos["A"], name="A")
+        d = Ground(*pos["D"], name="D")
+        self.crank = Crank(anchor=a, radius=self.r, angular_velocity=0.0,
+                           initial_angle=theta0, name="B")
+        prev = RRRDyad(self.crank.output, d, distance1=large.BC * 1e-3,
+                       distance2=large.CD * 1e-3, x=pos["C"][0], y=pos["C"][1], name="C")
+        comps = [a, d, self.crank, prev]
+        for k in range(2, n + 1):
+            o = Ground(*pos[f"O{k}"], name=f"O{k}")
+            prev = RRRDyad(prev, o, distance1=large.COUPLER * 1e-3,
+                           distance2=large.ROCKER * 1e-3, x=pos[f"P{k}"][0],
+                           y=pos[f"P{k}"][1], name=f"P{k}")
+            comps += [o, prev]
+        self.linkage = Linkage(comps, name=f"chain-{n}")
+        self.linkage.set_input_velocity(self.crank, omega=omega, alpha=0.0)
+
+    def _prepare(self, dtheta: float) -> None:
+        if self.crank.angular_velocity != dtheta or self.linkage._solver_data is None:
+            self.crank.angular_velocity = dtheta
+            self.linkage.compile()
+
+    def _place(self, theta: float) -> None:
+        self.crank.x = self.pivot[0] + self.r * math.cos(theta)
+        self.crank.y = self.pivot[1] + self.r * math.sin(theta)
+
+    def single_fast(self, theta: float):
+        self._prepare(0.0)
+        self._place(theta)
+        return self.linkage.step_fast_with_kinematics(iterations=1)
+
+    def single_python(self, theta: float):
+        self._prepare(0.0)
+        self._place(theta)
+        return next(self.linkage.step_with_derivatives(iterations=1))
+
+    def sweep_fast(self, theta_start: float, n: int, dtheta: float):
+        self._prepare(dtheta)
+        self._place(theta_start - dtheta)
+        return self.linkage.step_fast_with_kinematics(iterations=n)
+
+
+def measure(n: int, positions: int, quick: bool) -> dict:
+    from polygons.compiled import compile_scene
+    from polygons.scene import load_scene
+    from polygons.sweep import sweep
+
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / f"chain-{n}.toml"
+        path.write_text(large.scene_text("chain", n))
+        scene = load_scene(path)
+    theta0 = math.radians(large.THETA)
+    K = 16 if quick else 64
+    # angles near the scene's, where the assembly stated is the one followed
+    thetas = [theta0 + 0.2 * k / K for k in range(K)]
+    prog = compile_scene(scene)
+    pl = ChainLinkage(n, 10.0, theta0)
+    # the same answer first: C and the chain's last point at one angle
+    got = prog.solve(thetas[3])
+    pos, _, _ = pl.single_fast(thetas[3])
+    last = "C" if n == 1 else f"P{n}"
+    ref = np.asarray(pos)[0, -1]
+    ours = np.asarray(got.position(last), dtype=float)
+    agree = float(np.max(np.abs(ours - ref)))
+    reps = 5 if quick else 20
+    idx = list(range(K))
+    t1 = protocol.per_call({"compiled": lambda i: prog.solve(thetas[i]),
+                            "pl fast": lambda i: pl.single_fast(thetas[i]),
+                            "pl py": lambda i: pl.single_python(thetas[i])}, idx, reps)
+    xs = theta0 + 2 * np.pi * np.arange(positions) / positions
+    dth = 2 * np.pi / positions
+    t2 = protocol.per_call({"sweep": lambda _: sweep(scene, inputs=xs),
+                            "pl sweep": lambda _: pl.sweep_fast(float(xs[0]), positions, dth)},
+                           [0], 3 if quick else 7)
+    best_pl = min(t1["pl fast"], t1["pl py"])
+    return dict(n=n, links=large.links_of("chain", n), compiled=t1["compiled"], pl=best_pl,
+                single_ratio=best_pl / t1["compiled"], sweep=positions / t2["sweep"],
+                pl_sweep=positions / t2["pl sweep"], sweep_ratio=t2["pl sweep"] / t2["sweep"],
+                agree=agree)
+
+
+def table(rows) -> str:
+    out = ["| N dyads | links | compiled, pre-built | pylinkage, pre-built | ratio (goal ≥ 5×) "
+           "| sweep | pylinkage sweep | ratio (goal ≥ 2×) |", "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        out.append(f"| {r['n']} | {r['links']} | {r['compiled'] * 1e6:.1f} µs | "
+                   f"{r['pl'] * 1e6:.1f} µs | {r['single_ratio']:.2f}× "
+                   f"{'met' if r['single_ratio'] >= 5 else '**not met**'} | "
+                   f"{r['sweep'] / 1e6:.3g} M/s | {r['pl_sweep'] / 1e6:.3g} M/s | "
+                   f"{r['sweep_ratio']:.2f}× {'met' if r['sweep_ratio'] >= 2 else '**not met**'} |")
+    return "\n".join(out)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--sizes", default="1,2,4,8,16,32")
+    ap.add_argument("--positions", type=int, default=100_000)
+    ap.add_argument("--quick", action="store_true")
+    args = ap.parse_args(argv)
+    try:
+        import pylinkage  # noqa: F401
+    except ImportError as exc:
+        print(f"pylinkage not importable ({exc}); pip install -e .[bench]")
+        return 1
+    rows = []
+    for n in (int(s) for s in args.sizes.split(",")):
+        r = measure(n, args.positions, args.quick)
+        rows.append(r)
+        print(f"N = {n}: compiled {r['compiled'] * 1e6:.1f} µs, pylinkage {r['pl'] * 1e6:.1f} µs "
+              f"({r['single_ratio']:.2f}×); sweep {r['sweep'] / 1e6:.3g} M/s, pylinkage "
+              f"{r['pl_sweep'] / 1e6:.3g} M/s ({r['sweep_ratio']:.2f}×); the two agree to "
+              f"{r['agree']:.1e} m", flush=True)
+    print(table(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
