@@ -333,14 +333,66 @@ def on_line(g, seg, tol: float = 0.3) -> bool:
 
 def _owner_cost(own: Stroke, seg, drawn):
     """extra_cost for a label of stroke ``own`` (paper segment ``seg``): dear when another
-    drawn line or vector is about as near the label's box as its own."""
-    others = [g for st, g in drawn if st is not own and not on_line(g, seg)]
+    drawn line or vector is about as near the label's box as its own.  The other strokes are
+    looked up by the cells of a coarse grid (:class:`_Strokes`, made once per drawing), so a
+    label costs what the strokes near it cost, not every stroke of the drawing."""
+    index = _strokes_of(drawn)
 
     def cost(_ai, box) -> float:
         mine = box_segment_distance(box, seg[0], seg[1])
-        near = min((box_segment_distance(box, a, b) for a, b in others), default=math.inf)
-        return 6.0 if near < mine + OWNER_MARGIN else 0.0
+        reach = mine + OWNER_MARGIN
+        for st, (a, b) in index.near(box, reach):
+            if st is own or on_line((a, b), seg):
+                continue
+            if box_segment_distance(box, a, b) < reach:
+                return 6.0
+        return 0.0
     return cost
+
+
+class _Strokes:
+    """The drawn strokes by the square cells (``cell`` mm) their segments' boxes cover."""
+
+    def __init__(self, drawn, cell: float = 8.0):
+        self.cell, self.cells, self.long = cell, {}, []
+        for st, g in drawn:
+            (ax, ay), (bx, by) = g
+            x0, x1 = sorted((ax, bx))
+            y0, y1 = sorted((ay, by))
+            keys = [(i, j) for i in range(int(math.floor(x0 / cell)), int(math.floor(x1 / cell)) + 1)
+                    for j in range(int(math.floor(y0 / cell)), int(math.floor(y1 / cell)) + 1)]
+            if len(keys) > 400:           # a very long line: tested always
+                self.long.append((st, g))
+                continue
+            for k in keys:
+                self.cells.setdefault(k, []).append((st, g))
+
+    def near(self, box, reach: float):
+        """Every stroke whose box comes within ``reach`` of ``box`` (and perhaps a few more),
+        each once."""
+        c = self.cell
+        seen = set()
+        out = list(self.long)
+        for i in range(int(math.floor((box.x0 - reach) / c)), int(math.floor((box.x1 + reach) / c)) + 1):
+            for j in range(int(math.floor((box.y0 - reach) / c)),
+                           int(math.floor((box.y1 + reach) / c)) + 1):
+                for item in self.cells.get((i, j), ()):
+                    if id(item) not in seen:
+                        seen.add(id(item))
+                        out.append(item)
+        return out
+
+
+_STROKE_INDEX: dict = {}
+
+
+def _strokes_of(drawn) -> _Strokes:
+    """The grid of ``drawn`` (one list per drawing), made on its first label."""
+    hit = _STROKE_INDEX.get(id(drawn))
+    if hit is None or hit[0] is not drawn:
+        _STROKE_INDEX.clear()              # one drawing at a time
+        hit = _STROKE_INDEX[id(drawn)] = (drawn, _Strokes(drawn))
+    return hit[1]
 
 
 def _crossings(lead, own: Stroke, drawn) -> int:
