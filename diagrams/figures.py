@@ -66,8 +66,8 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
     for d in diagrams.drawings(sol, scales, paper, False):
         first = d.scale_statement
         d = restack(d, PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
-        for _ in range(12):                        # the next round scales, up to 10⁴ ×
-            fit = _fitting_scale(d)
+        for k in range(12):                        # the next round scales, up to 10⁴ ×
+            fit = _fitting_scale(d, jump=k >= 2)
             if fit is None:
                 break
             d = restack(_redrawn(sol, d, fit, paper), PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
@@ -78,16 +78,21 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
             out.rescaled[d.name] = (first, d.scale_statement)
     for d in finals:
         lay = d.meta.get("layout")
-        if lay is not None:
+        # stage k redraws k steps: stage figures only for a polygon of at most
+        # diagrams.MAX_STAGED_STEPS steps, as `polygons draw` (a large mechanism's handout
+        # shows the finished diagrams and the steps in words)
+        if lay is not None and len(lay.con.steps) <= diagrams.MAX_STAGED_STEPS:
             for st in _stages(sol, d.name, lay.scale, paper, lay):
                 out.drawing[st.name] = st
                 out.svg[st.name] = to_svg(st)
     return out
 
 
-def _fitting_scale(d):
+def _fitting_scale(d, jump: bool = False):
     """None if drawing ``d`` fits the page at its scale, else the next round scale (a larger
-    value per cm): only the drawing itself shrinks with it, not its text."""
+    value per cm): only the drawing itself shrinks with it, not its text.  ``jump`` (after
+    two steps that did not fit: a drawing far too big, a large mechanism): the round scale
+    at least as much larger as the drawing is too big, so it fits in a step or two."""
     from .scale import QUANTITY_OF, make, parse, round_up
     t = plate(d)
     if t.width <= PAGE[0] + 1e-9 and t.height <= PAGE[1] - PLATE_ROOM + 1e-9:
@@ -95,7 +100,10 @@ def _fitting_scale(d):
     lay = d.meta.get("layout")
     scale = lay.scale if lay is not None else d.meta.get("scale") or parse(
         d.scale_statement, QUANTITY_OF.get(d.kind, "length"))
-    return make(scale.quantity, round_up(scale.per_cm * 1.01), forced=True)
+    factor = 1.01
+    if jump:
+        factor = max(factor, t.width / PAGE[0], t.height / (PAGE[1] - PLATE_ROOM))
+    return make(scale.quantity, round_up(scale.per_cm * factor), forced=True)
 
 
 def _redrawn(sol: Solution, d, scale, paper):

@@ -354,7 +354,7 @@ class _Strokes:
     """The drawn strokes by the square cells (``cell`` mm) their segments' boxes cover."""
 
     def __init__(self, drawn, cell: float = 8.0):
-        self.cell, self.cells, self.long = cell, {}, []
+        self.cell, self.cells, self.long, self.all = cell, {}, [], list(drawn)
         for st, g in drawn:
             (ax, ay), (bx, by) = g
             x0, x1 = sorted((ax, bx))
@@ -371,11 +371,14 @@ class _Strokes:
         """Every stroke whose box comes within ``reach`` of ``box`` (and perhaps a few more),
         each once."""
         c = self.cell
+        i0, i1 = int(math.floor((box.x0 - reach) / c)), int(math.floor((box.x1 + reach) / c))
+        j0, j1 = int(math.floor((box.y0 - reach) / c)), int(math.floor((box.y1 + reach) / c))
+        if (i1 - i0 + 1) * (j1 - j0 + 1) > len(self.all):
+            return self.all                  # a reach wider than the grid pays: every stroke
         seen = set()
         out = list(self.long)
-        for i in range(int(math.floor((box.x0 - reach) / c)), int(math.floor((box.x1 + reach) / c)) + 1):
-            for j in range(int(math.floor((box.y0 - reach) / c)),
-                           int(math.floor((box.y1 + reach) / c)) + 1):
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
                 for item in self.cells.get((i, j), ()):
                     if id(item) not in seen:
                         seen.add(id(item))
