@@ -248,42 +248,14 @@ def trimmed(d, drop: tuple[str, ...] = ("heading", "caption"), margin: float = 3
     title nor their caption, since the handout's text says both."""
     from dataclasses import replace
 
-    from .labels import text_box
-    from .model import Arrow, Circle, Polyline, Segment, Text
+    from .layout import extent
 
     groups = tuple(g for g in d.groups if g.ident not in drop
                    and not set(g.cls.split()) & set(drop))
-    xs: list[float] = []
-    ys: list[float] = []
-
-    def walk(items):
-        for it in items:
-            if hasattr(it, "items") and not isinstance(it, (Segment, Polyline, Circle, Arrow,
-                                                            Text)):
-                walk(it.items)
-            elif isinstance(it, Segment):
-                xs.extend((it.a[0], it.b[0]))
-                ys.extend((it.a[1], it.b[1]))
-            elif isinstance(it, Polyline):
-                xs.extend(p[0] for p in it.points)
-                ys.extend(p[1] for p in it.points)
-            elif isinstance(it, Circle):
-                xs.extend((it.centre[0] - it.r, it.centre[0] + it.r))
-                ys.extend((it.centre[1] - it.r, it.centre[1] + it.r))
-            elif isinstance(it, Arrow):
-                pts = [*it.drawn, *((p[0] + it.shift[0], p[1] + it.shift[1]) for p in it.head)]
-                xs.extend(p[0] for p in pts)
-                ys.extend(p[1] for p in pts)
-            elif isinstance(it, Text):
-                b = text_box(it.x, it.baseline, it.text, it.size, it.anchor)
-                if it.weight == "bold":          # bold is about a tenth wider than regular
-                    b = type(b)(b.x0, b.y0, b.x1 + 0.1 * (b.x1 - b.x0), b.y1)
-                xs.extend((b.x0, b.x1))
-                ys.extend((b.y0, b.y1))
-    walk(groups)
-    if not xs:
+    box = extent(groups)                 # (the drawing's own extent: diagrams.layout)
+    if box is None:
         return d
-    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
+    x0, x1, y0, y1 = box.x0, box.x1, box.y0, box.y1
     dx, dy = margin - x0, margin - y0
     return replace(d, width=round(x1 - x0 + 2 * margin, 1),
                    height=round(y1 - y0 + 2 * margin, 1),

@@ -27,16 +27,7 @@ KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load"
              "effort": "force-effort"}
 
 
-def _slug(text: str) -> str:
-    return "".join(ch if ch.isalnum() else "-" for ch in text).strip("-").lower()
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.4g}"
-
-
-def _dir(v) -> float:
-    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+from .fbd import _dir, _fmt, _slug  # noqa: E402,F401 (one of each, the free-body diagrams')
 
 
 def _text(x, y, text, size, anchor):
