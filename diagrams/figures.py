@@ -68,7 +68,7 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
         d = restack(d, PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
         for k in range(12):                        # the next round scales, up to 10⁴ ×
             fit = _fitting_scale(d, jump=k >= 2)
-            if fit is None:
+            if fit is None or _never_fits(d):
                 break
             d = restack(_redrawn(sol, d, fit, paper), PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
         finals.append(d)
@@ -86,6 +86,23 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
                 out.drawing[st.name] = st
                 out.svg[st.name] = to_svg(st)
     return out
+
+
+def _never_fits(d) -> bool:
+    """True when the key or the legend of drawing ``d`` is by itself taller than the page
+    leaves a finished diagram (a large mechanism's list of vectors): their rows do not
+    shrink with the drawing, so no round scale makes it fit.  The diagram then keeps its
+    scale and is printed reduced (:func:`diagrams.handout._plate` says so) instead of being
+    redrawn at ever larger scales until its polygon is a dot.  (A legend's rows only grow
+    with the scale: a zero polygon adds one.)"""
+    from .layout import extent
+    room = PAGE[1] - PLATE_ROOM + 1e-9
+    for g in d.groups:
+        if g.ident in ("key", "legend"):
+            b = extent(g.items)
+            if b is not None and b.y1 - b.y0 > room:
+                return True
+    return False
 
 
 def _fitting_scale(d, jump: bool = False):
