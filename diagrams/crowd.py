@@ -74,14 +74,14 @@ def shifts(vectors, middle: Pt) -> dict:
     """
     order = sorted(range(len(vectors)),
                    key=lambda i: (-round(math.dist(vectors[i][1], vectors[i][2]), 3), i))
-    placed: list[Seg] = []
+    placed = _Placed()
     out = {}
     for i in order:
         key, a, b = vectors[i]
         seg = (a, b)
         if math.dist(a, b) < 0.05:
             continue
-        if all(collinear_overlap(seg, p) <= OVERLAP_FRACTION for p in placed):
+        if placed.clear(seg):
             placed.append(seg)
             continue
         n = _normal(a, b)
@@ -93,7 +93,7 @@ def shifts(vectors, middle: Pt) -> dict:
                 d = (round(sgn * level * OFFSET * n[0], 3) + 0.0,
                      round(sgn * level * OFFSET * n[1], 3) + 0.0)
                 cand = _moved(seg, d)
-                if all(collinear_overlap(cand, p) <= OVERLAP_FRACTION for p in placed):
+                if placed.clear(cand):
                     found = (d, cand)
                     break
             if found:
@@ -101,6 +101,59 @@ def shifts(vectors, middle: Pt) -> dict:
                 placed.append(found[1])
                 break
     return out
+
+
+class _Placed:
+    """The vectors placed so far, by the square cells (:data:`_CELL` mm) within
+    :data:`COLLINEAR_MM` of them: two segments that overlap on one line come that near each
+    other (the shorter's overlapping part lies within it of the longer), so a new vector is
+    tested against the placed ones filed under its own cells only -- the same answer as
+    testing every one, without testing N² pairs on a large polygon."""
+
+    def __init__(self):
+        self.segs: list[Seg] = []
+        self.cells: dict = {}
+        self.always: list[int] = []
+
+    @staticmethod
+    def _keys(s: Seg, margin: float):
+        (ax, ay), (bx, by) = s
+        n = int(math.dist(s[0], s[1]) / (_CELL / 2)) + 1     # samples half a cell apart
+        if not n <= 2000:
+            return None
+        m = margin + _CELL / 4
+        keys = set()
+        for j in range(n + 1):
+            x, y = ax + j / n * (bx - ax), ay + j / n * (by - ay)
+            for i in range(math.floor((x - m) / _CELL), math.floor((x + m) / _CELL) + 1):
+                for k in range(math.floor((y - m) / _CELL), math.floor((y + m) / _CELL) + 1):
+                    keys.add((i, k))
+        return keys
+
+    def append(self, s: Seg) -> None:
+        idx = len(self.segs)
+        self.segs.append(s)
+        keys = self._keys(s, COLLINEAR_MM + 0.01)
+        if keys is None:
+            self.always.append(idx)
+            return
+        for k in keys:
+            self.cells.setdefault(k, []).append(idx)
+
+    def clear(self, s: Seg) -> bool:
+        """True when ``s`` overlaps no placed vector by more than :data:`OVERLAP_FRACTION`."""
+        keys = self._keys(s, 0.0)
+        if keys is None:
+            near = range(len(self.segs))
+        else:
+            near = set(self.always)
+            for k in keys:
+                near.update(self.cells.get(k, ()))
+        return all(collinear_overlap(s, self.segs[i]) <= OVERLAP_FRACTION for i in near)
+
+
+#: the cell (mm) of :class:`_Placed`
+_CELL = 8.0
 
 
 def leader_ticks(tail: Pt, tip: Pt, shift: Pt) -> list[Seg]:

@@ -79,6 +79,31 @@ def clip(p0: Pt, p1: Pt, box: Box) -> tuple[Pt, Pt] | None:
     return ((p0[0] + t0 * dx, p0[1] + t0 * dy), (p0[0] + t1 * dx, p0[1] + t1 * dy))
 
 
+def _meets(p0: Pt, p1: Pt, x0: float, y0: float, x1: float, y1: float) -> bool:
+    """``clip(p0, p1, Box(x0, y0, x1, y1)) is not None``, the same arithmetic without the
+    boxes and points (the label placer asks it ~10⁵ times on a large drawing)."""
+    ax, ay = p0
+    dx, dy = p1[0] - ax, p1[1] - ay
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
+        if p == 0:
+            if q < 0:
+                return False
+            continue
+        r = q / p
+        if p < 0:
+            if r > t1:
+                return False
+            if r > t0:
+                t0 = r
+        else:
+            if r < t0:
+                return False
+            if r < t1:
+                t1 = r
+    return True
+
+
 def clip_line(anchor: Pt, direction: Pt, box: Box) -> tuple[Pt, Pt] | None:
     """The chord of the infinite line through ``anchor`` along ``direction`` in ``box``."""
     big = 4 * (abs(box.x1 - box.x0) + abs(box.y1 - box.y0) + abs(anchor[0]) + abs(anchor[1]))
@@ -91,10 +116,11 @@ def clip_line(anchor: Pt, direction: Pt, box: Box) -> tuple[Pt, Pt] | None:
 def box_hits_segment(box: Box, p0: Pt, p1: Pt, clearance: float = 0.0) -> bool:
     """True if the segment, thickened by ``clearance`` on each side, meets ``box``."""
     if clearance <= 0:
-        return clip(p0, p1, box) is not None
+        return _meets(p0, p1, box.x0, box.y0, box.x1, box.y1)
     # Minkowski sum of box and a disc ≈ the box grown by the clearance with cut corners;
     # the grown box is conservative (a little larger) which is what a label wants
-    return clip(p0, p1, box.grown(clearance)) is not None
+    return _meets(p0, p1, box.x0 - clearance, box.y0 - clearance, box.x1 + clearance,
+                  box.y1 + clearance)
 
 
 def point_segment_distance(p: Pt, a: Pt, b: Pt) -> float:
@@ -105,7 +131,7 @@ def point_segment_distance(p: Pt, a: Pt, b: Pt) -> float:
 
 
 def box_segment_distance(box: Box, a: Pt, b: Pt) -> float:
-    if clip(a, b, box) is not None:
+    if _meets(a, b, box.x0, box.y0, box.x1, box.y1):
         return 0.0
     corners = [(box.x0, box.y0), (box.x1, box.y0), (box.x1, box.y1), (box.x0, box.y1)]
     d = min(point_segment_distance(c, a, b) for c in corners)
@@ -138,17 +164,26 @@ class Placer:
     def free(self, box: Box, near=None) -> bool:
         """No label, vertex or vector in the way (``near``: the obstacles near ``box``, from
         :meth:`_near`, else looked up)."""
-        gapped = box.grown(LABEL_GAP)
         boxes, hard, _ = near or self._near(box)
-        if any(gapped.overlaps(b) for b in boxes):
-            return False
-        return not any(box_hits_segment(box, a, b, c) for a, b, c in hard)
+        x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
+        gx0, gy0, gx1, gy1 = x0 - LABEL_GAP, y0 - LABEL_GAP, x1 + LABEL_GAP, y1 + LABEL_GAP
+        for b in boxes:                   # (box.grown(LABEL_GAP).overlaps(b))
+            if gx0 < b.x1 and b.x0 < gx1 and gy0 < b.y1 and b.y0 < gy1:
+                return False
+        for a, b, c in hard:              # (box_hits_segment(box, a, b, c))
+            if c <= 0:
+                if _meets(a, b, x0, y0, x1, y1):
+                    return False
+            elif _meets(a, b, x0 - c, y0 - c, x1 + c, y1 + c):
+                return False
+        return True
 
     def cost(self, box: Box, near=None) -> float:
         c = 0.0
         _, hard, soft = near or self._near(box)
-        for a, b in soft:
-            if box_hits_segment(box, a, b, 0.8):
+        x0, y0, x1, y1 = box.x0 - 0.8, box.y0 - 0.8, box.x1 + 0.8, box.y1 + 0.8
+        for a, b in soft:                 # (box_hits_segment(box, a, b, 0.8))
+            if _meets(a, b, x0, y0, x1, y1):
                 c += self.soft_cost
         if self.frame is not None and not (self.frame.contains((box.x0, box.y0))
                                            and self.frame.contains((box.x1, box.y1))):
@@ -159,17 +194,29 @@ class Placer:
         c += max(0.0, 1.5 - near) * 0.8
         return c
 
+    def near_boxes(self, box: Box) -> list[Box]:
+        """The placed labels that may come within :data:`LABEL_GAP` of ``box`` (every one that
+        does, perhaps a few more; in no particular order)."""
+        return self._near(box)[0]
+
     def _near(self, box: Box):
         """(boxes, hard segments, soft segments) that can matter to a label in ``box``: all of
         them on a small drawing; on a large one those indexed in the grid cells ``box`` covers
         (:class:`_Grid`; every obstacle within its reach of the box is among them, each once,
         and every use -- any, min, a count -- is order-free, so the answers are the same)."""
         lists = (self.boxes, self.hard_segments, self.soft_segments)
-        if sum(map(len, lists)) < _GRID_FROM:
+        if len(lists[0]) + len(lists[1]) + len(lists[2]) < _GRID_FROM:
             return lists
         if self._grid is None:
             self._grid = (_Grid(_box_reach), _Grid(_hard_reach), _Grid(_soft_reach))
-        return tuple(g.near(lst, box) for g, lst in zip(self._grid, lists))
+        x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
+        if not math.isfinite(x0 + x1 + y0 + y1):
+            return lists
+        span = (math.floor(x0 / _CELL), math.floor(y0 / _CELL), math.floor(x1 / _CELL),
+                math.floor(y1 / _CELL))
+        gb, gh, gs = self._grid
+        return (gb.near(lists[0], box, span), gh.near(lists[1], box, span),
+                gs.near(lists[2], box, span))
 
     def place(self, text: str, at: Pt, size: float, *, prefer: float | None = None,
               distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), directions: int = 24,
@@ -321,24 +368,25 @@ class _Grid:
             keys.update(_cover(x - m, y - m, x + m, y + m) or ())
         return keys
 
-    def near(self, lst, box: Box) -> list:
-        self._sync(lst)
-        x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
-        if not math.isfinite(x0 + x1 + y0 + y1):
-            return lst
-        span = (math.floor(x0 / _CELL), math.floor(y0 / _CELL), math.floor(x1 / _CELL),
-                math.floor(y1 / _CELL))
+    def near(self, lst, box: Box, span) -> list:
+        """The items of ``lst`` filed under the cells ``span`` (the floor of ``box``'s
+        corners over :data:`_CELL`: :meth:`Placer._near`) covers."""
+        n = len(self.items)
+        if (lst is not self.source or n != len(lst)
+                or (n and lst[n - 1] is not self.items[n - 1])):
+            self._sync(lst)
         got = self.memo.get(span)
         if got is None:
-            keys = _cover(x0, y0, x1, y1)
-            if keys is None:
+            i0, j0, i1, j1 = span                  # (the cells _cover(box) lists)
+            if (i1 - i0 + 1) * (j1 - j0 + 1) > _MAX_SAMPLES:
                 return lst
             found = set(self.always)
-            cells = self.cells
-            for k in keys:
-                more = cells.get(k)
-                if more:
-                    found.update(more)
+            get = self.cells.get
+            for i in range(i0, i1 + 1):
+                for j in range(j0, j1 + 1):
+                    more = get((i, j))
+                    if more:
+                        found.update(more)
             got = self.memo[span] = [lst[i] for i in found]   # each once; every use is
         return got                                             # order-free
 
@@ -351,6 +399,49 @@ def _cover(x0, y0, x1, y1):
     if (i1 - i0 + 1) * (j1 - j0 + 1) > _MAX_SAMPLES:
         return None                                # huge: tested always / against all
     return [(i, j) for i in range(i0, i1 + 1) for j in range(j0, j1 + 1)]
+
+
+class StrokeCells:
+    """Drawn strokes ``(stroke, (a, b))`` by the square cells (``cell`` mm) their segments
+    pass near: each segment sampled at most half a cell apart, every sample's cells within a
+    quarter cell (so every point of the segment lies in a cell it is filed under; a long
+    diagonal construction line is filed under the cells along it, not its bounding box)."""
+
+    def __init__(self, drawn, cell: float = 8.0):
+        self.cell, self.cells, self.long, self.all = cell, {}, [], list(drawn)
+        q = cell / 4 + 0.01
+        for idx, (st, g) in enumerate(self.all):
+            (ax, ay), (bx, by) = g
+            length = math.hypot(bx - ax, by - ay)
+            n = int(length / (cell / 2)) + 1 if math.isfinite(length) else 10 ** 9
+            if n > 400:                   # a very long line: tested always
+                self.long.append(idx)
+                continue
+            keys = set()
+            for j in range(n + 1):
+                x, y = ax + j / n * (bx - ax), ay + j / n * (by - ay)
+                for i in range(math.floor((x - q) / cell), math.floor((x + q) / cell) + 1):
+                    for k in range(math.floor((y - q) / cell), math.floor((y + q) / cell) + 1):
+                        keys.add((i, k))
+            for key in keys:
+                self.cells.setdefault(key, []).append(idx)
+
+    def near(self, box, reach: float):
+        """Every stroke within ``reach`` of ``box`` (and perhaps a few more), each once, in
+        no particular order (:func:`diagrams.polygon._owner_cost` asks whether any is near)."""
+        c = self.cell
+        i0, i1 = int(math.floor((box.x0 - reach) / c)), int(math.floor((box.x1 + reach) / c))
+        j0, j1 = int(math.floor((box.y0 - reach) / c)), int(math.floor((box.y1 + reach) / c))
+        if (i1 - i0 + 1) * (j1 - j0 + 1) > len(self.all):
+            return self.all                  # a reach wider than the grid pays: every stroke
+        found = set(self.long)
+        cells = self.cells
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                more = cells.get((i, j))
+                if more:
+                    found.update(more)
+        return [self.all[k] for k in sorted(found)]
 
 
 def largest_gap_direction(at: Pt, others: list[Pt]) -> float | None:

@@ -22,6 +22,7 @@ as one name.  No svgwrite here.
 """
 from __future__ import annotations
 
+import functools
 import html as _html
 import re
 
@@ -63,15 +64,18 @@ _WORD = re.compile(r"(?<![\w/′.\-])[a-z][a-z0-9_]*(?![\w])")
 def join_vectors(text: str, vertices) -> str:
     """Mark vector names made of two vertex names ('b1b' → b1 :data:`JOIN` b) so they
     typeset as b₁b; ``vertices`` are the polygon's vertex names."""
-    names = sorted(set(vertices), key=lambda n: (-len(n), n))
+    names = set(vertices)
+    # the longest vertex name that begins the word and leaves a vertex name (of one length
+    # only one name can begin it): a set lookup per length, not a scan of every name
+    lengths = sorted({len(n) for n in names}, reverse=True)
 
     def repl(m):
         w = m.group(0)
         if w in names:
             return w
-        for a in names:
-            if w.startswith(a) and w[len(a):] in names:
-                return vector(a, w[len(a):])
+        for k in lengths:
+            if k < len(w) and w[:k] in names and w[k:] in names:
+                return vector(w[:k], w[k:])
         return w
     return _WORD.sub(repl, text)
 
@@ -248,18 +252,18 @@ def mark_labels(text: str, labels) -> str:
     """Mark the space labels with digits in ``text`` so they typeset with subscripts (O2 →
     O₂, the link O2P2 → O₂P₂): only words made wholly of the scene's ``labels`` (so 'Q3' of
     'SAE4 Q3' stays unless Q3 is a point), never a subscript already (ω_O4P4)."""
-    names = sorted({n for n in labels if n}, key=lambda n: (-len(n), n))
-    if not any(ch.isdigit() for n in names for ch in n):
+    names, lengths, digits = _label_index(tuple(labels))
+    if not digits:
         return text
 
-    def split(w):
+    def split(w):         # the longest label first (of one length only one can begin w)
         if not w:
             return []
-        for n in names:
-            if w.startswith(n):
-                rest = split(w[len(n):])
+        for k in lengths:
+            if k <= len(w) and w[:k] in names:
+                rest = split(w[k:])
                 if rest is not None:
-                    return [n] + rest
+                    return [w[:k]] + rest
         return None
 
     def repl(m):
@@ -268,6 +272,15 @@ def mark_labels(text: str, labels) -> str:
             return m.group(0)
         return "".join(re.sub(r"^([A-Z])(\d+)$", rf"\1{MARK}\2", p) for p in parts)
     return _CAPS.sub(repl, text)
+
+
+@functools.lru_cache(maxsize=16)
+def _label_index(labels: tuple) -> tuple[frozenset, tuple[int, ...], bool]:
+    """(the labels, their lengths longest first, whether any has a digit): made once per
+    drawing's labels, not once per text (a large mechanism's drawing has thousands)."""
+    names = frozenset(n for n in labels if n)
+    return (names, tuple(sorted({len(n) for n in names}, reverse=True)),
+            any(ch.isdigit() for n in names for ch in n))
 
 
 def mark_drawing(drawing, labels):

@@ -29,8 +29,8 @@ from polygons.evaluate import Solution
 from polygons.plan import Step
 
 from . import crowd, inset, scale as scales
-from .labels import (Box, Placer, bounds, box_hits_segment, box_segment_distance, clip_line,
-                     largest_gap_direction, leader)
+from .labels import (Box, Placer, StrokeCells, bounds, box_hits_segment, box_segment_distance,
+                     clip_line, largest_gap_direction, leader)
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
@@ -81,18 +81,26 @@ def _extent_points(con: Construction) -> list[Pt]:
     return pts
 
 
-def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
-           paper: str | None = None, text_scale: float = 1.0) -> Layout:
+def scale_of(sol: Solution, diagram: str, scale: scales.Scale | None = None,
+             paper: str | None = None):
+    """(scale, construction, its extent box): the scale :func:`layout` draws ``diagram`` to
+    (``scale`` checked, else the round scale chosen for ``paper``), without placing a label
+    (``polygons check`` grades against it)."""
     con = construction(sol, diagram)
-    pts = _extent_points(con)
-    bb = bounds(pts)
+    bb = bounds(_extent_points(con))
     extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
     lengths = [math.hypot(s.b[0] - s.a[0], s.b[1] - s.a[1]) for s in con.strokes
                if s.kind == "arrow"]
     if scale is None:
         scale = scales.choose(QUANTITY[diagram], extent, lengths, paper)
     scales.check_size(scale, extent, diagram)
-    lay = Layout(con, scale, (bb.x0, bb.y0), Box(0, 0, 0, 0), (), {}, {})
+    return scale, con, bb
+
+
+def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
+           paper: str | None = None, text_scale: float = 1.0) -> Layout:
+    scale, con, bb = scale_of(sol, diagram, scale, paper)
+    extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
     k = scale.mm_per_si
     w, h = extent[0] * k, extent[1] * k
     frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
@@ -254,8 +262,7 @@ def _place_labels(lay: Layout) -> Layout:
                 required=False, extra_cost=lambda _ai, b, st=st, g=g: _crossings(
                     _leader_to(b, g), st, drawn) * 3.0 + _through(_leader_to(b, g), placer))
             lead = None if far is None else _leader_to(far[3], g)
-            if far is None or (lead is not None and _through(lead, placer_without(placer,
-                                                                                  far[3]))):
+            if far is None or (lead is not None and _through(lead, placer, far[3])):
                 if far is not None:
                     placer.boxes.remove(far[3])
                 placer.block(box)
@@ -303,7 +310,7 @@ def _place_labels(lay: Layout) -> Layout:
                 extra_cost=lambda _ai, box, mid=mid, st=st: _crossings(
                     _leader(box, mid), st, drawn) * 3.0 + _through(_leader(box, mid), placer))
             lead = None if placed is None else _leader(placed[3], mid)
-            if lead is not None and _through(lead, placer_without(placer, placed[3])):
+            if lead is not None and _through(lead, placer, placed[3]):
                 placer.boxes.remove(placed[3])    # no clear way to it: the near place
                 placed, lead = None, None
             if placed is None and near is not None:
@@ -334,8 +341,8 @@ def on_line(g, seg, tol: float = 0.3) -> bool:
 def _owner_cost(own: Stroke, seg, drawn):
     """extra_cost for a label of stroke ``own`` (paper segment ``seg``): dear when another
     drawn line or vector is about as near the label's box as its own.  The other strokes are
-    looked up by the cells of a coarse grid (:class:`_Strokes`, made once per drawing), so a
-    label costs what the strokes near it cost, not every stroke of the drawing."""
+    looked up by the cells of a coarse grid (:class:`diagrams.labels.StrokeCells`, made once
+    per drawing), so a label costs what the strokes near it cost, not every stroke."""
     index = _strokes_of(drawn)
 
     def cost(_ai, box) -> float:
@@ -350,72 +357,39 @@ def _owner_cost(own: Stroke, seg, drawn):
     return cost
 
 
-class _Strokes:
-    """The drawn strokes by the square cells (``cell`` mm) their segments' boxes cover."""
-
-    def __init__(self, drawn, cell: float = 8.0):
-        self.cell, self.cells, self.long, self.all = cell, {}, [], list(drawn)
-        for st, g in drawn:
-            (ax, ay), (bx, by) = g
-            x0, x1 = sorted((ax, bx))
-            y0, y1 = sorted((ay, by))
-            keys = [(i, j) for i in range(int(math.floor(x0 / cell)), int(math.floor(x1 / cell)) + 1)
-                    for j in range(int(math.floor(y0 / cell)), int(math.floor(y1 / cell)) + 1)]
-            if len(keys) > 400:           # a very long line: tested always
-                self.long.append((st, g))
-                continue
-            for k in keys:
-                self.cells.setdefault(k, []).append((st, g))
-
-    def near(self, box, reach: float):
-        """Every stroke whose box comes within ``reach`` of ``box`` (and perhaps a few more),
-        each once."""
-        c = self.cell
-        i0, i1 = int(math.floor((box.x0 - reach) / c)), int(math.floor((box.x1 + reach) / c))
-        j0, j1 = int(math.floor((box.y0 - reach) / c)), int(math.floor((box.y1 + reach) / c))
-        if (i1 - i0 + 1) * (j1 - j0 + 1) > len(self.all):
-            return self.all                  # a reach wider than the grid pays: every stroke
-        seen = set()
-        out = list(self.long)
-        for i in range(i0, i1 + 1):
-            for j in range(j0, j1 + 1):
-                for item in self.cells.get((i, j), ()):
-                    if id(item) not in seen:
-                        seen.add(id(item))
-                        out.append(item)
-        return out
-
-
 _STROKE_INDEX: dict = {}
 
 
-def _strokes_of(drawn) -> _Strokes:
+def _strokes_of(drawn) -> StrokeCells:
     """The grid of ``drawn`` (one list per drawing), made on its first label."""
     hit = _STROKE_INDEX.get(id(drawn))
     if hit is None or hit[0] is not drawn:
         _STROKE_INDEX.clear()              # one drawing at a time
-        hit = _STROKE_INDEX[id(drawn)] = (drawn, _Strokes(drawn))
+        hit = _STROKE_INDEX[id(drawn)] = (drawn, StrokeCells(drawn))
     return hit[1]
 
 
 def _crossings(lead, own: Stroke, drawn) -> int:
-    """How many drawn strokes other than ``own`` the leader ``lead`` crosses."""
+    """How many drawn strokes other than ``own`` the leader ``lead`` crosses (those filed
+    under the cells of its box: a stroke crossing it has a point in that box)."""
     if lead is None:
         return 0
-    return sum(1 for st, g in drawn if st is not own and _cross(lead, g))
+    (ax, ay), (bx, by) = lead
+    box = Box(min(ax, bx), min(ay, by), max(ax, bx), max(ay, by))
+    return sum(1 for st, g in _strokes_of(drawn).near(box, 0.0)
+               if st is not own and _cross(lead, g))
 
 
-def placer_without(placer: Placer, box: Box) -> Placer:
-    """A copy of ``placer``'s boxes without ``box`` (a label's own, when testing its leader)."""
-    return Placer(boxes=[b for b in placer.boxes if b is not box])
-
-
-def _through(lead, placer: Placer) -> float:
-    """Dear (100) when the leader ``lead`` passes through a label already placed."""
+def _through(lead, placer: Placer, skip: Box | None = None) -> float:
+    """Dear (100) when the leader ``lead`` passes through a label already placed (other than
+    ``skip``: the label's own, when testing its leader); the labels near it looked up."""
     if lead is None:
         return 0.0
-    return 100.0 if any(box_hits_segment(b, lead[0], lead[1], 0.35) for b in placer.boxes
-                        if b.x1 - b.x0 > 1.7) else 0.0      # (a vertex's dot it may pass)
+    (ax, ay), (bx, by) = lead
+    near = placer.near_boxes(Box(min(ax, bx) - 0.35, min(ay, by) - 0.35, max(ax, bx) + 0.35,
+                                 max(ay, by) + 0.35))
+    return 100.0 if any(box_hits_segment(b, lead[0], lead[1], 0.35) for b in near
+                        if b is not skip and b.x1 - b.x0 > 1.7) else 0.0   # (a dot it may pass)
 
 
 def _cross(p, q) -> bool:
@@ -725,7 +699,18 @@ def prose(sol: Solution, con: Construction, text: str) -> str:
     """A step's sentence in the drawings' notation: vector names split (b1b → b₁b), a bare ω
     or α before '× XY' named after its link (ω² × AB → ω_AB² × AB)."""
     return join_vectors(name_bare_omegas(slot_names(display(text), sol.scene),
-                                         link_names(sol.scene)), con.vertices)
+                                         _link_names(sol.scene)), con.vertices)
+
+
+_LINK_NAMES: list = [None, {}]
+
+
+def _link_names(scene) -> dict:
+    """:func:`notation.link_names` of ``scene``, made once per scene (a large mechanism's
+    legend and captions ask it for every line; read only)."""
+    if _LINK_NAMES[0] is not scene:
+        _LINK_NAMES[:] = [scene, link_names(scene)]
+    return _LINK_NAMES[1]
 
 
 def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:

@@ -70,7 +70,7 @@ def test_the_label_grid_places_every_label_where_testing_every_obstacle_does(
     sol = solve(load_scene(write_scene(large.scene_text("truss", 4))))
     used, grid = [], labels._Grid
     monkeypatch.setattr(labels, "_Grid", type("Spy", (grid,), {
-        "near": lambda self, lst, box: used.append(1) or grid.near(self, lst, box)}))
+        "near": lambda self, lst, box, span: used.append(1) or grid.near(self, lst, box, span)}))
 
     def placed():
         lay = polygon.layout(sol, "velocity")

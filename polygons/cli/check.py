@@ -334,7 +334,7 @@ def diagram_scales(sol: Solution, forced: dict | None = None) -> dict:
         from diagrams import polygon
         opts = diagrams.options(sol, forced)
         for d in sol.scene.solve:
-            out[d] = polygon.layout(sol, d, opts["scales"].get(d), opts["paper"]).scale
+            out[d] = polygon.scale_of(sol, d, opts["scales"].get(d), opts["paper"])[0]
     except Exception:       # diagrams not available: choose as they would, from the vertices
         try:
             from diagrams import scale as scales
