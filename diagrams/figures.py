@@ -32,6 +32,10 @@ PLATE_ROOM = 26.0
 #: margin (mm) of a finished diagram as the handout prints it (:func:`plate`): its heading
 #: left out (the page's heading names it) and cropped to its drawing, key and legend
 PLATE_MARGIN = 3.0
+#: a finished diagram is not redrawn at a coarser scale to fit the page once what it draws
+#: to scale would be smaller than this (mm, its larger side): smaller, a polygon can no
+#: longer be measured nor laid over a drawing; it keeps its first scale, printed reduced
+MIN_DRAWN_MM = 30.0
 
 
 def plate(d):
@@ -56,7 +60,8 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
 
     The finished diagrams fit the handout's portrait page at their stated scale (key and
     legend moved below the drawing when beside it they are too wide; else the next round
-    scale that fits, recorded in ``rescaled``); the stage figures are cropped to their
+    scale that fits, recorded in ``rescaled``, while the drawing stays :data:`MIN_DRAWN_MM`
+    across: else it keeps its scale and is printed reduced); the stage figures are cropped to their
     drawing, with labels set so that they print :data:`PRINTED_LABEL` mm high or more."""
     import diagrams
     from .layout import MARGIN, restack
@@ -65,12 +70,7 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
     finals = []
     for d in diagrams.drawings(sol, scales, paper, False):
         first = d.scale_statement
-        d = restack(d, PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
-        for k in range(12):                        # the next round scales, up to 10⁴ ×
-            fit = _fitting_scale(d, jump=k >= 2)
-            if fit is None or _never_fits(d):
-                break
-            d = restack(_redrawn(sol, d, fit, paper), PAGE[0] + 2 * (MARGIN - PLATE_MARGIN))
+        d = _fitted(sol, restack(d, PAGE[0] + 2 * (MARGIN - PLATE_MARGIN)), paper)
         finals.append(d)
         out.drawing[d.name] = d
         out.svg[d.name] = to_svg(d)
@@ -86,6 +86,77 @@ def figures(sol: Solution, scales=None, paper: str | None = None) -> Figures:
                 out.drawing[st.name] = st
                 out.svg[st.name] = to_svg(st)
     return out
+
+
+def _fitted(sol: Solution, d, paper):
+    """Finished drawing ``d`` (restacked) at the first round scale, its own or a coarser one,
+    at which it fits the page; ``d`` itself when none does while the drawing stays
+    :data:`MIN_DRAWN_MM` across (:func:`_readable`) or its key or legend alone is too tall
+    (:func:`_never_fits`): printed reduced then, not redrawn until its polygon is a dot."""
+    from .layout import MARGIN, restack
+    width = PAGE[0] + 2 * (MARGIN - PLATE_MARGIN)
+    start = d
+    for k in range(12):                        # the next round scales, up to 10⁴ ×
+        fit = _fitting_scale(d, jump=k >= 2)
+        if fit is None:
+            return d
+        fit = None if _never_fits(d) else _readable(d, fit)
+        if fit is None:
+            return start
+        d = restack(_redrawn(sol, d, fit, paper), width)
+    return d if _fitting_scale(d) is None else start
+
+
+def _drawn_mm(d):
+    """(the larger side (mm) of what drawing ``d`` draws to scale -- a polygon's
+    construction, the mechanism's points --, its scale), or None for another drawing."""
+    from .labels import bounds
+    from .polygon import FRAME_MARGIN
+    from .scale import parse
+    lay = d.meta.get("layout")
+    if lay is not None:
+        f = lay.frame
+        return max(f.x1 - f.x0, f.y1 - f.y0) - 2 * FRAME_MARGIN, lay.scale
+    pos = d.meta.get("positions")
+    if d.kind != "space" or not pos:
+        return None
+    scale = d.meta.get("scale") or parse(d.scale_statement, "length")
+    b = bounds(list(pos.values()))
+    return max(b.x1 - b.x0, b.y1 - b.y0) * scale.mm_per_si, scale
+
+
+def _readable(d, scale):
+    """``scale`` if drawing ``d`` drawn at it stays :data:`MIN_DRAWN_MM` across, else the
+    coarsest round scale between its own and ``scale`` at which it does, None if none is
+    coarser than its own."""
+    from .scale import make
+    got = _drawn_mm(d)
+    if got is None:
+        return scale
+    mm, own = got
+    if mm * own.per_cm / scale.per_cm >= MIN_DRAWN_MM - 1e-9:
+        return scale
+    limit = round_down(own.per_cm * mm / MIN_DRAWN_MM)
+    if not limit > own.per_cm * (1 + 1e-9):
+        return None
+    return make(scale.quantity, limit, forced=True)
+
+
+def round_down(x: float) -> float:
+    """The largest round scale value (1, 2, 2.5, 5 × 10ⁿ) ≤ ``x`` (0 for a value that is not
+    positive and finite)."""
+    import math
+
+    from .scale import ROUND
+    if not (x > 0 and math.isfinite(x)):
+        return 0.0
+    n = math.floor(math.log10(x))
+    for k in (n + 1, n, n - 1):
+        for m in reversed(ROUND):
+            v = float(f"{m}e{k}")
+            if v <= x * (1 + 1e-12):
+                return v
+    return 0.0  # pragma: no cover
 
 
 def _never_fits(d) -> bool:

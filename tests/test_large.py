@@ -73,12 +73,106 @@ def test_the_label_grid_places_every_label_where_testing_every_obstacle_does(
         "near": lambda self, lst, box, span: used.append(1) or grid.near(self, lst, box, span)}))
 
     def placed():
-        lay = polygon.layout(sol, "velocity")
-        return lay.vertex_labels, lay.line_labels, lay.vector_labels
+        lays = [polygon.layout(sol, d) for d in ("velocity", "acceleration")]
+        return [(lay.vertex_labels, lay.line_labels, lay.vector_labels, lay.leaders,
+                 lay.insets) for lay in lays]
     fast = placed()
     assert used                                  # the grid was used
+    assert any(lay[3] for lay in fast)           # leaders tested (crossings, labels passed)
+    # every obstacle tested, every stroke for a label's owner and a leader's crossings
     monkeypatch.setattr(labels, "_GRID_FROM", 10 ** 9)
+    monkeypatch.setattr(labels.StrokeCells, "near", lambda self, box, reach: self.all)
     assert placed() == fast
+
+
+def test_collinear_vectors_found_near_are_those_found_testing_every_pair(monkeypatch):
+    """diagrams.crowd.shifts tests a vector against the placed ones filed under its cells:
+    the same shifts as testing every placed vector, on fans and overlapping runs of vectors."""
+    import random
+
+    from diagrams import crowd
+    rnd = random.Random(7)
+    vecs = []
+    for i in range(150):
+        x, y = rnd.uniform(0, 80), rnd.uniform(0, 60)
+        ang = rnd.choice([0.0, 0.5, 1.2, math.pi / 2]) + rnd.choice([0.0, 0.0, 0.004])
+        L = rnd.choice([3.0, 10.0, 25.0, 60.0])
+        if i % 3 == 0 and vecs:                  # on the line of an earlier one
+            _, (x, y), (bx, by) = vecs[rnd.randrange(len(vecs))]
+            ang = math.atan2(by - y, bx - x)
+        vecs.append((i, (x, y), (x + L * math.cos(ang), y + L * math.sin(ang))))
+    fast = crowd.shifts(vecs, (40.0, 30.0))
+    assert len(fast) > 10
+    monkeypatch.setattr(crowd._Placed, "_keys", staticmethod(lambda s, margin: None))
+    assert crowd.shifts(vecs, (40.0, 30.0)) == fast
+
+
+def _figures_counted(monkeypatch, sol):
+    """diagrams.figures.figures(sol), how many polygons it laid out and spaces it drew, and
+    the scale each diagram was first drawn to."""
+    from diagrams import figures, polygon, space
+    calls = {"layout": 0, "space": 0}
+    first: dict = {}
+    lay, draw = polygon.layout, space.drawing
+
+    def laid(sol, diagram, *a, **k):
+        calls["layout"] += 1
+        out = lay(sol, diagram, *a, **k)
+        first.setdefault(diagram, out.scale.statement)
+        return out
+
+    def drawn(*a, **k):
+        calls["space"] += 1
+        out = draw(*a, **k)
+        first.setdefault("space", out.scale_statement)
+        return out
+    monkeypatch.setattr(polygon, "layout", laid)
+    monkeypatch.setattr(space, "drawing", drawn)
+    return figures.figures(sol), calls, first
+
+
+def test_a_legend_taller_than_the_page_is_not_redrawn_at_ever_larger_scales(
+        write_scene, monkeypatch):
+    """41-link truss: every finished diagram's legend (one line a vector or link) is taller
+    than the page, so no scale makes it fit: each is laid out once, at its first scale, and
+    printed reduced (it took 24 layouts, the polygons redrawn at up to 10⁴ × their scale);
+    its polygons have more than diagrams.MAX_STAGED_STEPS steps: no stage figures."""
+    sol = solve(load_scene(write_scene(large.scene_text("truss", 19, loads=True))))
+    figs, calls, first = _figures_counted(monkeypatch, sol)
+    assert calls == {"layout": 2, "space": 1}
+    assert figs.rescaled == {} and sorted(figs.svg) == ["acceleration", "space", "velocity"]
+    assert {n: d.scale_statement for n, d in figs.drawing.items()} == first
+
+
+def test_a_diagram_is_not_rescaled_to_fit_until_it_is_a_dot(write_scene, monkeypatch):
+    """21-link truss: the velocity polygon's labels and legend do not fit the page at any
+    scale that leaves the polygon diagrams.figures.MIN_DRAWN_MM across (it was redrawn 12
+    times, down to 1 cm = 200 m/s, 2000 × smaller): it keeps its first scale, and the
+    handout prints it reduced, saying so."""
+    from diagrams import figures
+    from diagrams.handout import handout
+    sol = solve(load_scene(write_scene(large.scene_text("truss", 9, loads=True))))
+    figs, calls, first = _figures_counted(monkeypatch, sol)
+    assert calls["layout"] <= 8                  # (3 of them for the stage figures)
+    assert figs.drawing["velocity"].scale_statement == first["velocity"] == "1 cm = 0.1 m/s"
+    for name in ("space", "velocity", "acceleration"):
+        d = figs.drawing[name]
+        if name in figs.rescaled:
+            assert figures._drawn_mm(d)[0] >= figures.MIN_DRAWN_MM
+        else:
+            assert d.scale_statement == first[name]
+    assert "Reduced to" in handout(sol, figs=figs)
+    assert [figures.round_down(x) for x in (2.83, 10.0, 0.3, 0.0999, 7e-5)] == \
+        [2.5, 10.0, 0.25, 0.05, 5e-5]
+
+
+def test_check_grades_at_the_scale_the_diagrams_are_drawn_to():
+    """polygons check reads the diagrams' scale without placing their labels."""
+    from diagrams import polygon
+    for case in ("s001-we1", "new-watt-six-bar", "s000-d225-2003-q3"):
+        sol = solve(load_scene(ROOT / "cases" / f"{case}.toml"))
+        for d in sol.scene.solve:
+            assert polygon.scale_of(sol, d)[0] == polygon.layout(sol, d).scale
 
 
 def test_svg_written_without_validation_is_what_validation_passes(monkeypatch):
