@@ -261,7 +261,7 @@ def main(argv=None) -> int:
                     help="also time 11, 21, 41, 81, 141, 201 links and print each command's "
                          "log-log exponent (the process start subtracted)")
     ap.add_argument("--readme", action="store_true",
-                    help="--fit without centres, and rewrite README.md's block between "
+                    help="--fit, and rewrite README.md's block between "
                          "<!-- large:begin --> and <!-- large:end --> with the table")
     ap.add_argument("--write", metavar="FILE", help="write the scene of the first --links "
                     "count to FILE and stop")
@@ -274,7 +274,6 @@ def main(argv=None) -> int:
         return 0
     if args.readme:
         args.fit = True
-        cmds = [c for c in cmds if c != "centres"]
     if args.fit:
         counts = sorted(set(counts) | {11, 21, 41, 81, 141, 201})
     rows = {}
