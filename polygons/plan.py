@@ -60,6 +60,10 @@ def _order(scene: Scene) -> list[Dyad]:
 
     labels = [lab for lab in scene.labels if lab not in placed]
     links = list(scene.links.values())
+    at: dict[str, list] = {}                  # each point's links, in the scene's order
+    for ln in links:
+        for end in dict.fromkeys((ln.a, ln.b)):
+            at.setdefault(end, []).append(ln)
     while True:
         progress = False
         for module in kinds.SLOT_KINDS:
@@ -70,7 +74,7 @@ def _order(scene: Scene) -> list[Dyad]:
         for x in labels:
             if x in placed:
                 continue
-            d = _point_dyad(scene, x, placed, links)
+            d = _point_dyad(scene, x, placed, at.get(x, ()))
             if d is not None:
                 dyads.append(d)
                 placed.update(d.placed)
@@ -108,7 +112,8 @@ def _order(scene: Scene) -> list[Dyad]:
 
 
 def _point_dyad(scene: Scene, x: str, placed: set[str], links) -> Dyad | None:
-    """The dyad placing ``x`` now, asked of the first kind that claims ``x``."""
+    """The dyad placing ``x`` now, asked of the first kind that claims ``x`` (``links``: those
+    at ``x``, or more)."""
     joints = [(l.b if l.a == x else l.a, l.name) for l in links
               if x in (l.a, l.b) and l.length is not None]
     known = [(other, name) for other, name in joints if other in placed]
