@@ -31,14 +31,17 @@ def vertex(name: str) -> str:
 def vertices_in(text: str, names) -> str:
     """Every vertex name of ``names`` in ``text`` spelled as printed, also two of them
     written together as a vector ('p2_1p2' → 'p₂′p₂'); other words are left alone."""
-    known = sorted(set(names), key=lambda n: (-len(n), n))
+    known = set(names)
+    # the longest name that begins the word and leaves a name (of one length only one name
+    # can begin it): a set lookup per length, not a scan of every name
+    lengths = sorted({len(n) for n in known}, reverse=True)
 
     def repl(m):
         w = m.group(0)
         if w in known:
             return vertex(w)
-        for a in known:
-            if w.startswith(a) and w[len(a):] in known:
-                return vertex(a) + vertex(w[len(a):])
+        for k in lengths:
+            if k < len(w) and w[:k] in known and w[k:] in known:
+                return vertex(w[:k]) + vertex(w[k:])
         return w
     return _WORD.sub(repl, text)
