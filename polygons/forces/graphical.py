@@ -490,9 +490,8 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file) -> Group:
     sname = f"S ({legs[i][0]} × {legs[j][0]})"
     moments = tuple(f"moments about {c} of {link}'s known forces: {ms[q] + 0.0:.6g} N m (CCW)"
                     for q, (link, o, c) in enumerate(legs)) + (
-        f"moments about the Assur point {sname} of the whole group's known forces and normal "
-        f"components: {mtot + 0.0:.6g} N m; {fn[k].name} has arm {arm * 1e3 + 0.0:.6g} mm: "
-        f"{ak + 0.0:.6g} N",)
+        f"moments about the Assur point {sname}: known {mtot + 0.0:.6g} N m, "
+        f"{fn[k].name} arm {arm * 1e3 + 0.0:.6g} mm: {ak + 0.0:.6g} N",)
     return Group(gi + 1, "triad", f"group {gi + 1}: the triad (class III) plate {d.plate}, "
                  f"links {d.link_b}, {d.link_c}, {d.link_x} (corners {d.b}, {d.c}, {d.x})",
                  bodies, allk, tuple(ts) + (fn[k],), (fn[j], fn[i]), tuple(reac), moments)
