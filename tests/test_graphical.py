@@ -465,3 +465,53 @@ def test_slot_yoke_and_triad_torques_equal_the_power_balance(name, analysed):
     assert set(fp.slot) == set(st.ne.slot)
     for k, (v, n) in st.ne.slot.items():
         assert np.hypot(*(fp.slot[k][0] * fp.slot[k][1] - v * n)) <= REL * big
+
+
+def _with_masses(path):
+    """The case with a mass on every link of stated length and every slider or yoke, and
+    gravity: its force polygons have something to carry (None: nothing to load)."""
+    import tomllib
+    from polygons.scene import parse_scene
+    text = path.read_text(encoding="utf-8")
+    extra = ""
+    for b in load_scene(path).model.moving:
+        if b.kind == "link" and b.length:
+            extra += f'\n[masses.{b.name}]\nmass = "{1 + len(b.name) % 3} kg"\n'
+        elif b.kind in ("block", "yoke"):
+            extra += f'\n[masses.{b.name}]\nmass = "2 kg"\n'
+    if not extra:
+        return None
+    return parse_scene(tomllib.loads(text + extra + '\n[gravity]\ng = "9.81 m/s^2"\n'),
+                       file=str(path))
+
+
+def test_force_polygons_equal_newton_euler_on_every_case_with_masses_added():
+    """Every unloaded case whose kinds the construction handles (slotted levers, offset slots,
+    pins in moving slots, yokes, triads on a ternary plate, slider drivers), loaded with
+    masses and gravity: each pin, slot and guide force and the effort equal Newton–Euler's."""
+    kinds = set()
+    for path in CASES:
+        if path in LOADED:
+            continue
+        try:
+            scene = _with_masses(path)
+            if scene is None or graphical.handled(scene) is not None:
+                continue
+            an = analyse(scene)
+        except PolygonsError:
+            continue                            # refused by the force analysis itself
+        for st in an.states:
+            fp = graphical.construct(an, st)
+            ne = st.ne
+            big = max([1.0] + [float(np.hypot(*v)) for v in ne.pin.values()])
+            assert set(fp.pin) == set(ne.pin) and set(fp.slot) == set(ne.slot), path.name
+            for k, v in ne.pin.items():
+                assert np.hypot(*(fp.pin[k] - v)) <= REL * big, (path.name, k)
+            for k, (v, n) in ne.slot.items():
+                assert np.hypot(*(fp.slot[k][0] * fp.slot[k][1] - v * n)) <= REL * big
+            for k, (n, _, c) in ne.guide.items():
+                assert abs(fp.guide[k][0] - n) <= REL * big
+                assert abs(fp.guide[k][2] - c) <= REL * big
+            assert abs(fp.effort - (ne.effort or 0.0)) <= REL * big
+            kinds |= {g.kind for g in fp.groups}
+    assert {"RPR", "RPP", "RRP, moving guide", "triad", "slider driver"} <= kinds

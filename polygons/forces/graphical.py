@@ -478,7 +478,9 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file) -> Group:
     ai, aj = _solve2(us[i], us[j], -(ktot + ak * us[k]), file, f"the triad {d.plate}")
     along = {i: ai, j: aj, k: ak}
     fn = {q: Found(f"F_{legs[q][1]}^n on {legs[q][0]}", legs[q][0], legs[q][1], us[q],
-                   along[q], "moments" if q == k else "polygon") for q in range(3)}
+                   along[q], "moments" if q == k else "polygon",
+                   "along the link, about the Assur point S" if q == k else "along the link")
+          for q in range(3)}
     reac = []
     for q, (link, o, c) in enumerate(legs):
         pin[(o, link)] = ts[q].force + fn[q].force
