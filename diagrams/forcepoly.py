@@ -94,14 +94,14 @@ def _triad_vectors(g: graphical.Group):
     the two closing sides (along the first and second links); Stage 4: the diagonals."""
     ts, along_k = g.normals[:3], g.normals[3]
     close_j, close_i = g.closing
-    plate = g.bodies[0]
+    legs = {t.body for t in ts}
 
     def part(link, stage):
         items = [_known_item(k, stage) for k in g.knowns if k.body == link and k.force.any()]
         return items + [_moments_item(t, stage) for t in ts if t.body == link]
     seq = part(close_i.body, 1)
     end_i = len(seq)
-    seq += [_known_item(k, 1) for k in g.knowns if k.body == plate and k.force.any()]
+    seq += [_known_item(k, 1) for k in g.knowns if k.body not in legs and k.force.any()]
     start_k = len(seq)
     seq += part(along_k.body, 1) + [_moments_item(along_k, 2)]
     end_k = len(seq)
@@ -302,6 +302,10 @@ def group_drawings(an, st):
                 if f.how == "reaction" and (stage is None or stage == nst):
                     legend.append((f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°",
                                    "bold"))
+            if stage is None and any(f.how == "joint" for f in g.reactions):
+                legend.append(("the plate's links, joint by joint (not drawn):", "normal"))
+                legend += [(f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°", "normal")
+                           for f in g.reactions if f.how == "joint"]
             stem = f"group-{_slug(st.name)}-{g.index}" + (f"-{stage}" if stage else "")
             cap = _stage_caption(g, stage, nst)
             out.append((stem, compose(

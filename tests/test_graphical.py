@@ -201,13 +201,10 @@ def test_forces_command_prints_both_methods_and_json(tmp_path):
     an2 = analyse(load_scene(ROOT / "cases" / "s000-d225-2003-q3.toml"))
     st2 = to_dict(an2)["states"][0]
     assert [g["kind"] for g in st2["force_polygons"]["groups"]] == ["RPR", "crank"]
-    # a class-III group whose plate is a triangle of links: refused in one line, by kind
-    case = tmp_path / "triangle.toml"
-    case.write_text((ROOT / "cases" / "triad-ternary-coupler.toml").read_text()
-                    + '\n[masses.BC]\nmass = "2 kg"\n')
-    st3 = to_dict(analyse(load_scene(case)))["states"][0]
-    why = st3["force_polygons"]["refused"]
-    assert "does not handle a class-III group whose plate is a triangle" in why
+    # an effort away from the driver: refused in one line
+    st3 = to_dict(analyse(load_scene(ROOT / "cases" / "forces-actuator-four-bar.toml")))
+    why = st3["states"][0]["force_polygons"]["refused"]
+    assert "the force-polygon construction finds the driver's effort" in why
     assert "\n" not in why
 
 
@@ -487,9 +484,11 @@ def _with_masses(path):
 
 def test_force_polygons_equal_newton_euler_on_every_case_with_masses_added():
     """Every unloaded case whose kinds the construction handles (slotted levers, offset slots,
-    pins in moving slots, yokes, triads on a ternary plate, slider drivers), loaded with
+    pins in moving slots, yokes, triads on a ternary plate or a triangle of links, slider
+    drivers), loaded with
     masses and gravity: each pin, slot and guide force and the effort equal Newton–Euler's."""
     kinds = set()
+    truss = 0
     for path in CASES:
         if path in LOADED:
             continue
@@ -514,4 +513,6 @@ def test_force_polygons_equal_newton_euler_on_every_case_with_masses_added():
                 assert abs(fp.guide[k][2] - c) <= REL * big
             assert abs(fp.effort - (ne.effort or 0.0)) <= REL * big
             kinds |= {g.kind for g in fp.groups}
+            truss += sum(1 for g in fp.groups for f in g.reactions if f.how == "joint") // 6
     assert {"RPR", "RPP", "RRP, moving guide", "triad", "slider driver"} <= kinds
+    assert truss >= 2                       # triads whose plate is a triangle of links

@@ -113,6 +113,9 @@ def polygons_lines(an, st) -> list[str]:
                         else "passed on by the light block")
                 out.append(f"      {what}: {f.name} = {_f(f.value)} N ∠"
                            f"{_deg(f.direction):.2f}°")
+            elif f.how == "joint":
+                out.append(f"      at the joint: {f.name} = {_f(f.value)} N ∠"
+                           f"{_deg(f.direction):.2f}°")
     unit = effort.unit(an.model)
     diff = _difference(fp, st)
     e = fp.effort

@@ -85,7 +85,8 @@ class Known:
 class Found:
     """A force the polygon found: on ``body`` at ``at`` along the unit ``direction``, signed
     ``value`` (N); ``how`` 'moments' (normal components), 'polygon' (the closing sides),
-    'effort' (the input), 'reaction' (a pin force read as a diagonal)."""
+    'effort' (the input), 'reaction' (a pin force read as a diagonal, or passed on by a light
+    block), 'joint' (a plate link's end force, from the polygon of a joint of the plate)."""
     name: str
     body: str
     at: str
@@ -161,12 +162,8 @@ def groups_of(scene):
         elif isinstance(d, RPP):
             out.append(("RPP", d, (d.x,)))
         elif isinstance(d, Triad):
-            if not d.ternary:
-                raise UnsupportedError(
-                    f"{METHOD} does not handle a class-III group whose plate is a triangle of "
-                    f"three links ({', '.join(d.plate_links)}): its plate is a truss, not one "
-                    f"body; Newton–Euler and Zhukovsky's lever do", file=file)
-            out.append(("triad", d, (d.plate, d.link_b, d.link_c, d.link_x)))
+            plate = (d.plate,) if d.ternary else tuple(d.plate_links)
+            out.append(("triad", d, plate + (d.link_b, d.link_c, d.link_x)))
     return out
 
 
@@ -403,7 +400,7 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
                              (f"the guide couple on {yoke}: {couple:.6g} N m (moments about "
                               f"{yoke})",)))
         elif kind == "triad":
-            out.append(_triad(gi, d, bodies, ks, allk, P, K, M, pin, file))
+            out.append(_triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model))
         elif kind == "crank":
             body = d.link
             o = P(d.pivot)
@@ -445,9 +442,11 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
     return ForcePolygons(st.name, tuple(out), pin, ground, guide, effort, slot)
 
 
-def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file) -> Group:
+def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model) -> Group:
     """The class-III group: normal components by moments about the corners, the along-link
-    component of the link off the Assur point S by moments about S, the other two closing."""
+    component of the link off the Assur point S by moments about S, the other two closing.
+    A plate that is a triangle of links is then solved as a truss, joint by joint
+    (:func:`_plate_truss`)."""
     legs = [(d.link_b, d.ob, d.b), (d.link_c, d.oc, d.c), (d.link_x, d.ox, d.x)]
     us, ts, ms = [], [], []
     for link, o, c in legs:
@@ -489,14 +488,76 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file) -> Group:
         rv = float(np.hypot(*r))
         reac.append(Found(f"R_{c} on {d.plate}", d.plate, c,
                           -r / rv if rv else np.array([1.0, 0.0]), rv, "reaction"))
+    moments_truss: tuple[str, ...] = ()
+    if not d.ternary:
+        members, moments_truss = _plate_truss(d, legs, ks, P, K, M, pin, file, model)
+        reac += members
     sname = f"S ({legs[i][0]} × {legs[j][0]})"
     moments = tuple(f"moments about {c} of {link}'s known forces: {ms[q] + 0.0:.6g} N m (CCW)"
                     for q, (link, o, c) in enumerate(legs)) + (
         f"moments about the Assur point {sname}: known {mtot + 0.0:.6g} N m, "
-        f"{fn[k].name} arm {arm * 1e3 + 0.0:.6g} mm: {ak + 0.0:.6g} N",)
+        f"{fn[k].name} arm {arm * 1e3 + 0.0:.6g} mm: {ak + 0.0:.6g} N",) + moments_truss
     return Group(gi + 1, "triad", f"group {gi + 1}: the triad (class III) plate {d.plate}, "
                  f"links {d.link_b}, {d.link_c}, {d.link_x} (corners {d.b}, {d.c}, {d.x})",
                  bodies, allk, tuple(ts) + (fn[k],), (fn[j], fn[i]), tuple(reac), moments)
+
+
+def _plate_truss(d, legs, ks, P, K, M, pin, file, model):
+    """A plate that is a triangle of links BC, CX, BX, once the corner forces of the binary
+    links are known: each plate link's end forces split into normal components (moments about
+    its other end) and one unknown along it (the other end's follows from the link's balance
+    along itself); the joint B's polygon closes on the two plate links there (two lines of
+    known direction), the joint C's gives the third link's, the joint X checks."""
+    ends, axis, tn, lens = {}, {}, {}, {}
+    for name in d.plate_links:
+        a, b = model.bodies[name].a, model.bodies[name].b
+        u = P(b) - P(a)
+        ln = float(np.hypot(*u))
+        u = u / ln
+        ends[name], axis[name], lens[name] = (a, b), u, ln
+        tn[(name, a)] = perp(u) * M(ks[name], P(b)) / ln
+        tn[(name, b)] = -perp(u) * M(ks[name], P(a)) / ln
+    s: dict[str, float] = {}
+
+    def force(name, corner, sval):
+        """The force on the plate link ``name`` at ``corner`` with the axial unknown sval."""
+        a, _ = ends[name]
+        u = axis[name]
+        if corner == a:
+            return tn[(name, corner)] + sval * u
+        return tn[(name, corner)] - (sval + float(K(ks[name]) @ u)) * u
+
+    def at(corner):
+        return [n for n in d.plate_links if corner in ends[n]]
+
+    leg_of = {c: link for link, _, c in legs}
+    lines = []
+    for corner in (d.b, d.c, d.x):
+        known = pin[(corner, leg_of[corner])]
+        todo = [n for n in at(corner) if n not in s]
+        base = known + sum((force(n, corner, s[n]) for n in at(corner) if n in s),
+                           np.zeros(2))
+        coef = {n: force(n, corner, 1.0) - force(n, corner, 0.0) for n in todo}
+        zero = {n: force(n, corner, 0.0) for n in todo}
+        rhs = -(base + sum(zero.values(), np.zeros(2)))
+        if len(todo) == 2:
+            s[todo[0]], s[todo[1]] = _solve2(coef[todo[0]], coef[todo[1]], rhs, file,
+                                             f"the joint {corner} of the plate")
+            lines.append(f"the joint {corner}: {leg_of[corner]}'s force and the normal "
+                         f"components close on {todo[0]} and {todo[1]} along themselves")
+        elif len(todo) == 1:
+            c = coef[todo[0]]
+            s[todo[0]] = float(rhs @ c) / float(c @ c)
+            lines.append(f"the joint {corner}: its polygon gives {todo[0]} along itself")
+    out = []
+    for name in d.plate_links:
+        for corner in ends[name]:
+            f = force(name, corner, s[name])
+            pin[(corner, name)] = f
+            fv = float(np.hypot(*f))
+            out.append(Found(f"F_{corner} on {name}", name, corner,
+                             f / fv if fv else np.array([1.0, 0.0]), fv, "joint"))
+    return out, tuple(lines)
 
 
 def handled(scene) -> str | None:
