@@ -96,7 +96,7 @@ OWN_EXACT_CHECK = {
     **{name: ("test_graphical.py", "test_the_force_cases_kinematic_answers_are_their_sources")
        for name in ("forces-toggle-press", "forces-actuator-four-bar",
                     "forces-engine-piston-effort", "forces-whitworth", "forces-scotch-yoke",
-                    "forces-oscillating-cylinder", "forces-triad")},
+                    "forces-oscillating-cylinder", "forces-triad", "forces-triad-truss")},
     "cam-roller-follower": ("test_contacts.py", "test_roller_follower_is_the_slider_crank"),
     "cam-flat-follower": ("test_contacts.py", "test_flat_follower_is_the_scotch_yoke"),
     "curved-slot-pin": ("test_contacts.py", "test_curved_slot_case_and_random_instances"),

@@ -327,7 +327,8 @@ def test_the_diagonal_joins_the_two_bodies_parts(analysed):
                                          ("forces-scotch-yoke", "scotch-yoke"),
                                          ("forces-oscillating-cylinder",
                                           "new-oscillating-cylinder"),
-                                         ("forces-triad", "triad-plate-point")])
+                                         ("forces-triad", "triad-plate-point"),
+                                         ("forces-triad-truss", "triad-ternary-coupler")])
 def test_the_force_cases_kinematic_answers_are_their_sources(name, source):
     """The force cases share their mechanism and instant with a case whose exact values
     have an independent check of their own: each kinematic answer is that case's, and the
@@ -436,7 +437,33 @@ def triad_torque_exact() -> float:
     return -p / w
 
 
-SLOT_CASES = {"forces-whitworth": (whitworth_torque_exact, ["RRP", "RPR", "crank"]),
+def triad_truss_torque_exact() -> float:
+    """forces-triad-truss: the class-III group on the triangle BC, CX, BX by the independent
+    oracle, uniform rods OA 1, AB 2, BC 3, CX 2, BX 2, CD 2, XE 1 kg, 300 N down at X,
+    g 9.81."""
+    import analytic_more as am
+    import analytic_triad as at
+    w, th = 10.0, math.radians(60)
+    O = am.fixed(0, 0)
+    A = am.crank(O, 0.1, th, w, 0.0)
+    D, E = am.fixed(0.3, 0), am.fixed(0.15, 0.3)
+    sol = solve(load_scene(ROOT / "cases" / "forces-triad-truss.toml"))
+    guess = np.concatenate([sol.points[k].position for k in "BCX"])
+    pts = at.solve_position(am.vec(A[0]), am.vec(D[0]), am.vec(E[0]),
+                            (0.2, 0.2, 0.1, 0.15, 0.12, 0.1), guess)
+    vel, acc = at.rates(*pts, *(am.vec(P[0]) for P in (A, D, E)),
+                        *(am.vec(P[1]) for P in (A, D, E)), *(am.vec(P[2]) for P in (A, D, E)))
+    B, C, X = (tuple(complex(*q) for q in m) for m in zip(pts, vel, acc))
+    bodies = [(*_rod(1.0, 0.1), am.crank(O, 0.05, th, w, 0.0), w, 0.0)]
+    for m, P, Q, ln in ((2.0, A, B, 0.2), (3.0, B, C, 0.15), (2.0, C, X, 0.12),
+                        (2.0, B, X, 0.1), (2.0, C, D, 0.2), (1.0, X, E, 0.1)):
+        bodies.append((*_rod(m, ln), _mid(P, Q), *am.rates(P, Q)))
+    p = _power(bodies, [(-300j, X[1])])
+    return -p / w
+
+
+SLOT_CASES = {"forces-triad-truss": (triad_truss_torque_exact, ["triad", "crank"]),
+"forces-whitworth": (whitworth_torque_exact, ["RRP", "RPR", "crank"]),
               "forces-scotch-yoke": (yoke_torque_exact, ["RPP", "crank"]),
               "forces-oscillating-cylinder": (cylinder_torque_exact,
                                               ["RRP, moving guide", "crank"]),
