@@ -307,16 +307,19 @@ def test_the_graphical_methods_reproduce_printed_answers(analysed):
 def test_the_diagonal_joins_the_two_bodies_parts(analysed):
     """In each dyad's polygon (K1, t1, K2, t2, closing sides) the diagonal drawn is the middle
     pin's force: from the closing sides' meeting point back to the end of the first body's
-    part, equal to the reaction found (the massless coupler of efficiency-four-bar too)."""
+    part, equal to the reaction found (the massless coupler of efficiency-four-bar too); in a
+    triad's, each corner's force on the plate, across its link's part."""
     from diagrams.forcepoly import _vectors
-    for name in ("efficiency-four-bar", "forces-toggle-press", "s002-ex3.17", "s001-we8"):
+    for name in ("efficiency-four-bar", "forces-toggle-press", "s002-ex3.17", "s001-we8",
+                 "forces-oscillating-cylinder", "forces-triad", "forces-triad-truss"):
         an = analysed(ROOT / "cases" / f"{name}.toml")
         fp = graphical.construct(an, an.states[0])
         for g in fp.groups:
             seq, _, diag = _vectors(g)
             verts = np.cumsum([np.zeros(2)] + [s[1] for s in seq], axis=0)
-            for a, b, _ in diag:
-                r = g.reactions[0]
+            assert len(diag) == {"triad": 3, "crank": 0, "RPR": 0, "RPP": 0}.get(g.kind, 1)
+            for a, b, rname in diag:
+                r = next(f for f in g.reactions if f.name == rname)
                 assert np.hypot(*(verts[b] - verts[a] - r.force)) <= 1e-9 * max(1.0, r.value)
 
 

@@ -486,7 +486,7 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model) -> Group:
         r = -(K(ks[link]) + pin[(o, link)])          # on the link at its corner
         pin[(c, link)] = r
         rv = float(np.hypot(*r))
-        reac.append(Found(f"R_{c} on {d.plate}", d.plate, c,
+        reac.append(Found(f"R_{c} on {d.plate if d.ternary else 'the plate'}", d.plate, c,
                           -r / rv if rv else np.array([1.0, 0.0]), rv, "reaction"))
     moments_truss: tuple[str, ...] = ()
     if not d.ternary:
@@ -497,7 +497,8 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model) -> Group:
                     for q, (link, o, c) in enumerate(legs)) + (
         f"moments about the Assur point {sname}: known {mtot + 0.0:.6g} N m, "
         f"{fn[k].name} arm {arm * 1e3 + 0.0:.6g} mm: {ak + 0.0:.6g} N",) + moments_truss
-    return Group(gi + 1, "triad", f"group {gi + 1}: the triad (class III) plate {d.plate}, "
+    plate = d.plate if d.ternary else "the triangle " + ", ".join(d.plate_links)
+    return Group(gi + 1, "triad", f"group {gi + 1}: the triad (class III) plate {plate}, "
                  f"links {d.link_b}, {d.link_c}, {d.link_x} (corners {d.b}, {d.c}, {d.x})",
                  bodies, allk, tuple(ts) + (fn[k],), (fn[j], fn[i]), tuple(reac), moments)
 
