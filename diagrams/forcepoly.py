@@ -5,7 +5,9 @@ acceleration polygons; every vector's kind has its look (:data:`diagrams.compone
 the ``force-…`` kinds).  Nothing is recomputed: every vector is a record of the construction.
 
 Files (``polygons forces CASE --svg DIR``): ``group-<state>-<n>.svg`` (the finished polygon
-of group n) and ``group-<state>-<n>-<k>.svg`` (its stages); ``zhukovsky-<state>.svg`` and
+of group n) and ``group-<state>-<n>-<k>.svg`` (its stages); ``joint-<state>-<n>-<corner>.svg``
+(and stages) for the joints of a triad's plate that is a triangle of links;
+``zhukovsky-<state>.svg`` and
 ``zhukovsky-<state>-<k>.svg``.
 """
 from __future__ import annotations
@@ -127,11 +129,12 @@ def _vectors(g: graphical.Group):
     first = g.bodies[0]
     for k in g.knowns:
         if k.force.any():
-            stage = 1 if k.body == first or g.kind in ("crank", "slider driver") else 2
+            stage = 1 if k.body == first or g.kind in ("crank", "slider driver", "joint") \
+                else 2
             seq.append(_known_item(k, stage))
     # the normal components go after their link's knowns: K1, t1, K2, t2
     for t in g.normals:
-        stage = 1 if t.body == first else 2
+        stage = 1 if t.body == first or g.kind == "joint" else 2
         idx = sum(1 for s in seq if s[3] <= stage)
         seq.insert(idx, _moments_item(t, stage))
     close = [f for f in g.closing if f.how != "effort" or g.kind == "slider driver"]
@@ -150,17 +153,31 @@ def _vectors(g: graphical.Group):
 
 def group_drawings(an, st):
     """(stem, Drawing) of each group's force polygon and its stages at ``st``."""
-    from .labels import bounds, box_hits_segment, text_box
-    from .layout import arrow_head, compose
-    from .model import Arrow, Circle, Group, Segment, Text
-    from .scale import Scale, round_up
-
     try:
         fp = graphical.construct(an, st)
     except UnsupportedError:
         return []
+    return _drawings(fp.groups, fp, st)
+
+
+def joint_drawings(an, st):
+    """(stem, Drawing) of the polygon of each joint of a class-III group's plate that is a
+    triangle of links (the forces on the pin), and its stages: ``joint-<state>-<n>-<corner>``."""
+    try:
+        fp = graphical.construct(an, st)
+    except UnsupportedError:
+        return []
+    return _drawings(fp.joints, fp, st)
+
+
+def _drawings(groups, fp, st):
+    from .labels import bounds, box_hits_segment, text_box
+    from .layout import arrow_head, compose
+    from .model import Arrow, Circle, Group, Segment
+    from .scale import Scale, round_up
+
     out = []
-    for g in fp.groups:
+    for g in groups:
         seq, lines, diag = _vectors(g)
         if not seq:
             continue
@@ -303,15 +320,22 @@ def group_drawings(an, st):
                     legend.append((f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°",
                                    "bold"))
             if stage is None and any(f.how == "joint" for f in g.reactions):
-                legend.append(("the plate's links, joint by joint (not drawn):", "normal"))
+                legend.append(("the plate's links, joint by joint (joint-… drawings):",
+                               "normal"))
                 legend += [(f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°", "normal")
                            for f in g.reactions if f.how == "joint"]
-            stem = f"group-{_slug(st.name)}-{g.index}" + (f"-{stage}" if stage else "")
+            if g.kind == "joint":
+                corner = g.normals[0].at
+                stem = f"joint-{_slug(st.name)}-{g.index}-{_slug(corner)}"
+                title = f"Force polygon, joint {corner} (group {g.index})"
+            else:
+                stem = f"group-{_slug(st.name)}-{g.index}"
+                title = f"Force polygon, group {g.index}"
+            stem += f"-{stage}" if stage else ""
             cap = _stage_caption(g, stage, nst)
             out.append((stem, compose(
                 name=stem, kind="force", stage=stage,
-                title=f"Force polygon, group {g.index}" + (f" — Stage {stage}" if stage
-                                                           else ""),
+                title=title + (f" — Stage {stage}" if stage else ""),
                 subtitle=f"{g.title.split(': ', 1)[1]}; {st.name}",
                 desc=f"Force polygon of {g.title}",
                 content=[Group("polygon", "force-polygon", g.title,
@@ -359,13 +383,22 @@ def _stage_caption(g, stage, nst) -> str:
                  3: "Lines along the other two links through the last point and the start: "
                     "where they meet closes the polygon.",
                  4: "Each corner's force on the plate is a diagonal: across its link's part."}
+    elif g.kind == "joint":
+        words = {1: "The forces on the pin known: the binary link's (found with the group), "
+                    "each plate link's normal component (by moments about its other end) "
+                    "and, for a plate link already met at another joint, its component along "
+                    "itself (from its balance along itself).",
+                 2: "Lines along the plate links not yet met, through the last point and the "
+                    "start: where they meet closes the joint's polygon (the last joint only "
+                    "checks that it closes)."}
     else:
         words = {1: "The known forces on the driver, including those passed on.",
                  2: "The polygon closes on the bearing (guide) force; the input effort "
                     "follows from moments."}
     if stage is None:
-        return ("Groups from the one furthest from the driver; each inertia force acts "
-                "offset by h = I_G α / (m a_G). " + " ".join(words[i] for i in sorted(words)))
+        return ("" if g.kind == "joint" else
+                "Groups from the one furthest from the driver; each inertia force acts "
+                "offset by h = I_G α / (m a_G). ") + " ".join(words[i] for i in sorted(words))
     return words.get(stage, "")
 
 
@@ -507,7 +540,7 @@ def write(an, outdir) -> list[Path]:
     outdir.mkdir(parents=True, exist_ok=True)
     paths = []
     for st in an.states:
-        for stem, d in group_drawings(an, st) + lever_drawings(an, st):
+        for stem, d in group_drawings(an, st) + joint_drawings(an, st) + lever_drawings(an, st):
             p = outdir / f"{stem}.svg"
             p.write_bytes(to_svg(d))
             paths.append(p)

@@ -242,18 +242,20 @@ def test_drawings_of_every_loaded_case(analysed):
     """Every loaded case draws its group polygons (when handled) and its lever; each SVG is
     well-formed, the stages come before the finished drawing, no two labels overlap."""
     import xml.etree.ElementTree as ET
-    from diagrams.forcepoly import group_drawings, lever_drawings
+    from diagrams.forcepoly import group_drawings, joint_drawings, lever_drawings
     from diagrams.labels import text_box
     from diagrams.model import Text
     from diagrams.svg import to_svg
     for path in LOADED:
         an = analysed(path)
         st = an.states[0]
-        ds = group_drawings(an, st) + lever_drawings(an, st)
+        ds = group_drawings(an, st) + joint_drawings(an, st) + lever_drawings(an, st)
         stems = [s for s, _ in ds]
         assert any(s.startswith("zhukovsky-") for s in stems), path.name
         if graphical.handled(load_scene(path)) is None:
             assert any(s.startswith("group-") for s in stems), path.name
+        if path.stem == "forces-triad-truss":
+            assert {f"joint-instant-2-{c}" for c in "bcx"} <= set(stems)
         for stem, d in ds[:12]:
             ET.fromstring(to_svg(d))
             for cls in ("labels",):
@@ -546,3 +548,16 @@ def test_force_polygons_equal_newton_euler_on_every_case_with_masses_added():
             truss += sum(1 for g in fp.groups for f in g.reactions if f.how == "joint") // 6
     assert {"RPR", "RPP", "RRP, moving guide", "triad", "slider driver"} <= kinds
     assert truss >= 2                       # triads whose plate is a triangle of links
+
+
+def test_the_joints_of_a_triangle_plate_close(analysed):
+    """forces-triad-truss: each joint's polygon (the forces on the pin B, C, X) closes; the
+    first two joints close on the plate links not met before, the last only checks."""
+    an = analysed(ROOT / "cases" / "forces-triad-truss.toml")
+    fp = graphical.construct(an, an.states[0])
+    assert [len(j.closing) for j in fp.joints] == [2, 1, 0]
+    big = max(float(np.hypot(*v)) for v in fp.pin.values())
+    for j in fp.joints:
+        total = sum((k.force for k in j.knowns), np.zeros(2))
+        total = total + sum((f.force for f in j.normals + j.closing), np.zeros(2))
+        assert np.hypot(*total) <= REL * big, j.title

@@ -124,6 +124,7 @@ class ForcePolygons:
     guide: dict                        # label -> (normal force, unit normal, couple)
     effort: float                      # the input torque (N m) or force (N)
     slot: dict = None                  # pin -> (signed normal force on the lever, unit normal)
+    joints: tuple[Group, ...] = ()     # a triangle plate's joints (kind 'joint'), in order
 
 
 def _refuse(kind: str, where: str, file) -> UnsupportedError:
@@ -200,6 +201,7 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
     pin: dict = {}
     guide: dict = {}
     slot: dict = {}
+    joints: list[Group] = []
     done: set[str] = set()
     out: list[Group] = []
     effort = 0.0
@@ -400,7 +402,7 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
                              (f"the guide couple on {yoke}: {couple:.6g} N m (moments about "
                               f"{yoke})",)))
         elif kind == "triad":
-            out.append(_triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model))
+            out.append(_triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints))
         elif kind == "crank":
             body = d.link
             o = P(d.pivot)
@@ -439,10 +441,10 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
             ground[lab] = -total
         else:
             pin[(lab, cs[0])] = -total
-    return ForcePolygons(st.name, tuple(out), pin, ground, guide, effort, slot)
+    return ForcePolygons(st.name, tuple(out), pin, ground, guide, effort, slot, tuple(joints))
 
 
-def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model) -> Group:
+def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints) -> Group:
     """The class-III group: normal components by moments about the corners, the along-link
     component of the link off the Assur point S by moments about S, the other two closing.
     A plate that is a triangle of links is then solved as a truss, joint by joint
@@ -490,8 +492,9 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model) -> Group:
                           -r / rv if rv else np.array([1.0, 0.0]), rv, "reaction"))
     moments_truss: tuple[str, ...] = ()
     if not d.ternary:
-        members, moments_truss = _plate_truss(d, legs, ks, P, K, M, pin, file, model)
+        members, moments_truss, js = _plate_truss(gi, d, legs, ks, P, K, M, pin, file, model)
         reac += members
+        joints += js
     sname = f"S ({legs[i][0]} × {legs[j][0]})"
     moments = tuple(f"moments about {c} of {link}'s known forces: {ms[q] + 0.0:.6g} N m (CCW)"
                     for q, (link, o, c) in enumerate(legs)) + (
@@ -503,12 +506,14 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model) -> Group:
                  bodies, allk, tuple(ts) + (fn[k],), (fn[j], fn[i]), tuple(reac), moments)
 
 
-def _plate_truss(d, legs, ks, P, K, M, pin, file, model):
+def _plate_truss(gi, d, legs, ks, P, K, M, pin, file, model):
     """A plate that is a triangle of links BC, CX, BX, once the corner forces of the binary
     links are known: each plate link's end forces split into normal components (moments about
     its other end) and one unknown along it (the other end's follows from the link's balance
     along itself); the joint B's polygon closes on the two plate links there (two lines of
-    known direction), the joint C's gives the third link's, the joint X checks."""
+    known direction), the joint C's gives the third link's, the joint X checks.  Returns the
+    plate links' end forces, the words, and each joint's polygon (a :class:`Group` of kind
+    'joint': the forces on the pin)."""
     ends, axis, tn, lens = {}, {}, {}, {}
     for name in d.plate_links:
         a, b = model.bodies[name].a, model.bodies[name].b
@@ -550,6 +555,36 @@ def _plate_truss(d, legs, ks, P, K, M, pin, file, model):
             c = coef[todo[0]]
             s[todo[0]] = float(rhs @ c) / float(c @ c)
             lines.append(f"the joint {corner}: its polygon gives {todo[0]} along itself")
+    js = []
+    found_at = {}
+    for corner in (d.b, d.c, d.x):
+        todo = [n for n in at(corner) if n not in found_at]
+        for n in todo:
+            found_at[n] = corner
+        leg = leg_of[corner]
+        ks_j = [Known(f"from {leg} at {corner}", "transmitted", leg, -pin[(corner, leg)],
+                      P(corner))]
+        normals, closing = [], []
+        for n in at(corner):
+            u = axis[n] if corner == ends[n][0] else -axis[n]
+            tv = -tn[(n, corner)]
+            normals.append(Found(f"F_{corner}^t from {n}", n, corner, perp(u),
+                                 float(tv @ perp(u)), "moments"))
+            ax = -(force(n, corner, s[n]) - tn[(n, corner)])       # on the pin, along n
+            fa = Found(f"F_{corner}^n from {n}", n, corner, u, float(ax @ u),
+                       "polygon", "along the link")
+            if found_at[n] == corner:
+                closing.append(fa)
+            else:
+                ks_j.append(Known(f"F_{corner}^n from {n} (its balance along itself)",
+                                  "transmitted", n, fa.force, P(corner)))
+        js.append(Group(gi + 1, "joint", f"group {gi + 1}: the joint {corner} of the plate "
+                        f"{', '.join(d.plate_links)}", tuple(at(corner)), tuple(ks_j),
+                        tuple(normals), tuple(closing), (),
+                        (f"the forces on the pin {corner}: {leg}'s, and each plate link's "
+                         f"normal component (moments about its other end) and its component "
+                         f"along itself" + (" — a check: nothing is left to find"
+                                            if not closing else ""),)))
     out = []
     for name in d.plate_links:
         for corner in ends[name]:
@@ -558,7 +593,7 @@ def _plate_truss(d, legs, ks, P, K, M, pin, file, model):
             fv = float(np.hypot(*f))
             out.append(Found(f"F_{corner} on {name}", name, corner,
                              f / fv if fv else np.array([1.0, 0.0]), fv, "joint"))
-    return out, tuple(lines)
+    return out, tuple(lines), js
 
 
 def handled(scene) -> str | None:
