@@ -82,6 +82,9 @@ def test_force_polygons_equal_newton_euler(path, analysed):
             assert np.hypot(*(fp.ground[k] - v)) <= REL * big
         for k, (n, _, c) in ne.guide.items():
             assert abs(fp.guide[k][0] - n) <= REL * big and abs(fp.guide[k][2] - c) <= REL * big
+        assert set(fp.slot) == set(ne.slot)
+        for k, (v, n) in ne.slot.items():
+            assert np.hypot(*(fp.slot[k][0] * fp.slot[k][1] - v * n)) <= REL * big
         expected = ne.effort if ne.effort is not None else 0.0
         assert abs(fp.effort - expected) <= REL * max(1.0, abs(expected), big * 0.01)
         # each group's polygon closes: knowns + found sum to zero

@@ -26,12 +26,14 @@ force polygon closed on the unknown reactions:
   a fixed guide): the yoke's polygon closes on the slot's force (normal to the slot) and the
   guide's normal force, two lines of known direction; the guide couple by moments;
 * the **class-III group** (a triad: a ternary plate with corners B, C, X, each joined by a
-  binary link to a placed point A, D, E): each link's outer pin force split as in RRR, its
-  normal component by moments about its corner; the three components along the links remain:
+  binary link to a placed point A, D, E; or a triangle of links): each link's outer pin
+  force split as in RRR, its normal component by moments about its corner; the three
+  components along the links remain:
   the one along the link whose line does not pass through the Assur point S (where the other
   two links' lines meet) by moments of the whole group about S, the other two close the
   group's polygon; each corner's force is a diagonal.  No dyad's polygon closes alone here: S
-  does what the middle pin does for a dyad;
+  does what the middle pin does for a dyad.  A plate that is a triangle of links is then a
+  truss, solved joint by joint (the polygon of the forces on each corner pin);
 * the **crank** (the driver, last): its bearing force closes its polygon, the input torque is
   the moment about its pivot; a **slider driver**: the input force along the guide and the
   guide normal close the block's polygon.
