@@ -578,6 +578,33 @@ def _moving_lines(q, h, mm, sense) -> list[str]:
     return out
 
 
+def wheel_centres(sol, cs) -> list[dict]:
+    """The instant centres of each rolling wheel, numbered after the linkage's links in
+    ``cs`` (:func:`polygons.centres.instant_centres`): the wheel is not a link of the
+    equivalent linkage, so its centres come from the no-slip conditions — relative to each
+    surface its centre is the contact point; relative to the frame it lies on the line of the
+    contact points (Kennedy: with the contact and the plate's centre at infinity ⟂ its guide)
+    at v_W/ω from W."""
+    out = []
+    n = len(cs.bodies)
+    blocks = {b.labels[0]: b.number for b in cs.bodies if b.kind == "block"}
+    for q in getattr(sol.scene, "equivalents", ()):
+        if q.kind != "rolling":
+            continue
+        h = rolling(sol, q)
+        if h is None:
+            continue
+        n += 1
+        rel = [(blocks.get(q.on, 1) if q.on else 1, q.on or "frame", h["contacts"][0])]
+        if q.opposite:
+            rel.append((blocks.get(q.opposite, 1), q.opposite, h["contacts"][1]))
+        out.append({"wheel": q.at, "number": n, "absolute": h.get("instant_centre"),
+                    "omega": h["omega"], "speed": math.hypot(*h["centre_velocity"]),
+                    "centre": h["centre"],
+                    "relative": [{"number": i, "body": name, "point": p} for i, name, p in rel]})
+    return out
+
+
 def to_list(sol) -> list[dict]:
     out = []
     for q in getattr(sol.scene, "equivalents", ()):
@@ -592,4 +619,5 @@ def to_list(sol) -> list[dict]:
     return out
 
 
-__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list"]
+__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list", "rolling",
+           "wheel_centres"]

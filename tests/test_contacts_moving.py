@@ -183,3 +183,54 @@ def test_refusals_in_one_line(edit, words):
     with pytest.raises(PolygonsError) as exc:
         solve(parse(BASE.replace(*edit)))
     assert words in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_centres_and_drawings(tmp_path):
+    """`polygons centres` numbers the wheel after the links: its centre relative to each
+    plate is the contact, relative to the frame on the line of the contacts, and
+    v_W = ω · I₁ⱼW; the space diagram draws the plates and the wheel, rolling-W.svg the
+    velocity distribution through I, with no label on another."""
+    from polygons.centres import instant_centres
+    from polygons.cli.centres import centre_lines
+    from polygons.contacts import wheel_centres
+    import diagrams
+    from diagrams import rolling as dr
+    from diagrams.labels import text_box
+    from diagrams.model import Text
+    sol = solve(load_scene(CASE))
+    cs = instant_centres(sol, None)
+    (row,) = wheel_centres(sol, cs)
+    assert row["number"] == len(cs.bodies) + 1
+    h = higher(sol, sol.scene.equivalents[0])
+    assert [r["point"] for r in row["relative"]] == h["contacts"]
+    assert {r["body"] for r in row["relative"]} == {"S", "T"}
+    # Kennedy: I(1, wheel), I(wheel, S) = C₁ and I(1, S) (at infinity ⟂ the guide) collinear
+    assert abs(row["absolute"][0] - h["contacts"][0][0]) < 1e-12
+    d = math.dist(row["absolute"], row["centre"])
+    assert abs(abs(row["omega"]) * d - row["speed"]) < 1e-12
+    text = "\n".join(centre_lines(sol, cs))
+    assert "I₄₇ (wheel W / the plate of S) = the contact point (480, -40) mm" in text
+    paths = diagrams.write(sol, tmp_path, stages=False)
+    names = {p.name for p in paths}
+    assert "rolling-W.svg" in names and "space.svg" in names
+    space = (tmp_path / "space.svg").read_text()
+    for cls in ("wheel", "plate-S", "plate-T", "instant-centre"):
+        assert cls in space, cls
+    fig = (tmp_path / "rolling-W.svg").read_text()
+    for cls in ("velocity-distribution", "line-of-contacts", "instant-centre"):
+        assert cls in fig, cls
+    d = dr.drawing(sol, sol.scene.equivalents[0])
+    boxes = [text_box(t.x, t.baseline, t.text, t.size, t.anchor)
+             for t in d.items() if isinstance(t, Text) and t.role == "point"]
+    assert len(boxes) == 4          # C1, C2, W, I
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            assert not a.overlaps(b)
+
+
+def test_fixed_wheel_keeps_its_contact_as_centre():
+    from polygons.centres import instant_centres
+    from polygons.contacts import wheel_centres
+    sol = solve(load_scene(CASE.parent / "rolling-wheel-driven.toml"))
+    (row,) = wheel_centres(sol, instant_centres(sol, None))
+    assert row["absolute"] == higher(sol, sol.scene.equivalents[0])["contacts"][0]
