@@ -24,6 +24,12 @@ scene is read, so every method sees ordinary links, sliders and yokes):
     face = "0 deg"          # the face's direction (fixed: the follower only translates)
                             # → a Scotch yoke: C slides in a slot ∥ the face, carried by F
 
+A wheel rolling on a straight surface ([rolling]) keeps the equivalent slider when the surface
+is fixed or carried by a plate that translates along itself (``on``); a cylinder between two
+such plates (``opposite``) has no lower-pair equivalent — its centre's place along the plates
+is the mean of theirs — and is solved from the no-slip condition at each contact
+(:func:`rolling`), outside the linkage.
+
 Refused in words where the curvature is not given (no ``centre`` / ``radius``), and for the
 force analysis (the equivalent link carries the contact force along the common normal only at
 the instant; forces are not modelled for contacts yet).  :data:`Equivalent` records what was
@@ -67,10 +73,12 @@ TABLES: tuple[Table, ...] = (
         Key("face", "quantity", "the flat face's direction, CCW from +x (flat follower)",
             example='"0 deg"', dimension="angle"),
     ), many=True),
-    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a fixed straight "
-                     "surface; the table's label is the wheel's centre. Its centre moves on "
-                     "the line ∥ the surface at the radius (the equivalent slider), its "
-                     "instant centre is the contact point and ω = −v/r.", (
+    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a straight "
+                     "surface, fixed or carried by a plate translating along it (`on`), or "
+                     "between two such plates (`opposite`); the table's label is the wheel's "
+                     "centre. On one surface its centre moves on the line ∥ the surface at "
+                     "the radius (the equivalent slider); on a fixed surface its instant "
+                     "centre is the contact point and ω = −v/r.", (
         Key("radius", "quantity", "the wheel's radius", example='"50 mm"', dimension="length",
             required=True),
         Key("through", "point", "a point of the surface", example='["0 mm", "-30 mm"]',
