@@ -66,7 +66,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     check_handles("the space diagram", HANDLES, sol.scene.model, sol.scene.file)
     scene = sol.scene
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
-    bb = bounds(list(pos.values()))
+    from . import rolling           # a wheel on a moving surface (placed by no-slip)
+    bb = bounds(list(pos.values()) + rolling.extent(sol))
     extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
     if scale is None:
         scale = scales.choose("length", extent, [], paper, pad_mm=PAD_MM)
@@ -144,6 +145,14 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     equivalent = {q.link: q for q in scene.equivalents if q.kind in ("cam", "curved slot")}
     eq_notes = []
     for q in scene.equivalents:
+        if q.kind == "rolling" and (q.on or q.opposite):
+            b_, l_, n_ = rolling.space_items(
+                sol, q, lambda p: (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3)),
+                k, placer)
+            back += b_
+            links += l_
+            eq_notes += n_
+            continue
         if q.centre not in P or q.at not in P:
             continue
         c, at = P[q.centre], P[q.at]

@@ -24,6 +24,12 @@ scene is read, so every method sees ordinary links, sliders and yokes):
     face = "0 deg"          # the face's direction (fixed: the follower only translates)
                             # → a Scotch yoke: C slides in a slot ∥ the face, carried by F
 
+A wheel rolling on a straight surface ([rolling]) keeps the equivalent slider when the surface
+is fixed or carried by a plate that translates along itself (``on``); a cylinder between two
+such plates (``opposite``) has no lower-pair equivalent — its centre's place along the plates
+is the mean of theirs — and is solved from the no-slip condition at each contact
+(:func:`rolling`), outside the linkage.
+
 Refused in words where the curvature is not given (no ``centre`` / ``radius``), and for the
 force analysis (the equivalent link carries the contact force along the common normal only at
 the instant; forces are not modelled for contacts yet).  :data:`Equivalent` records what was
@@ -67,10 +73,12 @@ TABLES: tuple[Table, ...] = (
         Key("face", "quantity", "the flat face's direction, CCW from +x (flat follower)",
             example='"0 deg"', dimension="angle"),
     ), many=True),
-    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a fixed straight "
-                     "surface; the table's label is the wheel's centre. Its centre moves on "
-                     "the line ∥ the surface at the radius (the equivalent slider), its "
-                     "instant centre is the contact point and ω = −v/r.", (
+    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a straight "
+                     "surface, fixed or carried by a plate translating along it (`on`), or "
+                     "between two such plates (`opposite`); the table's label is the wheel's "
+                     "centre. On one surface its centre moves on the line ∥ the surface at "
+                     "the radius (the equivalent slider); on a fixed surface its instant "
+                     "centre is the contact point and ω = −v/r.", (
         Key("radius", "quantity", "the wheel's radius", example='"50 mm"', dimension="length",
             required=True),
         Key("through", "point", "a point of the surface", example='["0 mm", "-30 mm"]',
@@ -78,6 +86,16 @@ TABLES: tuple[Table, ...] = (
         Key("direction", "quantity", "the surface's direction, CCW from +x; the wheel is on "
                                      "its left", example='"0 deg"', dimension="angle",
             required=True),
+        Key("on", "label", "the surface moves: it is carried by the block (plate, rack) of "
+                           "this [sliders] point, translating on a fixed guide ∥ the "
+                           "surface; ω = (v_surface − v_W)/r along the direction (omitted: "
+                           "the frame)", example='"S"'),
+        Key("opposite", "label", "a cylinder between two plates: a second plate, the block "
+                                 "of this [sliders] point (guide ∥ the surface), touches the "
+                                 "wheel 2r from the first surface. The wheel is then placed "
+                                 "by the two plates (no link may join its centre): 'through' "
+                                 "is its contact with the first surface, v_W = (v₁ + v₂)/2, "
+                                 "ω = (v₁ − v₂)/2r", example='"T"'),
     ), many=True),
     Table("bearing", "A bar bearing on a fixed circle (a bar leaning on a half-cylinder): "
                      "the bar stays tangent, the contact slides along it. The table's label "
@@ -116,9 +134,25 @@ class Equivalent:
     roller: float | None = None
     face: float | None = None       # a flat face's / rolling surface's angle; bearing: side
     surface: tuple | None = None    # a point of a rolling surface
+    on: str | None = None           # rolling: the slider carrying the surface (None: frame)
+    opposite: str | None = None     # rolling: the slider carrying a second plate
 
     @property
     def words(self) -> str:
+        if self.kind == "rolling" and self.opposite:
+            first = f"the plate of {self.on}" if self.on else "the fixed surface"
+            return (f"the cylinder {self.at} (radius {self.radius * 1000:.6g} mm) rolls "
+                    f"without slipping between {first} and the plate of {self.opposite} "
+                    f"(at {math.degrees(self.face):.6g}°): the two no-slip conditions give "
+                    f"v_{self.at} = (v₁ + v₂)/2 and ω = (v₁ − v₂)/2r along the plates; its "
+                    f"instant centre lies on the line of the contact points")
+        if self.kind == "rolling" and self.on:
+            return (f"the wheel {self.at} (radius {self.radius * 1000:.6g} mm) rolls without "
+                    f"slipping on the plate of {self.on} (surface at "
+                    f"{math.degrees(self.face):.6g}°, translating along itself): its centre "
+                    f"moves on the line ∥ the surface {self.radius * 1000:.6g} mm from it "
+                    f"(the equivalent slider), ω = (v_{self.on} − v_{self.at})/r; its instant "
+                    f"centre relative to the plate is the contact point")
         if self.kind == "rolling":
             return (f"the wheel {self.at} (radius {self.radius * 1000:.6g} mm) rolls without "
                     f"slipping on the fixed surface at {math.degrees(self.face):.6g}°: its "
@@ -305,10 +339,25 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
         x, y = (_q(v, "length", file, f"{where}.through") for v in pt)
         ang = _q(table["direction"], "angle", file, f"{where}.direction")
         nx, ny = -math.sin(ang), math.cos(ang)
-        sliders[label] = {"through": [f"{x + radius * nx!r} m", f"{y + radius * ny!r} m"],
-                          "direction": f"{math.degrees(ang)!r} deg"}
+        plates = {k: _plate(table, k, label, ang, sliders, file, where)
+                  for k in ("on", "opposite")}
+        if plates["on"] is not None and plates["on"] == plates["opposite"]:
+            raise SceneError("on and opposite must be two different plates", file=file,
+                             where=f"{where}.opposite")
+        if plates["opposite"] is None:
+            sliders[label] = {"through": [f"{x + radius * nx!r} m", f"{y + radius * ny!r} m"],
+                              "direction": f"{math.degrees(ang)!r} deg"}
+        else:
+            joined = [k for k in links if isinstance(k, str) and label in _ends(k)]
+            pts = data.get("points", {})
+            if joined or (isinstance(pts, dict) and label in pts):
+                what = f"the link {joined[0]}" if joined else "[points]"
+                raise SceneError(f"the cylinder {label} between two plates is placed by them "
+                                 f"(no slip at both contacts); it cannot also be in {what}",
+                                 file=file, where=where)
         return Equivalent("rolling", label, label, None, None, radius,
-                          face=ang, surface=(x, y))
+                          face=ang, surface=(x, y), on=plates["on"],
+                          opposite=plates["opposite"])
     bar, side = table["bar"], table["side"]
     if not isinstance(bar, str) or bar not in links:
         raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
@@ -333,6 +382,105 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                       face=1.0 if side == "left" else -1.0, surface=None)
 
 
+def _ends(link: str) -> tuple[str, ...]:
+    """The labels a link's name may join (AW → A, W; O2A → O2, A): every split point."""
+    return tuple(link[:i] for i in range(1, len(link))) + \
+        tuple(link[i:] for i in range(1, len(link)))
+
+
+def _plate(table, key, label, ang, sliders, file, where):
+    """The [sliders] point carrying a moving surface (``on``/``opposite``), checked: a block
+    on a fixed straight guide parallel to the surface."""
+    name = table.get(key)
+    if name is None:
+        return None
+    if not isinstance(name, str) or not isinstance(sliders, dict) or name not in sliders:
+        raise SceneError(f"{key} must name a [sliders] point (the block carrying the plate), "
+                         f"got {name!r}", file=file, where=f"{where}.{key}")
+    if name == label:
+        raise SceneError(f"{key} must be the plate's block, not the wheel's centre", file=file,
+                         where=f"{where}.{key}")
+    g = sliders[name]
+    if not isinstance(g, dict) or "pin" in g or "slot" in g or "direction" not in g:
+        raise SceneError(f"the plate {name} must be a block on a fixed straight guide "
+                         f"([sliders.{name}] through, direction)", file=file,
+                         where=f"{where}.{key}")
+    d = _q(g["direction"], "angle", file, f"sliders.{name}.direction")
+    if abs(math.sin(d - ang)) > 1e-9:
+        raise SceneError(f"the plate {name} must slide along the surface (its guide at "
+                         f"{math.degrees(d):.6g}°, the surface at {math.degrees(ang):.6g}°): a "
+                         f"plate moving across the surface would not keep touching the wheel",
+                         file=file, where=f"{where}.{key}")
+    return name
+
+
+def _along(sol, name, e, which):
+    """The velocity or acceleration of the block ``name`` along ``e`` (0 for the frame)."""
+    if name is None:
+        return 0.0
+    v = getattr(sol.points[name], which)
+    return v[0] * e[0] + v[1] * e[1]
+
+
+def rolling(sol, q: Equivalent) -> dict | None:
+    """A wheel rolling without slipping on a fixed or moving surface (and, with
+    ``q.opposite``, under a second plate), from the no-slip condition at each contact:
+
+    the wheel's point at the contact C₁ = W − r·n moves with the surface, v_W + ω r e = v₁ e,
+    so ω = (v₁ − v_W)/r along e; with a second plate at C₂ = W + r·n, v_W − ω r e = v₂ e
+    gives v_W = (v₁ + v₂)/2, ω = (v₁ − v₂)/2r; the same for α with the accelerations (the
+    contact points' ω²r towards W cancel in a_W).  The instant centre is W + (v_W/ω)·n."""
+    e = (math.cos(q.face), math.sin(q.face))
+    n = (-e[1], e[0])
+    r = q.radius
+    if any(name is not None and sol.points[name].velocity is None
+           for name in (q.on, q.opposite)):
+        return None
+    v1 = _along(sol, q.on, e, "velocity")
+    if q.opposite is None:
+        p = sol.points.get(q.at)
+        if p is None or p.velocity is None:
+            return None
+        W = p.position
+        vw = p.velocity[0] * e[0] + p.velocity[1] * e[1]
+        w = (v1 - vw) / r
+    else:
+        W = (q.surface[0] + r * n[0], q.surface[1] + r * n[1])
+        v2 = _along(sol, q.opposite, e, "velocity")
+        vw, w = (v1 + v2) / 2, (v1 - v2) / (2 * r)
+    C1 = (W[0] - r * n[0], W[1] - r * n[1])
+    out = {"centre": W, "centre_velocity": (vw * e[0], vw * e[1]), "omega": w,
+           "contacts": [C1], "surface_velocity": [v1]}
+    if q.opposite is not None:
+        out["contacts"].append((W[0] + r * n[0], W[1] + r * n[1]))
+        out["surface_velocity"].append(v2)
+    if q.on is None and q.opposite is None:
+        out["instant_centre"] = C1            # the contact with the fixed surface
+    elif w != 0.0:
+        out["instant_centre"] = (W[0] + vw / w * n[0], W[1] + vw / w * n[1])
+    accel = (q.on is None or sol.points[q.on].acceleration is not None) and \
+        (q.opposite is None or sol.points[q.opposite].acceleration is not None)
+    if q.opposite is None:
+        accel = accel and sol.points[q.at].acceleration is not None
+    if not accel:
+        return out
+    a1 = _along(sol, q.on, e, "acceleration")
+    if q.opposite is None:
+        aw = sol.points[q.at].acceleration[0] * e[0] + sol.points[q.at].acceleration[1] * e[1]
+        al = (a1 - aw) / r
+    else:
+        a2 = _along(sol, q.opposite, e, "acceleration")
+        aw, al = (a1 + a2) / 2, (a1 - a2) / (2 * r)
+    c = r * w * w
+    out.update({"alpha": al, "centre_acceleration": (aw * e[0], aw * e[1]),
+                "surface_acceleration": [a1] + ([a2] if q.opposite is not None else []),
+                # the wheel's point at each contact: the surface's a plus ω²r towards W
+                "contact_acceleration": (a1 * e[0] + c * n[0], a1 * e[1] + c * n[1])})
+    if q.opposite is not None:
+        out["opposite_contact_acceleration"] = (a2 * e[0] - c * n[0], a2 * e[1] - c * n[1])
+    return out
+
+
 def higher(sol, q: Equivalent) -> dict | None:
     """The higher pair's own numbers read off the solved equivalent linkage: a rolling wheel's
     ω, α, instant centre (the contact) and the acceleration of its point there; a bar on a
@@ -340,18 +488,7 @@ def higher(sol, q: Equivalent) -> dict | None:
     first end meets the normal at the contact) and the contact's sliding along the bar."""
     pts = sol.points
     if q.kind == "rolling":
-        p = pts.get(q.at)
-        if p is None or p.velocity is None:
-            return None
-        e = (math.cos(q.face), math.sin(q.face))
-        n = (-e[1], e[0])
-        w = -(p.velocity[0] * e[0] + p.velocity[1] * e[1]) / q.radius
-        out = {"omega": w, "instant_centre": (p.position[0] - q.radius * n[0],
-                                              p.position[1] - q.radius * n[1])}
-        if p.acceleration is not None:
-            out["alpha"] = -(p.acceleration[0] * e[0] + p.acceleration[1] * e[1]) / q.radius
-            out["contact_acceleration"] = (q.radius * w * w * n[0], q.radius * w * w * n[1])
-        return out
+        return rolling(sol, q)
     if q.kind == "bearing":
         link = sol.links.get(q.link)
         if link is None or link.omega is None:
@@ -394,7 +531,9 @@ def report_lines(sol) -> list[str]:
         mm = lambda p: f"({p[0] * 1000:.6g}, {p[1] * 1000:.6g}) mm"   # noqa: E731
         def sense(x):
             return "CCW" if x > 0 else ("CW" if x < 0 else "")
-        if q.kind == "rolling":
+        if q.kind == "rolling" and (q.on or q.opposite):
+            lines += _moving_lines(q, h, mm, sense)
+        elif q.kind == "rolling":
             lines.append(f"    wheel {q.at}: ω = v/r = {abs(h['omega']):.6g} rad/s "
                          f"{sense(h['omega'])}" + (f", α = a/r = {abs(h['alpha']):.6g} rad/s² "
                                                     f"{sense(h['alpha'])}" if 'alpha' in h
@@ -414,12 +553,72 @@ def report_lines(sol) -> list[str]:
     return lines
 
 
+def _moving_lines(q, h, mm, sense) -> list[str]:
+    """A wheel on a moving surface (or between two plates) in words, signed along the
+    surface's direction."""
+    W, r = q.at, q.radius
+    v = h["surface_velocity"]
+    names = [q.on or "the frame"] + ([q.opposite] if q.opposite else [])
+    out = [f"    along the surface (+ at {math.degrees(q.face):.6g}°): v₁ = {v[0]:.6g} m/s "
+           f"({names[0]})" + (f", v₂ = {v[1]:.6g} m/s ({names[1]})" if q.opposite else "")]
+    vw = h["centre_velocity"][0] * math.cos(q.face) + h["centre_velocity"][1] * math.sin(q.face)
+    if q.opposite:
+        out.append(f"    v_{W} = (v₁ + v₂)/2 = {vw:.6g} m/s at {mm(h['centre'])}; ω = (v₁ − v₂)/2r "
+                   f"= {abs(h['omega']):.6g} rad/s {sense(h['omega'])}")
+    else:
+        out.append(f"    v_{W} = {vw:.6g} m/s; ω = (v₁ − v_{W})/r = {abs(h['omega']):.6g} rad/s "
+                   f"{sense(h['omega'])}")
+    if "alpha" in h:
+        a = h["surface_acceleration"]
+        aw = (h["centre_acceleration"][0] * math.cos(q.face)
+              + h["centre_acceleration"][1] * math.sin(q.face))
+        what = "(a₁ + a₂)/2" if q.opposite else "from the linkage"
+        out.append(f"    a₁ = {a[0]:.6g} m/s²" + (f", a₂ = {a[1]:.6g} m/s²" if q.opposite else "")
+                   + f"; a_{W} = {what} = {aw:.6g} m/s²; α = {abs(h['alpha']):.6g} rad/s² "
+                     f"{sense(h['alpha'])}; each contact point of the wheel accelerates as its "
+                     f"plate plus r·ω² = {r * h['omega'] ** 2:.6g} m/s² towards {W}")
+    if "instant_centre" in h:
+        d = math.dist(h["instant_centre"], h["centre"])
+        out.append(f"    instant centre of the wheel: {mm(h['instant_centre'])}, on the line of "
+                   f"the contact points {d * 1000:.6g} mm from {W} (v_{W}/ω)")
+    else:
+        out.append(f"    the wheel translates (ω = 0): no instant centre at a finite distance")
+    return out
+
+
+def wheel_centres(sol, cs) -> list[dict]:
+    """The instant centres of each rolling wheel, numbered after the linkage's links in
+    ``cs`` (:func:`polygons.centres.instant_centres`): the wheel is not a link of the
+    equivalent linkage, so its centres come from the no-slip conditions — relative to each
+    surface its centre is the contact point; relative to the frame it lies on the line of the
+    contact points (Kennedy: with the contact and the plate's centre at infinity ⟂ its guide)
+    at v_W/ω from W."""
+    out = []
+    n = len(cs.bodies)
+    blocks = {b.labels[0]: b.number for b in cs.bodies if b.kind == "block"}
+    for q in getattr(sol.scene, "equivalents", ()):
+        if q.kind != "rolling":
+            continue
+        h = rolling(sol, q)
+        if h is None:
+            continue
+        n += 1
+        rel = [(blocks.get(q.on, 1) if q.on else 1, q.on or "frame", h["contacts"][0])]
+        if q.opposite:
+            rel.append((blocks.get(q.opposite, 1), q.opposite, h["contacts"][1]))
+        out.append({"wheel": q.at, "number": n, "absolute": h.get("instant_centre"),
+                    "omega": h["omega"], "speed": math.hypot(*h["centre_velocity"]),
+                    "centre": h["centre"],
+                    "relative": [{"number": i, "body": name, "point": p} for i, name, p in rel]})
+    return out
+
+
 def to_list(sol) -> list[dict]:
     out = []
     for q in getattr(sol.scene, "equivalents", ()):
         d = {"kind": q.kind, "at": q.at, "centre": q.centre, "link": q.link,
              "length_m": q.length, "radius_m": q.radius, "roller_m": q.roller,
-             "face_rad": q.face}
+             "face_rad": q.face, "on": q.on, "opposite": q.opposite}
         h = higher(sol, q)
         if h:
             d["higher_pair"] = {k: (list(v) if isinstance(v, tuple) else v)
@@ -428,4 +627,5 @@ def to_list(sol) -> list[dict]:
     return out
 
 
-__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list"]
+__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list", "rolling",
+           "wheel_centres"]

@@ -102,6 +102,8 @@ OWN_EXACT_CHECK = {
     "curved-slot-pin": ("test_contacts.py", "test_curved_slot_case_and_random_instances"),
     "rolling-wheel-driven": ("test_contacts.py",
                              "test_rolling_wheel_is_the_offset_slider_crank_and_turns_at_v_over_r"),
+    "rolling-cylinder-between-plates": ("test_contacts_moving.py",
+                                        "test_cylinder_between_plates_case"),
     "bar-on-half-cylinder": ("test_contacts.py",
                              "test_bar_on_a_half_cylinder_driven_by_a_crank"),
     "khurmi-flywheel-steam-engine": ("test_cases.py",
