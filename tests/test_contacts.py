@@ -143,6 +143,13 @@ def test_rolling_wheel_is_the_offset_slider_crank_and_turns_at_v_over_r():
     h = higher(sol, sol.scene.equivalents[0])
     assert abs(h["omega"] - (-ex["v_B"] / 0.05)) < 1e-9 * abs(h["omega"])
     assert abs(h["alpha"] - (-ex["a_B"] / 0.05)) < 1e-9 * abs(h["alpha"])
+    # asked as the books ask it: the wheel's ω and α by its label, and the case's exact values
+    from polygons.quantities import quantity
+    assert abs(quantity(sol, "omega(W)") - (-ex["v_B"] / 0.05)) < 1e-9 * abs(h["omega"])
+    assert abs(quantity(sol, "alpha(W)") - (-ex["a_B"] / 0.05)) < 1e-9 * abs(h["alpha"])
+    exact = {a.quantity: a.exact for a in sol.scene.answers}
+    assert abs(exact["omega(W)"] - abs(ex["v_B"]) / 0.05) < 1e-12 * exact["omega(W)"]
+    assert abs(exact["alpha(W)"] - abs(ex["a_B"]) / 0.05) < 1e-12 * exact["alpha(W)"]
     # the contact is the wheel's instant centre: every wheel point's velocity is ω k × (p − I)
     I, W = h["instant_centre"], sol.points["W"].position
     _near(I, (ex["x_B"], -0.03), 1e-12)

@@ -14,6 +14,7 @@ from analytic_klein import slider_crank
 from polygons.contacts import higher, report_lines
 from polygons.errors import PolygonsError
 from polygons.evaluate import solve
+from polygons.quantities import quantity
 from polygons.scene import load_scene, parse_scene as _parse, parse_toml
 
 CASE = Path(__file__).resolve().parents[1] / "cases" / "rolling-cylinder-between-plates.toml"
@@ -111,10 +112,20 @@ def test_cylinder_between_plates_case():
     # the plates move in opposite directions: the instant centre lies inside the cylinder
     assert S["v_B"] < 0 < T["v_B"] and abs(h["instant_centre"][1]) < 0.04
     # the case's stated answers (the plates' |v|, |a|) are the plates' closed forms
-    exact = {"v(S)": S["v_B"], "a(S)": S["a_B"], "v(T)": T["v_B"], "a(T)": T["a_B"]}
+    r = 0.04
+    exact = {"v(S)": S["v_B"], "a(S)": S["a_B"], "v(T)": T["v_B"], "a(T)": T["a_B"],
+             # the cylinder itself, from the two no-slip conditions (signed, CCW +)
+             "omega(W)": (S["v_B"] - T["v_B"]) / (2 * r), "v(W)": (S["v_B"] + T["v_B"]) / 2,
+             "a(W)": (S["a_B"] + T["a_B"]) / 2, "alpha(W)": (S["a_B"] - T["a_B"]) / (2 * r)}
     assert sorted(a.quantity for a in sol.scene.answers) == sorted(exact)
     for ans in sol.scene.answers:
         assert abs(abs(exact[ans.quantity]) - ans.exact) < 1e-12 * max(1, ans.exact), ans
+        # and the solver's own value of each asked quantity (signed where the table is)
+        ours = quantity(sol, ans.quantity)
+        want = exact[ans.quantity] if ans.quantity.startswith(("omega", "alpha")) \
+            else abs(exact[ans.quantity])
+        assert abs(ours - want) < 1e-9 * abs(want), (ans.quantity, ours, want)
+    assert quantity(sol, "omega(W)") < 0          # the lower plate runs left: CW
     text = "\n".join(report_lines(sol))
     assert "v_W = (v₁ + v₂)/2 = " in text and "instant centre of the wheel" in text
 
@@ -234,3 +245,13 @@ def test_fixed_wheel_keeps_its_contact_as_centre():
     sol = solve(load_scene(CASE.parent / "rolling-wheel-driven.toml"))
     (row,) = wheel_centres(sol, instant_centres(sol, None))
     assert row["absolute"] == higher(sol, sol.scene.equivalents[0])["contacts"][0]
+
+
+def test_wheel_quantities_are_checked_and_examined(tmp_path, capsys):
+    """ω(W) of a wheel is graded by `check` (its drawn length ω r) and asked by `exam`."""
+    from polygons.cli import main
+    assert main(["check", str(CASE), "--measured", "omega(W)=-6.8", "v(W)=0.186"]) == 0
+    assert "2 of 2 within tolerance" in capsys.readouterr().out
+    assert main(["check", str(CASE), "--measured", "omega(W)=-9"]) != 0
+    assert main(["exam", str(CASE), "--variants", "1", "--out", str(tmp_path / "x")]) == 0
+    assert "ω_W" in capsys.readouterr().out
