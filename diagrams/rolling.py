@@ -50,7 +50,7 @@ def _plate_span(sol, q, name, sign) -> tuple[Pt, Pt, Pt, Pt] | None:
     n = (-e[1], e[0])
     W, r = h["centre"], q.radius
     C = (W[0] + sign * r * n[0], W[1] + sign * r * n[1])
-    B = sol.placement.points[name]
+    B = sol.placement.points.get(name, C)     # a plate moved at a stated rate: no block
     t = (B[0] - C[0]) * e[0] + (B[1] - C[1]) * e[1]
     foot = (C[0] + t * e[0], C[1] + t * e[1])
     lo, hi = min(t, -1.4 * r), max(t, 1.4 * r)
@@ -100,10 +100,11 @@ def space_items(sol, q, to_paper, k, placer):
         strip = (a, b, (b[0] + off[0], b[1] + off[1]), (a[0] + off[0], a[1] + off[1]))
         body.append(Polyline(tuple((round(x, 3), round(y, 3)) for x, y in strip), "plate",
                              closed=True, cls=f"plate plate-{name}"))
-        body.append(Segment(B, (foot[0] + off[0], foot[1] + off[1]), "link",
-                            cls=f"plate-bar plate-{name}"))
+        if name in sol.placement.points:        # the bar joining the plate to its block
+            body.append(Segment(B, (foot[0] + off[0], foot[1] + off[1]), "link",
+                                cls=f"plate-bar plate-{name}"))
+            placer.hard(B, foot, 1.0)
         placer.hard(a, b, 1.0)
-        placer.hard(B, foot, 1.0)
         notes.append((f"plate of {name}", ((a[0] + b[0]) / 2 + off[0] * 2,
                                            (a[1] + b[1]) / 2 + off[1] * 2)))
     for C in h["contacts"]:

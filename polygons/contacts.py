@@ -96,6 +96,15 @@ TABLES: tuple[Table, ...] = (
                                  "by the two plates (no link may join its centre): 'through' "
                                  "is its contact with the first surface, v_W = (v₁ + v₂)/2, "
                                  "ω = (v₁ − v₂)/2r", example='"T"'),
+        Key("opposite_velocity", "quantity", "the second plate moved at a stated velocity, "
+                                             "as books give it ('the upper plate moves at "
+                                             "2 m/s to the left'): signed along `direction`; "
+                                             "`opposite` is then only the plate's name (not "
+                                             "a [sliders] block)", example='"-2 m/s"',
+            dimension="velocity"),
+        Key("opposite_acceleration", "quantity", "with opposite_velocity: the second plate's "
+                                                 "acceleration, signed along `direction`",
+            example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2"),
     ), many=True),
     Table("bearing", "A bar bearing on a fixed circle (a bar leaning on a half-cylinder): "
                      "the bar stays tangent, the contact slides along it. The table's label "
@@ -136,6 +145,9 @@ class Equivalent:
     surface: tuple | None = None    # a point of a rolling surface
     on: str | None = None           # rolling: the slider carrying the surface (None: frame)
     opposite: str | None = None     # rolling: the slider carrying a second plate
+    #: rolling: the second plate's stated (velocity, acceleration) along ``face`` when it is
+    #: not a block of the linkage (books: "the upper plate moves at 2 m/s")
+    opposite_motion: tuple[float, float] | None = None
 
     @property
     def words(self) -> str:
@@ -223,7 +235,7 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
                                f"curved slot, [{force[0]}] with [cams]/[curved_slots]): its "
                                f"equivalent linkage gives the velocities and accelerations "
                                f"only", file=file, where=force[0])
-    links = dict(data.get("links", {})) if isinstance(data.get("links"), dict) else None
+    links = dict(data.get("links", {})) if isinstance(data.get("links", {}), dict) else None
     if links is None:
         raise SceneError("[links] must be a table", file=file, where="links")
     sliders = dict(data.get("sliders", {})) if isinstance(data.get("sliders", {}), dict) \
@@ -339,8 +351,28 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
         x, y = (_q(v, "length", file, f"{where}.through") for v in pt)
         ang = _q(table["direction"], "angle", file, f"{where}.direction")
         nx, ny = -math.sin(ang), math.cos(ang)
-        plates = {k: _plate(table, k, label, ang, sliders, file, where)
+        motion = None
+        if "opposite_velocity" in table:
+            if not isinstance(table.get("opposite"), str) or not table["opposite"].strip():
+                raise SceneError("opposite_velocity moves the second plate: name it, opposite "
+                                 "= \"T\"", file=file, where=f"{where}.opposite")
+            motion = (_q(table["opposite_velocity"], "velocity", file,
+                         f"{where}.opposite_velocity"),
+                      _q(table.get("opposite_acceleration", "0 m/s^2"), "acceleration", file,
+                         f"{where}.opposite_acceleration"))
+        elif "opposite_acceleration" in table:
+            raise SceneError("opposite_acceleration needs opposite_velocity (the second "
+                             "plate's stated motion)", file=file,
+                             where=f"{where}.opposite_acceleration")
+        plates = {k: (table["opposite"] if k == "opposite" and motion is not None
+                      else _plate(table, k, label, ang, sliders, file, where))
                   for k in ("on", "opposite")}
+        if motion is not None and (plates["opposite"] == label
+                                   or (isinstance(sliders, dict) and plates["opposite"] in sliders)):
+            raise SceneError(f"opposite = {plates['opposite']!r} with opposite_velocity names "
+                             f"a plate moved at a stated rate: a label of its own, not the "
+                             f"wheel's or a [sliders] block's", file=file,
+                             where=f"{where}.opposite")
         if plates["on"] is not None and plates["on"] == plates["opposite"]:
             raise SceneError("on and opposite must be two different plates", file=file,
                              where=f"{where}.opposite")
@@ -357,7 +389,7 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                                  file=file, where=where)
         return Equivalent("rolling", label, label, None, None, radius,
                           face=ang, surface=(x, y), on=plates["on"],
-                          opposite=plates["opposite"])
+                          opposite=plates["opposite"], opposite_motion=motion)
     bar, side = table["bar"], table["side"]
     if not isinstance(bar, str) or bar not in links:
         raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
@@ -414,10 +446,13 @@ def _plate(table, key, label, ang, sliders, file, where):
     return name
 
 
-def _along(sol, name, e, which):
-    """The velocity or acceleration of the block ``name`` along ``e`` (0 for the frame)."""
+def _along(sol, name, e, which, q=None):
+    """The velocity or acceleration of the block ``name`` along ``e`` (0 for the frame; the
+    stated motion of a plate moved at a given rate, ``q.opposite_motion``)."""
     if name is None:
         return 0.0
+    if q is not None and q.opposite_motion is not None and name == q.opposite:
+        return q.opposite_motion[0 if which == "velocity" else 1]
     v = getattr(sol.points[name], which)
     return v[0] * e[0] + v[1] * e[1]
 
@@ -433,8 +468,9 @@ def rolling(sol, q: Equivalent) -> dict | None:
     e = (math.cos(q.face), math.sin(q.face))
     n = (-e[1], e[0])
     r = q.radius
-    if any(name is not None and sol.points[name].velocity is None
-           for name in (q.on, q.opposite)):
+    blocks = [name for name in (q.on, q.opposite) if name is not None
+              and not (q.opposite_motion is not None and name == q.opposite)]
+    if any(sol.points[name].velocity is None for name in blocks):
         return None
     v1 = _along(sol, q.on, e, "velocity")
     if q.opposite is None:
@@ -446,7 +482,7 @@ def rolling(sol, q: Equivalent) -> dict | None:
         w = (v1 - vw) / r
     else:
         W = (q.surface[0] + r * n[0], q.surface[1] + r * n[1])
-        v2 = _along(sol, q.opposite, e, "velocity")
+        v2 = _along(sol, q.opposite, e, "velocity", q)
         vw, w = (v1 + v2) / 2, (v1 - v2) / (2 * r)
     C1 = (W[0] - r * n[0], W[1] - r * n[1])
     out = {"centre": W, "centre_velocity": (vw * e[0], vw * e[1]), "omega": w,
@@ -458,8 +494,7 @@ def rolling(sol, q: Equivalent) -> dict | None:
         out["instant_centre"] = C1            # the contact with the fixed surface
     elif w != 0.0:
         out["instant_centre"] = (W[0] + vw / w * n[0], W[1] + vw / w * n[1])
-    accel = (q.on is None or sol.points[q.on].acceleration is not None) and \
-        (q.opposite is None or sol.points[q.opposite].acceleration is not None)
+    accel = all(sol.points[name].acceleration is not None for name in blocks)
     if q.opposite is None:
         accel = accel and sol.points[q.at].acceleration is not None
     if not accel:
@@ -469,7 +504,7 @@ def rolling(sol, q: Equivalent) -> dict | None:
         aw = sol.points[q.at].acceleration[0] * e[0] + sol.points[q.at].acceleration[1] * e[1]
         al = (a1 - aw) / r
     else:
-        a2 = _along(sol, q.opposite, e, "acceleration")
+        a2 = _along(sol, q.opposite, e, "acceleration", q)
         aw, al = (a1 + a2) / 2, (a1 - a2) / (2 * r)
     c = r * w * w
     out.update({"alpha": al, "centre_acceleration": (aw * e[0], aw * e[1]),
@@ -603,10 +638,14 @@ def wheel_centres(sol, cs) -> list[dict]:
         if h is None:
             continue
         n += 1
+        wheel = n
         rel = [(blocks.get(q.on, 1) if q.on else 1, q.on or "frame", h["contacts"][0])]
-        if q.opposite:
+        if q.opposite and q.opposite_motion is not None:
+            n += 1                  # a plate moved at a stated rate: a body of its own
+            rel.append((n, q.opposite, h["contacts"][1]))
+        elif q.opposite:
             rel.append((blocks.get(q.opposite, 1), q.opposite, h["contacts"][1]))
-        out.append({"wheel": q.at, "number": n, "absolute": h.get("instant_centre"),
+        out.append({"wheel": q.at, "number": wheel, "absolute": h.get("instant_centre"),
                     "omega": h["omega"], "speed": math.hypot(*h["centre_velocity"]),
                     "centre": h["centre"],
                     "relative": [{"number": i, "body": name, "point": p} for i, name, p in rel]})
@@ -619,6 +658,9 @@ def to_list(sol) -> list[dict]:
         d = {"kind": q.kind, "at": q.at, "centre": q.centre, "link": q.link,
              "length_m": q.length, "radius_m": q.radius, "roller_m": q.roller,
              "face_rad": q.face, "on": q.on, "opposite": q.opposite}
+        if q.opposite_motion is not None:
+            d["opposite_motion"] = {"velocity": q.opposite_motion[0],
+                                    "acceleration": q.opposite_motion[1]}
         h = higher(sol, q)
         if h:
             d["higher_pair"] = {k: (list(v) if isinstance(v, tuple) else v)

@@ -255,3 +255,93 @@ def test_wheel_quantities_are_checked_and_examined(tmp_path, capsys):
     assert main(["check", str(CASE), "--measured", "omega(W)=-9"]) != 0
     assert main(["exam", str(CASE), "--variants", "1", "--out", str(tmp_path / "x")]) == 0
     assert "ω_W" in capsys.readouterr().out
+
+
+STATED = CASE.parent / "rolling-plates-stated.toml"
+
+
+def _stated(vA, aA, vC, aC, r, opposite="C"):
+    return parse(f"""
+[ground]
+O = ["0 mm", "-300 mm"]
+[sliders.A]
+through = ["0 mm", "0 mm"]
+direction = "0 deg"
+[driver]
+slider = "A"
+position = "0 mm"
+velocity = "{vA!r} m/s"
+acceleration = "{aA!r} m/s^2"
+[rolling.B]
+radius = "{r!r} m"
+through = ["0 mm", "0 mm"]
+direction = "0 deg"
+on = "A"
+opposite = "{opposite}"
+opposite_velocity = "{vC!r} m/s"
+opposite_acceleration = "{aC!r} m/s^2"
+""")
+
+
+def test_plates_moved_at_stated_rates_as_books_state_them():
+    """The lower plate the input slider (a lone block), the upper one moved at its stated
+    rate: v_B = (v_A + v_C)/2, ω = (v_A − v_C)/2r (CCW +), the same with accelerations."""
+    sol = solve(load_scene(STATED))
+    vA, aA, vC, aC, r = 4.0, 2.0, -2.0, 0.0, 0.125
+    exact = {"omega(B)": (vA - vC) / (2 * r), "v(B)": abs(vA + vC) / 2,
+             "alpha(B)": (aA - aC) / (2 * r), "a(B)": abs(aA + aC) / 2}
+    for ans in sol.scene.answers:
+        assert abs(abs(exact[ans.quantity]) - ans.exact) < 1e-12 * ans.exact, ans
+        assert abs(quantity(sol, ans.quantity) - exact[ans.quantity]) < 1e-12 * ans.exact
+    rng = random.Random(11)
+    for _ in range(20):
+        vA, aA, vC, aC = (rng.uniform(-5, 5) for _ in range(4))
+        r = rng.uniform(0.01, 1.0)
+        sol = solve(_stated(vA, aA, vC, aC, r))
+        h = higher(sol, sol.scene.equivalents[0])
+        w, al = (vA - vC) / (2 * r), (aA - aC) / (2 * r)
+        assert abs(quantity(sol, "omega(B)") - w) < 1e-9 * max(1, abs(w))
+        assert abs(quantity(sol, "alpha(B)") - al) < 1e-9 * max(1, abs(al))
+        # the wheel's points at the two contacts move with their plates (no slip)
+        vB = np.array(h["centre_velocity"])
+        _near(vB + _k(w, np.array([0.0, -r])), (vA, 0.0))
+        _near(vB + _k(w, np.array([0.0, r])), (vC, 0.0))
+
+
+def test_plank_on_rollers_the_plank_a_lone_input_block():
+    """A plank (the input block P) on a roller on the fixed floor: v_W = v_P/2, ω = −v_P/2r."""
+    sol = solve(parse("""
+[ground]
+O = ["0 m", "0 m"]
+[sliders.P]
+through = ["0 m", "0.1 m"]
+direction = "0 deg"
+[driver]
+slider = "P"
+position = "0 m"
+velocity = "2 m/s"
+acceleration = "0.5 m/s^2"
+[rolling.W]
+radius = "50 mm"
+through = ["0 m", "0 m"]
+direction = "0 deg"
+opposite = "P"
+"""))
+    assert abs(quantity(sol, "v(W)") - 1.0) < 1e-12
+    assert abs(quantity(sol, "omega(W)") - (-20.0)) < 1e-12
+    assert abs(quantity(sol, "alpha(W)") - (-5.0)) < 1e-12
+
+
+@pytest.mark.parametrize("opposite,words", [
+    ("A", "a label of its own"),           # the input block: it is not moved at a stated rate
+    ("B", "a label of its own"),           # the cylinder itself
+])
+def test_stated_plate_refusals(opposite, words):
+    with pytest.raises(PolygonsError, match=words):
+        _stated(4.0, 0.0, -2.0, 0.0, 0.1, opposite=opposite)
+
+
+def test_stated_plate_acceleration_alone_is_refused():
+    text = STATED.read_text().replace('opposite_velocity = "-2 m/s"\n', "")
+    with pytest.raises(PolygonsError, match="needs opposite_velocity"):
+        parse(text)

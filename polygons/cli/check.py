@@ -429,7 +429,13 @@ def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
         ok = abs(err) <= tol * (1 + 1e-12) and sense_ok is not False
         step = producing_step(sol, expr)
         hint = ""
-        if not ok:
+        wheel = next((q for q in sol.scene.equivalents if q.kind == "rolling"
+                      and q.at == _fn_args(expr)[1][0] and q.at not in sol.links), None) \
+            if fn in ("omega", "alpha", "v", "a") else None
+        if not ok and wheel is not None and (fn in ("omega", "alpha")
+                                             or wheel.at not in sol.points):
+            hint = wheel.words.split(": ", 1)[-1]       # a wheel: its no-slip condition(s)
+        elif not ok:
             hint = (describe_step(sol, step) if step is not None
                     else "this value is given data: recheck the problem statement and units")
         out.append(Grade(name, expr, UNIT[dimension_of_quantity(expr)], value, expected, tol,
