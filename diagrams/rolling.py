@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from polygons.contacts import rolling
+from polygons.contacts import rolling, wheel_point
 
 from . import scale as scales
 from .labels import Box, Placer, bounds
@@ -116,7 +116,21 @@ def space_items(sol, q, to_paper, k, placer):
         I = to_paper(h["instant_centre"])
         body.append(Circle(I, 0.8, "vertex", cls="instant-centre"))
         notes.append((f"I: instant centre of {q.at}", I))
-    return back, body, notes
+    b_, n_ = rim_items(sol, q, to_paper)
+    return back, body + b_, notes + n_
+
+
+def rim_items(sol, q, to_paper) -> tuple[list, list]:
+    """The wheel's named points ([rolling.W] rim) as dots with their labels."""
+    body, notes = [], []
+    for label, _angle, _dist in q.rim:
+        got = wheel_point(sol, q, label)
+        if got is None:
+            continue
+        P = to_paper(got[0])
+        body.append(Circle(P, 0.6, "vertex", cls="rim-point"))
+        notes.append((label, P))
+    return body, notes
 
 
 def drawing(sol, q, scale: scales.Scale | None = None, paper: str | None = None) -> Drawing:

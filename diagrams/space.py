@@ -166,6 +166,10 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             placer.hard(s1, s2, 1.0)
             back.append(Circle(_r(I), 0.6, "vertex", cls="instant-centre"))
             eq_notes.append((f"I: instant centre of wheel {q.at}", _add(I, e, -rad * 0.9)))
+            b_, n_ = rolling.rim_items(
+                sol, q, lambda p: (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3)))
+            back += b_
+            eq_notes += n_
             continue
         if q.kind == "bearing":   # the fixed circle the bar leans on
             back.append(Circle(_r(c), round(q.radius * k, 3), "link-thin", cls="cylinder"))

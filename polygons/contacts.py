@@ -96,6 +96,12 @@ TABLES: tuple[Table, ...] = (
                                  "by the two plates (no link may join its centre): 'through' "
                                  "is its contact with the first surface, v_W = (v₁ + v₂)/2, "
                                  "ω = (v₁ − v₂)/2r", example='"T"'),
+        Key("rim", "table", "points of the wheel asked about, as books name them ('the "
+                            "point A at the top of the wheel'): label = its angle about the "
+                            "centre, CCW from +x, on the rim; or label = { angle = ..., "
+                            "distance = ... } off the rim (a hub, a spoke). v(A), a(A), "
+                            "dir_v(A) ... of these labels are then results",
+            example='{ A = "90 deg", B = { angle = "0 deg", distance = "30 mm" } }'),
         Key("opposite_velocity", "quantity", "the second plate moved at a stated velocity, "
                                              "as books give it ('the upper plate moves at "
                                              "2 m/s to the left'): signed along `direction`; "
@@ -148,6 +154,8 @@ class Equivalent:
     #: rolling: the second plate's stated (velocity, acceleration) along ``face`` when it is
     #: not a block of the linkage (books: "the upper plate moves at 2 m/s")
     opposite_motion: tuple[float, float] | None = None
+    #: rolling: the wheel's named points, (label, angle CCW from +x about the centre, distance)
+    rim: tuple[tuple[str, float, float], ...] = ()
 
     @property
     def words(self) -> str:
@@ -389,7 +397,9 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                                  file=file, where=where)
         return Equivalent("rolling", label, label, None, None, radius,
                           face=ang, surface=(x, y), on=plates["on"],
-                          opposite=plates["opposite"], opposite_motion=motion)
+                          opposite=plates["opposite"], opposite_motion=motion,
+                          rim=_rim(table.get("rim", {}), label, radius, data, sliders, file,
+                                   where))
     bar, side = table["bar"], table["side"]
     if not isinstance(bar, str) or bar not in links:
         raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
@@ -412,6 +422,76 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
     slots[label] = {"lever": bar, "coincident": coincident, "offset": f"{off!r} m"}
     return Equivalent("bearing", label, label, bar, None, radius, roller=None,
                       face=1.0 if side == "left" else -1.0, surface=None)
+
+
+def _rim(raw, wheel, radius, data, sliders, file, where) -> tuple:
+    """[rolling.W] rim = { A = "90 deg", B = { angle = "0 deg", distance = "30 mm" } }: the
+    wheel's named points (angle CCW from +x about the centre; on the rim unless a distance
+    is given), checked: labels of their own."""
+    if not isinstance(raw, dict):
+        raise SceneError('rim must be a table: rim = { A = "90 deg" }', file=file,
+                         where=f"{where}.rim")
+    used = set()
+    for table in ("ground", "drawn", "points", "slots", "crossing"):
+        t = data.get(table)
+        if isinstance(t, dict):
+            used |= set(t)
+    used |= set(sliders) if isinstance(sliders, dict) else set()
+    for name in data.get("links", {}) if isinstance(data.get("links", {}), dict) else ():
+        if isinstance(name, str):
+            used |= set(_ends(name))
+    out = []
+    for label, spec in raw.items():
+        at = f"{where}.rim.{label}"
+        if not (isinstance(label, str) and label[:1].isupper() and label.isidentifier()):
+            raise SceneError(f"a rim point's label must be a capital letter with letters or "
+                             f"digits, got {label!r}", file=file, where=at)
+        if label == wheel or label in used:
+            raise SceneError(f"{label} is already a point of the mechanism: a wheel's point "
+                             f"needs a label of its own", file=file, where=at)
+        if isinstance(spec, dict):
+            extra = set(spec) - {"angle", "distance"}
+            if extra or "angle" not in spec:
+                raise SceneError("a wheel point off the rim is { angle = \"30 deg\", "
+                                 "distance = \"20 mm\" }", file=file, where=at)
+            angle = _q(spec["angle"], "angle", file, f"{at}.angle")
+            dist = _q(spec.get("distance", f"{radius!r} m"), "length", file, f"{at}.distance")
+            if not (0 <= dist <= 1e3 * radius and math.isfinite(dist)):
+                raise SceneError("distance must be zero or positive, at most 1000 radii",
+                                 file=file, where=f"{at}.distance")
+        else:
+            angle, dist = _q(spec, "angle", file, at), radius
+        out.append((label, angle, dist))
+    return tuple(out)
+
+
+def wheel_point(sol, q: Equivalent, label: str):
+    """A wheel's named point P (``q.rim``): (position, velocity, acceleration) in SI; the
+    wheel is a rigid body turning at ω, α about its centre W —
+
+        v_P = v_W + ω k × WP,      a_P = a_W + α k × WP − ω² WP.
+
+    The centre itself (``q.at``, between two plates not a point of the polygons) is given too.
+    None when ``label`` is not one of this wheel's points or the motion is not solved."""
+    h = rolling(sol, q)
+    if h is None:
+        return None
+    W = h["centre"]
+    if label == q.at:
+        d = (0.0, 0.0)
+    else:
+        spec = next((r for r in q.rim if r[0] == label), None)
+        if spec is None:
+            return None
+        d = (spec[2] * math.cos(spec[1]), spec[2] * math.sin(spec[1]))
+    w, vW = h["omega"], h["centre_velocity"]
+    pos = (W[0] + d[0], W[1] + d[1])
+    vel = (vW[0] - w * d[1], vW[1] + w * d[0])
+    acc = None
+    if "alpha" in h:
+        al, aW = h["alpha"], h["centre_acceleration"]
+        acc = (aW[0] - al * d[1] - w * w * d[0], aW[1] + al * d[0] - w * w * d[1])
+    return pos, vel, acc
 
 
 def _ends(link: str) -> tuple[str, ...]:
@@ -578,14 +658,37 @@ def report_lines(sol) -> list[str]:
                              f"; the wheel's point there accelerates at r·ω² = "
                              f"{math.hypot(*h['contact_acceleration']):.6g} m/s² towards "
                              f"{q.at}" if "contact_acceleration" in h else ""))
-        else:
+        elif q.kind != "rolling":
             lines.append(f"    contact with the bar at {mm(h['contact'])}"
                          + (f", sliding along the bar at {abs(h['sliding_velocity']):.6g} m/s"
                             if "sliding_velocity" in h else ""))
             if "instant_centre" in h:
                 lines.append(f"    instant centre of {q.link}: {mm(h['instant_centre'])} "
                              f"(on the normal to the bar at the contact, through {q.at})")
+        lines += _rim_lines(sol, q, mm)
     return lines
+
+
+def _rim_lines(sol, q, mm) -> list[str]:
+    """The wheel's named points: v_P = v_W + ω k × WP, a_P = a_W + α k × WP − ω² WP."""
+    out = []
+    for label, angle, dist in q.rim:
+        got = wheel_point(sol, q, label)
+        if got is None:
+            continue
+        pos, vel, acc = got
+        snap = lambda v, ref: tuple(0.0 if abs(c) <= 1e-12 * ref else c for c in v)  # noqa: E731
+        pos = snap(pos, max(map(abs, pos)) or 1.0)
+        vel = snap(vel, math.hypot(*vel))
+        acc = snap(acc, math.hypot(*acc)) if acc is not None else None
+        where = ("on the rim" if dist == q.radius else f"{dist * 1000:.6g} mm from {q.at}")
+        text = (f"    {label} ({where} at {math.degrees(angle):.6g}°, {mm(pos)}): |v| = "
+                f"{math.hypot(*vel):.6g} m/s at {math.degrees(math.atan2(vel[1], vel[0])) % 360:.6g}°")
+        if acc is not None:
+            text += (f", |a| = {math.hypot(*acc):.6g} m/s² at "
+                     f"{math.degrees(math.atan2(acc[1], acc[0])) % 360:.6g}°")
+        out.append(text + f"  (v = v_{q.at} + ω × {q.at}{label})")
+    return out
 
 
 def _moving_lines(q, h, mm, sense) -> list[str]:
@@ -658,6 +761,14 @@ def to_list(sol) -> list[dict]:
         d = {"kind": q.kind, "at": q.at, "centre": q.centre, "link": q.link,
              "length_m": q.length, "radius_m": q.radius, "roller_m": q.roller,
              "face_rad": q.face, "on": q.on, "opposite": q.opposite}
+        if q.rim:
+            d["rim"] = []
+            for label, angle, dist in q.rim:
+                got = wheel_point(sol, q, label)
+                d["rim"].append({"label": label, "angle_rad": angle, "distance_m": dist,
+                                 **({"position": list(got[0]), "velocity": list(got[1]),
+                                     "acceleration": list(got[2]) if got[2] else None}
+                                    if got else {})})
         if q.opposite_motion is not None:
             d["opposite_motion"] = {"velocity": q.opposite_motion[0],
                                     "acceleration": q.opposite_motion[1]}
@@ -670,4 +781,4 @@ def to_list(sol) -> list[dict]:
 
 
 __all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list", "rolling",
-           "wheel_centres"]
+           "wheel_centres", "wheel_point"]

@@ -14,8 +14,9 @@
     x(C), y(C)  coordinates                                         (m)
     dir_v(C), dir_a(C)   direction of v_C / a_C, degrees CCW from +x in [0, 360)
     omega(W), alpha(W)   a rolling wheel's ([rolling.W]) ω and α, signed, CCW positive;
-                v(W), a(W) also for a cylinder between two plates (its centre is not a
-                point of the polygons: read off the no-slip conditions)
+                every point function also of a wheel's named points ([rolling.W] rim) and
+                of a cylinder's centre between two plates (not points of the polygons:
+                v_P = v_W + ω k × WP, a_P = a_W + α k × WP − ω² WP, contacts.wheel_point)
 
 Used by the answers table, the tests and ``polygons check``.
 """
@@ -27,7 +28,7 @@ import numpy as np
 
 from . import contacts
 from .errors import SceneError, UnknownLabelError, show, suggest
-from .evaluate import Solution, link_ends
+from .evaluate import PointResult, Solution, link_ends
 # FUNCTIONS is read by polygons.forces as quantities.FUNCTIONS
 from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse  # noqa: F401
 
@@ -59,6 +60,11 @@ def quantity(sol: Solution, expr: str) -> float:
     scene = sol.scene
 
     def point(label):
+        if label not in sol.points:         # a wheel's centre between plates, a rim point
+            for e in getattr(scene, "equivalents", ()):
+                got = contacts.wheel_point(sol, e, label) if e.kind == "rolling" else None
+                if got is not None:
+                    return PointResult(*got)
         if label not in sol.points:
             raise UnknownLabelError(f"unknown point {show(label)} in {show(expr)}: "
                                     f"{suggest(label, sol.points)}", file=scene.file)
@@ -92,20 +98,16 @@ def quantity(sol: Solution, expr: str) -> float:
                      if e.kind == "rolling" and e.at == label), None)
 
     def wheel_value(label, what):
-        """ω / α of the wheel, or the speed / acceleration of its centre along the surface
-        (ω = (v₁ − v_W)/r; between plates v_W = (v₁ + v₂)/2: :func:`contacts.rolling`)."""
+        """ω / α of the wheel (ω = (v₁ − v_W)/r; between plates (v₁ − v₂)/2r:
+        :func:`contacts.rolling`)."""
         h = contacts.rolling(sol, wheel(label))
-        key = {"omega": "omega", "alpha": "alpha", "v": "centre_velocity",
-               "a": "centre_acceleration"}[what]
+        key = what
         if h is None or key not in h:
-            need = "velocity" if what in ("omega", "v") else "acceleration"
+            need = "velocity" if what == "omega" else "acceleration"
             raise SceneError(f"{expr!r} needs the {need} polygon, which this scene does not solve "
                              f"(solve = {list(scene.solve)})", file=scene.file)
-        value = h[key]
-        return float(np.hypot(*value)) if isinstance(value, tuple) else float(value)
+        return float(h[key])
 
-    if fn in ("v", "a") and p not in sol.points and q is None and wheel(p) is not None:
-        return abs(wheel_value(p, fn))
     if fn in ("v", "a"):
         kind = "velocity" if fn == "v" else "acceleration"
         value = vec(p, kind) - (vec(q, kind) if q else 0.0)

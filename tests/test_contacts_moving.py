@@ -288,8 +288,11 @@ def test_plates_moved_at_stated_rates_as_books_state_them():
     rate: v_B = (v_A + v_C)/2, ω = (v_A − v_C)/2r (CCW +), the same with accelerations."""
     sol = solve(load_scene(STATED))
     vA, aA, vC, aC, r = 4.0, 2.0, -2.0, 0.0, 0.125
-    exact = {"omega(B)": (vA - vC) / (2 * r), "v(B)": abs(vA + vC) / 2,
-             "alpha(B)": (aA - aC) / (2 * r), "a(B)": abs(aA + aC) / 2}
+    w, al, vB, aB = (vA - vC) / (2 * r), (aA - aC) / (2 * r), (vA + vC) / 2, (aA + aC) / 2
+    exact = {"omega(B)": w, "v(B)": abs(vB), "alpha(B)": al, "a(B)": abs(aB),
+             # the rim: T on top moves with the upper plate; R level with B, in front of it
+             "v(T)": abs(vC), "v(R)": math.hypot(vB, w * r),
+             "a(R)": math.hypot(aB - w * w * r, al * r)}
     for ans in sol.scene.answers:
         assert abs(abs(exact[ans.quantity]) - ans.exact) < 1e-12 * ans.exact, ans
         assert abs(quantity(sol, ans.quantity) - exact[ans.quantity]) < 1e-12 * ans.exact
@@ -344,4 +347,43 @@ def test_stated_plate_refusals(opposite, words):
 def test_stated_plate_acceleration_alone_is_refused():
     text = STATED.read_text().replace('opposite_velocity = "-2 m/s"\n', "")
     with pytest.raises(PolygonsError, match="needs opposite_velocity"):
+        parse(text)
+
+
+def test_rim_points_of_a_wheel_on_the_ground():
+    """[rolling.W] rim: the contact point is at rest with r·ω² towards W, the top moves at
+    2 v_W, any point P at v_W + ω k × WP (the wheel of rolling-wheel-driven, on the floor)."""
+    text = (CASE.parent / "rolling-wheel-driven.toml").read_text().replace(
+        'direction = "0 deg"\n\n[assembly]',
+        'direction = "0 deg"\nrim = { K = "270 deg", T = "90 deg", '
+        'S = { angle = "30 deg", distance = "20 mm" } }\n\n[assembly]')
+    assert "rim =" in text
+    sol = solve(parse(text))
+    W, vW, aW = (np.array(getattr(sol.points["W"], k)) for k in
+                 ("position", "velocity", "acceleration"))
+    w, al = quantity(sol, "omega(W)"), quantity(sol, "alpha(W)")
+    assert quantity(sol, "v(K)") < 1e-12 * np.hypot(*vW)
+    assert abs(quantity(sol, "a(K)") - 0.05 * w * w) < 1e-9 * 0.05 * w * w
+    assert abs(quantity(sol, "dir_a(K)") - math.pi / 2) < 1e-9       # up, towards W
+    assert abs(quantity(sol, "v(T)") - 2 * np.hypot(*vW)) < 1e-9 * np.hypot(*vW)
+    d = 0.02 * np.array([math.cos(math.pi / 6), math.sin(math.pi / 6)])
+    vS = vW + _k(w, d)
+    aS = aW + _k(al, d) - w * w * d
+    assert abs(quantity(sol, "v(S)") - np.hypot(*vS)) < 1e-9 * np.hypot(*vS)
+    assert abs(quantity(sol, "a(S)") - np.hypot(*aS)) < 1e-9 * np.hypot(*aS)
+    assert abs(quantity(sol, "dist(S,W)") - 0.02) < 1e-12
+    assert any(line.lstrip().startswith("S (20 mm from W") for line in report_lines(sol))
+
+
+@pytest.mark.parametrize("rim,words", [
+    ('rim = { A = "90 deg" }', "already a point"),
+    ('rim = { W = "90 deg" }', "already a point"),
+    ('rim = { T = { angle = "90 deg", distance = "-1 mm" } }', "distance must be"),
+    ('rim = { T = { distance = "1 mm" } }', "off the rim is"),
+    ('rim = "T"', "rim must be a table"),
+])
+def test_rim_refusals(rim, words):
+    text = (CASE.parent / "rolling-wheel-driven.toml").read_text().replace(
+        'direction = "0 deg"\n\n[assembly]', f'direction = "0 deg"\n{rim}\n\n[assembly]')
+    with pytest.raises(PolygonsError, match=words):
         parse(text)
