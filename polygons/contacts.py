@@ -72,6 +72,16 @@ TABLES: tuple[Table, ...] = (
             default=False),
         Key("face", "quantity", "the flat face's direction, CCW from +x (flat follower)",
             example='"0 deg"', dimension="angle"),
+        Key("arm", "link", "an oscillating flat-faced follower: the arm (a [links] entry, "
+                           "pivot label first, the pivot in [ground]) whose face runs along "
+                           "it; instead of face and [sliders.LABEL] (the label is then the "
+                           "arm's far end)", example='"QF"'),
+        Key("side", "string", "with arm: the side of the face, looking along the arm from "
+                              "its pivot, on which the cam lies: 'left' or 'right'",
+            example='"right"'),
+        Key("face_offset", "quantity", "with arm: the face's distance from the line through "
+                                       "the arm's ends, positive to the left",
+            example='"0 mm"', dimension="length", default="0 mm"),
     ), many=True),
     Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a straight "
                      "surface, fixed or carried by a plate translating along it (`on`), or "
@@ -156,6 +166,9 @@ class Equivalent:
     opposite_motion: tuple[float, float] | None = None
     #: rolling: the wheel's named points, (label, angle CCW from +x about the centre, distance)
     rim: tuple[tuple[str, float, float], ...] = ()
+    #: an oscillating flat-faced follower's arm (its face along it; ``face`` then ±1: the
+    #: cam's side, left / right)
+    arm: str | None = None
 
     @property
     def words(self) -> str:
@@ -191,6 +204,11 @@ class Equivalent:
                     f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) "
                     f"moves at this instant as the equivalent link {self.link} = "
                     f"{self.length * 1000:.6g} mm")
+        if self.arm is not None:
+            return (f"the flat face of the arm {self.arm} on the cam arc (centre of curvature "
+                    f"{self.centre}, radius {self.radius * 1000:.6g} mm) moves at this instant "
+                    f"as the crank and slotted lever: {self.centre} slides in a slot of "
+                    f"{self.arm} ∥ the face, {self.radius * 1000:.6g} mm from it")
         return (f"the flat face of {self.at} (at {math.degrees(self.face):.6g}°) on the cam arc "
                 f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) moves "
                 f"at this instant as a Scotch yoke: {self.centre} slides in a slot ∥ the face "
@@ -269,6 +287,16 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
             if follower not in (None, "roller", "flat"):
                 raise SceneError(f"follower must be 'roller' or 'flat', got {follower!r}",
                                  file=file, where=f"{where}.follower")
+            if follower == "flat" and "arm" in table:
+                out.append(_flat_arm(table, label, centre, radius, links, slots, data, file,
+                                     where))
+                continue
+            if any(k in table for k in ("side", "face_offset")):
+                raise SceneError("side and face_offset are for an oscillating flat-faced "
+                                 "follower (arm = \"QF\")", file=file, where=where)
+            if "arm" in table:
+                raise SceneError("arm is for a flat-faced follower (follower = \"flat\")",
+                                 file=file, where=f"{where}.arm")
             if follower == "flat":
                 if "face" not in table:
                     raise SceneError("a flat-faced follower needs face = \"<angle>\" (the "
@@ -321,9 +349,50 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
             out.append(Equivalent("curved slot" if name == "curved_slots" else "cam", label,
                                   centre, link, length, radius, roller))
     data["links"] = links
+    if slots:
+        data["slots"] = slots
     if isinstance(sliders, dict) and sliders:
         data["sliders"] = sliders
     return data, tuple(out)
+
+
+def _flat_arm(table, label, centre, radius, links, slots, data, file, where) -> "Equivalent":
+    """[cams.F] follower = "flat", arm = "QF": a flat face along an arm pivoted at Q.  The cam's
+    centre of curvature C stays at the radius from the face, so at the instant C moves as a
+    pin in a slot of the arm ∥ the face, offset by face_offset ± radius (the cam's side): the
+    equivalent is the crank and slotted lever (RPR with an offset slot)."""
+    if "face" in table:
+        raise SceneError("an arm's face runs along the arm: give arm or face, not both",
+                         file=file, where=f"{where}.face")
+    if "roller" in table or table.get("concave"):
+        raise SceneError("roller and concave are for a roller follower", file=file, where=where)
+    arm = table["arm"]
+    if not isinstance(arm, str) or arm not in links:
+        raise SceneError(f"arm must be a link of [links] (the follower's arm, pivot first), got "
+                         f"{arm!r}", file=file, where=f"{where}.arm")
+    ends = [(arm[:i], arm[i:]) for i in range(1, len(arm))]
+    ground = data.get("ground", {}) if isinstance(data.get("ground"), dict) else {}
+    ends = [(a, b) for a, b in ends if a in ground and b == label]
+    if not ends:
+        raise SceneError(f"the arm {arm} must run from a fixed pivot in [ground] to the "
+                         f"follower's label {label}", file=file, where=f"{where}.arm")
+    side = table.get("side")
+    if side not in ("left", "right"):
+        raise SceneError(f"side must be 'left' or 'right' (where the cam lies, looking along "
+                         f"the arm from its pivot), got {side!r}", file=file,
+                         where=f"{where}.side")
+    if slots is None or centre in slots:
+        raise SceneError(f"{centre} is already a pin in [slots]", file=file, where=where)
+    e = _q(table.get("face_offset", "0 mm"), "length", file, f"{where}.face_offset")
+    off = e + (radius if side == "left" else -radius)
+    coincident = centre + "1"
+    n = 1
+    while coincident in str(data):         # a label the scene does not use
+        n += 1
+        coincident = f"{centre}{n}"
+    slots[centre] = {"lever": arm, "coincident": coincident, "offset": f"{off!r} m"}
+    return Equivalent("flat-faced cam", label, centre, None, None, radius, arm=arm,
+                      face=1.0 if side == "left" else -1.0)
 
 
 def _check_keys(table, name, label, file):

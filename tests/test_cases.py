@@ -102,6 +102,8 @@ OWN_EXACT_CHECK = {
     "curved-slot-pin": ("test_contacts.py", "test_curved_slot_case_and_random_instances"),
     "rolling-wheel-driven": ("test_contacts.py",
                              "test_rolling_wheel_is_the_offset_slider_crank_and_turns_at_v_over_r"),
+    "cam-oscillating-flat-follower": ("test_contacts.py",
+                                      "test_oscillating_flat_follower_is_the_tangency_condition"),
     "rolling-plates-stated": ("test_contacts_moving.py",
                               "test_plates_moved_at_stated_rates_as_books_state_them"),
     "rolling-cylinder-between-plates": ("test_contacts_moving.py",
