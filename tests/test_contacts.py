@@ -325,3 +325,16 @@ def test_oscillating_flat_follower_refusals(edit, words):
     text = (ROOT / "cam-oscillating-flat-follower.toml").read_text().replace(*edit)
     with pytest.raises(PolygonsError, match=words):
         parse_scene(parse_toml(text, "x.toml"), file="x.toml")
+
+
+def test_words_about_a_point_with_one_position_must_hold():
+    """[assembly] words on a point placed without a choice are checked, not passed over."""
+    from polygons.scene import parse_scene, parse_toml
+    text = (ROOT / "cam-oscillating-flat-follower.toml").read_text()
+    ok = parse_scene(parse_toml(text + '\n[assembly]\nF = "F below OQ"\n', "x.toml"),
+                     file="x.toml")
+    assert solve(ok).points["F"].position[1] < 0
+    bad = parse_scene(parse_toml(text + '\n[assembly]\nF = "F above OQ"\n', "x.toml"),
+                      file="x.toml")
+    with pytest.raises(PolygonsError, match="one position here.*not 'F above OQ'"):
+        solve(bad)
