@@ -132,6 +132,9 @@ code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
   .screen-only { display: none; }     /* a command line is no use on paper */
 }
 table.wide { width: 100%; }
+section.forces ul.construction { margin: 1mm 0; padding-left: 5mm; font-size: 9pt; }
+section.forces table { font-size: 8.5pt; }
+div.force-group h3 { break-after: avoid; page-break-after: avoid; }
 table.wide td.q { width: 30%; }
 @media screen {
   body { padding: 8mm 6mm; }
