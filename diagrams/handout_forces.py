@@ -33,8 +33,10 @@ def asked(sol) -> tuple[bool, bool]:
     return ho.force_polygons, ho.zhukovsky
 
 
-def _refused(key: str, why: str, file) -> UnsupportedError:
-    return UnsupportedError(f"[handout] {key}: {why}", file=file)
+def _refused(key: str, e, file) -> UnsupportedError:
+    """The method's own one-line refusal, located at the key that asked for it."""
+    why = e if isinstance(e, str) else getattr(e, "reason", None) or str(e)
+    return UnsupportedError(f"{key} = true: {why}", file=file, where=f"handout.{key}")
 
 
 def check(sol):
@@ -47,27 +49,26 @@ def check(sol):
     scene = sol.scene
     if not has_forces(scene):
         key = "force_polygons" if polys else "zhukovsky"
-        raise SceneError(f"[handout] {key} asks for a force method, but the scene has no "
+        raise SceneError(f"{key} = true asks for a force method, but the scene has no "
                          f"[masses], [forces], [torques] or [springs]", file=scene.file,
                          where=f"handout.{key}")
     if polys:
-        why = graphical.handled(scene)
-        if why is not None:
-            raise _refused("force_polygons", why, scene.file)
+        try:
+            graphical.groups_of(scene)
+        except UnsupportedError as e:
+            raise _refused("force_polygons", e, scene.file) from None
     an = analyse(scene)
     for st in an.states:
         if polys:
             try:
                 graphical.construct(an, st)
             except UnsupportedError as e:
-                raise _refused("force_polygons", e.args[0] if e.args else str(e),
-                               scene.file) from None
+                raise _refused("force_polygons", e, scene.file) from None
         if lever:
             try:
                 zhukovsky.construct(an, st)
             except UnsupportedError as e:
-                raise _refused("zhukovsky", e.args[0] if e.args else str(e),
-                               scene.file) from None
+                raise _refused("zhukovsky", e, scene.file) from None
     return an
 
 
@@ -140,7 +141,8 @@ def _polygons(an) -> str:
         out.append(_state_heading(an, st))
         for g in fp.groups:
             out.append(f'<div class="force-group" id="force-group-{esc(st.name)}-{g.index}">'
-                       f"<h3>Group {g.index}: {sym(g.title)}</h3>\n<ul class=\"construction\">\n")
+                       f"<h3>{sym(g.title[:1].upper() + g.title[1:])}</h3>\n"
+                       '<ul class="construction">\n')
             for k in g.knowns:
                 if k.pos is not None and k.force.any():
                     h = (f", offset h = {_n(k.offset * 1e3)} mm" if k.kind == "inertia"
@@ -220,7 +222,7 @@ def _lever(an) -> str:
             out.append(f"<tr><td>{sym(a.name)}</td><td class=\"n\">"
                        f"{_n(float(np.hypot(*a.force)))}</td><td class=\"n\">"
                        f"{_deg(a.force) if a.force.any() else '–'}</td><td class=\"n\">"
-                       f"{img}</td><td class=\"n\">{_n(a.moment)}</td></tr>\n")
+                       f"{img}</td><td class=\"n\">{_n(a.moment + 0.0)}</td></tr>\n")
         out.append("</table>\n")
         vw = st.vw_effort
         vw_text = ("" if vw is None else
