@@ -60,14 +60,14 @@ SUBSUP_CSS = (".subsup{display:inline-flex;flex-direction:column;vertical-align:
               ".subsup sub,.subsup sup{display:block;font-size:1em;vertical-align:baseline;"
               "line-height:1}.subsup sup{order:-1}")
 CSS = """
-@page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
+@page { size: A4 portrait; margin: 12mm 14mm 12mm 14mm; }
 html { background: #ffffff; }
-body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 10pt;
-       line-height: 1.38; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
+body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 9.5pt;
+       line-height: 1.32; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
 h1, h2, h3, .figure-note, table, .formula, .explain h4, .badge, footer, .data dt {
        font-family: "DejaVu Sans", Verdana, Arial, sans-serif; }
 h1 { font-size: 17pt; line-height: 1.2; margin: 0 0 2mm 0; }
-h2 { font-size: 13pt; margin: 5mm 0 2mm 0; border-bottom: 0.4mm solid #000;
+h2 { font-size: 13pt; margin: 3.5mm 0 1.5mm 0; border-bottom: 0.4mm solid #000;
      break-after: avoid; page-break-after: avoid; }
 h3 { font-size: 11pt; margin: 4mm 0 1.5mm 0; break-after: avoid; page-break-after: avoid; }
 p { margin: 1mm 0 1.4mm 0; }
@@ -76,9 +76,9 @@ p { margin: 1mm 0 1.4mm 0; }
          font-weight: bold; margin-right: 1.5mm; }
 .statement { border-left: 1mm solid #999; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
 .statement p { margin: 0.8mm 0; }
-table { border-collapse: collapse; font-size: 9pt; margin: 2mm 0 3mm 0; }
+table { border-collapse: collapse; font-size: 9pt; margin: 1.5mm 0 2mm 0; }
 tr { break-inside: avoid; page-break-inside: avoid; }
-th, td { border-bottom: 0.2mm solid #999; padding: 0.8mm 2.2mm; text-align: left;
+th, td { border-bottom: 0.2mm solid #999; padding: 0.5mm 2mm; text-align: left;
          vertical-align: top; }
 th { border-bottom: 0.4mm solid #000; font-weight: bold; }
 table.data th { border-bottom: 0.2mm solid #999; }
@@ -90,8 +90,8 @@ li.step { margin: 0 0 4mm 0; }
    breaks); the multicolumn list starts below a finished diagram floated to this page
    (Chromium's columns and floats on one page otherwise overlap) */
 ol.steps.staged { column-count: 3; column-gap: 5mm; clear: both; }
-ol.steps.staged li.step { margin: 0 0 2.5mm 0; font-size: 9pt; line-height: 1.3; }
-ol.steps.staged figure { margin: 1mm 0 0 0; }
+ol.steps.staged li.step { margin: 0 0 1.5mm 0; font-size: 9pt; line-height: 1.3; }
+ol.steps.staged figure { margin: 0.5mm 0 0 0; }
 ol.steps.staged figure.narrow { float: right; margin: 0 0 1mm 2mm; }
 ol.steps.staged figure.narrow figcaption { max-width: 40mm; }
 ol.steps.staged > aside.explain { margin: 0 0 2mm 0; }
@@ -109,21 +109,23 @@ figure { margin: 1.5mm 0 1mm 8mm; break-inside: avoid; page-break-inside: avoid;
 figure svg { display: block; max-width: 100%; height: auto; }
 figure svg.drawing-area { max-width: none; }
 figcaption, .figure-note { font-size: 8.5pt; color: #333; }
-section.plate { margin-top: 4mm; }
+section.plate { margin-top: 0; }
 section.plate div.sheet { float: left; width: 100%; break-inside: avoid;
-                          page-break-inside: avoid; margin-bottom: 3mm; }
+                          page-break-inside: avoid; margin-bottom: 0.5mm; }
 section.plate + section, #results { clear: none; }
 section.plate h2, section.plate h3 { break-after: avoid; page-break-after: avoid; }
 section.plate figure { margin: 0; }
 figure.centres { float: left; margin: 0 4mm 2mm 0; }
 section#centres { overflow: hidden; break-inside: avoid; }
-section.plate h3 { margin-top: 0; }
+section.plate h3 { margin: 0 0 0.5mm 0; }
+section.plate .figure-note { margin: 0.3mm 0 0.5mm 0; }
+p.note { margin: 0.5mm 0; }
 .note { font-size: 9.5pt; }
-.slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
+.slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 1.5mm 0; }
 .about p { font-size: 8.5pt; color: #222; margin: 0.3mm 0 1mm 0; }
 .about h3 { font-size: 9pt; margin: 2mm 0 0.3mm 0; }
-footer { font-size: 8pt; color: #333; margin-top: 6mm; border-top: 0.2mm solid #999;
-         padding-top: 1.5mm; }
+footer { font-size: 8pt; color: #333; margin-top: 2mm; border-top: 0.2mm solid #999;
+         padding-top: 1mm; line-height: 1.2; }
 code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
 .ok { font-weight: normal; }
 .off { font-weight: bold; }
@@ -132,7 +134,9 @@ code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
   .screen-only { display: none; }     /* a command line is no use on paper */
 }
 table.wide { width: 100%; }
-section.forces ul.construction { margin: 1mm 0; padding-left: 5mm; font-size: 9pt; }
+section.forces ul.construction { margin: 1mm 0; padding-left: 5mm; font-size: 8.5pt;
+                               column-count: 2; column-gap: 6mm; }
+section.forces ul.construction li { break-inside: avoid; }
 section.forces table { font-size: 8.5pt; }
 div.force-group h3 { break-after: avoid; page-break-after: avoid; }
 table.wide td.q { width: 30%; }

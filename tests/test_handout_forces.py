@@ -22,10 +22,27 @@ def _g6(x: float) -> str:
     return f"{x:.6g}".replace("-", "−")
 
 
+def _with(tmp_path, stem: str, table: str) -> Path:
+    p = tmp_path / f"{stem}.toml"
+    p.write_text((CASES / f"{stem}.toml").read_text(encoding="utf-8").split("\n[handout]")[0]
+                 + "\n" + table + "\n", encoding="utf-8")
+    return p
+
+
+BOTH = "[handout]\nforce_polygons = true\nzhukovsky = true"
+
+
 @pytest.fixture(scope="module")
-def keys():
+def keys(tmp_path_factory):
+    """Each case's answer key with both sections (the shipped files ask for one each)."""
     from polygons.cli.handout import build
-    return {stem: build(str(CASES / f"{stem}.toml")) for stem in ASKED}
+    tmp = tmp_path_factory.mktemp("keys")
+    return {stem: build(str(_with(tmp, stem, BOTH))) for stem in ASKED}
+
+
+def test_shipped_cases_ask_for_the_methods():
+    asked = {stem: load_scene(CASES / f"{stem}.toml").options.handout for stem in ASKED}
+    assert asked["s001-we8"].force_polygons and asked["forces-toggle-press"].zhukovsky
 
 
 @pytest.mark.parametrize("stem", ASKED)
@@ -59,13 +76,6 @@ def test_not_asked_no_section_and_worksheet_never():
     assert 'id="force-polygons"' not in page and 'id="zhukovsky"' not in page
     ws = build(str(CASES / "s001-we8.toml"), worksheet=True)
     assert 'id="force-polygons"' not in ws and 'id="zhukovsky"' not in ws
-
-
-def _with(tmp_path, stem: str, table: str) -> Path:
-    p = tmp_path / f"{stem}.toml"
-    p.write_text((CASES / f"{stem}.toml").read_text(encoding="utf-8").split("\n[handout]")[0]
-                 + "\n" + table + "\n", encoding="utf-8")
-    return p
 
 
 @pytest.mark.parametrize("table, words", [
