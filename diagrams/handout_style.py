@@ -132,7 +132,11 @@ code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
 @media print {
   body { max-width: none; padding: 0; }
   .screen-only { display: none; }     /* a command line is no use on paper */
+  footer { display: none; }           /* the key's footer too: a command line (it took a
+                                         page of its own on three cases) */
 }
+@page { @bottom-right { content: "page " counter(page) " of " counter(pages);
+                        font: 8pt "DejaVu Sans", Verdana, Arial, sans-serif; color: #333; } }
 table.wide { width: 100%; }
 section.forces ul.construction { margin: 1mm 0; padding-left: 5mm; font-size: 8.5pt;
                                column-count: 2; column-gap: 6mm; }
