@@ -60,7 +60,7 @@ SUBSUP_CSS = (".subsup{display:inline-flex;flex-direction:column;vertical-align:
               ".subsup sub,.subsup sup{display:block;font-size:1em;vertical-align:baseline;"
               "line-height:1}.subsup sup{order:-1}")
 CSS = """
-@page { size: A4 portrait; margin: 12mm 14mm 12mm 14mm; }
+@page { size: A4 portrait; margin: 10mm 14mm 10mm 14mm; }
 html { background: #ffffff; }
 body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 9.5pt;
        line-height: 1.32; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
@@ -86,11 +86,15 @@ td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space:
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
 li.step { margin: 0 0 4mm 0; }
-/* the steps in two columns (a step may continue in the next column; its figure never
-   breaks); the multicolumn list starts below a finished diagram floated to this page
-   (Chromium's columns and floats on one page otherwise overlap) */
-ol.steps.staged { column-count: 3; column-gap: 5mm; clear: both; }
-ol.steps.staged li.step { margin: 0 0 1.5mm 0; font-size: 9pt; line-height: 1.3; }
+/* the steps in three columns (a step may continue in the next column; its figure never
+   breaks).  A finished diagram that does not fit what is left of a page floats to the next
+   one and the next section fills the rest: its columns too, because the section is a table
+   (one cell).  Chromium loses the part of a multicolumn list that falls on the page of a
+   float it pushed on (and a list kept below the float leaves the gap empty); a table's
+   continuation on that page starts below the float, and its columns with it. */
+section.construction { display: table; table-layout: fixed; width: 100%; }
+ol.steps.staged { column-count: 3; column-gap: 5mm; }
+ol.steps.staged li.step { margin: 0 0 1.5mm 0; font-size: 8.5pt; line-height: 1.28; }
 ol.steps.staged figure { margin: 0.5mm 0 0 0; }
 ol.steps.staged figure.narrow { float: right; margin: 0 0 1mm 2mm; }
 ol.steps.staged figure.narrow figcaption { max-width: 40mm; }
@@ -101,15 +105,15 @@ li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weig
 .formula { font-size: 9.5pt; margin: 0.5mm 0 1mm 8mm; }
 .formula.symbolic { color: #333; }
 .explain { border: 0.3mm solid #000; padding: 1mm 2.5mm; margin: 1mm 0 2mm 0;
-           break-inside: avoid; page-break-inside: avoid; font-size: 8.5pt; line-height: 1.3; }
-.explain h4 { margin: 0 0.4em 0 0; font-size: 8.5pt; display: inline; }
+           break-inside: avoid; page-break-inside: avoid; font-size: 8pt; line-height: 1.28; }
+.explain h4 { margin: 0 0.4em 0 0; font-size: 8pt; display: inline; }
 .explain p { display: inline; }
 .explain p { margin: 0; }
 figure { margin: 1.5mm 0 1mm 8mm; break-inside: avoid; page-break-inside: avoid; }
 figure svg { display: block; max-width: 100%; height: auto; }
 figure svg.drawing-area { max-width: none; }
 figcaption, .figure-note { font-size: 8.5pt; color: #333; }
-section.plate { margin-top: 0; }
+section.plate { margin-top: 1.5mm; }
 section.plate div.sheet { float: left; width: 100%; break-inside: avoid;
                           page-break-inside: avoid; margin-bottom: 0.5mm; }
 section.plate + section, #results { clear: none; }
