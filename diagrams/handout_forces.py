@@ -106,8 +106,7 @@ def _figure(stem: str, drawing, title: str) -> str:
         if svg_size(narrow)[0] <= WIDTH_MM:
             svg, w = narrow, svg_size(narrow)[0]
     note = ("" if w <= WIDTH_MM else
-            '<p class="figure-note">Reduced to the page width: the scale bar gives its '
-            'scale.</p>')
+            '<p class="figure-note">Reduced to the page width (its scale bar with it).</p>')
     return (f'<figure class="diagram full">{inline_svg(svg, stem, "figure", min(w, WIDTH_MM), title)}'
             f"</figure>{note}\n")
 
@@ -196,14 +195,12 @@ def _lever(an) -> str:
     from polygons.forces import effort, zhukovsky
     from . import forcepoly
     out = ['<section id="zhukovsky" class="forces">\n<h2>Zhukovsky’s lever</h2>\n'
-           "<p>The velocity polygon turned 90° counter-clockwise about its pole o is taken as "
-           "a rigid lever pivoted at o. Each force, inertia forces included (through their "
-           "offset points), is applied parallel to itself at the turned image of its point "
-           "of application; a couple C on a link AB is applied as the pair ±C/AB normal to "
-           "AB at the images a and b. The moment of a force about the pole is the power it "
-           "delivers, with its sign changed, so the lever balances when the effort's moment "
-           "cancels the sum of the others: the effort follows from moments about o, and "
-           "equals the one found by virtual work.</p>\n"]
+           "<p>The velocity polygon turned 90° counter-clockwise about its pole o is a rigid "
+           "lever pivoted at o. Each force (inertia forces through their offset points) is "
+           "applied parallel to itself at the turned image of its point; a couple C on a link "
+           "AB as the pair ±C/AB normal to AB at a and b. A force's moment about o is minus "
+           "the power it delivers: the effort balancing the moments is the virtual work's."
+           "</p>\n"]
     unit = effort.unit(an.model)
     for st in an.states:
         lv = zhukovsky.construct(an, st)
@@ -217,8 +214,11 @@ def _lever(an) -> str:
         out.append('<table class="answer forces" id="zhukovsky-moments">\n<tr><th>force</th>'
                    '<th class="n">|F| N</th><th class="n">direction</th><th class="n">image '
                    '(turned) m/s</th><th class="n">moment about o</th></tr>\n')
-        for a in lv.applied + lv.effort_forces:
-            img = f"({_n(a.lever[0] + 0.0)}, {_n(a.lever[1] + 0.0)})"
+        ext = max([float(np.hypot(*a.lever)) for a in lv.applied + lv.effort_forces]
+                  + [1e-300])
+        for a in lv.applied + lv.effort_forces:     # a rounding residue (1e-17) shown as 0
+            x, y = (0.0 if abs(c) < 1e-12 * ext else float(c) for c in a.lever)
+            img = f"({_n(x)}, {_n(y)})"
             out.append(f"<tr><td>{sym(a.name)}</td><td class=\"n\">"
                        f"{_n(float(np.hypot(*a.force)))}</td><td class=\"n\">"
                        f"{_deg(a.force) if a.force.any() else '–'}</td><td class=\"n\">"
@@ -228,9 +228,9 @@ def _lever(an) -> str:
         vw_text = ("" if vw is None else
                    f"; by virtual work {esc(effort_words(an, vw))} (difference "
                    f"{abs(lv.effort - vw):.1e} {esc(unit)})")
-        out.append(f"<p>Σ moments of the known forces about o = {_n(lv.moment_sum)}; the "
-                   f"moment of a unit effort = {_n(lv.unit_moment)}.</p>\n"
-                   f'<p class="force-effort"><strong>{esc(effort.words(an.model))}: '
+        out.append(f'<p class="force-effort">Σ moments of the known forces about o = '
+                   f"{_n(lv.moment_sum)}; the moment of a unit effort = {_n(lv.unit_moment)}: "
+                   f"<strong>{esc(effort.words(an.model))}: "
                    f"{esc(effort_words(an, lv.effort))}</strong>{vw_text}.</p>\n")
     out.append("</section>\n")
     return "".join(out)

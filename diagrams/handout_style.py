@@ -146,7 +146,8 @@ section.forces ul.construction { margin: 1mm 0; padding-left: 5mm; font-size: 8.
                                column-count: 2; column-gap: 6mm; }
 section.forces ul.construction li { break-inside: avoid; }
 section.forces table { font-size: 8.5pt; }
-div.force-group h3 { break-after: avoid; page-break-after: avoid; }
+div.force-group h3, div.force-group ul.construction { break-after: avoid;
+                                                 page-break-after: avoid; }
 table.wide td.q { width: 30%; }
 @media screen {
   body { padding: 8mm 6mm; }
