@@ -16,6 +16,7 @@ and typeset (:func:`diagrams.html.sym`).
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -107,8 +108,16 @@ def _figure(stem: str, drawing, title: str) -> str:
             svg, w = narrow, svg_size(narrow)[0]
     note = ("" if w <= WIDTH_MM else
             '<p class="figure-note">Reduced to the page width (its scale bar with it).</p>')
-    return (f'<figure class="diagram full">{inline_svg(svg, stem, "figure", min(w, WIDTH_MM), title)}'
-            f"</figure>{note}\n")
+    fig = inline_svg(svg, stem, "figure", min(w, WIDTH_MM), title)
+    return f'<figure class="diagram full">{fig}</figure>{note}\n'
+
+
+_MINUS = re.compile(r"(?<![\w])-(?=[\d.])")
+
+
+def _slug(name: str) -> str:
+    """An HTML id part for a state's name ('after 30 deg' → 'after-30-deg')."""
+    return re.sub(r"[^A-Za-z0-9]+", "-", name).strip("-") or "state"
 
 
 def _state_heading(an, st) -> str:
@@ -139,7 +148,7 @@ def _polygons(an) -> str:
                 figs[int(stem.rsplit("-", 1)[1])] = (stem, d)
         out.append(_state_heading(an, st))
         for g in fp.groups:
-            out.append(f'<div class="force-group" id="force-group-{esc(st.name)}-{g.index}">'
+            out.append(f'<div class="force-group" id="force-group-{_slug(st.name)}-{g.index}">'
                        f"<h3>{sym(g.title[:1].upper() + g.title[1:])}</h3>\n"
                        '<ul class="construction">\n')
             for k in g.knowns:
@@ -151,8 +160,8 @@ def _polygons(an) -> str:
                 if k.couple:
                     out.append(f"<li>known: {sym(k.name)}, a couple of {_n(k.couple)} N m "
                                f"(CCW +) on {esc(k.body)}</li>\n")
-            for m in g.moments:
-                out.append(f"<li>{sym(m.replace('-', '−'))}</li>\n")
+            for m in g.moments:            # a number's minus sign typeset as such
+                out.append(f"<li>{sym(_MINUS.sub('−', m))}</li>\n")
             for f in g.normals:
                 out.append(f"<li>by moments: {sym(f.name)} = {_n(f.value)} N, normal to "
                            f"the link</li>\n")
@@ -171,7 +180,8 @@ def _polygons(an) -> str:
                 stem, d = figs[g.index]
                 out.append(_figure(stem, d, f"Force polygon of group {g.index}"))
             out.append("</div>\n")
-        out.append('<table class="answer forces" id="force-polygon-reactions">\n<tr><th>pin'
+        out.append(f'<table class="answer forces" id="force-polygon-reactions-{_slug(st.name)}">'
+                   '\n<tr><th>pin'
                    '</th><th>force on</th><th class="n">F<sub>x</sub> N</th><th class="n">'
                    'F<sub>y</sub> N</th><th class="n">|F| N</th><th class="n">direction</th>'
                    "</tr>\n")
@@ -211,7 +221,8 @@ def _lever(an) -> str:
         for stem, d in forcepoly.lever_drawings(an, st):
             if getattr(d, "stage", None) is None:
                 out.append(_figure(stem, d, "Zhukovsky's lever"))
-        out.append('<table class="answer forces" id="zhukovsky-moments">\n<tr><th>force</th>'
+        out.append(f'<table class="answer forces" id="zhukovsky-moments-{_slug(st.name)}">'
+                   '\n<tr><th>force</th>'
                    '<th class="n">|F| N</th><th class="n">direction</th><th class="n">image '
                    '(turned) m/s</th><th class="n">moment about o</th></tr>\n')
         ext = max([float(np.hypot(*a.lever)) for a in lv.applied + lv.effort_forces]

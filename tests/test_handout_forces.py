@@ -58,7 +58,7 @@ def test_sections_carry_newton_euler_and_virtual_work_numbers(stem, keys):
         sense = "CCW" if e > 0 else "CW"
         assert f"{abs(e):.8g} N m {sense}" in polys and f"{abs(e):.8g} N m {sense}" in lever
     # every pin reaction in the table is Newton–Euler's (magnitude, to 6 figures)
-    table = polys[polys.index('id="force-polygon-reactions"'):]
+    table = polys[polys.index('id="force-polygon-reactions-'):]
     rows = re.findall(r"<tr><td>([^<]*)</td><td>([^<]*)</td>", table)
     assert len(rows) >= len(st.ne.pin)
     for (lab, body), f in st.ne.pin.items():
@@ -104,3 +104,16 @@ def test_method_refused_in_one_line(tmp_path, stem, table, words):
         build(str(_with(tmp_path, stem, table)))
     assert words in str(e.value) and "\n" not in str(e.value)
     assert "[handout." in str(e.value)
+
+
+def test_every_state_has_its_sections_with_unique_ids(tmp_path):
+    """A release case (two states): each state's groups, table and lever, ids never repeated."""
+    from polygons.cli.handout import build
+    page = build(str(_with(tmp_path, "s002-ex3.16", BOTH)))
+    an = analyse(load_scene(CASES / "s002-ex3.16.toml"))
+    assert len(an.states) == 2
+    for st in an.states:
+        assert f"<h3>{st.name}</h3>" in page
+    ids = re.findall(r'\bid="([^"]+)"', re.sub(r"<svg\b.*?</svg>", "", page, flags=re.S))
+    assert len(ids) == len(set(ids))
+    assert page.count('id="force-polygon-reactions-') == page.count('id="zhukovsky-moments-') == 2
