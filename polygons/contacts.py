@@ -24,6 +24,12 @@ scene is read, so every method sees ordinary links, sliders and yokes):
     face = "0 deg"          # the face's direction (fixed: the follower only translates)
                             # → a Scotch yoke: C slides in a slot ∥ the face, carried by F
 
+A wheel rolling on a straight surface ([rolling]) keeps the equivalent slider when the surface
+is fixed or carried by a plate that translates along itself (``on``); a cylinder between two
+such plates (``opposite``) has no lower-pair equivalent — its centre's place along the plates
+is the mean of theirs — and is solved from the no-slip condition at each contact
+(:func:`rolling`), outside the linkage.
+
 Refused in words where the curvature is not given (no ``centre`` / ``radius``), and for the
 force analysis (the equivalent link carries the contact force along the common normal only at
 the instant; forces are not modelled for contacts yet).  :data:`Equivalent` records what was
@@ -66,11 +72,23 @@ TABLES: tuple[Table, ...] = (
             default=False),
         Key("face", "quantity", "the flat face's direction, CCW from +x (flat follower)",
             example='"0 deg"', dimension="angle"),
+        Key("arm", "link", "an oscillating flat-faced follower: the arm (a [links] entry, "
+                           "pivot label first, the pivot in [ground]) whose face runs along "
+                           "it; instead of face and [sliders.LABEL] (the label is then the "
+                           "arm's far end)", example='"QF"'),
+        Key("side", "string", "with arm: the side of the face, looking along the arm from "
+                              "its pivot, on which the cam lies: 'left' or 'right'",
+            example='"right"'),
+        Key("face_offset", "quantity", "with arm: the face's distance from the line through "
+                                       "the arm's ends, positive to the left",
+            example='"0 mm"', dimension="length", default="0 mm"),
     ), many=True),
-    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a fixed straight "
-                     "surface; the table's label is the wheel's centre. Its centre moves on "
-                     "the line ∥ the surface at the radius (the equivalent slider), its "
-                     "instant centre is the contact point and ω = −v/r.", (
+    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a straight "
+                     "surface, fixed or carried by a plate translating along it (`on`), or "
+                     "between two such plates (`opposite`); the table's label is the wheel's "
+                     "centre. On one surface its centre moves on the line ∥ the surface at "
+                     "the radius (the equivalent slider); on a fixed surface its instant "
+                     "centre is the contact point and ω = −v/r.", (
         Key("radius", "quantity", "the wheel's radius", example='"50 mm"', dimension="length",
             required=True),
         Key("through", "point", "a point of the surface", example='["0 mm", "-30 mm"]',
@@ -78,6 +96,31 @@ TABLES: tuple[Table, ...] = (
         Key("direction", "quantity", "the surface's direction, CCW from +x; the wheel is on "
                                      "its left", example='"0 deg"', dimension="angle",
             required=True),
+        Key("on", "label", "the surface moves: it is carried by the block (plate, rack) of "
+                           "this [sliders] point, translating on a fixed guide ∥ the "
+                           "surface; ω = (v_surface − v_W)/r along the direction (omitted: "
+                           "the frame)", example='"S"'),
+        Key("opposite", "label", "a cylinder between two plates: a second plate, the block "
+                                 "of this [sliders] point (guide ∥ the surface), touches the "
+                                 "wheel 2r from the first surface. The wheel is then placed "
+                                 "by the two plates (no link may join its centre): 'through' "
+                                 "is its contact with the first surface, v_W = (v₁ + v₂)/2, "
+                                 "ω = (v₁ − v₂)/2r", example='"T"'),
+        Key("rim", "table", "points of the wheel asked about, as books name them ('the "
+                            "point A at the top of the wheel'): label = its angle about the "
+                            "centre, CCW from +x, on the rim; or label = { angle = ..., "
+                            "distance = ... } off the rim (a hub, a spoke). v(A), a(A), "
+                            "dir_v(A) ... of these labels are then results",
+            example='{ A = "90 deg", B = { angle = "0 deg", distance = "30 mm" } }'),
+        Key("opposite_velocity", "quantity", "the second plate moved at a stated velocity, "
+                                             "as books give it ('the upper plate moves at "
+                                             "2 m/s to the left'): signed along `direction`; "
+                                             "`opposite` is then only the plate's name (not "
+                                             "a [sliders] block)", example='"-2 m/s"',
+            dimension="velocity"),
+        Key("opposite_acceleration", "quantity", "with opposite_velocity: the second plate's "
+                                                 "acceleration, signed along `direction`",
+            example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2"),
     ), many=True),
     Table("bearing", "A bar bearing on a fixed circle (a bar leaning on a half-cylinder): "
                      "the bar stays tangent, the contact slides along it. The table's label "
@@ -116,9 +159,33 @@ class Equivalent:
     roller: float | None = None
     face: float | None = None       # a flat face's / rolling surface's angle; bearing: side
     surface: tuple | None = None    # a point of a rolling surface
+    on: str | None = None           # rolling: the slider carrying the surface (None: frame)
+    opposite: str | None = None     # rolling: the slider carrying a second plate
+    #: rolling: the second plate's stated (velocity, acceleration) along ``face`` when it is
+    #: not a block of the linkage (books: "the upper plate moves at 2 m/s")
+    opposite_motion: tuple[float, float] | None = None
+    #: rolling: the wheel's named points, (label, angle CCW from +x about the centre, distance)
+    rim: tuple[tuple[str, float, float], ...] = ()
+    #: an oscillating flat-faced follower's arm (its face along it; ``face`` then ±1: the
+    #: cam's side, left / right)
+    arm: str | None = None
 
     @property
     def words(self) -> str:
+        if self.kind == "rolling" and self.opposite:
+            first = f"the plate of {self.on}" if self.on else "the fixed surface"
+            return (f"the cylinder {self.at} (radius {self.radius * 1000:.6g} mm) rolls "
+                    f"without slipping between {first} and the plate of {self.opposite} "
+                    f"(at {math.degrees(self.face):.6g}°): the two no-slip conditions give "
+                    f"v_{self.at} = (v₁ + v₂)/2 and ω = (v₁ − v₂)/2r along the plates; its "
+                    f"instant centre lies on the line of the contact points")
+        if self.kind == "rolling" and self.on:
+            return (f"the wheel {self.at} (radius {self.radius * 1000:.6g} mm) rolls without "
+                    f"slipping on the plate of {self.on} (surface at "
+                    f"{math.degrees(self.face):.6g}°, translating along itself): its centre "
+                    f"moves on the line ∥ the surface {self.radius * 1000:.6g} mm from it "
+                    f"(the equivalent slider), ω = (v_{self.on} − v_{self.at})/r; its instant "
+                    f"centre relative to the plate is the contact point")
         if self.kind == "rolling":
             return (f"the wheel {self.at} (radius {self.radius * 1000:.6g} mm) rolls without "
                     f"slipping on the fixed surface at {math.degrees(self.face):.6g}°: its "
@@ -137,6 +204,11 @@ class Equivalent:
                     f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) "
                     f"moves at this instant as the equivalent link {self.link} = "
                     f"{self.length * 1000:.6g} mm")
+        if self.arm is not None:
+            return (f"the flat face of the arm {self.arm} on the cam arc (centre of curvature "
+                    f"{self.centre}, radius {self.radius * 1000:.6g} mm) moves at this instant "
+                    f"as the crank and slotted lever: {self.centre} slides in a slot of "
+                    f"{self.arm} ∥ the face, {self.radius * 1000:.6g} mm from it")
         return (f"the flat face of {self.at} (at {math.degrees(self.face):.6g}°) on the cam arc "
                 f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) moves "
                 f"at this instant as a Scotch yoke: {self.centre} slides in a slot ∥ the face "
@@ -189,7 +261,7 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
                                f"curved slot, [{force[0]}] with [cams]/[curved_slots]): its "
                                f"equivalent linkage gives the velocities and accelerations "
                                f"only", file=file, where=force[0])
-    links = dict(data.get("links", {})) if isinstance(data.get("links"), dict) else None
+    links = dict(data.get("links", {})) if isinstance(data.get("links", {}), dict) else None
     if links is None:
         raise SceneError("[links] must be a table", file=file, where="links")
     sliders = dict(data.get("sliders", {})) if isinstance(data.get("sliders", {}), dict) \
@@ -215,6 +287,16 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
             if follower not in (None, "roller", "flat"):
                 raise SceneError(f"follower must be 'roller' or 'flat', got {follower!r}",
                                  file=file, where=f"{where}.follower")
+            if follower == "flat" and "arm" in table:
+                out.append(_flat_arm(table, label, centre, radius, links, slots, data, file,
+                                     where))
+                continue
+            if any(k in table for k in ("side", "face_offset")):
+                raise SceneError("side and face_offset are for an oscillating flat-faced "
+                                 "follower (arm = \"QF\")", file=file, where=where)
+            if "arm" in table:
+                raise SceneError("arm is for a flat-faced follower (follower = \"flat\")",
+                                 file=file, where=f"{where}.arm")
             if follower == "flat":
                 if "face" not in table:
                     raise SceneError("a flat-faced follower needs face = \"<angle>\" (the "
@@ -267,9 +349,50 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
             out.append(Equivalent("curved slot" if name == "curved_slots" else "cam", label,
                                   centre, link, length, radius, roller))
     data["links"] = links
+    if slots:
+        data["slots"] = slots
     if isinstance(sliders, dict) and sliders:
         data["sliders"] = sliders
     return data, tuple(out)
+
+
+def _flat_arm(table, label, centre, radius, links, slots, data, file, where) -> "Equivalent":
+    """[cams.F] follower = "flat", arm = "QF": a flat face along an arm pivoted at Q.  The cam's
+    centre of curvature C stays at the radius from the face, so at the instant C moves as a
+    pin in a slot of the arm ∥ the face, offset by face_offset ± radius (the cam's side): the
+    equivalent is the crank and slotted lever (RPR with an offset slot)."""
+    if "face" in table:
+        raise SceneError("an arm's face runs along the arm: give arm or face, not both",
+                         file=file, where=f"{where}.face")
+    if "roller" in table or table.get("concave"):
+        raise SceneError("roller and concave are for a roller follower", file=file, where=where)
+    arm = table["arm"]
+    if not isinstance(arm, str) or arm not in links:
+        raise SceneError(f"arm must be a link of [links] (the follower's arm, pivot first), got "
+                         f"{arm!r}", file=file, where=f"{where}.arm")
+    ends = [(arm[:i], arm[i:]) for i in range(1, len(arm))]
+    ground = data.get("ground", {}) if isinstance(data.get("ground"), dict) else {}
+    ends = [(a, b) for a, b in ends if a in ground and b == label]
+    if not ends:
+        raise SceneError(f"the arm {arm} must run from a fixed pivot in [ground] to the "
+                         f"follower's label {label}", file=file, where=f"{where}.arm")
+    side = table.get("side")
+    if side not in ("left", "right"):
+        raise SceneError(f"side must be 'left' or 'right' (where the cam lies, looking along "
+                         f"the arm from its pivot), got {side!r}", file=file,
+                         where=f"{where}.side")
+    if slots is None or centre in slots:
+        raise SceneError(f"{centre} is already a pin in [slots]", file=file, where=where)
+    e = _q(table.get("face_offset", "0 mm"), "length", file, f"{where}.face_offset")
+    off = e + (radius if side == "left" else -radius)
+    coincident = centre + "1"
+    n = 1
+    while coincident in str(data):         # a label the scene does not use
+        n += 1
+        coincident = f"{centre}{n}"
+    slots[centre] = {"lever": arm, "coincident": coincident, "offset": f"{off!r} m"}
+    return Equivalent("flat-faced cam", label, centre, None, None, radius, arm=arm,
+                      face=1.0 if side == "left" else -1.0)
 
 
 def _check_keys(table, name, label, file):
@@ -305,10 +428,47 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
         x, y = (_q(v, "length", file, f"{where}.through") for v in pt)
         ang = _q(table["direction"], "angle", file, f"{where}.direction")
         nx, ny = -math.sin(ang), math.cos(ang)
-        sliders[label] = {"through": [f"{x + radius * nx!r} m", f"{y + radius * ny!r} m"],
-                          "direction": f"{math.degrees(ang)!r} deg"}
+        motion = None
+        if "opposite_velocity" in table:
+            if not isinstance(table.get("opposite"), str) or not table["opposite"].strip():
+                raise SceneError("opposite_velocity moves the second plate: name it, opposite "
+                                 "= \"T\"", file=file, where=f"{where}.opposite")
+            motion = (_q(table["opposite_velocity"], "velocity", file,
+                         f"{where}.opposite_velocity"),
+                      _q(table.get("opposite_acceleration", "0 m/s^2"), "acceleration", file,
+                         f"{where}.opposite_acceleration"))
+        elif "opposite_acceleration" in table:
+            raise SceneError("opposite_acceleration needs opposite_velocity (the second "
+                             "plate's stated motion)", file=file,
+                             where=f"{where}.opposite_acceleration")
+        plates = {k: (table["opposite"] if k == "opposite" and motion is not None
+                      else _plate(table, k, label, ang, sliders, file, where))
+                  for k in ("on", "opposite")}
+        if motion is not None and (plates["opposite"] == label
+                                   or (isinstance(sliders, dict) and plates["opposite"] in sliders)):
+            raise SceneError(f"opposite = {plates['opposite']!r} with opposite_velocity names "
+                             f"a plate moved at a stated rate: a label of its own, not the "
+                             f"wheel's or a [sliders] block's", file=file,
+                             where=f"{where}.opposite")
+        if plates["on"] is not None and plates["on"] == plates["opposite"]:
+            raise SceneError("on and opposite must be two different plates", file=file,
+                             where=f"{where}.opposite")
+        if plates["opposite"] is None:
+            sliders[label] = {"through": [f"{x + radius * nx!r} m", f"{y + radius * ny!r} m"],
+                              "direction": f"{math.degrees(ang)!r} deg"}
+        else:
+            joined = [k for k in links if isinstance(k, str) and label in _ends(k)]
+            pts = data.get("points", {})
+            if joined or (isinstance(pts, dict) and label in pts):
+                what = f"the link {joined[0]}" if joined else "[points]"
+                raise SceneError(f"the cylinder {label} between two plates is placed by them "
+                                 f"(no slip at both contacts); it cannot also be in {what}",
+                                 file=file, where=where)
         return Equivalent("rolling", label, label, None, None, radius,
-                          face=ang, surface=(x, y))
+                          face=ang, surface=(x, y), on=plates["on"],
+                          opposite=plates["opposite"], opposite_motion=motion,
+                          rim=_rim(table.get("rim", {}), label, radius, data, sliders, file,
+                                   where))
     bar, side = table["bar"], table["side"]
     if not isinstance(bar, str) or bar not in links:
         raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
@@ -333,6 +493,178 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                       face=1.0 if side == "left" else -1.0, surface=None)
 
 
+def _rim(raw, wheel, radius, data, sliders, file, where) -> tuple:
+    """[rolling.W] rim = { A = "90 deg", B = { angle = "0 deg", distance = "30 mm" } }: the
+    wheel's named points (angle CCW from +x about the centre; on the rim unless a distance
+    is given), checked: labels of their own."""
+    if not isinstance(raw, dict):
+        raise SceneError('rim must be a table: rim = { A = "90 deg" }', file=file,
+                         where=f"{where}.rim")
+    used = set()
+    for table in ("ground", "drawn", "points", "slots", "crossing"):
+        t = data.get(table)
+        if isinstance(t, dict):
+            used |= set(t)
+    used |= set(sliders) if isinstance(sliders, dict) else set()
+    for name in data.get("links", {}) if isinstance(data.get("links", {}), dict) else ():
+        if isinstance(name, str):
+            used |= set(_ends(name))
+    out = []
+    for label, spec in raw.items():
+        at = f"{where}.rim.{label}"
+        if not (isinstance(label, str) and label[:1].isupper() and label.isidentifier()):
+            raise SceneError(f"a rim point's label must be a capital letter with letters or "
+                             f"digits, got {label!r}", file=file, where=at)
+        if label == wheel or label in used:
+            raise SceneError(f"{label} is already a point of the mechanism: a wheel's point "
+                             f"needs a label of its own", file=file, where=at)
+        if isinstance(spec, dict):
+            extra = set(spec) - {"angle", "distance"}
+            if extra or "angle" not in spec:
+                raise SceneError("a wheel point off the rim is { angle = \"30 deg\", "
+                                 "distance = \"20 mm\" }", file=file, where=at)
+            angle = _q(spec["angle"], "angle", file, f"{at}.angle")
+            dist = _q(spec.get("distance", f"{radius!r} m"), "length", file, f"{at}.distance")
+            if not (0 <= dist <= 1e3 * radius and math.isfinite(dist)):
+                raise SceneError("distance must be zero or positive, at most 1000 radii",
+                                 file=file, where=f"{at}.distance")
+        else:
+            angle, dist = _q(spec, "angle", file, at), radius
+        out.append((label, angle, dist))
+    return tuple(out)
+
+
+def wheel_point(sol, q: Equivalent, label: str):
+    """A wheel's named point P (``q.rim``): (position, velocity, acceleration) in SI; the
+    wheel is a rigid body turning at ω, α about its centre W —
+
+        v_P = v_W + ω k × WP,      a_P = a_W + α k × WP − ω² WP.
+
+    The centre itself (``q.at``, between two plates not a point of the polygons) is given too.
+    None when ``label`` is not one of this wheel's points or the motion is not solved."""
+    h = rolling(sol, q)
+    if h is None:
+        return None
+    W = h["centre"]
+    if label == q.at:
+        d = (0.0, 0.0)
+    else:
+        spec = next((r for r in q.rim if r[0] == label), None)
+        if spec is None:
+            return None
+        d = (spec[2] * math.cos(spec[1]), spec[2] * math.sin(spec[1]))
+    w, vW = h["omega"], h["centre_velocity"]
+    pos = (W[0] + d[0], W[1] + d[1])
+    vel = (vW[0] - w * d[1], vW[1] + w * d[0])
+    acc = None
+    if "alpha" in h:
+        al, aW = h["alpha"], h["centre_acceleration"]
+        acc = (aW[0] - al * d[1] - w * w * d[0], aW[1] + al * d[0] - w * w * d[1])
+    return pos, vel, acc
+
+
+def _ends(link: str) -> tuple[str, ...]:
+    """The labels a link's name may join (AW → A, W; O2A → O2, A): every split point."""
+    return tuple(link[:i] for i in range(1, len(link))) + \
+        tuple(link[i:] for i in range(1, len(link)))
+
+
+def _plate(table, key, label, ang, sliders, file, where):
+    """The [sliders] point carrying a moving surface (``on``/``opposite``), checked: a block
+    on a fixed straight guide parallel to the surface."""
+    name = table.get(key)
+    if name is None:
+        return None
+    if not isinstance(name, str) or not isinstance(sliders, dict) or name not in sliders:
+        raise SceneError(f"{key} must name a [sliders] point (the block carrying the plate), "
+                         f"got {name!r}", file=file, where=f"{where}.{key}")
+    if name == label:
+        raise SceneError(f"{key} must be the plate's block, not the wheel's centre", file=file,
+                         where=f"{where}.{key}")
+    g = sliders[name]
+    if not isinstance(g, dict) or "pin" in g or "slot" in g or "direction" not in g:
+        raise SceneError(f"the plate {name} must be a block on a fixed straight guide "
+                         f"([sliders.{name}] through, direction)", file=file,
+                         where=f"{where}.{key}")
+    d = _q(g["direction"], "angle", file, f"sliders.{name}.direction")
+    if abs(math.sin(d - ang)) > 1e-9:
+        raise SceneError(f"the plate {name} must slide along the surface (its guide at "
+                         f"{math.degrees(d):.6g}°, the surface at {math.degrees(ang):.6g}°): a "
+                         f"plate moving across the surface would not keep touching the wheel",
+                         file=file, where=f"{where}.{key}")
+    return name
+
+
+def _along(sol, name, e, which, q=None):
+    """The velocity or acceleration of the block ``name`` along ``e`` (0 for the frame; the
+    stated motion of a plate moved at a given rate, ``q.opposite_motion``)."""
+    if name is None:
+        return 0.0
+    if q is not None and q.opposite_motion is not None and name == q.opposite:
+        return q.opposite_motion[0 if which == "velocity" else 1]
+    v = getattr(sol.points[name], which)
+    return v[0] * e[0] + v[1] * e[1]
+
+
+def rolling(sol, q: Equivalent) -> dict | None:
+    """A wheel rolling without slipping on a fixed or moving surface (and, with
+    ``q.opposite``, under a second plate), from the no-slip condition at each contact:
+
+    the wheel's point at the contact C₁ = W − r·n moves with the surface, v_W + ω r e = v₁ e,
+    so ω = (v₁ − v_W)/r along e; with a second plate at C₂ = W + r·n, v_W − ω r e = v₂ e
+    gives v_W = (v₁ + v₂)/2, ω = (v₁ − v₂)/2r; the same for α with the accelerations (the
+    contact points' ω²r towards W cancel in a_W).  The instant centre is W + (v_W/ω)·n."""
+    e = (math.cos(q.face), math.sin(q.face))
+    n = (-e[1], e[0])
+    r = q.radius
+    blocks = [name for name in (q.on, q.opposite) if name is not None
+              and not (q.opposite_motion is not None and name == q.opposite)]
+    if any(sol.points[name].velocity is None for name in blocks):
+        return None
+    v1 = _along(sol, q.on, e, "velocity")
+    if q.opposite is None:
+        p = sol.points.get(q.at)
+        if p is None or p.velocity is None:
+            return None
+        W = p.position
+        vw = p.velocity[0] * e[0] + p.velocity[1] * e[1]
+        w = (v1 - vw) / r
+    else:
+        W = (q.surface[0] + r * n[0], q.surface[1] + r * n[1])
+        v2 = _along(sol, q.opposite, e, "velocity", q)
+        vw, w = (v1 + v2) / 2, (v1 - v2) / (2 * r)
+    C1 = (W[0] - r * n[0], W[1] - r * n[1])
+    out = {"centre": W, "centre_velocity": (vw * e[0], vw * e[1]), "omega": w,
+           "contacts": [C1], "surface_velocity": [v1]}
+    if q.opposite is not None:
+        out["contacts"].append((W[0] + r * n[0], W[1] + r * n[1]))
+        out["surface_velocity"].append(v2)
+    if q.on is None and q.opposite is None:
+        out["instant_centre"] = C1            # the contact with the fixed surface
+    elif w != 0.0:
+        out["instant_centre"] = (W[0] + vw / w * n[0], W[1] + vw / w * n[1])
+    accel = all(sol.points[name].acceleration is not None for name in blocks)
+    if q.opposite is None:
+        accel = accel and sol.points[q.at].acceleration is not None
+    if not accel:
+        return out
+    a1 = _along(sol, q.on, e, "acceleration")
+    if q.opposite is None:
+        aw = sol.points[q.at].acceleration[0] * e[0] + sol.points[q.at].acceleration[1] * e[1]
+        al = (a1 - aw) / r
+    else:
+        a2 = _along(sol, q.opposite, e, "acceleration", q)
+        aw, al = (a1 + a2) / 2, (a1 - a2) / (2 * r)
+    c = r * w * w
+    out.update({"alpha": al, "centre_acceleration": (aw * e[0], aw * e[1]),
+                "surface_acceleration": [a1] + ([a2] if q.opposite is not None else []),
+                # the wheel's point at each contact: the surface's a plus ω²r towards W
+                "contact_acceleration": (a1 * e[0] + c * n[0], a1 * e[1] + c * n[1])})
+    if q.opposite is not None:
+        out["opposite_contact_acceleration"] = (a2 * e[0] - c * n[0], a2 * e[1] - c * n[1])
+    return out
+
+
 def higher(sol, q: Equivalent) -> dict | None:
     """The higher pair's own numbers read off the solved equivalent linkage: a rolling wheel's
     ω, α, instant centre (the contact) and the acceleration of its point there; a bar on a
@@ -340,18 +672,7 @@ def higher(sol, q: Equivalent) -> dict | None:
     first end meets the normal at the contact) and the contact's sliding along the bar."""
     pts = sol.points
     if q.kind == "rolling":
-        p = pts.get(q.at)
-        if p is None or p.velocity is None:
-            return None
-        e = (math.cos(q.face), math.sin(q.face))
-        n = (-e[1], e[0])
-        w = -(p.velocity[0] * e[0] + p.velocity[1] * e[1]) / q.radius
-        out = {"omega": w, "instant_centre": (p.position[0] - q.radius * n[0],
-                                              p.position[1] - q.radius * n[1])}
-        if p.acceleration is not None:
-            out["alpha"] = -(p.acceleration[0] * e[0] + p.acceleration[1] * e[1]) / q.radius
-            out["contact_acceleration"] = (q.radius * w * w * n[0], q.radius * w * w * n[1])
-        return out
+        return rolling(sol, q)
     if q.kind == "bearing":
         link = sol.links.get(q.link)
         if link is None or link.omega is None:
@@ -394,7 +715,9 @@ def report_lines(sol) -> list[str]:
         mm = lambda p: f"({p[0] * 1000:.6g}, {p[1] * 1000:.6g}) mm"   # noqa: E731
         def sense(x):
             return "CCW" if x > 0 else ("CW" if x < 0 else "")
-        if q.kind == "rolling":
+        if q.kind == "rolling" and (q.on or q.opposite):
+            lines += _moving_lines(q, h, mm, sense)
+        elif q.kind == "rolling":
             lines.append(f"    wheel {q.at}: ω = v/r = {abs(h['omega']):.6g} rad/s "
                          f"{sense(h['omega'])}" + (f", α = a/r = {abs(h['alpha']):.6g} rad/s² "
                                                     f"{sense(h['alpha'])}" if 'alpha' in h
@@ -404,14 +727,101 @@ def report_lines(sol) -> list[str]:
                              f"; the wheel's point there accelerates at r·ω² = "
                              f"{math.hypot(*h['contact_acceleration']):.6g} m/s² towards "
                              f"{q.at}" if "contact_acceleration" in h else ""))
-        else:
+        elif q.kind != "rolling":
             lines.append(f"    contact with the bar at {mm(h['contact'])}"
                          + (f", sliding along the bar at {abs(h['sliding_velocity']):.6g} m/s"
                             if "sliding_velocity" in h else ""))
             if "instant_centre" in h:
                 lines.append(f"    instant centre of {q.link}: {mm(h['instant_centre'])} "
                              f"(on the normal to the bar at the contact, through {q.at})")
+        lines += _rim_lines(sol, q, mm)
     return lines
+
+
+def _rim_lines(sol, q, mm) -> list[str]:
+    """The wheel's named points: v_P = v_W + ω k × WP, a_P = a_W + α k × WP − ω² WP."""
+    out = []
+    for label, angle, dist in q.rim:
+        got = wheel_point(sol, q, label)
+        if got is None:
+            continue
+        pos, vel, acc = got
+        snap = lambda v, ref: tuple(0.0 if abs(c) <= 1e-12 * ref else c for c in v)  # noqa: E731
+        pos = snap(pos, max(map(abs, pos)) or 1.0)
+        vel = snap(vel, math.hypot(*vel))
+        acc = snap(acc, math.hypot(*acc)) if acc is not None else None
+        where = ("on the rim" if dist == q.radius else f"{dist * 1000:.6g} mm from {q.at}")
+        text = (f"    {label} ({where} at {math.degrees(angle):.6g}°, {mm(pos)}): |v| = "
+                f"{math.hypot(*vel):.6g} m/s at {math.degrees(math.atan2(vel[1], vel[0])) % 360:.6g}°")
+        if acc is not None:
+            text += (f", |a| = {math.hypot(*acc):.6g} m/s² at "
+                     f"{math.degrees(math.atan2(acc[1], acc[0])) % 360:.6g}°")
+        out.append(text + f"  (v = v_{q.at} + ω × {q.at}{label})")
+    return out
+
+
+def _moving_lines(q, h, mm, sense) -> list[str]:
+    """A wheel on a moving surface (or between two plates) in words, signed along the
+    surface's direction."""
+    W, r = q.at, q.radius
+    v = h["surface_velocity"]
+    names = [q.on or "the frame"] + ([q.opposite] if q.opposite else [])
+    out = [f"    along the surface (+ at {math.degrees(q.face):.6g}°): v₁ = {v[0]:.6g} m/s "
+           f"({names[0]})" + (f", v₂ = {v[1]:.6g} m/s ({names[1]})" if q.opposite else "")]
+    vw = h["centre_velocity"][0] * math.cos(q.face) + h["centre_velocity"][1] * math.sin(q.face)
+    if q.opposite:
+        out.append(f"    v_{W} = (v₁ + v₂)/2 = {vw:.6g} m/s at {mm(h['centre'])}; ω = (v₁ − v₂)/2r "
+                   f"= {abs(h['omega']):.6g} rad/s {sense(h['omega'])}")
+    else:
+        out.append(f"    v_{W} = {vw:.6g} m/s; ω = (v₁ − v_{W})/r = {abs(h['omega']):.6g} rad/s "
+                   f"{sense(h['omega'])}")
+    if "alpha" in h:
+        a = h["surface_acceleration"]
+        aw = (h["centre_acceleration"][0] * math.cos(q.face)
+              + h["centre_acceleration"][1] * math.sin(q.face))
+        what = "(a₁ + a₂)/2" if q.opposite else "from the linkage"
+        out.append(f"    a₁ = {a[0]:.6g} m/s²" + (f", a₂ = {a[1]:.6g} m/s²" if q.opposite else "")
+                   + f"; a_{W} = {what} = {aw:.6g} m/s²; α = {abs(h['alpha']):.6g} rad/s² "
+                     f"{sense(h['alpha'])}; each contact point of the wheel accelerates as its "
+                     f"plate plus r·ω² = {r * h['omega'] ** 2:.6g} m/s² towards {W}")
+    if "instant_centre" in h:
+        d = math.dist(h["instant_centre"], h["centre"])
+        out.append(f"    instant centre of the wheel: {mm(h['instant_centre'])}, on the line of "
+                   f"the contact points {d * 1000:.6g} mm from {W} (v_{W}/ω)")
+    else:
+        out.append(f"    the wheel translates (ω = 0): no instant centre at a finite distance")
+    return out
+
+
+def wheel_centres(sol, cs) -> list[dict]:
+    """The instant centres of each rolling wheel, numbered after the linkage's links in
+    ``cs`` (:func:`polygons.centres.instant_centres`): the wheel is not a link of the
+    equivalent linkage, so its centres come from the no-slip conditions — relative to each
+    surface its centre is the contact point; relative to the frame it lies on the line of the
+    contact points (Kennedy: with the contact and the plate's centre at infinity ⟂ its guide)
+    at v_W/ω from W."""
+    out = []
+    n = len(cs.bodies)
+    blocks = {b.labels[0]: b.number for b in cs.bodies if b.kind == "block"}
+    for q in getattr(sol.scene, "equivalents", ()):
+        if q.kind != "rolling":
+            continue
+        h = rolling(sol, q)
+        if h is None:
+            continue
+        n += 1
+        wheel = n
+        rel = [(blocks.get(q.on, 1) if q.on else 1, q.on or "frame", h["contacts"][0])]
+        if q.opposite and q.opposite_motion is not None:
+            n += 1                  # a plate moved at a stated rate: a body of its own
+            rel.append((n, q.opposite, h["contacts"][1]))
+        elif q.opposite:
+            rel.append((blocks.get(q.opposite, 1), q.opposite, h["contacts"][1]))
+        out.append({"wheel": q.at, "number": wheel, "absolute": h.get("instant_centre"),
+                    "omega": h["omega"], "speed": math.hypot(*h["centre_velocity"]),
+                    "centre": h["centre"],
+                    "relative": [{"number": i, "body": name, "point": p} for i, name, p in rel]})
+    return out
 
 
 def to_list(sol) -> list[dict]:
@@ -419,7 +829,18 @@ def to_list(sol) -> list[dict]:
     for q in getattr(sol.scene, "equivalents", ()):
         d = {"kind": q.kind, "at": q.at, "centre": q.centre, "link": q.link,
              "length_m": q.length, "radius_m": q.radius, "roller_m": q.roller,
-             "face_rad": q.face}
+             "face_rad": q.face, "on": q.on, "opposite": q.opposite}
+        if q.rim:
+            d["rim"] = []
+            for label, angle, dist in q.rim:
+                got = wheel_point(sol, q, label)
+                d["rim"].append({"label": label, "angle_rad": angle, "distance_m": dist,
+                                 **({"position": list(got[0]), "velocity": list(got[1]),
+                                     "acceleration": list(got[2]) if got[2] else None}
+                                    if got else {})})
+        if q.opposite_motion is not None:
+            d["opposite_motion"] = {"velocity": q.opposite_motion[0],
+                                    "acceleration": q.opposite_motion[1]}
         h = higher(sol, q)
         if h:
             d["higher_pair"] = {k: (list(v) if isinstance(v, tuple) else v)
@@ -428,4 +849,5 @@ def to_list(sol) -> list[dict]:
     return out
 
 
-__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list"]
+__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list", "rolling",
+           "wheel_centres", "wheel_point"]

@@ -18,7 +18,7 @@ them with their own flags (``--steps``, ``--scale`` ...).
     space_scale = "20 mm"
     paper = "A4"                        # A5 or A4
     stages = false                      # only the finished diagrams
-    klein = true                        # also Klein's construction (or "ritterhaus")
+    klein = true                        # also Klein's construction (or "ritterhaus", "bennett")
 
     [handout]
     force_polygons = true               # the force polygons per Assur group in the handout
@@ -41,7 +41,7 @@ MAX_STEPS = 10_000_000
 SCALE_QUANTITY = {"space": "length", "velocity": "velocity", "acceleration": "acceleration"}
 PAPERS = ("A5", "A4")
 #: the slider-crank constructions [diagram] klein names (polygons.classic.klein.METHODS)
-KLEIN_METHODS = ("klein", "ritterhaus")
+KLEIN_METHODS = ("klein", "ritterhaus", "bennett")
 
 TABLES: tuple[Table, ...] = (
     Table("sweep", "How `polygons sweep` solves and plots a full input revolution (its flags "
@@ -76,7 +76,8 @@ TABLES: tuple[Table, ...] = (
                               "(velocity-1.svg ...)", example="false", default=True),
         Key("klein", "bool-or-string", "a slider-crank's classic construction, printed by "
                                          "`solve` and drawn by `draw` (klein.svg): true or 'klein' (Klein's, in-line "
-                               "or offset), 'ritterhaus' (in-line only); a crank turning "
+                               "or offset), 'ritterhaus' or 'bennett' (in-line only); a crank "
+                               "turning "
                                "uniformly", example="true"),
     )),
     Table("centres", "How `polygons centres` numbers the links of the circle diagram (by "
@@ -124,7 +125,7 @@ class DiagramOptions:
     scales: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
     paper: str | None = None
     stages: bool | None = None
-    klein: str | None = None       # 'klein' | 'ritterhaus' | None (not asked)
+    klein: str | None = None       # 'klein' | 'ritterhaus' | 'bennett' | None
 
 
 @dataclass(frozen=True)
@@ -251,7 +252,7 @@ def parse_options(data: Mapping, file: str) -> Options:
     elif klein is False:
         klein = None
     elif klein is not None and klein not in KLEIN_METHODS:
-        raise SceneError(f"klein must be true, false, 'klein' or 'ritterhaus', got "
+        raise SceneError(f"klein must be true, false, 'klein', 'ritterhaus' or 'bennett', got "
                          f"{show(klein)}", file=file, where="diagram.klein")
     diagram = DiagramOptions(MappingProxyType(scales), paper,
                              _bool(dg, "stages", "diagram", file), klein)

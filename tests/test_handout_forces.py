@@ -91,8 +91,6 @@ def test_bad_keys_refused(tmp_path, table, words):
 
 
 @pytest.mark.parametrize("stem, table, words", [
-    ("s000-d225-2003-q3", "[handout]\nforce_polygons = true",
-     "force_polygons = true: the force-polygon construction does not handle a pin sliding"),
     ("forces-actuator-four-bar", "[handout]\nforce_polygons = true",
      "force_polygons = true: the force-polygon construction finds the driver's effort"),
     ("s001-we4", "[handout]\nzhukovsky = true",
