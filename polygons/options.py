@@ -19,6 +19,10 @@ them with their own flags (``--steps``, ``--scale`` ...).
     paper = "A4"                        # A5 or A4
     stages = false                      # only the finished diagrams
     klein = true                        # also Klein's construction (or "ritterhaus", "bennett")
+
+    [handout]
+    force_polygons = true               # the force polygons per Assur group in the handout
+    zhukovsky = true                    # and Zhukovsky's lever
 """
 from __future__ import annotations
 
@@ -85,8 +89,19 @@ TABLES: tuple[Table, ...] = (
                                 "not named take the numbers left, in the default order",
             example='{ O2P2 = 2, "block P2" = 3, O4P4 = 4 }'),
     )),
-    Table("handout", "Reserved for handout options; it accepts no key yet (any key is "
-                     "refused, naming it).", ()),
+    Table("handout", "What `polygons handout` adds to the answer key (a scene with force "
+                     "tables); any other key is refused, naming it.", (
+        Key("force_polygons", "bool", "a section with the force polygons per Assur group: "
+                                      "each group's finished polygon, the construction in "
+                                      "words and its reactions and input effort (the "
+                                      "numbers `polygons forces` prints); refused in one "
+                                      "line when the construction does not handle the "
+                                      "mechanism", example="true", default=False),
+        Key("zhukovsky", "bool", "a section with Zhukovsky's lever: the finished lever, its "
+                                 "forces and moments about the pole and the balancing "
+                                 "effort (equal to the virtual work's)", example="true",
+            default=False),
+    )),
 )
 
 _KEYS = {t.name: tuple(k.name for k in t.keys) for t in TABLES}
@@ -122,10 +137,19 @@ class CentresOptions:
 
 
 @dataclass(frozen=True)
+class HandoutOptions:
+    """``[handout]``: the force methods the answer key adds (:mod:`diagrams.handout_forces`)."""
+
+    force_polygons: bool = False
+    zhukovsky: bool = False
+
+
+@dataclass(frozen=True)
 class Options:
     sweep: SweepOptions = SweepOptions()
     diagram: DiagramOptions = DiagramOptions()
     centres: CentresOptions = CentresOptions()
+    handout: HandoutOptions = HandoutOptions()
 
 
 #: the options of a scene without [sweep], [diagram] or [handout]
@@ -232,8 +256,10 @@ def parse_options(data: Mapping, file: str) -> Options:
                          f"{show(klein)}", file=file, where="diagram.klein")
     diagram = DiagramOptions(MappingProxyType(scales), paper,
                              _bool(dg, "stages", "diagram", file), klein)
-    _table(data, "handout", file)
-    return Options(sweep, diagram, _centres(_table(data, "centres", file), file))
+    ho = _table(data, "handout", file)
+    handout = HandoutOptions(bool(_bool(ho, "force_polygons", "handout", file)),
+                             bool(_bool(ho, "zhukovsky", "handout", file)))
+    return Options(sweep, diagram, _centres(_table(data, "centres", file), file), handout)
 
 
 #: the largest number a link may be given in [centres] numbers
@@ -261,5 +287,6 @@ def _centres(table, file: str) -> CentresOptions:
     return CentresOptions(MappingProxyType(dict(numbers)))
 
 
-__all__ = ["TABLES", "Options", "SweepOptions", "DiagramOptions", "CentresOptions", "parse_options",
+__all__ = ["TABLES", "Options", "SweepOptions", "DiagramOptions", "CentresOptions",
+           "HandoutOptions", "parse_options",
            "scale_per_cm", "labels", "MAX_STEPS"]

@@ -103,7 +103,8 @@ def test_probe_sees_errors(tmp_path):
 
 @needs_chromium
 @pytest.mark.parametrize("case,worksheet", [("s003-fig7.toml", False),
-                                            ("s001-we6.toml", True)])
+                                            ("s001-we6.toml", True),
+                                            ("s001-we8.toml", False)])   # force polygons
 def test_handout_renders_every_figure_without_errors(case, worksheet, tmp_path):
     page = tmp_path / "page.html"
     args = ["handout", CASES / case, "-o", page] + (["--worksheet"] if worksheet else [])
