@@ -209,7 +209,7 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
 
 
 # ---------------------------------------------------------------- vectorised evaluation
-def evaluate(prog: Program, inputs, *, rates: bool = True) -> dict:
+def evaluate(prog: Program, inputs, *, rates: bool = True, jit: bool = False) -> dict:
     """Solve every position in ``inputs`` (θ in rad or s in m) at once.
 
     Returns a dict with ``pos``, ``vel``, ``acc`` (label -> (x, y) arrays, ``None`` for a
@@ -219,6 +219,9 @@ def evaluate(prog: Program, inputs, *, rates: bool = True) -> dict:
     """
     t = np.asarray(inputs, dtype=float)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        if rates and jit:
+            code, params = arrays_program(prog)
+            return from_arrays(prog, code, params, t, kernel_of(prog))
         return _evaluate(prog, t, rates)
 
 
@@ -267,14 +270,44 @@ def arrays_program(prog: Program):
     return memo["_arrays"]
 
 
-def from_arrays(prog: Program, code, params, xs: np.ndarray) -> dict:
+def kernel_of(prog: Program):
+    """The arrays program compiled by numba (:func:`polygons.jit.sweep_kernel`) with its
+    parameters as an array, made once per program: ``(kernel, params)``, or None where numba
+    is not installed or cannot compile this construction."""
+    memo = memo_of(prog)
+    if "_jit" not in memo:
+        from . import jit
+        code, params = arrays_program(prog)
+        kernel = jit.cached(code, jit.sweep_kernel)
+        memo["_jit"] = None if kernel is None else (kernel, np.array(params, dtype=float))
+    return memo["_jit"]
+
+
+#: bytes of a pass's record (one row of N floats per output of the generated code)
+CHUNK_BYTES = {False: 1 << 22, True: 1 << 21}
+
+
+def chunk_for(prog: Program, jit: bool = False) -> int:
+    """Positions per pass, from the program's size: a pass's record kept within
+    :data:`CHUNK_BYTES` (numpy, whose temporaries are as many again; a numba kernel, which
+    makes none), so that it stays in the caches: ≥ 1024 positions, at most 4 :data:`CHUNK`."""
+    code, _ = arrays_program(prog)
+    rows = max(len(code.source.rsplit("return (", 1)[-1].split(",")) - 1, 1)
+    return int(min(4 * CHUNK, max(1024, CHUNK_BYTES[bool(jit)] // 8 // rows)))
+
+
+def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None) -> dict:
     """:func:`evaluate`'s results at the inputs ``xs``: the arrays program run once, its flat
-    record read into positions, polygon vertices, rates, slides and the dyads' margin."""
+    record read into positions, polygon vertices, rates, slides and the dyads' margin
+    (``kernel``: the same program compiled by numba, :func:`kernel_of`)."""
     idx = code.index
     scene = prog.scene
     n = xs.shape
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        r = code.fn(xs, params)
+        if kernel is not None and xs.ndim == 1:
+            r = kernel[0](np.ascontiguousarray(xs), kernel[1])
+        else:
+            r = code.fn(xs, params)
         full = lambda v: np.broadcast_to(v, n)  # noqa: E731
         P, V, A = {}, {}, {}
         pos = {}
@@ -487,7 +520,8 @@ def _check_sweep_args(scene, steps, inputs, chunk):
     if not isinstance(scene, Scene):
         raise PolygonsError(f"sweep: expected a Scene (polygons.load(...)), got "
                             f"{type(scene).__name__}", file="<api>")
-    for name, value, low in (("steps", steps, 2), ("chunk", chunk, 1)):
+    for name, value, low in (("steps", steps, 2),) + ((("chunk", chunk, 1),)
+                                                       if chunk is not None else ()):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
                 or not low <= value <= (MAX_STEPS if name == "steps" else 1 << 40):
             raise PolygonsError(f"{name} must be a whole number from {low} to "
@@ -513,8 +547,8 @@ def _check_sweep_args(scene, steps, inputs, chunk):
 
 
 def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = None,
-          chunk: int = CHUNK, progress: Callable[[int], None] | None = None,
-          probe: int = PROBE) -> Sweep:
+          chunk: int | None = None, progress: Callable[[int], None] | None = None,
+          probe: int = PROBE, jit: bool = False) -> Sweep:
     """Solve ``scene`` over a full input revolution (or its reachable range).
 
     Without ``inputs``: a crank driver is swept over θ = 0 … 360° in ``steps`` equal steps
@@ -522,7 +556,10 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
     (``steps`` points strictly inside it: the limit positions themselves have infinite
     rates); a slider driver over its reachable travel.  With ``inputs`` (θ in rad or s in
     m) exactly those positions are solved, all of them in the branch of the scene's own
-    position.  ``progress(k)`` is called with the number of positions done after each chunk.
+    position.  ``progress(k)`` is called with the number of positions done after each chunk
+    (``chunk`` positions per pass; default from the program's size, :func:`chunk_for`).
+    ``jit=True`` runs the construction compiled by numba when numba is installed
+    (:mod:`polygons.jit`; the same numbers to rounding), numpy otherwise.
     """
     inputs = _check_sweep_args(scene, steps, inputs, chunk)
     prog = compile_plan(scene)
@@ -540,7 +577,7 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
         xs = np.asarray(inputs, dtype=float).reshape(-1)
         full = False
         rng = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 0.0)
-    res = run(prog, xs, chunk=chunk, progress=progress)
+    res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
     segments = _segments(xs, toggles, full)
     warnings = []
     for tg in toggles:
@@ -585,17 +622,20 @@ def _undefine(res: dict, mask: np.ndarray) -> None:
             arr[mask] = np.nan
 
 
-def run(prog: Program, xs: np.ndarray, *, chunk: int = CHUNK,
-        progress: Callable[[int], None] | None = None) -> dict:
-    """:func:`evaluate` in chunks of ``chunk`` positions (small enough for the CPU caches),
-    each written straight into preallocated (2, N) / (N,) result arrays; fixed points keep
-    their scalar positions and ``None`` rates."""
+def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
+        progress: Callable[[int], None] | None = None, jit: bool = False) -> dict:
+    """:func:`evaluate` in chunks of ``chunk`` positions (small enough for the CPU caches;
+    default from the program's size, :func:`chunk_for`), each written straight into
+    preallocated (2, N) / (N,) result arrays; fixed points keep their scalar positions and
+    ``None`` rates.  ``jit``: the numba kernel where there is one (:func:`kernel_of`)."""
     xs = np.asarray(xs, dtype=float)
     n = len(xs)
+    jit = bool(jit) and kernel_of(prog) is not None
+    chunk = chunk or chunk_for(prog, jit)
     out: dict | None = None
     for s in range(0, max(n, 1), chunk):
         e = min(n, s + chunk)
-        res = evaluate(prog, xs[s:e])
+        res = evaluate(prog, xs[s:e], jit=jit)
         if out is None:
             out = _allocate(res, n)
         _store(out, res, s, e)

@@ -1,0 +1,123 @@
+"""An optional machine-code backend: the generated straight-line code compiled by numba.
+
+:mod:`polygons.codegen` writes one construction as Python source; over floats CPython runs it
+at ~30 ns a statement and over arrays numpy makes a temporary of every statement.  When numba
+is installed (it is not a dependency: ``pip install numba``, or the ``bench`` extra that
+pylinkage brings it with) and asked for (``compile_scene(scene, jit=True)``,
+``sweep(scene, ..., jit=True)``), the *same text* is compiled once more by numba:
+
+* :func:`record_kernel` — one position: ``kernel(x, params) → record`` (a float64 array with
+  the float program's record layout; the failure checks raise the same ``_Fail``);
+* :func:`sweep_kernel` — a loop over the inputs around the code generated for arrays (no
+  checks, margins kept): ``kernel(xs, params) → (R, N)`` array, row ``i`` what the numpy
+  program's record holds at ``i``.
+
+Both are made from the source text only (the statements are not re-derived), so they compute
+the same expressions as the interpreters; ``tests/test_jit.py`` holds them equal to the
+staged solve and the numpy sweep.  A construction numba cannot compile (a helper it does not
+type, as the triad's root finder) gives ``None``: the caller keeps the Python program.
+Compiling takes 0.2–5 s per topology (numba's time, once per process; kept with the code).
+
+This module imports numba only inside :func:`available` and the kernel makers.
+"""
+from __future__ import annotations
+
+import importlib.util
+import math
+
+from .codegen import _Fail, _hypot_cols, _where
+from .dyads.base import ARRAY_TWIN
+
+FAST = {"arcp", "contract"}
+_SCALAR_OF = {arr: sc for sc, arr in ARRAY_TWIN.items()}
+
+
+_MADE: dict = {}
+
+
+def cached(code, make):
+    """``make(code)`` once per generated code (kept while the code is: the code caches of
+    :mod:`polygons.compiled` hold one per topology), or None where numba is not installed."""
+    hit = _MADE.get((id(code), make))
+    if hit is None or hit[0] is not code:
+        if len(_MADE) >= 256:
+            _MADE.clear()
+        hit = _MADE[(id(code), make)] = (code, make(code) if available() else None)
+    return hit[1]
+
+
+def available() -> bool:
+    """Whether numba can be imported (without importing it)."""
+    return importlib.util.find_spec("numba") is not None
+
+
+def _scalar_hypot(x, y):
+    return math.sqrt(x * x + y * y)
+
+
+def _namespace(code, numba) -> dict:
+    """The generated code's names as numba-compiled scalar functions."""
+    nj = numba.njit(cache=False)
+    ns = {"math": math, "np": __import__("numpy"), "_Fail": _Fail, "nan": math.nan,
+          "cos": math.cos, "sin": math.sin, "atan2": math.atan2, "degrees": math.degrees,
+          "sqrt": math.sqrt, "hypot_p": math.hypot}
+    for name, fn in code.namespace.items():
+        if name.startswith("_f_"):
+            ns[name] = nj(_SCALAR_OF.get(fn, fn))
+    ns["where"] = nj(_where)
+    ns["hypot"] = nj(_scalar_hypot) if code.namespace.get("hypot") is _hypot_cols \
+        else math.hypot
+    return ns
+
+
+def _parts(source: str):
+    """(number of parameters, body lines, output expressions) of a ``_solve`` source."""
+    lines = source.rstrip("\n").split("\n")
+    head, unpack, body, ret = lines[0], lines[1], lines[2:-1], lines[-1].strip()
+    assert head.startswith("def _solve(x, _k):") and ret.startswith("return (")
+    params = [p.strip() for p in unpack.strip()[1:].split(")")[0].split(",") if p.strip()]
+    outs = [o.strip() for o in ret[len("return ("):-1].split(",") if o.strip()]
+    return params, [b.strip() for b in body], outs
+
+
+def _compile(src: str, ns: dict, name: str, sig: str, numba, error_model: str):
+    exec(compile(src, f"<polygons.jit {name}>", "exec"), ns)
+    return numba.njit(sig, error_model=error_model, cache=False, fastmath=FAST)(ns[name])
+
+
+def record_kernel(code):
+    """``kernel(x, params) → record`` (float64 array) for the float program ``code``
+    (:func:`polygons.codegen.generate` over floats), or None if numba cannot compile it."""
+    try:
+        import numba
+        params, body, outs = _parts(code.source)
+        src = ["def _rec(x, _k):"]
+        src += [f"    {p} = _k[{i}]" for i, p in enumerate(params)]
+        src += [f"    {b}" for b in body]
+        src.append(f"    _o = np.empty({len(outs)})")
+        src += [f"    _o[{i}] = {o}" for i, o in enumerate(outs)]
+        src.append("    return _o")
+        return _compile("\n".join(src) + "\n", _namespace(code, numba), "_rec",
+                        "float64[::1](float64, float64[::1])", numba, "python")
+    except Exception:           # noqa: BLE001 — numba's refusals are many kinds; keep Python
+        return None
+
+
+def sweep_kernel(code):
+    """``kernel(xs, params) → (R, N)`` (row i contiguous) for the program generated for arrays ``code``
+    (:func:`polygons.compiled.compile_arrays`), or None if numba cannot compile it."""
+    try:
+        import numba
+        params, body, outs = _parts(code.source)
+        src = ["def _many(xs, _k):", "    _n = xs.shape[0]",
+               f"    _O = np.empty(({len(outs)}, _n))"]
+        src += [f"    {p} = _k[{i}]" for i, p in enumerate(params)]
+        src.append("    for _i in range(_n):")
+        src.append("        x = xs[_i]")
+        src += [f"        {b}" for b in body]
+        src += [f"        _O[{i}, _i] = {o}" for i, o in enumerate(outs)]
+        src.append("    return _O")
+        return _compile("\n".join(src) + "\n", _namespace(code, numba), "_many",
+                        "float64[:, ::1](float64[::1], float64[::1])", numba, "numpy")
+    except Exception:           # noqa: BLE001
+        return None
