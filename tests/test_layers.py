@@ -31,7 +31,7 @@ WHERE = {
     "polygons.narrate": "interpreters", "polygons.position": "interpreters",
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
-    "polygons.codegen": "interpreters",
+    "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
     "polygons.classic": "interpreters",
     "polygons.kennedy": "interpreters",
