@@ -337,19 +337,39 @@ class CompiledSolution:
 def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
                       ) -> tuple[Step, ...]:
     """The planned ``steps`` with their numbers read from the record ``r`` (``layout`` says
-    where) and their substituted text: what the staged and the compiled solutions show."""
+    where) and their substituted text: what the staged and the compiled solutions show.
+    Each record is made once (:func:`polygons.reader.record`, every field set at once); the
+    text is written from the planned step's words and the filled terms (:class:`_Filled`)."""
     numbers = [([(sym, _term(r, i), u) for sym, i, u in o.terms],
                 None if o.value is None else r[o.value]) for o in layout]
     zero = _rounding_noise(numbers, layout)
     done = []
     for step, o, (terms, value) in zip(steps, layout, numbers):
-        vals = {k: (r[o.fields[k][0]], r[o.fields[k][1]]) if k in o.fields else None
-                for k in _FIELDS}
-        filled = _copy(step, vals, value=None if value is None else zero(value, o.unit),
-                       unit=o.unit, angle_deg=None if o.angle is None else r[o.angle],
-                       terms=tuple(Term(sym, zero(v, u), u) for sym, v, u in terms))
-        done.append(_copy(filled, {}, substituted=substitute(filled, scene)))
+        f = o.fields
+        vals = dict(step.__dict__)
+        for k in _FIELDS:
+            vals[k] = (r[f[k][0]], r[f[k][1]]) if k in f else None
+        filled = tuple(record(Term, symbol=sym, value=zero(v, u), unit=u)
+                       for sym, v, u in terms)
+        vals.update(value=None if value is None else zero(value, o.unit), unit=o.unit,
+                    angle_deg=None if o.angle is None else r[o.angle], terms=filled,
+                    substituted=substitute(_Filled(step, filled), scene))
+        done.append(record(Step, **vals))
     return tuple(done)
+
+
+class _Filled:
+    """A planned step seen with its filled terms: what :func:`polygons.narrate.substitute`
+    reads (its words from the plan, its numbers from the terms), before the record is made."""
+
+    __slots__ = ("step", "terms")
+
+    def __init__(self, step: Step, terms: tuple):
+        self.step = step
+        self.terms = terms
+
+    def __getattr__(self, name):
+        return getattr(self.step, name)
 
 
 #: the units whose near-zero values are rounding noise of the construction

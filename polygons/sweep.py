@@ -44,6 +44,7 @@ from .scene import Crank, Scene
 from .steps import Diagram, Step
 from .theorems import angular_acceleration, angular_velocity
 from .memo import memo_of
+from .sweep_store import adopt, allocate, store
 
 #: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
 PARALLEL_DEG = 1e-5
@@ -291,9 +292,7 @@ def chunk_for(prog: Program, jit: bool = False) -> int:
     """Positions per pass, from the program's size: a pass's record kept within
     :data:`CHUNK_BYTES` (numpy, whose temporaries are as many again; a numba kernel, which
     makes none), so that it stays in the caches: ≥ 1024 positions, at most 4 :data:`CHUNK`."""
-    code, _ = arrays_program(prog)
-    rows = max(len(code.source.rsplit("return (", 1)[-1].split(",")) - 1, 1)
-    return int(min(4 * CHUNK, max(1024, CHUNK_BYTES[bool(jit)] // 8 // rows)))
+    return int(min(4 * CHUNK, max(1024, CHUNK_BYTES[bool(jit)] // 8 // _rows(prog))))
 
 
 def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None) -> dict:
@@ -304,28 +303,34 @@ def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None) -> dic
     scene = prog.scene
     n = xs.shape
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        full = lambda v: np.broadcast_to(v, n)  # noqa: E731
         if kernel is not None and xs.ndim == 1:
             r = kernel[0](np.ascontiguousarray(xs), kernel[1])
+
+            def pair(ij):   # a (2, N) view of the kernel's rows where they are adjacent
+                i, j = ij
+                return r[i:i + 2] if j == i + 1 else np.array([r[i], r[j]])
         else:
             r = code.fn(xs, params)
-        full = lambda v: np.broadcast_to(v, n)  # noqa: E731
+
+            def pair(ij):
+                return (full(r[ij[0]]), full(r[ij[1]]))
         P, V, A = {}, {}, {}
         pos = {}
         for (key, label), ij in idx.items():
             if key == "pos":
                 if label in prog.ground:
                     P[label] = prog.ground[label]
+                    pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
                 else:
-                    P[label] = (r[ij[0]], r[ij[1]])
-                pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+                    P[label] = pair(ij)
+                    pos[label] = np.asarray(P[label])
         for label in pos:
             if label in prog.ground:
                 V[label] = A[label] = None
                 continue
-            i, j = idx[("velocity", label)]
-            V[label] = (full(r[i]), full(r[j]))
-            i, j = idx[("acceleration", label)]
-            A[label] = (full(r[i]), full(r[j]))
+            V[label] = pair(idx[("velocity", label)])
+            A[label] = pair(idx[("acceleration", label)])
         W = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
              if key == "omega"}
         AL = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
@@ -349,8 +354,7 @@ def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None) -> dic
                 SV[k] = full(r[i])
             elif key == "slide_a":
                 SA[k] = full(r[i])
-        COR = {k: (full(r[ij[0]]), full(r[ij[1]])) for (key, k), ij in idx.items()
-               if key == "coriolis"}
+        COR = {k: pair(ij) for (key, k), ij in idx.items() if key == "coriolis"}
         margin = np.ones(n)
         for i in idx[("margins", "")]:
             margin = np.minimum(margin, r[i])
@@ -631,71 +635,31 @@ def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
     xs = np.asarray(xs, dtype=float)
     n = len(xs)
     jit = bool(jit) and kernel_of(prog) is not None
+    if jit and not chunk and 0 < n <= JIT_ONE_PASS // _rows(prog):
+        out = adopt(evaluate(prog, xs, jit=True), n)    # one pass, its rows kept: no copy
+        if progress:
+            progress(n)
+        return out
     chunk = chunk or chunk_for(prog, jit)
     out: dict | None = None
     for s in range(0, max(n, 1), chunk):
         e = min(n, s + chunk)
         res = evaluate(prog, xs[s:e], jit=jit)
         if out is None:
-            out = _allocate(res, n)
-        _store(out, res, s, e)
+            out = allocate(res, n)
+        store(out, res, s, e)
         if progress:
             progress(e - s)
     return out
 
 
-_VEC_KEYS = ("pos", "vel", "acc", "coriolis")
-_SCALAR_KEYS = ("omega", "alpha", "slide_v", "slide_a", "travel")
+#: positions × record rows up to which a numba sweep is one pass whose rows are the results
+JIT_ONE_PASS = 1 << 25
 
 
-def _allocate(res: dict, n: int) -> dict:
-    """Result arrays for ``n`` positions, shaped after one evaluated chunk ``res``: views into
-    one block (one allocation, which the allocator can hand back whole to the next sweep).
-    Constant results (the crank's ω and α) are read-only broadcasts, not filled arrays."""
-    rows = 1
-    for key in _VEC_KEYS:
-        for lab, xy in res[key].items():
-            if not (xy is None or (key == "pos" and np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0)):
-                rows += 2
-    for key in _SCALAR_KEYS:
-        rows += sum(1 for v in res[key].values() if np.ndim(v) != 0)
-    block = np.empty((rows, n))
-    i = 0
-    out = {}
-    for key in _VEC_KEYS:
-        d = {}
-        for lab, xy in res[key].items():
-            if xy is None or (key == "pos" and np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0):
-                d[lab] = xy
-            else:
-                d[lab] = block[i:i + 2]
-                i += 2
-        out[key] = d
-    for key in _SCALAR_KEYS:
-        d = {}
-        for lab, v in res[key].items():
-            if np.ndim(v) == 0:
-                d[lab] = np.broadcast_to(np.float64(v), (n,))
-            else:
-                d[lab] = block[i]
-                i += 1
-        out[key] = d
-    out["margin"] = block[i]
-    return out
-
-
-def _store(out: dict, res: dict, s: int, e: int) -> None:
-    for key in _VEC_KEYS:
-        for lab, arr in out[key].items():
-            if isinstance(arr, np.ndarray):
-                x, y = res[key][lab]
-                arr[0, s:e] = x
-                arr[1, s:e] = y
-    for key in _SCALAR_KEYS:
-        for lab, arr in out[key].items():
-            if arr.flags.writeable:
-                arr[s:e] = res[key][lab]
-    out["margin"][s:e] = res["margin"]
+def _rows(prog: Program) -> int:
+    code, _ = arrays_program(prog)
+    return max(len(code.source.rsplit("return (", 1)[-1].split(",")) - 1, 1)
 
 
 def _segments(xs: np.ndarray, toggles: Iterable[Limit], full: bool):
