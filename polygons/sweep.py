@@ -306,6 +306,7 @@ def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None) -> dic
         full = lambda v: np.broadcast_to(v, n)  # noqa: E731
         if kernel is not None and xs.ndim == 1:
             r = kernel[0](np.ascontiguousarray(xs), kernel[1])
+            full = lambda v: v  # noqa: E731 (every row of the kernel's is (N,) already)
 
             def pair(ij):   # a (2, N) view of the kernel's rows where they are adjacent
                 i, j = ij
@@ -566,7 +567,10 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
     (:mod:`polygons.jit`; the same numbers to rounding), numpy otherwise.
     """
     inputs = _check_sweep_args(scene, steps, inputs, chunk)
-    prog = compile_plan(scene)
+    memo = memo_of(scene)           # planned once per scene (a frozen record)
+    prog = memo.get("sweep_program")
+    if prog is None:
+        prog = memo["sweep_program"] = compile_plan(scene)
     limits: tuple[Limit, ...] = ()
     toggles: tuple[Limit, ...] = ()
     if inputs is None:
