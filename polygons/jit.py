@@ -28,7 +28,8 @@ import math
 from .codegen import _Fail, _hypot_cols, _where
 from .dyads.base import ARRAY_TWIN
 
-FAST = {"arcp", "contract"}
+#: no fast-math: the same IEEE operations as the Python program (flags tried gave no speed)
+FAST = False
 _SCALAR_OF = {arr: sc for sc, arr in ARRAY_TWIN.items()}
 
 

@@ -639,7 +639,8 @@ def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
     xs = np.asarray(xs, dtype=float)
     n = len(xs)
     jit = bool(jit) and kernel_of(prog) is not None
-    if jit and not chunk and 0 < n <= JIT_ONE_PASS // _rows(prog):
+    if jit and not chunk and _rows(prog) <= JIT_ONE_PASS_ROWS \
+            and 0 < n <= JIT_ONE_PASS // _rows(prog):
         out = adopt(evaluate(prog, xs, jit=True), n)    # one pass, its rows kept: no copy
         if progress:
             progress(n)
@@ -657,8 +658,11 @@ def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
     return out
 
 
-#: positions × record rows up to which a numba sweep is one pass whose rows are the results
+#: positions × record rows up to which a numba sweep is one pass whose rows are the results,
+#: for records of at most JIT_ONE_PASS_ROWS rows (more rows, each a stream of stores to its
+#: own pages, and the stores miss the TLB: chunks that stay in the caches are faster)
 JIT_ONE_PASS = 1 << 25
+JIT_ONE_PASS_ROWS = 64
 
 
 def _rows(prog: Program) -> int:
