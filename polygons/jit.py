@@ -9,8 +9,8 @@ pylinkage brings it with) and asked for (``compile_scene(scene, jit=True)``,
 * :func:`record_kernel` — one position: ``kernel(x, params) → record`` (a float64 array with
   the float program's record layout; the failure checks raise the same ``_Fail``);
 * :func:`sweep_kernel` — a loop over the inputs around the code generated for arrays (no
-  checks, margins kept): ``kernel(xs, params) → (R, N)`` array, row ``i`` what the numpy
-  program's record holds at ``i``.
+  checks, margins kept): a :class:`SweepKernel`, whose ``record(xs, params)`` is what the
+  numpy program returns (a row per varying output, the parameters and literals as scalars).
 
 Both are made from the source text only (the statements are not re-derived), so they compute
 the same expressions as the interpreters; ``tests/test_jit.py`` holds them equal to the
@@ -104,21 +104,52 @@ def record_kernel(code):
         return None
 
 
+class SweepKernel:
+    """A program for arrays compiled by numba: ``fn(xs, params) → (M, N)``, one row per output
+    of the generated code that varies with the input; ``rows[i]`` is output ``i``'s row, or
+    None for an output that is a parameter or a literal (``const[i]``: the parameter's index,
+    or the number), which the numpy program also returns as a scalar."""
+
+    __slots__ = ("fn", "rows", "const")
+
+    def __init__(self, fn, rows, const):
+        self.fn, self.rows, self.const = fn, rows, const
+
+    def record(self, xs, params) -> list:
+        """The numpy program's record at ``xs``: (N,) rows and scalars, and the array."""
+        O = self.fn(xs, params)
+        return [O[row] if row is not None else (float(params[c]) if type(c) is int else c)
+                for row, c in zip(self.rows, self.const)], O
+
+
 def sweep_kernel(code):
-    """``kernel(xs, params) → (R, N)`` (row i contiguous) for the program generated for arrays ``code``
+    """The :class:`SweepKernel` of the program generated for arrays ``code``
     (:func:`polygons.compiled.compile_arrays`), or None if numba cannot compile it."""
     try:
         import numba
         params, body, outs = _parts(code.source)
+        rows, const, live = [], [], []
+        for o in outs:
+            if o in params:
+                rows.append(None)
+                const.append(params.index(o))
+            elif not o.startswith("v"):
+                rows.append(None)
+                const.append(float(o))
+            else:
+                rows.append(len(live))
+                const.append(None)
+                live.append(o)
         src = ["def _many(xs, _k):", "    _n = xs.shape[0]",
-               f"    _O = np.empty(({len(outs)}, _n))"]
+               f"    _O = np.empty(({max(len(live), 1)}, _n))"]
         src += [f"    {p} = _k[{i}]" for i, p in enumerate(params)]
         src.append("    for _i in range(_n):")
         src.append("        x = xs[_i]")
         src += [f"        {b}" for b in body]
-        src += [f"        _O[{i}, _i] = {o}" for i, o in enumerate(outs)]
+        src += [f"        _O[{i}, _i] = {o}" for i, o in enumerate(live)]
         src.append("    return _O")
-        return _compile("\n".join(src) + "\n", _namespace(code, numba), "_many",
-                        "float64[:, ::1](float64[::1], float64[::1])", numba, "numpy")
+        fn = _compile("\n".join(src) + "\n", _namespace(code, numba), "_many",
+                      "float64[:, ::1](float64[::1], float64[::1])", numba, "numpy")
+        return SweepKernel(fn, tuple(rows), tuple(const))
     except Exception:           # noqa: BLE001
         return None

@@ -303,14 +303,16 @@ def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None) -> dic
     scene = prog.scene
     n = xs.shape
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        full = lambda v: np.broadcast_to(v, n)  # noqa: E731
+        full = lambda v: np.broadcast_to(v, n) if np.ndim(v) == 0 else v  # noqa: E731
         if kernel is not None and xs.ndim == 1:
-            r = kernel[0](np.ascontiguousarray(xs), kernel[1])
-            full = lambda v: v  # noqa: E731 (every row of the kernel's is (N,) already)
+            r, O = kernel[0].record(np.ascontiguousarray(xs), kernel[1])
+            rows = kernel[0].rows
 
             def pair(ij):   # a (2, N) view of the kernel's rows where they are adjacent
-                i, j = ij
-                return r[i:i + 2] if j == i + 1 else np.array([r[i], r[j]])
+                a, b = rows[ij[0]], rows[ij[1]]
+                if a is not None and b == a + 1:
+                    return O[a:a + 2]
+                return np.array([full(r[ij[0]]), full(r[ij[1]])])
         else:
             r = code.fn(xs, params)
 
@@ -666,6 +668,7 @@ JIT_ONE_PASS_ROWS = 64
 
 
 def _rows(prog: Program) -> int:
+    """The outputs of the program generated for arrays (rows of its record)."""
     code, _ = arrays_program(prog)
     return max(len(code.source.rsplit("return (", 1)[-1].split(",")) - 1, 1)
 
