@@ -25,6 +25,8 @@ from __future__ import annotations
 import importlib.util
 import math
 
+import numpy as np
+
 from .codegen import _Fail, _hypot_cols, _where
 from .dyads.base import ARRAY_TWIN
 
@@ -115,9 +117,17 @@ class SweepKernel:
     def __init__(self, fn, rows, const):
         self.fn, self.rows, self.const = fn, rows, const
 
-    def record(self, xs, params) -> list:
-        """The numpy program's record at ``xs``: (N,) rows and scalars, and the array."""
-        O = self.fn(xs, params)
+    @property
+    def size(self) -> int:
+        """Rows of the kernel's output (the outputs that vary)."""
+        return max(sum(r is not None for r in self.rows), 1)
+
+    def record(self, xs, params, out=None) -> list:
+        """The numpy program's record at ``xs``: (N,) rows and scalars, and the array they are
+        rows of (``out[:, :N]`` when given: a buffer reused pass after pass, else new)."""
+        n = xs.shape[0]
+        O = np.empty((self.size, n)) if out is None else out[:, :n]
+        self.fn(xs, params, O)
         return [O[row] if row is not None else (float(params[c]) if type(c) is int else c)
                 for row, c in zip(self.rows, self.const)], O
 
@@ -140,16 +150,14 @@ def sweep_kernel(code):
                 rows.append(len(live))
                 const.append(None)
                 live.append(o)
-        src = ["def _many(xs, _k):", "    _n = xs.shape[0]",
-               f"    _O = np.empty(({max(len(live), 1)}, _n))"]
+        src = ["def _many(xs, _k, _O):", "    _n = xs.shape[0]"]
         src += [f"    {p} = _k[{i}]" for i, p in enumerate(params)]
         src.append("    for _i in range(_n):")
         src.append("        x = xs[_i]")
         src += [f"        {b}" for b in body]
         src += [f"        _O[{i}, _i] = {o}" for i, o in enumerate(live)]
-        src.append("    return _O")
         fn = _compile("\n".join(src) + "\n", _namespace(code, numba), "_many",
-                      "float64[:, ::1](float64[::1], float64[::1])", numba, "numpy")
+                      "void(float64[::1], float64[::1], float64[:, :])", numba, "numpy")
         return SweepKernel(fn, tuple(rows), tuple(const))
     except Exception:           # noqa: BLE001
         return None

@@ -210,7 +210,8 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
 
 
 # ---------------------------------------------------------------- vectorised evaluation
-def evaluate(prog: Program, inputs, *, rates: bool = True, jit: bool = False) -> dict:
+def evaluate(prog: Program, inputs, *, rates: bool = True, jit: bool = False,
+             out: np.ndarray | None = None) -> dict:
     """Solve every position in ``inputs`` (θ in rad or s in m) at once.
 
     Returns a dict with ``pos``, ``vel``, ``acc`` (label -> (x, y) arrays, ``None`` for a
@@ -222,7 +223,7 @@ def evaluate(prog: Program, inputs, *, rates: bool = True, jit: bool = False) ->
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         if rates and jit:
             code, params = arrays_program(prog)
-            return from_arrays(prog, code, params, t, kernel_of(prog))
+            return from_arrays(prog, code, params, t, kernel_of(prog), out)
         return _evaluate(prog, t, rates)
 
 
@@ -285,7 +286,7 @@ def kernel_of(prog: Program):
 
 
 #: bytes of a pass's record (one row of N floats per output of the generated code)
-CHUNK_BYTES = {False: 1 << 22, True: 1 << 21}
+CHUNK_BYTES = {False: 1 << 22, True: 1 << 22}
 
 
 def chunk_for(prog: Program, jit: bool = False) -> int:
@@ -295,17 +296,19 @@ def chunk_for(prog: Program, jit: bool = False) -> int:
     return int(min(4 * CHUNK, max(1024, CHUNK_BYTES[bool(jit)] // 8 // _rows(prog))))
 
 
-def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None) -> dict:
+def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None, out=None) -> dict:
     """:func:`evaluate`'s results at the inputs ``xs``: the arrays program run once, its flat
     record read into positions, polygon vertices, rates, slides and the dyads' margin
-    (``kernel``: the same program compiled by numba, :func:`kernel_of`)."""
+    (``kernel``: the same program compiled by numba, :func:`kernel_of`, writing into ``out``
+    when given: a buffer of its rows that the caller reuses, so the results are views of it
+    until the next pass)."""
     idx = code.index
     scene = prog.scene
     n = xs.shape
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        full = lambda v: np.broadcast_to(v, n) if np.ndim(v) == 0 else v  # noqa: E731
+        full = lambda v: v if type(v) is np.ndarray else np.broadcast_to(v, n)  # noqa: E731
         if kernel is not None and xs.ndim == 1:
-            r, O = kernel[0].record(np.ascontiguousarray(xs), kernel[1])
+            r, O = kernel[0].record(np.ascontiguousarray(xs), kernel[1], out)
             rows = kernel[0].rows
 
             def pair(ij):   # a (2, N) view of the kernel's rows where they are adjacent
@@ -641,17 +644,18 @@ def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
     xs = np.asarray(xs, dtype=float)
     n = len(xs)
     jit = bool(jit) and kernel_of(prog) is not None
-    if jit and not chunk and _rows(prog) <= JIT_ONE_PASS_ROWS \
-            and 0 < n <= JIT_ONE_PASS // _rows(prog):
+    rows = kernel_of(prog)[0].size if jit else 0
+    if jit and not chunk and rows <= JIT_ONE_PASS_ROWS and 0 < n <= JIT_ONE_PASS // rows:
         out = adopt(evaluate(prog, xs, jit=True), n)    # one pass, its rows kept: no copy
         if progress:
             progress(n)
         return out
     chunk = chunk or chunk_for(prog, jit)
+    buf = np.empty((rows, min(chunk, max(n, 1)))) if jit else None   # the kernel's, reused
     out: dict | None = None
     for s in range(0, max(n, 1), chunk):
         e = min(n, s + chunk)
-        res = evaluate(prog, xs[s:e], jit=jit)
+        res = evaluate(prog, xs[s:e], jit=jit, out=buf)
         if out is None:
             out = allocate(res, n)
         store(out, res, s, e)
