@@ -11,8 +11,11 @@ in pylinkage (its ``RRRDyad`` on the crank and on each dyad before).  By the one
 * a sweep of ``--positions`` crank angles: ``polygons.sweep.sweep(scene, inputs=...)``
   against pylinkage's numba ``step_fast_with_kinematics(n)``.
 
-Prints one row per N with both ratios and whether the issue 20 goals hold (compiled ≥ 5×,
-sweep ≥ 2×).  Needs ``pip install -e .[bench]``.
+Both of ours are timed twice: as Python / numpy and compiled by numba (``jit=True``,
+:mod:`polygons.jit`; the kernels' one-off compile time is reported, untimed in the rows).
+Prints one row per N with the ratios and whether the issue 20 goals hold (compiled ≥ 5×,
+sweep ≥ 2×).  ``python benchmarks/run.py`` runs it too (``--chains``), and its ``--readme``
+writes the table into the README.  Needs ``pip install -e .[bench]`` (pylinkage, numba).
 """
 from __future__ import annotations
 
