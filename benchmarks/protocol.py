@@ -59,7 +59,7 @@ def scenes_at(scene, thetas, probe_pos, branches):
     return out
 
 
-def single_position(root, path, avail, quick, others, cf):
+def single_position(root, path, avail, quick, others, cf, jit_rows=True):
     """Rows (method, seconds per call, what is timed) for one position of the four-bar."""
     from polygons.compiled import compile_scene
     from polygons.evaluate import solve
@@ -107,7 +107,7 @@ def single_position(root, path, avail, quick, others, cf):
                         "benchmarks/closed_form.py on a 1-element array"),
     }
     from polygons import jit
-    if jit.available():
+    if jit_rows and jit.available():
         jprog = compile_scene(scene, jit=True)
         fns["numba"] = lambda i: jprog.solve(thetas[i])
         notes["numba"] = ("polygons compiled by numba, pre-built",

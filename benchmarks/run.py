@@ -430,7 +430,7 @@ def protocol_table(single, ours_b, closed_b, err_b, ok_b, cold, runs, fresh=None
     if fresh is not None:
         lines.append(f"{'batch, fresh process: solve_many':<44} {fmt_time(fresh[0]):>11}  "
                      f"first call in a new process (its code for arrays generated then), "
-                     f"median of 5 processes")
+                     f"median of {fresh[2]} processes")
         lines.append(f"{'batch, fresh process: closed form':<44} {fmt_time(fresh[1]):>11}  "
                      f"first call in the same processes")
     for k, v in cold.items():
@@ -521,7 +521,7 @@ def markdown(results, single, batch, fresh, cold, runs, chain_rows, goals, info)
     out.append(f"| batch: the same 10⁴, numpy closed form, warm | {fmt_time(closed_b)} | "
                f"one call |")
     out.append(f"| batch, fresh process: `solve_many` | {fmt_time(fresh[0])} | its first "
-               f"call in a new process (code for arrays generated then), median of 5 |")
+               f"call in a new process (code for arrays generated then), median of {fresh[2]} |")
     out.append(f"| batch, fresh process: closed form | {fmt_time(fresh[1])} | its first call "
                f"in the same processes |")
     for k, v in cold.items():
@@ -575,7 +575,8 @@ def plot(results, stem):
             series.setdefault(method, ([], []))
             series[method][0].append(r["n"] / r["time"])
             series[method][1].append(max(r["error"], 1e-17))
-    colors = {"vectorised": "tab:blue", "staged": "tab:green", "closed": "tab:orange",
+    colors = {"vectorised sweep (numba)": "tab:cyan", "lean": "tab:olive",
+              "vectorised": "tab:blue", "staged": "tab:green", "closed": "tab:orange",
               "finite": "tab:purple", "pylinkage": "tab:red", "mechanism": "tab:brown",
               "drawing": "black"}
     lines = []
@@ -601,10 +602,14 @@ def main(argv=None) -> int:
     ap.add_argument("--chains", default="1,2,4,8,16,32",
                     help="chain sizes N against pylinkage (benchmarks/chains.py; '' skips)")
     ap.add_argument("--chain-positions", type=int, default=100_000)
+    ap.add_argument("--no-jit", action="store_true",
+                    help="leave out the numba rows (polygons/jit.py) even where numba is installed")
     ap.add_argument("--readme", action="store_true",
                     help="write the figures into README.md between <!-- bench:begin --> and "
                          "<!-- bench:end --> (every number from this run)")
     args = ap.parse_args(argv)
+    global JIT
+    JIT = JIT and not args.no_jit
     load_start = os.getloadavg()[0]
     sizes = ([int(s) for s in args.sizes.split(",")] if args.sizes else
              ([20_000, 100_000] if args.quick else [100_000, 1_000_000]))
@@ -620,9 +625,10 @@ def main(argv=None) -> int:
         results.append(bench_mechanism(title, kind, path, sizes, avail, args.quick, log))
     goals = targets(results, sizes)
     log("one protocol: single position, batch, cold start (four-bar S001-WE6)")
-    single = protocol.single_position(ROOT, FOUR_BAR, avail, args.quick, others, cf)
+    single = protocol.single_position(ROOT, FOUR_BAR, avail, args.quick, others, cf, JIT)
     ours_b, closed_b, err_b, ok_b = protocol.batch_vs_closed_form(ROOT, FOUR_BAR, args.quick, cf)
-    fresh = protocol.batch_fresh(ROOT, FOUR_BAR, 3 if args.quick else 5)
+    fresh_runs = 1 if args.quick else 5
+    fresh = protocol.batch_fresh(ROOT, FOUR_BAR, fresh_runs) + (fresh_runs,)
     chain_rows = []
     if args.chains and avail.get("pylinkage") is None and JIT:
         import chains

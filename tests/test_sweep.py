@@ -392,7 +392,7 @@ def test_random_slotted_levers_sweep_like_the_closed_form(r, h, theta, omega, al
 def test_benchmark_command_runs_and_reports_the_targets(tmp_path):
     """A smoke run of benchmarks/run.py (tiny sizes, without the optional packages)."""
     out = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "run.py"), "--quick",
-                          "--no-others", "--sizes", "4096", "--out", str(tmp_path)],
+                          "--no-others", "--no-jit", "--sizes", "4096", "--out", str(tmp_path)],
                          capture_output=True, text=True, cwd=ROOT, timeout=300)
     assert out.returncode == 0, out.stderr[-2000:]
     assert "targets (ratios measured in this run):" in out.stdout
