@@ -139,6 +139,9 @@ TABLES: tuple[Table, ...] = (
 
 #: the scene tables this module rewrites
 NAMES = ("curved_slots", "cams", "rolling", "bearing")
+#: the table each kind of :class:`Equivalent` is stated in
+TABLE_OF = {"curved slot": "curved_slots", "cam": "cams", "flat-faced cam": "cams",
+            "rolling": "rolling", "bearing": "bearing"}
 #: the force tables a scene with contacts cannot carry yet
 FORCE_TABLES = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                 "force_answers", "flywheel", "efficiency")
@@ -431,9 +434,11 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
         nx, ny = -math.sin(ang), math.cos(ang)
         motion = None
         if "opposite_velocity" in table:
-            if not isinstance(table.get("opposite"), str) or not table["opposite"].strip():
-                raise SceneError("opposite_velocity moves the second plate: name it, opposite "
-                                 "= \"T\"", file=file, where=f"{where}.opposite")
+            name_ = table.get("opposite")
+            if not (isinstance(name_, str) and name_[:1].isupper() and name_.isidentifier()):
+                raise SceneError("opposite_velocity moves the second plate: name it with a "
+                                 "label, opposite = \"T\" (a capital letter, then letters or "
+                                 "digits)", file=file, where=f"{where}.opposite")
             motion = (_q(table["opposite_velocity"], "velocity", file,
                          f"{where}.opposite_velocity"),
                       _q(table.get("opposite_acceleration", "0 m/s^2"), "acceleration", file,

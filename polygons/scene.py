@@ -505,7 +505,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     answers = _parse_answers(answers_raw, r, default_tol)
 
     check_proportions(file, ground, drawn, links, sliders, points, assembly, driver,
-                      contact_size=max((q.radius for q in equivalents), default=0.0))
+                      contacts={f"{contacts.TABLE_OF[q.kind]}.{q.at}.radius": q.radius
+                                for q in equivalents})
 
     # the joint tables read once into bodies and pairs: every method reads this model
     model = build_model(ground=ground, links=links, sliders=sliders, slots=slots,
@@ -547,7 +548,7 @@ MAX_POINT_RELATIVE = 1e4
 
 
 def check_proportions(file, ground, drawn, links, sliders, points, assembly, driver,
-                      contact_size: float = 0.0) -> None:
+                      contacts: dict[str, float] | None = None) -> None:
     """Lengths and coordinates within a stated range relative to the mechanism's size.
 
     size = the longest link, or the largest distance between two fixed or drawn points (or a
@@ -561,7 +562,7 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
                + [abs(driver.position) if isinstance(driver, SliderDrive) else 0.0])
     if not size > 0:        # a lone block (a plate under a rolling cylinder): its guide's
         size = max([math.dist(p, g.through) for p in places for g in sliders.values()]
-                   + [contact_size])           # offset, or the wheel's radius
+                   + list((contacts or {}).values()))     # offset, or a wheel's radius
     if not size > 0:
         raise SceneError("the mechanism has no size: every link length and distance between "
                          "pivots is zero", file=file, where="links")
@@ -569,6 +570,9 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
     for name, link in links.items():
         if abs(link.length) < shortest:
             _too_short(file, f"links.{name}", link.length, size)
+    for key, radius in (contacts or {}).items():      # a wheel's, a cam's, a slot's radius
+        if radius < shortest:
+            _too_short(file, key, radius, size)
     for key in ("along", "left"):
         for label, point in points.items():
             value = getattr(point, key)

@@ -387,3 +387,12 @@ def test_rim_refusals(rim, words):
         'direction = "0 deg"\n\n[assembly]', f'direction = "0 deg"\n{rim}\n\n[assembly]')
     with pytest.raises(PolygonsError, match=words):
         parse(text)
+
+
+@pytest.mark.parametrize("edit,words", [
+    (('opposite = "C"', 'opposite = "<script>"'), "name it with a label"),
+    (('radius = "125 mm"', 'radius = "1e-300 mm"'), "too short beside the mechanism"),
+])
+def test_stated_plate_and_radius_bounds(edit, words):
+    with pytest.raises(PolygonsError, match=words):
+        parse(STATED.read_text().replace(*edit))
