@@ -11,8 +11,11 @@ in pylinkage (its ``RRRDyad`` on the crank and on each dyad before).  By the one
 * a sweep of ``--positions`` crank angles: ``polygons.sweep.sweep(scene, inputs=...)``
   against pylinkage's numba ``step_fast_with_kinematics(n)``.
 
-Prints one row per N with both ratios and whether the issue 20 goals hold (compiled ≥ 5×,
-sweep ≥ 2×).  Needs ``pip install -e .[bench]``.
+Both of ours are timed twice: as Python / numpy and compiled by numba (``jit=True``,
+:mod:`polygons.jit`; the kernels' one-off compile time is reported, untimed in the rows).
+Prints one row per N with the ratios and whether the issue 20 goals hold (compiled ≥ 5×,
+sweep ≥ 2×).  ``python benchmarks/run.py`` runs it too (``--chains``), and its ``--readme``
+writes the table into the README.  Needs ``pip install -e .[bench]`` (pylinkage, numba).
 """
 from __future__ import annotations
 
@@ -20,6 +23,7 @@ import argparse
 import math
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 import numpy as np
@@ -98,6 +102,11 @@ def measure(n: int, positions: int, quick: bool) -> dict:
     # angles near the scene's, where the assembly stated is the one followed
     thetas = [theta0 + 0.2 * k / K for k in range(K)]
     prog = compile_scene(scene)
+    t0 = time.perf_counter()
+    jprog = compile_scene(scene, jit=True)
+    jit_compile = time.perf_counter() - t0
+    if jprog.fn is prog.fn:
+        raise SystemExit("numba is not importable: pip install -e .[bench]")
     pl = ChainLinkage(n, 10.0, theta0)
     # the same answer first: C and the chain's last point at one angle
     got = prog.solve(thetas[3])
@@ -106,32 +115,50 @@ def measure(n: int, positions: int, quick: bool) -> dict:
     ref = np.asarray(pos)[0, -1]
     ours = np.asarray(got.position(last), dtype=float)
     agree = float(np.max(np.abs(ours - ref)))
+    jgot = jprog.solve(thetas[3]).record
+    jit_agree = max(abs(a - b) / (1.0 + abs(a)) for a, b in zip(got.record, jgot))
     reps = 5 if quick else 20
     idx = list(range(K))
     t1 = protocol.per_call({"compiled": lambda i: prog.solve(thetas[i]),
+                            "numba": lambda i: jprog.solve(thetas[i]),
                             "pl fast": lambda i: pl.single_fast(thetas[i]),
                             "pl py": lambda i: pl.single_python(thetas[i])}, idx, reps)
     xs = theta0 + 2 * np.pi * np.arange(positions) / positions
     dth = 2 * np.pi / positions
+    t0 = time.perf_counter()
+    sweep(scene, inputs=xs[:8], jit=True)          # compiles the sweep kernel (untimed)
+    jit_compile += time.perf_counter() - t0
     t2 = protocol.per_call({"sweep": lambda _: sweep(scene, inputs=xs),
+                            "sweep numba": lambda _: sweep(scene, inputs=xs, jit=True),
                             "pl sweep": lambda _: pl.sweep_fast(float(xs[0]), positions, dth)},
                            [0], 3 if quick else 7)
     best_pl = min(t1["pl fast"], t1["pl py"])
     return dict(n=n, links=large.links_of("chain", n), compiled=t1["compiled"], pl=best_pl,
-                single_ratio=best_pl / t1["compiled"], sweep=positions / t2["sweep"],
+                numba=t1["numba"], single_ratio=best_pl / t1["compiled"],
+                numba_ratio=best_pl / t1["numba"], sweep=positions / t2["sweep"],
+                sweep_jit=positions / t2["sweep numba"],
                 pl_sweep=positions / t2["pl sweep"], sweep_ratio=t2["pl sweep"] / t2["sweep"],
-                agree=agree)
+                sweep_jit_ratio=t2["pl sweep"] / t2["sweep numba"], agree=agree,
+                jit_agree=jit_agree, jit_compile=jit_compile)
+
+
+def _met(ratio, goal):
+    return f"{ratio:.2f}× {'met' if ratio >= goal else '**not met**'}"
 
 
 def table(rows) -> str:
-    out = ["| N dyads | links | compiled, pre-built | pylinkage, pre-built | ratio (goal ≥ 5×) "
-           "| sweep | pylinkage sweep | ratio (goal ≥ 2×) |", "|---|---|---|---|---|---|---|---|"]
+    """The chains table: one row per N, Python and numba paths against pylinkage."""
+    out = ["| N dyads | links | pylinkage, pre-built | compiled (Python) | ratio | "
+           "compiled (numba) | ratio (goal ≥ 5×) | pylinkage sweep | sweep (numpy) | ratio | "
+           "sweep (numba) | ratio (goal ≥ 2×) | numba compile |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        out.append(f"| {r['n']} | {r['links']} | {r['compiled'] * 1e6:.1f} µs | "
-                   f"{r['pl'] * 1e6:.1f} µs | {r['single_ratio']:.2f}× "
-                   f"{'met' if r['single_ratio'] >= 5 else '**not met**'} | "
-                   f"{r['sweep'] / 1e6:.3g} M/s | {r['pl_sweep'] / 1e6:.3g} M/s | "
-                   f"{r['sweep_ratio']:.2f}× {'met' if r['sweep_ratio'] >= 2 else '**not met**'} |")
+        out.append(f"| {r['n']} | {r['links']} | {r['pl'] * 1e6:.1f} µs | "
+                   f"{r['compiled'] * 1e6:.1f} µs | {r['single_ratio']:.2f}× | "
+                   f"{r['numba'] * 1e6:.2f} µs | {_met(r['numba_ratio'], 5)} | "
+                   f"{r['pl_sweep'] / 1e6:.3g} M/s | {r['sweep'] / 1e6:.3g} M/s | "
+                   f"{r['sweep_ratio']:.2f}× | {r['sweep_jit'] / 1e6:.3g} M/s | "
+                   f"{_met(r['sweep_jit_ratio'], 2)} | {r['jit_compile']:.1f} s |")
     return "\n".join(out)
 
 
@@ -150,10 +177,12 @@ def main(argv=None) -> int:
     for n in (int(s) for s in args.sizes.split(",")):
         r = measure(n, args.positions, args.quick)
         rows.append(r)
-        print(f"N = {n}: compiled {r['compiled'] * 1e6:.1f} µs, pylinkage {r['pl'] * 1e6:.1f} µs "
-              f"({r['single_ratio']:.2f}×); sweep {r['sweep'] / 1e6:.3g} M/s, pylinkage "
-              f"{r['pl_sweep'] / 1e6:.3g} M/s ({r['sweep_ratio']:.2f}×); the two agree to "
-              f"{r['agree']:.1e} m", flush=True)
+        print(f"N = {n}: compiled {r['compiled'] * 1e6:.1f} µs, numba {r['numba'] * 1e6:.2f} µs, "
+              f"pylinkage {r['pl'] * 1e6:.1f} µs ({r['single_ratio']:.2f}×, "
+              f"{r['numba_ratio']:.2f}×); sweep {r['sweep'] / 1e6:.3g} M/s, numba "
+              f"{r['sweep_jit'] / 1e6:.3g} M/s, pylinkage {r['pl_sweep'] / 1e6:.3g} M/s "
+              f"({r['sweep_ratio']:.2f}×, {r['sweep_jit_ratio']:.2f}×); pylinkage agrees to "
+              f"{r['agree']:.1e} m, numba to {r['jit_agree']:.1e} (relative)", flush=True)
     print(table(rows))
     return 0
 

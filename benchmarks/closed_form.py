@@ -184,6 +184,62 @@ def slotted_lever(p: dict, theta) -> dict:
     }
 
 
+def four_bar_lean(p: dict, theta) -> dict:
+    """The four-bar in *Cartesian* form, as lean as numpy allows (the baseline a user would
+    write by hand for speed): B on the crank circle, C where the circles about B (BC) and D
+    (CD) cross, ω and α of BC and DC from the velocity and acceleration loops dotted with the
+    other link (``ω₃ = −(v_B·r₄)/(r₃×r₄)``, ``ω₄ = −(v_B·r₃)/(r₃×r₄)``, the same with
+    ``q = a_B − ω₃² r₃ + ω₄² r₄`` for α).  The closure ``p["lean_sigma"]`` (the side of B→D
+    that C is on) is taken from :func:`four_bar` at the scene's angle by :func:`lean`."""
+    th = np.asarray(theta)
+    ax, ay = p["pivot"]
+    dx, dy = p["D"]
+    a, b, c, w2, al2, sg = p["r"], p["b"], p["c"], p["omega"], p["alpha"], p["lean_sigma"]
+    ex, ey = np.cos(th), np.sin(th)
+    bx, by = ax + a * ex, ay + a * ey
+    ux, uy = dx - bx, dy - by
+    d2 = ux * ux + uy * uy
+    d = np.sqrt(d2)
+    m = (b * b - c * c + d2) / (2.0 * d)
+    h = sg * np.sqrt(b * b - m * m) / d
+    m /= d
+    cx, cy = bx + m * ux - h * uy, by + m * uy + h * ux
+    r3x, r3y, r4x, r4y = cx - bx, cy - by, cx - dx, cy - dy
+    vbx, vby = -w2 * a * ey, w2 * a * ex
+    k = 1.0 / (r3x * r4y - r3y * r4x)
+    w3 = -(vbx * r4x + vby * r4y) * k
+    w4 = -(vbx * r3x + vby * r3y) * k
+    abx = -al2 * a * ey - w2 * w2 * a * ex
+    aby = al2 * a * ex - w2 * w2 * a * ey
+    qx = abx - w3 * w3 * r3x + w4 * w4 * r4x
+    qy = aby - w3 * w3 * r3y + w4 * w4 * r4y
+    al3 = -(qx * r4x + qy * r4y) * k
+    al4 = -(qx * r3x + qy * r3y) * k
+    tip, name_c = p["tip"], p["C"]
+    return {
+        f"{tip}.x": bx, f"{tip}.y": by, f"{tip}.vx": vbx, f"{tip}.vy": vby,
+        f"{tip}.ax": abx, f"{tip}.ay": aby,
+        f"{name_c}.x": cx, f"{name_c}.y": cy, f"{name_c}.vx": -w4 * r4y,
+        f"{name_c}.vy": w4 * r4x, f"{name_c}.ax": -al4 * r4y - w4 * w4 * r4x,
+        f"{name_c}.ay": al4 * r4x - w4 * w4 * r4y,
+        f"{p['coupler']}.omega": w3, f"{p['rocker']}.omega": w4,
+        f"{p['coupler']}.alpha": al3, f"{p['rocker']}.alpha": al4,
+    }
+
+
+def lean(p: dict) -> dict:
+    """``p`` with the closure :func:`four_bar_lean` needs: the side of B→D that C lies on at
+    the scene's crank angle, by :func:`four_bar` (the half-angle form)."""
+    t = np.array([p["theta0"]])
+    ref = four_bar(p, t)
+    ax, ay = p["pivot"]
+    dx, dy = p["D"]
+    bx, by = ax + p["r"] * math.cos(t[0]), ay + p["r"] * math.sin(t[0])
+    cx, cy = float(ref[f"{p['C']}.x"][0]), float(ref[f"{p['C']}.y"][0])
+    side = (dx - bx) * (cy - by) - (dy - by) * (cx - bx)
+    return dict(p, lean_sigma=1.0 if side > 0 else -1.0)
+
+
 SOLVERS = {"four-bar": four_bar, "slider-crank": slider_crank, "slotted-lever": slotted_lever}
 
 

@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 import os
 import statistics
+from pathlib import Path
 import subprocess
 import sys
 import time
@@ -58,7 +59,7 @@ def scenes_at(scene, thetas, probe_pos, branches):
     return out
 
 
-def single_position(root, path, avail, quick, others, cf):
+def single_position(root, path, avail, quick, others, cf, jit_rows=True):
     """Rows (method, seconds per call, what is timed) for one position of the four-bar."""
     from polygons.compiled import compile_scene
     from polygons.evaluate import solve
@@ -79,6 +80,7 @@ def single_position(root, path, avail, quick, others, cf):
         "compiled+steps": lambda i: prog.solve(thetas[i]).steps,
         "compiled build": lambda i: compile_scene(scenes[i]).solve(),
         "staged": lambda i: solve(scenes[i]),
+        "staged+steps": lambda i: solve(scenes[i]).steps,
         "load+staged": lambda i: solve(load_scene(root / path)),
         "closed form": lambda i: cf.four_bar(p, np.array([thetas[i]])),
     }
@@ -96,11 +98,21 @@ def single_position(root, path, avail, quick, others, cf):
                    "timed: solve(scene): assembly, the step program with every intersection "
                    "by shapely, the Solution (its Step records and text built on first "
                    "access; the plan kept with the scene)"),
+        "staged+steps": ("polygons staged + Step records",
+                         "timed: solve(scene) as above and its .steps: every Step record "
+                         "with its numbers, terms and substituted text"),
         "load+staged": ("polygons load_scene + staged",
                         "timed: TOML parse + solve (the scene's own angle)"),
         "closed form": ("numpy closed form, one position",
                         "benchmarks/closed_form.py on a 1-element array"),
     }
+    from polygons import jit
+    if jit_rows and jit.available():
+        jprog = compile_scene(scene, jit=True)
+        fns["numba"] = lambda i: jprog.solve(thetas[i])
+        notes["numba"] = ("polygons compiled by numba, pre-built",
+                          "compile_scene(jit=True) once outside; timed: the same record "
+                          "filled by the generated code compiled by numba (a float64 array)")
     pl = None
     if avail.get("pylinkage") is None:
         start = {lab: (float(np.ravel(v[0])[0]), float(np.ravel(v[1])[0]))
@@ -146,6 +158,46 @@ def batch_vs_closed_form(root, path, quick, cf, n=10_000):
     ok = b.ok & np.isfinite(w)
     err = float(np.max(np.abs(b.omega(p["coupler"])[ok] - w[ok])) / np.max(np.abs(w[ok])))
     return t["ours"], t["closed"], err, int(b.ok.sum())
+
+
+_FRESH = """
+import math, sys, time
+import numpy as np
+sys.path[:0] = [{here!r}, {root!r}]
+import closed_form as cf
+from polygons.batch import solve_many
+from polygons.scene import load_scene
+scene = load_scene({path!r})
+p = cf.params("four-bar", scene)
+rng = np.random.default_rng(1)
+n = 10_000
+L = {{k: scene.links[k].length for k in ("AB", "BC", "CD")}}
+ab = L["AB"] * rng.uniform(0.9, 1.1, n)
+bc = L["BC"] * rng.uniform(0.95, 1.05, n)
+cd = L["CD"] * rng.uniform(0.95, 1.05, n)
+th = rng.uniform(0.0, 2 * math.pi, n)
+pp = dict(p, r=ab, b=bc, c=cd)
+with np.errstate(invalid="ignore"):
+    t0 = time.perf_counter_ns(); cf.four_bar(pp, th); t1 = time.perf_counter_ns()
+    solve_many(scene, AB=ab, BC=bc, CD=cd, theta=th); t2 = time.perf_counter_ns()
+print((t2 - t1) * 1e-9, (t1 - t0) * 1e-9)
+"""
+
+
+def batch_fresh(root, path, runs: int = 5) -> tuple[float, float]:
+    """(ours s, closed form s): the first call of each in a fresh process (the scene loaded
+    and the 10⁴ random four-bars drawn before the timer; ours includes generating and
+    compiling its code for arrays, the closed form its first numpy calls), median of
+    ``runs`` processes."""
+    here = str(Path(__file__).resolve().parent)
+    code = _FRESH.format(here=here, root=str(root), path=str(root / path))
+    ours, closed = [], []
+    for _ in range(runs):
+        out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                             check=True, cwd=root).stdout.split()
+        ours.append(float(out[0]))
+        closed.append(float(out[1]))
+    return statistics.median(ours), statistics.median(closed)
 
 
 def cold(root, argv, runs: int) -> float:

@@ -58,6 +58,8 @@ def drawings(sol, scales: Mapping[str, Scale] | None = None, paper: str | None =
         if opts["stages"] and len(lay.con.steps) <= MAX_STAGED_STEPS:
             for k in range(1, len(lay.con.steps) + 1):
                 out.append(polygon.drawing(sol, lay, k))
+    from . import rolling       # a wheel on a moving surface: its own figure
+    out += rolling.drawings(sol, None, paper)
     method = klein or sol.scene.options.diagram.klein
     if method:
         from polygons.classic.klein import figure

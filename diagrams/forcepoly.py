@@ -5,7 +5,9 @@ acceleration polygons; every vector's kind has its look (:data:`diagrams.compone
 the ``force-…`` kinds).  Nothing is recomputed: every vector is a record of the construction.
 
 Files (``polygons forces CASE --svg DIR``): ``group-<state>-<n>.svg`` (the finished polygon
-of group n) and ``group-<state>-<n>-<k>.svg`` (its stages); ``zhukovsky-<state>.svg`` and
+of group n) and ``group-<state>-<n>-<k>.svg`` (its stages); ``joint-<state>-<n>-<corner>.svg``
+(and stages) for the joints of a triad's plate that is a triangle of links;
+``zhukovsky-<state>.svg`` and
 ``zhukovsky-<state>-<k>.svg``.
 """
 from __future__ import annotations
@@ -64,37 +66,86 @@ def _beside(arrows, tail, tip, n) -> tuple[float, float]:
     return (float(2.2 * k * n[0]), float(2.2 * k * n[1])) if k else (0.0, 0.0)
 
 
+def _known_item(k, stage):
+    return (k.name, k.force, KIND_LOOK.get(k.kind, "force-load"), stage,
+            f"{k.name}: {_fmt(float(np.hypot(*k.force)))} N ∠{_dir(k.force):.1f}°"
+            + (f" (h = {k.offset * 1e3:.3g} mm)" if k.kind == "inertia" else ""))
+
+
+def _moments_item(t, stage):
+    return (t.name, t.force, "force-moments", stage, f"{t.name}: {_fmt(t.value)} N (by moments)")
+
+
+def _closing_item(f, stage):
+    look = "force-effort" if f.how == "effort" else "force-closing"
+    return (f.name, f.force, look, stage, f"{f.name}: {_fmt(abs(f.value))} N ∠"
+            f"{_dir(f.force) if f.value else _dir(f.direction):.1f}°")
+
+
+def _closing_stage(g) -> int:
+    """The stage at which the polygon closes: 3 for a group of two bodies (dyads, triads)."""
+    return 3 if g.kind in graphical.DYAD_KINDS or g.kind == "triad" else 2
+
+
+def _triad_vectors(g: graphical.Group):
+    """The class-III group's polygon, ordered so that each binary link's part (its known
+    forces, its normal component, its along-link component) runs on: the corner's force on
+    the plate is then the diagonal across it.  Stage 1: the first link's part, the plate's
+    known forces, the third link's known forces and normal component; Stage 2: its component
+    along the link by moments about the Assur point S, then the second link's part; Stage 3:
+    the two closing sides (along the first and second links); Stage 4: the diagonals."""
+    ts, along_k = g.normals[:3], g.normals[3]
+    close_j, close_i = g.closing
+    legs = {t.body for t in ts}
+
+    def part(link, stage):
+        items = [_known_item(k, stage) for k in g.knowns if k.body == link and k.force.any()]
+        return items + [_moments_item(t, stage) for t in ts if t.body == link]
+    seq = part(close_i.body, 1)
+    end_i = len(seq)
+    seq += [_known_item(k, 1) for k in g.knowns if k.body not in legs and k.force.any()]
+    start_k = len(seq)
+    seq += part(along_k.body, 1) + [_moments_item(along_k, 2)]
+    end_k = len(seq)
+    start_j = len(seq)
+    seq += part(close_j.body, 2)
+    seq += [_closing_item(close_j, 3), _closing_item(close_i, 3)]
+    n = len(seq)
+    lines = [(n - 2, close_j.direction, 3), (n, close_i.direction, 3)]
+    name = {ts[q].body: g.reactions[q].name for q in range(3)}
+    diag = [(n - 1, end_i, name[close_i.body]), (start_k, end_k, name[along_k.body]),
+            (start_j, n - 1, name[close_j.body])]
+    return seq, lines, diag
+
+
 def _vectors(g: graphical.Group):
     """(name, force, look, stage, words) head to tail, and the construction lines
     (point, direction, stage) and diagonals (from-vertex index, to-vertex index, name)."""
+    if g.kind == "triad":
+        return _triad_vectors(g)
     seq = []
     lines = []
     diag = []
     first = g.bodies[0]
     for k in g.knowns:
         if k.force.any():
-            stage = 1 if k.body == first or g.kind in ("crank", "slider driver") else 2
-            seq.append((k.name, k.force, KIND_LOOK.get(k.kind, "force-load"), stage,
-                        f"{k.name}: {_fmt(float(np.hypot(*k.force)))} N ∠"
-                        f"{_dir(k.force):.1f}°"
-                        + (f" (h = {k.offset * 1e3:.3g} mm)" if k.kind == "inertia" else "")))
+            stage = 1 if k.body == first or g.kind in ("crank", "slider driver", "joint") \
+                else 2
+            seq.append(_known_item(k, stage))
     # the normal components go after their link's knowns: K1, t1, K2, t2
     for t in g.normals:
-        stage = 1 if t.body == first else 2
+        stage = 1 if t.body == first or g.kind == "joint" else 2
         idx = sum(1 for s in seq if s[3] <= stage)
-        seq.insert(idx, (t.name, t.force, "force-moments", stage,
-                         f"{t.name}: {_fmt(t.value)} N (by moments)"))
+        seq.insert(idx, _moments_item(t, stage))
     close = [f for f in g.closing if f.how != "effort" or g.kind == "slider driver"]
-    cstage = 3 if g.kind in ("RRR", "RRP") else 2
+    cstage = _closing_stage(g)
     start_closing = len(seq)
     for f in close:
-        look = "force-effort" if f.how == "effort" else "force-closing"
-        seq.append((f.name, f.force, look, cstage, f"{f.name}: {_fmt(abs(f.value))} N ∠"
-                    f"{_dir(f.force) if f.value else _dir(f.direction):.1f}°"))
+        seq.append(_closing_item(f, cstage))
     if len(close) == 2:
         lines.append((start_closing, close[0].direction, cstage))
         lines.append((len(seq), close[1].direction, cstage))
-    if g.kind in ("RRR", "RRP"):
+    if g.kind in graphical.DYAD_KINDS:
         s1 = sum(1 for s in seq if s[3] == 1)          # the vertex after the first link
         diag.append((start_closing + 1, s1, g.reactions[0].name))
     return seq, lines, diag
@@ -102,17 +153,31 @@ def _vectors(g: graphical.Group):
 
 def group_drawings(an, st):
     """(stem, Drawing) of each group's force polygon and its stages at ``st``."""
-    from .labels import bounds, box_hits_segment, text_box
-    from .layout import arrow_head, compose
-    from .model import Arrow, Circle, Group, Segment, Text
-    from .scale import Scale, round_up
-
     try:
         fp = graphical.construct(an, st)
     except UnsupportedError:
         return []
+    return _drawings(fp.groups, fp, st)
+
+
+def joint_drawings(an, st):
+    """(stem, Drawing) of the polygon of each joint of a class-III group's plate that is a
+    triangle of links (the forces on the pin), and its stages: ``joint-<state>-<n>-<corner>``."""
+    try:
+        fp = graphical.construct(an, st)
+    except UnsupportedError:
+        return []
+    return _drawings(fp.joints, fp, st)
+
+
+def _drawings(groups, fp, st):
+    from .labels import bounds, box_hits_segment, text_box
+    from .layout import arrow_head, compose
+    from .model import Arrow, Circle, Group, Segment
+    from .scale import Scale, round_up
+
     out = []
-    for g in fp.groups:
+    for g in groups:
         seq, lines, diag = _vectors(g)
         if not seq:
             continue
@@ -185,9 +250,21 @@ def group_drawings(an, st):
                             box_hits_segment(bx, a, b, 0.3) for a, b in segs):
                         break
                 else:
-                    at = mid + 2.5 * n
-                    anchor = "start" if n[0] >= 0 else "end"
-                    bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
+                    # crowded (short vectors close together): clear of the other names at
+                    # least, further out if need be
+                    for off, side in ((2.5, 1), (2.5, -1), (5.0, 1), (5.0, -1), (8.0, 1),
+                                      (8.0, -1), (11.0, 1), (11.0, -1), (14.0, 1),
+                                      (14.0, -1), (17.0, 1), (17.0, -1), (20.0, 1),
+                                      (20.0, -1), (24.0, 1), (24.0, -1), (28.0, 1)):
+                        at = mid + side * off * n
+                        anchor = "start" if side * n[0] >= 0 else "end"
+                        bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
+                        if not any(bx.overlaps(o) for o in placed):
+                            break
+                    else:
+                        at = mid + 2.5 * n
+                        anchor = "start" if n[0] >= 0 else "end"
+                        bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
                 placed.append(bx)
                 labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor))
             if diag and (stage is None or stage == nst):
@@ -207,9 +284,11 @@ def group_drawings(an, st):
                                             shift=shift))
                         mid = (np.array(tail) + np.array(tip)) / 2 + np.array(shift)
                         m2 = -1.0 if shift != (0.0, 0.0) else 1.0
-                        for off in (3.0, 6.0, 9.0, 12.0):
-                            at = mid + m2 * off * n
-                            anchor = "start" if m2 * n[0] >= 0 else "end"
+                        for off, sd in ((3.0, 1), (6.0, 1), (9.0, 1), (12.0, 1), (3.0, -1),
+                                        (6.0, -1), (9.0, -1), (15.0, 1), (12.0, -1),
+                                        (18.0, 1), (15.0, -1), (21.0, 1)):
+                            at = mid + sd * m2 * off * n
+                            anchor = "start" if sd * m2 * n[0] >= 0 else "end"
                             bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
                             if not any(bx.overlaps(o) for o in placed):
                                 break
@@ -227,7 +306,7 @@ def group_drawings(an, st):
                                                                           stage == nst)
                                           else [])))
             key = [(f"c-{lk}", LOOKS[lk].name, True) for lk in looks]
-            if lines and (stage is None or stage == (3 if g.kind in ("RRR", "RRP") else 2)):
+            if lines and (stage is None or stage == _closing_stage(g)):
                 key.append(("construction", "line of known direction", False))
             legend = [(s[4], "normal") for s in seq if stage is None or s[3] <= stage]
             legend += [(m, "normal") for m in g.moments]
@@ -240,12 +319,23 @@ def group_drawings(an, st):
                 if f.how == "reaction" and (stage is None or stage == nst):
                     legend.append((f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°",
                                    "bold"))
-            stem = f"group-{_slug(st.name)}-{g.index}" + (f"-{stage}" if stage else "")
+            if stage is None and any(f.how == "joint" for f in g.reactions):
+                legend.append(("the plate's links, joint by joint (joint-… drawings):",
+                               "normal"))
+                legend += [(f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°", "normal")
+                           for f in g.reactions if f.how == "joint"]
+            if g.kind == "joint":
+                corner = g.normals[0].at
+                stem = f"joint-{_slug(st.name)}-{g.index}-{_slug(corner)}"
+                title = f"Force polygon, joint {corner} (group {g.index})"
+            else:
+                stem = f"group-{_slug(st.name)}-{g.index}"
+                title = f"Force polygon, group {g.index}"
+            stem += f"-{stage}" if stage else ""
             cap = _stage_caption(g, stage, nst)
             out.append((stem, compose(
                 name=stem, kind="force", stage=stage,
-                title=f"Force polygon, group {g.index}" + (f" — Stage {stage}" if stage
-                                                           else ""),
+                title=title + (f" — Stage {stage}" if stage else ""),
                 subtitle=f"{g.title.split(': ', 1)[1]}; {st.name}",
                 desc=f"Force polygon of {g.title}",
                 content=[Group("polygon", "force-polygon", g.title,
@@ -267,13 +357,48 @@ def _stage_caption(g, stage, nst) -> str:
                  3: "Lines of known direction (along the links, or the guide normal) through "
                     "the last point and the start: where they meet closes the polygon.",
                  4: "The pin force between the two bodies is the diagonal."}
+    elif g.kind == "RRP, moving guide":
+        words = {1: f"The known forces on {g.bodies[0]}, then the normal component at its "
+                    f"outer pin from moments about the pin in the slot.",
+                 3: "Lines of known direction (along the link, and normal to the slot) through "
+                    "the last point and the start: where they meet closes the polygon.",
+                 4: "The light block passes the slot's force to the pin: the diagonal."}
+    elif g.kind == "RPR":
+        words = {1: f"The known forces on the slotted lever {g.bodies[0]}, then the slot's "
+                    f"force (normal to the slot, through the block) from moments about the "
+                    f"lever's pivot.",
+                 2: "The polygon closes on the pivot's force; the light block passes the "
+                    "slot's force back to the pin."}
+    elif g.kind == "RPP":
+        words = {1: f"The known forces on the yoke {g.bodies[0]}.",
+                 2: "Lines of known direction (normal to the slot, normal to the guide) "
+                    "through the last point and the start: where they meet closes the "
+                    "polygon; the guide couple from moments."}
+    elif g.kind == "triad":
+        words = {1: "Each binary link's known forces and its normal component, by moments "
+                    "about its corner on the plate; the plate's known forces.",
+                 2: "The third link's component along itself by moments of the whole group "
+                    "about the Assur point S (where the other two links' lines meet), then "
+                    "the second link's part.",
+                 3: "Lines along the other two links through the last point and the start: "
+                    "where they meet closes the polygon.",
+                 4: "Each corner's force on the plate is a diagonal: across its link's part."}
+    elif g.kind == "joint":
+        words = {1: "The forces on the pin known: the binary link's (found with the group), "
+                    "each plate link's normal component (by moments about its other end) "
+                    "and, for a plate link already met at another joint, its component along "
+                    "itself (from its balance along itself).",
+                 2: "Lines along the plate links not yet met, through the last point and the "
+                    "start: where they meet closes the joint's polygon (the last joint only "
+                    "checks that it closes)."}
     else:
         words = {1: "The known forces on the driver, including those passed on.",
                  2: "The polygon closes on the bearing (guide) force; the input effort "
                     "follows from moments."}
     if stage is None:
-        return ("Groups from the one furthest from the driver; each inertia force acts "
-                "offset by h = I_G α / (m a_G). " + " ".join(words[i] for i in sorted(words)))
+        return ("" if g.kind == "joint" else
+                "Groups from the one furthest from the driver; each inertia force acts "
+                "offset by h = I_G α / (m a_G). ") + " ".join(words[i] for i in sorted(words))
     return words.get(stage, "")
 
 
@@ -415,7 +540,7 @@ def write(an, outdir) -> list[Path]:
     outdir.mkdir(parents=True, exist_ok=True)
     paths = []
     for st in an.states:
-        for stem, d in group_drawings(an, st) + lever_drawings(an, st):
+        for stem, d in group_drawings(an, st) + joint_drawings(an, st) + lever_drawings(an, st):
             p = outdir / f"{stem}.svg"
             p.write_bytes(to_svg(d))
             paths.append(p)

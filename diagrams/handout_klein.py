@@ -32,6 +32,14 @@ def sections(sol, scale=None, paper=None) -> str:
                    f"</figure>\n<pre style='white-space: pre-wrap'>{esc(chr(10).join(lines))}</pre>\n</section>\n")
     if sol.scene.equivalents:
         from polygons.contacts import report_lines as equivalent_lines
-        out.append('<section id="equivalent">\n<h2>Equivalent linkage</h2>\n'
+        from . import rolling
+        from .svg import to_svg
+        figs = ""
+        for d in rolling.drawings(sol, None, paper):      # a wheel on a moving surface
+            svg = to_svg(d)
+            w, _ = svg_size(svg)
+            figs += (f'<figure class="diagram full">'
+                     f'{inline_svg(svg, d.name, "figure", min(w, WIDTH_MM), d.name)}</figure>\n')
+        out.append('<section id="equivalent">\n<h2>Equivalent linkage</h2>\n' + figs +
                    f"<pre style='white-space: pre-wrap'>{esc(chr(10).join(equivalent_lines(sol)))}</pre>\n</section>\n")
     return "".join(out)

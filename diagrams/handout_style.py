@@ -60,14 +60,14 @@ SUBSUP_CSS = (".subsup{display:inline-flex;flex-direction:column;vertical-align:
               ".subsup sub,.subsup sup{display:block;font-size:1em;vertical-align:baseline;"
               "line-height:1}.subsup sup{order:-1}")
 CSS = """
-@page { size: A4 portrait; margin: 15mm 15mm 18mm 15mm; }
+@page { size: A4 portrait; margin: 10mm 14mm 10mm 14mm; }
 html { background: #ffffff; }
-body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 10pt;
-       line-height: 1.38; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
+body { font-family: "DejaVu Serif", Georgia, "Times New Roman", serif; font-size: 9.5pt;
+       line-height: 1.32; color: #000; margin: 0 auto; max-width: 182mm; padding: 6mm 0; }
 h1, h2, h3, .figure-note, table, .formula, .explain h4, .badge, footer, .data dt {
        font-family: "DejaVu Sans", Verdana, Arial, sans-serif; }
 h1 { font-size: 17pt; line-height: 1.2; margin: 0 0 2mm 0; }
-h2 { font-size: 13pt; margin: 5mm 0 2mm 0; border-bottom: 0.4mm solid #000;
+h2 { font-size: 13pt; margin: 3.5mm 0 1.5mm 0; border-bottom: 0.4mm solid #000;
      break-after: avoid; page-break-after: avoid; }
 h3 { font-size: 11pt; margin: 4mm 0 1.5mm 0; break-after: avoid; page-break-after: avoid; }
 p { margin: 1mm 0 1.4mm 0; }
@@ -76,9 +76,9 @@ p { margin: 1mm 0 1.4mm 0; }
          font-weight: bold; margin-right: 1.5mm; }
 .statement { border-left: 1mm solid #999; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
 .statement p { margin: 0.8mm 0; }
-table { border-collapse: collapse; font-size: 9pt; margin: 2mm 0 3mm 0; }
+table { border-collapse: collapse; font-size: 9pt; margin: 1.5mm 0 2mm 0; }
 tr { break-inside: avoid; page-break-inside: avoid; }
-th, td { border-bottom: 0.2mm solid #999; padding: 0.8mm 2.2mm; text-align: left;
+th, td { border-bottom: 0.2mm solid #999; padding: 0.5mm 2mm; text-align: left;
          vertical-align: top; }
 th { border-bottom: 0.4mm solid #000; font-weight: bold; }
 table.data th { border-bottom: 0.2mm solid #999; }
@@ -86,12 +86,16 @@ td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space:
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
 li.step { margin: 0 0 4mm 0; }
-/* the steps in two columns (a step may continue in the next column; its figure never
-   breaks); the multicolumn list starts below a finished diagram floated to this page
-   (Chromium's columns and floats on one page otherwise overlap) */
-ol.steps.staged { column-count: 3; column-gap: 5mm; clear: both; }
-ol.steps.staged li.step { margin: 0 0 2.5mm 0; font-size: 9pt; line-height: 1.3; }
-ol.steps.staged figure { margin: 1mm 0 0 0; }
+/* the steps in three columns (a step may continue in the next column; its figure never
+   breaks).  A finished diagram that does not fit what is left of a page floats to the next
+   one and the next section fills the rest: its columns too, because the section is a table
+   (one cell).  Chromium loses the part of a multicolumn list that falls on the page of a
+   float it pushed on (and a list kept below the float leaves the gap empty); a table's
+   continuation on that page starts below the float, and its columns with it. */
+section.construction { display: table; table-layout: fixed; width: 100%; }
+ol.steps.staged { column-count: 3; column-gap: 5mm; }
+ol.steps.staged li.step { margin: 0 0 1.5mm 0; font-size: 8.5pt; line-height: 1.28; }
+ol.steps.staged figure { margin: 0.5mm 0 0 0; }
 ol.steps.staged figure.narrow { float: right; margin: 0 0 1mm 2mm; }
 ol.steps.staged figure.narrow figcaption { max-width: 40mm; }
 ol.steps.staged > aside.explain { margin: 0 0 2mm 0; }
@@ -101,37 +105,49 @@ li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weig
 .formula { font-size: 9.5pt; margin: 0.5mm 0 1mm 8mm; }
 .formula.symbolic { color: #333; }
 .explain { border: 0.3mm solid #000; padding: 1mm 2.5mm; margin: 1mm 0 2mm 0;
-           break-inside: avoid; page-break-inside: avoid; font-size: 8.5pt; line-height: 1.3; }
-.explain h4 { margin: 0 0.4em 0 0; font-size: 8.5pt; display: inline; }
+           break-inside: avoid; page-break-inside: avoid; font-size: 8pt; line-height: 1.28; }
+.explain h4 { margin: 0 0.4em 0 0; font-size: 8pt; display: inline; }
 .explain p { display: inline; }
 .explain p { margin: 0; }
 figure { margin: 1.5mm 0 1mm 8mm; break-inside: avoid; page-break-inside: avoid; }
 figure svg { display: block; max-width: 100%; height: auto; }
 figure svg.drawing-area { max-width: none; }
 figcaption, .figure-note { font-size: 8.5pt; color: #333; }
-section.plate { margin-top: 4mm; }
+section.plate { margin-top: 1.5mm; }
 section.plate div.sheet { float: left; width: 100%; break-inside: avoid;
-                          page-break-inside: avoid; margin-bottom: 3mm; }
+                          page-break-inside: avoid; margin-bottom: 0.5mm; }
 section.plate + section, #results { clear: none; }
 section.plate h2, section.plate h3 { break-after: avoid; page-break-after: avoid; }
 section.plate figure { margin: 0; }
 figure.centres { float: left; margin: 0 4mm 2mm 0; }
 section#centres { overflow: hidden; break-inside: avoid; }
-section.plate h3 { margin-top: 0; }
+section.plate h3 { margin: 0 0 0.5mm 0; }
+section.plate .figure-note { margin: 0.3mm 0 0.5mm 0; }
+p.note { margin: 0.5mm 0; }
 .note { font-size: 9.5pt; }
-.slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 2mm 0; }
+.slip { border-left: 1mm solid #000; padding: 0.5mm 0 0.5mm 3mm; margin: 1.5mm 0; }
 .about p { font-size: 8.5pt; color: #222; margin: 0.3mm 0 1mm 0; }
 .about h3 { font-size: 9pt; margin: 2mm 0 0.3mm 0; }
-footer { font-size: 8pt; color: #333; margin-top: 6mm; border-top: 0.2mm solid #999;
-         padding-top: 1.5mm; }
+footer { font-size: 8pt; color: #333; margin-top: 2mm; border-top: 0.2mm solid #999;
+         padding-top: 1mm; line-height: 1.2; }
 code { font-family: "DejaVu Sans Mono", monospace; font-size: 8.5pt; }
 .ok { font-weight: normal; }
 .off { font-weight: bold; }
 @media print {
   body { max-width: none; padding: 0; }
   .screen-only { display: none; }     /* a command line is no use on paper */
+  footer { display: none; }           /* the key's footer too: a command line (it took a
+                                         page of its own on three cases) */
 }
+@page { @bottom-right { content: "page " counter(page) " of " counter(pages);
+                        font: 8pt "DejaVu Sans", Verdana, Arial, sans-serif; color: #333; } }
 table.wide { width: 100%; }
+section.forces ul.construction { margin: 1mm 0; padding-left: 5mm; font-size: 8.5pt;
+                               column-count: 2; column-gap: 6mm; }
+section.forces ul.construction li { break-inside: avoid; }
+section.forces table { font-size: 8.5pt; }
+div.force-group h3, div.force-group ul.construction { break-after: avoid;
+                                                 page-break-after: avoid; }
 table.wide td.q { width: 30%; }
 @media screen {
   body { padding: 8mm 6mm; }

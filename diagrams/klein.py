@@ -1,10 +1,11 @@
-"""Klein's (or Ritterhaus's) construction drawn on the space diagram, stage by stage.
+"""Klein's (or Ritterhaus's, Bennett's) construction drawn on the space diagram, stage by stage.
 
 The figure comes from :func:`polygons.classic.klein.figure` (nothing is computed here but
 where things go): the crank circle, the crank, the rod and the line of stroke (stage 1); the
 perpendicular through O and the rod produced to M, the velocity triangle O A M (stage 2); the
 Klein circle on A with radius AM and the circle on AB as diameter cutting at K, L — or
-Ritterhaus's parallels M K and K Q (stage 3); the chord through Q to N on the line through O
+Ritterhaus's parallels M K and K Q, or Bennett's crank at right angles O A₁ with its rod
+A₁ B₁, the foot L₁, the point L and the perpendiculars L K, K Q (stage 3); the chord through Q to N on the line through O
 parallel to the stroke and the acceleration quadrilateral O A Q N (stage 4).  The sides of the
 triangle and of the quadrilateral take the polygons' component looks (given, relative,
 centripetal, tangential, resultant) with the key; the legend gives each side's length and the
@@ -29,7 +30,7 @@ PAD_MM = 24.0
 #: the stages and their titles
 STAGES = ("the crank, the rod and the line of stroke",
           "velocity: the triangle {O} {A} {M} (turned 90°, × ω)",
-          "the circles (Klein) / the parallels (Ritterhaus)",
+          "the circles (Klein) / the parallels (Ritterhaus) / the perpendiculars (Bennett)",
           "acceleration: the quadrilateral {O} {A} {Q} {N} (turned 180°, × ω²)")
 
 
@@ -37,8 +38,9 @@ def stage_title(f: Figure, stage: int) -> str:
     """The stage's title in the scene's letters."""
     text = STAGES[stage - 1]
     if stage == 3:
-        text = ("the Klein circle and the circle on the rod" if f.method == "klein" else
-                "the parallel through {M} and the perpendicular through {K}")
+        text = {"klein": "the Klein circle and the circle on the rod",
+                "ritterhaus": "the parallel through {M} and the perpendicular through {K}",
+                "bennett": "{A}{L} = {A1}{L1}, the perpendiculars {L}{K} and {K}{Q}"}[f.method]
     return text.format(**{k: v for k, v in f.names.items() if k != "inline"})
 
 
@@ -145,6 +147,16 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
                       Circle(P(c2), R2 * k, "construction-new" if last == 3 and stage else
                              "construction", cls="rod-circle")]
             labels += [x for x in ("K", "L") if x in f.points]
+        elif f.method == "bennett":
+            A1, B1, L1, Lp, K, Q = (P(x) for x in ("A1", "B1", "L1", "L", "K", "Q"))
+            items += [Segment(O, A1, "construction", cls="crank-right-angle"),
+                      Segment(A1, B1, "construction", cls="rod-right-angle"),
+                      Segment(O, L1, "construction", cls="perpendicular-OL1"),
+                      Segment(Lp, K, "construction", cls="perpendicular-LK"),
+                      Segment(K, Q, "construction", cls="perpendicular-KQ")]
+            for a, b in ((O, A1), (A1, B1), (O, L1), (Lp, K), (K, Q)):
+                placer.hard(a, b)
+            labels += ["A1", "B1", "L1", "L", "K", "Q"]
         else:
             K, Q = P("K"), P("Q")
             items += [Segment(M, K, "construction", cls="parallel-MK"),
@@ -230,7 +242,9 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
                    desc=f"{TITLES[f.method]} for {scene.title}, space scale {sc.statement}.",
                    content=groups, content_box=Box(box.x0, box.y0, box.x1, box.y1),
                    legend=legend, scale=sc, caption=caption, scale_statement=sc.statement,
-                   key=key, meta={"figure": f.method})
+                   key=key, meta={"figure": f.method,
+                                           "labels": tuple(sorted(set(scene.labels) | {
+                                               v for kk, v in nm.items() if kk != "inline"}))})
 
 
 def drawings(sol, f: Figure, scale=None, paper=None, stages: bool = True) -> list[Drawing]:

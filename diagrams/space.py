@@ -66,7 +66,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     check_handles("the space diagram", HANDLES, sol.scene.model, sol.scene.file)
     scene = sol.scene
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
-    bb = bounds(list(pos.values()))
+    from . import rolling           # a wheel on a moving surface (placed by no-slip)
+    bb = bounds(list(pos.values()) + rolling.extent(sol))
     extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
     if scale is None:
         scale = scales.choose("length", extent, [], paper, pad_mm=PAD_MM)
@@ -144,6 +145,14 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     equivalent = {q.link: q for q in scene.equivalents if q.kind in ("cam", "curved slot")}
     eq_notes = []
     for q in scene.equivalents:
+        if q.kind == "rolling" and (q.on or q.opposite):
+            b_, l_, n_ = rolling.space_items(
+                sol, q, lambda p: (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3)),
+                k, placer)
+            back += b_
+            links += l_
+            eq_notes += n_
+            continue
         if q.centre not in P or q.at not in P:
             continue
         c, at = P[q.centre], P[q.at]
@@ -157,6 +166,10 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             placer.hard(s1, s2, 1.0)
             back.append(Circle(_r(I), 0.6, "vertex", cls="instant-centre"))
             eq_notes.append((f"I: instant centre of wheel {q.at}", _add(I, e, -rad * 0.9)))
+            b_, n_ = rolling.rim_items(
+                sol, q, lambda p: (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3)))
+            back += b_
+            eq_notes += n_
             continue
         if q.kind == "bearing":   # the fixed circle the bar leans on
             back.append(Circle(_r(c), round(q.radius * k, 3), "link-thin", cls="cylinder"))

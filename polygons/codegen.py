@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -501,6 +501,7 @@ class _Code:
     index: dict             # ('pos'|'velocity'|'acceleration'|'omega'|'alpha'|..., key) -> idx
     fails: tuple
     source: str
+    namespace: dict = field(default=None, compare=False, repr=False)  # the names it calls
 
 
 
@@ -629,7 +630,8 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
     ns = dict(g.namespace)
     exec(compile(src, f"<polygons.compiled {_code_name(scene.title or scene.file)}>", "exec"),
          ns)
-    return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src)
+    return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src,
+                 g.namespace)
 
 
 _NAME = re.compile(r"\bv\d+\b")

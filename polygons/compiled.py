@@ -92,7 +92,8 @@ class Program:
     def solve(self, x: float | None = None) -> "CompiledSolution":
         """Every step's numbers at input ``x`` (θ in rad or s in m; default the scene's)."""
         try:
-            return CompiledSolution(self, self.fn(self.x0 if x is None else x, self.params))
+            return CompiledSolution(self, self.fn(self.x0 if x is None else float(x),
+                                                  self.params))
         except _Fail as f:
             raise self._error(self.code.fails[f.args[0]], x) from None
 
@@ -118,8 +119,10 @@ class Program:
                     for d in groups:
                         B, X = sol.position(d.b), sol.position(d.x)
                         sigma.update(zip(d.sigma_keys, (B[0], B[1], X[0], X[1])))
-                    prog = replace(prog, sigma=sigma,
-                                   params=_params(prog.code, prog.scene, sigma))
+                    params = _params(prog.code, prog.scene, sigma)
+                    if isinstance(prog.params, np.ndarray):     # the numba kernel's
+                        params = np.array(params, dtype=float)
+                    prog = replace(prog, sigma=sigma, params=params)
         return out
 
     def _error(self, why, x):
@@ -162,15 +165,29 @@ def _step_index(steps, diagram, number) -> int:
     raise ConstructionError(f"no step {diagram} {number}")
 
 
-def compile_scene(scene: Scene, plan: Plan | None = None) -> Program:
+def _kernel(code: _Code):
+    """``code`` compiled by numba (:func:`polygons.jit.record_kernel`), once per code; None
+    where numba is missing or cannot compile it."""
+    from . import jit
+    return jit.cached(code, jit.record_kernel)
+
+
+def compile_scene(scene: Scene, plan: Plan | None = None, jit: bool = False) -> Program:
     """Plan ``scene``, take its closures from the staged assembly, and compile (or fetch from
-    the cache, keyed on the plan's dyads and steps) the float function of its construction."""
+    the cache, keyed on the plan's dyads and steps) the float function of its construction.
+    With ``jit=True`` and numba installed the function is also compiled to machine code
+    (:mod:`polygons.jit`; a float64 array for the record, the same numbers to rounding)."""
     check_handles("the compiled evaluator", HANDLES, scene.model, scene.file)
     plan = plan or make_plan(scene)
     steps = construction(plan)
     sigma = _sigmas(plan)
     key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)), _slot_kinds(scene))
     code = _cached(key, lambda: generate(scene, plan, steps, sigma))
+    kernel = _kernel(code) if jit else None
+    if kernel is not None:
+        return Program(scene, plan, steps, sigma, code,
+                       np.array(_params(code, scene, sigma), dtype=float),
+                       float(driver_input(scene)), kernel)
     return Program(scene, plan, steps, sigma, code, _params(code, scene, sigma),
                    float(driver_input(scene)), code.fn)
 
@@ -273,7 +290,7 @@ class CompiledSolution:
 
     def position(self, label: str) -> tuple[float, float]:
         i, j = self.program.code.index[("pos", label)]
-        return self.record[i], self.record[j]
+        return float(self.record[i]), float(self.record[j])
 
     def velocity(self, label: str) -> tuple[float, float]:
         return self._pair("velocity", label)
@@ -285,17 +302,17 @@ class CompiledSolution:
         if label in self.program.scene.ground:
             return 0.0, 0.0
         i, j = self.program.code.index[(d, label)]
-        return self.record[i], self.record[j]
+        return float(self.record[i]), float(self.record[j])
 
     def omega(self, link: str) -> float:
-        return self.record[self.program.code.index[("omega", link)]]
+        return float(self.record[self.program.code.index[("omega", link)]])
 
     def alpha(self, link: str) -> float:
-        return self.record[self.program.code.index[("alpha", link)]]
+        return float(self.record[self.program.code.index[("alpha", link)]])
 
     @property
     def min_intersection_angle_deg(self) -> float | None:
-        return min_angle(self.program.code.layout, self.record)
+        return min_angle(self.program.code.layout, self._floats())
 
     @property
     def steps(self) -> tuple[Step, ...]:
@@ -309,25 +326,50 @@ class CompiledSolution:
 
     def _build_steps(self) -> tuple[Step, ...]:
         return steps_from_record(self.program.scene, self.program.steps,
-                                 self.program.code.layout, self.record)
+                                 self.program.code.layout, self._floats())
+
+    def _floats(self):
+        """The record as Python floats (the numba kernel's is a float64 array)."""
+        r = self.record
+        return r.tolist() if isinstance(r, np.ndarray) else r
 
 
 def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
                       ) -> tuple[Step, ...]:
     """The planned ``steps`` with their numbers read from the record ``r`` (``layout`` says
-    where) and their substituted text: what the staged and the compiled solutions show."""
+    where) and their substituted text: what the staged and the compiled solutions show.
+    Each record is made once (:func:`polygons.reader.record`, every field set at once); the
+    text is written from the planned step's words and the filled terms (:class:`_Filled`)."""
     numbers = [([(sym, _term(r, i), u) for sym, i, u in o.terms],
                 None if o.value is None else r[o.value]) for o in layout]
     zero = _rounding_noise(numbers, layout)
     done = []
     for step, o, (terms, value) in zip(steps, layout, numbers):
-        vals = {k: (r[o.fields[k][0]], r[o.fields[k][1]]) if k in o.fields else None
-                for k in _FIELDS}
-        filled = _copy(step, vals, value=None if value is None else zero(value, o.unit),
-                       unit=o.unit, angle_deg=None if o.angle is None else r[o.angle],
-                       terms=tuple(Term(sym, zero(v, u), u) for sym, v, u in terms))
-        done.append(_copy(filled, {}, substituted=substitute(filled, scene)))
+        f = o.fields
+        vals = dict(step.__dict__)
+        for k in _FIELDS:
+            vals[k] = (r[f[k][0]], r[f[k][1]]) if k in f else None
+        filled = tuple(record(Term, symbol=sym, value=zero(v, u), unit=u)
+                       for sym, v, u in terms)
+        vals.update(value=None if value is None else zero(value, o.unit), unit=o.unit,
+                    angle_deg=None if o.angle is None else r[o.angle], terms=filled,
+                    substituted=substitute(_Filled(step, filled), scene))
+        done.append(record(Step, **vals))
     return tuple(done)
+
+
+class _Filled:
+    """A planned step seen with its filled terms: what :func:`polygons.narrate.substitute`
+    reads (its words from the plan, its numbers from the terms), before the record is made."""
+
+    __slots__ = ("step", "terms")
+
+    def __init__(self, step: Step, terms: tuple):
+        self.step = step
+        self.terms = terms
+
+    def __getattr__(self, name):
+        return getattr(self.step, name)
 
 
 #: the units whose near-zero values are rounding noise of the construction

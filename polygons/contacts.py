@@ -24,6 +24,12 @@ scene is read, so every method sees ordinary links, sliders and yokes):
     face = "0 deg"          # the face's direction (fixed: the follower only translates)
                             # → a Scotch yoke: C slides in a slot ∥ the face, carried by F
 
+A wheel rolling on a straight surface ([rolling]) keeps the equivalent slider when the surface
+is fixed or carried by a plate that translates along itself (``on``); a cylinder between two
+such plates (``opposite``) has no lower-pair equivalent — its centre's place along the plates
+is the mean of theirs — and is solved from the no-slip condition at each contact
+(:func:`rolling`), outside the linkage.
+
 Refused in words where the curvature is not given (no ``centre`` / ``radius``), and for the
 force analysis (the equivalent link carries the contact force along the common normal only at
 the instant; forces are not modelled for contacts yet).  :data:`Equivalent` records what was
@@ -38,6 +44,7 @@ from dataclasses import dataclass
 from .errors import SceneError, UnsupportedError
 from .schema import Key, Table
 from .units import parse_quantity
+from .wheels import _moving_lines, _rim_lines, rolling, wheel_centres, wheel_point
 
 TABLES: tuple[Table, ...] = (
     Table("curved_slots", "A pin in a circular-arc slot, replaced at the instant by the "
@@ -66,11 +73,23 @@ TABLES: tuple[Table, ...] = (
             default=False),
         Key("face", "quantity", "the flat face's direction, CCW from +x (flat follower)",
             example='"0 deg"', dimension="angle"),
+        Key("arm", "link", "an oscillating flat-faced follower: the arm (a [links] entry, "
+                           "pivot label first, the pivot in [ground]) whose face runs along "
+                           "it; instead of face and [sliders.LABEL] (the label is then the "
+                           "arm's far end)", example='"QF"'),
+        Key("side", "string", "with arm: the side of the face, looking along the arm from "
+                              "its pivot, on which the cam lies: 'left' or 'right'",
+            example='"right"'),
+        Key("face_offset", "quantity", "with arm: the face's distance from the line through "
+                                       "the arm's ends, positive to the left",
+            example='"0 mm"', dimension="length", default="0 mm"),
     ), many=True),
-    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a fixed straight "
-                     "surface; the table's label is the wheel's centre. Its centre moves on "
-                     "the line ∥ the surface at the radius (the equivalent slider), its "
-                     "instant centre is the contact point and ω = −v/r.", (
+    Table("rolling", "A wheel (disc, cylinder) rolling without slipping on a straight "
+                     "surface, fixed or carried by a plate translating along it (`on`), or "
+                     "between two such plates (`opposite`); the table's label is the wheel's "
+                     "centre. On one surface its centre moves on the line ∥ the surface at "
+                     "the radius (the equivalent slider); on a fixed surface its instant "
+                     "centre is the contact point and ω = −v/r.", (
         Key("radius", "quantity", "the wheel's radius", example='"50 mm"', dimension="length",
             required=True),
         Key("through", "point", "a point of the surface", example='["0 mm", "-30 mm"]',
@@ -78,6 +97,31 @@ TABLES: tuple[Table, ...] = (
         Key("direction", "quantity", "the surface's direction, CCW from +x; the wheel is on "
                                      "its left", example='"0 deg"', dimension="angle",
             required=True),
+        Key("on", "label", "the surface moves: it is carried by the block (plate, rack) of "
+                           "this [sliders] point, translating on a fixed guide ∥ the "
+                           "surface; ω = (v_surface − v_W)/r along the direction (omitted: "
+                           "the frame)", example='"S"'),
+        Key("opposite", "label", "a cylinder between two plates: a second plate, the block "
+                                 "of this [sliders] point (guide ∥ the surface), touches the "
+                                 "wheel 2r from the first surface. The wheel is then placed "
+                                 "by the two plates (no link may join its centre): 'through' "
+                                 "is its contact with the first surface, v_W = (v₁ + v₂)/2, "
+                                 "ω = (v₁ − v₂)/2r", example='"T"'),
+        Key("rim", "table", "points of the wheel asked about, as books name them ('the "
+                            "point A at the top of the wheel'): label = its angle about the "
+                            "centre, CCW from +x, on the rim; or label = { angle = ..., "
+                            "distance = ... } off the rim (a hub, a spoke). v(A), a(A), "
+                            "dir_v(A) ... of these labels are then results",
+            example='{ A = "90 deg", B = { angle = "0 deg", distance = "30 mm" } }'),
+        Key("opposite_velocity", "quantity", "the second plate moved at a stated velocity, "
+                                             "as books give it ('the upper plate moves at "
+                                             "2 m/s to the left'): signed along `direction`; "
+                                             "`opposite` is then only the plate's name (not "
+                                             "a [sliders] block)", example='"-2 m/s"',
+            dimension="velocity"),
+        Key("opposite_acceleration", "quantity", "with opposite_velocity: the second plate's "
+                                                 "acceleration, signed along `direction`",
+            example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2"),
     ), many=True),
     Table("bearing", "A bar bearing on a fixed circle (a bar leaning on a half-cylinder): "
                      "the bar stays tangent, the contact slides along it. The table's label "
@@ -95,6 +139,9 @@ TABLES: tuple[Table, ...] = (
 
 #: the scene tables this module rewrites
 NAMES = ("curved_slots", "cams", "rolling", "bearing")
+#: the table each kind of :class:`Equivalent` is stated in
+TABLE_OF = {"curved slot": "curved_slots", "cam": "cams", "flat-faced cam": "cams",
+            "rolling": "rolling", "bearing": "bearing"}
 #: the force tables a scene with contacts cannot carry yet
 FORCE_TABLES = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                 "force_answers", "flywheel", "efficiency")
@@ -116,9 +163,33 @@ class Equivalent:
     roller: float | None = None
     face: float | None = None       # a flat face's / rolling surface's angle; bearing: side
     surface: tuple | None = None    # a point of a rolling surface
+    on: str | None = None           # rolling: the slider carrying the surface (None: frame)
+    opposite: str | None = None     # rolling: the slider carrying a second plate
+    #: rolling: the second plate's stated (velocity, acceleration) along ``face`` when it is
+    #: not a block of the linkage (books: "the upper plate moves at 2 m/s")
+    opposite_motion: tuple[float, float] | None = None
+    #: rolling: the wheel's named points, (label, angle CCW from +x about the centre, distance)
+    rim: tuple[tuple[str, float, float], ...] = ()
+    #: an oscillating flat-faced follower's arm (its face along it; ``face`` then ±1: the
+    #: cam's side, left / right)
+    arm: str | None = None
 
     @property
     def words(self) -> str:
+        if self.kind == "rolling" and self.opposite:
+            first = f"the plate of {self.on}" if self.on else "the fixed surface"
+            return (f"the cylinder {self.at} (radius {self.radius * 1000:.6g} mm) rolls "
+                    f"without slipping between {first} and the plate of {self.opposite} "
+                    f"(at {math.degrees(self.face):.6g}°): the two no-slip conditions give "
+                    f"v_{self.at} = (v₁ + v₂)/2 and ω = (v₁ − v₂)/2r along the plates; its "
+                    f"instant centre lies on the line of the contact points")
+        if self.kind == "rolling" and self.on:
+            return (f"the wheel {self.at} (radius {self.radius * 1000:.6g} mm) rolls without "
+                    f"slipping on the plate of {self.on} (surface at "
+                    f"{math.degrees(self.face):.6g}°, translating along itself): its centre "
+                    f"moves on the line ∥ the surface {self.radius * 1000:.6g} mm from it "
+                    f"(the equivalent slider), ω = (v_{self.on} − v_{self.at})/r; its instant "
+                    f"centre relative to the plate is the contact point")
         if self.kind == "rolling":
             return (f"the wheel {self.at} (radius {self.radius * 1000:.6g} mm) rolls without "
                     f"slipping on the fixed surface at {math.degrees(self.face):.6g}°: its "
@@ -137,6 +208,11 @@ class Equivalent:
                     f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) "
                     f"moves at this instant as the equivalent link {self.link} = "
                     f"{self.length * 1000:.6g} mm")
+        if self.arm is not None:
+            return (f"the flat face of the arm {self.arm} on the cam arc (centre of curvature "
+                    f"{self.centre}, radius {self.radius * 1000:.6g} mm) moves at this instant "
+                    f"as the crank and slotted lever: {self.centre} slides in a slot of "
+                    f"{self.arm} ∥ the face, {self.radius * 1000:.6g} mm from it")
         return (f"the flat face of {self.at} (at {math.degrees(self.face):.6g}°) on the cam arc "
                 f"(centre of curvature {self.centre}, radius {self.radius * 1000:.6g} mm) moves "
                 f"at this instant as a Scotch yoke: {self.centre} slides in a slot ∥ the face "
@@ -189,7 +265,7 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
                                f"curved slot, [{force[0]}] with [cams]/[curved_slots]): its "
                                f"equivalent linkage gives the velocities and accelerations "
                                f"only", file=file, where=force[0])
-    links = dict(data.get("links", {})) if isinstance(data.get("links"), dict) else None
+    links = dict(data.get("links", {})) if isinstance(data.get("links", {}), dict) else None
     if links is None:
         raise SceneError("[links] must be a table", file=file, where="links")
     sliders = dict(data.get("sliders", {})) if isinstance(data.get("sliders", {}), dict) \
@@ -215,6 +291,16 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
             if follower not in (None, "roller", "flat"):
                 raise SceneError(f"follower must be 'roller' or 'flat', got {follower!r}",
                                  file=file, where=f"{where}.follower")
+            if follower == "flat" and "arm" in table:
+                out.append(_flat_arm(table, label, centre, radius, links, slots, data, file,
+                                     where))
+                continue
+            if any(k in table for k in ("side", "face_offset")):
+                raise SceneError("side and face_offset are for an oscillating flat-faced "
+                                 "follower (arm = \"QF\")", file=file, where=where)
+            if "arm" in table:
+                raise SceneError("arm is for a flat-faced follower (follower = \"flat\")",
+                                 file=file, where=f"{where}.arm")
             if follower == "flat":
                 if "face" not in table:
                     raise SceneError("a flat-faced follower needs face = \"<angle>\" (the "
@@ -267,9 +353,50 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
             out.append(Equivalent("curved slot" if name == "curved_slots" else "cam", label,
                                   centre, link, length, radius, roller))
     data["links"] = links
+    if slots:
+        data["slots"] = slots
     if isinstance(sliders, dict) and sliders:
         data["sliders"] = sliders
     return data, tuple(out)
+
+
+def _flat_arm(table, label, centre, radius, links, slots, data, file, where) -> "Equivalent":
+    """[cams.F] follower = "flat", arm = "QF": a flat face along an arm pivoted at Q.  The cam's
+    centre of curvature C stays at the radius from the face, so at the instant C moves as a
+    pin in a slot of the arm ∥ the face, offset by face_offset ± radius (the cam's side): the
+    equivalent is the crank and slotted lever (RPR with an offset slot)."""
+    if "face" in table:
+        raise SceneError("an arm's face runs along the arm: give arm or face, not both",
+                         file=file, where=f"{where}.face")
+    if "roller" in table or table.get("concave"):
+        raise SceneError("roller and concave are for a roller follower", file=file, where=where)
+    arm = table["arm"]
+    if not isinstance(arm, str) or arm not in links:
+        raise SceneError(f"arm must be a link of [links] (the follower's arm, pivot first), got "
+                         f"{arm!r}", file=file, where=f"{where}.arm")
+    ends = [(arm[:i], arm[i:]) for i in range(1, len(arm))]
+    ground = data.get("ground", {}) if isinstance(data.get("ground"), dict) else {}
+    ends = [(a, b) for a, b in ends if a in ground and b == label]
+    if not ends:
+        raise SceneError(f"the arm {arm} must run from a fixed pivot in [ground] to the "
+                         f"follower's label {label}", file=file, where=f"{where}.arm")
+    side = table.get("side")
+    if side not in ("left", "right"):
+        raise SceneError(f"side must be 'left' or 'right' (where the cam lies, looking along "
+                         f"the arm from its pivot), got {side!r}", file=file,
+                         where=f"{where}.side")
+    if slots is None or centre in slots:
+        raise SceneError(f"{centre} is already a pin in [slots]", file=file, where=where)
+    e = _q(table.get("face_offset", "0 mm"), "length", file, f"{where}.face_offset")
+    off = e + (radius if side == "left" else -radius)
+    coincident = centre + "1"
+    n = 1
+    while coincident in str(data):         # a label the scene does not use
+        n += 1
+        coincident = f"{centre}{n}"
+    slots[centre] = {"lever": arm, "coincident": coincident, "offset": f"{off!r} m"}
+    return Equivalent("flat-faced cam", label, centre, None, None, radius, arm=arm,
+                      face=1.0 if side == "left" else -1.0)
 
 
 def _check_keys(table, name, label, file):
@@ -305,10 +432,49 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
         x, y = (_q(v, "length", file, f"{where}.through") for v in pt)
         ang = _q(table["direction"], "angle", file, f"{where}.direction")
         nx, ny = -math.sin(ang), math.cos(ang)
-        sliders[label] = {"through": [f"{x + radius * nx!r} m", f"{y + radius * ny!r} m"],
-                          "direction": f"{math.degrees(ang)!r} deg"}
+        motion = None
+        if "opposite_velocity" in table:
+            name_ = table.get("opposite")
+            if not (isinstance(name_, str) and name_[:1].isupper() and name_.isidentifier()):
+                raise SceneError("opposite_velocity moves the second plate: name it with a "
+                                 "label, opposite = \"T\" (a capital letter, then letters or "
+                                 "digits)", file=file, where=f"{where}.opposite")
+            motion = (_q(table["opposite_velocity"], "velocity", file,
+                         f"{where}.opposite_velocity"),
+                      _q(table.get("opposite_acceleration", "0 m/s^2"), "acceleration", file,
+                         f"{where}.opposite_acceleration"))
+        elif "opposite_acceleration" in table:
+            raise SceneError("opposite_acceleration needs opposite_velocity (the second "
+                             "plate's stated motion)", file=file,
+                             where=f"{where}.opposite_acceleration")
+        plates = {k: (table["opposite"] if k == "opposite" and motion is not None
+                      else _plate(table, k, label, ang, sliders, file, where))
+                  for k in ("on", "opposite")}
+        if motion is not None and (plates["opposite"] == label
+                                   or (isinstance(sliders, dict) and plates["opposite"] in sliders)):
+            raise SceneError(f"opposite = {plates['opposite']!r} with opposite_velocity names "
+                             f"a plate moved at a stated rate: a label of its own, not the "
+                             f"wheel's or a [sliders] block's", file=file,
+                             where=f"{where}.opposite")
+        if plates["on"] is not None and plates["on"] == plates["opposite"]:
+            raise SceneError("on and opposite must be two different plates", file=file,
+                             where=f"{where}.opposite")
+        if plates["opposite"] is None:
+            sliders[label] = {"through": [f"{x + radius * nx!r} m", f"{y + radius * ny!r} m"],
+                              "direction": f"{math.degrees(ang)!r} deg"}
+        else:
+            joined = [k for k in links if isinstance(k, str) and label in _ends(k)]
+            pts = data.get("points", {})
+            if joined or (isinstance(pts, dict) and label in pts):
+                what = f"the link {joined[0]}" if joined else "[points]"
+                raise SceneError(f"the cylinder {label} between two plates is placed by them "
+                                 f"(no slip at both contacts); it cannot also be in {what}",
+                                 file=file, where=where)
         return Equivalent("rolling", label, label, None, None, radius,
-                          face=ang, surface=(x, y))
+                          face=ang, surface=(x, y), on=plates["on"],
+                          opposite=plates["opposite"], opposite_motion=motion,
+                          rim=_rim(table.get("rim", {}), label, radius, data, sliders, file,
+                                   where))
     bar, side = table["bar"], table["side"]
     if not isinstance(bar, str) or bar not in links:
         raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
@@ -333,6 +499,79 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                       face=1.0 if side == "left" else -1.0, surface=None)
 
 
+def _rim(raw, wheel, radius, data, sliders, file, where) -> tuple:
+    """[rolling.W] rim = { A = "90 deg", B = { angle = "0 deg", distance = "30 mm" } }: the
+    wheel's named points (angle CCW from +x about the centre; on the rim unless a distance
+    is given), checked: labels of their own."""
+    if not isinstance(raw, dict):
+        raise SceneError('rim must be a table: rim = { A = "90 deg" }', file=file,
+                         where=f"{where}.rim")
+    used = set()
+    for table in ("ground", "drawn", "points", "slots", "crossing"):
+        t = data.get(table)
+        if isinstance(t, dict):
+            used |= set(t)
+    used |= set(sliders) if isinstance(sliders, dict) else set()
+    for name in data.get("links", {}) if isinstance(data.get("links", {}), dict) else ():
+        if isinstance(name, str):
+            used |= set(_ends(name))
+    out = []
+    for label, spec in raw.items():
+        at = f"{where}.rim.{label}"
+        if not (isinstance(label, str) and label[:1].isupper() and label.isidentifier()):
+            raise SceneError(f"a rim point's label must be a capital letter with letters or "
+                             f"digits, got {label!r}", file=file, where=at)
+        if label == wheel or label in used:
+            raise SceneError(f"{label} is already a point of the mechanism: a wheel's point "
+                             f"needs a label of its own", file=file, where=at)
+        if isinstance(spec, dict):
+            extra = set(spec) - {"angle", "distance"}
+            if extra or "angle" not in spec:
+                raise SceneError("a wheel point off the rim is { angle = \"30 deg\", "
+                                 "distance = \"20 mm\" }", file=file, where=at)
+            angle = _q(spec["angle"], "angle", file, f"{at}.angle")
+            dist = _q(spec.get("distance", f"{radius!r} m"), "length", file, f"{at}.distance")
+            if not (0 <= dist <= 1e3 * radius and math.isfinite(dist)):
+                raise SceneError("distance must be zero or positive, at most 1000 radii",
+                                 file=file, where=f"{at}.distance")
+        else:
+            angle, dist = _q(spec, "angle", file, at), radius
+        out.append((label, angle, dist))
+    return tuple(out)
+
+
+def _ends(link: str) -> tuple[str, ...]:
+    """The labels a link's name may join (AW → A, W; O2A → O2, A): every split point."""
+    return tuple(link[:i] for i in range(1, len(link))) + \
+        tuple(link[i:] for i in range(1, len(link)))
+
+
+def _plate(table, key, label, ang, sliders, file, where):
+    """The [sliders] point carrying a moving surface (``on``/``opposite``), checked: a block
+    on a fixed straight guide parallel to the surface."""
+    name = table.get(key)
+    if name is None:
+        return None
+    if not isinstance(name, str) or not isinstance(sliders, dict) or name not in sliders:
+        raise SceneError(f"{key} must name a [sliders] point (the block carrying the plate), "
+                         f"got {name!r}", file=file, where=f"{where}.{key}")
+    if name == label:
+        raise SceneError(f"{key} must be the plate's block, not the wheel's centre", file=file,
+                         where=f"{where}.{key}")
+    g = sliders[name]
+    if not isinstance(g, dict) or "pin" in g or "slot" in g or "direction" not in g:
+        raise SceneError(f"the plate {name} must be a block on a fixed straight guide "
+                         f"([sliders.{name}] through, direction)", file=file,
+                         where=f"{where}.{key}")
+    d = _q(g["direction"], "angle", file, f"sliders.{name}.direction")
+    if abs(math.sin(d - ang)) > 1e-9:
+        raise SceneError(f"the plate {name} must slide along the surface (its guide at "
+                         f"{math.degrees(d):.6g}°, the surface at {math.degrees(ang):.6g}°): a "
+                         f"plate moving across the surface would not keep touching the wheel",
+                         file=file, where=f"{where}.{key}")
+    return name
+
+
 def higher(sol, q: Equivalent) -> dict | None:
     """The higher pair's own numbers read off the solved equivalent linkage: a rolling wheel's
     ω, α, instant centre (the contact) and the acceleration of its point there; a bar on a
@@ -340,18 +579,7 @@ def higher(sol, q: Equivalent) -> dict | None:
     first end meets the normal at the contact) and the contact's sliding along the bar."""
     pts = sol.points
     if q.kind == "rolling":
-        p = pts.get(q.at)
-        if p is None or p.velocity is None:
-            return None
-        e = (math.cos(q.face), math.sin(q.face))
-        n = (-e[1], e[0])
-        w = -(p.velocity[0] * e[0] + p.velocity[1] * e[1]) / q.radius
-        out = {"omega": w, "instant_centre": (p.position[0] - q.radius * n[0],
-                                              p.position[1] - q.radius * n[1])}
-        if p.acceleration is not None:
-            out["alpha"] = -(p.acceleration[0] * e[0] + p.acceleration[1] * e[1]) / q.radius
-            out["contact_acceleration"] = (q.radius * w * w * n[0], q.radius * w * w * n[1])
-        return out
+        return rolling(sol, q)
     if q.kind == "bearing":
         link = sol.links.get(q.link)
         if link is None or link.omega is None:
@@ -394,7 +622,9 @@ def report_lines(sol) -> list[str]:
         mm = lambda p: f"({p[0] * 1000:.6g}, {p[1] * 1000:.6g}) mm"   # noqa: E731
         def sense(x):
             return "CCW" if x > 0 else ("CW" if x < 0 else "")
-        if q.kind == "rolling":
+        if q.kind == "rolling" and (q.on or q.opposite):
+            lines += _moving_lines(q, h, mm, sense)
+        elif q.kind == "rolling":
             lines.append(f"    wheel {q.at}: ω = v/r = {abs(h['omega']):.6g} rad/s "
                          f"{sense(h['omega'])}" + (f", α = a/r = {abs(h['alpha']):.6g} rad/s² "
                                                     f"{sense(h['alpha'])}" if 'alpha' in h
@@ -404,13 +634,14 @@ def report_lines(sol) -> list[str]:
                              f"; the wheel's point there accelerates at r·ω² = "
                              f"{math.hypot(*h['contact_acceleration']):.6g} m/s² towards "
                              f"{q.at}" if "contact_acceleration" in h else ""))
-        else:
+        elif q.kind != "rolling":
             lines.append(f"    contact with the bar at {mm(h['contact'])}"
                          + (f", sliding along the bar at {abs(h['sliding_velocity']):.6g} m/s"
                             if "sliding_velocity" in h else ""))
             if "instant_centre" in h:
                 lines.append(f"    instant centre of {q.link}: {mm(h['instant_centre'])} "
                              f"(on the normal to the bar at the contact, through {q.at})")
+        lines += _rim_lines(sol, q, mm)
     return lines
 
 
@@ -419,7 +650,18 @@ def to_list(sol) -> list[dict]:
     for q in getattr(sol.scene, "equivalents", ()):
         d = {"kind": q.kind, "at": q.at, "centre": q.centre, "link": q.link,
              "length_m": q.length, "radius_m": q.radius, "roller_m": q.roller,
-             "face_rad": q.face}
+             "face_rad": q.face, "on": q.on, "opposite": q.opposite}
+        if q.rim:
+            d["rim"] = []
+            for label, angle, dist in q.rim:
+                got = wheel_point(sol, q, label)
+                d["rim"].append({"label": label, "angle_rad": angle, "distance_m": dist,
+                                 **({"position": list(got[0]), "velocity": list(got[1]),
+                                     "acceleration": list(got[2]) if got[2] else None}
+                                    if got else {})})
+        if q.opposite_motion is not None:
+            d["opposite_motion"] = {"velocity": q.opposite_motion[0],
+                                    "acceleration": q.opposite_motion[1]}
         h = higher(sol, q)
         if h:
             d["higher_pair"] = {k: (list(v) if isinstance(v, tuple) else v)
@@ -428,4 +670,5 @@ def to_list(sol) -> list[dict]:
     return out
 
 
-__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list"]
+__all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list", "rolling",
+           "wheel_centres", "wheel_point"]

@@ -18,7 +18,11 @@ them with their own flags (``--steps``, ``--scale`` ...).
     space_scale = "20 mm"
     paper = "A4"                        # A5 or A4
     stages = false                      # only the finished diagrams
-    klein = true                        # also Klein's construction (or "ritterhaus")
+    klein = true                        # also Klein's construction (or "ritterhaus", "bennett")
+
+    [handout]
+    force_polygons = true               # the force polygons per Assur group in the handout
+    zhukovsky = true                    # and Zhukovsky's lever
 """
 from __future__ import annotations
 
@@ -37,7 +41,7 @@ MAX_STEPS = 10_000_000
 SCALE_QUANTITY = {"space": "length", "velocity": "velocity", "acceleration": "acceleration"}
 PAPERS = ("A5", "A4")
 #: the slider-crank constructions [diagram] klein names (polygons.classic.klein.METHODS)
-KLEIN_METHODS = ("klein", "ritterhaus")
+KLEIN_METHODS = ("klein", "ritterhaus", "bennett")
 
 TABLES: tuple[Table, ...] = (
     Table("sweep", "How `polygons sweep` solves and plots a full input revolution (its flags "
@@ -72,7 +76,8 @@ TABLES: tuple[Table, ...] = (
                               "(velocity-1.svg ...)", example="false", default=True),
         Key("klein", "bool-or-string", "a slider-crank's classic construction, printed by "
                                          "`solve` and drawn by `draw` (klein.svg): true or 'klein' (Klein's, in-line "
-                               "or offset), 'ritterhaus' (in-line only); a crank turning "
+                               "or offset), 'ritterhaus' or 'bennett' (in-line only); a crank "
+                               "turning "
                                "uniformly", example="true"),
     )),
     Table("centres", "How `polygons centres` numbers the links of the circle diagram (by "
@@ -84,8 +89,19 @@ TABLES: tuple[Table, ...] = (
                                 "not named take the numbers left, in the default order",
             example='{ O2P2 = 2, "block P2" = 3, O4P4 = 4 }'),
     )),
-    Table("handout", "Reserved for handout options; it accepts no key yet (any key is "
-                     "refused, naming it).", ()),
+    Table("handout", "What `polygons handout` adds to the answer key (a scene with force "
+                     "tables); any other key is refused, naming it.", (
+        Key("force_polygons", "bool", "a section with the force polygons per Assur group: "
+                                      "each group's finished polygon, the construction in "
+                                      "words and its reactions and input effort (the "
+                                      "numbers `polygons forces` prints); refused in one "
+                                      "line when the construction does not handle the "
+                                      "mechanism", example="true", default=False),
+        Key("zhukovsky", "bool", "a section with Zhukovsky's lever: the finished lever, its "
+                                 "forces and moments about the pole and the balancing "
+                                 "effort (equal to the virtual work's)", example="true",
+            default=False),
+    )),
 )
 
 _KEYS = {t.name: tuple(k.name for k in t.keys) for t in TABLES}
@@ -109,7 +125,7 @@ class DiagramOptions:
     scales: Mapping[str, float] = field(default_factory=lambda: MappingProxyType({}))
     paper: str | None = None
     stages: bool | None = None
-    klein: str | None = None       # 'klein' | 'ritterhaus' | None (not asked)
+    klein: str | None = None       # 'klein' | 'ritterhaus' | 'bennett' | None
 
 
 @dataclass(frozen=True)
@@ -121,10 +137,19 @@ class CentresOptions:
 
 
 @dataclass(frozen=True)
+class HandoutOptions:
+    """``[handout]``: the force methods the answer key adds (:mod:`diagrams.handout_forces`)."""
+
+    force_polygons: bool = False
+    zhukovsky: bool = False
+
+
+@dataclass(frozen=True)
 class Options:
     sweep: SweepOptions = SweepOptions()
     diagram: DiagramOptions = DiagramOptions()
     centres: CentresOptions = CentresOptions()
+    handout: HandoutOptions = HandoutOptions()
 
 
 #: the options of a scene without [sweep], [diagram] or [handout]
@@ -227,12 +252,14 @@ def parse_options(data: Mapping, file: str) -> Options:
     elif klein is False:
         klein = None
     elif klein is not None and klein not in KLEIN_METHODS:
-        raise SceneError(f"klein must be true, false, 'klein' or 'ritterhaus', got "
+        raise SceneError(f"klein must be true, false, 'klein', 'ritterhaus' or 'bennett', got "
                          f"{show(klein)}", file=file, where="diagram.klein")
     diagram = DiagramOptions(MappingProxyType(scales), paper,
                              _bool(dg, "stages", "diagram", file), klein)
-    _table(data, "handout", file)
-    return Options(sweep, diagram, _centres(_table(data, "centres", file), file))
+    ho = _table(data, "handout", file)
+    handout = HandoutOptions(bool(_bool(ho, "force_polygons", "handout", file)),
+                             bool(_bool(ho, "zhukovsky", "handout", file)))
+    return Options(sweep, diagram, _centres(_table(data, "centres", file), file), handout)
 
 
 #: the largest number a link may be given in [centres] numbers
@@ -260,5 +287,6 @@ def _centres(table, file: str) -> CentresOptions:
     return CentresOptions(MappingProxyType(dict(numbers)))
 
 
-__all__ = ["TABLES", "Options", "SweepOptions", "DiagramOptions", "CentresOptions", "parse_options",
+__all__ = ["TABLES", "Options", "SweepOptions", "DiagramOptions", "CentresOptions",
+           "HandoutOptions", "parse_options",
            "scale_per_cm", "labels", "MAX_STEPS"]

@@ -87,6 +87,22 @@ def _place(plan: Plan, scene: Scene, pos, chosen, sigmas, size, x_in) -> None:
         if margin is not None and not margin > 0:
             raise dyad_failure(scene, dyad, pos)
         pos.update(pts)
+        _check_words(pts, scene, pos)
+
+
+def _check_words(pts, scene: Scene, pos) -> None:
+    """Points with one position: [assembly] words about them must hold there (refused, not
+    silently passed over, when the scene's words describe another configuration)."""
+    for x, xy in pts.items():
+        branch = scene.assembly.get(x)
+        if branch is None or branch.relation == "near" or np.ndim(xy) != 1 \
+                or any(r not in pos for r in branch.ref):
+            continue
+        if not satisfies(branch, xy, pos, scene):
+            raise BranchError(f"{x} has one position here, {_fmt(xy)}, and it is not "
+                              f"'{branch.text}': the [assembly] words describe another "
+                              f"configuration (check the data, or leave the words out)",
+                              file=scene.file, where=f"assembly.{x}")
 
 
 def dyad_failure(scene: Scene, d, pos) -> AssemblyError:

@@ -13,6 +13,10 @@
     arm(O,P,C)  perpendicular distance from O to the line PC         (m)
     x(C), y(C)  coordinates                                         (m)
     dir_v(C), dir_a(C)   direction of v_C / a_C, degrees CCW from +x in [0, 360)
+    omega(W), alpha(W)   a rolling wheel's ([rolling.W]) ω and α, signed, CCW positive;
+                every point function also of a wheel's named points ([rolling.W] rim) and
+                of a cylinder's centre between two plates (not points of the polygons:
+                v_P = v_W + ω k × WP, a_P = a_W + α k × WP − ω² WP, contacts.wheel_point)
 
 Used by the answers table, the tests and ``polygons check``.
 """
@@ -22,8 +26,9 @@ import math
 
 import numpy as np
 
+from . import contacts
 from .errors import SceneError, UnknownLabelError, show, suggest
-from .evaluate import Solution, link_ends
+from .evaluate import PointResult, Solution, link_ends
 # FUNCTIONS is read by polygons.forces as quantities.FUNCTIONS
 from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse  # noqa: F401
 
@@ -35,6 +40,19 @@ def dimension_of_quantity(expr: str) -> str:
             "dir_a": "angle", "angle": "angle", "arm": "length"}.get(fn, "velocity" if fn == "vs" else "acceleration")
 
 
+def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float]:
+    """(diagram, length on that polygon in SI) of the line ``expr`` is read from: |ω|·length
+    (|α|·length) for a link's — a rolling wheel's: its radius — and |value| otherwise."""
+    fn, args = _parse(expr)
+    if fn in ("omega", "alpha"):
+        lr = sol.links.get(args[0])
+        length = lr.length if lr is not None else next(
+            e.radius for e in getattr(sol.scene, "equivalents", ())
+            if e.kind == "rolling" and e.at == args[0])
+        return ("velocity" if fn == "omega" else "acceleration"), abs(value) * length
+    return ("velocity" if fn in ("v", "vs") else "acceleration"), abs(value)
+
+
 def quantity(sol: Solution, expr: str) -> float:
     """The SI value of ``expr`` (see module docstring) in solution ``sol``."""
     fn, args = _parse(expr)
@@ -42,6 +60,11 @@ def quantity(sol: Solution, expr: str) -> float:
     scene = sol.scene
 
     def point(label):
+        if label not in sol.points:         # a wheel's centre between plates, a rim point
+            for e in getattr(scene, "equivalents", ()):
+                got = contacts.wheel_point(sol, e, label) if e.kind == "rolling" else None
+                if got is not None:
+                    return PointResult(*got)
         if label not in sol.points:
             raise UnknownLabelError(f"unknown point {show(label)} in {show(expr)}: "
                                     f"{suggest(label, sol.points)}", file=scene.file)
@@ -55,6 +78,8 @@ def quantity(sol: Solution, expr: str) -> float:
         return np.array(value)
 
     def link(name):
+        if name not in sol.links and wheel(name) is not None:
+            return None
         if name not in sol.links:
             raise UnknownLabelError(f"unknown link {name!r} in {expr!r}: "
                                     f"{suggest(name, sol.links)}", file=scene.file)
@@ -67,6 +92,22 @@ def quantity(sol: Solution, expr: str) -> float:
         raise SceneError(f"{x} and {y} are not on one link, so {expr!r} has no "
                          f"centripetal/tangential split", file=scene.file)
 
+    def wheel(label):
+        """The [rolling] entry whose wheel is ``label`` (None if there is none)."""
+        return next((e for e in getattr(scene, "equivalents", ())
+                     if e.kind == "rolling" and e.at == label), None)
+
+    def wheel_value(label, what):
+        """ω / α of the wheel (ω = (v₁ − v_W)/r; between plates (v₁ − v₂)/2r:
+        :func:`contacts.rolling`)."""
+        h = contacts.rolling(sol, wheel(label))
+        key = what
+        if h is None or key not in h:
+            need = "velocity" if what == "omega" else "acceleration"
+            raise SceneError(f"{expr!r} needs the {need} polygon, which this scene does not solve "
+                             f"(solve = {list(scene.solve)})", file=scene.file)
+        return float(h[key])
+
     if fn in ("v", "a"):
         kind = "velocity" if fn == "v" else "acceleration"
         value = vec(p, kind) - (vec(q, kind) if q else 0.0)
@@ -77,10 +118,9 @@ def quantity(sol: Solution, expr: str) -> float:
         if fn == "an":
             return lr.omega * lr.omega * r
         return abs(lr.alpha) * r
-    if fn == "omega":
-        return link(p).omega
-    if fn == "alpha":
-        return link(p).alpha
+    if fn in ("omega", "alpha"):
+        lr = link(p)
+        return getattr(lr, fn) if lr is not None else wheel_value(p, fn)
     if fn in ("vs", "as", "cor"):
         if q is not None:      # vs(P,P2): P sliding relative to the lever's point P2 under it
             pair = scene.model.under.get(q)

@@ -376,8 +376,13 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             known.add(label)
             sliders[label] = Guide(through, angle, pin, slot_angle)
         else:
-            if label in slots:      # the pin of a slot driven along a fixed guide (a collar on
-                known.add(r.label(label, where))        # a screw moving a slotted arm)
+            drv_raw = data.get("driver")
+            if label in slots or (isinstance(drv_raw, dict) and drv_raw.get("slider") == label
+                                  and label not in known):
+                # the pin of a slot driven along a fixed guide (a collar on a screw moving a
+                # slotted arm), or a lone block driven along its guide (a plate under a
+                # rolling cylinder: [rolling] on / opposite)
+                known.add(r.label(label, where))
             else:
                 need_label(r.label(label, where), where)
             sliders[label] = Guide(through, angle)
@@ -499,7 +504,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                          where="answers")
     answers = _parse_answers(answers_raw, r, default_tol)
 
-    check_proportions(file, ground, drawn, links, sliders, points, assembly, driver)
+    check_proportions(file, ground, drawn, links, sliders, points, assembly, driver,
+                      contacts={f"{contacts.TABLE_OF[q.kind]}.{q.at}.radius": q.radius
+                                for q in equivalents})
 
     # the joint tables read once into bodies and pairs: every method reads this model
     model = build_model(ground=ground, links=links, sliders=sliders, slots=slots,
@@ -540,7 +547,8 @@ MAX_RELATIVE = 1e6
 MAX_POINT_RELATIVE = 1e4
 
 
-def check_proportions(file, ground, drawn, links, sliders, points, assembly, driver) -> None:
+def check_proportions(file, ground, drawn, links, sliders, points, assembly, driver,
+                      contacts: dict[str, float] | None = None) -> None:
     """Lengths and coordinates within a stated range relative to the mechanism's size.
 
     size = the longest link, or the largest distance between two fixed or drawn points (or a
@@ -552,6 +560,9 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
     size = max([link.length for link in links.values()]
                + [math.dist(p, q) for p in places for q in places]
                + [abs(driver.position) if isinstance(driver, SliderDrive) else 0.0])
+    if not size > 0:        # a lone block (a plate under a rolling cylinder): its guide's
+        size = max([math.dist(p, g.through) for p in places for g in sliders.values()]
+                   + list((contacts or {}).values()))     # offset, or a wheel's radius
     if not size > 0:
         raise SceneError("the mechanism has no size: every link length and distance between "
                          "pivots is zero", file=file, where="links")
@@ -559,6 +570,9 @@ def check_proportions(file, ground, drawn, links, sliders, points, assembly, dri
     for name, link in links.items():
         if abs(link.length) < shortest:
             _too_short(file, f"links.{name}", link.length, size)
+    for key, radius in (contacts or {}).items():      # a wheel's, a cam's, a slot's radius
+        if radius < shortest:
+            _too_short(file, key, radius, size)
     for key in ("along", "left"):
         for label, point in points.items():
             value = getattr(point, key)

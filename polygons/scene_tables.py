@@ -20,7 +20,9 @@ ANSWER_FIELDS = _ANSWER_KEYS = (
     Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
                               "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
                               "cor(P), dist(B,A), x(C), y(C), dir_v(C), dir_a(C), "
-                              "angle(P,Q,R), arm(O,P,C)", example='"omega(BC)"', required=True),
+                              "angle(P,Q,R), arm(O,P,C); a [rolling.W] wheel's omega(W), "
+                              "alpha(W) (and v(W), a(W) between two plates)",
+        example='"omega(BC)"', required=True),
     Key("unit", "string", "the unit of tutorial and exact (any unit of the table below, or "
                           "'-' for a pure number)", example='"rad/s"', required=True),
     Key("tutorial", "number", "the tutorial's printed answer, in `unit`", example="7.2"),

@@ -44,6 +44,7 @@ from .scene import Crank, Scene
 from .steps import Diagram, Step
 from .theorems import angular_acceleration, angular_velocity
 from .memo import memo_of
+from .sweep_store import adopt, allocate, store
 
 #: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
 PARALLEL_DEG = 1e-5
@@ -209,7 +210,8 @@ def compile_plan(scene: Scene, plan: Plan | None = None) -> Program:
 
 
 # ---------------------------------------------------------------- vectorised evaluation
-def evaluate(prog: Program, inputs, *, rates: bool = True) -> dict:
+def evaluate(prog: Program, inputs, *, rates: bool = True, jit: bool = False,
+             out: np.ndarray | None = None) -> dict:
     """Solve every position in ``inputs`` (θ in rad or s in m) at once.
 
     Returns a dict with ``pos``, ``vel``, ``acc`` (label -> (x, y) arrays, ``None`` for a
@@ -219,6 +221,9 @@ def evaluate(prog: Program, inputs, *, rates: bool = True) -> dict:
     """
     t = np.asarray(inputs, dtype=float)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        if rates and jit:
+            code, params = arrays_program(prog)
+            return from_arrays(prog, code, params, t, kernel_of(prog), out)
         return _evaluate(prog, t, rates)
 
 
@@ -267,32 +272,71 @@ def arrays_program(prog: Program):
     return memo["_arrays"]
 
 
-def from_arrays(prog: Program, code, params, xs: np.ndarray) -> dict:
+def kernel_of(prog: Program):
+    """The arrays program compiled by numba (:func:`polygons.jit.sweep_kernel`) with its
+    parameters as an array, made once per program: ``(kernel, params)``, or None where numba
+    is not installed or cannot compile this construction."""
+    memo = memo_of(prog)
+    if "_jit" not in memo:
+        from . import jit
+        code, params = arrays_program(prog)
+        kernel = jit.cached(code, jit.sweep_kernel)
+        memo["_jit"] = None if kernel is None else (kernel, np.array(params, dtype=float))
+    return memo["_jit"]
+
+
+#: bytes of a pass's record (one row of N floats per output of the generated code)
+CHUNK_BYTES = {False: 1 << 22, True: 1 << 22}
+
+
+def chunk_for(prog: Program, jit: bool = False) -> int:
+    """Positions per pass, from the program's size: a pass's record kept within
+    :data:`CHUNK_BYTES` (numpy, whose temporaries are as many again; a numba kernel, which
+    makes none), so that it stays in the caches: ≥ 1024 positions, at most 4 :data:`CHUNK`."""
+    return int(min(4 * CHUNK, max(1024, CHUNK_BYTES[bool(jit)] // 8 // _rows(prog))))
+
+
+def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None, out=None) -> dict:
     """:func:`evaluate`'s results at the inputs ``xs``: the arrays program run once, its flat
-    record read into positions, polygon vertices, rates, slides and the dyads' margin."""
+    record read into positions, polygon vertices, rates, slides and the dyads' margin
+    (``kernel``: the same program compiled by numba, :func:`kernel_of`, writing into ``out``
+    when given: a buffer of its rows that the caller reuses, so the results are views of it
+    until the next pass)."""
     idx = code.index
     scene = prog.scene
     n = xs.shape
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        r = code.fn(xs, params)
-        full = lambda v: np.broadcast_to(v, n)  # noqa: E731
+        full = lambda v: v if type(v) is np.ndarray else np.broadcast_to(v, n)  # noqa: E731
+        if kernel is not None and xs.ndim == 1:
+            r, O = kernel[0].record(np.ascontiguousarray(xs), kernel[1], out)
+            rows = kernel[0].rows
+
+            def pair(ij):   # a (2, N) view of the kernel's rows where they are adjacent
+                a, b = rows[ij[0]], rows[ij[1]]
+                if a is not None and b == a + 1:
+                    return O[a:a + 2]
+                return np.array([full(r[ij[0]]), full(r[ij[1]])])
+        else:
+            r = code.fn(xs, params)
+
+            def pair(ij):
+                return (full(r[ij[0]]), full(r[ij[1]]))
         P, V, A = {}, {}, {}
         pos = {}
         for (key, label), ij in idx.items():
             if key == "pos":
                 if label in prog.ground:
                     P[label] = prog.ground[label]
+                    pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
                 else:
-                    P[label] = (r[ij[0]], r[ij[1]])
-                pos[label] = np.array([full(r[ij[0]]), full(r[ij[1]])])
+                    P[label] = pair(ij)
+                    pos[label] = np.asarray(P[label])
         for label in pos:
             if label in prog.ground:
                 V[label] = A[label] = None
                 continue
-            i, j = idx[("velocity", label)]
-            V[label] = (full(r[i]), full(r[j]))
-            i, j = idx[("acceleration", label)]
-            A[label] = (full(r[i]), full(r[j]))
+            V[label] = pair(idx[("velocity", label)])
+            A[label] = pair(idx[("acceleration", label)])
         W = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
              if key == "omega"}
         AL = {k: full(r[i]) if np.ndim(r[i]) else r[i] for (key, k), i in idx.items()
@@ -316,8 +360,7 @@ def from_arrays(prog: Program, code, params, xs: np.ndarray) -> dict:
                 SV[k] = full(r[i])
             elif key == "slide_a":
                 SA[k] = full(r[i])
-        COR = {k: (full(r[ij[0]]), full(r[ij[1]])) for (key, k), ij in idx.items()
-               if key == "coriolis"}
+        COR = {k: pair(ij) for (key, k), ij in idx.items() if key == "coriolis"}
         margin = np.ones(n)
         for i in idx[("margins", "")]:
             margin = np.minimum(margin, r[i])
@@ -487,7 +530,8 @@ def _check_sweep_args(scene, steps, inputs, chunk):
     if not isinstance(scene, Scene):
         raise PolygonsError(f"sweep: expected a Scene (polygons.load(...)), got "
                             f"{type(scene).__name__}", file="<api>")
-    for name, value, low in (("steps", steps, 2), ("chunk", chunk, 1)):
+    for name, value, low in (("steps", steps, 2),) + ((("chunk", chunk, 1),)
+                                                       if chunk is not None else ()):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
                 or not low <= value <= (MAX_STEPS if name == "steps" else 1 << 40):
             raise PolygonsError(f"{name} must be a whole number from {low} to "
@@ -513,8 +557,8 @@ def _check_sweep_args(scene, steps, inputs, chunk):
 
 
 def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = None,
-          chunk: int = CHUNK, progress: Callable[[int], None] | None = None,
-          probe: int = PROBE) -> Sweep:
+          chunk: int | None = None, progress: Callable[[int], None] | None = None,
+          probe: int = PROBE, jit: bool = False) -> Sweep:
     """Solve ``scene`` over a full input revolution (or its reachable range).
 
     Without ``inputs``: a crank driver is swept over θ = 0 … 360° in ``steps`` equal steps
@@ -522,10 +566,16 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
     (``steps`` points strictly inside it: the limit positions themselves have infinite
     rates); a slider driver over its reachable travel.  With ``inputs`` (θ in rad or s in
     m) exactly those positions are solved, all of them in the branch of the scene's own
-    position.  ``progress(k)`` is called with the number of positions done after each chunk.
+    position.  ``progress(k)`` is called with the number of positions done after each chunk
+    (``chunk`` positions per pass; default from the program's size, :func:`chunk_for`).
+    ``jit=True`` runs the construction compiled by numba when numba is installed
+    (:mod:`polygons.jit`; the same numbers to rounding), numpy otherwise.
     """
     inputs = _check_sweep_args(scene, steps, inputs, chunk)
-    prog = compile_plan(scene)
+    memo = memo_of(scene)           # planned once per scene (a frozen record)
+    prog = memo.get("sweep_program")
+    if prog is None:
+        prog = memo["sweep_program"] = compile_plan(scene)
     limits: tuple[Limit, ...] = ()
     toggles: tuple[Limit, ...] = ()
     if inputs is None:
@@ -540,7 +590,7 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
         xs = np.asarray(inputs, dtype=float).reshape(-1)
         full = False
         rng = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 0.0)
-    res = run(prog, xs, chunk=chunk, progress=progress)
+    res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
     segments = _segments(xs, toggles, full)
     warnings = []
     for tg in toggles:
@@ -585,77 +635,46 @@ def _undefine(res: dict, mask: np.ndarray) -> None:
             arr[mask] = np.nan
 
 
-def run(prog: Program, xs: np.ndarray, *, chunk: int = CHUNK,
-        progress: Callable[[int], None] | None = None) -> dict:
-    """:func:`evaluate` in chunks of ``chunk`` positions (small enough for the CPU caches),
-    each written straight into preallocated (2, N) / (N,) result arrays; fixed points keep
-    their scalar positions and ``None`` rates."""
+def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
+        progress: Callable[[int], None] | None = None, jit: bool = False) -> dict:
+    """:func:`evaluate` in chunks of ``chunk`` positions (small enough for the CPU caches;
+    default from the program's size, :func:`chunk_for`), each written straight into
+    preallocated (2, N) / (N,) result arrays; fixed points keep their scalar positions and
+    ``None`` rates.  ``jit``: the numba kernel where there is one (:func:`kernel_of`)."""
     xs = np.asarray(xs, dtype=float)
     n = len(xs)
+    jit = bool(jit) and kernel_of(prog) is not None
+    rows = kernel_of(prog)[0].size if jit else 0
+    if jit and not chunk and rows <= JIT_ONE_PASS_ROWS and 0 < n <= JIT_ONE_PASS // rows:
+        out = adopt(evaluate(prog, xs, jit=True), n)    # one pass, its rows kept: no copy
+        if progress:
+            progress(n)
+        return out
+    chunk = chunk or chunk_for(prog, jit)
+    buf = np.empty((rows, min(chunk, max(n, 1)))) if jit else None   # the kernel's, reused
     out: dict | None = None
     for s in range(0, max(n, 1), chunk):
         e = min(n, s + chunk)
-        res = evaluate(prog, xs[s:e])
+        res = evaluate(prog, xs[s:e], jit=jit, out=buf)
         if out is None:
-            out = _allocate(res, n)
-        _store(out, res, s, e)
+            out = allocate(res, n)
+        store(out, res, s, e)
         if progress:
             progress(e - s)
     return out
 
 
-_VEC_KEYS = ("pos", "vel", "acc", "coriolis")
-_SCALAR_KEYS = ("omega", "alpha", "slide_v", "slide_a", "travel")
+#: positions × record rows up to which a numba sweep is one pass whose rows are the results,
+#: for records of at most JIT_ONE_PASS_ROWS rows (more rows, each a stream of stores to its
+#: own pages, and the stores miss the TLB: chunks that stay in the caches are faster)
+JIT_ONE_PASS = 1 << 25
+JIT_ONE_PASS_ROWS = 64
 
 
-def _allocate(res: dict, n: int) -> dict:
-    """Result arrays for ``n`` positions, shaped after one evaluated chunk ``res``: views into
-    one block (one allocation, which the allocator can hand back whole to the next sweep).
-    Constant results (the crank's ω and α) are read-only broadcasts, not filled arrays."""
-    rows = 1
-    for key in _VEC_KEYS:
-        for lab, xy in res[key].items():
-            if not (xy is None or (key == "pos" and np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0)):
-                rows += 2
-    for key in _SCALAR_KEYS:
-        rows += sum(1 for v in res[key].values() if np.ndim(v) != 0)
-    block = np.empty((rows, n))
-    i = 0
-    out = {}
-    for key in _VEC_KEYS:
-        d = {}
-        for lab, xy in res[key].items():
-            if xy is None or (key == "pos" and np.ndim(xy[0]) == 0 and np.ndim(xy[1]) == 0):
-                d[lab] = xy
-            else:
-                d[lab] = block[i:i + 2]
-                i += 2
-        out[key] = d
-    for key in _SCALAR_KEYS:
-        d = {}
-        for lab, v in res[key].items():
-            if np.ndim(v) == 0:
-                d[lab] = np.broadcast_to(np.float64(v), (n,))
-            else:
-                d[lab] = block[i]
-                i += 1
-        out[key] = d
-    out["margin"] = block[i]
-    return out
-
-
-def _store(out: dict, res: dict, s: int, e: int) -> None:
-    for key in _VEC_KEYS:
-        for lab, arr in out[key].items():
-            if isinstance(arr, np.ndarray):
-                x, y = res[key][lab]
-                arr[0, s:e] = x
-                arr[1, s:e] = y
-    for key in _SCALAR_KEYS:
-        for lab, arr in out[key].items():
-            if arr.flags.writeable:
-                arr[s:e] = res[key][lab]
-    out["margin"][s:e] = res["margin"]
+def _rows(prog: Program) -> int:
+    """The outputs of the program generated for arrays (rows of its record)."""
+    code, _ = arrays_program(prog)
+    return max(len(code.source.rsplit("return (", 1)[-1].split(",")) - 1, 1)
 
 
 def _segments(xs: np.ndarray, toggles: Iterable[Limit], full: bool):

@@ -7,6 +7,9 @@
 * :func:`flat_follower` — an eccentric circle cam (centre at e from the shaft, at θ) under a
   translating flat face perpendicular to the follower's guide through the shaft: the follower
   moves as s = e·sin(θ − γ) + ρ along the guide direction γ + 90°.
+* :func:`oscillating_flat_follower` — the same cam under a flat face along an arm pivoted at
+  Q: the face stays tangent, cos φ·dy − sin φ·dx = d (d the cam centre's signed distance to
+  the left of the arm line), differentiated implicitly twice by hand.
 """
 import math
 
@@ -43,3 +46,29 @@ def flat_follower(e, theta, omega, rho, guide=math.pi / 2):
     phi = theta - (guide - math.pi / 2)
     return {"s": e * math.sin(phi) + rho, "v": e * omega * math.cos(phi),
             "a": -e * omega ** 2 * math.sin(phi)}
+
+
+def oscillating_flat_follower(O, e, theta, omega, Q, rho, side, phi_near, offset=0.0):
+    """An eccentric circle cam (centre C at e from the shaft O, at θ, uniform ω) under a flat
+    face along an arm pivoted at Q (the face ``offset`` to the left of the arm line; the cam
+    on ``side`` +1 left / −1 right): the arm angle φ, its ω and α.
+
+    G(φ, θ) = cos φ·dy − sin φ·dx − d = 0,   dx, dy = C − Q,   d = offset + side·ρ;
+    φ' = −G_θ/G_φ,  φ'' = −(G_θθ + 2 G_θφ φ' + G_φφ φ'²)/G_φ  (the closure nearest phi_near)."""
+    dx = O[0] + e * math.cos(theta) - Q[0]
+    dy = O[1] + e * math.sin(theta) - Q[1]
+    d = offset + side * rho
+    beta, r = math.atan2(dy, dx), math.hypot(dx, dy)
+    roots = (beta - math.asin(d / r), beta - math.pi + math.asin(d / r))
+    phi = min(roots, key=lambda p: abs(math.remainder(p - phi_near, 2 * math.pi)))
+    dx1, dy1 = -e * math.sin(theta), e * math.cos(theta)
+    dx2, dy2 = -e * math.cos(theta), -e * math.sin(theta)
+    c, s = math.cos(phi), math.sin(phi)
+    g_p = -s * dy - c * dx
+    g_t = c * dy1 - s * dx1
+    g_tt = c * dy2 - s * dx2
+    g_tp = -s * dy1 - c * dx1
+    g_pp = -c * dy + s * dx
+    p1 = -g_t / g_p
+    p2 = -(g_tt + 2 * g_tp * p1 + g_pp * p1 * p1) / g_p
+    return {"phi": phi, "omega": p1 * omega, "alpha": p2 * omega * omega}

@@ -103,7 +103,8 @@ def test_probe_sees_errors(tmp_path):
 
 @needs_chromium
 @pytest.mark.parametrize("case,worksheet", [("s003-fig7.toml", False),
-                                            ("s001-we6.toml", True)])
+                                            ("s001-we6.toml", True),
+                                            ("s001-we8.toml", False)])   # force polygons
 def test_handout_renders_every_figure_without_errors(case, worksheet, tmp_path):
     page = tmp_path / "page.html"
     args = ["handout", CASES / case, "-o", page] + (["--worksheet"] if worksheet else [])
@@ -342,7 +343,9 @@ def test_interactive_page_steps_drags_and_highlights(case, tmp_path, session):
             si = math.dist(pts[a], pts[b])
             if si > 1e-6:
                 ratios.append(math.dist(drive["points"][a], drive["points"][b]) / si)
-    assert ratios and max(ratios) == pytest.approx(min(ratios), rel=2e-3)
+    # (a lone input block, a plate under a rolling cylinder, is the only point drawn)
+    assert ratios or len(labs) == 1, (labs, ratios)
+    assert not ratios or max(ratios) == pytest.approx(min(ratios), rel=2e-3)
     a, b = labs[0], labs[-1]
     if abs(pts[b][1] - pts[a][1]) > 1e-6:
         assert (drive["points"][b][1] - drive["points"][a][1]) * (pts[b][1] - pts[a][1]) < 0

@@ -143,6 +143,13 @@ def test_rolling_wheel_is_the_offset_slider_crank_and_turns_at_v_over_r():
     h = higher(sol, sol.scene.equivalents[0])
     assert abs(h["omega"] - (-ex["v_B"] / 0.05)) < 1e-9 * abs(h["omega"])
     assert abs(h["alpha"] - (-ex["a_B"] / 0.05)) < 1e-9 * abs(h["alpha"])
+    # asked as the books ask it: the wheel's ω and α by its label, and the case's exact values
+    from polygons.quantities import quantity
+    assert abs(quantity(sol, "omega(W)") - (-ex["v_B"] / 0.05)) < 1e-9 * abs(h["omega"])
+    assert abs(quantity(sol, "alpha(W)") - (-ex["a_B"] / 0.05)) < 1e-9 * abs(h["alpha"])
+    exact = {a.quantity: a.exact for a in sol.scene.answers}
+    assert abs(exact["omega(W)"] - abs(ex["v_B"]) / 0.05) < 1e-12 * exact["omega(W)"]
+    assert abs(exact["alpha(W)"] - abs(ex["a_B"]) / 0.05) < 1e-12 * exact["alpha(W)"]
     # the contact is the wheel's instant centre: every wheel point's velocity is ω k × (p − I)
     I, W = h["instant_centre"], sol.points["W"].position
     _near(I, (ex["x_B"], -0.03), 1e-12)
@@ -238,3 +245,96 @@ def test_the_bar_s_instant_centre_is_kennedy_s():
     bar = next(b.number for b in cs.bodies if b.name == "AQ")
     frame = next(b.number for b in cs.bodies if b.name == "frame")
     _near(cs.centre(frame, bar).point, h["instant_centre"], 1e-12)
+
+
+def _osc_flat(theta, omega, Q, rho, side, offset=0.0, e=0.02, arm=0.15):
+    return f"""
+[ground]
+O = ["0 mm", "0 mm"]
+Q = ["{Q[0] * 1e3!r} mm", "{Q[1] * 1e3!r} mm"]
+[links]
+OC = "{e * 1e3!r} mm"
+QF = "{arm * 1e3!r} mm"
+[driver]
+crank = "OC"
+angle = "{math.degrees(theta)!r} deg"
+omega = "{abs(omega)!r} rad/s"
+sense = "{'CCW' if omega > 0 else 'CW'}"
+[cams.F]
+follower = "flat"
+centre = "C"
+radius = "{rho * 1e3!r} mm"
+arm = "QF"
+side = "{'left' if side > 0 else 'right'}"
+face_offset = "{offset * 1e3!r} mm"
+"""
+
+
+def test_oscillating_flat_follower_is_the_tangency_condition():
+    """[cams.F] arm = "QF": the arm's ω and α equal the tangency condition differentiated by
+    hand (tests/analytic_contacts.py), on the case and on random cams, faces and offsets."""
+    from analytic_contacts import oscillating_flat_follower
+    from polygons.scene import parse_scene, parse_toml
+    sol = solve(load_scene(ROOT / "cam-oscillating-flat-follower.toml"))
+    C = (0.02 * math.cos(math.radians(30)), 0.02 * math.sin(math.radians(30)))
+    ex = oscillating_flat_follower((0, 0), 0.02, math.radians(30), 10.0, (0.1, 0.08), 0.05, -1,
+                                   math.atan2(C[1] - 0.08, C[0] - 0.1))
+    assert abs(sol.links["QF"].omega - ex["omega"]) < 1e-9 * abs(ex["omega"])
+    assert abs(sol.links["QF"].alpha - ex["alpha"]) < 1e-9 * abs(ex["alpha"])
+    for ans in sol.scene.answers:
+        want = ex["omega"] if ans.quantity.startswith("omega") else ex["alpha"]
+        assert abs(ans.exact - abs(want)) < 1e-12 * abs(want)
+    rng = np.random.default_rng(3)
+    done = 0
+    while done < 25:
+        theta, omega = rng.uniform(-math.pi, math.pi), rng.choice((-1, 1)) * rng.uniform(1, 40)
+        Q = tuple(float(v) for v in rng.uniform(-0.15, 0.15, 2))
+        rho, side = float(rng.uniform(0.02, 0.06)), int(rng.choice((-1, 1)))
+        offset = float(rng.uniform(-0.01, 0.01))
+        theta, omega = float(theta), float(omega)
+        C = 0.02 * np.array([math.cos(theta), math.sin(theta)])
+        d = offset + side * rho
+        if np.hypot(*(C - np.array(Q))) < abs(d) * 1.3 + 0.01:
+            continue                    # no tangent through Q's arm here, or near the toggle
+        # the face touches the cam ahead of the pivot (the slot runs from Q towards F)
+        near_phi = math.atan2(C[1] - Q[1], C[0] - Q[0])
+        ex = oscillating_flat_follower((0, 0), 0.02, theta, omega, Q, rho, side, near_phi,
+                                       offset)
+        F = tuple(float(q + 0.15 * t) for q, t in zip(Q, (math.cos(ex["phi"]),
+                                                          math.sin(ex["phi"]))))
+        sol = solve(parse_scene(parse_toml(_osc_flat(theta, omega, Q, rho, side, offset),
+                                           "x.toml"), file="x.toml"))
+        Fs = sol.points["F"].position
+        assert math.dist(Fs, F) < 1e-12, (Fs, F)
+        link = sol.links["QF"]
+        assert abs(link.omega - ex["omega"]) <= 1e-9 * max(1.0, abs(ex["omega"]))
+        assert abs(link.alpha - ex["alpha"]) <= 1e-9 * max(1.0, abs(ex["alpha"]))
+        done += 1
+
+
+@pytest.mark.parametrize("edit,words", [
+    (('arm = "QF"', 'arm = "QX"'), "arm must be a link"),
+    (('side = "right"', 'side = "under"'), "side must be 'left' or 'right'"),
+    (('arm = "QF"', 'arm = "QF"\nface = "0 deg"'), "give arm or face"),
+    (('arm = "QF"', 'arm = "QF"\nroller = "5 mm"'), "roller and concave are for a roller"),
+    (('arm = "QF"\nside = "right"', 'side = "right"\nface = "0 deg"'), "side and face_offset"),
+])
+def test_oscillating_flat_follower_refusals(edit, words):
+    from polygons.errors import PolygonsError
+    from polygons.scene import parse_scene, parse_toml
+    text = (ROOT / "cam-oscillating-flat-follower.toml").read_text().replace(*edit)
+    with pytest.raises(PolygonsError, match=words):
+        parse_scene(parse_toml(text, "x.toml"), file="x.toml")
+
+
+def test_words_about_a_point_with_one_position_must_hold():
+    """[assembly] words on a point placed without a choice are checked, not passed over."""
+    from polygons.scene import parse_scene, parse_toml
+    text = (ROOT / "cam-oscillating-flat-follower.toml").read_text()
+    ok = parse_scene(parse_toml(text + '\n[assembly]\nF = "F below OQ"\n', "x.toml"),
+                     file="x.toml")
+    assert solve(ok).points["F"].position[1] < 0
+    bad = parse_scene(parse_toml(text + '\n[assembly]\nF = "F above OQ"\n', "x.toml"),
+                      file="x.toml")
+    with pytest.raises(PolygonsError, match="one position here.*not 'F above OQ'"):
+        solve(bad)

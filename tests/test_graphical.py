@@ -9,6 +9,7 @@ solutions of tests/analytic.py (power balance by hand), independent of all three
 """
 from __future__ import annotations
 
+import cmath
 import math
 import subprocess
 import sys
@@ -81,6 +82,9 @@ def test_force_polygons_equal_newton_euler(path, analysed):
             assert np.hypot(*(fp.ground[k] - v)) <= REL * big
         for k, (n, _, c) in ne.guide.items():
             assert abs(fp.guide[k][0] - n) <= REL * big and abs(fp.guide[k][2] - c) <= REL * big
+        assert set(fp.slot) == set(ne.slot)
+        for k, (v, n) in ne.slot.items():
+            assert np.hypot(*(fp.slot[k][0] * fp.slot[k][1] - v * n)) <= REL * big
         expected = ne.effort if ne.effort is not None else 0.0
         assert abs(fp.effort - expected) <= REL * max(1.0, abs(expected), big * 0.01)
         # each group's polygon closes: knowns + found sum to zero
@@ -199,7 +203,12 @@ def test_forces_command_prints_both_methods_and_json(tmp_path):
                                                            rel=REL)
     an2 = analyse(load_scene(ROOT / "cases" / "s000-d225-2003-q3.toml"))
     st2 = to_dict(an2)["states"][0]
-    assert "does not handle" in st2["force_polygons"]["refused"]
+    assert [g["kind"] for g in st2["force_polygons"]["groups"]] == ["RPR", "crank"]
+    # an effort away from the driver: refused in one line
+    st3 = to_dict(analyse(load_scene(ROOT / "cases" / "forces-actuator-four-bar.toml")))
+    why = st3["states"][0]["force_polygons"]["refused"]
+    assert "the force-polygon construction finds the driver's effort" in why
+    assert "\n" not in why
 
 
 def toggle_torque_exact() -> float:
@@ -236,18 +245,20 @@ def test_drawings_of_every_loaded_case(analysed):
     """Every loaded case draws its group polygons (when handled) and its lever; each SVG is
     well-formed, the stages come before the finished drawing, no two labels overlap."""
     import xml.etree.ElementTree as ET
-    from diagrams.forcepoly import group_drawings, lever_drawings
+    from diagrams.forcepoly import group_drawings, joint_drawings, lever_drawings
     from diagrams.labels import text_box
     from diagrams.model import Text
     from diagrams.svg import to_svg
     for path in LOADED:
         an = analysed(path)
         st = an.states[0]
-        ds = group_drawings(an, st) + lever_drawings(an, st)
+        ds = group_drawings(an, st) + joint_drawings(an, st) + lever_drawings(an, st)
         stems = [s for s, _ in ds]
         assert any(s.startswith("zhukovsky-") for s in stems), path.name
         if graphical.handled(load_scene(path)) is None:
             assert any(s.startswith("group-") for s in stems), path.name
+        if path.stem == "forces-triad-truss":
+            assert {f"joint-instant-2-{c}" for c in "bcx"} <= set(stems)
         for stem, d in ds[:12]:
             ET.fromstring(to_svg(d))
             for cls in ("labels",):
@@ -301,24 +312,33 @@ def test_the_graphical_methods_reproduce_printed_answers(analysed):
 def test_the_diagonal_joins_the_two_bodies_parts(analysed):
     """In each dyad's polygon (K1, t1, K2, t2, closing sides) the diagonal drawn is the middle
     pin's force: from the closing sides' meeting point back to the end of the first body's
-    part, equal to the reaction found (the massless coupler of efficiency-four-bar too)."""
+    part, equal to the reaction found (the massless coupler of efficiency-four-bar too); in a
+    triad's, each corner's force on the plate, across its link's part."""
     from diagrams.forcepoly import _vectors
-    for name in ("efficiency-four-bar", "forces-toggle-press", "s002-ex3.17", "s001-we8"):
+    for name in ("efficiency-four-bar", "forces-toggle-press", "s002-ex3.17", "s001-we8",
+                 "forces-oscillating-cylinder", "forces-triad", "forces-triad-truss"):
         an = analysed(ROOT / "cases" / f"{name}.toml")
         fp = graphical.construct(an, an.states[0])
         for g in fp.groups:
             seq, _, diag = _vectors(g)
             verts = np.cumsum([np.zeros(2)] + [s[1] for s in seq], axis=0)
-            for a, b, _ in diag:
-                r = g.reactions[0]
+            assert len(diag) == {"triad": 3, "crank": 0, "RPR": 0, "RPP": 0}.get(g.kind, 1)
+            for a, b, rname in diag:
+                r = next(f for f in g.reactions if f.name == rname)
                 assert np.hypot(*(verts[b] - verts[a] - r.force)) <= 1e-9 * max(1.0, r.value)
 
 
 @pytest.mark.parametrize("name,source", [("forces-toggle-press", "new-toggle-press"),
                                          ("forces-actuator-four-bar", "efficiency-four-bar"),
-                                         ("forces-engine-piston-effort", "s001-we8")])
+                                         ("forces-engine-piston-effort", "s001-we8"),
+                                         ("forces-whitworth", "new-whitworth"),
+                                         ("forces-scotch-yoke", "scotch-yoke"),
+                                         ("forces-oscillating-cylinder",
+                                          "new-oscillating-cylinder"),
+                                         ("forces-triad", "triad-plate-point"),
+                                         ("forces-triad-truss", "triad-ternary-coupler")])
 def test_the_force_cases_kinematic_answers_are_their_sources(name, source):
-    """The three force cases share their mechanism and instant with a case whose exact values
+    """The force cases share their mechanism and instant with a case whose exact values
     have an independent check of their own: each kinematic answer is that case's, and the
     solver gives it (the shared check is then the independent one)."""
     from polygons.quantities import quantity
@@ -332,3 +352,215 @@ def test_the_force_cases_kinematic_answers_are_their_sources(name, source):
         value = quantity(sol, a.quantity)
         value = value if a.mode == "signed" else abs(value)
         assert value == pytest.approx(a.exact, rel=1e-9), a.quantity
+
+
+# ---------------------------------------------------------------- slots, yokes, triads
+def _power(bodies, forces, g=-9.81j) -> float:
+    """Σ (m g − m a_G)·v_G − I_G α ω + Σ F·v: every term's power but the driver's (complex
+    motions (z, v, a) of tests/analytic_more.py)."""
+    p = 0.0
+    for m, inertia, G, w, al in bodies:
+        p += (m * (g - G[2]) * G[1].conjugate()).real - inertia * al * w
+    for f, v in forces:
+        p += (f * v.conjugate()).real
+    return p
+
+
+def _rod(m, length):
+    return m, m * length * length / 12
+
+
+def _mid(P, Q):
+    return tuple((p + q) / 2 for p, q in zip(P, Q))
+
+
+def whitworth_torque_exact() -> float:
+    """forces-whitworth: the quick return's loop (tests/analytic_more.py), CD, DR uniform rods
+    of 4 and 6 kg, the ram 30 kg, 2 kN at the ram along −x, g 9.81."""
+    import analytic_more as am
+    w = -math.pi
+    A = am.crank(am.fixed(0, 0), 0.15, math.radians(60), w, 0.0)
+    C = am.fixed(0, -0.1)
+    s = am.slot(A, C)
+    D = am.lever_point(C, s["phi"], s["omega"], s["alpha"], 0.125)
+    R, (wr, ar), _ = am.rrp(D, 0.5, complex(0, -0.1), 0.0, -0.45 - 0.1j)
+    p = _power([(*_rod(4.0, 0.125), _mid(C, D), s["omega"], s["alpha"]),
+                (*_rod(6.0, 0.5), _mid(D, R), wr, ar), (30.0, 0.0, R, 0.0, 0.0)],
+               [(-2000.0, R[1])])
+    return -p / w
+
+
+def yoke_torque_exact() -> float:
+    """forces-scotch-yoke: y = r sin θ, the crank a 1.5 kg rod, the yoke 5 kg, 400 N at 240°
+    on the yoke, g 9.81."""
+    import analytic_more as am
+    w, th = 10.0, math.radians(30)
+    P = am.crank(am.fixed(0, 0), 0.05, th, w, 0.0)
+    Y = tuple(1j * z.imag for z in P)
+    p = _power([(*_rod(1.5, 0.05), am.crank(am.fixed(0, 0), 0.025, th, w, 0.0), w, 0.0),
+                (5.0, 0.0, Y, 0.0, 0.0)],
+               [(400.0 * cmath.exp(1j * math.radians(240)), Y[1])])
+    return -p / w
+
+
+def cylinder_torque_exact() -> float:
+    """forces-oscillating-cylinder: the pin on a moving slot (tests/analytic_more.py guided),
+    O2P a 2 kg rod, the cylinder O4Q an 8 kg rod, 30 N m CW on O2P, g 9.81."""
+    import analytic_more as am
+    w, al, phi = -2.0, 5.0, math.radians(170)
+    O2, O4 = am.fixed(0, 0), am.fixed(0.3, 0)
+    X, (wt, at), *_ = am.guided(O2, 0.1, O4, phi, w, al, 0.0, 0.093 + 0.036j)
+    p = _power([(*_rod(2.0, 0.1), _mid(O2, X), wt, at),
+                (*_rod(8.0, 0.5), am.lever_point(O4, phi, w, al, 0.25), w, al)], [])
+    p += -30.0 * wt
+    return -p / w
+
+
+def triad_torque_exact() -> float:
+    """forces-triad: the class-III group by the independent oracle (tests/analytic_triad.py,
+    Newton on the six distances from the solver's closure as a start), uniform rods OA 1,
+    AB 2, BC 5, CD 2, XE 1.5 kg, 400 N at X along −x, g 9.81."""
+    import analytic_more as am
+    import analytic_triad as at
+    w, al, th = -15.0, 50.0, math.radians(45)
+    O = am.fixed(0, 0)
+    A = am.crank(O, 0.08, th, w, al)
+    D, E = am.fixed(0.32, -0.04), am.fixed(0.14, 0.28)
+    L, xi, eta = 0.18, 0.09, 0.07
+    lens = (0.22, 0.19, 0.13, L, math.hypot(L - xi, eta), math.hypot(xi, eta))
+    sol = solve(load_scene(ROOT / "cases" / "forces-triad.toml"))
+    guess = np.concatenate([sol.points[k].position for k in "BCX"])
+    pts = at.solve_position(am.vec(A[0]), am.vec(D[0]), am.vec(E[0]), lens, guess)
+    vel, acc = at.rates(*pts, *(am.vec(P[0]) for P in (A, D, E)),
+                        *(am.vec(P[1]) for P in (A, D, E)), *(am.vec(P[2]) for P in (A, D, E)))
+    B, C, X = (tuple(complex(*q) for q in m) for m in zip(pts, vel, acc))
+
+    def rates(P, Q):
+        return am.rates(P, Q)
+    bodies = [(*_rod(1.0, 0.08), am.crank(O, 0.04, th, w, al), w, al)]
+    for m, P, Q, ln in ((2.0, A, B, 0.22), (5.0, B, C, L), (2.0, C, D, 0.19),
+                        (1.5, X, E, 0.13)):
+        bodies.append((*_rod(m, ln), _mid(P, Q), *rates(P, Q)))
+    p = _power(bodies, [(-400.0, X[1])])
+    return -p / w
+
+
+def triad_truss_torque_exact() -> float:
+    """forces-triad-truss: the class-III group on the triangle BC, CX, BX by the independent
+    oracle, uniform rods OA 1, AB 2, BC 3, CX 2, BX 2, CD 2, XE 1 kg, 300 N down at X,
+    g 9.81."""
+    import analytic_more as am
+    import analytic_triad as at
+    w, th = 10.0, math.radians(60)
+    O = am.fixed(0, 0)
+    A = am.crank(O, 0.1, th, w, 0.0)
+    D, E = am.fixed(0.3, 0), am.fixed(0.15, 0.3)
+    sol = solve(load_scene(ROOT / "cases" / "forces-triad-truss.toml"))
+    guess = np.concatenate([sol.points[k].position for k in "BCX"])
+    pts = at.solve_position(am.vec(A[0]), am.vec(D[0]), am.vec(E[0]),
+                            (0.2, 0.2, 0.1, 0.15, 0.12, 0.1), guess)
+    vel, acc = at.rates(*pts, *(am.vec(P[0]) for P in (A, D, E)),
+                        *(am.vec(P[1]) for P in (A, D, E)), *(am.vec(P[2]) for P in (A, D, E)))
+    B, C, X = (tuple(complex(*q) for q in m) for m in zip(pts, vel, acc))
+    bodies = [(*_rod(1.0, 0.1), am.crank(O, 0.05, th, w, 0.0), w, 0.0)]
+    for m, P, Q, ln in ((2.0, A, B, 0.2), (3.0, B, C, 0.15), (2.0, C, X, 0.12),
+                        (2.0, B, X, 0.1), (2.0, C, D, 0.2), (1.0, X, E, 0.1)):
+        bodies.append((*_rod(m, ln), _mid(P, Q), *am.rates(P, Q)))
+    p = _power(bodies, [(-300j, X[1])])
+    return -p / w
+
+
+SLOT_CASES = {"forces-triad-truss": (triad_truss_torque_exact, ["triad", "crank"]),
+"forces-whitworth": (whitworth_torque_exact, ["RRP", "RPR", "crank"]),
+              "forces-scotch-yoke": (yoke_torque_exact, ["RPP", "crank"]),
+              "forces-oscillating-cylinder": (cylinder_torque_exact,
+                                              ["RRP, moving guide", "crank"]),
+              "forces-triad": (triad_torque_exact, ["triad", "crank"])}
+
+
+@pytest.mark.parametrize("name", sorted(SLOT_CASES))
+def test_slot_yoke_and_triad_torques_equal_the_power_balance(name, analysed):
+    """The input torque of each new kind's case (a slotted lever, a pin in a moving slot, the
+    Scotch yoke, the class-III group) by the force polygons, Newton–Euler and Zhukovsky's
+    lever equals a power balance on independent closed-form kinematics; the case's exact
+    Tin is that value; each slot's force equals Newton–Euler's."""
+    exact, kinds = SLOT_CASES[name]
+    an = analysed(ROOT / "cases" / f"{name}.toml")
+    st = an.states[0]
+    fp = graphical.construct(an, st)
+    x = exact()
+    assert [g.kind for g in fp.groups] == kinds
+    assert fp.effort == pytest.approx(x, rel=REL)
+    assert st.ne.effort == pytest.approx(x, rel=REL)
+    assert _printed(an.model.scene, "Tin").exact == pytest.approx(x, rel=1e-12)
+    big = max([1.0] + [float(np.hypot(*v)) for v in st.ne.pin.values()])
+    assert set(fp.slot) == set(st.ne.slot)
+    for k, (v, n) in st.ne.slot.items():
+        assert np.hypot(*(fp.slot[k][0] * fp.slot[k][1] - v * n)) <= REL * big
+
+
+def _with_masses(path):
+    """The case with a mass on every link of stated length and every slider or yoke, and
+    gravity: its force polygons have something to carry (None: nothing to load)."""
+    import tomllib
+    from polygons.scene import parse_scene
+    text = path.read_text(encoding="utf-8")
+    extra = ""
+    for b in load_scene(path).model.moving:
+        if b.kind == "link" and b.length:
+            extra += f'\n[masses.{b.name}]\nmass = "{1 + len(b.name) % 3} kg"\n'
+        elif b.kind in ("block", "yoke"):
+            extra += f'\n[masses.{b.name}]\nmass = "2 kg"\n'
+    if not extra:
+        return None
+    return parse_scene(tomllib.loads(text + extra + '\n[gravity]\ng = "9.81 m/s^2"\n'),
+                       file=str(path))
+
+
+def test_force_polygons_equal_newton_euler_on_every_case_with_masses_added():
+    """Every unloaded case whose kinds the construction handles (slotted levers, offset slots,
+    pins in moving slots, yokes, triads on a ternary plate or a triangle of links, slider
+    drivers), loaded with
+    masses and gravity: each pin, slot and guide force and the effort equal Newton–Euler's."""
+    kinds = set()
+    truss = 0
+    for path in CASES:
+        if path in LOADED:
+            continue
+        try:
+            scene = _with_masses(path)
+            if scene is None or graphical.handled(scene) is not None:
+                continue
+            an = analyse(scene)
+        except PolygonsError:
+            continue                            # refused by the force analysis itself
+        for st in an.states:
+            fp = graphical.construct(an, st)
+            ne = st.ne
+            big = max([1.0] + [float(np.hypot(*v)) for v in ne.pin.values()])
+            assert set(fp.pin) == set(ne.pin) and set(fp.slot) == set(ne.slot), path.name
+            for k, v in ne.pin.items():
+                assert np.hypot(*(fp.pin[k] - v)) <= REL * big, (path.name, k)
+            for k, (v, n) in ne.slot.items():
+                assert np.hypot(*(fp.slot[k][0] * fp.slot[k][1] - v * n)) <= REL * big
+            for k, (n, _, c) in ne.guide.items():
+                assert abs(fp.guide[k][0] - n) <= REL * big
+                assert abs(fp.guide[k][2] - c) <= REL * big
+            assert abs(fp.effort - (ne.effort or 0.0)) <= REL * big
+            kinds |= {g.kind for g in fp.groups}
+            truss += sum(1 for g in fp.groups for f in g.reactions if f.how == "joint") // 6
+    assert {"RPR", "RPP", "RRP, moving guide", "triad", "slider driver"} <= kinds
+    assert truss >= 2                       # triads whose plate is a triangle of links
+
+
+def test_the_joints_of_a_triangle_plate_close(analysed):
+    """forces-triad-truss: each joint's polygon (the forces on the pin B, C, X) closes; the
+    first two joints close on the plate links not met before, the last only checks."""
+    an = analysed(ROOT / "cases" / "forces-triad-truss.toml")
+    fp = graphical.construct(an, an.states[0])
+    assert [len(j.closing) for j in fp.joints] == [2, 1, 0]
+    big = max(float(np.hypot(*v)) for v in fp.pin.values())
+    for j in fp.joints:
+        total = sum((k.force for k in j.knowns), np.zeros(2))
+        total = total + sum((f.force for f in j.normals + j.closing), np.zeros(2))
+        assert np.hypot(*total) <= REL * big, j.title

@@ -77,6 +77,10 @@ def test_random_engines_both_methods():
         _close(klein.figure(sol, "klein"), exact)
         if e == 0.0:
             _close(klein.figure(sol, "ritterhaus"), exact)
+            _close(klein.figure(sol, "bennett"), exact)
+            # Bennett's Q is Klein's Q too (AQ = AM²/AB from AL = OA²/AB)
+            q3 = klein.figure(sol, "bennett").points["Q"]
+            assert math.dist(klein.figure(sol, "klein").points["Q"], q3) < 1e-12 * L * 100
             # Ritterhaus's Q is Klein's Q (the similar triangles)
             q1 = klein.figure(sol, "klein").points["Q"]
             q2 = klein.figure(sol, "ritterhaus").points["Q"]
@@ -101,12 +105,54 @@ def test_klein_circles_cut_on_the_chord_through_q():
      "turning uniformly"),
     (_scene(0.05, 0.2, 0.5, 0.0, 0.0).replace('sense = "CW"', ''), "klein", "at rest"),
     (_scene(0.05, 0.2, 0.0, 10.0, 0.0), "ritterhaus", "parallel"),
+    (_scene(0.05, 0.2, 0.5, 10.0, -0.01), "bennett", "in-line engine"),
+    (_scene(0.05, 0.2, 0.5, 10.0, 0.0).replace(
+        'sense = "CCW"', 'sense = "CCW"\nalpha = "3 rad/s^2"\nalpha_sense = "CW"'), "bennett",
+     "turning uniformly"),
 ])
 def test_refusals(text, method, words):
     sol = solve(parse_scene(text, "x.toml"))
     with pytest.raises(PolygonsError) as exc:
         klein.figure(sol, method)
     assert words in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_bennett_on_the_inline_case_and_at_the_dead_centres():
+    """Bennett's construction on the shipped in-line engine equals the loop closure; its L₁ is
+    the foot of the perpendicular from O on the rod at right angles (A₁L₁ = r²/l), AL = A₁L₁,
+    K lies on the line of stroke, and at a dead centre (where Ritterhaus's K is undefined)
+    Bennett's still closes."""
+    sol = solve(load_scene(ROOT / "cases" / "klein-inline-engine.toml"))
+    f = klein.figure(sol, "bennett")
+    _close(f, slider_crank(*CASES["klein-inline-engine"]))
+    p = f.points
+    r, L = math.dist(p["O"], p["A"]), math.dist(p["A"], p["B"])
+    assert abs(math.dist(p["A1"], p["L1"]) - r * r / L) < 1e-12
+    assert abs(math.dist(p["A"], p["L"]) - r * r / L) < 1e-12
+    assert abs(p["K"][1]) < 1e-12 and abs(p["N"][1]) < 1e-12      # on the line of stroke
+    assert f.names["A1"] == "C1" and f.names["B1"] == "P1" and f.names["L1"] == "L1"
+    text = "\n".join(klein.report_lines(f))
+    assert "Bennett's construction" in text and "C1L1 = 57.1429 mm" in text
+    for theta in (0.0, math.pi):
+        sol = solve(parse_scene(_scene(0.05, 0.2, theta, 40.0, 0.0), "dc.toml"))
+        _close(klein.figure(sol, "bennett"), slider_crank(0.05, 0.2, theta, 40.0))
+
+
+def test_bennett_drawn_stage_by_stage(tmp_path):
+    from polygons.cli import main
+    case = str(ROOT / "cases" / "klein-inline-engine.toml")
+    assert main(["solve", case, "--klein", "bennett", "--svg", str(tmp_path)]) == 0
+    names = sorted(p.name for p in tmp_path.glob("bennett*.svg"))
+    assert names == ["bennett-1.svg", "bennett-2.svg", "bennett-3.svg", "bennett-4.svg",
+                     "bennett.svg"]
+    svg = (tmp_path / "bennett.svg").read_text()
+    for cls in ("crank-right-angle", "rod-right-angle", "perpendicular-OL1",
+                "perpendicular-LK", "perpendicular-KQ", "an-BA", "at-BA", "a-B"):
+        assert cls in svg, cls
+    assert "perpendicular-LK" not in (tmp_path / "bennett-2.svg").read_text()
+    s = parse_scene(_scene(0.05, 0.2, 0.5, 10.0, 0.0, extra='[diagram]\nklein = "bennett"\n'),
+                    "x.toml")
+    assert s.options.diagram.klein == "bennett"
 
 
 def test_not_a_slider_crank_is_refused_in_one_line():
@@ -146,7 +192,7 @@ def test_labels_do_not_overlap():
     from diagrams.model import Text
     for case in CASES:
         sol = solve(load_scene(ROOT / "cases" / f"{case}.toml"))
-        for method in ("klein", "ritterhaus") if "inline" in case else ("klein",):
+        for method in ("klein", "ritterhaus", "bennett") if "inline" in case else ("klein",):
             d = dk.drawing(sol, klein.figure(sol, method))
             boxes = [text_box(t.x, t.baseline, t.text, t.size, t.anchor)
                      for t in d.items() if isinstance(t, Text) and t.role == "point"]

@@ -1,4 +1,4 @@
-"""Klein's construction (and Ritterhaus's) for the slider-crank, read off the space diagram.
+"""Klein's construction (and Ritterhaus's, Bennett's) for the slider-crank, read off the space diagram.
 
 A crank OA turning uniformly at ω, a connecting rod AB, the piston B on a fixed straight
 guide (the line of stroke).  The books' figure (Khurmi, *Theory of Machines*, §8.2–8.3; the
@@ -15,13 +15,23 @@ letters here are the books' where the scene does not use them):
 * **acceleration (Ritterhaus)** — the line through M parallel to the stroke meets the crank OA
   (produced) at K; the line through K perpendicular to the stroke meets the rod at Q (the same
   Q: the triangles A K Q and A O M are similar, as A K M and A O B are, so AQ = AM²/AB); the
-  perpendicular to the rod at Q meets the stroke at N, as in Klein's.
+  perpendicular to the rod at Q meets the stroke at N, as in Klein's;
+* **acceleration (Bennett)** — the crank at right angles to the stroke, O A₁, with its rod
+  A₁ B₁: the foot L₁ of the perpendicular from O on A₁ B₁ gives A₁L₁ = OA²/AB (the same for
+  every crank angle); L on the rod with AL = A₁L₁; the perpendicular to the rod at L meets
+  the line of stroke at K, the perpendicular to the stroke at K meets the rod at Q (again
+  AQ = AM²/AB), and the perpendicular to the rod at Q meets the stroke at N, as in Klein's.
+  The steps are Khurmi's as quoted in lecture notes (the printed page was not seen); where
+  the quotation is unclear (which line LK meets) the line of stroke is taken, the one choice
+  that makes Q Klein's Q: along the rod from A, Q is at (AL + y_A·u_y)/u_x² with u the rod's
+  direction and y_A the pin's height over the stroke, which is AM²/AB exactly when
+  AL = OA²/AB and O lies on the stroke.
 
 Klein's construction holds for an in-line and an offset engine (then N lies on the line
-through O *parallel* to the stroke, not on the stroke); Ritterhaus's for an in-line engine
-only (its similar triangles need O on the line of stroke) and both for a crank turning
-uniformly (α = 0): a crank with α ≠ 0, a scene that is not a slider-crank or an offset engine
-asked for Ritterhaus is refused in one line.  Bennett's construction is not drawn yet.
+through O *parallel* to the stroke, not on the stroke); Ritterhaus's and Bennett's for an
+in-line engine only (their similar triangles / projections need O on the line of stroke) and
+all three for a crank turning uniformly (α = 0): a crank with α ≠ 0, a scene that is not a
+slider-crank or an offset engine asked for Ritterhaus or Bennett is refused in one line.
 
 Every intersection is :func:`polygons.geometry.intersect` (its angle reported); every number
 is read off the figure's points and compared with the polygons' (``difference``).
@@ -39,14 +49,17 @@ from ..records import Crank
 Vec = tuple[float, float]
 
 #: the constructions this module draws
-METHODS = ("klein", "ritterhaus")
+METHODS = ("klein", "ritterhaus", "bennett")
 #: their names as reports print them
-TITLES = {"klein": "Klein's construction", "ritterhaus": "Ritterhaus's construction"}
+TITLES = {"klein": "Klein's construction", "ritterhaus": "Ritterhaus's construction",
+          "bennett": "Bennett's construction"}
 #: an engine is in-line when O is this close to the line of stroke (relative to the rod)
 INLINE_REL = 1e-9
 
 #: the figure's own points, each with the letters the books use first
 ROLES = ("M", "K", "L", "Q", "N")
+#: Bennett's crank at right angles (A₁), its piston (B₁) and the foot L₁ (named after A, B)
+BENNETT_ROLES = ("A1", "B1", "L1")
 
 
 @dataclass(frozen=True)
@@ -54,7 +67,8 @@ class Figure:
     """One construction at one instant, in metres (space-diagram coordinates)."""
 
     method: str
-    names: Mapping[str, str]       # role ('O', 'A', 'B', 'M', 'K', 'L', 'Q', 'N') -> label
+    names: Mapping[str, str]       # role ('O', 'A', 'B', 'M', 'K', 'L', 'Q', 'N'; Bennett's
+    #                                'A1', 'B1', 'L1') -> label
     points: Mapping[str, Vec]      # role -> position
     stroke: Vec                    # unit vector along the line of stroke
     stroke_point: Vec              # a point of the line of stroke
@@ -153,8 +167,8 @@ def figure(sol, method: str = "klein") -> Figure:
     L = math.dist(A, B)
     offset = (O[0] - sp[0]) * n[0] + (O[1] - sp[1]) * n[1]
     inline = abs(offset) <= INLINE_REL * L
-    if method == "ritterhaus" and not inline:
-        raise refuse(f"Ritterhaus's construction is for an in-line engine; this one is offset "
+    if method in ("ritterhaus", "bennett") and not inline:
+        raise refuse(f"{TITLES[method]} is for an in-line engine; this one is offset "
                      f"{abs(offset) * 1000:.6g} mm (use Klein's, which covers both)", scene)
     w = drv.omega
     angles = {}
@@ -183,6 +197,22 @@ def figure(sol, method: str = "klein") -> Figure:
             t = (-rod_u[1] / L, rod_u[0] / L)
             pts["K"] = (Q[0] + h * t[0], Q[1] + h * t[1])
             pts["L"] = (Q[0] - h * t[0], Q[1] - h * t[1])
+    elif method == "bennett":
+        # the crank at right angles to the stroke (on the side of A) and its rod
+        r = math.dist(O, A)
+        side = 1.0 if (A[0] - O[0]) * n[0] + (A[1] - O[1]) * n[1] >= 0 else -1.0
+        A1 = (O[0] + side * r * n[0], O[1] + side * r * n[1])
+        tb = (B[0] - O[0]) * e[0] + (B[1] - O[1]) * e[1]
+        B1 = (O[0] + math.copysign(math.sqrt(L * L - r * r), tb) * e[0],
+              O[1] + math.copysign(math.sqrt(L * L - r * r), tb) * e[1])
+        u1 = (B1[0] - A1[0], B1[1] - A1[1])
+        L1 = cut(O, (-u1[1], u1[0]), A1, u1, ("perpendicular from O to A₁B₁", "rod A₁B₁", "L1"))
+        AL = math.dist(A1, L1)
+        Lp = (A[0] + rod_u[0] * AL / L, A[1] + rod_u[1] * AL / L)
+        K = cut(Lp, (-rod_u[1], rod_u[0]), sp, e,
+                ("perpendicular to the rod at L", "line of stroke", "K"))
+        Q = cut(K, n, A, rod_u, ("line through K ⟂ the stroke", "rod's line", "Q"))
+        pts.update({"A1": A1, "B1": B1, "L1": L1, "L": Lp, "K": K})
     else:
         K = cut(M, e, O, (A[0] - O[0], A[1] - O[1]),
                 ("line through M ∥ the stroke", "crank's line", "K"))
@@ -207,6 +237,10 @@ def figure(sol, method: str = "klein") -> Figure:
     for role in ROLES:
         names[role] = _fresh(role, used)
         used.add(names[role])
+    if method == "bennett":
+        for role, base in zip(BENNETT_ROLES, (A_, B_, names["L"])):
+            names[role] = _fresh(base + "1", used)
+            used.add(names[role])
     return Figure(method, names, pts, e, sp, offset, w, rod, drv.link, klein_circle,
                   rod_circle, angles, v_b[0] * e[0] + v_b[1] * e[1],
                   a_b[0] * e[0] + a_b[1] * e[1], w * lam, alpha_rod, polygon)
@@ -250,6 +284,15 @@ def report_lines(f: Figure, units_mm: bool = True) -> list[str]:
                      f"circle on {A}{B} as diameter cut at {K}, {L_}; {K}{L_} meets {A}{B} at "
                      f"{Q} and the line through {O} ∥ the stroke at {N}; {O}{A}{Q}{N} is the "
                      f"acceleration polygon turned 180° at ω² per mm")
+    elif f.method == "bennett":
+        K, L_, A1, B1, L1 = (nm[k] for k in ("K", "L", "A1", "B1", "L1"))
+        lines.append(f"  acceleration: with the crank at right angles to the stroke ({O}{A1}, rod "
+                     f"{A1}{B1}) the perpendicular from {O} meets {A1}{B1} at {L1} "
+                     f"({A1}{L1} = {d('A1', 'L1'):.6g} mm = {O}{A}²/{A}{B}); {L_} on {A}{B} "
+                     f"with {A}{L_} = {A1}{L1}; the perpendicular to {A}{B} at {L_} meets the "
+                     f"stroke at {K}; the line through {K} ⟂ the stroke meets {A}{B} at {Q}; "
+                     f"the perpendicular to {A}{B} at {Q} meets the stroke at {N}; "
+                     f"{O}{A}{Q}{N} is the acceleration polygon turned 180° at ω² per mm")
     else:
         K = nm["K"]
         lines.append(f"  acceleration: the line through {M} ∥ the stroke meets {O}{A} at {K}; "

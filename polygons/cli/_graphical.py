@@ -31,6 +31,14 @@ def _found(f) -> dict:
             "value": f.value, "how": f.how, "force": _vec(f.force)}
 
 
+def _difference(fp, st) -> float:
+    """The largest difference from Newton–Euler over the pin and slot forces (N)."""
+    d = [float(np.hypot(*(fp.pin[k] - v))) for k, v in st.ne.pin.items()]
+    d += [float(np.hypot(*(fp.slot[k][0] * fp.slot[k][1] - v * n)))
+          for k, (v, n) in st.ne.slot.items() if k in (fp.slot or {})]
+    return max(d, default=0.0)
+
+
 def polygons_dict(an, st) -> dict:
     fp, why = polygons_of(an, st)
     if fp is None:
@@ -46,11 +54,12 @@ def polygons_dict(an, st) -> dict:
             "closing": [_found(f) for f in g.closing],
             "reactions": [_found(f) for f in g.reactions],
             "moments": list(g.moments)})
-    diff = max([float(np.hypot(*(fp.pin[k] - v))) for k, v in st.ne.pin.items()], default=0.0)
     return {"groups": groups, "effort": fp.effort, "unit": effort.unit(an.model),
             "pins": [{"key": f"pin_{lab}_on_{b}", "force": _vec(f)}
                      for (lab, b), f in fp.pin.items()],
-            "largest_difference_from_newton_euler_N": diff}
+            "slots": [{"pin": pin, "normal_force_on_lever": v, "unit_normal": _vec(n)}
+                      for pin, (v, n) in (fp.slot or {}).items()],
+            "largest_difference_from_newton_euler_N": _difference(fp, st)}
 
 
 def lever_dict(an, st) -> dict:
@@ -92,7 +101,7 @@ def polygons_lines(an, st) -> list[str]:
         for m in g.moments:
             out.append(f"      {m}")
         for f in g.normals:
-            out.append(f"      by moments: {f.name} = {_f(f.value)} N (normal to the link)")
+            out.append(f"      by moments: {f.name} = {_f(f.value)} N ({f.along})")
         for f in g.closing:
             if f.how == "effort":
                 continue
@@ -100,10 +109,15 @@ def polygons_lines(an, st) -> list[str]:
                        f"{_deg(f.force) if f.value else _deg(f.direction):.2f}°")
         for f in g.reactions:
             if f.how == "reaction":
-                out.append(f"      diagonal: {f.name} = {_f(f.value)} N ∠"
+                what = ("diagonal" if g.kind in graphical.DYAD_KINDS or g.kind == "triad"
+                        else "passed on by the light block")
+                out.append(f"      {what}: {f.name} = {_f(f.value)} N ∠"
+                           f"{_deg(f.direction):.2f}°")
+            elif f.how == "joint":
+                out.append(f"      at the joint: {f.name} = {_f(f.value)} N ∠"
                            f"{_deg(f.direction):.2f}°")
     unit = effort.unit(an.model)
-    diff = max([float(np.hypot(*(fp.pin[k] - v))) for k, v in st.ne.pin.items()], default=0.0)
+    diff = _difference(fp, st)
     e = fp.effort
     words = (f"{abs(e):.8g} N m {'CCW' if e > 0 else 'CW' if e < 0 else ''}".rstrip()
              if unit == "N m" else f"{e:.8g} N along the guide")

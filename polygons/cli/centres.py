@@ -50,12 +50,16 @@ def run(args) -> int:
         out = Path(args.out)
         out.mkdir(parents=True, exist_ok=True)
         (out / "centres.svg").write_bytes(svg(sol, cs, args.paper).encode())
+    from ..contacts import wheel_centres    # rolling wheels' centres (no-slip)
     if args.json:
+        wheels = {"rolling_centres": wheel_centres(sol, cs)} if wheel_centres(sol, cs) else {}
         sys.stdout.write(json_text(to_json(sol, cs) | ({"pins": to_dict(sol)}
-                                                        if to_dict(sol) else {})))
+                                                        if to_dict(sol) else {}) | wheels))
     else:
+        extra = centre_lines(sol, cs)
         sys.stdout.write(table(sol, cs, args.units) + "".join(
-            ln + "\n" for ln in (["", *report_lines(sol)] if report_lines(sol) else [])))
+            ln + "\n" for ln in (["", *report_lines(sol)] if report_lines(sol) else []))
+            + "".join(ln + "\n" for ln in (["", *extra] if extra else [])))
         if args.out:
             sys.stdout.write(f"wrote {args.out}/centres.svg\n")
     return 0
@@ -150,3 +154,37 @@ def table(sol, cs, units: str = "mm") -> str:
                          f"{_g(abs(v.omega))} rad/s × {_g(v.radius * lf)} {lu} = "
                          f"{_g(v.speed * vf)} {vu}   (on {names[j]})")
     return "\n".join(lines) + "\n"
+
+
+def centre_lines(sol, cs) -> list[str]:
+    """:func:`polygons.contacts.wheel_centres` in words, as ``polygons centres`` prints them."""
+    from ..centres import pair_name, sub
+    from ..contacts import wheel_centres
+    rows = wheel_centres(sol, cs)
+    if not rows:
+        return []
+    mm = lambda p: f"({p[0] * 1000:.6g}, {p[1] * 1000:.6g}) mm"   # noqa: E731
+    lines = ["rolling contacts (each wheel is not a link of the equivalent linkage: its centres "
+             "from the no-slip conditions):"]
+    for r in rows:
+        j = r["number"]
+        for rel in r["relative"]:
+            i = rel["number"]
+            if rel["body"] == "frame":        # the same centre as the absolute one below
+                continue
+            what = "the frame" if rel["body"] == "frame" else f"the plate of {rel['body']}"
+            lines.append(f"  I{sub(pair_name(min(i, j), max(i, j)))} (wheel {r['wheel']} / "
+                         f"{what}) = the contact point {mm(rel['point'])}")
+        if r["absolute"] is None:
+            lines.append(f"  I{sub(pair_name(1, j))} (wheel {r['wheel']} / frame): at infinity "
+                         f"(the wheel translates, ω = 0)")
+            continue
+        d = math.dist(r["absolute"], r["centre"])
+        where = ("the contact point with the fixed surface"
+                 if r["relative"][0]["body"] == "frame" and len(r["relative"]) == 1 else
+                 "on the line of the contact points")
+        lines.append(f"  I{sub(pair_name(1, j))} (wheel {r['wheel']} / frame) = "
+                     f"{mm(r['absolute'])}, {where}; "
+                     f"v_{r['wheel']} = ω{sub(str(j))} · I{sub(pair_name(1, j))}{r['wheel']} = "
+                     f"{abs(r['omega']):.6g} rad/s × {d * 1000:.6g} mm = {r['speed']:.6g} m/s")
+    return lines

@@ -36,7 +36,7 @@ from ..errors import UnsupportedError, PolygonsError, SceneError
 from ..evaluate import Solution, link_ends, solve
 from ..plan import Step
 from ..notation import vertices_in
-from ..quantities import dimension_of_quantity, quantity
+from ..quantities import dimension_of_quantity, drawn_on_polygon, quantity
 from ..scene import load_scene
 from ..units import parse_quantity
 from ._output import add_out_option, emit
@@ -347,20 +347,10 @@ def diagram_scales(sol: Solution, forced: dict | None = None) -> dict:
     return out
 
 
-def _drawn_si(sol: Solution, expr: str, expected: float) -> tuple[str, float]:
-    """(diagram, length on that polygon in SI) of the line ``expr`` is read from."""
-    fn, args = _fn_args(expr)
-    if fn in ("omega", "alpha"):
-        length = sol.links[args[0]].length
-        return ("velocity" if fn == "omega" else "acceleration"), abs(expected) * length
-    diagram = "velocity" if fn in ("v", "vs") else "acceleration"
-    return diagram, abs(expected)
-
-
 def tolerance_for(sol: Solution, expr: str, expected: float, pct: float,
                   scales: dict) -> float:
     tol = pct * abs(expected)
-    diagram, drawn = _drawn_si(sol, expr, expected)
+    diagram, drawn = drawn_on_polygon(sol, expr, expected)
     sc = scales.get(diagram)
     if sc is not None:
         reading = READING_MM / sc.mm_per_si          # SI value of 0.5 mm of paper
@@ -439,7 +429,13 @@ def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
         ok = abs(err) <= tol * (1 + 1e-12) and sense_ok is not False
         step = producing_step(sol, expr)
         hint = ""
-        if not ok:
+        wheel = next((q for q in sol.scene.equivalents if q.kind == "rolling"
+                      and q.at == _fn_args(expr)[1][0] and q.at not in sol.links), None) \
+            if fn in ("omega", "alpha", "v", "a") else None
+        if not ok and wheel is not None and (fn in ("omega", "alpha")
+                                             or wheel.at not in sol.points):
+            hint = wheel.words.split(": ", 1)[-1]       # a wheel: its no-slip condition(s)
+        elif not ok:
             hint = (describe_step(sol, step) if step is not None
                     else "this value is given data: recheck the problem statement and units")
         out.append(Grade(name, expr, UNIT[dimension_of_quantity(expr)], value, expected, tol,

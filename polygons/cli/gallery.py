@@ -45,8 +45,11 @@ def _summary(sol) -> str:
 
 
 def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path], list[str]]:
+    from diagrams import handout_forces
     from diagrams.handout import figures, handout
     from diagrams.html import esc
+
+    from .handout import add_sections
     files = sorted(cases.glob("*.toml")) if cases.is_dir() else [cases]
     if not files:
         raise PolygonsError(f"no *.toml scene files in {cases}")
@@ -57,13 +60,16 @@ def build_gallery(cases: Path, out: Path, pdf: bool = False) -> tuple[list[Path]
         stem = path.stem
         try:
             sol = solve(load_scene(str(path)))
+            an = handout_forces.check(sol)      # [handout] force methods (refused: a card)
             figs = figures(sol)
             pages = {}
             for kind, worksheet in (("handout", False), ("worksheet", True)):
                 name = f"{stem}.html" if kind == "handout" else f"{stem}-worksheet.html"
                 target = out / name
-                target.write_text(handout(sol, worksheet=worksheet, figs=figs),
-                                  encoding="utf-8")
+                text = handout(sol, worksheet=worksheet, figs=figs)
+                if not worksheet:               # Klein's, equivalent linkage, force methods
+                    text = add_sections(text, sol, an=an)
+                target.write_text(text, encoding="utf-8")
                 written.append(target)
                 pages[kind] = name
                 if pdf:

@@ -50,14 +50,26 @@ def build(scene_path: str, *, worksheet: bool = False, scale=None, paper=None,
           centres: bool = False) -> str:
     from diagrams.handout import figures, handout
     from diagrams.scale import parse_cli
+    from diagrams import handout_forces
     sol = solve(load_scene(scene_path))
+    an = handout_forces.check(sol)      # [handout] force methods: refused before any work
     figs = figures(sol, parse_cli(scale), paper)
     text = handout(sol, worksheet=worksheet, figs=figs, centres=centres)
-    from diagrams.handout_klein import sections      # Klein's construction, equivalent links
-    extra = "" if worksheet else sections(sol, parse_cli(scale).get("space"), paper)
-    if extra and "</body>" in text:
-        head, tail = text.rsplit("</body>", 1)
-        text = head + extra + "</body>" + tail
+    return text if worksheet else add_sections(text, sol, parse_cli(scale).get("space"), paper,
+                                               an)
+
+
+def add_sections(text: str, sol, space_scale=None, paper=None, an=None) -> str:
+    """The answer key ``text`` with the sections the scene asks for inserted before its
+    footer: Klein's construction, the equivalent linkage (:mod:`diagrams.handout_klein`), the
+    force methods (:mod:`diagrams.handout_forces`; ``an`` from its ``check``)."""
+    from diagrams import handout_forces
+    from diagrams.handout_klein import sections
+    extra = sections(sol, space_scale, paper) + handout_forces.sections(sol, an)
+    end = "<footer" if "<footer" in text else "</body>"      # before the footer
+    if extra and end in text:
+        head, tail = text.rsplit(end, 1)
+        text = head + extra + end + tail
     return text
 
 

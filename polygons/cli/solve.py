@@ -22,9 +22,9 @@ def register(sub) -> None:
                                                           "the table")
     p.add_argument("--svg", metavar="DIR", help="also write the labelled SVG diagrams (as "
                                                "'polygons draw -o DIR') to this folder")
-    p.add_argument("--klein", nargs="?", const="klein", choices=("klein", "ritterhaus"),
+    p.add_argument("--klein", nargs="?", const="klein", choices=("klein", "ritterhaus", "bennett"),
                    help="also Klein's construction for a slider-crank (in-line or offset; "
-                        "--klein ritterhaus: Ritterhaus's, in-line only): the piston's velocity "
+                        "--klein ritterhaus / bennett: Ritterhaus's or Bennett's, in-line only): the piston's velocity "
                         "and acceleration read off the space diagram (as [diagram] klein)")
     from .draw import add_diagram_options
     add_diagram_options(p)

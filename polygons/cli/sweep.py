@@ -340,7 +340,11 @@ def _at(sw: Sweep, i: int) -> str:
     if sw.input_kind == "crank":
         deg = math.degrees(sw.inputs[i])
         return f"θ = {deg % 360.0 if sw.full_cycle else deg:.4g}°"
-    return f"s = {sw.inputs[i] * 1e3:.6g} mm"
+    x = sw.inputs[i]
+    span = float(max(sw.inputs) - min(sw.inputs)) if len(sw.inputs) else 0.0
+    if abs(x) <= 1e-9 * span:           # a rounding residue of the grid (−1e-298) reads 0
+        x = 0.0
+    return f"s = {x * 1e3:.6g} mm"
 
 
 def _inp(sw: Sweep, x: float) -> str:

@@ -33,7 +33,7 @@ from typing import Mapping
 from ..errors import PolygonsError, SceneError
 from ..evaluate import Solution, solve
 from ..exam_table import ExamSpec, Range, spec as exam_spec
-from ..quantities import dimension_of_quantity, quantity
+from ..quantities import dimension_of_quantity, drawn_on_polygon, quantity
 from ..units import round_up
 from ..scene import Scene, load_scene, parse_quantity_expr, parse_scene, parse_toml, \
     read_scene_text
@@ -143,15 +143,6 @@ def round_scales(sol: Solution) -> dict[str, float]:
     return out
 
 
-def _drawn_si(sol: Solution, expr: str, value: float) -> tuple[str, float]:
-    """(diagram, length in SI on that polygon) of the line ``expr`` is read from."""
-    fn, args = _args(expr)
-    if fn in ("omega", "alpha"):
-        return ("velocity" if fn == "omega" else "acceleration"), abs(value) * \
-            sol.links[args[0]].length
-    return ("velocity" if fn in ("v", "vs") else "acceleration"), abs(value)
-
-
 class _Scale:
     """What :func:`polygons.cli.check.tolerance_for` reads of a scale."""
 
@@ -217,7 +208,7 @@ def _rejects(sol: Solution, sp: ExamSpec, scales, asked) -> str | None:
         return f"a construction angle under {sp.min_angle_deg:g}°"
     for expr in asked:
         value = quantity(sol, expr)
-        diagram, si = _drawn_si(sol, expr, value)
+        diagram, si = drawn_on_polygon(sol, expr, value)
         if diagram not in scales or si <= 1e-9 * _largest(sol, diagram):
             continue            # a zero answer (at(B,A) of a steady crank) draws no vector
         if si * 10.0 / scales[diagram] < sp.min_vector_mm:

@@ -15,6 +15,25 @@ force polygon closed on the unknown reactions:
 * **RRP** (P — X, X a slider on a fixed guide): the pin P's normal component by moments about
   X, then the polygon closes on the along-link component and the guide's normal force; the
   guide couple from the block's moments;
+* **RPR** (a block pinned at A, placed, sliding in the slot of a lever turning about B: the
+  crank and slotted lever, Whitworth): the slot's force on the lever, normal to the slot
+  through A, by moments about B of the lever alone; the polygon closes on the pivot's force;
+  the block is light, so the pin A carries the same force back to A's body;
+* **RRP on a moving guide** (a link PX whose pin X slides in the slot of a lever placed
+  before: the oscillating cylinder): as RRP, the slot normal taking the guide normal's place;
+  the lever receives the slot's force with its own group;
+* **RPP** (a Scotch yoke: the block at the placed pin P slides in the yoke's slot, the yoke on
+  a fixed guide): the yoke's polygon closes on the slot's force (normal to the slot) and the
+  guide's normal force, two lines of known direction; the guide couple by moments;
+* the **class-III group** (a triad: a ternary plate with corners B, C, X, each joined by a
+  binary link to a placed point A, D, E; or a triangle of links): each link's outer pin
+  force split as in RRR, its normal component by moments about its corner; the three
+  components along the links remain:
+  the one along the link whose line does not pass through the Assur point S (where the other
+  two links' lines meet) by moments of the whole group about S, the other two close the
+  group's polygon; each corner's force is a diagonal.  No dyad's polygon closes alone here: S
+  does what the middle pin does for a dyad.  A plate that is a triangle of links is then a
+  truss, solved joint by joint (the polygon of the forces on each corner pin);
 * the **crank** (the driver, last): its bearing force closes its polygon, the input torque is
   the moment about its pivot; a **slider driver**: the input force along the guide and the
   guide normal close the block's polygon.
@@ -31,7 +50,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..dyads import RRP, RRR, CrankDyad, Image, SliderDriveDyad
+from ..dyads import RPP, RPR, RRP, RRR, CrankDyad, Guided, Image, SliderDriveDyad, Triad
 from ..errors import UnsupportedError
 from ..model import FRAME, check_handles
 from ..plan import make_plan
@@ -39,9 +58,14 @@ from .model import cross, perp, position
 from .states import Analysis, State
 
 #: the kinds of body and pair the construction handles (polygons.model)
-HANDLES = frozenset({"frame", "link", "block", "turning", "sliding"})
-#: the plan's dyads it handles: the driver (crank or slider), RRR, RRP, points on links
-GROUP_KINDS = (CrankDyad, SliderDriveDyad, RRR, RRP, Image)
+HANDLES = frozenset({"frame", "link", "lever", "block", "yoke", "pin-block", "turning",
+                     "sliding"})
+#: the plan's dyads it handles: the driver (crank or slider), RRR, RRP, points on links, a pin
+#: in a lever's slot (RPR), a pin on a link in a moving slot (Guided), the Scotch yoke (RPP),
+#: the class-III group with a ternary plate (Triad)
+GROUP_KINDS = (CrankDyad, SliderDriveDyad, RRR, RRP, Image, RPR, Guided, RPP, Triad)
+#: Group.kind of the groups drawn as a dyad (two bodies, a middle pin's force as the diagonal)
+DYAD_KINDS = ("RRR", "RRP", "RRP, moving guide")
 METHOD = "the force-polygon construction"
 
 
@@ -63,13 +87,15 @@ class Known:
 class Found:
     """A force the polygon found: on ``body`` at ``at`` along the unit ``direction``, signed
     ``value`` (N); ``how`` 'moments' (normal components), 'polygon' (the closing sides),
-    'effort' (the input), 'reaction' (a pin force read as a diagonal)."""
+    'effort' (the input), 'reaction' (a pin force read as a diagonal, or passed on by a light
+    block), 'joint' (a plate link's end force, from the polygon of a joint of the plate)."""
     name: str
     body: str
     at: str
     direction: np.ndarray
     value: float
     how: str
+    along: str = "normal to the link"   # the direction in words (by-moments components)
 
     @property
     def force(self) -> np.ndarray:
@@ -80,7 +106,8 @@ class Found:
 class Group:
     """One group's construction: its bodies, what was known, what the polygon found."""
     index: int                 # 1 = the driver
-    kind: str                  # 'crank', 'slider driver', 'RRR', 'RRP'
+    kind: str                  # 'crank', 'slider driver', 'RRR', 'RRP', 'RPR',
+                               # 'RRP, moving guide', 'RPP', 'triad'
     title: str
     bodies: tuple[str, ...]
     knowns: tuple[Known, ...]
@@ -98,6 +125,8 @@ class ForcePolygons:
     ground: dict                       # label -> force on the ground
     guide: dict                        # label -> (normal force, unit normal, couple)
     effort: float                      # the input torque (N m) or force (N)
+    slot: dict = None                  # pin -> (signed normal force on the lever, unit normal)
+    joints: tuple[Group, ...] = ()     # a triangle plate's joints (kind 'joint'), in order
 
 
 def _refuse(kind: str, where: str, file) -> UnsupportedError:
@@ -129,6 +158,15 @@ def groups_of(scene):
             out.append(("RRR", d, (d.link_p, d.link_q)))
         elif isinstance(d, RRP):
             out.append(("RRP", d, (d.link, d.x)))
+        elif isinstance(d, RPR):
+            out.append(("RPR", d, (d.lever,)))
+        elif isinstance(d, Guided):
+            out.append(("RRP, moving guide", d, (d.link,)))
+        elif isinstance(d, RPP):
+            out.append(("RPP", d, (d.x,)))
+        elif isinstance(d, Triad):
+            plate = (d.plate,) if d.ternary else tuple(d.plate_links)
+            out.append(("triad", d, plate + (d.link_b, d.link_c, d.link_x)))
     return out
 
 
@@ -164,6 +202,8 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
 
     pin: dict = {}
     guide: dict = {}
+    slot: dict = {}
+    joints: list[Group] = []
     done: set[str] = set()
     out: list[Group] = []
     effort = 0.0
@@ -199,7 +239,24 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
                 if other != body and other in done:
                     ks.append(Known(f"from {other} at {lab}", "transmitted", body,
                                     -pin[(lab, other)], P(lab)))
+        for s in model.slots:                   # a slot's force found with the other body
+            if s.pin not in slot or body not in (s.lever, s.carrier):
+                continue
+            other = s.carrier if body == s.lever else s.lever
+            if other in done:
+                val, n = slot[s.pin]
+                ks.append(Known(f"from {other} at {s.pin} (slot)", "transmitted", body,
+                                (val if body == s.lever else -val) * n, P(s.pin)))
         return ks
+
+    def slot_of(pin: str):
+        return next(s for s in model.slots if s.pin == pin)
+
+    def slot_normal(s) -> np.ndarray:
+        """The slot's unit normal, as Newton–Euler takes it (perp of the slot's direction)."""
+        u = (np.array(s.direction) if s.direction else
+             P(s.far) - P(s.pivot) if s.far else P(s.pin) - P(s.pivot))
+        return perp(u / float(np.hypot(*u)))
 
     def K(ks) -> np.ndarray:
         return sum((k.force for k in ks), np.zeros(2))
@@ -271,6 +328,83 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
                              f"pins {d.p}, {d.x}, guide)", bodies, allk, (t1,), (nn, n1), reac,
                              (words(link, d.x, m1), f"the guide couple on {blk}: "
                               f"{couple:.6g} N m")))
+        elif kind == "RPR":
+            lever, s = d.lever, slot_of(d.pin)
+            b, a = P(d.pivot), P(d.pin)
+            n = slot_normal(s)
+            m = M(ks[lever], b)
+            arm = cross(a - b, n)
+            if abs(arm) < 1e-9 * max(1e-12, float(np.hypot(*(a - b)))):
+                raise UnsupportedError(f"the force polygon of the lever {lever} cannot close: "
+                                       f"the slot's normal at {d.pin} passes through the pivot "
+                                       f"{d.pivot}", file=file)
+            nval = -m / arm
+            slot[d.pin] = (nval, n)
+            nn = Found(f"N_{d.pin} on {lever}", lever, d.pin, n, nval, "moments",
+                       "normal to the slot")
+            fb = -(K(ks[lever]) + nn.force)
+            fv = float(np.hypot(*fb))
+            pin[(d.pivot, lever)] = fb
+            fo = Found(f"F_{d.pivot} on {lever}", lever, d.pivot,
+                       fb / fv if fv else np.array([1.0, 0.0]), fv, "polygon")
+            back = -nn.force
+            bv = float(np.hypot(*back))
+            ra = Found(f"R_{d.pin} on {s.carrier} (through the block)", s.carrier, d.pin,
+                       back / bv if bv else np.array([1.0, 0.0]), bv, "reaction")
+            out.append(Group(gi + 1, kind, f"group {gi + 1}: the slotted lever {lever} and the "
+                             f"block {d.pin} in its slot (RPR, pins {d.pin}, {d.pivot})",
+                             bodies, allk, (nn,), (fo,), (ra,),
+                             (f"moments about {d.pivot} of {lever}'s known forces: "
+                              f"{m + 0.0:.6g} N m (CCW); the slot's force at {d.pin} has arm "
+                              f"{arm * 1e3 + 0.0:.6g} mm: N = {nval + 0.0:.6g} N",)))
+        elif kind == "RRP, moving guide":
+            link, s = d.link, slot_of(d.x)
+            if s.carrier != link:
+                raise _refuse(f"a pin in a moving slot carried by another body than its link "
+                              f"({s.carrier})", d.x, file)
+            x = P(d.x)
+            u = x - P(d.p)
+            ln = float(np.hypot(*u))
+            u = u / ln
+            n = slot_normal(s)
+            m1 = M(ks[link], x)
+            t1 = Found(f"F_{d.p}^t on {link}", link, d.p, perp(u), m1 / ln, "moments")
+            a, c = _solve2(u, n, -(K(ks[link]) + t1.force), file,
+                           f"the group {link}, block {d.x} in the slot of {d.lever}")
+            n1 = Found(f"F_{d.p}^n on {link}", link, d.p, u, a, "polygon")
+            nn = Found(f"N_{d.x} from {d.lever}", link, d.x, n, c, "polygon")
+            pin[(d.p, link)] = t1.force + n1.force
+            slot[d.x] = (-c, n)
+            r = -nn.force
+            rv = float(np.hypot(*r))
+            reac = (Found(f"R_{d.x} on block {d.x}", link, d.x,
+                          r / rv if rv else np.array([1.0, 0.0]), rv, "reaction"),)
+            out.append(Group(gi + 1, kind, f"group {gi + 1}: {link} and the block {d.x} in the "
+                             f"slot of {d.lever} (RRP on a moving guide, pins {d.p}, {d.x})",
+                             bodies, allk, (t1,), (nn, n1), reac,
+                             (words(link, d.x, m1),)))
+        elif kind == "RPP":
+            yoke, s = d.x, slot_of(d.pin)
+            y = P(yoke)
+            ns = slot_normal(s)
+            ng = perp(np.array(scene.model.guide[yoke].line.direction))
+            sval, nval = _solve2(ns, ng, -K(ks[yoke]), file, f"the yoke {yoke}")
+            slot[d.pin] = (sval, ns)
+            couple = -(M(ks[yoke], y) + cross(P(d.pin) - y, sval * ns)) + 0.0
+            guide[yoke] = (nval, ng, couple)
+            nsl = Found(f"N_{d.pin} on yoke {yoke}", yoke, d.pin, ns, sval, "polygon")
+            nn = Found(f"N_{yoke} (guide)", yoke, yoke, ng, nval, "polygon")
+            back = -nsl.force
+            bv = float(np.hypot(*back))
+            ra = Found(f"R_{d.pin} on {s.carrier} (through the block)", s.carrier, d.pin,
+                       back / bv if bv else np.array([1.0, 0.0]), bv, "reaction")
+            out.append(Group(gi + 1, kind, f"group {gi + 1}: the yoke {yoke} and the block "
+                             f"{d.pin} in its slot (RPP, Scotch yoke)", bodies, allk, (),
+                             (nsl, nn), (ra,),
+                             (f"the guide couple on {yoke}: {couple:.6g} N m (moments about "
+                              f"{yoke})",)))
+        elif kind == "triad":
+            out.append(_triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints))
         elif kind == "crank":
             body = d.link
             o = P(d.pivot)
@@ -309,7 +443,159 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
             ground[lab] = -total
         else:
             pin[(lab, cs[0])] = -total
-    return ForcePolygons(st.name, tuple(out), pin, ground, guide, effort)
+    return ForcePolygons(st.name, tuple(out), pin, ground, guide, effort, slot, tuple(joints))
+
+
+def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints) -> Group:
+    """The class-III group: normal components by moments about the corners, the along-link
+    component of the link off the Assur point S by moments about S, the other two closing.
+    A plate that is a triangle of links is then solved as a truss, joint by joint
+    (:func:`_plate_truss`)."""
+    legs = [(d.link_b, d.ob, d.b), (d.link_c, d.oc, d.c), (d.link_x, d.ox, d.x)]
+    us, ts, ms = [], [], []
+    for link, o, c in legs:
+        u = P(c) - P(o)
+        ln = float(np.hypot(*u))
+        us.append(u / ln)
+        m = M(ks[link], P(c))
+        ms.append(m)
+        ts.append(Found(f"F_{o}^t on {link}", link, o, perp(u / ln), m / ln, "moments"))
+    # S where two links' lines meet, the pair furthest from parallel (AB, DC unless worse)
+    i, j = max(((0, 1), (0, 2), (1, 2)), key=lambda p: abs(cross(us[p[0]], us[p[1]])))
+    k = 3 - i - j
+    oi, oj, ok = (P(legs[q][1]) for q in (i, j, k))
+    al, _ = _solve2(us[i], -us[j], oj - oi, file, f"the triad {d.plate}: links "
+                    f"{legs[i][0]}, {legs[j][0]}")
+    s = oi + al * us[i]
+    ktot = sum((K(ks[b]) for b in bodies), np.zeros(2)) + sum((t.force for t in ts),
+                                                              np.zeros(2))
+    mtot = sum((M(ks[b], s) for b in bodies), 0.0) + sum(
+        (cross(P(legs[q][1]) - s, ts[q].force) for q in range(3)), 0.0)
+    arm = cross(ok - s, us[k])
+    size = max(float(np.hypot(*(P(c) - P(o)))) for _, o, c in legs)
+    if abs(arm) < 1e-9 * size:
+        raise UnsupportedError(f"the force polygon of the triad {d.plate} cannot close: the "
+                               f"line of {legs[k][0]} passes through the Assur point (a "
+                               f"dead centre)", file=file)
+    ak = -mtot / arm
+    ai, aj = _solve2(us[i], us[j], -(ktot + ak * us[k]), file, f"the triad {d.plate}")
+    along = {i: ai, j: aj, k: ak}
+    fn = {q: Found(f"F_{legs[q][1]}^n on {legs[q][0]}", legs[q][0], legs[q][1], us[q],
+                   along[q], "moments" if q == k else "polygon",
+                   "along the link, about the Assur point S" if q == k else "along the link")
+          for q in range(3)}
+    reac = []
+    for q, (link, o, c) in enumerate(legs):
+        pin[(o, link)] = ts[q].force + fn[q].force
+        r = -(K(ks[link]) + pin[(o, link)])          # on the link at its corner
+        pin[(c, link)] = r
+        rv = float(np.hypot(*r))
+        reac.append(Found(f"R_{c} on {d.plate if d.ternary else 'the plate'}", d.plate, c,
+                          -r / rv if rv else np.array([1.0, 0.0]), rv, "reaction"))
+    moments_truss: tuple[str, ...] = ()
+    if not d.ternary:
+        members, moments_truss, js = _plate_truss(gi, d, legs, ks, P, K, M, pin, file, model)
+        reac += members
+        joints += js
+    sname = f"S ({legs[i][0]} × {legs[j][0]})"
+    moments = tuple(f"moments about {c} of {link}'s known forces: {ms[q] + 0.0:.6g} N m (CCW)"
+                    for q, (link, o, c) in enumerate(legs)) + (
+        f"moments about the Assur point {sname}: known {mtot + 0.0:.6g} N m, "
+        f"{fn[k].name} arm {arm * 1e3 + 0.0:.6g} mm: {ak + 0.0:.6g} N",) + moments_truss
+    plate = d.plate if d.ternary else "the triangle " + ", ".join(d.plate_links)
+    return Group(gi + 1, "triad", f"group {gi + 1}: the triad (class III) plate {plate}, "
+                 f"links {d.link_b}, {d.link_c}, {d.link_x} (corners {d.b}, {d.c}, {d.x})",
+                 bodies, allk, tuple(ts) + (fn[k],), (fn[j], fn[i]), tuple(reac), moments)
+
+
+def _plate_truss(gi, d, legs, ks, P, K, M, pin, file, model):
+    """A plate that is a triangle of links BC, CX, BX, once the corner forces of the binary
+    links are known: each plate link's end forces split into normal components (moments about
+    its other end) and one unknown along it (the other end's follows from the link's balance
+    along itself); the joint B's polygon closes on the two plate links there (two lines of
+    known direction), the joint C's gives the third link's, the joint X checks.  Returns the
+    plate links' end forces, the words, and each joint's polygon (a :class:`Group` of kind
+    'joint': the forces on the pin)."""
+    ends, axis, tn, lens = {}, {}, {}, {}
+    for name in d.plate_links:
+        a, b = model.bodies[name].a, model.bodies[name].b
+        u = P(b) - P(a)
+        ln = float(np.hypot(*u))
+        u = u / ln
+        ends[name], axis[name], lens[name] = (a, b), u, ln
+        tn[(name, a)] = perp(u) * M(ks[name], P(b)) / ln
+        tn[(name, b)] = -perp(u) * M(ks[name], P(a)) / ln
+    s: dict[str, float] = {}
+
+    def force(name, corner, sval):
+        """The force on the plate link ``name`` at ``corner`` with the axial unknown sval."""
+        a, _ = ends[name]
+        u = axis[name]
+        if corner == a:
+            return tn[(name, corner)] + sval * u
+        return tn[(name, corner)] - (sval + float(K(ks[name]) @ u)) * u
+
+    def at(corner):
+        return [n for n in d.plate_links if corner in ends[n]]
+
+    leg_of = {c: link for link, _, c in legs}
+    lines = []
+    for corner in (d.b, d.c, d.x):
+        known = pin[(corner, leg_of[corner])]
+        todo = [n for n in at(corner) if n not in s]
+        base = known + sum((force(n, corner, s[n]) for n in at(corner) if n in s),
+                           np.zeros(2))
+        coef = {n: force(n, corner, 1.0) - force(n, corner, 0.0) for n in todo}
+        zero = {n: force(n, corner, 0.0) for n in todo}
+        rhs = -(base + sum(zero.values(), np.zeros(2)))
+        if len(todo) == 2:
+            s[todo[0]], s[todo[1]] = _solve2(coef[todo[0]], coef[todo[1]], rhs, file,
+                                             f"the joint {corner} of the plate")
+            lines.append(f"the joint {corner}: {leg_of[corner]}'s force and the normal "
+                         f"components close on {todo[0]} and {todo[1]} along themselves")
+        elif len(todo) == 1:
+            c = coef[todo[0]]
+            s[todo[0]] = float(rhs @ c) / float(c @ c)
+            lines.append(f"the joint {corner}: its polygon gives {todo[0]} along itself")
+    js = []
+    found_at = {}
+    for corner in (d.b, d.c, d.x):
+        todo = [n for n in at(corner) if n not in found_at]
+        for n in todo:
+            found_at[n] = corner
+        leg = leg_of[corner]
+        ks_j = [Known(f"from {leg} at {corner}", "transmitted", leg, -pin[(corner, leg)],
+                      P(corner))]
+        normals, closing = [], []
+        for n in at(corner):
+            u = axis[n] if corner == ends[n][0] else -axis[n]
+            tv = -tn[(n, corner)]
+            normals.append(Found(f"F_{corner}^t from {n}", n, corner, perp(u),
+                                 float(tv @ perp(u)), "moments"))
+            ax = -(force(n, corner, s[n]) - tn[(n, corner)])       # on the pin, along n
+            fa = Found(f"F_{corner}^n from {n}", n, corner, u, float(ax @ u),
+                       "polygon", "along the link")
+            if found_at[n] == corner:
+                closing.append(fa)
+            else:
+                ks_j.append(Known(f"F_{corner}^n from {n} (its balance along itself)",
+                                  "transmitted", n, fa.force, P(corner)))
+        js.append(Group(gi + 1, "joint", f"group {gi + 1}: the joint {corner} of the plate "
+                        f"{', '.join(d.plate_links)}", tuple(at(corner)), tuple(ks_j),
+                        tuple(normals), tuple(closing), (),
+                        (f"the forces on the pin {corner}: {leg}'s, and each plate link's "
+                         f"normal component (moments about its other end) and its component "
+                         f"along itself" + (" — a check: nothing is left to find"
+                                            if not closing else ""),)))
+    out = []
+    for name in d.plate_links:
+        for corner in ends[name]:
+            f = force(name, corner, s[name])
+            pin[(corner, name)] = f
+            fv = float(np.hypot(*f))
+            out.append(Found(f"F_{corner} on {name}", name, corner,
+                             f / fv if fv else np.array([1.0, 0.0]), fv, "joint"))
+    return out, tuple(lines), js
 
 
 def handled(scene) -> str | None:

@@ -1,0 +1,258 @@
+"""The handout's sections for the drawing board's force methods: the force polygons per Assur
+group and Zhukovsky's lever, where the scene asks for them (``[handout] force_polygons``,
+``[handout] zhukovsky``).
+
+:func:`check` refuses, in one line naming the method and what the mechanism lacks, a scene
+asking for a method it does not support (the method's own refusal, prefixed with the key);
+:func:`sections` gives the HTML inserted before the handout's end (by
+:mod:`polygons.cli.handout`, as Klein's section is): per state, each group's finished force
+polygon (:func:`diagrams.forcepoly.group_drawings`) with the construction in words and the
+reactions it found, and the finished lever (:func:`diagrams.forcepoly.lever_drawings`) with
+every force's moment about the pole and the balancing effort.  Every number is a record of
+:mod:`polygons.forces.graphical` / :mod:`polygons.forces.zhukovsky` (which the tests hold
+equal to Newton–Euler and to the virtual work); nothing is recomputed here.  Text is escaped
+and typeset (:func:`diagrams.html.sym`).
+"""
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from polygons.errors import SceneError, UnsupportedError
+
+from .html import esc, inline_svg, svg_size, sym
+
+#: printed width available to a figure, mm (the portrait page's text width)
+WIDTH_MM = 180.0
+
+
+def asked(sol) -> tuple[bool, bool]:
+    """(force polygons, Zhukovsky's lever) as the scene's ``[handout]`` asks."""
+    ho = sol.scene.options.handout
+    return ho.force_polygons, ho.zhukovsky
+
+
+def _refused(key: str, e, file) -> UnsupportedError:
+    """The method's own one-line refusal, located at the key that asked for it."""
+    why = e if isinstance(e, str) else getattr(e, "reason", None) or str(e)
+    return UnsupportedError(f"{key} = true: {why}", file=file, where=f"handout.{key}")
+
+
+def check(sol):
+    """The force analysis the asked sections need (None when none is asked); refused in one
+    line when the scene has no loads or the mechanism is not one the method handles."""
+    polys, lever = asked(sol)
+    if not (polys or lever):
+        return None
+    from polygons.forces import analyse, has_forces, graphical, zhukovsky
+    scene = sol.scene
+    if not has_forces(scene):
+        key = "force_polygons" if polys else "zhukovsky"
+        raise SceneError(f"{key} = true asks for a force method, but the scene has no "
+                         f"[masses], [forces], [torques] or [springs]", file=scene.file,
+                         where=f"handout.{key}")
+    if polys:
+        try:
+            graphical.groups_of(scene)
+        except UnsupportedError as e:
+            raise _refused("force_polygons", e, scene.file) from None
+    an = analyse(scene)
+    for st in an.states:
+        if polys:
+            try:
+                graphical.construct(an, st)
+            except UnsupportedError as e:
+                raise _refused("force_polygons", e, scene.file) from None
+        if lever:
+            try:
+                zhukovsky.construct(an, st)
+            except UnsupportedError as e:
+                raise _refused("zhukovsky", e, scene.file) from None
+    return an
+
+
+# ---------------------------------------------------------------- numbers in words
+def _n(x: float) -> str:
+    """A force or moment as ``polygons forces`` prints it (6 significant figures)."""
+    s = f"{x:.6g}"
+    return s.replace("-", "−")
+
+
+def _deg(v) -> str:
+    return f"{math.degrees(math.atan2(v[1], v[0])) % 360.0:.2f}°"
+
+
+def effort_words(an, e: float) -> str:
+    """The balancing effort as ``polygons forces`` states it (8 significant figures)."""
+    from polygons.forces import effort
+    if effort.unit(an.model) == "N m":
+        sense = "CCW" if e > 0 else "CW" if e < 0 else ""
+        return f"{abs(e):.8g} N m {sense}".rstrip()
+    return f"{e:.8g} N".replace("-", "−")
+
+
+def _figure(stem: str, drawing, title: str) -> str:
+    """The finished drawing at its stated scale: its key and legend moved below it where
+    beside it they would be wider than the page and below it they are not
+    (:func:`diagrams.layout.restack`); a drawing wider than the page even so is reduced to
+    its width, and the note under it says so (its scale bar shrinks with it)."""
+    from .layout import restack
+    from .svg import to_svg
+    svg = to_svg(drawing)
+    w, _ = svg_size(svg)
+    if w > WIDTH_MM:
+        narrow = to_svg(restack(drawing, WIDTH_MM))
+        if svg_size(narrow)[0] <= WIDTH_MM:
+            svg, w = narrow, svg_size(narrow)[0]
+    note = ("" if w <= WIDTH_MM else
+            '<p class="figure-note">Reduced to the page width (its scale bar with it).</p>')
+    fig = inline_svg(svg, stem, "figure", min(w, WIDTH_MM), title)
+    return f'<figure class="diagram full">{fig}</figure>{note}\n'
+
+
+_MINUS = re.compile(r"(?<![\w])-(?=[\d.])")
+
+
+def _slug(name: str) -> str:
+    """An HTML id part for a state's name ('after 30 deg' → 'after-30-deg')."""
+    return re.sub(r"[^A-Za-z0-9]+", "-", name).strip("-") or "state"
+
+
+def _state_heading(an, st) -> str:
+    return f"<h3>{esc(st.name)}</h3>\n" if len(an.states) > 1 else ""
+
+
+def _polygons(an) -> str:
+    from polygons.forces import graphical
+    from . import forcepoly
+    out = ['<section id="force-polygons" class="forces">\n'
+           "<h2>Force polygons per Assur group</h2>\n"
+           "<p>The mechanism is taken apart into its Assur groups and solved as the drawing "
+           "board does, the group furthest from the driver first. Each group is cut off at "
+           "its outer pins and its loads, weights and inertia forces are applied — the "
+           "inertia force −m a<sub>G</sub> drawn through the point offset from G by "
+           "h = I<sub>G</sub> α / (m a<sub>G</sub>), so that it carries the inertia couple "
+           "too — with the forces the groups already solved pass on through shared pins. "
+           "The reaction at an outer pin is split into a component normal to its link, "
+           "found by moments about the link's other pin, and one along it; the group's "
+           "polygon then closes on the unknown sides. The crank comes last: its bearing "
+           "force closes its polygon and the input effort is the moment about its pivot."
+           "</p>\n"]
+    for st in an.states:
+        fp = graphical.construct(an, st)
+        figs = {}
+        for stem, d in forcepoly.group_drawings(an, st):
+            if getattr(d, "stage", None) is None:
+                figs[int(stem.rsplit("-", 1)[1])] = (stem, d)
+        out.append(_state_heading(an, st))
+        for g in fp.groups:
+            out.append(f'<div class="force-group" id="force-group-{_slug(st.name)}-{g.index}">'
+                       f"<h3>{sym(g.title[:1].upper() + g.title[1:])}</h3>\n"
+                       '<ul class="construction">\n')
+            for k in g.knowns:
+                if k.pos is not None and k.force.any():
+                    h = (f", offset h = {_n(k.offset * 1e3)} mm" if k.kind == "inertia"
+                         else "")
+                    out.append(f"<li>known: {sym(k.name)} = {_n(float(np.hypot(*k.force)))} "
+                               f"N ∠{_deg(k.force)} on {esc(k.body)}{esc(h)}</li>\n")
+                if k.couple:
+                    out.append(f"<li>known: {sym(k.name)}, a couple of {_n(k.couple)} N m "
+                               f"(CCW +) on {esc(k.body)}</li>\n")
+            for m in g.moments:            # a number's minus sign typeset as such
+                out.append(f"<li>{sym(_MINUS.sub('−', m))}</li>\n")
+            for f in g.normals:
+                out.append(f"<li>by moments: {sym(f.name)} = {_n(f.value)} N, normal to "
+                           f"the link</li>\n")
+            for f in g.closing:
+                if f.how == "effort":
+                    continue
+                d = f.force if f.value else f.direction
+                out.append(f"<li>the polygon closes on {sym(f.name)} = {_n(abs(f.value))} N "
+                           f"∠{_deg(d)}</li>\n")
+            for f in g.reactions:
+                if f.how == "reaction":
+                    out.append(f"<li>the diagonal gives {sym(f.name)} = {_n(f.value)} N "
+                               f"∠{_deg(f.direction)}</li>\n")
+            out.append("</ul>\n")
+            if g.index in figs:
+                stem, d = figs[g.index]
+                out.append(_figure(stem, d, f"Force polygon of group {g.index}"))
+            out.append("</div>\n")
+        out.append(f'<table class="answer forces" id="force-polygon-reactions-{_slug(st.name)}">'
+                   '\n<tr><th>pin'
+                   '</th><th>force on</th><th class="n">F<sub>x</sub> N</th><th class="n">'
+                   'F<sub>y</sub> N</th><th class="n">|F| N</th><th class="n">direction</th>'
+                   "</tr>\n")
+        for (lab, body), f in fp.pin.items():
+            out.append(f"<tr><td>{esc(lab)}</td><td>{esc(body)}</td>"
+                       f'<td class="n">{_n(float(f[0]))}</td><td class="n">{_n(float(f[1]))}'
+                       f'</td><td class="n">{_n(float(np.hypot(*f)))}</td>'
+                       f'<td class="n">{_deg(f) if f.any() else "–"}</td></tr>\n')
+        out.append("</table>\n")
+        diff = max([float(np.hypot(*(fp.pin[k] - v))) for k, v in st.ne.pin.items()
+                    if k in fp.pin], default=0.0)
+        from polygons.forces import effort
+        out.append(f'<p class="force-effort"><strong>{esc(effort.words(an.model))}: '
+                   f"{esc(effort_words(an, fp.effort))}</strong>; every reaction equals the "
+                   f"Newton–Euler solution's (largest difference {diff:.1e} N).</p>\n")
+    out.append("</section>\n")
+    return "".join(out)
+
+
+def _lever(an) -> str:
+    from polygons.forces import effort, zhukovsky
+    from . import forcepoly
+    out = ['<section id="zhukovsky" class="forces">\n<h2>Zhukovsky’s lever</h2>\n'
+           "<p>The velocity polygon turned 90° counter-clockwise about its pole o is a rigid "
+           "lever pivoted at o. Each force (inertia forces through their offset points) is "
+           "applied parallel to itself at the turned image of its point; a couple C on a link "
+           "AB as the pair ±C/AB normal to AB at a and b. A force's moment about o is minus "
+           "the power it delivers: the effort balancing the moments is the virtual work's."
+           "</p>\n"]
+    unit = effort.unit(an.model)
+    for st in an.states:
+        lv = zhukovsky.construct(an, st)
+        out.append(_state_heading(an, st))
+        if lv.unit_rate:
+            out.append("<p>The input is at rest: the lever is drawn on the velocity polygon "
+                       "of a unit input rate.</p>\n")
+        for stem, d in forcepoly.lever_drawings(an, st):
+            if getattr(d, "stage", None) is None:
+                out.append(_figure(stem, d, "Zhukovsky's lever"))
+        out.append(f'<table class="answer forces" id="zhukovsky-moments-{_slug(st.name)}">'
+                   '\n<tr><th>force</th>'
+                   '<th class="n">|F| N</th><th class="n">direction</th><th class="n">image '
+                   '(turned) m/s</th><th class="n">moment about o</th></tr>\n')
+        ext = max([float(np.hypot(*a.lever)) for a in lv.applied + lv.effort_forces]
+                  + [1e-300])
+        for a in lv.applied + lv.effort_forces:     # a rounding residue (1e-17) shown as 0
+            x, y = (0.0 if abs(c) < 1e-12 * ext else float(c) for c in a.lever)
+            img = f"({_n(x)}, {_n(y)})"
+            out.append(f"<tr><td>{sym(a.name)}</td><td class=\"n\">"
+                       f"{_n(float(np.hypot(*a.force)))}</td><td class=\"n\">"
+                       f"{_deg(a.force) if a.force.any() else '–'}</td><td class=\"n\">"
+                       f"{img}</td><td class=\"n\">{_n(a.moment + 0.0)}</td></tr>\n")
+        out.append("</table>\n")
+        vw = st.vw_effort
+        vw_text = ("" if vw is None else
+                   f"; by virtual work {esc(effort_words(an, vw))} (difference "
+                   f"{abs(lv.effort - vw):.1e} {esc(unit)})")
+        out.append(f'<p class="force-effort">Σ moments of the known forces about o = '
+                   f"{_n(lv.moment_sum)}; the moment of a unit effort = {_n(lv.unit_moment)}: "
+                   f"<strong>{esc(effort.words(an.model))}: "
+                   f"{esc(effort_words(an, lv.effort))}</strong>{vw_text}.</p>\n")
+    out.append("</section>\n")
+    return "".join(out)
+
+
+def sections(sol, an) -> str:
+    """The HTML sections (possibly empty) the scene asks for; ``an`` is :func:`check`'s."""
+    if an is None:
+        return ""
+    polys, lever = asked(sol)
+    return (_polygons(an) if polys else "") + (_lever(an) if lever else "")
+
+
+__all__ = ["check", "sections", "asked", "effort_words"]
