@@ -606,9 +606,15 @@ def asked_vectors(con: Construction) -> set[tuple[str, str]]:
     return out
 
 
+#: a legend longer than this (a large mechanism's hundreds of vectors) lists the asked
+#: quantities only and says how many more there are
+MAX_LEGEND_LINES = 40
+
+
 def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     """Vector lengths read off the drawing (mm ÷ scale) and the step's measured values;
-    the asked quantities (the scene's ``[[answers]]``) are marked 'asked'."""
+    the asked quantities (the scene's ``[[answers]]``) are marked 'asked'.  Beyond
+    :data:`MAX_LEGEND_LINES` lines only the asked ones are listed, with a count of the rest."""
     sc = lay.scale
     out = [(f"Scaled from the drawing ({sc.statement}):", "bold")]
     pts = [lay.P(v) for v in lay.con.vertices.values()]
@@ -618,6 +624,7 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     seen = set()
     asked = asked_vectors(lay.con)
     asked_m = {a.measure for a in lay.con.asked if a.measure is not None}
+    vectors: list[tuple[str, str]] = []
     for st, g in _geometry(lay):
         if st.kind != "arrow":
             continue
@@ -628,18 +635,24 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         val = sc.si(mm) / sc.factor
         what = "Coriolis 2ωv" if st.component == "coriolis" else st.label
         mark = "\u2003← asked" if (st.frm, st.to) in asked else ""
-        out.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
-                    f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
+        vectors.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
+                        f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
     for a in lay.con.asked:
         if a.zero:
-            out.append((f"{a.zero} = 0: no vector to draw\u2003← asked", "bold"))
-    if lay.con.measures:
+            vectors.append((f"{a.zero} = 0: no vector to draw\u2003← asked", "bold"))
+    measures = [(prose(sol, lay.con, measure_text(m, sol, lay.con, sc))
+                 + ("\u2003← asked" if m.number in asked_m else ""),
+                 "bold" if m.number in asked_m else "normal") for m in lay.con.measures]
+    if len(vectors) + len(measures) > MAX_LEGEND_LINES:   # a large mechanism: the asked only
+        left = sum(style != "bold" for _, style in vectors + measures)
+        vectors = [v for v in vectors if v[1] == "bold"]
+        measures = [m for m in measures if m[1] == "bold"]
+        vectors.append((f"… and {left} more (every value is in the solve table)", "normal"))
+    out += vectors
+    if measures:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))
-        for m in lay.con.measures:
-            mark = "\u2003← asked" if m.number in asked_m else ""
-            out.append((prose(sol, lay.con, measure_text(m, sol, lay.con, sc)) + mark,
-                        "bold" if mark else "normal"))
+        out += measures
     return out
 
 
