@@ -173,6 +173,12 @@ def _never_fits(d) -> bool:
             b = extent(g.items)
             if b is not None and b.y1 - b.y0 > room:
                 return True
+    # what does not shrink with the scale (heading, key, legend, the labels beyond the
+    # polygon's frame) is taller than the page leaves once the polygon is MIN_DRAWN_MM high
+    lay = d.meta.get("layout")
+    if lay is not None:
+        frame = lay.frame.y1 - lay.frame.y0
+        return d.height - frame + MIN_DRAWN_MM > room
     return False
 
 
