@@ -41,7 +41,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .errors import SceneError, UnsupportedError
+from .errors import SceneError, UnsupportedError, show
+from .reader import LABEL
 from .schema import Key, Table
 from .units import parse_quantity
 from .wheels import _moving_lines, _rim_lines, rolling, wheel_centres, wheel_point
@@ -228,7 +229,18 @@ def _q(value, dim, file, where):
         raise SceneError(f"cannot read {value!r} as a {dim}", file=file, where=where) from None
 
 
+def _label(value, file, where) -> str:
+    """A point label (a capital letter, then lower-case letters or digits), else refused in
+    one short line (the user's text shown cut)."""
+    if not isinstance(value, str) or not LABEL.match(value):
+        raise SceneError(f"{show(value)} is not a point label (a capital letter followed by "
+                         f"lower-case letters or digits, e.g. 'C' or 'O2')", file=file,
+                         where=where)
+    return value
+
+
 def _entry(table, name, label, file):
+    _label(label, file, name)
     where = f"{name}.{label}"
     if not isinstance(table, dict):
         raise SceneError(f"[{where}] must be a table", file=file, where=where)
@@ -243,10 +255,7 @@ def _entry(table, name, label, file):
         raise SceneError(f"the equivalent linkage needs {what} (centre = ..., radius = ...): "
                          f"without the curvature at the contact the instant's accelerations "
                          f"are not defined by this construction", file=file, where=where)
-    centre = table["centre"]
-    if not isinstance(centre, str) or not centre[:1].isupper():
-        raise SceneError(f"centre must be a point label such as \"K\", got {centre!r}",
-                         file=file, where=f"{where}.centre")
+    centre = _label(table["centre"], file, f"{where}.centre")
     radius = _q(table["radius"], "length", file, f"{where}.radius")
     if not (radius > 0 and math.isfinite(radius)):
         raise SceneError("radius must be positive", file=file, where=f"{where}.radius")
@@ -400,6 +409,7 @@ def _flat_arm(table, label, centre, radius, links, slots, data, file, where) -> 
 
 
 def _check_keys(table, name, label, file):
+    _label(label, file, name)
     where = f"{name}.{label}"
     if not isinstance(table, dict):
         raise SceneError(f"[{where}] must be a table", file=file, where=where)
@@ -435,7 +445,7 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
         motion = None
         if "opposite_velocity" in table:
             name_ = table.get("opposite")
-            if not (isinstance(name_, str) and name_[:1].isupper() and name_.isidentifier()):
+            if not (isinstance(name_, str) and LABEL.match(name_)):
                 raise SceneError("opposite_velocity moves the second plate: name it with a "
                                  "label, opposite = \"T\" (a capital letter, then letters or "
                                  "digits)", file=file, where=f"{where}.opposite")
@@ -518,9 +528,10 @@ def _rim(raw, wheel, radius, data, sliders, file, where) -> tuple:
     out = []
     for label, spec in raw.items():
         at = f"{where}.rim.{label}"
-        if not (isinstance(label, str) and label[:1].isupper() and label.isidentifier()):
-            raise SceneError(f"a rim point's label must be a capital letter with letters or "
-                             f"digits, got {label!r}", file=file, where=at)
+        if not (isinstance(label, str) and LABEL.match(label)):
+            raise SceneError(f"a rim point's label must be a capital letter with lower-case "
+                             f"letters or digits, got {show(label)}", file=file,
+                             where=f"{where}.rim")
         if label == wheel or label in used:
             raise SceneError(f"{label} is already a point of the mechanism: a wheel's point "
                              f"needs a label of its own", file=file, where=at)
