@@ -52,6 +52,7 @@ def check_answers(sol: Solution) -> list[AnswerCheck]:
         if ans.exact is not None:
             exact = ans.exact
             rel = abs(compared - exact) / abs(exact) if exact != 0 else abs(compared)
+            rel = rel if math.isfinite(rel) else None     # a subnormal exact value: no ratio
         out.append(AnswerCheck(ans, ours, compared, diff, within, rel))
     return out
 

@@ -798,3 +798,17 @@ def test_fuzz_large_valid_mechanisms(tmp_path):
                 data = json.loads(out)
                 assert len(data["links"]) == 2 * n + 1
                 assert data["min_intersection_angle_deg"] > 10.0
+
+
+def test_a_subnormal_exact_value_prints_no_infinite_ratio(tmp_path):
+    """Found by POLYGONS_FUZZ=20000 (mutant 17219): a force answer's exact value 5e-324 made
+    the relative difference inf in `solve` and `forces`; now it is shown as '-'."""
+    text = (CASES / "forces-actuator-four-bar.toml").read_text(encoding="utf-8")
+    text = text.replace("exact = -105.69311954785942", "exact = 5e-324")
+    assert "exact = 5e-324" in text
+    path = tmp_path / "subnormal.toml"
+    path.write_text(text, encoding="utf-8")
+    for cmd in ("solve", "forces"):
+        code, out, err = run_in_process([cmd, str(path)])
+        assert code == 0 and err == "", (cmd, err)
+        assert "inf" not in out.split() and "nan" not in out.split(), cmd

@@ -352,5 +352,6 @@ def check_force_answers(an: Analysis) -> list[ForceCheck]:
                     ans.tolerance * max(abs(ans.tutorial), abs(compared))
         if ans.exact is not None:
             rel = abs(compared - ans.exact) / abs(ans.exact) if ans.exact else abs(compared)
+            rel = rel if math.isfinite(rel) else None     # a subnormal exact value: no ratio
         out.append(ForceCheck(ans, ours, compared, diff, within, rel))
     return out
