@@ -649,6 +649,9 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         measures = [m for m in measures if m[1] == "bold"]
         vectors.append((f"… and {left} more (every value is in the solve table)", "normal"))
     out += vectors
+    if sol is not None and sol.scene.equivalents:        # a rolling wheel's ω, α, points
+        from .rolling import legend_rows
+        measures += legend_rows(sol, lay.con.diagram)
     if measures:
         out.append(("", "normal"))
         out.append(("From the construction:", "bold"))

@@ -281,3 +281,38 @@ def drawings(sol, scale=None, paper=None) -> list[Drawing]:
     solution stops before velocity)."""
     return [drawing(sol, q, scale, paper) for q in moving(sol.scene)
             if rolling(sol, q) is not None]
+
+
+def legend_rows(sol, diagram: str) -> list[tuple[str, str]]:
+    """Rows for a finished diagram's legend: each rolling wheel's ω (velocity) or α
+    (acceleration) from its no-slip condition(s), and the speed or acceleration of its named
+    points and of a cylinder's centre between plates (not vertices of the polygon), each
+    marked '← asked' when the scene's [[answers]] ask it."""
+    from polygons.quantities import quantity
+    from polygons.steps import sense
+    asked = {(a.q.fn, a.q.args[0]) for a in sol.scene.answers if len(a.q.args) == 1}
+    vel = diagram == "velocity"
+    rows = []
+    for q in sol.scene.equivalents:
+        if q.kind != "rolling" or rolling(sol, q) is None:
+            continue
+        fn = "omega" if vel else "alpha"
+        try:
+            w = quantity(sol, f"{fn}({q.at})")
+        except Exception:                     # noqa: BLE001 - not solved (velocity only)
+            continue
+        sym, unit = ("ω", "rad/s") if vel else ("α", "rad/s²")
+        how = "the no-slip conditions" if q.opposite else "no slip at the contact"
+        mark = (fn, q.at) in asked
+        rows.append((f"{sym}_{q.at} = {number(abs(w), 4)} {unit} {sense(w)} (wheel {q.at}, "
+                     f"{how})" + ("\u2003← asked" if mark else ""), "bold" if mark else "normal"))
+        points = [p for p, _, _ in q.rim] + ([q.at] if q.at not in sol.points else [])
+        f, u = ("v", "m/s") if vel else ("a", "m/s²")
+        for p in points:
+            mark = (f, p) in asked
+            how = (f"the centre of the cylinder {q.at}: the mean of its plates'" if p == q.at
+                   else f"a point of wheel {q.at}: {f}_{q.at} + {sym} × {q.at}{p}"
+                   + ("" if vel else f" − ω² {q.at}{p}"))
+            rows.append((f"{f}_{p} = {number(quantity(sol, f'{f}({p})'), 4)} {u} ({how})"
+                         + ("\u2003← asked" if mark else ""), "bold" if mark else "normal"))
+    return rows

@@ -396,3 +396,19 @@ def test_rim_refusals(rim, words):
 def test_stated_plate_and_radius_bounds(edit, words):
     with pytest.raises(PolygonsError, match=words):
         parse(STATED.read_text().replace(*edit))
+
+
+def test_the_wheels_asked_results_are_marked_in_the_legend():
+    """ω_W, α_W and a wheel's named points are not vertices of the polygons: the finished
+    diagram's legend lists them with their rule, marked '← asked' when asked."""
+    from diagrams import polygon
+    sol = solve(load_scene(CASE.parent / "rolling-wheel-driven.toml"))
+    rows = [t for t, _ in polygon.legend(polygon.layout(sol, "velocity"), sol)]
+    w = next(t for t in rows if t.startswith("ω_W"))
+    assert "7.793 rad/s CCW" in w and "no slip" in w and w.endswith("← asked")
+    sol = solve(load_scene(STATED))
+    rows = [t for t, _ in polygon.legend(polygon.layout(sol, "acceleration"), sol)]
+    aR = next(t for t in rows if t.startswith("a_R"))
+    assert "71.01" in aR and "− ω² BR" in aR and aR.endswith("← asked")
+    assert any(t.startswith("a_B") and "mean of its plates" in t for t in rows)
+    assert any(t.startswith("α_B") and "8 rad/s² CCW" in t for t in rows)
