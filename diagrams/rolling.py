@@ -124,6 +124,8 @@ def rim_items(sol, q, to_paper) -> tuple[list, list]:
     """The wheel's named points ([rolling.W] rim) as dots with their labels."""
     body, notes = [], []
     for label, _angle, _dist in q.rim:
+        if label in sol.points:        # a pin of a driven wheel: drawn with the links
+            continue
         got = wheel_point(sol, q, label)
         if got is None:
             continue
@@ -297,6 +299,9 @@ def legend_rows(sol, diagram: str) -> list[tuple[str, str]]:
         if q.kind != "rolling" or rolling(sol, q) is None:
             continue
         fn = "omega" if vel else "alpha"
+        if any(st.op in ("roll_omega", "roll_alpha") and st.args[0] == q.at
+               for st in sol.steps):          # a driven wheel: its rate is a measure step
+            continue
         try:
             w = quantity(sol, f"{fn}({q.at})")
         except Exception:                     # noqa: BLE001 - not solved (velocity only)
@@ -306,7 +311,8 @@ def legend_rows(sol, diagram: str) -> list[tuple[str, str]]:
         mark = (fn, q.at) in asked
         rows.append((f"{sym}_{q.at} = {number(abs(w), 4)} {unit} {sense(w)} (wheel {q.at}, "
                      f"{how})" + ("\u2003← asked" if mark else ""), "bold" if mark else "normal"))
-        points = [p for p, _, _ in q.rim] + ([q.at] if q.at not in sol.points else [])
+        points = [p for p, _, _ in q.rim if p not in sol.points] + (
+            [q.at] if q.at not in sol.points else [])
         f, u = ("v", "m/s") if vel else ("a", "m/s²")
         for p in points:
             mark = (f, p) in asked

@@ -326,6 +326,14 @@ def _primary(solution, bods: tuple[Body, ...]) -> dict[tuple[int, int], Centre]:
         e = s.line.at(pos)[1]
         d = canonical((-e[1], e[0]))
         block = model.body(s.block).title
+        if s.carrier == FRAME and model.body(s.block).kind == "wheel":
+            r = _wheel_radius(model.body(s.block).a, solution.scene)
+            W = pos[s.at]                         # rolling: the contact, at rest
+            known[(i, j)] = Centre(i, j, (names[i], names[j]),
+                                   _t((W[0] + r * e[1], W[1] - r * e[0])), None,
+                                   f"wheel {s.at} rolling: the contact with the fixed surface",
+                                   True, 0)
+            continue
         if s.carrier == FRAME:
             how = f"{block} on its guide: at infinity ⟂ the guide"
         elif s.prescribed:
@@ -613,6 +621,12 @@ def _propagate(solution, bods, found, motion, omegas, names, size) -> None:
         c = found[(1, n2)]
         motion[n2] = (drv.omega, _v0(drv.omega, c.point))
         omegas[n2] = Omega(n2, names[n2], drv.omega, None, "given (the driver)", "given")
+    elif model.body(drv.point).kind == "wheel":    # a driven wheel turns about its contact
+        w = -drv.velocity / _wheel_radius(drv.point, scene)
+        c = found[(1, n2)]
+        motion[n2] = (w, _v0(w, c.point))
+        omegas[n2] = Omega(n2, names[n2], w, None, "given (the driven wheel: ω = −v_W / r)",
+                           "given")
     else:
         e = model.guide[drv.point].line.at(pos)[1]
         u = (drv.velocity * e[0], drv.velocity * e[1])
@@ -727,3 +741,8 @@ def _f(x: float) -> str:
 
 __all__ = ["Body", "Centre", "Omega", "PointVelocity", "Centres", "FULL_BODIES", "bodies",
            "find_centres", "instant_centres", "pair_name", "sub"]
+
+
+def _wheel_radius(label, scene) -> float:
+    """The radius of the rolling wheel centred at ``label`` (a driven wheel's body)."""
+    return next(q.radius for q in scene.equivalents if q.kind == "rolling" and q.at == label)

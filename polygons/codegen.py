@@ -474,7 +474,24 @@ class _Steps:
         unit = _unit_of(s.diagram)
         return self.vector(s, vec, unit, ((f"{s.start}{s.end}", ("hypot", vec), unit),))
 
+    def roll_rate(self, s):
+        """A wheel rolling on a fixed line turns at ω = −(v_W · e)/r, α = −(a_W · e)/r (its
+        centre W moves along the equivalent guide ∥ the surface, e; the contact at rest)."""
+        L, W = s.args
+        e = self.slider_e(W)
+        r = self.g.param(lambda sc: next(q.radius for q in sc.equivalents
+                                         if q.kind == "rolling" and q.at == W))
+        along = self.dot(self.of(s.diagram, W), e)
+        val = self.g.let(f"-{along} / {r}")
+        vel = s.diagram == V
+        (self.omega if vel else self.alpha)[L] = val
+        unit, rate = ("m/s", "rad/s") if vel else ("m/s^2", "rad/s^2")
+        return {}, val, None, rate, ((s.reads or f"{self.names.pole}{self.names.of(W)}",
+                                      ("abs", along), unit),
+                                     (f"r_{L}", r, "m"), (s.quantity, val, rate))
+
     OPS = {
+        Op.ROLL_OMEGA: roll_rate, Op.ROLL_ALPHA: roll_rate,
         Op.CRANK_VELOCITY: crank_velocity, Op.SLIDER_DRIVE: slider_drive,
         Op.CENTRIPETAL: centripetal_op, Op.CRANK_TANGENTIAL: crank_tangential,
         Op.LINE_PERP: line_perp, Op.LINE_ALONG: line_along, Op.LINE_GUIDE: line_guide,

@@ -171,6 +171,8 @@ class Equivalent:
     opposite_motion: tuple[float, float] | None = None
     #: rolling: the wheel's named points, (label, angle CCW from +x about the centre, distance)
     rim: tuple[tuple[str, float, float], ...] = ()
+    #: rolling: the wheel is the input ([driver] wheel = label): its rim points may carry pins
+    driven: bool = False
     #: an oscillating flat-faced follower's arm (its face along it; ``face`` then ±1: the
     #: cam's side, left / right)
     arm: str | None = None
@@ -281,11 +283,17 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
         else data.get("sliders")
     out: list[Equivalent] = []
     slots = dict(data.get("slots", {})) if isinstance(data.get("slots", {}), dict) else None
+    wheel = _driven(data)
+    if wheel is not None and not (isinstance(raw["rolling"], dict) and wheel in raw["rolling"]):
+        raise SceneError(f"wheel = {show(wheel)} must name a [rolling] wheel", file=file,
+                         where="driver.wheel")
     for name in ("rolling", "bearing"):
         if not isinstance(raw[name], dict):
             raise SceneError(f"[{name}] must be a table of labels", file=file, where=name)
         for label, table in raw[name].items():
             out.append(_higher(name, label, table, file, sliders, slots, links, data))
+    if _driven(data) is not None:
+        data["driver"] = _wheel_driver(data["driver"], out, file)
     if slots:
         data["slots"] = slots
     for name in ("curved_slots", "cams"):
@@ -484,7 +492,8 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                           face=ang, surface=(x, y), on=plates["on"],
                           opposite=plates["opposite"], opposite_motion=motion,
                           rim=_rim(table.get("rim", {}), label, radius, data, sliders, file,
-                                   where))
+                                   where, driven=_driven(data) == label),
+                          driven=_driven(data) == label)
     bar, side = table["bar"], table["side"]
     if not isinstance(bar, str) or bar not in links:
         raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
@@ -509,7 +518,57 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                       face=1.0 if side == "left" else -1.0, surface=None)
 
 
-def _rim(raw, wheel, radius, data, sliders, file, where) -> tuple:
+def _driven(data) -> str | None:
+    """The label of the wheel the scene drives ([driver] wheel = "W"), else None."""
+    drv = data.get("driver")
+    return drv.get("wheel") if isinstance(drv, dict) and isinstance(drv.get("wheel"), str) \
+        else None
+
+
+def _wheel_driver(drv: dict, eqs, file) -> dict:
+    """[driver] wheel = "W", omega, sense (alpha, alpha_sense): the wheel rolling on a fixed
+    surface turns at ω, α; its centre is then the input slider on the equivalent guide,
+    v_W = ω k × (W − C) = −ω r along the surface, a_W = −α r (C the contact)."""
+    label = drv["wheel"]
+    q = next((e for e in eqs if e.kind == "rolling" and e.at == label), None)
+    if q is None:
+        raise SceneError(f"wheel = {show(label)} must name a [rolling] wheel", file=file,
+                         where="driver.wheel")
+    if q.on is not None or q.opposite is not None:
+        raise SceneError(f"the driven wheel {label} rolls on a fixed surface here: on and "
+                         f"opposite (moving plates) are not handled with a wheel driver",
+                         file=file, where="driver.wheel")
+    extra = set(drv) - {"wheel", "omega", "sense", "alpha", "alpha_sense"}
+    if extra:
+        raise SceneError(f"a wheel driver takes wheel, omega, sense, alpha, alpha_sense; not "
+                         f"{', '.join(sorted(map(show, extra)))}", file=file, where="driver")
+    from .topology import sense_in
+
+    def rate(key, sense_key, dim):
+        if key not in drv:
+            return 0.0
+        text, turn = sense_in(drv[key])
+        value = _q(text, dim, file, f"driver.{key}")
+        if sense_key in drv:
+            said = {"cw": -1, "clockwise": -1, "ccw": 1, "anticlockwise": 1,
+                    "counterclockwise": 1, "counter-clockwise": 1, "anti-clockwise": 1}.get(
+                        str(drv[sense_key]).lower())
+            if said is None or (turn is not None and turn != said):
+                raise SceneError(f"{sense_key} must be 'CW' or 'CCW' (once)", file=file,
+                                 where=f"driver.{sense_key}")
+            turn = said
+        if value < 0 or (turn is None and value != 0):
+            raise SceneError(f"give {key}'s magnitude and its sense in words ('4 rad/s CW')",
+                             file=file, where=f"driver.{key}")
+        return value * (turn or 0)
+    w = rate("omega", "sense", "angular_velocity")
+    al = rate("alpha", "alpha_sense", "angular_acceleration")
+    r = q.radius
+    return {"slider": label, "position": "0 m", "velocity": f"{-w * r!r} m/s",
+            "acceleration": f"{-al * r!r} m/s^2"}
+
+
+def _rim(raw, wheel, radius, data, sliders, file, where, driven=False) -> tuple:
     """[rolling.W] rim = { A = "90 deg", B = { angle = "0 deg", distance = "30 mm" } }: the
     wheel's named points (angle CCW from +x about the centre; on the rim unless a distance
     is given), checked: labels of their own."""
@@ -522,9 +581,10 @@ def _rim(raw, wheel, radius, data, sliders, file, where) -> tuple:
         if isinstance(t, dict):
             used |= set(t)
     used |= set(sliders) if isinstance(sliders, dict) else set()
-    for name in data.get("links", {}) if isinstance(data.get("links", {}), dict) else ():
-        if isinstance(name, str):
-            used |= set(_ends(name))
+    if not driven:      # a driven wheel's rim points may be the ends of links (its pins)
+        for name in data.get("links", {}) if isinstance(data.get("links", {}), dict) else ():
+            if isinstance(name, str):
+                used |= set(_ends(name))
     out = []
     for label, spec in raw.items():
         at = f"{where}.rim.{label}"

@@ -40,7 +40,8 @@ Vec = tuple[float, float]
 FRAME = "frame"
 
 #: every kind of body the model holds (``Body.kind``)
-BODY_KINDS = ("frame", "link", "lever", "block", "yoke", "pin-block", "collar", "cross-block")
+BODY_KINDS = ("frame", "link", "lever", "block", "yoke", "pin-block", "collar", "cross-block",
+              "wheel")
 #: every kind of pair: the lower pairs the model builds today, the higher ones to come
 PAIR_KINDS = ("turning", "sliding", "rolling", "cam")
 
@@ -208,7 +209,7 @@ class Mechanism:
 
 
 def build(*, ground, links, sliders, slots, points, prescribed, driver, crossing=None,
-          along_lever=lambda slot: False) -> Mechanism:
+          along_lever=lambda slot: False, wheel_pins=None) -> Mechanism:
     """The model of a scene's joint tables (its parsed records: ``links`` name → Link,
     ``sliders`` label → Guide, ``slots`` pin → Slot, ``points`` label → BodyPoint,
     ``prescribed`` point → Slide).  ``along_lever(slot)``: whether the slot runs along its
@@ -251,6 +252,10 @@ def build(*, ground, links, sliders, slots, points, prescribed, driver, crossing
             sliding.append(Sliding(g.pin, block, label,
                                    SlideLine(origin=label, angle=g.slot_angle),
                                    f"sliders.{label}.pin"))
+        elif label in (wheel_pins or {}):        # a driven rolling wheel and its rim pins
+            bodies.append(Body(label, "wheel", label, None,
+                               labels(label, *wheel_pins[label])))
+            sliding.append(Sliding(label, label, FRAME, fixed, f"sliders.{label}"))
         else:
             bodies.append(Body(label, "block", label, None, (label,)))
             sliding.append(Sliding(label, label, FRAME, fixed, f"sliders.{label}"))
@@ -301,7 +306,8 @@ KIND_WORDS = {
     "pin-block": "a pin sliding in a slot",
     "cross-block": "a pin sliding in the slots of two moving levers (crossing slots)",
     "collar": "a collar driven along a link (a "
-    "prescribed slide, a second input)", "turning": "a turning pair", "sliding": "a sliding "
+    "prescribed slide, a second input)", "wheel": "a driven wheel rolling on a fixed surface "
+    "(its centre on the equivalent guide, pins on its rim)", "turning": "a turning pair", "sliding": "a sliding "
     "pair", "rolling": "a rolling contact", "cam": "a cam contact"}
 #: every kind the model builds today (rolling and cam contact are to come)
 BUILT = frozenset(BODY_KINDS) | {"turning", "sliding"}

@@ -89,7 +89,8 @@ def worked(s: Step, scene, printed: bool = False) -> str:
 
 
 #: the ops that measure a link's rate, and its unit
-_RATES = {Op.OMEGA: "rad/s", Op.ALPHA: "rad/s²"}
+_RATES = {Op.OMEGA: "rad/s", Op.ALPHA: "rad/s²", Op.ROLL_OMEGA: "rad/s",
+          Op.ROLL_ALPHA: "rad/s²"}
 
 
 def _rate(t, unit: str, f, symbols: bool = False) -> str:

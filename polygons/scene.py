@@ -401,6 +401,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     # driver
     drv = data["driver"]
     r.table(drv, "driver", KEYS["driver"])
+    if "wheel" in drv:              # (contacts.rewrite turns a stated wheel into its input)
+        raise SceneError(f"wheel = {show(drv['wheel'])} needs its [rolling] table: "
+                         f"[rolling.W] radius, through, direction", file=file,
+                         where="driver.wheel")
     drv = topology.lever_as_crank(drv, r, data.get("slots", {}), data.get("links", {}))
     prescribed = {}
     if "slide" in drv:
@@ -513,7 +517,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                         points=points, prescribed=prescribed, driver=driver,
                         crossing=crossing,
                         along_lever=lambda slot: bool(slot.offset) or topology.guided_pin_in(
-                            links, driver, slot))
+                            links, driver, slot),
+                        wheel_pins={q.at: tuple(p for p, _, _ in q.rim)
+                                    for q in equivalents if q.kind == "rolling" and q.driven})
     # (every field of Scene, set at once; loads set below, before the scene is handed out)
     scene = record(Scene, file=file, title=title, source=MappingProxyType(dict(source)),
                    ground=MappingProxyType(ground), links=MappingProxyType(links),

@@ -130,6 +130,10 @@ TABLES: tuple[Table, ...] = (
         Key("lever", "link", "a slotted lever driven like a crank (the oscillating cylinder, "
                              "the rotary engine): needs a length in [links] and [slots.PIN] "
                              "lever = this lever", example='"O4Q"'),
+        Key("wheel", "label", "a wheel rolling without slipping on a fixed surface as the "
+                              "input ([rolling.W] with this label), turning at omega (sense), "
+                              "alpha (alpha_sense): links may be pinned to its named points "
+                              "([rolling.W] rim)", example='"W"'),
         Key("slide", "table", "a second input: a point moved along a link at a prescribed "
                               "sliding velocity and acceleration ([driver.slide])",
             example='{ point = "C", along = "OA", position = "300 mm", velocity = "1.5 m/s" }'),

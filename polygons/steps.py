@@ -56,6 +56,8 @@ class Op(StrEnum):
     SLIDE_VELOCITY = "slide_velocity"            # sliding velocity along a rotating slot
     SLIDE_ACCELERATION = "slide_acceleration"
     IMAGE = "image"                              # v = v_p + ω × r; a = a_p + α × r − ω² r
+    ROLL_OMEGA = "roll_omega"                    # a wheel rolling on a fixed line: ω = −v·e / r
+    ROLL_ALPHA = "roll_alpha"                    # α = −a·e / r
 
 
 class Component(StrEnum):

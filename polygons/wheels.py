@@ -172,7 +172,7 @@ def wheel_centres(sol, cs) -> list[dict]:
     n = len(cs.bodies)
     blocks = {b.labels[0]: b.number for b in cs.bodies if b.kind == "block"}
     for q in getattr(sol.scene, "equivalents", ()):
-        if q.kind != "rolling":
+        if q.kind != "rolling" or q.driven:     # a driven wheel is a body of the linkage
             continue
         h = rolling(sol, q)
         if h is None:

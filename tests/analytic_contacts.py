@@ -72,3 +72,27 @@ def oscillating_flat_follower(O, e, theta, omega, Q, rho, side, phi_near, offset
     p1 = -g_t / g_p
     p2 = -(g_tt + 2 * g_tp * p1 + g_pp * p1 * p1) / g_p
     return {"phi": phi, "omega": p1 * omega, "alpha": p2 * omega * omega}
+
+
+def wheel_rim_rod_collar(r, omega, alpha, phi, rho, L, xc, sign=1.0):
+    """A wheel of radius r rolling on the floor y = 0 (centre W = (0, r) now), turning at ω,
+    α (CCW +); a pin B at ρ, φ from W; a rod BC = L to a collar C on the vertical line x = xc
+    (above B when ``sign`` > 0).  v_W = −ω r, a_W = −α r along x; v_B = v_W + ω k × WB,
+    a_B = a_W + α k × WB − ω² WB; C from (C − B)·(C − B) = L², differentiated twice:
+    (C − B)·(v_C − v_B) = 0, (C − B)·(a_C − a_B) + |v_C − v_B|² = 0."""
+    W = np.array([0.0, r])
+    d = rho * np.array([math.cos(phi), math.sin(phi)])
+    B = W + d
+    vB = np.array([-omega * r, 0.0]) + omega * _k(d)
+    aB = np.array([-alpha * r, 0.0]) + alpha * _k(d) - omega ** 2 * d
+    dx = xc - B[0]
+    C = np.array([xc, B[1] + sign * math.sqrt(L * L - dx * dx)])
+    u = C - B
+    vC = (u @ vB) / u[1]                   # u·((0, vC) − vB) = 0
+    rel = np.array([0.0, vC]) - vB
+    aC = (u @ aB - rel @ rel) / u[1]
+    w_rod = (u[0] * rel[1] - u[1] * rel[0]) / (u @ u)
+    arel = np.array([0.0, aC]) - aB
+    a_rod = (u[0] * arel[1] - u[1] * arel[0]) / (u @ u)
+    return {"B": B, "C": C, "v_B": vB, "a_B": aB, "v_C": vC, "a_C": aC, "omega_BC": w_rod,
+            "alpha_BC": a_rod}

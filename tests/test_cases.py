@@ -104,6 +104,8 @@ OWN_EXACT_CHECK = {
                              "test_rolling_wheel_is_the_offset_slider_crank_and_turns_at_v_over_r"),
     "cam-oscillating-flat-follower": ("test_contacts.py",
                                       "test_oscillating_flat_follower_is_the_tangency_condition"),
+    "rolling-wheel-rim-pin": ("test_contacts_moving.py",
+                              "test_a_driven_wheel_moves_a_rod_from_a_pin_on_it"),
     "rolling-plates-stated": ("test_contacts_moving.py",
                               "test_plates_moved_at_stated_rates_as_books_state_them"),
     "rolling-cylinder-between-plates": ("test_contacts_moving.py",

@@ -412,3 +412,92 @@ def test_the_wheels_asked_results_are_marked_in_the_legend():
     assert "71.01" in aR and "− ω² BR" in aR and aR.endswith("← asked")
     assert any(t.startswith("a_B") and "mean of its plates" in t for t in rows)
     assert any(t.startswith("α_B") and "8 rad/s² CCW" in t for t in rows)
+
+
+RIM_PIN = CASE.parent / "rolling-wheel-rim-pin.toml"
+
+
+def _rim_pin(omega, alpha, phi, rho, L, xc, r=0.1):
+    return parse(f"""
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+BC = "{L!r} m"
+[driver]
+wheel = "W"
+omega = "{abs(omega)!r} rad/s {'CCW' if omega > 0 else 'CW'}"
+alpha = "{abs(alpha)!r} rad/s^2 {'CCW' if alpha > 0 else 'CW'}"
+[rolling.W]
+radius = "{r!r} m"
+through = ["0 mm", "0 mm"]
+direction = "0 deg"
+rim = {{ B = {{ angle = "{math.degrees(phi)!r} deg", distance = "{rho!r} m" }} }}
+[sliders.C]
+through = ["{xc!r} m", "0 m"]
+direction = "90 deg"
+[assembly]
+C = "C above B"
+""")
+
+
+def test_a_driven_wheel_moves_a_rod_from_a_pin_on_it():
+    """[driver] wheel: the collar's and the rod's motion equal the loop closed by hand
+    (tests/analytic_contacts.py wheel_rim_rod_collar), on the case and on random wheels; the
+    pin B is the image of the rigid wheel about W; a sweep follows the wheel as it rolls."""
+    from analytic_contacts import wheel_rim_rod_collar
+    from polygons.sweep import sweep
+    sol = solve(load_scene(RIM_PIN))
+    ex = wheel_rim_rod_collar(0.1, -4.0, -6.0, math.radians(150), 0.08, 0.3, 0.15)
+    exact = {"vs(C)": ex["v_C"], "as(C)": ex["a_C"], "omega(BC)": ex["omega_BC"],
+             "alpha(BC)": ex["alpha_BC"], "omega(W)": -4.0}
+    for ans in sol.scene.answers:
+        want = exact[ans.quantity]
+        assert abs(quantity(sol, ans.quantity) - want) < 1e-9 * abs(want), ans.quantity
+        assert abs(ans.exact - (abs(want) if ans.mode == "abs" else want)) < 1e-12 * abs(want)
+    _near(sol.points["B"].velocity, ex["v_B"])
+    _near(sol.points["B"].acceleration, ex["a_B"])
+    rng = random.Random(13)
+    done = 0
+    while done < 20:
+        omega, alpha = rng.uniform(-20, 20), rng.uniform(-50, 50)
+        phi, rho = rng.uniform(-math.pi, math.pi), rng.uniform(0.02, 0.1)
+        L, xc = rng.uniform(0.25, 0.5), rng.uniform(0.05, 0.2)
+        ex = wheel_rim_rod_collar(0.1, omega, alpha, phi, rho, L, xc)
+        if abs(ex["C"][1] - ex["B"][1]) < 0.3 * L:       # near the rod's toggle: skip
+            continue
+        sol = solve(_rim_pin(omega, alpha, phi, rho, L, xc))
+        _near(sol.points["C"].position, ex["C"], 1e-12)
+        assert abs(quantity(sol, "vs(C)") - ex["v_C"]) <= 1e-9 * max(1.0, abs(ex["v_C"]))
+        assert abs(quantity(sol, "as(C)") - ex["a_C"]) <= 1e-9 * max(1.0, abs(ex["a_C"]))
+        done += 1
+    # the sweep rolls the wheel: at s the pin has turned by −s/r about W, and the sweep's
+    # values at the scene's own position are the staged solve's
+    scene = load_scene(RIM_PIN)
+    sw = sweep(scene, inputs=[0.0, 0.01])
+    s0 = solve(scene)
+    assert abs(sw.pos["B"][0][0] - s0.points["B"].position[0]) < 1e-12
+    ex = wheel_rim_rod_collar(0.1, -4.0, -6.0, math.radians(150) - 0.01 / 0.1, 0.08, 0.3,
+                              0.15 - 0.01)              # the wheel 10 mm further on
+    assert abs(sw.pos["C"][1][1] - ex["C"][1]) < 1e-12
+
+
+@pytest.mark.parametrize("edit,words", [
+    (('wheel = "W"', 'wheel = "Q"'), "must name a \\[rolling\\] wheel"),
+    (('omega = "4 rad/s CW"', 'omega = "4 rad/s"'), "sense in words"),
+    (('alpha = "6 rad/s^2 CW"', 'alpha = "6 rad/s^2 CW"\nspeed = "1 m/s"'), "a wheel driver takes"),
+])
+def test_wheel_driver_refusals(edit, words):
+    with pytest.raises(PolygonsError, match=words):
+        parse(RIM_PIN.read_text().replace(*edit))
+
+
+def test_centres_of_a_driven_wheel_turn_it_about_its_contact():
+    """The driven wheel is body 2: I₁₂ is its contact with the floor (not a guide's point at
+    infinity), so the rod's ω by the centres is the polygon's."""
+    from polygons.centres import instant_centres
+    sol = solve(load_scene(RIM_PIN))
+    cs = instant_centres(sol)
+    c12 = next(c for c in cs.centres if (c.i, c.j) == (1, 2))
+    _near(c12.point, (0.0, 0.0), 1e-12)
+    w = {o.number: o.omega for o in cs.omegas}
+    assert abs(w[2] - (-4.0)) < 1e-12 and abs(w[3] - sol.links["BC"].omega) < 1e-9

@@ -10,7 +10,8 @@ dyad").
 """
 from __future__ import annotations
 
-from . import crank, crossing, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive, triad
+from . import (crank, crossing, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive, triad,
+               wheel_pin)
 from .crossing import Crossing
 from .triad import Triad
 from .guided import Guided
@@ -22,20 +23,21 @@ from .rpr import RPR
 from .rrp import RRP
 from .rrr import RRR
 from .slider_drive import SliderDriveDyad
+from .wheel_pin import WheelPin
 
 #: modules with ``driver(scene) -> dyad | None``
 DRIVERS = (crank, slider_drive)
 #: modules with ``matches(scene, placed) -> iterable of dyads`` (tried first in every pass)
 SLOT_KINDS = (rpr, slide)
 #: modules with ``claims(scene, x)`` and ``match(scene, x, placed, known) -> dyad | None``
-POINT_KINDS = (rpp, image, rrp, guided, crossing, rrr)
+POINT_KINDS = (wheel_pin, rpp, image, rrp, guided, crossing, rrr)
 #: modules with ``matches(scene, placed)``: groups of a higher class (a triad), tried when no
 #: dyad can be placed
 GROUP_KINDS = (triad,)
 
 Dyad = (CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP | Guided | SlideDyad
-        | Crossing | Triad)
+        | Crossing | Triad | WheelPin)
 
 __all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad", "Guided",
-           "SlideDyad", "Crossing", "Triad", "GROUP_KINDS",
+           "SlideDyad", "Crossing", "Triad", "WheelPin", "GROUP_KINDS",
            "DRIVERS", "SLOT_KINDS", "POINT_KINDS"]
