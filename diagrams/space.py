@@ -450,6 +450,13 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
         if drv.alpha:
             legend.append((f"α = {number(abs(drv.alpha))} rad/s² "
                            f"{'CCW' if drv.alpha > 0 else 'CW'}", "normal"))
+    elif scene.model.body(drv.point).kind == "wheel":    # a driven rolling wheel
+        r = next(q.radius for q in scene.equivalents if q.at == drv.point)
+        w, al = -drv.velocity / r, -drv.acceleration / r
+        legend.append((f"wheel {drv.point} rolling: ω = {number(abs(w))} rad/s "
+                       f"{'CCW' if w > 0 else 'CW' if w < 0 else ''}, α = {number(abs(al))} "
+                       f"rad/s² {'CCW' if al > 0 else 'CW' if al < 0 else ''}".rstrip(),
+                       "normal"))
     else:
         legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
                        f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))

@@ -51,9 +51,13 @@ class SliderDriveDyad:
     def emit(self, b: Builder) -> None:
         X = self.point
         x, pole, q = b.names.of(X), b.names.pole, b.q
+        wheel = getattr(b.scene.model.named.get(X), "kind", None) == "wheel"
+        say = (f"Draw the {b.what} of the wheel's centre {X} from the pole along the surface: "
+               f"rolling without slipping (its contact at rest) it is "
+               f"{'ω' if b.velocity else 'α'} × r." if wheel else
+               f"Draw the given {b.what} of the slider {X} from the pole along its guide.")
         b.add(Kind.VECTOR, Op.SLIDER_DRIVE, (X,), f"{pole}{x}", pole, x, "input",
-              f"{q}_{X}", f"{q}_{X} (given, along the guide)",
-              f"Draw the given {b.what} of the slider {X} from the pole along its guide.",
+              f"{q}_{X}", f"{q}_{X} (given, along the guide)", say,
               component=Component.GIVEN)
 
 
