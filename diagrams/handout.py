@@ -240,6 +240,16 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
             if yoke.carrier == lab:
                 txt += (f"; it carries a slot at {_g(math.degrees(yoke.line.angle))}° in "
                         f"which {yoke.at} slides")
+        if model.body(lab).kind == "wheel":           # a driven rolling wheel
+            r = next(q.radius for q in scene.equivalents if q.at == lab)
+            txt = (f"a wheel of radius {_fmt_len(r)} rolling without slipping on the fixed "
+                   f"surface at {_g(math.degrees(angle))}°; its centre at "
+                   f"({_g(through[0] * 1000)}, {_g(through[1] * 1000)}) mm")
+            rows.append((f"wheel {lab}", txt))
+            rows += [(f"pin {p}", f"on the wheel {lab}, {_fmt_len(d)} from its centre at "
+                                  f"{_g(math.degrees(a))}°")
+                     for q in scene.equivalents if q.at == lab for p, a, d in q.rim]
+            continue
         rows.append((f"slider {lab}", txt))
     for lab, bp in scene.points.items():
         if bp.along is not None:
@@ -258,6 +268,11 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
                                        f"(= {_g(rpm)} rev/min)"))
         rows.append(("α of the crank", "0 (constant speed)" if drv.alpha == 0 else
                      f"{_g(abs(drv.alpha))} rad/s² {sense(drv.alpha)}"))
+    elif model.body(drv.point).kind == "wheel":
+        r = next(q.radius for q in scene.equivalents if q.at == drv.point)
+        rows.append((f"input wheel {drv.point}",
+                     f"ω = {_g(abs(drv.velocity / r))} rad/s {sense(-drv.velocity)}, α = "
+                     f"{_g(abs(drv.acceleration / r))} rad/s² {sense(-drv.acceleration)}"))
     else:
         rows.append((f"input slider {drv.point}",
                      f"v = {_g(drv.velocity)} m/s, a = {_g(drv.acceleration)} m/s² along its "

@@ -501,3 +501,13 @@ def test_centres_of_a_driven_wheel_turn_it_about_its_contact():
     _near(c12.point, (0.0, 0.0), 1e-12)
     w = {o.number: o.omega for o in cs.omegas}
     assert abs(w[2] - (-4.0)) < 1e-12 and abs(w[3] - sol.links["BC"].omega) < 1e-9
+
+
+def test_the_key_states_a_driven_wheel_as_the_book_does():
+    """The handout's data table names the wheel, its input ω and α and its pin (not the
+    equivalent slider the solver moves)."""
+    from diagrams.handout import handout
+    text = handout(solve(load_scene(RIM_PIN)))
+    assert "input wheel W</th><td>ω = 4 rad/s CW, α = 6 rad/s² CW" in text
+    assert "pin B</th><td>on the wheel W, 80 mm from its centre at 150°" in text
+    assert "input slider W" not in text
