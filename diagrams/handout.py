@@ -28,6 +28,7 @@ from polygons.evaluate import Solution
 from polygons.narrate import worked
 from polygons.plan import Step
 from polygons.report import check_answers, sense
+from polygons.contacts import wheel_of
 from polygons.scene import Crank
 
 from .figures import Figures, cell_stage, cells, figures, stage_of, stage_width
@@ -241,14 +242,14 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
                 txt += (f"; it carries a slot at {_g(math.degrees(yoke.line.angle))}° in "
                         f"which {yoke.at} slides")
         if model.body(lab).kind == "wheel":           # a driven rolling wheel
-            r = next(q.radius for q in scene.equivalents if q.at == lab)
+            r = wheel_of(scene, lab).radius
             txt = (f"a wheel of radius {_fmt_len(r)} rolling without slipping on the fixed "
                    f"surface at {_g(math.degrees(angle))}°; its centre at "
                    f"({_g(through[0] * 1000)}, {_g(through[1] * 1000)}) mm")
             rows.append((f"wheel {lab}", txt))
             rows += [(f"pin {p}", f"on the wheel {lab}, {_fmt_len(d)} from its centre at "
                                   f"{_g(math.degrees(a))}°")
-                     for q in scene.equivalents if q.at == lab for p, a, d in q.rim]
+                     for p, a, d in wheel_of(scene, lab).rim]
             continue
         rows.append((f"slider {lab}", txt))
     for lab, bp in scene.points.items():
@@ -269,7 +270,7 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
         rows.append(("α of the crank", "0 (constant speed)" if drv.alpha == 0 else
                      f"{_g(abs(drv.alpha))} rad/s² {sense(drv.alpha)}"))
     elif model.body(drv.point).kind == "wheel":
-        r = next(q.radius for q in scene.equivalents if q.at == drv.point)
+        r = wheel_of(scene, drv.point).radius
         rows.append((f"input wheel {drv.point}",
                      f"ω = {_g(abs(drv.velocity / r))} rad/s {sense(-drv.velocity)}, α = "
                      f"{_g(abs(drv.acceleration / r))} rad/s² {sense(-drv.acceleration)}"))

@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 
 from polygons.contacts import rolling, wheel_point
+from polygons.steps import Op
 
 from . import scale as scales
 from .labels import Box, Placer, bounds
@@ -299,7 +300,7 @@ def legend_rows(sol, diagram: str) -> list[tuple[str, str]]:
         if q.kind != "rolling" or rolling(sol, q) is None:
             continue
         fn = "omega" if vel else "alpha"
-        if any(st.op in ("roll_omega", "roll_alpha") and st.args[0] == q.at
+        if any(st.op in (Op.ROLL_OMEGA, Op.ROLL_ALPHA) and st.args[0] == q.at
                for st in sol.steps):          # a driven wheel: its rate is a measure step
             continue
         try:

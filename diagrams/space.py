@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from polygons.evaluate import Solution, link_ends
+from polygons.contacts import wheel_of
 from polygons.scene import Crank
 from polygons.model import BUILT, check_handles
 
@@ -451,7 +452,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
             legend.append((f"α = {number(abs(drv.alpha))} rad/s² "
                            f"{'CCW' if drv.alpha > 0 else 'CW'}", "normal"))
     elif scene.model.body(drv.point).kind == "wheel":    # a driven rolling wheel
-        r = next(q.radius for q in scene.equivalents if q.at == drv.point)
+        r = wheel_of(scene, drv.point).radius
         w, al = -drv.velocity / r, -drv.acceleration / r
         legend.append((f"wheel {drv.point} rolling: ω = {number(abs(w))} rad/s "
                        f"{'CCW' if w > 0 else 'CW' if w < 0 else ''}, α = {number(abs(al))} "

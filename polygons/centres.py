@@ -36,6 +36,7 @@ from typing import Mapping
 
 from .errors import SceneError, UnsupportedError, show, suggest
 from .kennedy import SAME, canonical, kennedy, pair_name
+from .contacts import wheel_of
 from .model import BODY_KINDS, FRAME, check_handles
 from .scene import Crank
 from .steps import sense
@@ -745,4 +746,4 @@ __all__ = ["Body", "Centre", "Omega", "PointVelocity", "Centres", "FULL_BODIES",
 
 def _wheel_radius(label, scene) -> float:
     """The radius of the rolling wheel centred at ``label`` (a driven wheel's body)."""
-    return next(q.radius for q in scene.equivalents if q.kind == "rolling" and q.at == label)
+    return wheel_of(scene, label).radius

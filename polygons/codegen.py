@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .contacts import wheel_of
 from .dyads.base import ARRAY_TWIN
 from .errors import UnsupportedError
 from .plan import Plan
@@ -479,8 +480,7 @@ class _Steps:
         centre W moves along the equivalent guide ∥ the surface, e; the contact at rest)."""
         L, W = s.args
         e = self.slider_e(W)
-        r = self.g.param(lambda sc: next(q.radius for q in sc.equivalents
-                                         if q.kind == "rolling" and q.at == W))
+        r = self.g.param(lambda sc: wheel_of(sc, W).radius)
         along = self.dot(self.of(s.diagram, W), e)
         val = self.g.let(f"-{along} / {r}")
         vel = s.diagram == V

@@ -406,11 +406,7 @@ def _flat_arm(table, label, centre, radius, links, slots, data, file, where) -> 
         raise SceneError(f"{centre} is already a pin in [slots]", file=file, where=where)
     e = _q(table.get("face_offset", "0 mm"), "length", file, f"{where}.face_offset")
     off = e + (radius if side == "left" else -radius)
-    coincident = centre + "1"
-    n = 1
-    while coincident in str(data):         # a label the scene does not use
-        n += 1
-        coincident = f"{centre}{n}"
+    coincident = _fresh(centre, data)
     slots[centre] = {"lever": arm, "coincident": coincident, "offset": f"{off!r} m"}
     return Equivalent("flat-faced cam", label, centre, None, None, radius, arm=arm,
                       face=1.0 if side == "left" else -1.0)
@@ -507,15 +503,25 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                          f"circle)", file=file, where=where)
     if slots is None or label in slots:
         raise SceneError(f"{label} is already in [slots]", file=file, where=where)
-    coincident = label + "1"
-    n = 1
-    while coincident in str(data):         # a label the scene does not use
-        n += 1
-        coincident = f"{label}{n}"
+    coincident = _fresh(label, data)
     off = radius if side == "left" else -radius
     slots[label] = {"lever": bar, "coincident": coincident, "offset": f"{off!r} m"}
     return Equivalent("bearing", label, label, bar, None, radius, roller=None,
                       face=1.0 if side == "left" else -1.0, surface=None)
+
+
+def wheel_of(scene, label):
+    """The [rolling] entry whose wheel (centre) is ``label``, or None."""
+    return next((q for q in getattr(scene, "equivalents", ())
+                 if q.kind == "rolling" and q.at == label), None)
+
+
+def _fresh(base: str, data) -> str:
+    """A label ``base`` + digits that the scene does not use (the point under a pin)."""
+    n = 1
+    while f"{base}{n}" in str(data):
+        n += 1
+    return f"{base}{n}"
 
 
 def _driven(data) -> str | None:
@@ -542,7 +548,7 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
     if extra:
         raise SceneError(f"a wheel driver takes wheel, omega, sense, alpha, alpha_sense; not "
                          f"{', '.join(sorted(map(show, extra)))}", file=file, where="driver")
-    from .topology import sense_in
+    from .topology import _TURN_WORDS, sense_in
 
     def rate(key, sense_key, dim):
         if key not in drv:
@@ -550,9 +556,7 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
         text, turn = sense_in(drv[key])
         value = _q(text, dim, file, f"driver.{key}")
         if sense_key in drv:
-            said = {"cw": -1, "clockwise": -1, "ccw": 1, "anticlockwise": 1,
-                    "counterclockwise": 1, "counter-clockwise": 1, "anti-clockwise": 1}.get(
-                        str(drv[sense_key]).lower())
+            said = _TURN_WORDS.get(str(drv[sense_key]).lower())
             if said is None or (turn is not None and turn != said):
                 raise SceneError(f"{sense_key} must be 'CW' or 'CCW' (once)", file=file,
                                  where=f"driver.{sense_key}")
@@ -560,7 +564,7 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
         if value < 0 or (turn is None and value != 0):
             raise SceneError(f"give {key}'s magnitude and its sense in words ('4 rad/s CW')",
                              file=file, where=f"driver.{key}")
-        return value * (turn or 0)
+        return value * int(turn or 0)
     w = rate("omega", "sense", "angular_velocity")
     al = rate("alpha", "alpha_sense", "angular_acceleration")
     r = q.radius
@@ -742,4 +746,4 @@ def to_list(sol) -> list[dict]:
 
 
 __all__ = ["TABLES", "Equivalent", "rewrite", "report_lines", "to_list", "rolling",
-           "wheel_centres", "wheel_point"]
+           "wheel_centres", "wheel_point", "wheel_of"]

@@ -46,9 +46,7 @@ def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float
     fn, args = _parse(expr)
     if fn in ("omega", "alpha"):
         lr = sol.links.get(args[0])
-        length = lr.length if lr is not None else next(
-            e.radius for e in getattr(sol.scene, "equivalents", ())
-            if e.kind == "rolling" and e.at == args[0])
+        length = lr.length if lr is not None else contacts.wheel_of(sol.scene, args[0]).radius
         return ("velocity" if fn == "omega" else "acceleration"), abs(value) * length
     return ("velocity" if fn in ("v", "vs") else "acceleration"), abs(value)
 
@@ -78,7 +76,7 @@ def quantity(sol: Solution, expr: str) -> float:
         return np.array(value)
 
     def link(name):
-        if name not in sol.links and wheel(name) is not None:
+        if name not in sol.links and contacts.wheel_of(scene, name) is not None:
             return None
         if name not in sol.links:
             raise UnknownLabelError(f"unknown link {name!r} in {expr!r}: "
@@ -92,21 +90,15 @@ def quantity(sol: Solution, expr: str) -> float:
         raise SceneError(f"{x} and {y} are not on one link, so {expr!r} has no "
                          f"centripetal/tangential split", file=scene.file)
 
-    def wheel(label):
-        """The [rolling] entry whose wheel is ``label`` (None if there is none)."""
-        return next((e for e in getattr(scene, "equivalents", ())
-                     if e.kind == "rolling" and e.at == label), None)
-
     def wheel_value(label, what):
         """ω / α of the wheel (ω = (v₁ − v_W)/r; between plates (v₁ − v₂)/2r:
         :func:`contacts.rolling`)."""
-        h = contacts.rolling(sol, wheel(label))
-        key = what
-        if h is None or key not in h:
+        h = contacts.rolling(sol, contacts.wheel_of(scene, label))
+        if h is None or what not in h:
             need = "velocity" if what == "omega" else "acceleration"
             raise SceneError(f"{expr!r} needs the {need} polygon, which this scene does not solve "
                              f"(solve = {list(scene.solve)})", file=scene.file)
-        return float(h[key])
+        return float(h[what])
 
     if fn in ("v", "a"):
         kind = "velocity" if fn == "v" else "acceleration"
