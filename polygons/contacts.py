@@ -283,6 +283,10 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
         else data.get("sliders")
     out: list[Equivalent] = []
     slots = dict(data.get("slots", {})) if isinstance(data.get("slots", {}), dict) else None
+    drv = data.get("driver")
+    if isinstance(drv, dict) and "wheel" in drv and not isinstance(drv["wheel"], str):
+        raise SceneError(f"wheel must be the label of a [rolling] wheel, got "
+                         f"{show(drv['wheel'])}", file=file, where="driver.wheel")
     wheel = _driven(data)
     if wheel is not None and not (isinstance(raw["rolling"], dict) and wheel in raw["rolling"]):
         raise SceneError(f"wheel = {show(wheel)} must name a [rolling] wheel", file=file,

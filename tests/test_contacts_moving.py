@@ -483,6 +483,7 @@ def test_a_driven_wheel_moves_a_rod_from_a_pin_on_it():
 
 @pytest.mark.parametrize("edit,words", [
     (('wheel = "W"', 'wheel = "Q"'), "must name a \\[rolling\\] wheel"),
+    (('wheel = "W"', 'wheel = 7'), "wheel must be the label of a \\[rolling\\] wheel"),
     (('omega = "4 rad/s CW"', 'omega = "4 rad/s"'), "sense in words"),
     (('alpha = "6 rad/s^2 CW"', 'alpha = "6 rad/s^2 CW"\nspeed = "1 m/s"'), "a wheel driver takes"),
 ])
