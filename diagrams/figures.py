@@ -5,6 +5,7 @@ Used by :mod:`diagrams.handout`, the gallery's thumbnails and the interactive pa
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 from polygons.evaluate import Solution
@@ -19,7 +20,7 @@ PRINTED_LABEL = 2.5
 #: the scale bar's numbers on a reduced stage figure are printed at least this high (mm)
 PRINTED_SCALE_TEXT = 2.5
 #: ... but never drawn larger than this (mm), so a much-reduced figure's bar stays a bar
-MAX_SCALE_TEXT = 10.0
+MAX_SCALE_TEXT = 15.0
 #: labels of the stage figures are set at least this much larger than on the full-size drawings
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
@@ -224,33 +225,53 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
         last = trimmed(polygon.drawing(sol, lay, len(lay.con.steps)), drop)
         return stage_width(last.width, last.height) / last.width
 
+    def staged(lay):
+        """The stage figures and the smallest printed height of their labels (mm)."""
+        out, least = [], math.inf
+        for cell in cells(sol, diagram):
+            stage = cell_stage(sol, cell)
+            if stage is None:
+                continue
+            new = {s.number for s in cell if s.kind == "line"}
+            t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
+            k = stage_width(t.width, t.height) / t.width
+            for _ in range(3):      # the larger bar may enlarge the figure, reducing it more
+                # (a hundredth to spare for the printed width's rounding)
+                r = trimmed(readable_scale_bar(t, k * 0.99), drop)
+                k2 = stage_width(r.width, r.height) / r.width
+                if k2 >= k * 0.99:
+                    break
+                k = k2
+            out.append(r)
+            least = min([least] + [x.size * min(k2, 1.0) for x in _texts(r.groups)
+                                   if x.role in LABEL_ROLES])
+        return out, least
+
     smallest = min(polygon.LABEL_SIZE, polygon.LINE_LABEL_SIZE, polygon.VECTOR_LABEL_SIZE)
     ts = STAGE_TEXT_SCALE
     if final is not None:
         ts = max(ts, round(1.1 * PRINTED_LABEL / (smallest * min(reduction(final), 1.0)), 2))
-    for _ in range(3):
-        lay = polygon.layout(sol, diagram, scale, paper, ts)
-        printed = smallest * ts * min(reduction(lay), 1.0)
-        if printed >= PRINTED_LABEL - 1e-6:
-            break
-        ts = round(ts * PRINTED_LABEL / printed * 1.02, 2)
-    out = []
-    for cell in cells(sol, diagram):
-        stage = cell_stage(sol, cell)
-        if stage is None:
-            continue
-        new = {s.number for s in cell if s.kind == "line"}
-        t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
-        k = stage_width(t.width, t.height) / t.width
-        for _ in range(3):      # the larger bar may enlarge the figure, reducing it more
-            r = trimmed(readable_scale_bar(t, k * 0.999), drop)
-            k2 = stage_width(r.width, r.height) / r.width
-            if k2 >= k * 0.999:
-                break
-            k = k2
-        t = r
-        out.append(t)
+    for _ in range(3):      # checked on the figures drawn: a stage may be reduced more
+        lay = polygon.layout(sol, diagram, scale, paper, ts)     # than the last one, a
+        out, printed = staged(lay)                              # crowded label set smaller
+        if printed >= 1.01 * PRINTED_LABEL:     # (a hundredth for the printed width's
+            break                               # rounding)
+        ts = round(ts * PRINTED_LABEL / printed * 1.03, 2)
     return out
+
+
+#: the roles of a stage figure's labels that must print :data:`PRINTED_LABEL` mm high
+LABEL_ROLES = ("vertex", "line", "component")
+
+
+def _texts(items):
+    """The Text items among ``items`` (recursively)."""
+    from .model import Text
+    for it in items:
+        if isinstance(it, Text):
+            yield it
+        elif hasattr(it, "items"):
+            yield from _texts(it.items)
 
 
 def _as_new(d, steps: set[int]):

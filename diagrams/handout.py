@@ -205,6 +205,30 @@ def _fmt_len(si: float) -> str:
     return f"{_g(si * 1000.0)} mm"
 
 
+#: a data table longer than this many rows sets two short data side by side in a row
+#: (link OA | 100 mm | link AF | 300 mm), as books print a long list of lengths
+PAIRED_DATA = 8
+#: a datum of at most this many characters is short
+SHORT_DATUM = 28
+
+
+def _data_rows(rows: list[tuple[str, str]]) -> list[list[tuple[str, str]]]:
+    """The data table's rows: one datum a row, or, for a table of more than
+    :data:`PAIRED_DATA` data, two consecutive short data (:data:`SHORT_DATUM`) a row, in
+    the order given (read across, then down); a long datum has its row to itself."""
+    if len(rows) <= PAIRED_DATA:
+        return [[r] for r in rows]
+    def short(r):
+        return len(r[0]) + len(r[1]) <= SHORT_DATUM
+    out: list[list[tuple[str, str]]] = []
+    for r in rows:
+        if short(r) and out and len(out[-1]) == 1 and short(out[-1][0]):
+            out[-1].append(r)
+        else:
+            out.append([r])
+    return out
+
+
 def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
     scene = sol.scene
     doc.add(f'<section id="problem">\n<h2>{doc.sec()}. The problem</h2>\n')
@@ -280,8 +304,12 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
                      f"guide"))
     for lab, br in scene.assembly.items():
         rows.append((f"assembly of {lab}", br.text))
-    for a, b in rows:
-        doc.add(f"<tr><th scope=\"row\">{esc(a)}</th><td>{esc(plain_text(b))}</td></tr>\n")
+    for pair in _data_rows(rows):
+        cells = "".join(f"<th scope=\"row\">{esc(a)}</th><td>{esc(plain_text(b))}</td>"
+                        for a, b in pair)
+        if len(pair) == 1 and len(rows) > PAIRED_DATA:      # across the table
+            cells = cells.replace("<td>", '<td colspan="3">')
+        doc.add(f"<tr>{cells}</tr>\n")
     doc.add("</tbody>\n</table>\n")
     doc.add('<p class="note">Coordinates: x to the right, y up; angles counter-clockwise (CCW) '
             'from +x; CW = clockwise.</p>\n')
@@ -317,8 +345,8 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
             f"</figure>\n")
     scale_txt = figs.drawing[name].scale_statement if name in figs.drawing else ""
     if reduced is None:
-        msg = (f"Full size: printed at 100 % this drawing is at its stated scale "
-               f"({scale_txt}), so it can be laid over a drawing made at that scale."
+        msg = (f"Full size ({scale_txt}): printed at 100 %, it can be laid over a drawing "
+               f"made at that scale."
                if scale_txt else "Full size.")
         if name in figs.rescaled:
             msg += (f" (Drawn at {scale_txt} rather than {figs.rescaled[name][0]} so that it "
@@ -535,17 +563,28 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
             f'<p class="figure-note">{esc(note)}</p>\n</section>\n')
 
 
+def _and(words: list[str]) -> str:
+    """'O', 'O and Q', 'O, Q and D'."""
+    return words[0] if len(words) == 1 else ", ".join(words[:-1]) + " and " + words[-1]
+
+
 def _results(doc: _Doc, sol: Solution) -> None:
     scene = sol.scene
     doc.add(f'<section id="results">\n<h2>{doc.sec()}. Results</h2>\n')
+    # the fixed points in words, not as rows of zeros (their positions are in the data)
+    fixed = [lab for lab in sol.points if lab in scene.ground]
+    still = (f" {_and(fixed)} {'is' if len(fixed) == 1 else 'are'} fixed: no velocity, no "
+             f"acceleration." if fixed else "")
     doc.add('<p class="note">Read off the constructions above (exact to the precision of the '
             "arithmetic; a drawing gives them to about 1–2 %). Directions are angles CCW from "
-            "+x; senses of rotation CW/CCW.</p>\n")
+            f"+x; senses of rotation CW/CCW.{esc(still)}</p>\n")
     doc.add('<table class="answer" id="results-points">\n<thead><tr><th>point</th>'
             '<th class="n">x mm</th><th class="n">y mm</th><th class="n">velocity m/s</th>'
             '<th class="n">direction</th><th class="n">acceleration m/s²</th>'
             '<th class="n">direction</th></tr></thead>\n<tbody>\n')
     for lab, pr in sol.points.items():
+        if lab in fixed:
+            continue
         cells = [f"<td>{esc(lab)}</td>", f'<td class="n">{num(pr.position[0] * 1000)}</td>',
                  f'<td class="n">{num(pr.position[1] * 1000)}</td>']
         for vec in (pr.velocity, pr.acceleration):

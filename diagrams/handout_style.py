@@ -82,10 +82,12 @@ th, td { border-bottom: 0.2mm solid #999; padding: 0.5mm 2mm; text-align: left;
          vertical-align: top; }
 th { border-bottom: 0.4mm solid #000; font-weight: bold; }
 table.data th { border-bottom: 0.2mm solid #999; }
+table.data td + th { padding-left: 6mm; }
 td.n, th.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 td.blank { min-width: 35mm; border-bottom: 0.3mm solid #000; }
 ol.steps { list-style: none; padding: 0; margin: 0; }
-li.step { margin: 0 0 4mm 0; }
+li.step { margin: 0 0 4mm 0; orphans: 1; }  /* a step may start at a column's foot (its
+   number shows where it goes on): two lines kept there left a page 4/5 empty */
 /* the steps in three columns (a step may continue in the next column; its figure never
    breaks).  A finished diagram that does not fit what is left of a page floats to the next
    one and the next section fills the rest: its columns too, because the section is a table

@@ -222,6 +222,40 @@ def extent(items) -> Box | None:
 FURNITURE = ("heading", "key", "legend", "scale-bar", "caption")
 
 
+def _legend_in_two(key: Group | None, legend: Group | None, top: float, max_width: float
+                   ) -> tuple[Group, Group, float] | None:
+    """Key and legend below the drawing with the legend in two columns, split at one of its
+    blank lines (between its sections, as 'Scaled from the drawing' | 'From the
+    construction'): the first part at the left, the key over the second part at its right
+    (reading order kept: the legend's parts left to right).  (key, legend, bottom) of the
+    shortest such layout no wider than ``max_width``; None when the legend has no blank line
+    or none fits."""
+    if key is None or legend is None:
+        return None
+    blanks = [it.baseline for it in legend.items if isinstance(it, Text) and not it.text]
+    kb = extent(key.items)
+    row = LINE * LEGEND_SIZE
+    best = None
+    for y in blanks:
+        first = [it for it in legend.items if extent([it]) is None or extent([it]).y0 > y]
+        second = [it for it in legend.items if it not in first
+                  and not (isinstance(it, Text) and it.baseline == y)]
+        if not first or not second:
+            continue
+        fb, sb = extent(first), extent(second)
+        x2 = MARGIN + (fb.x1 - fb.x0) + GAP
+        if x2 + max(kb.x1 - kb.x0, sb.x1 - sb.x0) > max_width - MARGIN + 1e-9:
+            continue
+        k = key.moved(x2 - kb.x0, top - kb.y1)
+        s_top = top - (kb.y1 - kb.y0) - row
+        items = ([it.moved(MARGIN - fb.x0, top - fb.y1) for it in first]
+                 + [it.moved(x2 - sb.x0, s_top - sb.y1) for it in second])
+        bottom = min(top - (fb.y1 - fb.y0), s_top - (sb.y1 - sb.y0))
+        if best is None or bottom > best[2]:
+            best = (k, replace(legend, items=tuple(items)), bottom)
+    return best
+
+
 def restack(d: Drawing, max_width: float) -> Drawing:
     """``d`` (made by :func:`compose`) no wider than ``max_width`` mm if moving its key and
     legend from beside the drawing to below it achieves that (a portrait page's width); the
@@ -254,8 +288,17 @@ def restack(d: Drawing, max_width: float) -> Drawing:
         by = {k: (g if k == "heading" else g.moved(0.0, drop)) for k, g in by.items()}
     cb = extent(content)
     moved: dict[str, Group] = {}
-    # with the heading wrapped, is the key beside the drawing narrow enough?
-    if extent([*content, *by.values()]).x1 + MARGIN > max_width + 1e-9:
+    # the key and legend beside the drawing, moved up to it (GAP from what it draws: the
+    # content box it was composed in may be wider); with the heading wrapped, narrow enough?
+    beside = {n: by[n] for n in ("key", "legend")
+              if n in by and extent(by[n].items).x0 > cb.x1}
+    if beside:
+        shift = cb.x1 + GAP - min(extent(g.items).x0 for g in beside.values())
+        if shift < 0:
+            moved = {n: g.moved(shift, 0.0) for n, g in beside.items()}
+    if extent([*content, *(moved.get(n, g) for n, g in by.items())]).x1 + MARGIN \
+            > max_width + 1e-9:
+        moved = {}
         top = cb.y0 - 3.0
         x = MARGIN
         bottom = top
@@ -270,6 +313,9 @@ def restack(d: Drawing, max_width: float) -> Drawing:
             moved[name] = g.moved(x - b.x0, top - b.y1)
             bottom = min(bottom, top - (b.y1 - b.y0))
             x += w + GAP
+        split = _legend_in_two(by.get("key"), by.get("legend"), cb.y0 - 3.0, max_width)
+        if split is not None and split[2] > bottom + 1e-9:    # shorter so
+            moved["key"], moved["legend"], bottom = split
         below = bottom - 4.0
         for name in ("scale-bar", "caption"):
             g = by.get(name)

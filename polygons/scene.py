@@ -622,8 +622,9 @@ _RELATIONS = RELATIONS
 def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     if isinstance(spec, dict):
         r.table(spec, where, ("near",), required=("near",))
-        return Branch(label, f"{label} near {spec['near']}", "near",
-                      near=r.vec(spec["near"], where + ".near"))
+        near = r.vec(spec["near"], where + ".near")      # stated as the book would: in mm
+        mm = ", ".join(f"{v * 1000:.6g}".replace("-", "−") for v in near)
+        return Branch(label, f"{label} near ({mm}) mm", "near", near=near)
     text = r.string(spec, where)
     words = " ".join(text.split())
     # '{label} {rel} REF' or '{rel} REF' (a label starts upper-case, a relation lower-case)
