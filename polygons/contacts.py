@@ -271,11 +271,12 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
     data = dict(data)
     raw = {name: data.pop(name, {}) for name in NAMES}
     force = [t for t in FORCE_TABLES if t in data]
-    if force:
-        raise UnsupportedError(f"polygons forces does not handle a cam contact (a cam or a "
-                               f"curved slot, [{force[0]}] with [cams]/[curved_slots]): its "
-                               f"equivalent linkage gives the velocities and accelerations "
-                               f"only", file=file, where=force[0])
+    rolled = [name for name in ("rolling", "bearing") if raw[name]]
+    if force and rolled:
+        raise UnsupportedError(f"polygons forces does not handle a rolling contact "
+                               f"([{force[0]}] with [{rolled[0]}]): the equivalent slider of a "
+                               f"wheel gives its velocities and accelerations, not the "
+                               f"friction that makes it roll", file=file, where=force[0])
     links = dict(data.get("links", {})) if isinstance(data.get("links", {}), dict) else None
     if links is None:
         raise SceneError("[links] must be a table", file=file, where="links")
@@ -684,8 +685,10 @@ def report_lines(sol) -> list[str]:
     eqs = getattr(sol.scene, "equivalents", ())
     if not eqs:
         return []
-    lines = ["Equivalent linkage at this instant (valid for velocity and acceleration here "
-             "only):"]
+    cam = any(q.kind in ("cam", "curved slot", "flat-faced cam") for q in eqs)
+    lines = ["Equivalent linkage at this instant (valid here only: for velocity, "
+             + ("acceleration and the frictionless contact's force along the common normal):"
+                if cam else "acceleration):")]
     for q in eqs:
         lines.append(f"  {q.words}")
         p = sol.points.get(q.at)

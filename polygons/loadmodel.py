@@ -31,6 +31,12 @@ class Joint:
     ground: bool
 
 
+#: a cam's / curved slot's equivalent link stands for the contact: it carries no load
+EQUIVALENT_LINK = ("{0} is the equivalent link of the {1.kind} at {1.at}: it stands for the "
+                   "contact at this instant and carries no load or mass; put it on the cam or "
+                   "the follower")
+
+
 @dataclass(frozen=True)
 class SlotContact:
     pin: str            # the pin label (on ``carrier``)

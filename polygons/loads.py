@@ -43,8 +43,8 @@ from types import MappingProxyType
 from typing import Any, Callable, Mapping
 
 from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, show, suggest
-from .loadmodel import (AppliedForce, AppliedTorque, Efficiency, Flywheel, ForceAnswer,
-                        Friction, Joint, Loads, MassItem, Spring, bodies_of,
+from .loadmodel import (EQUIVALENT_LINK, AppliedForce, AppliedTorque, Efficiency, Flywheel,
+                        ForceAnswer, Friction, Joint, Loads, MassItem, Spring, bodies_of,
                         slot_contacts)
 from .loadeffort import EFFORT_KEY, parse_effort
 from .model import BUILT, check_handles
@@ -261,14 +261,18 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
 
     slots = slot_contacts(scene.model, members, file) if active else []
 
+    equivalent = {q.link: q for q in getattr(scene, "equivalents", ()) if q.link}
+
     def body_name(name, where) -> str:
         if not isinstance(name, str):
             raise SceneError(f"expected a link name or a slider point, got {name!r}", file=file,
                              where=where)
+        name = reversed_names.get(name, name) if name not in bodies else name
+        if name in equivalent:
+            raise SceneError(EQUIVALENT_LINK.format(name, equivalent[name]), file=file,
+                             where=where)
         if name in bodies:
             return name
-        if name in reversed_names:
-            return reversed_names[name]
         raise UnknownLabelError(f"unknown link or slider {name!r}: {suggest(name, bodies)}",
                                 file=file, where=where)
 
@@ -278,7 +282,7 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
         if label not in members:
             raise UnknownLabelError(f"unknown point {label!r}: {suggest(label, members)}",
                                     file=file, where=where)
-        carriers = members[label]
+        carriers = [c for c in members[label] if c not in equivalent]
         if on is not None:
             b = body_name(on, where.rsplit(".", 1)[0] + ".on")
             if b not in carriers:

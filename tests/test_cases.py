@@ -99,6 +99,8 @@ OWN_EXACT_CHECK = {
                     "forces-oscillating-cylinder", "forces-triad", "forces-triad-truss")},
     "cam-roller-follower": ("test_contacts.py", "test_roller_follower_is_the_slider_crank"),
     "cam-flat-follower": ("test_contacts.py", "test_flat_follower_is_the_scotch_yoke"),
+    "cam-roller-forces": ("test_cam_forces.py",
+                          "test_shipped_case_equals_the_follower_equation_of_motion"),
     "curved-slot-pin": ("test_contacts.py", "test_curved_slot_case_and_random_instances"),
     "rolling-wheel-driven": ("test_contacts.py",
                              "test_rolling_wheel_is_the_offset_slider_crank_and_turns_at_v_over_r"),

@@ -113,9 +113,12 @@ def test_refusals_in_words(edit, words):
     assert words in str(exc.value) and "\n" not in str(exc.value)
 
 
-def test_forces_refused_naming_the_method():
-    with pytest.raises(UnsupportedError, match="polygons forces does not handle a cam contact"):
-        parse(BASE + '\n[masses.OC]\nmass = "1 kg"\n')
+def test_forces_of_a_rolling_contact_refused_naming_the_method():
+    """(a cam's forces are analysed: tests/test_cam_forces.py)"""
+    text = (ROOT / "rolling-wheel-driven.toml").read_text().split("[[answers]]")[0]
+    with pytest.raises(UnsupportedError,
+                       match="polygons forces does not handle a rolling contact"):
+        parse(text + '\n[gravity]\ng = "9.81 m/s^2"\n')
 
 
 def test_a_flat_follower_needs_its_guide():

@@ -31,6 +31,7 @@ needs_numba = pytest.mark.skipif(not jit.available(), reason="numba is not insta
 
 def test_without_numba_the_python_program_is_kept(monkeypatch):
     monkeypatch.setattr(jit, "available", lambda: False)
+    monkeypatch.setattr(jit, "_MADE", {})   # (a kernel an earlier test in this worker made)
     scene = _four_bar(0.5, 0.1, 0.4, 0.3, 1.0, 10.0, 0.0)
     prog = compile_scene(scene, jit=True)
     assert prog.fn is prog.code.fn and isinstance(prog.params, tuple)

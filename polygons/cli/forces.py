@@ -13,6 +13,7 @@ from ..errors import PolygonsError, SceneError
 from ..forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
                       spring_state)
 from ..forces import effort, machine
+from ..forces.cams import words as cam_words
 from ..forces.model import position, unit_r
 from ..report import json_text, undefined_note
 from . import _graphical
@@ -153,6 +154,14 @@ def _state_dict(an: Analysis, st: State) -> dict:
                     for pin, (v, n) in ne.slot.items()]
     out["guides"] = [{"slider": lab, "normal_force": v, "normal": _vec(n), "couple": c}
                      for lab, (v, n, c) in ne.guide.items()]
+    out["cam_contacts"] = [
+        {"at": c.label, "kind": c.kind, "cam": c.cam, "follower": c.follower,
+         "force_on_follower": _vec(c.force), "magnitude": c.magnitude,
+         "direction_deg": _deg(c.force), "push": c.push, "contact_lost": c.lost,
+         "contact_point": None if c.contact is None else _vec(c.contact),
+         "pressure_angle_deg": (None if c.pressure_angle is None
+                                else math.degrees(c.pressure_angle)), "via": c.via}
+        for c in st.contacts]
     out["springs"] = []
     for s in model.springs:
         stt = spring_state(model, st.sol, s)
@@ -484,6 +493,9 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     for lab, (v, n, c) in ne.guide.items():
         out.append(f"  guide: on {lab} {abs(v):.6g} N normal to the guide, towards "
                    f"{_deg(n * v) or 0:.6g}°; couple {abs(c):.3g} N m {_sense(c)}")
+    for c in st.contacts:
+        if not c.lost:                  # (a lost contact is said among the warnings)
+            out.append(f"  {cam_words(c)}")
     for lab, link, n, s, m in _sections(an, st):
         out.append(f"  section {lab} of {link} (on the part from {model.bodies[link].a}): "
                    f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = {m:.6g} N m (CCW)")

@@ -49,6 +49,7 @@ FORCE_FUNCTIONS: dict[str, tuple[str, bool, tuple[int, int]]] = {
     "Tin_eta": ("torque", True, (0, 0)), "VR": ("fraction", False, (1, 1)),
     "MA": ("fraction", False, (1, 1)), "Tout_eta": ("torque", False, (1, 1)),
     "Fout_eta": ("force", False, (1, 1)),
+    "Fc": ("force", False, (1, 1)), "phi": ("angle", False, (1, 1)),
 }
 _KIN_FLIP = ("omega", "alpha")
 _NAME = frozenset(string.ascii_letters + "_")
@@ -232,6 +233,19 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
                 raise SceneError(f"{s.name} is torsional: its twist is not a length", file=file)
             return stt["extension"]
         return stt["tension"] if s.kind != "torsional" else flip * stt["torque"]
+    if fn in ("Fc", "phi"):         # a cam's contact force (+ a push) / pressure angle
+        c = next((c for c in st.contacts if c.label == args[0]), None)
+        if c is None:
+            raise UnknownLabelError(f"{args[0]!r} is not the follower's point of a [cams] or "
+                                    f"[curved_slots] contact: "
+                                    f"{suggest(args[0], [c.label for c in st.contacts])}",
+                                    file=file)
+        if fn == "phi":
+            if c.pressure_angle is None:
+                raise SceneError(f"the follower at {c.label} is at rest at this instant: its "
+                                 f"pressure angle is not defined", file=file)
+            return c.pressure_angle
+        return c.push if c.push is not None else c.magnitude
     if fn == "mass":
         return item(args[0]).mass
     if fn == "I":

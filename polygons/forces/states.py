@@ -8,6 +8,7 @@ from ..errors import SceneError, UnsupportedError
 from ..evaluate import Solution, solve
 from ..scene import Crank, Scene
 from . import effort
+from .cams import cam_contacts, words
 from .model import ForceModel, Inertia, friction_sense, inertias
 from .newton_euler import NEResult, newton_euler
 from .virtual_work import Share, virtual_work
@@ -27,6 +28,8 @@ class State:
     rotation: float = 0.0            # release: the driver's rotation from the release position
     extra: dict = field(default_factory=dict)
     warnings: list = field(default_factory=list)
+    #: the cam / curved-slot contacts' forces (:mod:`polygons.forces.cams`)
+    contacts: tuple = ()
 
 
 def driver_state(scene: Scene, *, angle=None, omega=None, alpha=None) -> Scene:
@@ -61,9 +64,16 @@ def kinetostatic(model: ForceModel, scene: Scene, name: str = "instant",
     vw, parts = virtual_work(model, sol, vsol, ne.loads)
     if model.parsed.effort is not None:       # the effort elsewhere: per its own rate
         vw, parts = _per_effort(model, vsol, vw, parts)
-    return State(name, sol, vsol, ne, inertias(model, sol), vw, parts,
-                 driver_applied(model, ne, vsol), warnings=_friction_warnings(model, sol, vsol,
-                                                                             motion))
+    return _contacts(model, State(name, sol, vsol, ne, inertias(model, sol), vw, parts,
+                                  driver_applied(model, ne, vsol),
+                                  warnings=_friction_warnings(model, sol, vsol, motion)))
+
+
+def _contacts(model: ForceModel, st: State) -> State:
+    """``st`` with its cam contacts' forces, and a warning where a cam would have to pull."""
+    st.contacts = cam_contacts(model, st.ne, st.sol)
+    st.warnings += [words(c) for c in st.contacts if c.lost]
+    return st
 
 
 def _per_effort(model, vsol, vw, parts):
@@ -97,9 +107,9 @@ def torque_driven(model: ForceModel, scene: Scene, name: str = "instant",
     alpha = ne.alpha
     sol = solve(driver_state(scene, alpha=alpha))
     vw, parts = virtual_work(model, sol, vsol, ne.loads)
-    st = State(name, sol, vsol, ne, inertias(model, sol), vw, parts,
-               driver_applied(model, ne, vsol),
-               warnings=_friction_warnings(model, sol, vsol, motion))
+    st = _contacts(model, State(name, sol, vsol, ne, inertias(model, sol), vw, parts,
+                                driver_applied(model, ne, vsol),
+                                warnings=_friction_warnings(model, sol, vsol, motion)))
     st.extra["alpha_in"] = alpha
     return st
 

@@ -1,0 +1,246 @@
+"""Forces through a cam: the contact force of the equivalent linkage against the follower's
+equation of motion along its guide and the cam's moment equation, written here by hand (never
+the solver), on the shipped case and on random cams; the oscillating flat face against the
+arm's moment equation with the tangency condition differentiated by hand; a lost contact, the
+refusals."""
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from analytic_contacts import oscillating_flat_follower
+from polygons.errors import PolygonsError, UnsupportedError
+from polygons.forces import analyse
+from polygons.scene import load_scene, parse_scene, parse_toml
+
+CASES = Path(__file__).resolve().parent.parent / "cases"
+
+
+def _scene(text: str):
+    return parse_scene(parse_toml(text, "x.toml"), file="x.toml")
+
+
+def roller_follower(e, theta, omega, alpha, radius, roller, m, P, g):
+    """An in-line translating roller follower on the +y axis through the shaft O, on a
+    circular arc (centre C at e from O, at θ) of ``radius``: L = radius + roller,
+    y = e sin θ + s, s = √(L² − e² cos² θ);  y' = e cos θ + e² cos θ sin θ / s,
+    y'' = −e sin θ + e² (cos² θ − sin² θ)/s − e⁴ cos² θ sin² θ / s³;  v = y' ω,
+    a = y'' ω² + y' α.  The contact force N along n = (R − C)/L:  N n_y − P − m g = m a
+    (P the spring's force downwards);  the cam's torque T = C × N n (its only other force,
+    at the massless cam's pivot O, has no moment)."""
+    c, s_ = math.cos(theta), math.sin(theta)
+    L = radius + roller
+    s = math.sqrt(L * L - e * e * c * c)
+    y = e * s_ + s
+    y1 = e * c + e * e * c * s_ / s
+    y2 = -e * s_ + e * e * (c * c - s_ * s_) / s - e ** 4 * c * c * s_ * s_ / s ** 3
+    v, a = y1 * omega, y2 * omega * omega + y1 * alpha
+    C = np.array([e * c, e * s_])
+    n = (np.array([0.0, y]) - C) / L
+    N = (P + m * g + m * a) / n[1]
+    T = float(C[0] * N * n[1] - C[1] * N * n[0])
+    phi = math.acos(abs(n[1]))
+    return {"N": N, "T": T, "v": v, "a": a, "phi": phi, "n": n}
+
+
+def _roller_text(e, theta, omega, alpha, radius, roller, m, P, g):
+    return f"""
+title = "random roller follower"
+[ground]
+O = ["0 m", "0 m"]
+[links]
+OC = "{e!r} m"
+[driver]
+crank = "OC"
+angle = "{theta!r} rad"
+omega = "{abs(omega)!r} rad/s"
+sense = "{'CCW' if omega > 0 else 'CW'}"
+alpha = "{abs(alpha)!r} rad/s^2"
+alpha_sense = "{'CCW' if alpha > 0 else 'CW'}"
+[sliders.R]
+through = ["0 m", "0 m"]
+direction = "90 deg"
+[cams.R]
+centre = "C"
+radius = "{radius!r} m"
+roller = "{roller!r} m"
+[assembly]
+R = "R above O"
+[masses.R]
+mass = "{m!r} kg"
+[gravity]
+g = "{g!r} m/s^2"
+[forces.Spring]
+at = "R"
+magnitude = "{P!r} N"
+direction = "-90 deg"
+"""
+
+
+def test_shipped_case_equals_the_follower_equation_of_motion():
+    """cases/cam-roller-forces.toml: its exact force answers are the closed form here."""
+    scene = load_scene(CASES / "cam-roller-forces.toml")
+    ex = roller_follower(0.025, math.radians(60), 20.0, 0.0, 0.04, 0.01, 2.0, 100.0, 9.81)
+    an = analyse(scene)
+    st = an.states[0]
+    (c,) = st.contacts
+    assert c.label == "R" and c.cam == "OC" and c.follower == "R" and not c.lost
+    assert abs(c.push - ex["N"]) < 1e-9 * ex["N"]
+    assert abs(st.ne.effort - ex["T"]) < 1e-9 * abs(ex["T"])
+    assert abs(c.pressure_angle - ex["phi"]) < 1e-12
+    want = {"Fc(R)": ex["N"], "Tin": abs(ex["T"]), "phi(R)": math.degrees(ex["phi"])}
+    got = {a.quantity: a.exact for a in scene.loads.answers}
+    assert set(want) <= set(got)
+    for q, w in want.items():
+        assert abs(got[q] - w) < 1e-9 * abs(w), q
+    kin = {a.quantity: a.exact for a in scene.answers}
+    assert kin == pytest.approx({"v(R)": abs(ex["v"]), "a(R)": abs(ex["a"])}, rel=1e-12)
+
+
+def test_random_roller_followers():
+    rng = np.random.default_rng(11)
+    done = 0
+    while done < 25:
+        e, radius, roller = rng.uniform(0.01, 0.03), rng.uniform(0.035, 0.06), \
+            rng.uniform(0.0, 0.015)
+        theta = rng.uniform(-math.pi, math.pi)
+        omega = rng.choice((-1, 1)) * rng.uniform(1, 30)
+        alpha = rng.uniform(-50, 50)
+        m, P, g = rng.uniform(0.2, 5), rng.uniform(0, 300), rng.choice((0.0, 9.81))
+        args = tuple(float(x) for x in (e, theta, omega, alpha, radius, roller, m, P, g))
+        ex = roller_follower(*args)
+        st = analyse(_scene(_roller_text(*args))).states[0]
+        (c,) = st.contacts
+        assert np.allclose(c.force, ex["N"] * ex["n"], rtol=1e-9, atol=1e-9 * abs(ex["N"]))
+        assert abs(c.push - ex["N"]) <= 1e-9 * max(1.0, abs(ex["N"]))
+        assert c.lost == (ex["N"] < 0)
+        assert abs(st.ne.effort - ex["T"]) <= 1e-9 * max(1.0, abs(ex["T"]))
+        done += 1
+
+
+def test_a_cam_that_would_have_to_pull_says_the_follower_leaves_it():
+    """The spring lifting the follower instead of holding it down: N < 0, said in a warning
+    and in the JSON (contact_lost); `Fc` is then negative."""
+    args = (0.025, math.radians(60), 20.0, 0.0, 0.04, 0.01, 2.0, -100.0, 0.0)
+    ex = roller_follower(*args)
+    assert ex["N"] < 0
+    st = analyse(_scene(_roller_text(*args))).states[0]
+    (c,) = st.contacts
+    assert c.lost and abs(c.push - ex["N"]) < 1e-9 * abs(ex["N"])
+    assert any("leaves the cam" in w for w in st.warnings)
+
+
+def test_translating_flat_face_is_the_scotch_yoke_equation():
+    """cam-flat-follower with a mass, gravity and a spring: N = P + m (g + a), a = −e ω² sin θ
+    (tests/analytic_contacts.flat_follower's closed form), vertical, at C's abscissa:
+    T = N · C_x."""
+    text = (CASES / "cam-flat-follower.toml").read_text().split("[[answers]]")[0] + """
+[masses.F]
+mass = "1.5 kg"
+[gravity]
+g = "9.81 m/s^2"
+[forces.Spring]
+at = "F"
+magnitude = "50 N"
+direction = "-90 deg"
+"""
+    st = analyse(_scene(text)).states[0]
+    e, th, w = 0.02, math.radians(30), 10.0
+    a = -e * w * w * math.sin(th)
+    N = 50.0 + 1.5 * (9.81 + a)
+    (c,) = st.contacts
+    assert c.kind == "flat-faced cam" and c.follower == "F" and c.push is None
+    assert np.allclose(c.force, (0.0, N), rtol=0, atol=1e-9 * N)
+    assert abs(st.ne.effort - N * e * math.cos(th)) < 1e-9 * N * e
+    assert c.pressure_angle == pytest.approx(0.0, abs=1e-12)
+
+
+def test_oscillating_flat_face_is_the_arm_moment_equation():
+    """cam-oscillating-flat-follower with a uniform arm (0.8 kg, I_Q = m l²/3), gravity and a
+    2 N m CW spring torque: the arm's moment about Q,  d·N − M_s − m g (G_x − Q_x)·… = I_Q α,
+    gives the push N at the contact d along the arm from Q (the face through Q); the input
+    torque is the power balance T ω = I_Q ω_a α_a + m g v_Gy − M_s ω_a."""
+    text = (CASES / "cam-oscillating-flat-follower.toml").read_text().split("[[answers]]")[0]
+    text += """
+[masses.QF]
+mass = "0.8 kg"
+[gravity]
+g = "9.81 m/s^2"
+[torques.Spring]
+on = "QF"
+torque = "2 N m"
+sense = "CW"
+"""
+    st = analyse(_scene(text)).states[0]
+    sol = st.sol
+    Q = np.array([0.1, 0.08])
+    C = 0.02 * np.array([math.cos(math.radians(30)), math.sin(math.radians(30))])
+    ex = oscillating_flat_follower((0, 0), 0.02, math.radians(30), 10.0, tuple(Q), 0.05, -1,
+                                   math.atan2(C[1] - Q[1], C[0] - Q[0]))
+    wa, aa, phi = ex["omega"], ex["alpha"], ex["phi"]
+    u = np.array([math.cos(phi), math.sin(phi)])
+    left = np.array([-u[1], u[0]])
+    m, l, g, Ms = 0.8, 0.15, 9.81, -2.0
+    IQ = m * l * l / 3
+    G = Q + 0.5 * l * u
+    # the contact: the foot of the perpendicular from C on the face (the arm line through Q)
+    d = float((C - Q) @ u)
+    contact = Q + d * u
+    assert (C - Q) @ left < 0                        # the cam on the arm's right
+    # moment about Q of the contact force push·left at `contact`: d·push
+    push = (IQ * aa - Ms + m * g * (G[0] - Q[0])) / d
+    (c,) = st.contacts
+    assert np.allclose(c.contact, contact, atol=1e-12)
+    assert abs(c.push - push) < 1e-9 * abs(push) and not c.lost
+    T = (IQ * wa * aa + m * g * wa * (G[0] - Q[0]) - Ms * wa) / 10.0
+    assert abs(st.ne.effort - T) < 1e-9 * abs(T)
+    assert sol.links["QF"].omega == pytest.approx(wa, rel=1e-9)
+
+
+def test_curved_slot_force_is_normal_to_the_slot():
+    """A pin in a circular-arc slot: the force on the pin's body lies along KP (normal to the
+    slot); a slot has two walls, so no push check."""
+    text = (CASES / "curved-slot-pin.toml").read_text().split("[[answers]]")[0]
+    scene0 = _scene(text)
+    body = next(n for n, b in scene0.links.items() if n != "KP")
+    text += f"""
+[masses.{body}]
+mass = "1 kg"
+[gravity]
+g = "9.81 m/s^2"
+"""
+    st = analyse(_scene(text)).states[0]
+    (c,) = st.contacts
+    K = np.array(st.sol.points["K"].position)
+    P = np.array(st.sol.points["P"].position)
+    n = (P - K) / np.hypot(*(P - K))
+    f = np.array(c.force)
+    assert abs(f[0] * n[1] - f[1] * n[0]) < 1e-9 * max(1.0, np.hypot(*f))
+    assert c.push is None and c.kind == "curved slot"
+
+
+@pytest.mark.parametrize("table,words", [
+    ('[masses.CR]\nmass = "1 kg"\n', "CR is the equivalent link of the cam at R"),
+    ('[forces.X]\nat = "R"\non = "CR"\nmagnitude = "1 N"\ndirection = "0 deg"\n',
+     "CR is the equivalent link"),
+])
+def test_no_load_on_the_equivalent_link(table, words):
+    text = _roller_text(0.025, 1.0, 20.0, 0.0, 0.04, 0.01, 2.0, 100.0, 9.81) + table
+    with pytest.raises(PolygonsError, match=words):
+        analyse(_scene(text))
+
+
+def test_rolling_contacts_with_loads_are_still_refused():
+    text = (CASES / "rolling-wheel-driven.toml").read_text().split("[[answers]]")[0]
+    with pytest.raises(UnsupportedError, match="does not handle a rolling contact"):
+        _scene(text + '\n[gravity]\ng = "9.81 m/s^2"\n')
+
+
+def test_force_answers_name_an_unknown_follower():
+    from polygons.forces import check_force_answers
+    text = _roller_text(0.025, 1.0, 20.0, 0.0, 0.04, 0.01, 2.0, 100.0, 9.81) + \
+        '[[force_answers]]\nquantity = "Fc(Q)"\nunit = "N"\nexact = 1.0\n'
+    an = analyse(_scene(text))
+    with pytest.raises(PolygonsError, match="not the follower's point"):
+        check_force_answers(an)
