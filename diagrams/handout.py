@@ -298,6 +298,15 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
         rows.append((f"input wheel {drv.point}",
                      f"ω = {_g(abs(drv.velocity / r))} rad/s {sense(-drv.velocity)}, α = "
                      f"{_g(abs(drv.acceleration / r))} rad/s² {sense(-drv.acceleration)}"))
+    elif drv.rod_rate is not None:        # the book gives the rod's ω and α
+        rod, w, al = drv.rod_rate
+        pts = sol.placement.points
+        a, b = (drv.point, rod.replace(drv.point, "", 1)) if rod.startswith(drv.point) else \
+            (rod.replace(drv.point, "", 1), drv.point)
+        at = (f"at {_g(math.degrees(math.atan2(pts[b][1] - pts[a][1], pts[b][0] - pts[a][0])))}"
+              f"° ({a} → {b}, CCW from +x); " if a in pts and b in pts else "")
+        rows.append((f"input rod {rod}", f"{at}ω = {_g(abs(w))} rad/s {sense(w)}, α = "
+                                         f"{_g(abs(al))} rad/s² {sense(al)}".rstrip()))
     else:
         rows.append((f"input slider {drv.point}",
                      f"v = {_g(drv.velocity)} m/s, a = {_g(drv.acceleration)} m/s² along its "

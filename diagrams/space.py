@@ -258,7 +258,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             symbols.append(Segment(_r(a), _r(b), "ground", cls="guide"))
             symbols += _hatch(a, b, (n[0] * side, n[1] * side))
             placer.hard(a, b, 0.4)
-            placer.hard(_add(a, n, side * 1.8), _add(b, n, side * 1.8), 0.2)
+            # the hatching: its strokes lean back past a (towards −e) by 1.6/√2
+            placer.hard(_add(_add(a, n, side * 0.9), e, -1.4), _add(b, n, side * 0.9), 1.1)
         yoke = next((y for y in scene.model.yoke_slots() if y.carrier == lab), None)
         pin = yoke.at if yoke is not None else None
         sd = yoke.line.direction if yoke is not None else None
@@ -340,17 +341,11 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     # the input: arc arrows for a crank, straight arrows beside a driven slider
     drv = scene.driver
     notes = []
-    if isinstance(drv, Crank) and drv.pivot in P and drv.tip in P:
-        c = P[drv.pivot]
-        L = math.hypot(P[drv.tip][0] - c[0], P[drv.tip][1] - c[1])
-        sense = 1.0 if drv.omega >= 0 else -1.0
-        arcs = [(drv.omega, "ω", "rad/s", "input", False)]
-        if drv.alpha:
-            arcs.append((drv.alpha, "α", "rad/s²", "input-alpha", True))
+    def arc_inputs(c, L, mid, arcs):
+        """Arc arrows about ``c`` (ω, then α outside it) centred on the direction ``mid``."""
         for i, (val, sym, unit, style, open_head) in enumerate(arcs):
             R = max(5.5, min(0.5 * L, 13.0)) + 3.2 * i
             sgn = 1.0 if val >= 0 else -1.0
-            mid = drv.angle
             span = math.radians(110)
             angs = [mid - sgn * span / 2 + sgn * span * j / 24 for j in range(25)]
             pts = [(c[0] + R * math.cos(a), c[1] + R * math.sin(a)) for a in angs]
@@ -368,6 +363,27 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             text = f"{sym} = {number(abs(val))} {unit} {'CCW' if val > 0 else 'CW'}"
             notes.append((text, [tip, pts[12], pts[0]],
                           math.atan2(tip[1] - c[1], tip[0] - c[0])))
+
+    rod = getattr(drv, "rod_rate", None)
+    if isinstance(drv, Crank) and drv.pivot in P and drv.tip in P:
+        c = P[drv.pivot]
+        L = math.hypot(P[drv.tip][0] - c[0], P[drv.tip][1] - c[1])
+        arcs = [(drv.omega, "ω", "rad/s", "input", False)]
+        if drv.alpha:
+            arcs.append((drv.alpha, "α", "rad/s²", "input-alpha", True))
+        arc_inputs(c, L, drv.angle, arcs)
+    elif rod is not None:   # the book gives the rod's ω and α: arcs about its middle (the
+        name, w, al = rod   # slider's v and a are answers then, not drawn)
+        a, b = next(((ln.a, ln.b) for ln in scene.links.values()
+                     if name in (ln.a + ln.b, ln.b + ln.a)), (None, None))
+        if a in P and b in P:
+            c = ((P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2)
+            L = math.hypot(P[b][0] - P[a][0], P[b][1] - P[a][1])
+            arcs = [(w, "ω", "rad/s", "input", False)]
+            if al:
+                arcs.append((al, "α", "rad/s²", "input-alpha", True))
+            arc_inputs(c, 0.5 * L, math.atan2(P[b][1] - P[a][1], P[b][0] - P[a][0])
+                       + math.pi / 2, arcs)
     elif not isinstance(drv, Crank) and drv.point in P:
         c = P[drv.point]
         e = scene.model.guide[drv.point].line.direction
@@ -459,8 +475,15 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
                        f"rad/s² {'CCW' if al > 0 else 'CW' if al < 0 else ''}".rstrip(),
                        "normal"))
     else:
-        legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
-                       f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))
+        if drv.rod_rate is not None:                 # the book gives the rod's ω and α
+            rod, w, al = drv.rod_rate
+            legend.append((f"rod {rod}: ω = {number(abs(w))} rad/s "
+                           f"{'CCW' if w > 0 else 'CW' if w < 0 else ''}, α = "
+                           f"{number(abs(al))} rad/s² "
+                           f"{'CCW' if al > 0 else 'CW' if al < 0 else ''}".rstrip(), "normal"))
+        else:
+            legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
+                           f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))
     for point, sl in scene.prescribed.items():      # the second input's values
         legend.append((f"collar {point}: {number(sl.position * 1000)} mm from "
                        f"{sl.p}, ṡ = {number(sl.velocity)} m/s, s̈ = "
@@ -479,9 +502,9 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
         key.append(("centre", "line of centres", False))
     if scene.model.guide:
         key.append(("guide-path", "guide path of a slider", False))
-    if isinstance(drv, Crank):
+    if isinstance(drv, Crank) or getattr(drv, "rod_rate", None) is not None:
         key.append(("input", "input ω (sense of rotation)", True))
-        if drv.alpha:
+        if drv.alpha if isinstance(drv, Crank) else drv.rod_rate[2]:
             key.append(("input-alpha", "input α (open head)", True))
     else:
         key.append(("input", "input velocity of the slider", True))

@@ -64,6 +64,9 @@ class SliderDrive:
     position: float
     velocity: float
     acceleration: float
+    #: (rod, ω, α) when the book states the rate as the rod's ('the bar AB turns at 2 rad/s
+    #: CW'): ``velocity``/``acceleration`` follow from it (topology.slider_rate_by_rod)
+    rod_rate: tuple[str, float, float] | None = None
 
 
 @dataclass(frozen=True)

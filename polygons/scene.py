@@ -133,6 +133,10 @@ class Scene:
 
 
 # ---------------------------------------------------------------- loading
+#: a slider driver whose rate the book states as its rod's ω and α
+ROD_RATE = ("rod_omega", "rod_sense", "rod_alpha", "rod_alpha_sense")
+
+
 def split_link_name(name: str, *, file: str | None = None, where: str | None = None
                     ) -> tuple[str, str]:
     """'BC' -> ('B', 'C'); 'O2P2' -> ('O2', 'P2').  A label is a capital letter followed by
@@ -463,8 +467,19 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                         alpha=alpha)
     else:
         r.table(drv, "driver", ("slider", "position", "velocity", "acceleration", "rod",
-                                "rod_angle"), required=("slider", "velocity"))
+                                "rod_angle") + ROD_RATE, required=("slider",))
         point = need_label(r.label(drv["slider"], "driver.slider"), "driver.slider")
+        if ("velocity" in drv) == ("rod_omega" in drv):
+            raise SceneError("give the slider driver's velocity (velocity = \"2 m/s\"), or its "
+                             "rod's angular velocity (rod_omega = \"2 rad/s CW\", with rod and "
+                             "rod_angle): exactly one", file=file, where="driver")
+        if any(k in drv for k in ROD_RATE) and not ("rod_omega" in drv and "rod" in drv):
+            raise SceneError("rod_sense, rod_alpha and rod_alpha_sense go with rod_omega, rod "
+                             "and rod_angle", file=file, where="driver")
+        if "rod_omega" in drv and "acceleration" in drv:
+            raise SceneError("with rod_omega, give the rod's rod_alpha (the slider's "
+                             "acceleration follows from it), not acceleration", file=file,
+                             where="driver.acceleration")
         if point not in sliders:
             raise SceneError(f"slider driver {point} needs a guide: add [sliders.{point}]",
                              file=file, where="driver.slider")
@@ -476,10 +491,15 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                     if "position" in drv else topology.slider_by_rod(
                         drv, r, point, sliders, links, ground, data.get("assembly", {}),
                         split_link_name))
-        driver = SliderDrive(point, position,
-                             r.quantity(drv["velocity"], "velocity", "driver.velocity"),
-                             r.quantity(drv.get("acceleration", "0 m/s^2"), "acceleration",
-                                        "driver.acceleration"))
+        if "rod_omega" in drv:          # the book gives the rod's ω and α
+            v, a, stated = topology.slider_rate_by_rod(drv, r, point, position, sliders, links,
+                                                       ground, split_link_name)
+            driver = SliderDrive(point, position, v, a, rod_rate=stated)
+        else:
+            driver = SliderDrive(point, position,
+                                 r.quantity(drv["velocity"], "velocity", "driver.velocity"),
+                                 r.quantity(drv.get("acceleration", "0 m/s^2"), "acceleration",
+                                            "driver.acceleration"))
 
     # assembly
     assembly: dict[str, Branch] = {}
@@ -487,6 +507,17 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         where = f"assembly.{label}"
         need_label(r.label(label, where), where)
         assembly[label] = _parse_branch(label, spec, r, need_label, where)
+
+    if isinstance(driver, SliderDrive) and "rod" in drv:
+        # the rod's stated angle says where its other end is: that closure, unless stated
+        name, _, other, (rx, ry) = topology.rod_of(drv, r, driver.point, links, split_link_name)
+        g = sliders[driver.point]
+        if other not in assembly and other not in ground:
+            assembly[other] = Branch(other, f"{other} where {name} at its stated angle puts it",
+                                     "near", near=(g.through[0] + driver.position
+                                                   * math.cos(g.angle) + rx,
+                                                   g.through[1] + driver.position
+                                                   * math.sin(g.angle) + ry))
 
     for label in drawn:
         need_label(label, f"drawn.{label}")

@@ -122,7 +122,16 @@ TABLES: tuple[Table, ...] = (
                            "near chooses)", example='"BA"'),
         Key("rod_angle", "string", "with rod: the rod's direction, first label → second, CCW "
                                    "from +x (or '30 deg CW')", example='"150 deg"'),
-        Key("velocity", "quantity", "slider driver: velocity along the guide",
+        Key("rod_omega", "string", "with rod and rod_angle, instead of velocity: the rod's "
+                                   "angular velocity as the book gives it ('the bar AB turns at "
+                                   "2 rad/s CW'; the sense here or in rod_sense); the slider's "
+                                   "velocity and acceleration follow", example='"2 rad/s CW"'),
+        Key("rod_sense", "string", "the sense of rod_omega, 'CW' or 'CCW'", example='"CW"'),
+        Key("rod_alpha", "string", "with rod_omega: the rod's angular acceleration (sense here "
+                                   "or in rod_alpha_sense)", example='"5 rad/s^2 CCW"'),
+        Key("rod_alpha_sense", "string", "the sense of rod_alpha, 'CW' or 'CCW'",
+            example='"CCW"'),
+        Key("velocity", "quantity", "slider driver: velocity along the guide (or rod_omega)",
             example='"2 m/s"', dimension="velocity", sign="positive along `direction`"),
         Key("acceleration", "quantity", "slider driver: acceleration along the guide",
             example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2",

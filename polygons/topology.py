@@ -322,22 +322,7 @@ def slider_by_rod(drv, r, point, sliders, links, ground, assembly, split) -> flo
     one position) or joined to a fixed pivot D (|S + L u − D| = l: two positions, the
     scene's [assembly] word for the slider or near = [...] chooses)."""
     where = "driver.rod"
-    if "rod" not in drv or "rod_angle" not in drv:
-        raise SceneError("give both rod = \"BA\" and rod_angle = \"30 deg\"", file=r.file,
-                         where="driver")
-    name = r.string(drv["rod"], where)
-    p, q = split(name, file=r.file, where=where)
-    link = links.get(name) or links.get(q + p)
-    if link is None or link.length is None or point not in (p, q):
-        raise SceneError(f"rod {name!r} must be a link with a length in [links] with the "
-                         f"slider {point} at one end", file=r.file, where=where)
-    text, turn = _turn_of(drv["rod_angle"]) if isinstance(drv["rod_angle"], str) else (
-        drv["rod_angle"], 1.0)
-    phi = turn * r.quantity(text, "angle", "driver.rod_angle")
-    L = link.length
-    sign = 1.0 if p == point else -1.0          # R − S = sign L u(φ)
-    other = q if p == point else p
-    ux, uy = sign * L * math.cos(phi), sign * L * math.sin(phi)
+    name, link, other, (ux, uy) = rod_of(drv, r, point, links, split)
     g = sliders[point]
     (tx, ty), (ex, ey) = g.through, (math.cos(g.angle), math.sin(g.angle))
 
@@ -379,6 +364,86 @@ def slider_by_rod(drv, r, point, sliders, links, ground, assembly, split) -> flo
                      f"({1e3 * (tx + s2 * ex):.4g}, {1e3 * (ty + s2 * ey):.4g}) mm; say which: "
                      f"[assembly] {point} = {{ near = [x, y] }}", file=r.file,
                      where=f"assembly.{point}")
+
+
+def rod_of(drv, r, point, links, split):
+    """(name, link, other end R, R − S) of a slider driver's rod at its stated angle."""
+    where = "driver.rod"
+    if "rod" not in drv or "rod_angle" not in drv:
+        raise SceneError("give both rod = \"BA\" and rod_angle = \"30 deg\"", file=r.file,
+                         where="driver")
+    name = r.string(drv["rod"], where)
+    p, q = split(name, file=r.file, where=where)
+    link = links.get(name) or links.get(q + p)
+    if link is None or link.length is None or point not in (p, q):
+        raise SceneError(f"rod {name!r} must be a link with a length in [links] with the "
+                         f"slider {point} at one end", file=r.file, where=where)
+    text, turn = _turn_of(drv["rod_angle"]) if isinstance(drv["rod_angle"], str) else (
+        drv["rod_angle"], 1.0)
+    phi = turn * r.quantity(text, "angle", "driver.rod_angle")
+    sign = 1.0 if p == point else -1.0          # R − S = sign L u(φ)
+    return (name, link, q if p == point else p,
+            (sign * link.length * math.cos(phi), sign * link.length * math.sin(phi)))
+
+
+def slider_rate_by_rod(drv, r, point, position, sliders, links, ground, split
+                       ) -> tuple[float, float, tuple[str, float, float]]:
+    """The slider driver's (velocity, acceleration) along its guide when the book gives the
+    angular velocity and acceleration of its rod ('the bar AB turns at 2 rad/s CW'), and
+    (rod, ω, α) as stated.  With r = R − S, e the slider's guide:
+
+        v_R − s e = ω k × r,   a_R − s̈ e = α k × r − ω² r,
+
+    R on a fixed guide f (v_R = t f, a_R = ť f) or turning about a fixed pivot D
+    (v_R = ω₂ k × d, a_R = α₂ k × d − ω₂² d, d = R − D): two linear equations each time,
+    singular only where the rod's ω does not fix the slider's speed (the rod momentarily
+    does not turn whatever the slider does: an engine's crank at right angles to the stroke)."""
+    name, link, other, (rx, ry) = rod_of(drv, r, point, links, split)
+    w, turn = rate_with_sense(drv, "rod_omega", "rod_sense", "angular_velocity", r)
+    if turn is None and w != 0.0:
+        raise SceneError("rod_omega needs its sense: rod_sense = \"CW\" or \"CCW\" (or in "
+                         "the value, '2 rad/s CW')", file=r.file, where="driver.rod_sense")
+    w *= turn or 1.0
+    a = 0.0
+    if "rod_alpha" in drv:
+        a, turn = rate_with_sense(drv, "rod_alpha", "rod_alpha_sense",
+                                  "angular_acceleration", r)
+        if turn is None and a != 0.0:
+            raise SceneError("rod_alpha needs rod_alpha_sense = \"CW\" or \"CCW\" (the sense "
+                             "of the angular acceleration)", file=r.file,
+                             where="driver.rod_alpha_sense")
+        a *= turn or 1.0
+    g = sliders[point]
+    e = (math.cos(g.angle), math.sin(g.angle))
+    kr = (-ry, rx)                                      # k × r
+    S = (g.through[0] + position * e[0], g.through[1] + position * e[1])
+    R = (S[0] + rx, S[1] + ry)
+    if other in sliders and sliders[other].pin is None:          # R on a fixed guide
+        f = (math.cos(sliders[other].angle), math.sin(sliders[other].angle))
+        col, extra = f, (0.0, 0.0)
+    else:
+        D = next((l2.b if l2.a == other else l2.a) for l2 in links.values()
+                 if other in (l2.a, l2.b) and l2 is not link and l2.length is not None
+                 and (l2.b if l2.a == other else l2.a) in ground)
+        d = (R[0] - ground[D][0], R[1] - ground[D][1])
+        col, extra = (-d[1], d[0]), d
+    det = -col[0] * e[1] + col[1] * e[0]                # det [col, −e]
+    size = math.hypot(*col) * math.hypot(rx, ry)
+    if abs(det) <= 1e-6 * size:         # (its angle is extreme there: a double root)
+        raise SceneError(f"at this angle the rod {name}'s ω does not fix the slider {point}'s "
+                         f"speed (the rod does not turn at this instant, whatever the slider's "
+                         f"speed): give the slider's velocity instead", file=r.file,
+                         where="driver.rod_omega")
+
+    def solve(bx, by):          # [col, −e] (x, s) = b  →  s
+        return (col[0] * by - col[1] * bx) / det
+    v = solve(w * kr[0], w * kr[1])
+    x = (w * kr[0] + v * e[0]) / col[0] if abs(col[0]) > abs(col[1]) else \
+        (w * kr[1] + v * e[1]) / col[1]                 # t, or ω₂ about D
+    # accelerations: the pivot's centripetal term −ω₂² d moves to the right-hand side
+    acc = solve(a * kr[0] - w * w * rx + extra[0] * x * x,
+                a * kr[1] - w * w * ry + extra[1] * x * x)
+    return v, acc, (name, w, a)
 
 
 def lever_as_crank(drv: dict, r, slots_raw, links_raw) -> dict:

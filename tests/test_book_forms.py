@@ -217,3 +217,118 @@ def test_the_engine_placed_by_its_rod_angle_matches_the_closed_form():
     for a in scene.answers:
         assert a.exact == pytest.approx(ref[a.quantity] if a.mode == "signed"
                                         else abs(ref[a.quantity]), rel=1e-12), a.quantity
+
+
+# ---------------------------------------------------------------- the rod's ω and α given
+def ladder_reference(L, phi, w, al):
+    """A bar AB, A on the x-axis, B on the y-axis, at φ (A → B, CCW from +x) turning at ω, α:
+    A = (−L cos φ, 0), B = (0, L sin φ);  ẋ_A = L sin φ ω,  ẍ_A = L sin φ α + L cos φ ω²,
+    ẏ_B = L cos φ ω,  ÿ_B = L cos φ α − L sin φ ω²."""
+    s, c = math.sin(phi), math.cos(phi)
+    return {"vA": L * s * w, "aA": L * s * al + L * c * w * w,
+            "vB": L * c * w, "aB": L * c * al - L * s * w * w}
+
+
+def _ladder(rod_rate: dict, angle="150 deg", assembly=None):
+    data = {"ground": {"O": ["0 m", "0 m"]}, "links": {"AB": "4 m"},
+            "sliders": {"A": {"through": ["0 m", "0 m"], "direction": "0 deg"},
+                        "B": {"through": ["0 m", "0 m"], "direction": "90 deg"}},
+            "driver": {"slider": "A", "rod": "AB", "rod_angle": angle, **rod_rate}}
+    if assembly:
+        data["assembly"] = assembly
+    return parse_scene(data, file="t.toml")
+
+
+def test_a_ladder_driven_by_the_bar_s_omega_and_alpha():
+    """'The ladder AB (4 m) makes 30° with the floor and turns at 2 rad/s CCW, 1.5 rad/s² CW':
+    the slider's v and a follow, B is where the bar's angle puts it (no [assembly] needed), and
+    the polygons give the bar the stated ω and α back."""
+    scene = _ladder({"rod_omega": "2 rad/s CCW", "rod_alpha": "1.5 rad/s^2",
+                     "rod_alpha_sense": "CW"})
+    ref = ladder_reference(4.0, math.radians(150), 2.0, -1.5)
+    assert scene.driver.velocity == pytest.approx(ref["vA"], rel=1e-14)
+    assert scene.driver.acceleration == pytest.approx(ref["aA"], rel=1e-13)
+    assert scene.driver.rod_rate == ("AB", 2.0, -1.5)
+    sol = solve(scene)
+    assert sol.points["B"].position == pytest.approx((0.0, 2.0), abs=1e-12)
+    assert sol.points["B"].velocity == pytest.approx((0.0, ref["vB"]), abs=1e-12)
+    assert sol.points["B"].acceleration == pytest.approx((0.0, ref["aB"]), abs=1e-12)
+    assert sol.links["AB"].omega == pytest.approx(2.0, rel=1e-12)
+    assert sol.links["AB"].alpha == pytest.approx(-1.5, rel=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_the_rod_gets_its_stated_omega_and_alpha_back(seed):
+    """Random trammels (guides at any angles) and engines (the rod's far end on a crank): the
+    polygons, drawn from the slider's derived v and a, give the rod exactly the stated ω, α."""
+    rng = np.random.default_rng(seed)
+    w, al = float(rng.uniform(-20, 20)), float(rng.uniform(-200, 200))
+    rate = {"rod_omega": f"{abs(w)!r} rad/s {'CCW' if w > 0 else 'CW'}",
+            "rod_alpha": f"{abs(al)!r} rad/s^2 {'CCW' if al > 0 else 'CW'}"}
+    if seed % 2:
+        g1, g2 = (float(x) for x in rng.uniform(0, 180, 2))
+        if abs(math.sin(math.radians(g1 - g2))) < 0.3:
+            g2 = g1 + 70
+        phi = float(rng.uniform(0, 360))
+        data = {"ground": {"O": ["0 m", "0 m"]}, "links": {"AB": "0.3 m"},
+                "sliders": {"A": {"through": ["0 m", "0 m"], "direction": f"{g1!r} deg"},
+                            "B": {"through": ["0 m", "0 m"], "direction": f"{g2!r} deg"}},
+                "driver": {"slider": "A", "rod": "AB", "rod_angle": f"{phi!r} deg", **rate}}
+        rod = "AB"
+    else:
+        phi = float(rng.uniform(140, 220))
+        data = {"ground": {"O": ["0 mm", "0 mm"]}, "links": {"OA": "50 mm", "AB": "170 mm"},
+                "sliders": {"B": {"through": ["0 mm", "0 mm"], "direction": "0 deg"}},
+                "driver": {"slider": "B", "rod": "BA", "rod_angle": f"{phi!r} deg", **rate},
+                "assembly": {"B": {"near": ["200 mm", "0 mm"]}}}
+        rod = "AB"
+    try:
+        scene = parse_scene(data, file="t.toml")
+    except SceneError as e:
+        assert "does not turn" in str(e) or "cannot reach" in str(e) or "parallel" in str(e)
+        return
+    sol = solve(scene)
+    assert sol.links[rod].omega == pytest.approx(w, rel=1e-9, abs=1e-9)
+    assert sol.links[rod].alpha == pytest.approx(al, rel=1e-9, abs=1e-7)
+
+
+@pytest.mark.parametrize("rate,words", [
+    ({"rod_omega": "2 rad/s CCW", "velocity": "1 m/s"}, "exactly one"),
+    ({"rod_omega": "2 rad/s"}, "rod_omega needs its sense"),
+    ({"rod_omega": "2 rad/s CCW", "acceleration": "1 m/s^2"}, "not acceleration"),
+    ({"rod_omega": "2 rad/s CCW", "rod_alpha": "3 rad/s^2"}, "rod_alpha needs"),
+    ({"rod_sense": "CW", "velocity": "1 m/s"}, "go with rod_omega"),
+])
+def test_the_rod_rate_refused_in_words(rate, words):
+    with pytest.raises(SceneError) as e:
+        _ladder(rate)
+    assert words in str(e.value)
+
+
+def test_the_rod_omega_where_the_rod_does_not_turn_is_refused():
+    """An engine with its crank at right angles to the line of stroke: the rod does not turn
+    at this instant, whatever the piston's speed, so its ω cannot give the piston's."""
+    phi = math.degrees(math.atan2(0.05, -math.sqrt(0.17 ** 2 - 0.05 ** 2)))
+    with pytest.raises(SceneError) as e:
+        _engine_rate(phi, {"rod_omega": "2 rad/s CCW"})
+    assert "does not turn at this instant" in str(e.value)
+
+
+def _engine_rate(phi, rate):
+    return parse_scene({"ground": {"O": ["0 mm", "0 mm"]},
+                        "links": {"OA": "50 mm", "AB": "170 mm"},
+                        "sliders": {"B": {"through": ["0 mm", "0 mm"], "direction": "0 deg"}},
+                        "driver": {"slider": "B", "rod": "BA", "rod_angle": f"{phi!r} deg",
+                                   **rate},
+                        "assembly": {"B": {"near": ["200 mm", "0 mm"]}}}, file="t.toml")
+
+
+def test_the_ladder_case_exact_answers_are_the_closed_form():
+    scene = load_scene(Path(__file__).resolve().parents[1] / "cases" / "book-ladder-bar-omega.toml")
+    ref = ladder_reference(4.0, math.radians(150), 2.0, -1.5)
+    want = {"v(A)": ref["vA"], "v(B)": ref["vB"], "a(A)": ref["aA"], "a(B)": ref["aB"]}
+    for a in scene.answers:
+        assert a.exact == pytest.approx(abs(want[str(a.quantity)]), rel=1e-14)
+    sol = solve(scene)
+    for a in scene.answers:
+        assert quantity(sol, str(a.quantity)) == pytest.approx(a.exact, rel=1e-12)

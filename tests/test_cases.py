@@ -99,6 +99,8 @@ OWN_EXACT_CHECK = {
                     "forces-oscillating-cylinder", "forces-triad", "forces-triad-truss")},
     "cam-roller-follower": ("test_contacts.py", "test_roller_follower_is_the_slider_crank"),
     "cam-flat-follower": ("test_contacts.py", "test_flat_follower_is_the_scotch_yoke"),
+    "book-ladder-bar-omega": ("test_book_forms.py",
+                              "test_the_ladder_case_exact_answers_are_the_closed_form"),
     "cam-roller-forces": ("test_cam_forces.py",
                           "test_shipped_case_equals_the_follower_equation_of_motion"),
     "curved-slot-pin": ("test_contacts.py", "test_curved_slot_case_and_random_instances"),

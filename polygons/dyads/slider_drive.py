@@ -52,9 +52,16 @@ class SliderDriveDyad:
         X = self.point
         x, pole, q = b.names.of(X), b.names.pole, b.q
         wheel = getattr(b.scene.model.named.get(X), "kind", None) == "wheel"
+        rod = getattr(b.scene.driver, "rod_rate", None)
         say = (f"Draw the {b.what} of the wheel's centre {X} from the pole along the surface: "
                f"rolling without slipping (its contact at rest) it is "
                f"{'ω' if b.velocity else 'α'} × r." if wheel else
+               f"Draw the {b.what} of the slider {X} from the pole along its guide: it follows "
+               f"from the rod {rod[0]}'s given " + ("ω (the relative velocity of its ends is "
+                                                    "ω × the rod, ⟂ to it)." if b.velocity else
+                                                    "ω and α (the relative acceleration of its "
+                                                    "ends is α × the rod ⟂ to it, and ω² × the "
+                                                    "rod along it).") if rod else
                f"Draw the given {b.what} of the slider {X} from the pole along its guide.")
         b.add(Kind.VECTOR, Op.SLIDER_DRIVE, (X,), f"{pole}{x}", pole, x, "input",
               f"{q}_{X}", f"{q}_{X} (given, along the guide)", say,
