@@ -267,7 +267,7 @@ def bench_mechanism(title, kind, path, sizes, avail, quick, log):
                              error=e_l[0], worst=e_l[1],
                              note="closed_form.four_bar_lean: Cartesian, a few numpy lines"))
         rows.append(dict(method=f"finite differences, {tag}", n=n, time=t["fd"], error=e_fd[0],
-                         worst=e_fd[1], note=f"central, h = 2π/N, of the vectorised positions"))
+                         worst=e_fd[1], note="central, h = 2π/N, of the vectorised positions"))
         if pl is not None:
             pos, vel, acc = pl.sweep_fast(xs[0], n, 2 * np.pi / n)
             plo = {k: np.asarray(v)[idx] for k, v in pl.outputs(pos, vel, acc).items()}

@@ -101,7 +101,7 @@ def drawings(an: Analysis):
     """(file stem, Drawing) for every state and body that carries a force."""
     from .labels import bounds, text_box
     from .layout import arrow_head, compose
-    from .model import Arrow, Circle, Group, Polyline, Segment, Text
+    from .model import Arrow, Circle, Group, Polyline, Segment
     from .scale import Scale, round_up
 
     out = []

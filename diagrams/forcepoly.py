@@ -406,7 +406,7 @@ def lever_drawings(an, st):
     """(stem, Drawing) of Zhukovsky's lever at ``st`` and its stages."""
     from .labels import bounds, box_hits_segment, text_box
     from .layout import arrow_head, compose
-    from .model import Arrow, Circle, Group, Segment, Text
+    from .model import Arrow, Circle, Group, Segment
     from .scale import Scale, round_up
 
     try:

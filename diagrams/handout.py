@@ -147,7 +147,7 @@ def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = No
     kind = "Worksheet" if worksheet else "Handout"
     title = f"{sid}: {scene.title}" if sid else scene.title
     doc.add("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n",
-            f"<meta name=\"generator\" content=\"polygons\">\n",
+            "<meta name=\"generator\" content=\"polygons\">\n",
             f"<meta name=\"polygons-kind\" content=\"{kind.lower()}\">\n",
             f"<title>{esc(kind)} — {esc(title)}</title>\n<style>{CSS}</style>\n</head>\n",
             f"<body class=\"{kind.lower()}\">\n")

@@ -171,14 +171,12 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
         items = []
         if "K" in f.points and f.method == "klein":
             Kp, Lp = P("K"), P("L")
-            far = max((Kp, Lp, Q, N), key=lambda p: 0.0)
             items.append(Segment(Kp, Lp, "construction", cls="chord"))
             # the chord produced to N
             end = min((Kp, Lp), key=lambda p: math.dist(p, N))
             items.append(Segment(end, N, "construction", cls="chord-produced"))
             placer.hard(Kp, Lp)
             placer.hard(end, N)
-            del far
         else:
             items.append(Segment(Q, N, "construction", cls="perpendicular-QN"))
         if not f.inline:     # the line through O parallel to the stroke

@@ -536,7 +536,6 @@ def stroke_items(lay: Layout, stage: int | None):
         text = _vertex_text(con, names, upto)
         if not text:
             continue
-        at = lay.P(con.vertices[names[0]])
         visible = [n for n in names if upto is None or con.born.get(n, 0) <= upto]
         newest = max(con.born.get(n, 0) for n in visible)
         faded = upto is not None and newest < upto
@@ -544,7 +543,7 @@ def stroke_items(lay: Layout, stage: int | None):
             pole = n == con.pole
             pts_g.append(Circle(lay.P(con.vertices[n]), 0.9 if pole else 0.55,   # its own
                                 "pole" if pole else "vertex",                       # place
-                                faded, cls=f"vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
+                                faded, cls="vertex", ident=f"{con.diagram}-vertex-{token(n)}"))
         lab_g.append(Text(x, base, text, lay.size(LABEL_SIZE), role="vertex", faded=faded,
                           cls="vertex-label", weight="bold" if not faded else "normal"))
     groups = []

@@ -61,7 +61,6 @@ def construction(sol: Solution, diagram: str) -> Construction:
     strokes: list[Stroke] = []
     lines: dict[int, Step] = {}
     measures = []
-    unit = UNIT_SI[diagram]
     for s in steps:
         comp = component_of(s)
         if s.kind in ("vector", "image"):

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 from .drawing_board import PENCIL_MM, PROTRACTOR_DEG, SPACE_MM
 from .drawing_format import StudentDrawing
-from .evaluate import Solution, link_ends
+from .evaluate import Solution
 from .steps import Kind, Op, Step
 
 #: the smallest length tolerance on paper: two pencil marks (±0.25 mm in x and y) and a rule
@@ -347,7 +347,6 @@ def drawing_scale(k: float, diagram: str) -> str:
 def _closures(sol, diagram, expected, P, k) -> list[ClosureMark]:
     """Each intersection vertex against the crossing of its two lines drawn through the
     student's own start vertices with the rules' directions."""
-    by_line = {e.step.number: e for e in expected if e.step.kind == Kind.LINE}
     out = []
     for s in sol.steps:
         if s.diagram != diagram or s.kind != Kind.INTERSECTION or len(s.lines) != 2:

@@ -28,7 +28,7 @@ import numpy as np
 
 from . import contacts
 from .errors import SceneError, UnknownLabelError, show, suggest
-from .evaluate import PointResult, Solution, link_ends
+from .evaluate import PointResult, Solution
 # FUNCTIONS is read by polygons.forces as quantities.FUNCTIONS
 from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse  # noqa: F401
 

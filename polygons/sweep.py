@@ -464,7 +464,6 @@ def find_range(prog: Program, probe: int = PROBE):
         xs = x0 + step * np.arange(-half, half + 1)
     m = _margin(prog, xs)
     ok = m >= 0
-    n = len(xs)
     # local minima below the warning angle, refined
     left = np.roll(m, 1)
     right = np.roll(m, -1)

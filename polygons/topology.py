@@ -280,8 +280,8 @@ def parse_crossing(pin, spec, r, links, taken) -> "Crossing":
     r.table(spec, where, ("levers", "coincident"), required=("levers",))
     levers = spec["levers"]
     if not isinstance(levers, list) or len(levers) != 2:
-        raise SceneError(f"levers must name the two slotted levers, e.g. levers = [\"O2Q\", "
-                         f"\"O4R\"]", file=r.file, where=where + ".levers")
+        raise SceneError("levers must name the two slotted levers, e.g. levers = [\"O2Q\", "
+                         "\"O4R\"]", file=r.file, where=where + ".levers")
     levers = tuple(r.string(v, f"{where}.levers") for v in levers)
     for lev in levers:
         if lev not in links or links[lev].length is None:

@@ -414,7 +414,7 @@ def _derived_sae4q3():
                     al, +1)
     A, e = r["B"], (r["C"] - r["B"]) / 0.12
     rD = 0.168 * e
-    vA, aA = w * _perp(A), al * _perp(A) - w * w * A
+    vA = w * _perp(A)
     D = A + rD
     vD = vA + r["omega_BC"] * _perp(rD)
     return {"v(B,A)": abs(r["omega_BC"]) * 0.12, "v(D)": _norm(vD), "omega(AB)": r["omega_BC"],

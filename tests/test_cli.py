@@ -1,7 +1,5 @@
 """The CLI through its real entry point: output, JSON shape, and one-line errors."""
 import json
-import os
-import shutil
 import subprocess
 import sys
 from pathlib import Path

@@ -15,7 +15,7 @@ import pytest
 import diagrams
 from conftest import CASES, case_files
 from diagrams import crowd, inset, measure, polygon, scale
-from diagrams.labels import Box, box_hits_segment, text_box
+from diagrams.labels import box_hits_segment, text_box
 from diagrams.model import Arrow, Circle, Polyline, Segment, Text
 from diagrams.components import LOOKS
 from diagrams.notation import JOIN, MARK

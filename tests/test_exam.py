@@ -23,7 +23,6 @@ from analytic import four_bar, slotted_lever
 from polygons.cli import main
 from polygons.exam import lms, make_exam
 from polygons.exam.variants import MAX_VARIANTS
-from polygons.quantities import quantity
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 WE3 = CASES / "s001-we3.toml"

@@ -16,11 +16,11 @@ from hypothesis import strategies as st
 import analytic
 import analytic_more as am
 from conftest import CASES
-from scenes import crank_driver, m, rad
-from polygons.errors import AssemblyError, ParallelLinesError, PolygonsError, SceneError
+from scenes import crank_driver, m
+from polygons.errors import AssemblyError, ParallelLinesError, SceneError
 from polygons.evaluate import solve
 from polygons.quantities import quantity
-from polygons.scene import Crank, load_scene, parse_scene
+from polygons.scene import load_scene, parse_scene
 from polygons.sweep import sweep
 
 REL = 1e-9
@@ -669,7 +669,6 @@ def test_pin_in_the_slot_of_a_four_bar_rocker_matches_closed_form(ad, ab, bc, cd
 
 
 # ---------------------------------------------------------------- unsupported topologies
-from polygons.errors import UnsupportedError  # noqa: E402
 
 
 def _crank_scene(**extra):

@@ -122,7 +122,7 @@ def test_four_bar_velocity_matches_finite_differences_of_positions(ad, ab, bc, c
         sol = solve(scene_at(theta))
         cp = np.array(solve(scene_at(theta + h), targets=["C"]).points["C"].position)
         cm = np.array(solve(scene_at(theta - h), targets=["C"]).points["C"].position)
-    except (AssemblyError, ParallelLinesError, Exception) as exc:  # noqa: BLE001
+    except (AssemblyError, ParallelLinesError, Exception):  # noqa: BLE001
         assume(False)
     assume(sol.min_intersection_angle_deg > 5.0)
     v_fd = (cp - cm) / (2 * h) * omega

@@ -141,7 +141,7 @@ def table(sol, cs, units: str = "mm") -> str:
             lines.append(f"{head}   [given: the driver translates at {_g(o.speed * vf)} {vu}]")
         else:
             lines.append(f"{head}   [{o.how}]")
-    lines += ["", f"velocities by the centres (v = ω × distance from the link's centre I1j):"]
+    lines += ["", "velocities by the centres (v = ω × distance from the link's centre I1j):"]
     for x, v in cs.velocities.items():
         j = v.number
         if j == 1:

@@ -502,7 +502,7 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
     else:
         lines.append(f"    stated           the case's drawing tolerance ±{pct * 100:g} % "
                      f"(the drawing-board emulation does not cover this mechanism)")
-    lines.append(f"    0.5 mm reading   a ruler reading at the scale drawn"
+    lines.append("    0.5 mm reading   a ruler reading at the scale drawn"
                  + (f" ({sc})" if sc else ""))
     lines.append("")
     wn = max(len(g.name) for g in grades)

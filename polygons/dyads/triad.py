@@ -21,7 +21,6 @@ Acceleration, the same with the normal parts known: a_S = a_A + ω_AB² (A − B
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np

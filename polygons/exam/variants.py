@@ -32,7 +32,7 @@ from typing import Mapping
 
 from ..errors import PolygonsError, SceneError
 from ..evaluate import Solution, solve
-from ..exam_table import ExamSpec, Range, spec as exam_spec
+from ..exam_table import ExamSpec, spec as exam_spec
 from ..quantities import dimension_of_quantity, drawn_on_polygon, quantity
 from ..units import round_up
 from ..scene import Scene, load_scene, parse_quantity_expr, parse_scene, parse_toml, \
