@@ -35,6 +35,10 @@ MAX_RANGE_VALUES = 10_000
 MAX_ATTEMPTS = 10_000
 #: the driver's keys a range may vary, and the dimension of each
 DRIVER_KEYS = {"angle": "angle", "omega": "angular_velocity", "alpha": "angular_acceleration"}
+#: ... and a slider driver's (the rod's ω and α where the scene gives the rate that way)
+SLIDER_KEYS = {"position": "length", "velocity": "velocity", "acceleration": "acceleration",
+               "rod_angle": "angle", "rod_omega": "angular_velocity",
+               "rod_alpha": "angular_acceleration"}
 #: quantity functions an exam may ask (a number read off the polygons)
 ASKABLE = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor")
 DEFAULTS = {"min_angle": "30 deg", "closure_margin": "15 deg", "min_vector": "8 mm",
@@ -55,6 +59,18 @@ TABLES: tuple[Table, ...] = (
             example='"10..30 rad/s step 2"'),
         Key("alpha", "string", "a range of the crank's α (its sense stays the scene's)",
             example='"0..100 rad/s^2 step 10"'),
+        Key("position", "string", "a slider driver's position along its guide (one placed by "
+                                  "position)", example='"80..160 mm step 10"'),
+        Key("velocity", "string", "a slider driver's velocity along its guide (signed)",
+            example='"1..3 m/s step 0.5"'),
+        Key("acceleration", "string", "a slider driver's acceleration along its guide (signed)",
+            example='"-5..5 m/s^2 step 1"'),
+        Key("rod_angle", "string", "the angle of a slider driver's rod (one placed by rod and "
+                                   "rod_angle)", example='"120..160 deg step 5"'),
+        Key("rod_omega", "string", "the rod's ω of a slider driven by rod_omega (its sense "
+                                   "stays the scene's)", example='"1..4 rad/s step 0.5"'),
+        Key("rod_alpha", "string", "the rod's α of a slider driven by rod_omega (its sense "
+                                   "stays the scene's)", example='"0..5 rad/s^2 step 1"'),
         Key("title", "string", "the heading of every variant (its number is added): the "
                                "scene's title and problem statement may quote values a "
                                "variant changes, so neither is carried over",
@@ -84,7 +100,7 @@ TABLES: tuple[Table, ...] = (
 )
 
 _FIXED = tuple(k.name for k in TABLES[0].keys if not k.name.startswith("<")
-               and k.name not in DRIVER_KEYS)
+               and k.name not in DRIVER_KEYS and k.name not in SLIDER_KEYS)
 
 
 @dataclass(frozen=True)
@@ -152,6 +168,23 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
                                  f"is not a crank", file=scene.file, where=where)
             rg = _range(value, name, DRIVER_KEYS[name], r, where)
             ranges.append(Range(f"driver.{name}", name, rg.dimension, rg.values))
+        elif name in SLIDER_KEYS:
+            slider = hasattr(scene.driver, "point")
+            rod = getattr(scene.driver, "rod_rate", None) is not None
+            if not slider:
+                what = "a crank (vary angle, omega, alpha)"
+            elif rod and name in ("velocity", "acceleration"):
+                what = "driven by its rod's ω (vary rod_omega, rod_alpha)"
+            elif not rod and name in ("rod_omega", "rod_alpha"):
+                what = "driven by its velocity (vary velocity, acceleration)"
+            else:
+                what = ""
+            if what:
+                raise SceneError(f"{name} varies a slider driver's {name.replace('_', ' ')}; "
+                                 f"this scene's driver is {what}", file=scene.file,
+                                 where=where)
+            rg = _range(value, name, SLIDER_KEYS[name], r, where)
+            ranges.append(Range(f"driver.{name}", name, rg.dimension, rg.values))
         elif name in scene.links:
             if scene.links[name].length is None:
                 raise SceneError(f"link {name} has no length to vary (a slotted lever)",
@@ -165,7 +198,7 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
         else:
             from .errors import UnknownKeyError, suggest
             raise UnknownKeyError(f"unknown key {show(name)}: a link of [links] with a length, "
-                                  f"{', '.join(DRIVER_KEYS)}, or "
+                                  f"{', '.join(DRIVER_KEYS)}, {', '.join(SLIDER_KEYS)}, or "
                                   f"{suggest(name, _FIXED + tuple(scene.links))}",
                                   file=scene.file, where=where)
     ask = raw.get("ask")

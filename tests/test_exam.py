@@ -354,3 +354,57 @@ def test_pdfs_are_printed(tmp_path):
                      str(again)]) == 0
         for name in ("key.pdf", "worksheets/variant-01.pdf"):
             assert (out / name).read_bytes() == (again / name).read_bytes(), name
+
+
+# ---------------------------------------------------------------- slider drivers
+def _with_exam(tmp_path, stem, exam: str) -> Path:
+    p = tmp_path / f"{stem}.toml"
+    p.write_text((CASES / f"{stem}.toml").read_text() + "\n[exam]\n" + exam)
+    return p
+
+
+def test_a_slider_driven_by_its_rod_varies_the_rod_angle_and_omega(tmp_path):
+    """The ladder: each variant's bar is at one of the angles and turns at one of the rates,
+    its sense (CCW) and α's (CW) kept; the answers are the polygons' of that variant, which
+    give the bar its stated ω back."""
+    p = _with_exam(tmp_path, "book-ladder-bar-omega",
+                   'rod_angle = "120..160 deg step 5"\nrod_omega = "1..4 rad/s step 0.5"\n')
+    ex = make_exam(str(p), 4, 3)
+    assert len(ex.variants) == 4
+    for v in ex.variants:
+        values = dict(v.values)
+        name, w, al = v.scene.driver.rod_rate
+        assert w == pytest.approx(float(values["rod_omega"].split()[0]), rel=1e-12) and w > 0
+        assert al == pytest.approx(-1.5)
+        assert v.solution.links["AB"].omega == pytest.approx(w, rel=1e-9)
+        B = v.solution.points["B"].position
+        A = v.solution.points["A"].position
+        ang = math.degrees(math.atan2(B[1] - A[1], B[0] - A[0]))
+        assert ang == pytest.approx(float(values["rod_angle"].split()[0]), abs=1e-9)
+
+
+def test_a_slider_driven_at_a_velocity_varies_its_position_and_velocity(tmp_path):
+    p = _with_exam(tmp_path, "new-elliptic-trammel",
+                   'position = "40..90 mm step 5"\nvelocity = "0.5..2 m/s step 0.25"\n')
+    ex = make_exam(str(p), 3, 2)
+    for v in ex.variants:
+        values = dict(v.values)
+        assert v.scene.driver.velocity == pytest.approx(
+            float(values["velocity"].split()[0]), rel=1e-12)
+        assert v.scene.driver.position * 1e3 == pytest.approx(
+            float(values["position"].split()[0]), rel=1e-12)
+
+
+@pytest.mark.parametrize("stem,exam,words", [
+    ("book-ladder-bar-omega", 'velocity = "1..2 m/s step 0.5"', "driven by its rod's ω"),
+    ("book-ladder-bar-omega", 'position = "1..2 m step 0.5"', "places it by its rod"),
+    ("new-elliptic-trammel", 'rod_omega = "1..2 rad/s step 0.5"', "driven by its velocity"),
+    ("new-elliptic-trammel", 'rod_angle = "100..120 deg step 5"', "places it by position"),
+    ("s001-we3", 'position = "1..2 m step 0.5"', "a crank"),
+])
+def test_slider_keys_that_do_not_fit_the_driver_are_refused(tmp_path, stem, exam, words):
+    from polygons.errors import SceneError
+    p = _with_exam(tmp_path, stem, exam + "\n")
+    with pytest.raises(SceneError) as e:
+        make_exam(str(p), 2, 1)
+    assert words in str(e.value)

@@ -193,11 +193,15 @@ def answers(sol: Solution, asked: tuple[str, ...], scales: Mapping[str, float]
 def _set(data: dict, key: str, text: str, base: Scene) -> None:
     table, _, name = key.partition(".")
     data.setdefault(table, {})
-    if table == "driver" and name in ("omega", "alpha"):
+    if table == "driver" and name in ("omega", "alpha", "rod_omega", "rod_alpha"):
         # the sense stays the scene's: written out in words, any sense in the text dropped
-        rate = (base.driver.omega if name == "omega"
-                else getattr(base.driver, "alpha", 0.0)) or 0.0
-        sense_key = "sense" if name == "omega" else "alpha_sense"
+        if name.startswith("rod_"):
+            rate = base.driver.rod_rate[1 if name == "rod_omega" else 2]
+        else:
+            rate = (base.driver.omega if name == "omega"
+                    else getattr(base.driver, "alpha", 0.0)) or 0.0
+        sense_key = {"omega": "sense", "alpha": "alpha_sense", "rod_omega": "rod_sense",
+                     "rod_alpha": "rod_alpha_sense"}[name]
         data["driver"][sense_key] = "CW" if rate < 0 else "CCW"
     data[table][name] = text
 
@@ -232,11 +236,20 @@ def make_exam(path: str, n: int, seed: int) -> ExamSet:
     if default:                 # no [exam]: the crank angle round the turn, the [[answers]]
         if not hasattr(base.driver, "pivot"):
             raise SceneError("add an [exam] table saying what varies (this scene's driver is "
-                             "not a crank, so the crank angle cannot be varied by default)",
+                             "not a crank, so the crank angle cannot be varied by default: a "
+                             "slider's position or velocity, its rod's rod_angle or rod_omega, "
+                             "or a link's length)",
                              file=path, where="exam")
         probe = copy.deepcopy(data)
         probe["exam"] = {"angle": DEFAULT_ANGLES}
         sp = exam_spec(parse_scene(probe, file=str(path)), parse_quantity_expr)
+    placed_by_rod = isinstance(data.get("driver"), dict) and "rod" in data["driver"]
+    for rg in sp.ranges:        # a slider placed by position, or by its rod's angle
+        if rg.key in ("driver.position", "driver.rod_angle") and \
+                (rg.key == "driver.rod_angle") != placed_by_rod:
+            how = "its rod (vary rod_angle)" if placed_by_rod else "position (vary position)"
+            raise SceneError(f"{rg.name} varies how the slider driver is placed; this scene "
+                             f"places it by {how}", file=path, where=f"exam.{rg.name}")
     if not sp.ask:
         raise SceneError("nothing to ask: give [exam] ask = [\"omega(BC)\", ...] (the scene's "
                          "[[answers]] name no velocity or acceleration)", file=path,
