@@ -26,6 +26,7 @@ import math
 from dataclasses import dataclass, field, replace
 
 from polygons.evaluate import Solution
+from polygons.narrate import substitute
 from polygons.plan import Step
 
 from . import crowd, inset, scale as scales
@@ -771,8 +772,9 @@ def drawing(sol: Solution, lay: Layout, stage: int | None = None) -> Drawing:
         name = f"{con.diagram}-{stage}"
         title = f"{what} diagram, stage {stage} of {n}"
         caption = [f"Stage {stage}. {prose(sol, con, s.reason)}"]
-        if s.substituted:
-            caption.append(prose(sol, con, s.substituted))
+        formula = substitute(s, sol.scene)
+        if formula:
+            caption.append(prose(sol, con, formula))
         caption += _stage_notes(sol, lay, s)
         legend_lines = []
         desc = f"Stage {stage} of {n} of the {what.lower()} polygon: {prose(sol, con, s.reason)}"

@@ -7,8 +7,8 @@ over plain floats with the 2×2 line intersection (the fast evaluator), for the 
 with shapely's intersection (:func:`compile_staged`, :mod:`polygons.evaluate`), over arrays for
 sweeps and batches (:func:`compile_arrays`, :func:`compile_given`) and with noisy instruments
 for the drawing board.  Calling the float program fills every step's numbers into one flat tuple;
-:class:`CompiledSolution` builds the :class:`~polygons.steps.Step` records and their
-substituted text from that tuple only when asked.
+:class:`CompiledSolution` builds the :class:`~polygons.steps.Step` records (numbers and
+terms) from that tuple only when asked.
 
     program = compile_scene(scene)       # plan + assembly + code (cached by topology)
     sol = program.solve()                # the scene's own input; program.solve(theta) another
@@ -31,7 +31,6 @@ import numpy as np
 from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled,  # noqa: F401 (read from here)
                       _Code, _Fail, _slot_kinds, generate)
 from .errors import ConstructionError, ParallelLinesError
-from .narrate import substitute
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input, dyad_failure
 from .reader import record
@@ -279,8 +278,8 @@ def given_params(code: _Code, scene, points: dict) -> tuple:
 
 
 class CompiledSolution:
-    """One position's numbers (``record``: a flat tuple of floats) with the step records and
-    their substituted text built from it on first access."""
+    """One position's numbers (``record``: a flat tuple of floats) with the step records
+    built from it on first access."""
 
     __slots__ = ("program", "record", "_steps")
 
@@ -316,8 +315,8 @@ class CompiledSolution:
 
     @property
     def steps(self) -> tuple[Step, ...]:
-        """The :class:`Step` records with their numbers and substituted text (as the staged
-        solver fills them), built on first access."""
+        """The :class:`Step` records with their numbers and terms (as the staged solver fills
+        them), built on first access."""
         try:
             return self._steps
         except AttributeError:
@@ -337,9 +336,9 @@ class CompiledSolution:
 def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
                       ) -> tuple[Step, ...]:
     """The planned ``steps`` with their numbers read from the record ``r`` (``layout`` says
-    where) and their substituted text: what the staged and the compiled solutions show.
-    Each record is made once (:func:`polygons.reader.record`, every field set at once); the
-    text is written from the planned step's words and the filled terms (:class:`_Filled`)."""
+    where): what the staged and the compiled solutions show.  Each record is made once
+    (:func:`polygons.reader.record`, every field set at once); its formula with the numbers
+    is written from its terms when shown (:func:`polygons.narrate.substitute`)."""
     numbers = [([(sym, _term(r, i), u) for sym, i, u in o.terms],
                 None if o.value is None else r[o.value]) for o in layout]
     zero = _rounding_noise(numbers, layout)
@@ -352,24 +351,9 @@ def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
         filled = tuple(record(Term, symbol=sym, value=zero(v, u), unit=u)
                        for sym, v, u in terms)
         vals.update(value=None if value is None else zero(value, o.unit), unit=o.unit,
-                    angle_deg=None if o.angle is None else r[o.angle], terms=filled,
-                    substituted=substitute(_Filled(step, filled), scene))
+                    angle_deg=None if o.angle is None else r[o.angle], terms=filled)
         done.append(record(Step, **vals))
     return tuple(done)
-
-
-class _Filled:
-    """A planned step seen with its filled terms: what :func:`polygons.narrate.substitute`
-    reads (its words from the plan, its numbers from the terms), before the record is made."""
-
-    __slots__ = ("step", "terms")
-
-    def __init__(self, step: Step, terms: tuple):
-        self.step = step
-        self.terms = terms
-
-    def __getattr__(self, name):
-        return getattr(self.step, name)
 
 
 #: the units whose near-zero values are rounding noise of the construction

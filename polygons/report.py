@@ -10,6 +10,7 @@ import numpy as np
 from . import geometry
 from .errors import PolygonsError
 from .evaluate import Solution
+from .narrate import substitute
 from .quantities import quantity
 from .notation import vertex, vertices_in
 from .steps import noise_floor, percent_diff, sense as steps_sense
@@ -115,6 +116,7 @@ def to_json(sol: Solution) -> dict:
     steps = []
     for s in sol.steps:
         d = asdict(s)
+        d["substituted"] = substitute(s, sol.scene)      # the formula with its numbers
         for k in ("at", "vector", "point", "direction"):
             if d[k] is not None:
                 d[k] = list(d[k])
@@ -234,8 +236,9 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
                 if s.diagram != diagram:
                     continue
                 text = f"  {s.number:>2}. {s.reason}"
-                if s.substituted:
-                    text += f"  [{s.substituted}]"
+                formula = substitute(s, sol.scene)
+                if formula:
+                    text += f"  [{formula}]"
                 text = vertices_in(text, sol.vertices[diagram])   # p4_1 → p₄′
                 lines.append(text)
     lines.append("")

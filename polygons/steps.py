@@ -89,7 +89,7 @@ class Step:
 
     Planned with ``op``/``args`` and words only; an interpreter returns a copy with the
     numbers (``at``, ``vector``, ``point``, ``direction``, ``value``, ``angle_deg``,
-    ``terms`` and the text ``substituted`` made from them) filled in.  The diagrams draw these
+    ``terms``, from which :func:`polygons.narrate.substitute` writes the formula) filled in.  The diagrams draw these
     records and never recompute them.
     """
 
@@ -118,8 +118,9 @@ class Step:
     value: float | None = None                    # for measures (SI, signed)
     unit: str = ""
     angle_deg: float | None = None                # for intersections: angle between the lines
-    substituted: str = ""                         # formula with the numbers put in
-    terms: tuple[Term, ...] = ()                  # the numbers of ``substituted``, as data
+    terms: tuple[Term, ...] = ()                  # the numbers of the substituted formula
+    # (the formula with its numbers is written from ``terms`` when shown:
+    # :func:`polygons.narrate.substitute`, never stored as text)
 
     @property
     def gives(self) -> str | None:

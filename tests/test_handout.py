@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from conftest import CASES, case_files
+from polygons.narrate import substitute
 from polygons.cli.check import grade, offered, parse_measured, resolve
 from polygons.evaluate import solve
 from polygons.quantities import quantity
@@ -67,7 +68,7 @@ def test_handout_narrates_every_step_with_its_figure_and_numbers(path):
             body = li.group(0)
             for step in cell:
                 assert f'<span class="num">{step.number}.</span>' in body
-                if step.substituted:
+                if substitute(step, sol.scene):
                     assert 'class="formula answer"' in body
             # one figure a group of steps ending in a drawn point; the group completing the
             # diagram points to the finished diagram instead (printed full size after it)

@@ -65,7 +65,7 @@ def test_a_four_bar_by_numba_is_the_staged_construction_and_fails_alike():
     for theta in (0.3, 2.0, 4.0):
         staged = solve(_four_bar(0.5, 0.1, 0.4, 0.3, theta, 10.0, 50.0))
         sol = prog.solve(theta)
-        assert_same_steps(staged.steps, sol.steps, text=False)
+        assert_same_steps(staged.steps, sol.steps)
         assert type(sol.omega("BC")) is float
     wide = compile_scene(_four_bar(0.5, 0.2, 0.3, 0.25, 0.5, 10.0, 0.0), jit=True)
     with pytest.raises(AssemblyError, match="cannot close"):
@@ -86,6 +86,6 @@ def test_numba_matches_the_staged_solve_and_the_numpy_sweep(path):
     if prog.fn is prog.code.fn:
         pytest.skip(f"{path.name}: numba does not compile this construction (Python kept)")
     sol = prog.solve()
-    assert_same_steps(solve(scene).steps, sol.steps)
+    assert_same_steps(solve(scene).steps, sol.steps, scene)
     xs = prog.x0 + np.linspace(-0.5, 0.5, 181)
     _same_sweep(sweep(scene, inputs=xs), sweep(scene, inputs=xs, jit=True))
