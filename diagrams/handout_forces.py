@@ -197,6 +197,9 @@ def _polygons(an) -> str:
         out.append(f'<p class="force-effort"><strong>{esc(effort.words(an.model))}: '
                    f"{esc(effort_words(an, fp.effort))}</strong>; every reaction equals the "
                    f"Newton–Euler solution's (largest difference {diff:.1e} N).</p>\n")
+        from polygons.forces.cams import words as contact_words
+        for c in st.contacts:           # a cam's contact force: the force in its equivalent
+            out.append(f'<p class="force-contact">{sym(contact_words(c))}.</p>\n')   # link
     out.append("</section>\n")
     return "".join(out)
 
