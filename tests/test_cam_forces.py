@@ -11,7 +11,6 @@ import pytest
 
 from analytic_contacts import oscillating_flat_follower
 from polygons.errors import PolygonsError, UnsupportedError
-from polygons.evaluate import solve
 from polygons.forces import analyse
 from polygons.scene import load_scene, parse_scene, parse_toml
 
@@ -247,11 +246,11 @@ def test_force_answers_name_an_unknown_follower():
         check_force_answers(an)
 
 
-def test_the_handout_s_force_section_states_the_contact_force():
-    from diagrams.handout import handout
-    text = (CASES / "cam-roller-forces.toml").read_text() + \
-        "\n[handout]\nforce_polygons = true\n"
-    sol = solve(_scene(text))
-    key = handout(sol)
+def test_the_handout_s_force_section_states_the_contact_force(tmp_path):
+    from polygons.cli.handout import build
+    path = tmp_path / "cam.toml"
+    path.write_text((CASES / "cam-roller-forces.toml").read_text()
+                    + "\n[handout]\nforce_polygons = true\n")
+    key = build(str(path))
     assert '<p class="force-contact">' in key and "along the common normal" in key
     assert "99.7878 N" in key
