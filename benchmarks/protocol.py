@@ -90,7 +90,7 @@ def single_position(root, path, avail, quick, others, cf, jit_rows=True):
                      "step's vectors, points, directions, ω/α values and angles into its flat "
                      "record (the terms' magnitudes, Step records and text built lazily)"),
         "compiled+steps": ("polygons compiled + Step records",
-                           "as above, and the Step records and substituted text materialised"),
+                           "as above, and the Step records (numbers and terms) materialised"),
         "compiled build": ("polygons compiled, build + solve",
                            "timed: compile_scene (plan, staged assembly for the closures, "
                            "cached code) + solve, from a parsed Scene"),
@@ -100,7 +100,7 @@ def single_position(root, path, avail, quick, others, cf, jit_rows=True):
                    "access; the plan kept with the scene)"),
         "staged+steps": ("polygons staged + Step records",
                          "timed: solve(scene) as above and its .steps: every Step record "
-                         "with its numbers, terms and substituted text"),
+                         "with its numbers and terms (its formula is written when shown)"),
         "load+staged": ("polygons load_scene + staged",
                         "timed: TOML parse + solve (the scene's own angle)"),
         "closed form": ("numpy closed form, one position",
