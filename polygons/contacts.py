@@ -271,12 +271,6 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
     data = dict(data)
     raw = {name: data.pop(name, {}) for name in NAMES}
     force = [t for t in FORCE_TABLES if t in data]
-    rolled = [name for name in ("rolling", "bearing") if raw[name]]
-    if force and rolled:
-        raise UnsupportedError(f"polygons forces does not handle a rolling contact "
-                               f"([{force[0]}] with [{rolled[0]}]): the equivalent slider of a "
-                               f"wheel gives its velocities and accelerations, not the "
-                               f"friction that makes it roll", file=file, where=force[0])
     links = dict(data.get("links", {})) if isinstance(data.get("links", {}), dict) else None
     if links is None:
         raise SceneError("[links] must be a table", file=file, where="links")
@@ -379,6 +373,15 @@ def rewrite(data: dict, file: str) -> tuple[dict, tuple[Equivalent, ...]]:
         data["slots"] = slots
     if isinstance(sliders, dict) and sliders:
         data["sliders"] = sliders
+    for q in out if force else ():
+        if q.kind == "bearing" or (q.kind == "rolling" and (q.on or q.opposite or q.driven)):
+            what = ("a bar bearing on a circle" if q.kind == "bearing" else
+                    "a wheel driving the linkage" if q.driven else
+                    "a wheel rolling on a moving plate or between plates")
+            raise UnsupportedError(f"polygons forces does not handle a rolling contact "
+                                   f"([{force[0]}] with {what}, {q.at}): only a wheel rolling "
+                                   f"on a fixed surface, its friction at the contact found",
+                                   file=file, where=force[0])
     return data, tuple(out)
 
 

@@ -367,14 +367,18 @@ def _masses(ctx: _Context, raw) -> list[MassItem]:
                              "[masses.LINK]", file=file, where=where + ".on")
         body = ctx.body_name(name, where)
         b = bodies[body]
+        wheel = next((q for q in ctx.scene.equivalents if q.kind == "rolling" and q.at == body),
+                      None) if b.kind == "block" else None     # a rolling wheel turns
         if b.kind == "block":
-            for bad in ("inertia", "radius", "radius_of_gyration", "centre", "centre_left",
-                        "free", "spin"):
+            for bad in ("centre", "centre_left", "free", "spin") + (
+                    () if wheel else ("inertia", "radius", "radius_of_gyration")):
                 if bad in spec:
                     raise SceneError(f"{body} is a slider block (it does not turn): {bad!r} "
                                      f"does not apply", file=file, where=f"{where}.{bad}")
-            masses.append(MassItem(name, body, "block", mass, 0.0, "translating block",
-                                   at=body))
+            i, how = _inertia(r, spec if "inertia" in spec or "radius_of_gyration" in spec else
+                              {"inertia": "disc", "radius": f"{wheel.radius!r} m"}, mass, None,
+                              where, "disc") if wheel else (0.0, "translating block")
+            masses.append(MassItem(name, body, "block", mass, i, how, at=body))
             continue
         if free:
             raise SceneError("free = true is for a disc on a pin: write it with at = ...",
@@ -691,6 +695,8 @@ def _inertia(r: _Values, spec, mass, length, where, default) -> tuple[float, str
         k = r.quantity(spec["radius_of_gyration"], "length", where + ".radius_of_gyration")
         return mass * k * k, f"m k² = {mass:.6g} × {k:.6g}²"
     how = spec.get("inertia", default)
+    if how != "disc" and "radius" in spec:
+        raise SceneError("radius goes with inertia = \"disc\"", file=r.file, where=where + ".radius")
     if how == "rod":
         if length is None:
             raise SceneError("a uniform rod needs the link's length: this link has none "
@@ -704,13 +710,7 @@ def _inertia(r: _Values, spec, mass, length, where, default) -> tuple[float, str
         rad = r.quantity(spec["radius"], "length", where + ".radius")
         return mass * rad * rad / 2.0, f"disc m r²/2 = {mass:.6g} × {rad:.6g}²/2"
     if how in ("point", "none"):
-        if "radius" in spec:
-            raise SceneError("radius goes with inertia = \"disc\"", file=r.file,
-                             where=where + ".radius")
         return 0.0, "point mass"
-    if "radius" in spec:
-        raise SceneError("radius goes with inertia = \"disc\"", file=r.file,
-                         where=where + ".radius")
     if isinstance(how, str) and how and (how[0].isdigit() or how[0] in "+-."):
         i = r.quantity(how, "inertia", where + ".inertia")
         if i < 0:

@@ -114,8 +114,9 @@ def test_refusals_in_words(edit, words):
 
 
 def test_forces_of_a_rolling_contact_refused_naming_the_method():
-    """(a cam's forces are analysed: tests/test_cam_forces.py)"""
-    text = (ROOT / "rolling-wheel-driven.toml").read_text().split("[[answers]]")[0]
+    """(a cam's forces and a wheel rolling on a fixed surface are analysed:
+    tests/test_contact_forces.py)"""
+    text = (ROOT / "rolling-cylinder-between-plates.toml").read_text().split("[[answers]]")[0]
     with pytest.raises(UnsupportedError,
                        match="polygons forces does not handle a rolling contact"):
         parse(text + '\n[gravity]\ng = "9.81 m/s^2"\n')

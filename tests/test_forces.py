@@ -75,9 +75,9 @@ def test_force_cases_outside_the_reference_are_checked_by_closed_forms():
     """The force cases without a reference record have their exact values recomputed below."""
     outside = {p.name for p in FORCE_CASES} - {p.name for p in IN_REFERENCE}
     # (the forces-* cases: their efforts by closed forms in tests/test_graphical.py; the cam's
-    # in tests/test_cam_forces.py)
+    # in tests/test_contact_forces.py)
     assert outside == {"khurmi-flywheel-steam-engine.toml", "efficiency-four-bar.toml",
-                       "cam-roller-forces.toml",
+                       "cam-roller-forces.toml", "rolling-wheel-forces.toml",
                        "forces-toggle-press.toml", "forces-actuator-four-bar.toml",
                        "forces-engine-piston-effort.toml", "forces-whitworth.toml",
                        "forces-scotch-yoke.toml", "forces-oscillating-cylinder.toml",

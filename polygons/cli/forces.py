@@ -13,7 +13,7 @@ from ..errors import PolygonsError, SceneError
 from ..forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
                       spring_state)
 from ..forces import effort, machine
-from ..forces.cams import words as cam_words
+from ..forces.cams import mu_needed, rolling_words, words as cam_words
 from ..forces.model import position, unit_r
 from ..report import json_text, undefined_note
 from . import _graphical
@@ -154,6 +154,10 @@ def _state_dict(an: Analysis, st: State) -> dict:
                     for pin, (v, n) in ne.slot.items()]
     out["guides"] = [{"slider": lab, "normal_force": v, "normal": _vec(n), "couple": c}
                      for lab, (v, n, c) in ne.guide.items()]
+    out["rolling_contacts"] = [
+        {"wheel": lab, "friction": f, "along": _vec(e), "contact_point": _vec(at),
+         "normal_force": ne.guide[lab][0], "mu_needed": mu_needed(lab, ne)}
+        for lab, (f, e, at) in ne.rolling.items()]
     out["cam_contacts"] = [
         {"at": c.label, "kind": c.kind, "cam": c.cam, "follower": c.follower,
          "force_on_follower": _vec(c.force), "magnitude": c.magnitude,
@@ -491,8 +495,12 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
         out.append(f"  slot: the pin {pin} pushes {s.lever} with {abs(v):.6g} N normal to the "
                    f"slot, towards {_deg(n * v) or 0:.6g}° (and {s.carrier} is pushed back)")
     for lab, (v, n, c) in ne.guide.items():
+        if lab in ne.rolling:
+            continue
         out.append(f"  guide: on {lab} {abs(v):.6g} N normal to the guide, towards "
                    f"{_deg(n * v) or 0:.6g}°; couple {abs(c):.3g} N m {_sense(c)}")
+    for lab, (f, e, at) in ne.rolling.items():
+        out.append(f"  {rolling_words(lab, ne)}")
     for c in st.contacts:
         if not c.lost:                  # (a lost contact is said among the warnings)
             out.append(f"  {cam_words(c)}")

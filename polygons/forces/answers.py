@@ -18,6 +18,7 @@ from ..loadmodel import ForceAnswer
 from ..steps import percent_diff
 from . import machine
 from .model import (Inertia, centre, cross, perp, position as _pos, spring_state, unit_r)
+from .cams import mu_needed
 from .newton_euler import contact_force, section
 from .states import Analysis, State
 
@@ -50,6 +51,7 @@ FORCE_FUNCTIONS: dict[str, tuple[str, bool, tuple[int, int]]] = {
     "MA": ("fraction", False, (1, 1)), "Tout_eta": ("torque", False, (1, 1)),
     "Fout_eta": ("force", False, (1, 1)),
     "Fc": ("force", False, (1, 1)), "phi": ("angle", False, (1, 1)),
+    "Ff": ("force", False, (1, 1)), "mu": ("fraction", False, (1, 1)),
 }
 _KIN_FLIP = ("omega", "alpha")
 _NAME = frozenset(string.ascii_letters + "_")
@@ -233,6 +235,17 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
                 raise SceneError(f"{s.name} is torsional: its twist is not a length", file=file)
             return stt["extension"]
         return stt["tension"] if s.kind != "torsional" else flip * stt["torque"]
+    if fn in ("Ff", "mu"):          # a rolling wheel's friction (along its surface) / μ needed
+        if args[0] not in ne.rolling:
+            raise UnknownLabelError(f"{args[0]!r} is not a wheel rolling on a fixed surface: "
+                                    f"{suggest(args[0], ne.rolling)}", file=file)
+        if fn == "Ff":
+            return ne.rolling[args[0]][0]
+        mu = mu_needed(args[0], ne)
+        if mu is None:
+            raise SceneError(f"the surface does not press on the wheel {args[0]} at this "
+                             f"instant: no friction can keep it rolling", file=file)
+        return mu
     if fn in ("Fc", "phi"):         # a cam's contact force (+ a push) / pressure angle
         c = next((c for c in st.contacts if c.label == args[0]), None)
         if c is None:

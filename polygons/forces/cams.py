@@ -1,5 +1,7 @@
 """The contact force of a cam (roller or flat-faced follower) or of a pin in a curved slot,
-read off the forces of the equivalent linkage.
+read off the forces of the equivalent linkage; and the friction and normal force on a wheel
+rolling on a fixed surface (its slider's guide force is the normal, and in place of a guide
+couple Newton–Euler finds the friction at the contact that makes it turn: I_G α = r × F).
 
 F_contact = the force in the equivalent link CR (roller, curved slot) or the slot's normal
 force on the follower (flat face).  A frictionless contact pushes along the common normal,
@@ -124,3 +126,26 @@ def words(c: CamContact) -> str:
         line += (f" — the cam would have to pull ({c.push:.6g} N): the follower leaves the "
                  f"cam at this instant (a stronger spring or a smaller speed keeps contact)")
     return line
+
+
+def mu_needed(label: str, ne: NEResult) -> float | None:
+    """The least coefficient of friction that keeps the wheel ``label`` rolling without
+    slipping: |F| / N (None when the surface does not press on it)."""
+    f = ne.rolling[label][0]
+    n = ne.guide[label][0]
+    return abs(f) / n if n > 0 else None
+
+
+def rolling_words(label: str, ne: NEResult) -> str:
+    """A wheel's contact with its fixed surface in a line: the normal force, the friction
+    that makes it roll (F = the force along the surface at the contact), the μ it needs."""
+    f, e, at = ne.rolling[label]
+    n = ne.guide[label][0]
+    d = math.degrees(math.atan2(e[1] * f, e[0] * f)) % 360.0 if f else 0.0
+    line = (f"rolling: the surface on the wheel {label}: normal {n:.6g} N, friction "
+            f"{abs(f):.6g} N along the surface towards {d:.6g}° at the contact "
+            f"({at[0] * 1e3:.6g}, {at[1] * 1e3:.6g}) mm")
+    mu = mu_needed(label, ne)
+    if mu is None:
+        return line + " — the surface would have to pull: the wheel leaves it at this instant"
+    return line + f"; it rolls without slipping while μ ≥ {mu:.4g}"

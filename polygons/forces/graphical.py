@@ -145,6 +145,9 @@ def groups_of(scene):
             raise UnsupportedError(f"{METHOD} finds the driver's effort, group by group to "
                                    f"the driver; [dynamics] effort = {e.text!r} is found by "
                                    f"Newton–Euler and Zhukovsky's lever", file=file)
+    rolled = [q.at for q in getattr(scene, "equivalents", ()) if q.kind == "rolling"]
+    if rolled:          # its slider's guide couple is friction at the contact, not a couple
+        raise _refuse("a rolling contact (its friction is no guide couple)", rolled[0], file)
     out = []
     for d in make_plan(scene).dyads:
         if not isinstance(d, GROUP_KINDS):

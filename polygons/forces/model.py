@@ -118,29 +118,52 @@ def _kin(sol: Solution, label: str, kind: str) -> np.ndarray:
     return np.zeros(2) if v is None else np.array(v)
 
 
+def wheel(sol: Solution, body: Body):
+    """The [rolling] wheel that ``body`` is (a block at its centre rolling on a fixed surface),
+    or None."""
+    if body.kind != "block":
+        return None
+    return next((q for q in getattr(sol.scene, "equivalents", ()) if q.kind == "rolling"
+                 and q.at == body.a and q.on is None and q.opposite is None), None)
+
+
+def _wheel_rates(sol: Solution, body: Body) -> tuple[float, float] | None:
+    """(ω, α) of a rolling wheel from the no-slip condition (:func:`polygons.wheels.rolling`)."""
+    q = wheel(sol, body)
+    if q is None:
+        return None
+    from ..wheels import rolling
+    h = rolling(sol, q) or {}
+    return float(h.get("omega") or 0.0), float(h.get("alpha") or 0.0)
+
+
 def image(sol: Solution, body: Body, r: np.ndarray, kind: str) -> np.ndarray:
     """Velocity or acceleration of the point at ``r`` of ``body``, from its first labelled point
     A by the theorems of the polygons: v = v_A + ω × AR, a = a_A + α × AR − ω² AR (the image
-    of the body in the polygon is similar to the body).  A slider block translates."""
-    if body.kind == "block":
+    of the body in the polygon is similar to the body).  A slider block translates; a rolling
+    wheel (a block at its centre) turns at the ω and α of rolling."""
+    rates = _wheel_rates(sol, body) if body.kind == "block" else None
+    if body.kind == "block" and rates is None:
         return _kin(sol, body.a, kind)
     ar = np.asarray(r, dtype=float) - position(sol, body.a)
-    link = sol.links[body.name]
+    w, al = rates if rates is not None else (sol.links[body.name].omega or 0.0,
+                                              sol.links[body.name].alpha or 0.0)
     if kind == "velocity":
-        return _kin(sol, body.a, kind) + relative_velocity(link.omega or 0.0, ar)
-    return (_kin(sol, body.a, kind) + tangential(link.alpha or 0.0, ar)
-            + centripetal(link.omega or 0.0, ar))
+        return _kin(sol, body.a, kind) + relative_velocity(w, ar)
+    return _kin(sol, body.a, kind) + tangential(al, ar) + centripetal(w, ar)
 
 
 def body_omega(sol: Solution, body: Body) -> float:
     if body.kind == "block":
-        return 0.0
+        rates = _wheel_rates(sol, body)
+        return 0.0 if rates is None else rates[0]
     return float(sol.links[body.name].omega or 0.0)
 
 
 def body_alpha(sol: Solution, body: Body) -> float:
     if body.kind == "block":
-        return 0.0
+        rates = _wheel_rates(sol, body)
+        return 0.0 if rates is None else rates[1]
     return float(sol.links[body.name].alpha or 0.0)
 
 

@@ -8,7 +8,8 @@ section of a uniform rod (:func:`section`).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -17,7 +18,7 @@ from ..evaluate import Solution
 from ..scene import Crank
 from . import effort
 from .model import (ForceModel, Load, body_alpha, centre, cross, image, inertias, loads, perp,
-                    position as _pos, unit_r)
+                    position as _pos, unit_r, wheel)
 
 
 @dataclass
@@ -35,6 +36,9 @@ class NEResult:
     loads: list[Load]
     residual: float
     equations: int
+    #: a wheel rolling on a fixed surface: label -> (friction on the wheel along the surface,
+    #: the surface's direction, the contact point)
+    rolling: dict = field(default_factory=dict)
 
 
 def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solution | None = None,
@@ -94,12 +98,23 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
         add_force(c, s.lever, rp, n)
         add_force(c, s.carrier, rp, -n)
         slot_cols.append((s, c, n))
-    guide_cols = []
+    guide_cols, roll_cols = [], []
     for lab in model.guides:
         n = perp(np.array(scene.model.guide[lab].line.direction))
         r = _pos(sol, lab)
-        cn = col(f"guide_force_{lab}", f"guide force on {lab} (⟂ guide)")
+        q = wheel(sol, bodies[lab])
+        cn = col(f"guide_force_{lab}", f"guide force on {lab} (⟂ guide)" if q is None else
+                 f"normal force of the surface on the wheel {lab}")
         add_force(cn, lab, r, n)
+        if q is not None:       # a rolling wheel turns: friction at the contact, no couple
+            e = np.array((math.cos(q.face), math.sin(q.face)))     # along the surface
+            contact = r - q.radius * perp(e)        # (the wheel above its surface's left)
+            cf = col(f"friction_{lab}", f"friction on the wheel {lab} at its contact (along "
+                                        f"the surface)")
+            add_force(cf, lab, contact, e)
+            roll_cols.append((lab, cf, e, contact))
+            guide_cols.append((lab, cn, None, n))
+            continue
         cm = col(f"guide_couple_{lab}", f"guide couple on {lab}")
         add_couple(cm, lab, 1.0)
         guide_cols.append((lab, cn, cm, n))
@@ -164,10 +179,12 @@ def newton_euler(model: ForceModel, sol: Solution, vsol: Solution, sol1: Solutio
         else:
             pin[(j.label, j.members[-1])] = -total
     slot = {s.pin: (float(x[c]), n) for s, c, n in slot_cols}
-    guide = {lab: (float(x[cn]), n, float(x[cm])) for lab, cn, cm, n in guide_cols}
+    guide = {lab: (float(x[cn]), n, 0.0 if cm is None else float(x[cm]))
+             for lab, cn, cm, n in guide_cols}
+    rolling = {lab: (float(x[cf]), e, contact) for lab, cf, e, contact in roll_cols}
     return NEResult(cols, keys, x, pin, ground, slot, guide,
                     None if sol1 is not None else float(x[cdrv]),
-                    float(x[cdrv]) if sol1 is not None else None, lds, residual, neq)
+                    float(x[cdrv]) if sol1 is not None else None, lds, residual, neq, rolling)
 
 
 def contact_force(model: ForceModel, ne: NEResult, label: str, body: str) -> np.ndarray:

@@ -8,7 +8,7 @@ from ..errors import SceneError, UnsupportedError
 from ..evaluate import Solution, solve
 from ..scene import Crank, Scene
 from . import effort
-from .cams import cam_contacts, words
+from .cams import cam_contacts, mu_needed, rolling_words, words
 from .model import ForceModel, Inertia, friction_sense, inertias
 from .newton_euler import NEResult, newton_euler
 from .virtual_work import Share, virtual_work
@@ -73,6 +73,8 @@ def _contacts(model: ForceModel, st: State) -> State:
     """``st`` with its cam contacts' forces, and a warning where a cam would have to pull."""
     st.contacts = cam_contacts(model, st.ne, st.sol)
     st.warnings += [words(c) for c in st.contacts if c.lost]
+    st.warnings += [rolling_words(lab, st.ne) for lab in st.ne.rolling
+                    if mu_needed(lab, st.ne) is None]
     return st
 
 

@@ -231,10 +231,16 @@ def test_no_load_on_the_equivalent_link(table, words):
         analyse(_scene(text))
 
 
-def test_rolling_contacts_with_loads_are_still_refused():
-    text = (CASES / "rolling-wheel-driven.toml").read_text().split("[[answers]]")[0]
-    with pytest.raises(UnsupportedError, match="does not handle a rolling contact"):
+@pytest.mark.parametrize("stem,words", [
+    ("rolling-cylinder-between-plates", "between plates"),
+    ("rolling-wheel-rim-pin", "a wheel driving the linkage"),
+    ("bar-on-half-cylinder", "a bar bearing on a circle"),
+])
+def test_other_rolling_contacts_with_loads_are_refused(stem, words):
+    text = (CASES / f"{stem}.toml").read_text().split("[[answers]]")[0]
+    with pytest.raises(UnsupportedError, match="does not handle a rolling contact") as e:
         _scene(text + '\n[gravity]\ng = "9.81 m/s^2"\n')
+    assert words in str(e.value)
 
 
 def test_force_answers_name_an_unknown_follower():
@@ -254,3 +260,99 @@ def test_the_handout_s_force_section_states_the_contact_force(tmp_path):
     key = build(str(path))
     assert '<p class="force-contact">' in key and "along the common normal" in key
     assert "99.7878 N" in key
+
+
+# ---------------------------------------------------------------- a wheel rolling on the floor
+def rolling_wheel_forces(theta, omega, alpha, m, I, g, r=0.05, OA=0.04, AW=0.15, y=0.02):
+    """The crank OA drives a massless rod AW to the centre W of a wheel (mass m, I_G) rolling
+    without slipping on the floor, its centre on the line y (tests/analytic.py slider_crank,
+    never the solver).  Rolling: ω_W = −v_W/r, α_W = −a_W/r.  The wheel:
+        x: P u_x + F = m a_W,  y: P u_y + N − m g = 0,  about W: r F = I_G α_W
+    (F the friction at the contact below W, P the rod's force along u = (W − A)/|W − A|);
+    the crank: T = A × P u.  Also the power balance T ω = m a_W v_W + I_G α_W ω_W."""
+    import analytic
+    k = analytic.slider_crank((0.0, 0.0), OA, AW, theta, omega, alpha, (0.0, y), 0.0, +1)
+    vW, aW = k["vB"][0], k["aB"][0]
+    wW, alW = -vW / r, -aW / r
+    F = I * alW / r
+    A, W = k["A"], k["B"]
+    u = (W - A) / np.hypot(*(W - A))
+    P = (m * aW - F) / u[0]
+    N = m * g - P * u[1]
+    T = float(A[0] * P * u[1] - A[1] * P * u[0])
+    assert abs(T * omega - (m * aW * vW + I * alW * wW)) <= 1e-9 * max(1.0, abs(T * omega))
+    return {"F": F, "N": N, "T": T, "mu": abs(F) / N, "aW": aW, "vW": vW, "alpha": alW}
+
+
+def _wheel_text(theta, omega, alpha, m, g):
+    return f"""
+title = "wheel driven by a crank and rod"
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+OA = "40 mm"
+AW = "150 mm"
+[driver]
+crank = "OA"
+angle = "{theta!r} rad"
+omega = "{abs(omega)!r} rad/s"
+sense = "{'CCW' if omega > 0 else 'CW'}"
+alpha = "{abs(alpha)!r} rad/s^2"
+alpha_sense = "{'CCW' if alpha > 0 else 'CW'}"
+[rolling.W]
+radius = "50 mm"
+through = ["0 mm", "-30 mm"]
+direction = "0 deg"
+[assembly]
+W = "W right of O"
+[masses.W]
+mass = "{m!r} kg"
+[gravity]
+g = "{g!r} m/s^2"
+"""
+
+
+def test_shipped_rolling_case_is_the_wheel_s_equations():
+    scene = load_scene(CASES / "rolling-wheel-forces.toml")
+    ex = rolling_wheel_forces(math.radians(50), 12.0, 0.0, 3.0, 0.5 * 3.0 * 0.05 ** 2, 9.81)
+    st = analyse(scene).states[0]
+    f, e, at = st.ne.rolling["W"]
+    assert abs(f - ex["F"]) <= 1e-9 * abs(ex["F"])
+    assert abs(st.ne.guide["W"][0] - ex["N"]) <= 1e-9 * ex["N"]
+    assert abs(st.ne.effort - ex["T"]) <= 1e-9 * abs(ex["T"])
+    assert np.allclose(at, (st.sol.points["W"].position[0], -0.03), atol=1e-12)
+    want = {"Ff(W)": ex["F"], "Rg(W)": ex["N"], "mu(W)": ex["mu"], "Tin": abs(ex["T"])}
+    got = {a.quantity: a.exact for a in scene.loads.answers}
+    for q, w in want.items():
+        assert abs(got[q] - w) <= 1e-9 * abs(w), q
+    kin = {a.quantity: a.exact for a in scene.answers}
+    assert kin == pytest.approx({"v(W)": abs(ex["vW"]), "a(W)": abs(ex["aW"]),
+                                 "alpha(W)": abs(ex["alpha"])}, rel=1e-12)
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_random_wheels_rolling_under_a_crank(seed):
+    rng = np.random.default_rng(100 + seed)
+    theta = float(rng.uniform(-math.pi, math.pi))
+    omega = float(rng.choice((-1, 1)) * rng.uniform(2, 30))
+    alpha = float(rng.uniform(-100, 100))
+    m, g = float(rng.uniform(0.5, 5)), float(rng.choice((0.0, 9.81)))
+    ex = rolling_wheel_forces(theta, omega, alpha, m, 0.5 * m * 0.05 ** 2, g)
+    st = analyse(_scene(_wheel_text(theta, omega, alpha, m, g))).states[0]
+    f = st.ne.rolling["W"][0]
+    assert abs(f - ex["F"]) <= 1e-9 * max(1.0, abs(ex["F"]))
+    assert abs(st.ne.guide["W"][0] - ex["N"]) <= 1e-9 * max(1.0, abs(ex["N"]))
+    assert abs(st.ne.effort - ex["T"]) <= 1e-9 * max(1.0, abs(ex["T"]))
+    assert abs(st.vw_effort - ex["T"]) <= 1e-9 * max(1.0, abs(ex["T"]))
+    lifted = ex["N"] <= 0
+    assert any("leaves it" in w for w in st.warnings) == lifted
+
+
+def test_a_rolling_wheel_is_refused_by_the_force_polygons_and_taken_by_the_lever():
+    from polygons.forces import graphical, zhukovsky
+    an = analyse(_scene(_wheel_text(0.9, 12.0, 0.0, 3.0, 9.81)))
+    st = an.states[0]
+    with pytest.raises(UnsupportedError, match="does not handle a rolling contact"):
+        graphical.construct(an, st)
+    lever = zhukovsky.construct(an, st)
+    assert abs(lever.effort - st.ne.effort) <= 1e-9 * abs(st.ne.effort)
