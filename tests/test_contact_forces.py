@@ -349,8 +349,11 @@ def test_random_wheels_rolling_under_a_crank(seed):
 
 
 def test_a_rolling_wheel_is_refused_by_the_force_polygons_and_taken_by_the_lever():
+    """Zhukovsky's lever: the wheel's velocity image turns with it, so a brake torque on the
+    wheel (a pair at its centre and its rim) and its inertia couple do their work there."""
     from polygons.forces import graphical, zhukovsky
-    an = analyse(_scene(_wheel_text(0.9, 12.0, 0.0, 3.0, 9.81)))
+    brake = '[torques.Brake]\non = "W"\ntorque = "0.5 N m"\nsense = "CW"\n'
+    an = analyse(_scene(_wheel_text(0.9, 12.0, 30.0, 3.0, 9.81) + brake))
     st = an.states[0]
     with pytest.raises(UnsupportedError, match="does not handle a rolling contact"):
         graphical.construct(an, st)

@@ -14,12 +14,13 @@ the inertia couple too.  At rest (input rate 0) the polygon of a unit input rate
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import effort as effort_mod
-from .model import cross, image, perp, position
+from .model import cross, image, perp, position, wheel
 from .states import Analysis, State
 
 
@@ -76,16 +77,20 @@ def construct(an: Analysis, st: State) -> Lever:
                        cross(q, f), label_at(body, r))
 
     def pair(name, kind, body, c) -> list[Applied]:
-        """A couple ``c`` on ``body`` as ±c/AB normal to AB at A and B (none on a block)."""
+        """A couple ``c`` on ``body`` as ±c/AB normal to AB at A and B (none on a block that
+        translates; a rolling wheel's at its centre and the top of its rim)."""
         b = model.bodies[body]
-        if b.kind == "block" or b.b is None or c == 0.0:
+        q = wheel(st.sol, b)
+        if c == 0.0 or (q is None and (b.kind == "block" or b.b is None)):
             return []
-        pa, pb = position(st.sol, b.a), position(st.sol, b.b)
+        pa = position(st.sol, b.a)
+        pb = (pa + q.radius * perp(np.array((math.cos(q.face), math.sin(q.face))))
+              if q is not None else position(st.sol, b.b))
         d = pb - pa
         ln = float(np.hypot(*d))
         f = c / ln * perp(d / ln)                 # (B − A) × f = c
         return [force(f"{name} at {b.a}", kind, body, -f, pa),
-                force(f"{name} at {b.b}", kind, body, f, pb)]
+                force(f"{name} at {b.b if q is None else 'the rim'}", kind, body, f, pb)]
 
     applied: list[Applied] = []
     for ld in st.ne.loads:
