@@ -164,6 +164,11 @@ class Solution:
                 warnings.append(f"{s.diagram} step {s.number}: the lines meeting at {s.end} "
                                 f"cross at only {angle:.3g}° — close to a toggle; the drawing "
                                 f"and this number are unreliable")
+        meet = getattr(self.scene.driver, "rod_angle_deg", None)
+        if meet is not None and meet < geometry.WARN_DEG:
+            warnings.append(f"the slider's speed from the rod's ω: the two directions that give "
+                            f"it meet at only {meet:.3g}° — the rod barely turns whatever the "
+                            f"slider's speed; this input is unreliable")
         if "velocity" in self.scene.solve and all(
                 c == 0.0 for v in self.vertices["velocity"].values() for c in v):
             warnings.append("the mechanism is at rest at this instant: every velocity is zero, "

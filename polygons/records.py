@@ -67,6 +67,9 @@ class SliderDrive:
     #: (rod, ω, α) when the book states the rate as the rod's ('the bar AB turns at 2 rad/s
     #: CW'): ``velocity``/``acceleration`` follow from it (topology.slider_rate_by_rod)
     rod_rate: tuple[str, float, float] | None = None
+    #: with ``rod_rate``: the angle (degrees) between the two directions whose meeting gives
+    #: the slider's speed from the rod's ω (near 0: the rod barely turns whatever the speed)
+    rod_angle_deg: float | None = None
 
 
 @dataclass(frozen=True)

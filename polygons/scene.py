@@ -492,9 +492,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                         drv, r, point, sliders, links, ground, data.get("assembly", {}),
                         split_link_name))
         if "rod_omega" in drv:          # the book gives the rod's ω and α
-            v, a, stated = topology.slider_rate_by_rod(drv, r, point, position, sliders, links,
-                                                       ground, split_link_name)
-            driver = SliderDrive(point, position, v, a, rod_rate=stated)
+            v, a, stated, meet = topology.slider_rate_by_rod(drv, r, point, position, sliders,
+                                                             links, ground, split_link_name)
+            driver = SliderDrive(point, position, v, a, rod_rate=stated, rod_angle_deg=meet)
         else:
             driver = SliderDrive(point, position,
                                  r.quantity(drv["velocity"], "velocity", "driver.velocity"),

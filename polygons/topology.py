@@ -387,7 +387,7 @@ def rod_of(drv, r, point, links, split):
 
 
 def slider_rate_by_rod(drv, r, point, position, sliders, links, ground, split
-                       ) -> tuple[float, float, tuple[str, float, float]]:
+                       ) -> tuple[float, float, tuple[str, float, float], float]:
     """The slider driver's (velocity, acceleration) along its guide when the book gives the
     angular velocity and acceleration of its rod ('the bar AB turns at 2 rad/s CW'), and
     (rod, ω, α) as stated.  With r = R − S, e the slider's guide:
@@ -443,7 +443,8 @@ def slider_rate_by_rod(drv, r, point, position, sliders, links, ground, split
     # accelerations: the pivot's centripetal term −ω₂² d moves to the right-hand side
     acc = solve(a * kr[0] - w * w * rx + extra[0] * x * x,
                 a * kr[1] - w * w * ry + extra[1] * x * x)
-    return v, acc, (name, w, a)
+    meet = math.degrees(math.asin(min(1.0, abs(det) / math.hypot(*col))))   # col ∧ e
+    return v, acc, (name, w, a), meet
 
 
 def lever_as_crank(drv: dict, r, slots_raw, links_raw) -> dict:

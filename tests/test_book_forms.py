@@ -248,7 +248,8 @@ def test_a_ladder_driven_by_the_bar_s_omega_and_alpha():
     ref = ladder_reference(4.0, math.radians(150), 2.0, -1.5)
     assert scene.driver.velocity == pytest.approx(ref["vA"], rel=1e-14)
     assert scene.driver.acceleration == pytest.approx(ref["aA"], rel=1e-13)
-    assert scene.driver.rod_rate == ("AB", 2.0, -1.5)
+    assert scene.driver.rod_rate == ("AB", 2.0, -1.5) and scene.driver.rod_angle_deg == \
+        pytest.approx(90.0)      # the two guides at right angles
     sol = solve(scene)
     assert sol.points["B"].position == pytest.approx((0.0, 2.0), abs=1e-12)
     assert sol.points["B"].velocity == pytest.approx((0.0, ref["vB"]), abs=1e-12)
@@ -332,3 +333,15 @@ def test_the_ladder_case_exact_answers_are_the_closed_form():
     sol = solve(scene)
     for a in scene.answers:
         assert quantity(sol, str(a.quantity)) == pytest.approx(a.exact, rel=1e-12)
+
+
+def test_the_rod_omega_near_where_the_rod_does_not_turn_is_warned():
+    """0.002° from the engine's extreme rod angle the two directions giving the piston's speed
+    meet at under 1°: solved, and said to be unreliable (as a construction near a toggle)."""
+    phi = math.degrees(math.atan2(0.05, -math.sqrt(0.17 ** 2 - 0.05 ** 2)))
+    scene = _engine_rate(phi + 0.002, {"rod_omega": "2 rad/s CCW"})
+    assert scene.driver.rod_angle_deg < 1.0
+    assert any("the rod barely turns" in w for w in solve(scene).warnings)
+    far = _engine_rate(170.0, {"rod_omega": "2 rad/s CCW"})
+    assert far.driver.rod_angle_deg > 10.0
+    assert not any("the rod barely turns" in w for w in solve(far).warnings)
