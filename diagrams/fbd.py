@@ -53,7 +53,13 @@ def body_forces(an: Analysis, st: State, body: str) -> tuple[list[Vector], list[
             continue
         seen.add(lab)
         vecs.append(Vector(f"R_{lab}", _pos(sol, lab), f, "contact"))
-    if body in ne.guide:
+    if body in ne.rolling:          # a rolling wheel: the surface's normal and friction
+        v, n, _ = ne.guide[body]
+        f, e, at = ne.rolling[body]
+        vecs.append(Vector(f"N_{body} (surface)", np.asarray(at), v * n, "contact"))
+        vecs.append(Vector(f"F_{body} (friction)", np.asarray(at), f * np.asarray(e),
+                           "contact"))
+    elif body in ne.guide:
         v, n, c = ne.guide[body]
         vecs.append(Vector(f"N_{body} (guide)", _pos(sol, body), v * n, "contact"))
         if c:
@@ -114,6 +120,10 @@ def drawings(an: Analysis):
             pts = {lab: _pos(st.sol, lab) for lab in body.labels}
             pts.update({f"G:{i.item}": i.centre for i in st.inertia if i.body == name})
             allp = list(pts.values()) + [v.at for v in vecs]
+            if name in st.ne.rolling:       # the wheel's rim, all round its centre
+                rr = float(np.hypot(*(np.asarray(st.ne.rolling[name][2]) - pts[body.a])))
+                allp += [pts[body.a] + rr * np.array(d) for d in ((1, 0), (-1, 0), (0, 1),
+                                                                  (0, -1))]
             bb = bounds([tuple(p) for p in allp])
             ext = max(bb.x1 - bb.x0, bb.y1 - bb.y0, 1e-9)
             lscale = Scale("length", round_up(ext * 10.0 / 90.0), "mm", 1e-3)
@@ -123,7 +133,15 @@ def drawings(an: Analysis):
                 return (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3))
 
             items = []
-            if body.kind == "block":
+            roll = st.ne.rolling.get(name)
+            rim = []
+            if roll is not None:            # a wheel: its rim to scale, the contact on it
+                c = P(pts[body.a])
+                rad = float(np.hypot(*(np.asarray(roll[2]) - pts[body.a]))) * k
+                rim = [(c[0] + rad * math.cos(t * math.pi / 24),
+                        c[1] + rad * math.sin(t * math.pi / 24)) for t in range(49)]
+                items.append(Polyline(tuple(rim), "link", cls=f"body wheel {name}"))
+            elif body.kind == "block":
                 c = P(pts[body.a])
                 e = np.array(model.scene.model.guide[body.a].line.direction)
                 n = np.array([-e[1], e[0]])
@@ -169,7 +187,7 @@ def drawings(an: Analysis):
                 style = "result" if v.kind == "inertia" else "vector"
                 arrows.append(Arrow(tail, tip, style, head, shaft, name=v.name,
                                     role="known", title=f"{v.name} = {_fmt(mag)} N"))
-            arcs = []
+            arcs = list(zip(rim, rim[1:]))       # labels kept off a wheel's rim too
             for cpl in couples:
                 c = P(cpl.at)
                 r = 6.0
