@@ -359,3 +359,25 @@ def test_a_rolling_wheel_is_refused_by_the_force_polygons_and_taken_by_the_lever
         graphical.construct(an, st)
     lever = zhukovsky.construct(an, st)
     assert abs(lever.effort - st.ne.effort) <= 1e-9 * abs(st.ne.effort)
+
+
+def test_the_wheel_s_free_body_closes_with_friction_at_its_contact(tmp_path):
+    """The free body of the wheel: the surface's normal and friction at the contact (not a
+    guide force at the centre), and with its inertia force the forces sum to zero and their
+    moments about the centre to −(−I_G α); the SVG draws the rim."""
+    from diagrams.fbd import body_forces, write
+    an = analyse(load_scene(CASES / "rolling-wheel-forces.toml"))
+    st = an.states[0]
+    vecs, couples = body_forces(an, st, "W")
+    names = [v.name for v in vecs]
+    assert "N_W (surface)" in names and "F_W (friction)" in names
+    assert not any("guide" in n for n in names)
+    W = np.array(st.sol.points["W"].position)
+    total = sum((v.force for v in vecs), np.zeros(2))
+    assert np.allclose(total, 0.0, atol=1e-9)
+    moment = sum(float((v.at - W)[0] * v.force[1] - (v.at - W)[1] * v.force[0]) for v in vecs)
+    moment += sum(c.value for c in couples)
+    assert abs(moment) < 1e-9
+    files = write(an, tmp_path)
+    svg = next(p for p in files if p.name == "fbd-instant-w.svg").read_text()
+    assert "wheel W" in svg
