@@ -339,20 +339,29 @@ def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
     where): what the staged and the compiled solutions show.  Each record is made once
     (:func:`polygons.reader.record`, every field set at once); its formula with the numbers
     is written from its terms when shown (:func:`polygons.narrate.substitute`)."""
-    numbers = [([(sym, _term(r, i), u) for sym, i, u in o.terms],
+    numbers = [([(sym, r[i] if type(i) is int else _term(r, i), u) for sym, i, u in o.terms],
                 None if o.value is None else r[o.value]) for o in layout]
     zero = _rounding_noise(numbers, layout)
+    new = object.__new__
     done = []
     for step, o, (terms, value) in zip(steps, layout, numbers):
         f = o.fields
-        vals = dict(step.__dict__)
+        vals = step.__dict__.copy()
         for k in _FIELDS:
-            vals[k] = (r[f[k][0]], r[f[k][1]]) if k in f else None
-        filled = tuple(record(Term, symbol=sym, value=zero(v, u), unit=u)
-                       for sym, v, u in terms)
-        vals.update(value=None if value is None else zero(value, o.unit), unit=o.unit,
-                    angle_deg=None if o.angle is None else r[o.angle], terms=filled)
-        done.append(record(Step, **vals))
+            ij = f.get(k)
+            vals[k] = None if ij is None else (r[ij[0]], r[ij[1]])
+        filled = []
+        for sym, v, u in terms:                 # (records made whole at once, as record())
+            t = new(Term)
+            t.__dict__.update(symbol=sym, value=zero(v, u), unit=u)
+            filled.append(t)
+        vals["value"] = None if value is None else zero(value, o.unit)
+        vals["unit"] = o.unit
+        vals["angle_deg"] = None if o.angle is None else r[o.angle]
+        vals["terms"] = tuple(filled)
+        s = new(Step)
+        s.__dict__.update(vals)
+        done.append(s)
     return tuple(done)
 
 
@@ -366,14 +375,18 @@ def _rounding_noise(numbers, layout):
     starting from rest, which the construction leaves at ~1e-15 and a book prints as 0."""
     scale = dict.fromkeys(_RATES, 0.0)
     for (terms, value), o in zip(numbers, layout):
-        for _, v, u in terms + ([("", value, o.unit)] if value is not None else []):
-            if u in scale:
-                scale[u] = max(scale[u], abs(v))
+        for _, v, u in terms:
+            if u in scale and abs(v) > scale[u]:
+                scale[u] = abs(v)
+        if value is not None and o.unit in scale and abs(value) > scale[o.unit]:
+            scale[o.unit] = abs(value)
     scale["rad/s^2"] = max(scale["rad/s^2"], scale["rad/s"] ** 2)
     floor = {u: noise_floor([v]) for u, v in scale.items()}
+    get = floor.get
 
     def zero(v, u):
-        return 0.0 if u in floor and abs(v) <= floor[u] else v
+        f = get(u)
+        return 0.0 if f is not None and abs(v) <= f else v
     return zero
 
 
