@@ -381,3 +381,96 @@ def test_the_wheel_s_free_body_closes_with_friction_at_its_contact(tmp_path):
     files = write(an, tmp_path)
     svg = next(p for p in files if p.name == "fbd-instant-w.svg").read_text()
     assert "wheel W" in svg
+
+
+# ---------------------------------------------------------------- the turning-moment diagram
+def _crank_under_gravity(n_text=""):
+    return """
+title = "crank with a weight at its tip"
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+OA = "200 mm"
+[driver]
+crank = "OA"
+angle = "30 deg"
+omega = "10 rad/s"
+sense = "CCW"
+[masses.Tip]
+at = "A"
+mass = "5 kg"
+[gravity]
+g = "9.81 m/s^2"
+"""
+
+
+def test_turning_moment_of_a_weight_on_a_crank_is_m_g_r_cos_theta():
+    """A point mass at the crank's tip at constant ω: its inertia force is centripetal
+    (through O), so T(θ) = m g r cos θ exactly, the mean is 0 and E(θ) = m g r sin θ + c:
+    ΔE = 2 m g r (to the trapezoids' O(1/n²))."""
+    from polygons.forces.analysis import load_model
+    from polygons.forces.cycle import turning_moment
+    scene = _scene(_crank_under_gravity())
+    cy = turning_moment(load_model(scene), scene, 720)
+    mgr = 5 * 9.81 * 0.2
+    assert np.allclose(cy.torque, mgr * np.cos(cy.theta), rtol=0, atol=1e-9 * mgr)
+    assert cy.mean == 0.0
+    assert abs(cy.fluctuation - 2 * mgr) < 1e-4 * mgr
+    assert math.degrees(cy.at_max) % 360 == pytest.approx(90.0, abs=0.5)
+    assert cy.vw_error < 1e-9 * mgr
+    assert cy.flywheel_inertia(0.02) == pytest.approx(cy.fluctuation / (100 * 0.02))
+
+
+def test_turning_moment_of_a_piston_s_inertia_is_its_power():
+    """An engine whose only mass is the piston (massless crank and rod), at constant ω:
+    T ω = m a_P v_P at every angle, a_P and v_P from tests/analytic.py's slider-crank loop."""
+    import analytic
+    from polygons.forces.analysis import load_model
+    from polygons.forces.cycle import turning_moment
+    text = """
+title = "engine, piston inertia only"
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+OA = "50 mm"
+AB = "200 mm"
+[sliders.B]
+through = ["0 mm", "0 mm"]
+direction = "0 deg"
+[driver]
+crank = "OA"
+angle = "40 deg"
+omega = "100 rad/s"
+sense = "CCW"
+[assembly]
+B = "B right of O"
+[masses.B]
+mass = "2 kg"
+"""
+    scene = _scene(text)
+    cy = turning_moment(load_model(scene), scene, 90)
+    for th, T in zip(cy.theta, cy.torque):
+        k = analytic.slider_crank((0, 0), 0.05, 0.2, float(th), 100.0, 0.0, (0, 0), 0.0, +1)
+        want = 2.0 * float(k["aB"] @ k["vB"]) / 100.0
+        assert abs(T - want) <= 1e-9 * 2.0 * 0.05 * 100.0 ** 2 * 0.05
+
+
+def test_turning_moment_refusals_and_cli(tmp_path):
+    from polygons.cli import main
+    from polygons.forces.analysis import load_model
+    from polygons.forces.cycle import turning_moment
+    scene = _scene(_crank_under_gravity())
+    with pytest.raises(PolygonsError, match="4 to 3600"):
+        turning_moment(load_model(scene), scene, 2)
+    ladder = load_scene(CASES / "book-ladder-bar-omega.toml")
+    with pytest.raises(UnsupportedError, match="driver is a slider"):
+        turning_moment(load_model(ladder), ladder, 36)
+    p = tmp_path / "w.toml"
+    p.write_text(_crank_under_gravity())
+    out = tmp_path / "o.txt"
+    assert main(["forces", str(p), "--cycle", "36", "--fluctuation", "2 %", "-o", str(out),
+                 "--svg", str(tmp_path / "d")]) == 0
+    text = out.read_text()
+    assert "maximum fluctuation of energy ΔE" in text and "I = ΔE / (ω² C_s)" in text
+    assert (tmp_path / "d" / "turning-moment.svg").exists()
+    assert main(["forces", str(p), "--fluctuation", "2 %"]) == 1    # said in one line

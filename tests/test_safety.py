@@ -413,7 +413,8 @@ def test_repeated_sweep_labels_are_taken_once(scene, tmp_path):
 #: (README, "Counts"): a new one must be added here, with its bound checked before work
 BOUNDED_COUNTS = {("sweep", "--steps"): ["--steps", "10000001"],
                   ("exam", "--variants"): ["--variants", "1000000000000", "--out", "{tmp}"],
-                  ("exam", "--seed"): ["--variants", "1", "--seed", "-1", "--out", "{tmp}"]}
+                  ("exam", "--seed"): ["--variants", "1", "--seed", "-1", "--out", "{tmp}"],
+                  ("forces", "--cycle"): ["--cycle", "100000", "-o", "{tmp}"]}
 
 
 def test_every_whole_number_option_is_bounded_before_work(scene, tmp_path):

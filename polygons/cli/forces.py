@@ -33,6 +33,13 @@ def register(sub) -> None:
     add_out_option(p)
     p.add_argument("--svg", metavar="DIR", help="also write a free-body diagram and a force "
                                                "polygon (SVG) per body and state to DIR")
+    p.add_argument("--cycle", type=int, metavar="N",
+                   help="the turning-moment diagram instead: the input torque at N crank "
+                        "angles round the turn (4 to 3600), its mean and the maximum "
+                        "fluctuation of energy; with --svg, its plot")
+    p.add_argument("--fluctuation", metavar="CS",
+                   help="with --cycle: the coefficient of fluctuation of speed ('2 %%' or "
+                        "0.02), for the flywheel's inertia I = ΔE / (ω² C_s)")
     p.set_defaults(func=run)
 
 
@@ -43,6 +50,8 @@ def run(args) -> int:
         raise SceneError("this scene has no [masses], [forces], [torques], [springs], "
                          "[efficiency] or [flywheel]: there is nothing for a force analysis "
                          "to do", file=scene.file)
+    if args.cycle is not None or args.fluctuation is not None:
+        return _run_cycle(args, scene)
     an = analyse(scene)
     paths = []
     if args.svg:
@@ -518,3 +527,77 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     for w in st.warnings:
         out.append(f"  warning: {w}")
     return out
+
+
+def _run_cycle(args, scene) -> int:
+    """``--cycle N``: the turning-moment diagram (polygons.forces.cycle)."""
+    from ..forces.cycle import turning_moment
+    from ..forces.analysis import load_model
+    from ..units import parse_quantity
+    if args.cycle is None:
+        raise SceneError("--fluctuation goes with --cycle N (the turning-moment diagram)",
+                         file=scene.file)
+    cs = None
+    if args.fluctuation is not None:
+        text = args.fluctuation.strip()
+        cs = parse_quantity(text if any(c.isalpha() or c == "%" for c in text) else
+                            f"{text} 1", "fraction")
+        if not 0.0 < cs < 1.0:
+            raise SceneError(f"--fluctuation must be between 0 and 1 (or 0 and 100 %), got "
+                             f"{args.fluctuation!r}", file=scene.file)
+    cy = turning_moment(load_model(scene), scene, args.cycle)
+    if args.json:
+        text = json_text({"theta_deg": [math.degrees(t) for t in cy.theta],
+                          "torque": cy.torque.tolist(), "energy": cy.energy.tolist(),
+                          "mean_torque": cy.mean, "max_fluctuation_of_energy": cy.fluctuation,
+                          "energy_max_at_deg": math.degrees(cy.at_max) % 360.0,
+                          "energy_min_at_deg": math.degrees(cy.at_min) % 360.0,
+                          "virtual_work_max_difference": cy.vw_error,
+                          "flywheel_inertia": None if cs is None else cy.flywheel_inertia(cs),
+                          "fluctuation_of_speed": cs})
+    else:
+        text = cycle_table(scene, cy, cs)
+    if args.svg:
+        from diagrams.plots import Line, Marker, Panel, plot_panels
+        deg = np.degrees(cy.theta) % 360.0
+        order = np.argsort(deg)
+        paths = plot_panels(
+            f"Turning-moment diagram: {scene.title}", "crank angle (deg, CCW from +x)",
+            [Panel("input torque (N m)", [Line("T(θ)", deg[order], cy.torque[order]),
+                                          Line(f"mean {cy.mean:.4g} N m", deg[order],
+                                               np.full(len(deg), cy.mean), style="--")]),
+             Panel("energy above the mean (J)", [Line("E(θ)", deg[order],
+                                                      cy.energy[order])])],
+            f"{args.svg}/turning-moment",
+            markers=[Marker(math.degrees(scene.driver.angle) % 360.0, "scene")],
+            xlim=(0.0, 360.0))
+        if not args.json:
+            text += f"\ndiagrams: {', '.join(str(p) for p in paths)}\n"
+    emit(text, args.out)
+    return 0
+
+
+def cycle_table(scene, cy, cs=None) -> str:
+    """The turning-moment diagram in text: its summary, then T and E at (up to) 36 angles."""
+    hi, lo = int(np.argmax(cy.torque)), int(np.argmin(cy.torque))
+
+    def deg(t):
+        return f"{math.degrees(t) % 360.0:.6g}°"
+    lines = [f"turning-moment diagram: {scene.title}",
+             f"  input torque on {scene.driver.link} at {len(cy.theta)} angles round the "
+             f"turn (kinetostatic, ω = {abs(scene.driver.omega):.6g} rad/s "
+             f"{_sense(scene.driver.omega)}; CCW +)",
+             f"  maximum {cy.torque[hi]:.6g} N m at {deg(cy.theta[hi])}; minimum "
+             f"{cy.torque[lo]:.6g} N m at {deg(cy.theta[lo])}; mean {cy.mean:.6g} N m",
+             f"  maximum fluctuation of energy ΔE = {cy.fluctuation:.6g} J (E greatest at "
+             f"{deg(cy.at_max)}, least at {deg(cy.at_min)})",
+             f"  virtual work equals Newton–Euler at every angle (largest difference "
+             f"{cy.vw_error:.1e} N m)"]
+    if cs is not None:
+        lines.append(f"  flywheel for a coefficient of fluctuation of speed {cs:g}: "
+                     f"I = ΔE / (ω² C_s) = {cy.flywheel_inertia(cs):.6g} kg m²")
+    lines.append(f"  {'θ':>10} {'T N m':>14} {'E J':>14}")
+    every = max(1, len(cy.theta) // 36)
+    for i in range(0, len(cy.theta), every):
+        lines.append(f"  {deg(cy.theta[i]):>10} {cy.torque[i]:>14.6g} {cy.energy[i]:>14.6g}")
+    return "\n".join(lines) + "\n"

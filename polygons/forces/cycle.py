@@ -1,0 +1,102 @@
+"""The turning-moment diagram: the input torque over a turn of the crank, as books draw it
+before sizing a flywheel.
+
+At N crank angles round the turn the kinetostatic analysis is solved (the loads, springs and
+inertia of the scene; the crank at its stated ω and α), each closure pinned near the one the
+sweep follows from the scene's instant (:func:`polygons.sweep.sweep`), so the mechanism keeps
+its assembly.  Then, with T(θ) the input torque and T_m its mean over the turn,
+
+    E(θ) = ∫₀^θ (T − T_m) dθ        (trapezoids, the energy above the mean),
+    ΔE = max E − min E               (the maximum fluctuation of energy),
+
+and a flywheel keeping the speed within ±C_s/2 of ω needs I = ΔE / (ω² C_s).  Virtual work
+is checked against Newton–Euler at every angle.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from types import MappingProxyType
+
+import numpy as np
+
+from ..errors import SceneError, UnsupportedError
+from ..scene import Branch, Crank, Scene
+from .model import spring_refs
+from .states import driver_state, kinetostatic
+
+#: the most angles one cycle may have (each a full force analysis, ~2 ms)
+MAX_CYCLE = 3600
+
+
+@dataclass(frozen=True)
+class Cycle:
+    """``theta`` (rad, absolute crank angles from the scene's), ``torque`` (N m, the input
+    torque, CCW +), ``energy`` (J, E(θ) above the mean), the mean, ΔE and where E is greatest
+    and least; ``vw_error``: the largest |T_NE − T_VW| over the turn."""
+    theta: np.ndarray
+    torque: np.ndarray
+    energy: np.ndarray
+    mean: float
+    fluctuation: float
+    at_max: float
+    at_min: float
+    vw_error: float
+    omega: float
+
+    def flywheel_inertia(self, cs: float) -> float:
+        """I = ΔE / (ω² C_s): the flywheel that keeps the speed within the coefficient of
+        fluctuation ``cs`` (ω_max − ω_min = C_s ω)."""
+        return self.fluctuation / (self.omega ** 2 * cs)
+
+
+def turning_moment(model, scene: Scene, n: int) -> Cycle:
+    """The input torque at ``n`` angles round the turn from the scene's crank angle."""
+    drv = scene.driver
+    if not isinstance(drv, Crank):
+        raise UnsupportedError("the turning-moment diagram is drawn over a crank's turn: this "
+                               "scene's driver is a slider", file=scene.file)
+    if model.mode != "kinetostatic":
+        raise UnsupportedError(f"the turning-moment diagram is a kinetostatic analysis at "
+                               f"the crank's stated ω; [dynamics] mode = {model.mode!r}",
+                               file=scene.file)
+    if not 4 <= n <= MAX_CYCLE:
+        raise SceneError(f"--cycle takes 4 to {MAX_CYCLE} angles, got {n}", file=scene.file)
+    if drv.omega == 0.0:
+        raise UnsupportedError("the crank is at rest: a turning-moment diagram needs it "
+                               "turning (its ω)", file=scene.file)
+    from ..evaluate import solve
+    from ..sweep import sweep
+    sense = 1.0 if drv.omega > 0 else -1.0
+    thetas = drv.angle + sense * 2.0 * math.pi * np.arange(n) / n
+    sw = sweep(scene, inputs=thetas)
+    lost = [i for i in range(n) if not sw.margin[i] > 0]
+    if lost:
+        raise UnsupportedError(f"the crank does not turn fully: the mechanism cannot be "
+                               f"assembled at {math.degrees(thetas[lost[0]]) % 360:.4g}° "
+                               f"(a limit of its range), so there is no turning-moment "
+                               f"diagram over a turn", file=scene.file)
+    model = replace(model, ref=MappingProxyType(spring_refs(model, solve(scene))))
+    torque, worst = np.empty(n), 0.0
+    for i, th in enumerate(thetas):
+        asm = {lab: Branch(lab, f"{lab} as followed from the scene's instant", "near",
+                           near=(float(sw.pos[lab][0][i]), float(sw.pos[lab][1][i])))
+               for lab in sw.branches}
+        at = replace(driver_state(scene, angle=float(th)), assembly=asm)
+        st = kinetostatic(model, at, name=f"{math.degrees(th) % 360:.6g} deg")
+        torque[i] = st.ne.effort
+        worst = max(worst, abs(st.ne.effort - st.vw_effort))
+    mean = float(np.mean(torque))
+    if abs(mean) <= 1e-12 * float(np.max(np.abs(torque))):
+        mean = 0.0          # rounding noise of a mean that is zero (conservative loads)
+    step = 2.0 * math.pi / n
+    # E at each angle: trapezoids of (T − T_m) dθ in the sense of rotation
+    excess = torque - mean
+    energy = np.concatenate(([0.0], np.cumsum(0.5 * (excess[1:] + excess[:-1]) * step)))
+    energy = energy * sense
+    hi, lo = int(np.argmax(energy)), int(np.argmin(energy))
+    return Cycle(thetas, torque, energy, mean, float(energy[hi] - energy[lo]),
+                 float(thetas[hi]), float(thetas[lo]), worst, abs(drv.omega))
+
+
+__all__ = ["Cycle", "turning_moment", "MAX_CYCLE"]
