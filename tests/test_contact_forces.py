@@ -474,3 +474,20 @@ def test_turning_moment_refusals_and_cli(tmp_path):
     assert "maximum fluctuation of energy ΔE" in text and "I = ΔE / (ω² C_s)" in text
     assert (tmp_path / "d" / "turning-moment.svg").exists()
     assert main(["forces", str(p), "--fluctuation", "2 %"]) == 1    # said in one line
+
+
+@pytest.mark.parametrize("stem", ["forces-triad", "forces-whitworth", "s001-we8",
+                                  "forces-scotch-yoke", "forces-toggle-press",
+                                  "cam-roller-forces", "rolling-wheel-forces",
+                                  "khurmi-flywheel-steam-engine"])
+def test_over_a_turn_steady_loads_do_no_net_work(stem):
+    """Every load of these cases is steady (weights, constant forces and springs) and the
+    crank turns uniformly, so the mechanism's energy returns after a turn: the mean input
+    torque is zero to the sampling's precision — a check of every angle's analysis at once
+    (the triad's, with the case's α, was not: the diagram now takes α = 0)."""
+    from polygons.forces.analysis import load_model
+    from polygons.forces.cycle import turning_moment
+    scene = load_scene(CASES / f"{stem}.toml")
+    cy = turning_moment(load_model(scene), scene, 240)
+    assert abs(float(np.mean(cy.torque))) <= 1e-6 * float(np.max(np.abs(cy.torque)))
+    assert cy.vw_error <= 1e-9 * float(np.max(np.abs(cy.torque)))

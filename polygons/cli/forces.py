@@ -554,7 +554,7 @@ def _run_cycle(args, scene) -> int:
                           "energy_min_at_deg": math.degrees(cy.at_min) % 360.0,
                           "virtual_work_max_difference": cy.vw_error,
                           "flywheel_inertia": None if cs is None else cy.flywheel_inertia(cs),
-                          "fluctuation_of_speed": cs})
+                          "fluctuation_of_speed": cs, "warnings": list(cy.warnings)})
     else:
         text = cycle_table(scene, cy, cs)
     if args.svg:
@@ -582,11 +582,11 @@ def cycle_table(scene, cy, cs=None) -> str:
     hi, lo = int(np.argmax(cy.torque)), int(np.argmin(cy.torque))
 
     def deg(t):
-        return f"{math.degrees(t) % 360.0:.6g}°"
+        return f"{round(math.degrees(t) % 360.0, 9) % 360.0:.6g}°"
     lines = [f"turning-moment diagram: {scene.title}",
              f"  input torque on {scene.driver.link} at {len(cy.theta)} angles round the "
-             f"turn (kinetostatic, ω = {abs(scene.driver.omega):.6g} rad/s "
-             f"{_sense(scene.driver.omega)}; CCW +)",
+             f"turn (kinetostatic, uniform ω = {abs(scene.driver.omega):.6g} rad/s "
+             f"{_sense(scene.driver.omega)}, α = 0; CCW +)",
              f"  maximum {cy.torque[hi]:.6g} N m at {deg(cy.theta[hi])}; minimum "
              f"{cy.torque[lo]:.6g} N m at {deg(cy.theta[lo])}; mean {cy.mean:.6g} N m",
              f"  maximum fluctuation of energy ΔE = {cy.fluctuation:.6g} J (E greatest at "
@@ -596,6 +596,7 @@ def cycle_table(scene, cy, cs=None) -> str:
     if cs is not None:
         lines.append(f"  flywheel for a coefficient of fluctuation of speed {cs:g}: "
                      f"I = ΔE / (ω² C_s) = {cy.flywheel_inertia(cs):.6g} kg m²")
+    lines += [f"  warning: {w}" for w in cy.warnings]
     lines.append(f"  {'θ':>10} {'T N m':>14} {'E J':>14}")
     every = max(1, len(cy.theta) // 36)
     for i in range(0, len(cy.theta), every):

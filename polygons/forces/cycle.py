@@ -2,7 +2,8 @@
 before sizing a flywheel.
 
 At N crank angles round the turn the kinetostatic analysis is solved (the loads, springs and
-inertia of the scene; the crank at its stated ω and α), each closure pinned near the one the
+inertia of the scene; the crank turning uniformly at its stated ω, α = 0, as the diagram is
+drawn for a flywheel), each closure pinned near the one the
 sweep follows from the scene's instant (:func:`polygons.sweep.sweep`), so the mechanism keeps
 its assembly.  Then, with T(θ) the input torque and T_m its mean over the turn,
 
@@ -43,6 +44,7 @@ class Cycle:
     at_min: float
     vw_error: float
     omega: float
+    warnings: tuple[str, ...] = ()      # the sweep's: toggles and near-toggles on the way
 
     def flywheel_inertia(self, cs: float) -> float:
         """I = ΔE / (ω² C_s): the flywheel that keeps the speed within the coefficient of
@@ -60,6 +62,10 @@ def turning_moment(model, scene: Scene, n: int) -> Cycle:
         raise UnsupportedError(f"the turning-moment diagram is a kinetostatic analysis at "
                                f"the crank's stated ω; [dynamics] mode = {model.mode!r}",
                                file=scene.file)
+    if model.parsed.effort is not None:
+        raise UnsupportedError("the turning-moment diagram is the crank's torque; this scene "
+                               "finds its effort elsewhere ([dynamics] effort)",
+                               file=scene.file)
     if not 4 <= n <= MAX_CYCLE:
         raise SceneError(f"--cycle takes 4 to {MAX_CYCLE} angles, got {n}", file=scene.file)
     if drv.omega == 0.0:
@@ -68,21 +74,31 @@ def turning_moment(model, scene: Scene, n: int) -> Cycle:
     from ..evaluate import solve
     from ..sweep import sweep
     sense = 1.0 if drv.omega > 0 else -1.0
-    thetas = drv.angle + sense * 2.0 * math.pi * np.arange(n) / n
-    sw = sweep(scene, inputs=thetas)
-    lost = [i for i in range(n) if not sw.margin[i] > 0]
+    thetas = drv.angle + sense * 2.0 * math.pi * np.arange(n + 1) / n
+    sw = sweep(scene, inputs=thetas)        # (one more: the turn's end, to compare)
+    lost = [i for i in range(n + 1) if not sw.margin[i] > 0]
     if lost:
         raise UnsupportedError(f"the crank does not turn fully: the mechanism cannot be "
                                f"assembled at {math.degrees(thetas[lost[0]]) % 360:.4g}° "
                                f"(a limit of its range), so there is no turning-moment "
                                f"diagram over a turn", file=scene.file)
+    paths = {lab: np.asarray(xy) for lab, xy in sw.pos.items() if np.ndim(xy) == 2}
+    size = max([float(np.max(np.abs(xy))) for xy in paths.values()], default=1.0)
+    moved = [lab for lab, xy in paths.items()
+             if float(np.hypot(xy[0][n] - xy[0][0], xy[1][n] - xy[1][0])) > 1e-6 * size]
+    if moved:
+        raise UnsupportedError(f"after one turn of the crank the mechanism is not where it "
+                               f"started ({moved[0]} is elsewhere: its closure changed on the "
+                               f"way), so one turn is no cycle of its turning moment",
+                               file=scene.file)
+    thetas = thetas[:n]
     model = replace(model, ref=MappingProxyType(spring_refs(model, solve(scene))))
     torque, worst = np.empty(n), 0.0
     for i, th in enumerate(thetas):
         asm = {lab: Branch(lab, f"{lab} as followed from the scene's instant", "near",
                            near=(float(sw.pos[lab][0][i]), float(sw.pos[lab][1][i])))
                for lab in sw.branches}
-        at = replace(driver_state(scene, angle=float(th)), assembly=asm)
+        at = replace(driver_state(scene, angle=float(th), alpha=0.0), assembly=asm)
         st = kinetostatic(model, at, name=f"{math.degrees(th) % 360:.6g} deg")
         torque[i] = st.ne.effort
         worst = max(worst, abs(st.ne.effort - st.vw_effort))
@@ -96,7 +112,8 @@ def turning_moment(model, scene: Scene, n: int) -> Cycle:
     energy = energy * sense
     hi, lo = int(np.argmax(energy)), int(np.argmin(energy))
     return Cycle(thetas, torque, energy, mean, float(energy[hi] - energy[lo]),
-                 float(thetas[hi]), float(thetas[lo]), worst, abs(drv.omega))
+                 float(thetas[hi]), float(thetas[lo]), worst, abs(drv.omega),
+                 tuple(sw.warnings))
 
 
 __all__ = ["Cycle", "turning_moment", "MAX_CYCLE"]
