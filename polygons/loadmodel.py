@@ -71,6 +71,8 @@ class AppliedForce:
     at: str
     force: Vec
     how: str
+    #: it acts only while it opposes its point's motion (a cutting force: none on the return)
+    resisting: bool = False
 
 
 @dataclass(frozen=True)

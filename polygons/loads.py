@@ -4,9 +4,7 @@
     mass = "0.8 kg"
     inertia = "rod"             # 'rod' (m l²/12, default), 'disc' (+ radius), 'point', or "0.002 kg m^2"
     centre = 0.5                # fraction of the link from its first label, or "90 mm"
-    [masses.End]                # a point mass carried by the body at C
-    at = "C"
-    mass = "0.4 kg"
+    [masses.End]                # a point mass carried by the body at C: at = "C", mass = ...
     [gravity]
     g = "9.81 m/s^2"            # direction = "-90 deg" by default (down)
     [forces.Gas]
@@ -18,15 +16,11 @@
     on = "DB"
     torque = "6 N m"
     sense = "CW"
-    [torques.Pin]
-    at = "O"
-    friction = "0.1 N m"        # constant, opposes the relative rotation at the pin
     [springs.K]
     stiffness = "100 N/m"       # between = ["S", "H"] + free_length, or at + direction + extension
-    [springs.Kt]
-    stiffness = "2 N m/rad"     # torsional, at a pin; twist = "0 deg" at this instant
     [dynamics]
     mode = "kinetostatic"       # | "torque-driven" | "release"  (see polygons.forces.release)
+    # pin friction torques, torsional springs, efforts: docs/scene-reference.md
 
 :func:`parse` reads them from ``Scene.extra`` (where :mod:`polygons.scene` keeps them raw) into
 frozen records; every problem is a :class:`~polygons.errors.SceneError` naming the key.  The
@@ -110,6 +104,9 @@ TABLES: tuple[Table, ...] = (
             "length"),
         Key("rod_side", "string", "'back' (default) or 'front': the side the piston rod is on",
             "back", default="back"),
+        Key("resisting", "bool", "true: the force acts only while it opposes its point's motion "
+            "(a cutting force on the working stroke, none on the return)", "true",
+            default=False),
     ), many=True),
     Table("torques", "An applied couple on a link, or a constant friction torque at a pin.", (
         Key("on", "link", "the link the couple acts on", "DB"),
@@ -458,7 +455,10 @@ def _forces(ctx: _Context, raw) -> list[AppliedForce]:
                 mag, how = _pressure_force(r, spec, where)
                 how += f" at {math.degrees(d):.6g}°"
             f = (mag * math.cos(d), mag * math.sin(d))
-        forces.append(AppliedForce(name, body, spec["at"], f, how))
+        resisting = spec.get("resisting", False)
+        if not isinstance(resisting, bool):
+            raise SceneError("resisting must be true or false", file=file, where=where)
+        forces.append(AppliedForce(name, body, spec["at"], f, how, resisting))
     return forces
 
 

@@ -491,3 +491,24 @@ def test_over_a_turn_steady_loads_do_no_net_work(stem):
     cy = turning_moment(load_model(scene), scene, 240)
     assert abs(float(np.mean(cy.torque))) <= 1e-6 * float(np.max(np.abs(cy.torque)))
     assert cy.vw_error <= 1e-9 * float(np.max(np.abs(cy.torque)))
+
+
+def test_a_resisting_cut_does_the_stroke_s_work_each_turn():
+    """Whitworth with its 2 kN cut `resisting = true` (acting only on the working stroke):
+    over a uniform turn the crank's work, |T_m|·2π, is the cut's, F × the ram's stroke (its
+    travel's range from a sweep of 3600 angles); at an instant of the return stroke the cut
+    is absent."""
+    from polygons.forces.analysis import load_model
+    from polygons.forces.cycle import turning_moment
+    from polygons.sweep import sweep
+    text = (CASES / "forces-whitworth.toml").read_text().split("[[answers]]")[0].replace(
+        'direction = "180 deg"', 'direction = "180 deg"\nresisting = true')
+    scene = _scene(text)
+    cy = turning_moment(load_model(scene), scene, 720)
+    sw = sweep(scene, 3600)
+    stroke = float(np.max(sw.travel["R"]) - np.min(sw.travel["R"]))
+    assert abs(abs(cy.mean) * 2 * math.pi - 2000.0 * stroke) < 1e-3 * 2000.0 * stroke
+    for angle, working in (("60 deg", True), ("240 deg", False)):   # ram +x / −x
+        st = analyse(_scene(text.replace('angle = "60 deg"', f'angle = "{angle}"'))).states[0]
+        assert (st.sol.points["R"].velocity[0] > 0) == working
+        assert any(ld.source == "Cut" for ld in st.ne.loads) == working

@@ -274,6 +274,9 @@ def loads(model: ForceModel, sol: Solution, vsol: Solution,
             out.append(Load(f"weight of {it.name}", "gravity", it.body, it.at,
                             centre(model, sol, it), it.mass * g, 0.0, it.name))
     for f in model.forces:
+        v = sol.points[f.at].velocity if f.resisting else None
+        if v is not None and float(np.dot(v, f.force)) >= 0.0 and any(v):
+            continue        # a resisting force does not act while its point moves with it
         out.append(Load(f.name, "force", f.body, f.at, position(sol, f.at), np.array(f.force),
                         0.0))
     for t in model.torques:
