@@ -111,9 +111,13 @@ def turning_moment(model, scene: Scene, n: int) -> Cycle:
     energy = np.concatenate(([0.0], np.cumsum(0.5 * (excess[1:] + excess[:-1]) * step)))
     energy = energy * sense
     hi, lo = int(np.argmax(energy)), int(np.argmin(energy))
+    notes = [f"the {q.kind} at {q.at}: its profile is taken as the circular arc stated at the "
+             f"contact all round the turn (an eccentric disc); for another profile only the "
+             f"scene's instant holds" for q in getattr(scene, "equivalents", ())
+             if q.kind in ("cam", "flat-faced cam", "curved slot")]
     return Cycle(thetas, torque, energy, mean, float(energy[hi] - energy[lo]),
                  float(thetas[hi]), float(thetas[lo]), worst, abs(drv.omega),
-                 tuple(sw.warnings))
+                 tuple(sw.warnings) + tuple(notes))
 
 
 __all__ = ["Cycle", "turning_moment", "MAX_CYCLE"]
