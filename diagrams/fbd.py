@@ -125,7 +125,11 @@ def drawings(an: Analysis):
                 allp += [pts[body.a] + rr * np.array(d) for d in ((1, 0), (-1, 0), (0, 1),
                                                                   (0, -1))]
             bb = bounds([tuple(p) for p in allp])
-            ext = max(bb.x1 - bb.x0, bb.y1 - bb.y0, 1e-9)
+            # a slider block is a point: its free body at the scale of a tenth of the
+            # mechanism (not of nothing), the block drawn as its symbol
+            spread = bounds([tuple(p.position) for p in st.sol.points.values()])
+            ext = max(bb.x1 - bb.x0, bb.y1 - bb.y0,
+                      0.1 * max(spread.x1 - spread.x0, spread.y1 - spread.y0), 1e-9)
             lscale = Scale("length", round_up(ext * 10.0 / 90.0), "mm", 1e-3)
             k = lscale.mm_per_si
 
