@@ -44,6 +44,19 @@ def check(sol):
     """The force analysis the asked sections need (None when none is asked); refused in one
     line when the scene has no loads or the mechanism is not one the method handles."""
     polys, lever = asked(sol)
+    if sol.scene.options.handout.turning_moment:
+        from polygons.forces import has_forces
+        if not has_forces(sol.scene):
+            raise SceneError("turning_moment = true asks for a force method, but the scene "
+                             "has no [masses], [forces], [torques] or [springs]",
+                             file=sol.scene.file, where="handout.turning_moment")
+        try:
+            _cycle(sol)
+        except UnsupportedError as e:
+            raise _refused("turning_moment", e, sol.scene.file) from None
+        if not (polys or lever):
+            from polygons.forces import analyse
+            return analyse(sol.scene)
     if not (polys or lever):
         return None
     from polygons.forces import analyse, has_forces, graphical, zhukovsky
@@ -250,12 +263,79 @@ def _lever(an) -> str:
     return "".join(out)
 
 
+#: angles of the handout's turning-moment diagram (as `polygons forces --cycle 360`)
+CYCLE_ANGLES = 360
+_CYCLES: dict = {}
+
+
+def _cycle(sol):
+    """The turning-moment diagram of ``sol``'s scene, made once per solution."""
+    key = id(sol)
+    if key not in _CYCLES or _CYCLES[key][0] is not sol:
+        from polygons.forces.analysis import load_model
+        from polygons.forces.cycle import turning_moment
+        if len(_CYCLES) > 8:
+            _CYCLES.clear()
+        _CYCLES[key] = (sol, turning_moment(load_model(sol.scene), sol.scene, CYCLE_ANGLES))
+    return _CYCLES[key][1]
+
+
+def _turning_moment(sol) -> str:
+    """The turning-moment diagram: the plot (T and E over the turn) and its numbers."""
+    import tempfile
+    from pathlib import Path
+    from .plots import Line, Marker, Panel, plot_panels
+    cy = _cycle(sol)
+    scene = sol.scene
+    deg = np.degrees(cy.theta) % 360.0
+    order = np.argsort(deg)
+    with tempfile.TemporaryDirectory() as tmp:
+        plot_panels("Turning-moment diagram", "crank angle (deg, CCW from +x)",
+                    [Panel("input torque (N m)", [Line("T(θ)", deg[order], cy.torque[order]),
+                                                  Line("mean", deg[order],
+                                                       np.full(len(deg), cy.mean),
+                                                       style="--")]),
+                     Panel("energy above the mean (J)", [Line("E(θ)", deg[order],
+                                                              cy.energy[order])])],
+                    Path(tmp) / "tm", formats=("svg",),
+                    markers=[Marker(math.degrees(scene.driver.angle) % 360.0, "scene")],
+                    xlim=(0.0, 360.0))
+        svg = (Path(tmp) / "tm.svg").read_text(encoding="utf-8")
+    svg = svg[svg.index("<svg"):]
+    hi, lo = int(np.argmax(cy.torque)), int(np.argmin(cy.torque))
+
+    def at(t):
+        return f"{round(math.degrees(t) % 360.0, 9) % 360.0:.4g}°"
+    rows = [("maximum torque", f"{_n(cy.torque[hi])} N m at {at(cy.theta[hi])}"),
+            ("minimum torque", f"{_n(cy.torque[lo])} N m at {at(cy.theta[lo])}"),
+            ("mean torque T<sub>m</sub>", f"{_n(cy.mean)} N m"),
+            ("maximum fluctuation of energy ΔE",
+             f"{_n(cy.fluctuation)} J (E greatest at {at(cy.at_max)}, least at "
+             f"{at(cy.at_min)})")]
+    out = ['<section id="turning-moment" class="forces">\n<h2>The turning-moment diagram'
+           '</h2>\n'
+           f"<p>The input torque on {esc(scene.driver.link)} at {len(cy.theta)} angles round a "
+           f"uniform turn (ω = {_n(abs(scene.driver.omega))} rad/s, α = 0; CCW positive), "
+           "each found as above; E(θ) = ∫(T − T<sub>m</sub>) dθ is the energy above the "
+           "mean, and a flywheel keeping the speed within ±C<sub>s</sub>/2 needs "
+           "I = ΔE / (ω² C<sub>s</sub>). Virtual work equals Newton–Euler at every angle "
+           f"(largest difference {cy.vw_error:.1e} N m).</p>\n",
+           f'<figure class="diagram">{svg}</figure>\n',
+           '<table class="answer forces" id="turning-moment-summary">\n']
+    out += [f"<tr><th>{k}</th><td>{v}</td></tr>\n" for k, v in rows]
+    out.append("</table>\n")
+    out += [f'<p class="note">{esc(w)}</p>\n' for w in cy.warnings]
+    out.append("</section>\n")
+    return "".join(out)
+
+
 def sections(sol, an) -> str:
     """The HTML sections (possibly empty) the scene asks for; ``an`` is :func:`check`'s."""
     if an is None:
         return ""
     polys, lever = asked(sol)
-    return (_polygons(an) if polys else "") + (_lever(an) if lever else "")
+    return ((_polygons(an) if polys else "") + (_lever(an) if lever else "")
+            + (_turning_moment(sol) if sol.scene.options.handout.turning_moment else ""))
 
 
 __all__ = ["check", "sections", "asked", "effort_words"]

@@ -101,6 +101,11 @@ TABLES: tuple[Table, ...] = (
                                  "forces and moments about the pole and the balancing "
                                  "effort (equal to the virtual work's)", example="true",
             default=False),
+        Key("turning_moment", "bool", "a section with the turning-moment diagram over a "
+                                      "uniform turn of the crank (360 angles): its plot, "
+                                      "maximum, minimum and mean torque and the maximum "
+                                      "fluctuation of energy (as `polygons forces --cycle`)",
+            example="true", default=False),
     )),
 )
 
@@ -142,6 +147,7 @@ class HandoutOptions:
 
     force_polygons: bool = False
     zhukovsky: bool = False
+    turning_moment: bool = False
 
 
 @dataclass(frozen=True)
@@ -258,7 +264,8 @@ def parse_options(data: Mapping, file: str) -> Options:
                              _bool(dg, "stages", "diagram", file), klein)
     ho = _table(data, "handout", file)
     handout = HandoutOptions(bool(_bool(ho, "force_polygons", "handout", file)),
-                             bool(_bool(ho, "zhukovsky", "handout", file)))
+                             bool(_bool(ho, "zhukovsky", "handout", file)),
+                             bool(_bool(ho, "turning_moment", "handout", file)))
     return Options(sweep, diagram, _centres(_table(data, "centres", file), file), handout)
 
 

@@ -4,6 +4,7 @@ the solver), on the shipped case and on random cams; the oscillating flat face a
 arm's moment equation with the tangency condition differentiated by hand; a lost contact, the
 refusals."""
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -512,3 +513,26 @@ def test_a_resisting_cut_does_the_stroke_s_work_each_turn():
         st = analyse(_scene(text.replace('angle = "60 deg"', f'angle = "{angle}"'))).states[0]
         assert (st.sol.points["R"].velocity[0] > 0) == working
         assert any(ld.source == "Cut" for ld in st.ne.loads) == working
+
+
+def test_the_handout_s_turning_moment_section(tmp_path):
+    """[handout] turning_moment = true: the plot (an inline SVG) and the numbers of the
+    diagram over 360 angles; refused in one line, naming the key, where it cannot be drawn."""
+    from polygons.cli.handout import build
+    from polygons.forces.analysis import load_model
+    from polygons.forces.cycle import turning_moment
+    text = (CASES / "forces-whitworth.toml").read_text().replace(
+        'direction = "180 deg"', 'direction = "180 deg"\nresisting = true')
+    path = tmp_path / "w.toml"
+    path.write_text(text + "\n[handout]\nturning_moment = true\n")
+    key = build(str(path))
+    sec = re.search(r'<section id="turning-moment".*?</section>', key, re.S).group(0)
+    assert "<svg" in sec and "maximum fluctuation of energy ΔE" in sec
+    scene = load_scene(str(path))
+    cy = turning_moment(load_model(scene), scene, 360)
+    assert f"{cy.fluctuation:.6g} J".replace("-", "−") in sec
+    osc = tmp_path / "o.toml"
+    osc.write_text((CASES / "forces-oscillating-cylinder.toml").read_text()
+                   + "\n[handout]\nturning_moment = true\n")
+    with pytest.raises(UnsupportedError, match=r"turning_moment = true: the crank does not "):
+        build(str(osc))
