@@ -33,6 +33,7 @@ from polygons.scene import Crank
 
 from .figures import Figures, cell_stage, cells, figures, stage_of, stage_width
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
+from .handout_forces import load_rows
 from .handout_style import CSS, EXPLAIN, SUBSUP_CSS  # noqa: F401 (SUBSUP_CSS: public)
 from .notation import join_vectors, link_names, name_bare_omegas, slot_names
 
@@ -313,6 +314,7 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
                      f"guide"))
     for lab, br in scene.assembly.items():
         rows.append((f"assembly of {lab}", br.text))
+    rows += load_rows(scene.loads, _g)
     for pair in _data_rows(rows):
         cells = "".join(f"<th scope=\"row\">{esc(a)}</th><td>{esc(plain_text(b))}</td>"
                         for a, b in pair)

@@ -21,6 +21,7 @@ import re
 import numpy as np
 
 from polygons.errors import SceneError, UnsupportedError
+from polygons.report import sense
 
 from .html import esc, inline_svg, svg_size, sym
 
@@ -84,6 +85,31 @@ def check(sol):
             except UnsupportedError as e:
                 raise _refused("zhukovsky", e, scene.file) from None
     return an
+
+
+def load_rows(lds, _g) -> list[tuple[str, str]]:
+    """The force data of a scene with loads for the handout's data table, as the problem
+    states them: masses, gravity, forces, couples, pin frictions and springs (``_g`` the
+    table's number format)."""
+    if lds is None or not lds.active:
+        return []
+    rows = [(f"mass {m.name}", f"{_g(m.mass)} kg on {m.body}" + (
+        f", I_G = {_g(m.inertia)} kg m² ({m.how})" if m.inertia else "")) for m in lds.masses]
+    g = math.hypot(*lds.gravity)
+    if g:
+        rows.append(("gravity", f"g = {_g(g)} m/s² towards "
+                                f"{_g(math.degrees(math.atan2(lds.gravity[1], lds.gravity[0])) % 360)}°"))
+    for f in lds.forces:
+        rows.append((f"force {f.name}", f"{f.how} at {f.at} on {f.body}" + (
+            "; it acts only while it opposes its point's motion" if f.resisting else "")))
+    rows += [(f"couple {t.name}", f"{_g(abs(t.torque))} N m {sense(t.torque)} on {t.body}")
+             for t in lds.torques]
+    rows += [(f"friction {fr.name}", f"{_g(fr.torque)} N m at the pin {fr.at}")
+             for fr in lds.frictions]
+    rows += [(f"spring {s.name}", f"{s.kind}, stiffness {_g(s.stiffness)} "
+                                 f"{'N m/rad' if s.kind == 'torsional' else 'N/m'}")
+             for s in lds.springs]
+    return rows
 
 
 # ---------------------------------------------------------------- numbers in words

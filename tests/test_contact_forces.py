@@ -536,3 +536,20 @@ def test_the_handout_s_turning_moment_section(tmp_path):
                    + "\n[handout]\nturning_moment = true\n")
     with pytest.raises(UnsupportedError, match=r"turning_moment = true: the crank does not "):
         build(str(osc))
+
+
+def test_the_handout_data_table_states_the_loads(tmp_path):
+    """A force problem's data table (key and worksheet) lists its masses, gravity and forces
+    as the problem states them, a resisting force said so."""
+    from polygons.cli.handout import build
+    text = (CASES / "forces-whitworth.toml").read_text().replace(
+        'direction = "180 deg"', 'direction = "180 deg"\nresisting = true')
+    path = tmp_path / "w.toml"
+    path.write_text(text)
+    for ws in (False, True):
+        page = build(str(path), worksheet=ws)
+        table = re.search(r'<table class="data">.*?</table>', page, re.S).group(0)
+        for words in ("mass R</th><td", "30 kg on R", "gravity</th>", "g = 9.81 m/s² towards 270°",
+                      "force Cut</th>", "2000 N at 180° at R on R; it acts only while it "
+                      "opposes its point&#x27;s motion"):
+            assert words in table, (ws, words)
