@@ -94,7 +94,8 @@ def load_rows(lds, _g) -> list[tuple[str, str]]:
     if lds is None or not lds.active:
         return []
     rows = [(f"mass {m.name}", f"{_g(m.mass)} kg on {m.body}" + (
-        f", I_G = {_g(m.inertia)} kg m² ({m.how})" if m.inertia else "")) for m in lds.masses]
+        f"; its moment of inertia about its centre of mass {_g(m.inertia)} kg m² ({m.how})"
+        if m.inertia else "")) for m in lds.masses]
     g = math.hypot(*lds.gravity)
     if g:
         rows.append(("gravity", f"g = {_g(g)} m/s² towards "
