@@ -553,3 +553,24 @@ def test_the_handout_data_table_states_the_loads(tmp_path):
                       "force Cut</th>", "2000 N at 180° at R on R; it acts only while it "
                       "opposes its point&#x27;s motion"):
             assert words in table, (ws, words)
+
+
+def test_check_grades_a_student_s_force_answers():
+    """`polygons check --measured Tin=1.75 "Fc(R)=100"`: force answers graded against the
+    force analysis with the case's stated tolerance (3 %), a wrong one off with a hint; a case
+    without loads refuses them in one line."""
+    import subprocess
+    import sys as _sys
+
+    def run(*args):
+        p = subprocess.run([_sys.executable, "-m", "polygons", "check", *args],
+                           capture_output=True, text=True)
+        return p.returncode, p.stdout, p.stderr
+    case = str(CASES / "cam-roller-forces.toml")
+    code, out, _ = run(case, "--measured", "Tin=1.75", "Fc(R)=100", "v(R)=0.36")
+    assert code == 0 and "3 of 3 within tolerance" in out
+    assert "expected 1.748 N m" in out and "expected 99.79 N" in out
+    code, out, _ = run(case, "--measured", "Tin=1.5")
+    assert code == 3 and "off: Tin" in out and "polygons forces" in out
+    code, _, err = run(str(CASES / "s003-fig7.toml"), "--measured", "Tin=1")
+    assert code == 1 and err.count("\n") == 1 and "needs the scene's loads" in err

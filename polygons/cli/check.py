@@ -49,7 +49,8 @@ PREFIX = {"v": "v", "a": "a", "omega": "omega", "w": "omega", "alpha": "alpha", 
 _POINTS = {"v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,), "cor": (1,), "vs": (1,),
            "as": (1,)}
 UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
-        "angular_acceleration": "rad/s²"}
+        "angular_acceleration": "rad/s²", "force": "N", "torque": "N m", "angle": "rad",
+        "fraction": "", "length": "m", "energy": "J"}
 SIGNED = ("omega", "alpha", "vs", "as")
 DEFAULT_TOLERANCE = 0.02
 READING_MM = 0.5
@@ -148,13 +149,52 @@ def offered(sol: Solution) -> list[tuple[str, str]]:
 
 def _unknown(sol: Solution, name: str, why: str = "") -> MeasuredError:
     names = ", ".join(n for n, _ in offered(sol))
+    from ..forces import has_forces
+    if has_forces(sol.scene):
+        names += "; and the force answers of polygons forces (Tin, R(O,OA), Fc(R), ...)"
     return MeasuredError(f"unknown measured quantity {name!r}{why}; this case offers: {names}",
                          file=sol.scene.file)
 
 
+def _force_fn(name: str) -> str | None:
+    """The force function a measured name calls ('Tin', 'R(O,OA)', 'Fc(R)'), or None."""
+    from ..forces.answers import FORCE_FUNCTIONS
+    fn = name.split("(")[0].strip()
+    return fn if fn in FORCE_FUNCTIONS and fn not in PREFIX.values() else None
+
+
+_ANALYSES: dict = {}
+
+
+def force_analysis(sol: Solution):
+    """The force analysis of ``sol``'s scene (made once per solution): what a measured force
+    answer is graded against; refused in one line when the scene has no loads."""
+    from ..forces import analyse, has_forces
+    hit = _ANALYSES.get(id(sol))
+    if hit is None or hit[0] is not sol:
+        if not has_forces(sol.scene):
+            raise MeasuredError("a force answer needs the scene's loads ([masses], [forces], "
+                                "[torques] or [springs]): this case has none",
+                                file=sol.scene.file)
+        if len(_ANALYSES) > 8:
+            _ANALYSES.clear()
+        hit = _ANALYSES[id(sol)] = (sol, analyse(sol.scene))
+    return hit[1]
+
+
 def resolve(sol: Solution, name: str) -> str:
-    """The :mod:`polygons.quantities` expression for a textbook name such as ``v_CB``."""
+    """The :mod:`polygons.quantities` expression for a textbook name such as ``v_CB``, or a
+    force answer's (``Tin``, ``R(O,OA)``, ``Fc(R)``: :mod:`polygons.forces.answers`)."""
     name = name.strip()
+    if _force_fn(name) is not None:
+        from ..forces.answers import force_quantity
+        try:
+            force_quantity(force_analysis(sol), name, None, 1)
+        except MeasuredError:
+            raise
+        except PolygonsError as exc:
+            raise _unknown(sol, name, f" ({exc.reason})") from None
+        return name.replace(" ", "")
     if "(" in name:
         expr = name
     else:
@@ -223,9 +263,17 @@ def parse_measured(sol: Solution, items: list[str]) -> list[tuple[str, str, floa
         if expr in seen:
             raise MeasuredError(f"{name} is given twice", file=sol.scene.file)
         seen.add(expr)
-        value, sense = parse_value(text, dimension_of_quantity(expr), name, sol.scene.file)
+        value, sense = parse_value(text, _dimension(expr), name, sol.scene.file)
         out.append((name, expr, value, sense))
     return out
+
+
+def _dimension(expr: str) -> str:
+    fn = _force_fn(expr)
+    if fn is not None:
+        from ..forces.answers import FORCE_FUNCTIONS
+        return FORCE_FUNCTIONS[fn][0]
+    return dimension_of_quantity(expr)
 
 
 # ---------------------------------------------------------------- where a value comes from
@@ -404,6 +452,9 @@ def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
         emulated = {} if tolerance is not None else emulated_tolerances(sol)
     out = []
     for name, expr, value, sense in measured:
+        if _force_fn(expr) is not None:
+            out.append(_grade_force(sol, name, expr, value, tolerance, stated))
+            continue
         fn = _fn_args(expr)[0]
         expected = quantity(sol, expr)
         if tolerance is not None:
@@ -443,6 +494,25 @@ def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
                          sense, sense_ok, step, hint, _tutorial_note(sol, expr, value),
                          source))
     return out
+
+
+def _grade_force(sol: Solution, name: str, expr: str, value: float, tolerance, stated
+                 ) -> Grade:
+    """A force answer (a value read off a force polygon or a free body) against the force
+    analysis: its magnitude, or signed when the student gives a sign; the stated (or given)
+    tolerance, the polygons' drawing tolerance carried into the forces."""
+    from ..forces.answers import force_quantity
+    expected = force_quantity(force_analysis(sol), expr, None, 1)
+    pct, source = (tolerance, "given") if tolerance is not None else (stated, "stated")
+    tol = pct * abs(expected)
+    err = (value - expected) if value < 0 else (abs(value) - abs(expected))
+    diff = err / abs(expected) * 100.0 if expected != 0 else None
+    ok = abs(err) <= tol * (1 + 1e-12) if expected != 0 else abs(value) <= 1e-9
+    hint = "" if ok else ("recheck it against the free body and the force polygon of its "
+                          "body: `polygons forces` prints every reaction and the input effort")
+    return Grade(name, expr, UNIT.get(_dimension(expr), ""), value, expected, tol,
+                 pct * 100.0 if expected else math.inf, diff, ok, None, None, None, hint, "",
+                 source)
 
 
 def _tutorial_note(sol: Solution, expr: str, value: float) -> str:
