@@ -292,41 +292,30 @@ def _lever(an) -> str:
 
 #: angles of the handout's turning-moment diagram (as `polygons forces --cycle 360`)
 CYCLE_ANGLES = 360
-_CYCLES: dict = {}
 
 
 def _cycle(sol):
-    """The turning-moment diagram of ``sol``'s scene, made once per solution."""
-    key = id(sol)
-    if key not in _CYCLES or _CYCLES[key][0] is not sol:
+    """The turning-moment diagram of ``sol``'s scene, made once per solution (its memo)."""
+    from polygons.memo import memo_of
+    memo = memo_of(sol)
+    if "turning_moment" not in memo:
         from polygons.forces.analysis import load_model
         from polygons.forces.cycle import turning_moment
-        if len(_CYCLES) > 8:
-            _CYCLES.clear()
-        _CYCLES[key] = (sol, turning_moment(load_model(sol.scene), sol.scene, CYCLE_ANGLES))
-    return _CYCLES[key][1]
+        memo["turning_moment"] = turning_moment(load_model(sol.scene), sol.scene,
+                                                CYCLE_ANGLES)
+    return memo["turning_moment"]
 
 
 def _turning_moment(sol) -> str:
     """The turning-moment diagram: the plot (T and E over the turn) and its numbers."""
     import tempfile
     from pathlib import Path
-    from .plots import Line, Marker, Panel, plot_panels
+    from .plots import plot_turning_moment
     cy = _cycle(sol)
     scene = sol.scene
-    deg = np.degrees(cy.theta) % 360.0
-    order = np.argsort(deg)
     with tempfile.TemporaryDirectory() as tmp:
-        plot_panels("Turning-moment diagram", "crank angle (deg, CCW from +x)",
-                    [Panel("input torque (N m)", [Line("T(θ)", deg[order], cy.torque[order]),
-                                                  Line("mean", deg[order],
-                                                       np.full(len(deg), cy.mean),
-                                                       style="--")]),
-                     Panel("energy above the mean (J)", [Line("E(θ)", deg[order],
-                                                              cy.energy[order])])],
-                    Path(tmp) / "tm", formats=("svg",),
-                    markers=[Marker(math.degrees(scene.driver.angle) % 360.0, "scene")],
-                    xlim=(0.0, 360.0))
+        plot_turning_moment(cy, scene, Path(tmp) / "tm", "Turning-moment diagram",
+                            formats=("svg",))
         svg = (Path(tmp) / "tm.svg").read_text(encoding="utf-8")
     svg = svg[svg.index("<svg"):]
     hi, lo = int(np.argmax(cy.torque)), int(np.argmin(cy.torque))

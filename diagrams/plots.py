@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import textwrap
 from dataclasses import dataclass, field
+import math
 from pathlib import Path
 from typing import Sequence
 
@@ -173,3 +174,20 @@ def plot_xy(title: str, xlabel: str, ylabel: str, series: Sequence[Line], stem: 
             fig.savefig(path, format=fmt, metadata=meta)
             written.append(path)
     return written
+
+
+def plot_turning_moment(cy, scene, stem: str | Path, title: str,
+                        formats: Sequence[str] = ("png", "svg")) -> list[Path]:
+    """The turning-moment diagram ``cy`` (:class:`polygons.forces.cycle.Cycle`): T(θ) with its
+    mean over the crank angle, and the energy above the mean E(θ); the scene's angle marked."""
+    deg = np.degrees(cy.theta) % 360.0
+    order = np.argsort(deg)
+    return plot_panels(
+        title, "crank angle (deg, CCW from +x)",
+        [Panel("input torque (N m)", [Line("T(θ)", deg[order], cy.torque[order]),
+                                      Line(f"mean {cy.mean:.4g} N m", deg[order],
+                                           np.full(len(deg), cy.mean), style="--")]),
+         Panel("energy above the mean (J)", [Line("E(θ)", deg[order], cy.energy[order])])],
+        stem, formats=formats,
+        markers=[Marker(math.degrees(scene.driver.angle) % 360.0, "scene")],
+        xlim=(0.0, 360.0))

@@ -163,23 +163,20 @@ def _force_fn(name: str) -> str | None:
     return fn if fn in FORCE_FUNCTIONS and fn not in PREFIX.values() else None
 
 
-_ANALYSES: dict = {}
-
-
 def force_analysis(sol: Solution):
-    """The force analysis of ``sol``'s scene (made once per solution): what a measured force
-    answer is graded against; refused in one line when the scene has no loads."""
+    """The force analysis of ``sol``'s scene (made once per solution, kept in its memo): what a
+    measured force answer is graded against; refused in one line when the scene has no
+    loads."""
     from ..forces import analyse, has_forces
-    hit = _ANALYSES.get(id(sol))
-    if hit is None or hit[0] is not sol:
+    from ..memo import memo_of
+    memo = memo_of(sol)
+    if "force_analysis" not in memo:
         if not has_forces(sol.scene):
             raise MeasuredError("a force answer needs the scene's loads ([masses], [forces], "
                                 "[torques] or [springs]): this case has none",
                                 file=sol.scene.file)
-        if len(_ANALYSES) > 8:
-            _ANALYSES.clear()
-        hit = _ANALYSES[id(sol)] = (sol, analyse(sol.scene))
-    return hit[1]
+        memo["force_analysis"] = analyse(sol.scene)
+    return memo["force_analysis"]
 
 
 def resolve(sol: Solution, name: str) -> str:

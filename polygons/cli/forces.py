@@ -558,19 +558,9 @@ def _run_cycle(args, scene) -> int:
     else:
         text = cycle_table(scene, cy, cs)
     if args.svg:
-        from diagrams.plots import Line, Marker, Panel, plot_panels
-        deg = np.degrees(cy.theta) % 360.0
-        order = np.argsort(deg)
-        paths = plot_panels(
-            f"Turning-moment diagram: {scene.title}", "crank angle (deg, CCW from +x)",
-            [Panel("input torque (N m)", [Line("T(θ)", deg[order], cy.torque[order]),
-                                          Line(f"mean {cy.mean:.4g} N m", deg[order],
-                                               np.full(len(deg), cy.mean), style="--")]),
-             Panel("energy above the mean (J)", [Line("E(θ)", deg[order],
-                                                      cy.energy[order])])],
-            f"{args.svg}/turning-moment",
-            markers=[Marker(math.degrees(scene.driver.angle) % 360.0, "scene")],
-            xlim=(0.0, 360.0))
+        from diagrams.plots import plot_turning_moment
+        paths = plot_turning_moment(cy, scene, f"{args.svg}/turning-moment",
+                                    f"Turning-moment diagram: {scene.title}")
         if not args.json:
             text += f"\ndiagrams: {', '.join(str(p) for p in paths)}\n"
     emit(text, args.out)
