@@ -25,7 +25,6 @@ from pathlib import Path
 import subprocess
 import sys
 import time
-from dataclasses import replace
 
 import numpy as np
 
@@ -47,16 +46,10 @@ def per_call(fns: dict, args, repeat: int) -> dict:
     return {k: v * 1e-9 for k, v in best.items()}
 
 
-def scenes_at(scene, thetas, probe_pos, branches):
-    """The scene restated at each angle (its closure pinned 'near' the followed branch)."""
-    from polygons.scene import Branch
-    out = []
-    for i, t in enumerate(thetas):
-        asm = {lab: Branch(lab, "near", "near", near=(float(probe_pos[lab][0][i]),
-                                                        float(probe_pos[lab][1][i])))
-               for lab in branches}
-        out.append(replace(scene, driver=replace(scene.driver, angle=float(t)), assembly=asm))
-    return out
+def scenes_at(probe):
+    """The scene restated at each angle of the sweep ``probe`` (its closures pinned 'near'
+    the followed ones: :meth:`polygons.sweep.Sweep.scene_at`)."""
+    return [probe.scene_at(i) for i in range(probe.n)]
 
 
 def single_position(root, path, avail, quick, others, cf, jit_rows=True):
@@ -72,7 +65,7 @@ def single_position(root, path, avail, quick, others, cf, jit_rows=True):
     th0 = p["theta0"]
     thetas = [float(t) for t in th0 + 2 * np.pi * np.arange(K) / K]
     probe = sweep(scene, inputs=thetas)
-    scenes = scenes_at(scene, thetas, probe.pos, probe.branches)
+    scenes = scenes_at(probe)
     prog = compile_scene(scene)
     idx = list(range(K))
     fns = {

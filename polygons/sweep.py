@@ -126,6 +126,19 @@ class Sweep:
     def acceleration(self, label: str) -> np.ndarray:
         return _as_n2(self.acc[self._known(label)], self.n)
 
+    def scene_at(self, i: int) -> Scene:
+        """The scene restated at the sweep's ``i``-th input, each followed closure pinned
+        'near' where the sweep put it (so a staged solve there takes the same assembly)."""
+        from dataclasses import replace
+        from .scene import Branch
+        asm = {lab: Branch(lab, f"{lab} as followed from the scene's instant", "near",
+                           near=(float(self.pos[lab][0][i]), float(self.pos[lab][1][i])))
+               for lab in self.branches}
+        drv = self.scene.driver
+        x = float(self.inputs[i])
+        drv = replace(drv, angle=x) if isinstance(drv, Crank) else replace(drv, position=x)
+        return replace(self.scene, driver=drv, assembly=asm)
+
     def _known(self, label) -> str:
         """``label`` if the sweep solved it, else a one-line UnknownLabelError."""
         if isinstance(label, str) and label in self.pos:

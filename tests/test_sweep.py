@@ -398,3 +398,17 @@ def test_benchmark_command_runs_and_reports_the_targets(tmp_path):
     assert "error ≤ 1e-12 relative" in out.stdout and "pylinkage: not compared" in out.stdout
     for name in ("bench.json", "speed-vs-error.png", "speed-vs-error.svg"):
         assert (tmp_path / name).exists()
+
+
+def test_scene_at_restates_the_scene_where_the_sweep_was():
+    """Sweep.scene_at(i): the scene at the i-th input with its closures pinned near the
+    followed ones; a staged solve there lands on the sweep's positions."""
+    from polygons.evaluate import solve
+    scene = load_scene(CASES / "s001-we6.toml")
+    sw = sweep(scene, inputs=[0.3, 1.2, 2.5, 4.0])
+    for i in range(sw.n):
+        sol = solve(sw.scene_at(i))
+        assert sol.scene.driver.angle == sw.inputs[i]
+        for lab in sw.branches:
+            assert np.allclose(sol.points[lab].position,
+                               (sw.pos[lab][0][i], sw.pos[lab][1][i]), atol=1e-12)

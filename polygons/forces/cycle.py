@@ -22,7 +22,7 @@ from types import MappingProxyType
 import numpy as np
 
 from ..errors import SceneError, UnsupportedError
-from ..scene import Branch, Crank, Scene
+from ..scene import Crank, Scene
 from .model import spring_refs
 from .states import driver_state, kinetostatic
 
@@ -95,11 +95,8 @@ def turning_moment(model, scene: Scene, n: int) -> Cycle:
     model = replace(model, ref=MappingProxyType(spring_refs(model, solve(scene))))
     torque, worst = np.empty(n), 0.0
     for i, th in enumerate(thetas):
-        asm = {lab: Branch(lab, f"{lab} as followed from the scene's instant", "near",
-                           near=(float(sw.pos[lab][0][i]), float(sw.pos[lab][1][i])))
-               for lab in sw.branches}
-        at = replace(driver_state(scene, angle=float(th), alpha=0.0), assembly=asm)
-        st = kinetostatic(model, at, name=f"{math.degrees(th) % 360:.6g} deg")
+        st = kinetostatic(model, driver_state(sw.scene_at(i), alpha=0.0),
+                          name=f"{math.degrees(th) % 360:.6g} deg")
         torque[i] = st.ne.effort
         worst = max(worst, abs(st.ne.effort - st.vw_effort))
     mean = float(np.mean(torque))
