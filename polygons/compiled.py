@@ -33,7 +33,7 @@ from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled,  # noqa: F401 (read f
 from .errors import ConstructionError, ParallelLinesError
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input, dyad_failure
-from .reader import record
+from .reader import record, record_of
 from .scene import Scene
 from .steps import Diagram, Step, Term, noise_floor
 from .model import BUILT, check_handles
@@ -342,7 +342,6 @@ def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
     numbers = [([(sym, r[i] if type(i) is int else _term(r, i), u) for sym, i, u in o.terms],
                 None if o.value is None else r[o.value]) for o in layout]
     zero = _rounding_noise(numbers, layout)
-    new = object.__new__
     done = []
     for step, o, (terms, value) in zip(steps, layout, numbers):
         f = o.fields
@@ -350,18 +349,12 @@ def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
         for k in _FIELDS:
             ij = f.get(k)
             vals[k] = None if ij is None else (r[ij[0]], r[ij[1]])
-        filled = []
-        for sym, v, u in terms:                 # (records made whole at once, as record())
-            t = new(Term)
-            t.__dict__.update(symbol=sym, value=zero(v, u), unit=u)
-            filled.append(t)
         vals["value"] = None if value is None else zero(value, o.unit)
         vals["unit"] = o.unit
         vals["angle_deg"] = None if o.angle is None else r[o.angle]
-        vals["terms"] = tuple(filled)
-        s = new(Step)
-        s.__dict__.update(vals)
-        done.append(s)
+        vals["terms"] = tuple(record_of(Term, {"symbol": sym, "value": zero(v, u), "unit": u})
+                              for sym, v, u in terms)
+        done.append(record_of(Step, vals))
     return tuple(done)
 
 

@@ -24,6 +24,12 @@ def record(cls, **fields):
     at once: equal to ``cls(**fields)``, whose ``__init__`` sets each field through
     ``object.__setattr__`` (for a scene's seventeen fields, three times as long).
     tests/test_scene_load.py checks that the records a scene is built of carry every field."""
+    return record_of(cls, fields)
+
+
+def record_of(cls, fields: dict):
+    """:func:`record` from a dictionary already made (no keyword repacking: the step records
+    of a solution are made this way, one per step)."""
     obj = _new(cls)
     obj.__dict__.update(fields)
     return obj
