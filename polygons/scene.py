@@ -421,6 +421,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         raise SceneError("the driver is either a crank (crank = \"OA\") or a slider "
                          "(slider = \"C\"): give exactly one", file=file, where="driver")
     driver: Crank | SliderDrive
+    rod = None                  # a slider driver placed by its rod: topology.rod_of's
     if "crank" in drv:
         r.table(drv, "driver", ("crank", "angle", "omega", "speed", "sense", "alpha",
                                 "alpha_sense"), required=("crank",))
@@ -487,13 +488,14 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise SceneError("place the slider driver by its position (position = \"150 mm\") "
                              "or by the angle of its rod (rod = \"BA\", rod_angle = "
                              "\"30 deg\"): give exactly one", file=file, where="driver")
+        rod = (topology.rod_of(drv, r, point, links, split_link_name) if "position" not in drv
+               else None)                       # (name, link, far end, far end − slider)
         position = (r.quantity(drv["position"], "length", "driver.position")
-                    if "position" in drv else topology.slider_by_rod(
-                        drv, r, point, sliders, links, ground, data.get("assembly", {}),
-                        split_link_name))
+                    if rod is None else topology.slider_by_rod(
+                        rod, r, point, sliders, links, ground, data.get("assembly", {})))
         if "rod_omega" in drv:          # the book gives the rod's ω and α
-            v, a, stated, meet = topology.slider_rate_by_rod(drv, r, point, position, sliders,
-                                                             links, ground, split_link_name)
+            v, a, stated, meet = topology.slider_rate_by_rod(drv, rod, r, point, position,
+                                                             sliders, links, ground)
             driver = SliderDrive(point, position, v, a, rod_rate=stated, rod_angle_deg=meet)
         else:
             driver = SliderDrive(point, position,
@@ -508,9 +510,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         need_label(r.label(label, where), where)
         assembly[label] = _parse_branch(label, spec, r, need_label, where)
 
-    if isinstance(driver, SliderDrive) and "rod" in drv:
+    if isinstance(driver, SliderDrive) and rod is not None:
         # the rod's stated angle says where its other end is: that closure, unless stated
-        name, _, other, (rx, ry) = topology.rod_of(drv, r, driver.point, links, split_link_name)
+        name, _, other, (rx, ry) = rod
         g = sliders[driver.point]
         if other not in assembly and other not in ground:
             assembly[other] = Branch(other, f"{other} where {name} at its stated angle puts it",

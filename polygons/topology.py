@@ -314,15 +314,17 @@ def show_text(x) -> str:
     return repr(x)[:60]
 
 
-def slider_by_rod(drv, r, point, sliders, links, ground, assembly, split) -> float:
+def slider_by_rod(rod, r, point, sliders, links, ground, assembly) -> float:
     """The position of a slider driver placed by the angle of its rod, as books state it ("the
     connecting rod AB makes 30° with the line of stroke"): ``rod`` (a link at the slider,
     its angle measured first label → second label) at ``rod_angle`` (CCW from +x, or
     '30 deg CW').  The rod's other end R is on a fixed guide (R = S + L u must lie on it:
     one position) or joined to a fixed pivot D (|S + L u − D| = l: two positions, the
-    scene's [assembly] word for the slider or near = [...] chooses)."""
+    scene's [assembly] word for the slider or near = [...] chooses).  ``rod`` is
+    :func:`rod_of`'s."""
     where = "driver.rod"
-    name, link, other, (ux, uy) = rod_of(drv, r, point, links, split)
+    name, link, other, (ux, uy) = rod
+
     g = sliders[point]
     (tx, ty), (ex, ey) = g.through, (math.cos(g.angle), math.sin(g.angle))
 
@@ -336,9 +338,7 @@ def slider_by_rod(drv, r, point, sliders, links, ground, assembly, split) -> flo
             raise SceneError(f"the guides of {point} and {other} are parallel: the rod's angle "
                              f"does not place the slider", file=r.file, where=where)
         return cross(g2.through[0] - tx - ux, g2.through[1] - ty - uy, fx, fy) / den
-    pivots = [(l2, l2.b if l2.a == other else l2.a) for l2 in links.values()
-              if other in (l2.a, l2.b) and l2 is not link and l2.length is not None
-              and (l2.b if l2.a == other else l2.a) in ground]
+    pivots = _pivots(other, link, links, ground)
     if len(pivots) != 1:
         raise SceneError(f"the rod's angle places the slider {point} when the rod's other end "
                          f"{other} slides on a fixed guide or is joined by one link to a fixed "
@@ -366,6 +366,14 @@ def slider_by_rod(drv, r, point, sliders, links, ground, assembly, split) -> flo
                      where=f"assembly.{point}")
 
 
+def _pivots(other, rod, links, ground) -> list:
+    """(link, fixed pivot) of each link with a length joining the rod's far end ``other`` to
+    a fixed point."""
+    return [(l2, l2.b if l2.a == other else l2.a) for l2 in links.values()
+            if other in (l2.a, l2.b) and l2 is not rod and l2.length is not None
+            and (l2.b if l2.a == other else l2.a) in ground]
+
+
 def rod_of(drv, r, point, links, split):
     """(name, link, other end R, R − S) of a slider driver's rod at its stated angle."""
     where = "driver.rod"
@@ -386,7 +394,7 @@ def rod_of(drv, r, point, links, split):
             (sign * link.length * math.cos(phi), sign * link.length * math.sin(phi)))
 
 
-def slider_rate_by_rod(drv, r, point, position, sliders, links, ground, split
+def slider_rate_by_rod(drv, rod, r, point, position, sliders, links, ground
                        ) -> tuple[float, float, tuple[str, float, float], float]:
     """The slider driver's (velocity, acceleration) along its guide when the book gives the
     angular velocity and acceleration of its rod ('the bar AB turns at 2 rad/s CW'), and
@@ -398,7 +406,7 @@ def slider_rate_by_rod(drv, r, point, position, sliders, links, ground, split
     (v_R = ω₂ k × d, a_R = α₂ k × d − ω₂² d, d = R − D): two linear equations each time,
     singular only where the rod's ω does not fix the slider's speed (the rod momentarily
     does not turn whatever the slider does: an engine's crank at right angles to the stroke)."""
-    name, link, other, (rx, ry) = rod_of(drv, r, point, links, split)
+    name, link, other, (rx, ry) = rod         # (rod_of's)
     w, turn = rate_with_sense(drv, "rod_omega", "rod_sense", "angular_velocity", r)
     if turn is None and w != 0.0:
         raise SceneError("rod_omega needs its sense: rod_sense = \"CW\" or \"CCW\" (or in "
@@ -422,9 +430,7 @@ def slider_rate_by_rod(drv, r, point, position, sliders, links, ground, split
         f = (math.cos(sliders[other].angle), math.sin(sliders[other].angle))
         col, extra = f, (0.0, 0.0)
     else:
-        D = next((l2.b if l2.a == other else l2.a) for l2 in links.values()
-                 if other in (l2.a, l2.b) and l2 is not link and l2.length is not None
-                 and (l2.b if l2.a == other else l2.a) in ground)
+        D = _pivots(other, link, links, ground)[0][1]     # (one: slider_by_rod checked)
         d = (R[0] - ground[D][0], R[1] - ground[D][1])
         col, extra = (-d[1], d[0]), d
     det = -col[0] * e[1] + col[1] * e[0]                # det [col, −e]
