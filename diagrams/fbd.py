@@ -120,8 +120,10 @@ def drawings(an: Analysis):
             pts = {lab: _pos(st.sol, lab) for lab in body.labels}
             pts.update({f"G:{i.item}": i.centre for i in st.inertia if i.body == name})
             allp = list(pts.values()) + [v.at for v in vecs]
-            if name in st.ne.rolling:       # the wheel's rim, all round its centre
-                rr = float(np.hypot(*(np.asarray(st.ne.rolling[name][2]) - pts[body.a])))
+            roll = st.ne.rolling.get(name)      # a wheel: its radius, centre to contact
+            rr = None if roll is None else float(np.hypot(*(np.asarray(roll[2])
+                                                             - pts[body.a])))
+            if rr is not None:                  # the rim, all round its centre
                 allp += [pts[body.a] + rr * np.array(d) for d in ((1, 0), (-1, 0), (0, 1),
                                                                   (0, -1))]
             bb = bounds([tuple(p) for p in allp])
@@ -137,11 +139,10 @@ def drawings(an: Analysis):
                 return (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3))
 
             items = []
-            roll = st.ne.rolling.get(name)
             rim = []
-            if roll is not None:            # a wheel: its rim to scale, the contact on it
+            if rr is not None:              # a wheel: its rim to scale, the contact on it
                 c = P(pts[body.a])
-                rad = float(np.hypot(*(np.asarray(roll[2]) - pts[body.a]))) * k
+                rad = rr * k
                 rim = [(c[0] + rad * math.cos(t * math.pi / 24),
                         c[1] + rad * math.sin(t * math.pi / 24)) for t in range(49)]
                 items.append(Polyline(tuple(rim), "link", cls=f"body wheel {name}"))
