@@ -385,22 +385,16 @@ def targets(results, sizes):
             out.append(dict(target=f"sweep ≥ 1.0× closed-form throughput ({mech['title']}, {tag})",
                             value=ratio, goal=1.0, met=ratio >= 1.0))
             sj = rows.get(f"vectorised sweep (numba), {tag}")
-            lean = rows.get(f"lean closed form (numpy), {tag}")
-            if lean is not None:
+            for base, words, goal in (
+                    (rows.get(f"lean closed form (numpy), {tag}"),
+                     "1× the lean Cartesian closed form", 1.0),
+                    (rows.get(f"pylinkage numba, {tag}"), "2× pylinkage's fastest path", 2.0)):
                 for name, r in (("numpy", s), ("numba", sj)):
-                    if r is not None:
-                        ratio = lean["time"] / r["time"]
-                        out.append(dict(target=f"sweep ({name}) ≥ 1× the lean Cartesian closed "
-                                               f"form ({mech['title']}, {tag})", value=ratio,
-                                        goal=1.0, met=ratio >= 1.0))
-            pl = rows.get(f"pylinkage numba, {tag}")
-            if pl is not None:
-                for name, r in (("numpy", s), ("numba", sj)):
-                    if r is not None:
-                        ratio = pl["time"] / r["time"]
-                        out.append(dict(target=f"sweep ({name}) ≥ 2× pylinkage's fastest path "
-                                               f"({mech['title']}, {tag})", value=ratio,
-                                        goal=2.0, met=ratio >= 2.0))
+                    if base is not None and r is not None:
+                        ratio = base["time"] / r["time"]
+                        out.append(dict(target=f"sweep ({name}) ≥ {words} ({mech['title']}, "
+                                               f"{tag})", value=ratio, goal=goal,
+                                        met=ratio >= goal))
         ours = [r for r in mech["rows"] if r["method"].startswith(("staged constructor, warm",
                                                                     "vectorised sweep"))]
         assert any(r["method"].startswith("vectorised sweep (numba)") for r in ours) == JIT
