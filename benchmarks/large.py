@@ -296,12 +296,8 @@ def main(argv=None) -> int:
     md = _markdown(args.kind, counts, cmds, rows, slopes, start)
     print(md)
     if args.readme:
-        readme = ROOT / "README.md"
-        text = readme.read_text(encoding="utf-8")
-        head, rest = text.split("<!-- large:begin -->\n", 1)
-        _, tail = rest.split("<!-- large:end -->", 1)
-        readme.write_text(head + "<!-- large:begin -->\n" + md + "\n<!-- large:end -->" + tail,
-                          encoding="utf-8")
+        import protocol
+        protocol.write_readme_section("large", md)
         print("README.md rewritten")
     return 0
 

@@ -46,6 +46,17 @@ def per_call(fns: dict, args, repeat: int) -> dict:
     return {k: v * 1e-9 for k, v in best.items()}
 
 
+def write_readme_section(marker: str, md: str) -> None:
+    """The README's text between ``<!-- MARKER:begin -->`` and ``<!-- MARKER:end -->``
+    replaced by ``md`` (the figures a benchmark's ``--readme`` regenerates)."""
+    readme = Path(__file__).resolve().parent.parent / "README.md"
+    text = readme.read_text(encoding="utf-8")
+    head, rest = text.split(f"<!-- {marker}:begin -->\n", 1)
+    _, tail = rest.split(f"<!-- {marker}:end -->", 1)
+    readme.write_text(f"{head}<!-- {marker}:begin -->\n{md}\n<!-- {marker}:end -->{tail}",
+                      encoding="utf-8")
+
+
 def scenes_at(probe):
     """The scene restated at each angle of the sweep ``probe`` (its closures pinned 'near'
     the followed ones: :meth:`polygons.sweep.Sweep.scene_at`)."""

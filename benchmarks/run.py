@@ -536,12 +536,7 @@ def markdown(results, single, batch, fresh, cold, runs, chain_rows, goals, info)
 
 
 def write_readme(md: str) -> None:
-    readme = ROOT / "README.md"
-    text = readme.read_text(encoding="utf-8")
-    head, rest = text.split("<!-- bench:begin -->\n", 1)
-    _, tail = rest.split("<!-- bench:end -->", 1)
-    readme.write_text(head + "<!-- bench:begin -->\n" + md + "\n<!-- bench:end -->" + tail,
-                      encoding="utf-8")
+    protocol.write_readme_section("bench", md)
 
 
 def chain_targets(rows) -> list:
