@@ -256,15 +256,25 @@ def mark_labels(text: str, labels) -> str:
     if not digits:
         return text
 
-    def split(w):         # the longest label first (of one length only one can begin w)
-        if not w:
-            return []
-        for k in lengths:
-            if k <= len(w) and w[:k] in names:
-                rest = split(w[k:])
-                if rest is not None:
-                    return [w[:k]] + rest
-        return None
+    def split(w):
+        """w as labels, the longest label first where more than one fits (of one length only
+        one can begin a word): by a table from the end of w, not by recursion (a title word
+        of thousands of capitals is user text)."""
+        n = len(w)
+        take = [0] * (n + 1)           # take[i]: length of the label that begins w[i:], 0: none
+        fits = [False] * n + [True]    # fits[i]: w[i:] is made wholly of labels
+        for i in range(n - 1, -1, -1):
+            for k in lengths:
+                if i + k <= n and fits[i + k] and w[i:i + k] in names:
+                    take[i], fits[i] = k, True
+                    break
+        if not n or not fits[0]:
+            return [] if not n else None
+        parts, i = [], 0
+        while i < n:
+            parts.append(w[i:i + take[i]])
+            i += take[i]
+        return parts
 
     def repl(m):
         parts = split(m.group(0))

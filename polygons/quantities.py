@@ -51,8 +51,29 @@ def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float
     return ("velocity" if fn in ("v", "vs") else "acceleration"), abs(value)
 
 
+#: the polygon a quantity of each dimension is read from (a quantity this scene's ``solve``
+#: leaves unsolved is refused by its kind, whatever its name)
+_POLYGON_OF = {"velocity": "velocity", "angular_velocity": "velocity",
+               "acceleration": "acceleration", "angular_acceleration": "acceleration"}
+
+
 def quantity(sol: Solution, expr: str) -> float:
-    """The SI value of ``expr`` (see module docstring) in solution ``sol``."""
+    """The SI value of ``expr`` (see module docstring) in solution ``sol``; a quantity of a
+    polygon the scene does not solve (``solve = ["velocity"]`` and any acceleration answer:
+    ``a(C)``, ``as(P)``, ``at(C,B)``, ``alpha(BC)``...) refused in one line by its kind."""
+    value = _quantity(sol, expr)
+    if value is None:
+        _unsolved(sol, expr)
+    return value
+
+
+def _unsolved(sol: Solution, expr: str):
+    need = _POLYGON_OF.get(dimension_of_quantity(expr), "acceleration")
+    raise SceneError(f"{expr!r} needs the {need} polygon, which this scene does not solve "
+                     f"(solve = {list(sol.scene.solve)})", file=sol.scene.file)
+
+
+def _quantity(sol: Solution, expr: str) -> float | None:
     fn, args = _parse(expr)
     p, q, rest = args[0], (args[1] if len(args) > 1 else None), args[2:]
     scene = sol.scene
@@ -71,8 +92,7 @@ def quantity(sol: Solution, expr: str) -> float:
     def vec(label, kind):
         value = getattr(point(label), kind)
         if value is None:
-            raise SceneError(f"{expr!r} needs the {kind} polygon, which this scene does not "
-                             f"solve (solve = {list(scene.solve)})", file=scene.file)
+            _unsolved(sol, expr)
         return np.array(value)
 
     def link(name):
@@ -107,9 +127,10 @@ def quantity(sol: Solution, expr: str) -> float:
     if fn in ("an", "at"):
         lr = link_of(p, q)
         r = float(np.hypot(*(np.array(point(p).position) - np.array(point(q).position))))
-        if fn == "an":
-            return lr.omega * lr.omega * r
-        return abs(lr.alpha) * r
+        rate = lr.omega if fn == "an" else lr.alpha
+        if rate is None:
+            _unsolved(sol, expr)
+        return rate * rate * r if fn == "an" else abs(rate) * r
     if fn in ("omega", "alpha"):
         lr = link(p)
         return getattr(lr, fn) if lr is not None else wheel_value(p, fn)
@@ -129,6 +150,8 @@ def quantity(sol: Solution, expr: str) -> float:
             return sr.velocity
         if fn == "as":
             return sr.acceleration
+        if sr.coriolis is None and sr.acceleration is None:
+            _unsolved(sol, expr)
         if sr.coriolis is None:
             raise SceneError(f"{p} slides on a fixed guide: it has no Coriolis component",
                              file=scene.file)

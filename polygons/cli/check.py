@@ -89,18 +89,30 @@ def _labels(sol: Solution) -> list[str]:
 def _split_labels(sol: Solution, text: str) -> list[str] | None:
     """'CB' -> ['C', 'B'], 'P2P4' -> ['P2', 'P4'], 'P2_P4' likewise; None if impossible."""
     labels = _labels(sol)
-
-    def go(rest):
-        rest = rest.lstrip("_,")
-        if not rest:
-            return []
+    seps = "_,"
+    n = len(text)
+    # by a table from the end (not recursion: a student's text may be thousands of capitals):
+    # take[i] is the label (longest first) that begins text[i:] when the rest splits too
+    take: list[str | None] = [None] * (n + 1)
+    fits = [False] * n + [True]
+    for i in range(n - 1, -1, -1):
+        if text[i] in seps:
+            fits[i] = fits[i + 1]
+            continue
         for lab in labels:
-            if rest.startswith(lab):
-                tail = go(rest[len(lab):])
-                if tail is not None:
-                    return [lab] + tail
+            if text.startswith(lab, i) and fits[i + len(lab)]:
+                take[i], fits[i] = lab, True
+                break
+    if not fits[0]:
         return None
-    return go(text)
+    parts, i = [], 0
+    while i < n:
+        if text[i] in seps:
+            i += 1
+            continue
+        parts.append(take[i])
+        i += len(take[i])
+    return parts
 
 
 def _link_named(sol: Solution, text: str) -> str | None:
