@@ -331,7 +331,7 @@ class _Context:
 def _masses(ctx: _Context, raw) -> list[MassItem]:
     r, file, bodies = ctx.r, ctx.r.file, ctx.bodies
     masses = []
-    r.table(raw, "masses", tuple(raw))
+    r.named(raw, "masses")
     for name, spec in raw.items():
         where = f"masses.{name}"
         r.table(spec, where, _keys("masses"), required=("mass",))
@@ -425,7 +425,7 @@ def _gravity(r: _Values, graw) -> Vec:
 def _forces(ctx: _Context, raw) -> list[AppliedForce]:
     r, file = ctx.r, ctx.r.file
     forces = []
-    r.table(raw, "forces", tuple(raw))
+    r.named(raw, "forces")
     for name, spec in raw.items():
         where = f"forces.{name}"
         r.table(spec, where, _keys("forces"), required=("at",))
@@ -496,7 +496,7 @@ def _pressure_force(r: _Values, spec, where) -> tuple[float, str]:
 def _torques(ctx: _Context, raw) -> tuple[list[AppliedTorque], list[Friction]]:
     r, file, members = ctx.r, ctx.r.file, ctx.members
     torques, frictions = [], []
-    r.table(raw, "torques", tuple(raw))
+    r.named(raw, "torques")
     for name, spec in raw.items():
         where = f"torques.{name}"
         r.table(spec, where, _keys("torques"))
@@ -537,7 +537,7 @@ def _torques(ctx: _Context, raw) -> tuple[list[AppliedTorque], list[Friction]]:
 def _springs(ctx: _Context, raw) -> list[Spring]:
     r, file = ctx.r, ctx.r.file
     springs = []
-    r.table(raw, "springs", tuple(raw))
+    r.named(raw, "springs")
     for name, spec in raw.items():
         where = f"springs.{name}"
         r.table(spec, where, _keys("springs"), required=("stiffness",))

@@ -108,7 +108,7 @@ def spec(scene: Scene) -> PinSpec:
     extra = scene.extra
     diameters: dict[str, float] = {}
     raw = extra.get("pins", {})
-    r.table(raw, "pins", tuple(raw) if isinstance(raw, dict) else ())
+    r.named(raw, "pins")
     for label, tab in raw.items():
         where = f"pins.{label}"
         r.label(label, where)
