@@ -402,7 +402,7 @@ def _find(solution):
         # Kennedy leaves these open (the links of a group of three on a plate — a class-III
         # group — or a toggle): each one's centre from its velocity field, said so; Kennedy
         # then gives what it can from them
-        motion, partial = _field(solution, bods), True
+        motion, partial = _field(_moving(solution), bods), True
         for j in open_:
             known[(1, j)] = _field_centre(1, j, motion, names, size, open_=True)
         close(range(1, n + 1) if n <= FULL_BODIES else
@@ -504,6 +504,22 @@ def _field(solution, bods):
         p = pos[a]
         out[b.number] = (w, (v[0] + w * p[1], v[1] - w * p[0]), how + f", v_{a}")
     return out
+
+
+def _moving(solution):
+    """``solution``, or — the mechanism at rest (every velocity zero: ω = 0) — the same pose
+    driven at a unit rate: a centre is where the velocity *ratios* put it, the same at any
+    rate, and at rest the polygon has no field to read them from."""
+    from dataclasses import replace
+    pts = solution.points.values()
+    if any(p.velocity is not None and (p.velocity[0] or p.velocity[1]) for p in pts):
+        return solution
+    scene, drv = solution.scene, solution.scene.driver
+    rate = next((k for k in ("omega", "velocity") if getattr(drv, k, None) == 0.0), None)
+    if rate is None:
+        return solution
+    from .evaluate import solve
+    return solve(replace(scene, driver=replace(drv, **{rate: 1.0})))
 
 
 def _field_centre(i, j, motion, names, size, open_: bool = False) -> Centre:

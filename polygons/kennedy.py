@@ -81,6 +81,8 @@ def line_through(c1, c2, name: str, size: float) -> Line | None:
         if n <= SAME * size:
             return None
         return Line(p1, (d[0] / n, d[1] / n), name)
+    if (p1 is None and c1.direction is None) or (p2 is None and c2.direction is None):
+        return None                     # a centre that is everywhere (no relative motion)
     if p1 is not None:
         return Line(p1, c2.direction, name)
     if p2 is not None:
