@@ -477,6 +477,13 @@ def find_range(prog: Program, probe: int = PROBE):
         xs = x0 + step * np.arange(-half, half + 1)
     m = _margin(prog, xs)
     ok = m >= 0
+    if not (m >= _SIN_PARALLEL).any() and ok.any():
+        # a toggle everywhere (a slot parallel to its guide at every input): no position has
+        # its polygons, refused as solve refuses the scene's own position
+        point, why = _culprit(prog, float(xs[int(np.flatnonzero(ok)[0])]))
+        raise ConstructionError(f"every probed position of the input is a toggle or change "
+                                f"point ({point}: {why}): the polygons are undefined throughout "
+                                f"the cycle", file=prog.scene.file)
     # local minima below the warning angle, refined
     left = np.roll(m, 1)
     right = np.roll(m, -1)

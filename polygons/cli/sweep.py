@@ -239,7 +239,7 @@ def plot(sw: Sweep, points, links, shm, unit, stem: Path, formats) -> list[Path]
             _add(disp, vel, acc, sw, x, name, s * f, v * f, a * f, style, c)
             for panel, y in zip((disp, vel, acc), mark[1:4]):   # the scene's own position
                 panel.lines.append(Line("", [x0], [float(y[0]) * f], "none", c, marker="o"))
-        if lab in shm:
+        if lab in shm and np.isfinite(sw.slide_a[lab]).any():
             h = shm[lab]
             _add(disp, vel, acc, sw, x, f"{lab} simple harmonic (pin {h.pin} projected)",
                  h.travel * f, h.velocity * f, h.acceleration * f, ":", "black")
@@ -392,20 +392,20 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
         if lab in sw.travel and lab in sw.slide_v:
             s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
             e = scene.model.guide[lab].line.angle
+            travel = (f"{number(np.nanmin(s) * f)} … {number(np.nanmax(s) * f)} {lu} (stroke "
+                      f"{number((np.nanmax(s) - np.nanmin(s)) * f)} {lu})"
+                      if np.isfinite(s).any() else "— (no position of the sweep solves it)")
             out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
-                       f"{number(np.nanmin(s) * f)} … {number(np.nanmax(s) * f)} {lu} "
-                       f"(stroke {number((np.nanmax(s) - np.nanmin(s)) * f)} {lu})")
-            iv, ia = int(np.nanargmax(np.abs(v))), int(np.nanargmax(np.abs(a)))
-            out.append(f"  max |v| = {number(abs(v[iv]) * f)} {vu} at {_at(sw, iv)}")
-            out.append(f"  max |a| = {number(abs(a[ia]) * f)} {au} at {_at(sw, ia)}")
+                       f"{travel}")
+            out.append(f"  max |v| = {_peak(sw, np.abs(v), f, vu)}")
+            out.append(f"  max |a| = {_peak(sw, np.abs(a), f, au)}")
         else:
             V, A = sw.velocity(lab), sw.acceleration(lab)
             vm, am = np.hypot(V[:, 0], V[:, 1]), np.hypot(A[:, 0], A[:, 1])
-            iv, ia = int(np.nanargmax(vm)), int(np.nanargmax(am))
             out.append(f"point {lab}:")
-            out.append(f"  max |v| = {number(vm[iv] * f)} {vu} at {_at(sw, iv)}")
-            out.append(f"  max |a| = {number(am[ia] * f)} {au} at {_at(sw, ia)}")
-        if lab in shm:
+            out.append(f"  max |v| = {_peak(sw, vm, f, vu)}")
+            out.append(f"  max |a| = {_peak(sw, am, f, au)}")
+        if lab in shm and np.isfinite(sw.slide_a[lab]).any():
             h = shm[lab]
             a = sw.slide_a[lab]
             d = a - h.acceleration
@@ -422,12 +422,20 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
                        f"{number(ds * f)} {lu} (travel offset {number(h.offset * f)} {lu})")
     for name in links:
         w, al = sw.omega[name], sw.alpha[name]
-        iw, ia = int(np.nanargmax(np.abs(w))), int(np.nanargmax(np.abs(al)))
-        out.append(f"link {name}: max |ω| = {number(abs(w[iw]))} rad/s at {_at(sw, iw)}; "
-                   f"max |α| = {number(abs(al[ia]))} rad/s² at {_at(sw, ia)}")
+        out.append(f"link {name}: max |ω| = {_peak(sw, np.abs(w), 1.0, 'rad/s')}; "
+                   f"max |α| = {_peak(sw, np.abs(al), 1.0, 'rad/s²')}")
     out.append("")
     out.append("written: " + ", ".join(str(p) for p in written))
     return "\n".join(out) + "\n"
+
+
+def _peak(sw, values, f: float, unit: str) -> str:
+    """'V unit at POSITION' for the largest of ``values`` (NaN where a position is not solved),
+    or words saying no position has it (never an argmax of nothing)."""
+    if not np.isfinite(values).any():
+        return "— (no position of the sweep solves it)"
+    i = int(np.nanargmax(values))
+    return f"{number(values[i] * f)} {unit} at {_at(sw, i)}"
 
 
 def _branch_words(scene: Scene, lab: str) -> str:
