@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from . import contacts
-from .errors import SceneError, UnknownLabelError, show, suggest
+from .errors import PolygonsError, SceneError, UnknownLabelError, show, suggest
 from .evaluate import PointResult, Solution
 # FUNCTIONS is read by polygons.forces as quantities.FUNCTIONS
 from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse  # noqa: F401
@@ -49,6 +49,38 @@ def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float
         length = lr.length if lr is not None else contacts.wheel_of(sol.scene, args[0]).radius
         return ("velocity" if fn == "omega" else "acceleration"), abs(value) * length
     return ("velocity" if fn in ("v", "vs") else "acceleration"), abs(value)
+
+
+def _known(scene) -> set[str]:
+    """Every point label a quantity may name: the space diagram's, and rolling wheels'
+    centres and rim points."""
+    out = set(scene.labels)
+    for e in getattr(scene, "equivalents", ()):
+        if e.kind == "rolling":
+            out |= {e.at} | {r[0] for r in e.rim}
+    return out
+
+
+def labels_needed(scene, expr: str) -> tuple[str, ...]:
+    """The point labels the plan must place to read ``expr``: its points, a link's ends, and
+    for a rolling wheel (its ω, α, centre or a rim point) the centre and the plates it rolls
+    on and under (the no-slip conditions read both: :func:`contacts.rolling`)."""
+    fn, args = _parse(expr)
+    out: list[str] = []
+    for name in args:
+        wheel = next((e for e in getattr(scene, "equivalents", ()) if e.kind == "rolling" and
+                      (name == e.at or any(r[0] == name for r in e.rim))), None)
+        if wheel is not None:
+            out += [x for x in (wheel.at, wheel.on, wheel.opposite) if x is not None]
+            continue
+        if fn in ("omega", "alpha"):
+            try:
+                out += list(scene.model.body(name).labels)
+            except (KeyError, ValueError, PolygonsError):
+                pass                 # not a link: refused by name when the answer is read
+            continue
+        out.append(name)
+    return tuple(dict.fromkeys(out))
 
 
 #: the polygon a quantity of each dimension is read from (a quantity this scene's ``solve``
@@ -84,6 +116,12 @@ def _quantity(sol: Solution, expr: str) -> float | None:
                 got = contacts.wheel_point(sol, e, label) if e.kind == "rolling" else None
                 if got is not None:
                     return PointResult(*got)
+        targets = getattr(getattr(sol, "plan", None), "targets", None)
+        if (label not in sol.points and targets is not None and
+                tuple(targets) != tuple(scene.labels) and label in _known(scene)):
+            raise SceneError(f"{show(expr)} reads {show(label)}, which this solution does not "
+                             f"place (it was solved for {', '.join(targets)} only): solve "
+                             f"{show(label)} too", file=scene.file)
         if label not in sol.points:
             raise UnknownLabelError(f"unknown point {show(label)} in {show(expr)}: "
                                     f"{suggest(label, sol.points)}", file=scene.file)

@@ -60,7 +60,8 @@ def rolling(sol, q) -> dict | None:
     r = q.radius
     blocks = [name for name in (q.on, q.opposite) if name is not None
               and not (q.opposite_motion is not None and name == q.opposite)]
-    if any(sol.points[name].velocity is None for name in blocks):
+    if any(name not in sol.points or sol.points[name].velocity is None for name in blocks):
+        return None             # a plate the plan left out (solve --points) or not solved
         return None
     v1 = _along(sol, q.on, e, "velocity")
     if q.opposite is None:

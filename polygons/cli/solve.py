@@ -31,9 +31,32 @@ def register(sub) -> None:
     p.set_defaults(func=run)
 
 
+def _targets(scene, points: str | None, method) -> list[str] | None:
+    """The labels ``--points`` asks for, and what the rest of the output reads: the points
+    the scene's answers name (a wheel's: its plates too) and Klein's crank and piston — the
+    answers are checked, not skipped.  None (the whole plan) when the output needs a point
+    no target can name (a slider block on no link)."""
+    if not points:
+        return None
+    from ..quantities import labels_needed
+    asked = [t.strip() for t in points.split(",")]
+    extra: list[str] = []
+    for ans in scene.answers:
+        extra += labels_needed(scene, ans.quantity)
+    if method:
+        from ..classic.klein import engine
+        _, _, O, A, B, _ = engine(scene)
+        extra += [O, A, B]
+    known = set(scene.labels)
+    if any(t not in known for t in extra) and all(t in known for t in asked):
+        return None
+    return list(dict.fromkeys(asked + [t for t in extra if t in known]))
+
+
 def run(args) -> int:
     scene = load_scene(args.scene)
-    targets = [t.strip() for t in args.points.split(",")] if args.points else None
+    method = args.klein or scene.options.diagram.klein
+    targets = _targets(scene, args.points, method)
     sol = solve(scene, targets)
     forces = None
     if scene.loads is not None and scene.loads.active:   # bad force tables fail first
@@ -41,7 +64,6 @@ def run(args) -> int:
         from ..forces import analyse
         from .forces import forces_table, to_dict
         forces = analyse(scene)
-    method = args.klein or scene.options.diagram.klein
     fig = None
     if method:
         from ..classic.klein import figure
