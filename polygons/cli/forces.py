@@ -39,7 +39,8 @@ def register(sub) -> None:
                         "fluctuation of energy; with --svg, its plot")
     p.add_argument("--fluctuation", metavar="CS",
                    help="with --cycle: the coefficient of fluctuation of speed ('2 %%' or "
-                        "0.02), for the flywheel's inertia I = ΔE / (ω² C_s)")
+                        "0.02; from 1e-6 up to, not including, 1), for the flywheel's inertia "
+                        "I = ΔE / (ω² C_s)")
     p.set_defaults(func=run)
 
 
@@ -531,7 +532,7 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
 
 def _run_cycle(args, scene) -> int:
     """``--cycle N``: the turning-moment diagram (polygons.forces.cycle)."""
-    from ..forces.cycle import turning_moment
+    from ..forces.cycle import check_fluctuation, turning_moment
     from ..forces.analysis import load_model
     from ..units import parse_quantity
     if args.cycle is None:
@@ -539,13 +540,11 @@ def _run_cycle(args, scene) -> int:
                          file=scene.file)
     cs = None
     if args.fluctuation is not None:
-        text = args.fluctuation.strip()
-        cs = parse_quantity(text if any(c.isalpha() or c == "%" for c in text) else
-                            f"{text} 1", "fraction")
-        if not 0.0 < cs < 1.0:
-            raise SceneError(f"--fluctuation must be between 0 and 1 (or 0 and 100 %), got "
-                             f"{args.fluctuation!r}", file=scene.file)
+        # a plain number is the fraction itself, '2 %' a percentage (units.parse_quantity)
+        cs = check_fluctuation(parse_quantity(args.fluctuation.strip(), "fraction",
+                                              file=scene.file, where="--fluctuation"))
     cy = turning_moment(load_model(scene), scene, args.cycle)
+    inertia = None if cs is None else cy.flywheel_inertia(cs)   # refused before any output
     if args.json:
         text = json_text({"theta_deg": [math.degrees(t) for t in cy.theta],
                           "torque": cy.torque.tolist(), "energy": cy.energy.tolist(),
@@ -553,7 +552,7 @@ def _run_cycle(args, scene) -> int:
                           "energy_max_at_deg": math.degrees(cy.at_max) % 360.0,
                           "energy_min_at_deg": math.degrees(cy.at_min) % 360.0,
                           "virtual_work_max_difference": cy.vw_error,
-                          "flywheel_inertia": None if cs is None else cy.flywheel_inertia(cs),
+                          "flywheel_inertia": inertia,
                           "fluctuation_of_speed": cs, "warnings": list(cy.warnings)})
     else:
         text = cycle_table(scene, cy, cs)

@@ -48,8 +48,33 @@ class Cycle:
 
     def flywheel_inertia(self, cs: float) -> float:
         """I = ΔE / (ω² C_s): the flywheel that keeps the speed within the coefficient of
-        fluctuation ``cs`` (ω_max − ω_min = C_s ω)."""
-        return self.fluctuation / (self.omega ** 2 * cs)
+        fluctuation ``cs`` (ω_max − ω_min = C_s ω); ``cs`` in :data:`CS_RANGE`, and an
+        inertia too large to state refused (ω² C_s underflowing)."""
+        check_fluctuation(cs)
+        inertia = self.fluctuation / (self.omega ** 2 * cs) if self.fluctuation else 0.0
+        if not math.isfinite(inertia) or inertia > INERTIA_MOST:
+            raise SceneError(f"the flywheel for C_s = {cs:g} would need I = ΔE / (ω² C_s) "
+                             f"above {INERTIA_MOST:g} kg m² (ΔE = {self.fluctuation:.6g} J, "
+                             f"ω = {abs(self.omega):.6g} rad/s): no flywheel keeps the speed "
+                             f"that steady")
+        return inertia
+
+
+#: the coefficients of fluctuation of speed C_s accepted (--fluctuation): from 1e-6 (a
+#: millionth of the speed; engines' flywheels are 0.002–0.2) up to, not including, 1
+CS_RANGE = (1e-6, 1.0)
+#: the largest flywheel inertia stated (kg m²), as a scene's inertia (polygons.units.LIMITS)
+INERTIA_MOST = 1e9
+
+
+def check_fluctuation(cs: float, where: str = "--fluctuation") -> float:
+    """``cs`` if it is a coefficient of fluctuation of speed in :data:`CS_RANGE`."""
+    lo, hi = CS_RANGE
+    if not (lo <= cs < hi):
+        raise SceneError(f"the coefficient of fluctuation of speed must be from {lo:g} "
+                         f"({lo * 100:g} %) up to, not including, 1 (100 %); got {cs:g}",
+                         where=where)
+    return cs
 
 
 def turning_moment(model, scene: Scene, n: int) -> Cycle:
