@@ -25,7 +25,8 @@ from ..units import parse_quantity
 
 _DIMENSION = {"theta": "angle", "omega": "angular_velocity", "alpha": "angular_acceleration",
               "s": "length", "velocity": "velocity", "acceleration": "acceleration"}
-_RANGE = re.compile(r"^\s*([^.]+?)\s*\.\.\s*(.+?)\s*:\s*(\d+)\s*$")
+#: LO..HI:N — LO up to the first '..' (a decimal LO such as 0.5 has one dot, not two)
+_RANGE = re.compile(r"^\s*(.+?)\s*\.\.\s*(.+?)\s*:\s*(\d+)\s*$")
 
 
 def parse_vary(spec: str, scene: Scene) -> tuple[str, np.ndarray]:
