@@ -24,7 +24,8 @@ nor the diagrams.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, is_dataclass
+from typing import Mapping
 
 import numpy as np
 
@@ -36,6 +37,7 @@ from .position import assemble, driver_input, dyad_failure
 from .reader import record, record_of
 from .scene import Scene
 from .steps import Diagram, Step, Term, noise_floor
+from .memo import memo_of
 from .model import BUILT, check_handles
 
 _FIELDS = ("at", "vector", "point", "direction")
@@ -45,8 +47,60 @@ _CACHE: dict = {}
 #: the kinds of body and pair the compiled evaluator handles (polygons.model)
 HANDLES = BUILT
 
-def _cached(key, make) -> _Code:
-    """The code kept under ``key`` (a topology), made by ``make()`` the first time."""
+#: the scene fields the generated code is shaped by (its topology: what is placed, driven,
+#: guided and slotted, and how); the rest — names of the file, texts, answers, loads,
+#: options — never reach the code, and the numbers are read at run time by its getters
+_SHAPED_BY = ("ground", "links", "driver", "sliders", "slots", "points", "solve", "crossing",
+              "prescribed", "equivalents")
+
+
+def _shape(value):
+    """``value`` with every float replaced by its type: the whole identity of a record tree
+    but its measures (a record's kind and every field name, label, flag, count and None),
+    walked without recursion (the tree is the user's scene)."""
+    out: list = []
+    stack = [value]
+    while stack:
+        v = stack.pop()
+        if v is None or isinstance(v, (str, bool, int)) and not isinstance(v, np.integer):
+            out.append(v)
+        elif isinstance(v, (float, np.floating)):
+            out.append(float)
+        elif is_dataclass(v):
+            out.append(type(v).__qualname__)
+            for f in fields(v):
+                if f.compare:
+                    stack.append(getattr(v, f.name))
+                    out.append(f.name)
+        elif isinstance(v, Mapping):
+            out.append((type(v).__name__, len(v)))
+            for k, item in v.items():
+                stack.append(item)
+                stack.append(k)
+        elif isinstance(v, (tuple, list, np.ndarray)):
+            out.append(("seq", len(v)))
+            stack.extend(reversed(list(v)))
+        else:
+            out.append(type(v).__qualname__)
+    return tuple(out)
+
+
+def topology_key(scene: Scene) -> tuple:
+    """The part of every code-cache key that is the scene's own: its driver's kind, its
+    guides, slots, points and contacts as well as the plan (kept with the scene)."""
+    memo = memo_of(scene)
+    key = memo.get("topology_key")
+    if key is None:
+        key = memo["topology_key"] = tuple(_shape(getattr(scene, name, None))
+                                           for name in _SHAPED_BY)
+    return key
+
+
+def _cached(key, make, scene: Scene | None = None) -> _Code:
+    """The code kept under ``key`` and the scene's :func:`topology_key`, made by ``make()``
+    the first time."""
+    if scene is not None:
+        key = (key, topology_key(scene))
     code = _CACHE.get(key)
     if code is None:
         if len(_CACHE) >= 256:          # a bound, not a policy: topologies are few
@@ -181,7 +235,7 @@ def compile_scene(scene: Scene, plan: Plan | None = None, jit: bool = False) -> 
     steps = construction(plan)
     sigma = _sigmas(plan)
     key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)), _slot_kinds(scene))
-    code = _cached(key, lambda: generate(scene, plan, steps, sigma))
+    code = _cached(key, lambda: generate(scene, plan, steps, sigma), scene)
     kernel = _kernel(code) if jit else None
     if kernel is not None:
         return Program(scene, plan, steps, sigma, code,
@@ -208,7 +262,7 @@ def compile_staged(scene: Scene, plan: Plan, steps: tuple[Step, ...], meet) -> "
     """The staged solver's program for ``plan`` (:func:`polygons.codegen.generate` with
     ``meet``, which draws and intersects the construction lines)."""
     key = ("staged", meet, plan.dyads, steps, tuple(scene.ground), _slot_kinds(scene))
-    code = _cached(key, lambda: generate(scene, plan, steps, {}, meet=meet))
+    code = _cached(key, lambda: generate(scene, plan, steps, {}, meet=meet), scene)
     fixed = [None if isinstance(get, tuple) else float(get(scene)) for get in code.getters]
     closures = tuple((i, get[1]) for i, get in enumerate(code.getters) if isinstance(get, tuple))
     return Staged(scene, plan, steps, code, fixed, closures)
@@ -254,7 +308,7 @@ def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]
     steps = construction(plan, tuple(Diagram))
     key = ("arrays", plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)),
            _slot_kinds(scene))
-    code = _cached(key, lambda: generate(scene, plan, steps, sigma, arrays=True))
+    code = _cached(key, lambda: generate(scene, plan, steps, sigma, arrays=True), scene)
     return code, _params(code, scene, sigma)
 
 
@@ -268,7 +322,8 @@ def compile_given(scene: Scene, plan: Plan, instruments=None) -> _Code:
         return generate(scene, plan, steps, {}, arrays=True, instruments=instruments,
                         positions=True)
     key = ("given", plan.dyads, steps, tuple(scene.ground), _slot_kinds(scene))
-    return _cached(key, lambda: generate(scene, plan, steps, {}, arrays=True, positions=True))
+    return _cached(key, lambda: generate(scene, plan, steps, {}, arrays=True, positions=True),
+                   scene)
 
 
 def given_params(code: _Code, scene, points: dict) -> tuple:
