@@ -276,12 +276,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             links[name] = Link(name, a, b, length)
             continue
         length = r.quantity(value, "length", f"links.{name}")
-        if length <= 0:
-            raise SceneError(f"length must be positive, got {show(value)}", file=file,
+        if not link_length_ok(length):
+            raise SceneError(link_length_problem(length, show(value)), file=file,
                              where=f"links.{name}")
-        if length < MIN_LENGTH:
-            raise SceneError(f"{show(value)} is too small to compute with: a link must be at "
-                             f"least {MIN_LENGTH:g} m long", file=file, where=f"links.{name}")
         links[name] = record(Link, name=name, a=a, b=b, length=length)
 
     # slots
@@ -580,6 +577,21 @@ def parse_scene(data: dict, *, file: str = "<scene>",
 MIN_RELATIVE = 1e-6
 #: the shortest link accepted (m)
 MIN_LENGTH = 1e-9
+
+
+def link_length_ok(length):
+    """Whether a link length (m; a number or an array of them) is one the constructions
+    compute with: at least :data:`MIN_LENGTH` — the one rule for a scene file's [links] and
+    the rows of :func:`polygons.solve_many`."""
+    return length >= MIN_LENGTH
+
+
+def link_length_problem(length: float, shown: str) -> str:
+    """Why ``length`` (shown to the user as ``shown``) is not a link length."""
+    if not length > 0:
+        return f"length must be positive, got {shown}"
+    return (f"{shown} is too small to compute with: a link must be at least {MIN_LENGTH:g} m "
+            f"long")
 MAX_RELATIVE = 1e6
 #: the farthest a point of [points] may lie from its link's first label, as a multiple of the
 #: mechanism's size: farther, the mechanism shrinks to nothing in every drawing
