@@ -41,6 +41,9 @@ def register(sub) -> None:
                    help="with --cycle: the coefficient of fluctuation of speed ('2 %%' or "
                         "0.02; from 1e-6 up to, not including, 1), for the flywheel's inertia "
                         "I = ΔE / (ω² C_s)")
+    p.add_argument("--long", action="store_true",
+                   help="with --cycle: run a turning-moment diagram estimated above the work "
+                        "budget (N × (3 × moving bodies)³ > 2e10, about 25 s here) anyway")
     p.set_defaults(func=run)
 
 
@@ -532,7 +535,8 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
 
 def _run_cycle(args, scene) -> int:
     """``--cycle N``: the turning-moment diagram (polygons.forces.cycle)."""
-    from ..forces.cycle import check_fluctuation, turning_moment
+    from ..forces.cycle import (MAX_CYCLE, check_cycle_budget, check_fluctuation,
+                                 turning_moment)
     from ..forces.analysis import load_model
     from ..units import parse_quantity
     if args.cycle is None:
@@ -543,7 +547,10 @@ def _run_cycle(args, scene) -> int:
         # a plain number is the fraction itself, '2 %' a percentage (units.parse_quantity)
         cs = check_fluctuation(parse_quantity(args.fluctuation.strip(), "fraction",
                                               file=scene.file, where="--fluctuation"))
-    cy = turning_moment(load_model(scene), scene, args.cycle)
+    model = load_model(scene)
+    if not args.long and 4 <= args.cycle <= MAX_CYCLE:     # (a count out of range: refused
+        check_cycle_budget(model, args.cycle, scene.file)  # by turning_moment, in its words)
+    cy = turning_moment(model, scene, args.cycle)
     inertia = None if cs is None else cy.flywheel_inertia(cs)   # refused before any output
     if args.json:
         text = json_text({"theta_deg": [math.degrees(t) for t in cy.theta],
