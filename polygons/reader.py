@@ -165,6 +165,20 @@ _KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
           (stat.S_ISSOCK, "a socket"))
 
 
+def kind_of_file(path) -> str | None:
+    """None for a regular file; else what ``path`` is, in words ('no such file', 'a FIFO
+    (named pipe)', 'a directory', ...) — looked at without opening it (a FIFO would block)."""
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        return "no such file"
+    except (OSError, ValueError) as exc:
+        return f"not readable ({getattr(exc, 'strerror', None) or exc})"
+    if stat.S_ISREG(mode):
+        return None
+    return next((words for test, words in _KINDS if test(mode)), "not a regular file")
+
+
 def _regular_file(mode: int, file: str) -> None:
     """Refuse anything but a regular file (a FIFO, a device, a directory): it could block or
     never end, and a scene is a file of a few kB."""

@@ -47,9 +47,13 @@ def register(sub) -> None:
 
 
 def read_students(path: str) -> list[str]:
+    from ..reader import kind_of_file
     p = Path(path)
-    if not p.is_file():
-        raise ExamError(f"--students {path}: no such file")
+    kind = kind_of_file(p)          # a FIFO or a folder said so (never opened: it could block)
+    if kind is not None:
+        raise ExamError(f"--students {path}: " + (kind if kind.startswith(("no ", "not "))
+                                                  else f"is {kind}, not a class list (a CSV "
+                                                       f"file, one name per line)"))
     raw = p.read_bytes()[:MAX_CLASS_LIST + 1]
     if len(raw) > MAX_CLASS_LIST:
         raise ExamError(f"--students {path}: larger than {MAX_CLASS_LIST:,} bytes")
