@@ -14,7 +14,8 @@ def register(sub) -> None:
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--json", action="store_true", help="print a JSON object instead of a table")
     add_out_option(p)
-    p.add_argument("--points", help="comma-separated labels: plan only what these need")
+    p.add_argument("--points", help="comma-separated labels: plan only what these need "
+                                    "(and what the scene's answers read, which are checked)")
     p.add_argument("--units", choices=("mm", "si", "imperial"), default="mm",
                    help="units of the table: mm (positions in mm, speeds in m/s; default), "
                         "si (m, m/s, m/s²) or imperial (in, ft/s, ft/s²); JSON is always SI")
