@@ -16,6 +16,9 @@ Pt = tuple[float, float]
 
 #: clear space (mm) kept between two labels, so they never touch
 LABEL_GAP = 0.35
+#: clear space (mm) kept between two labels side by side on one line, so they never read as
+#: one word ("(a_P2)ⁿ_O2 (a_P4)ᵗ_O4"): about a word space at the vector-label size
+LABEL_GAP_X = 1.2
 
 
 @dataclass(frozen=True)
@@ -166,8 +169,8 @@ class Placer:
         :meth:`_near`, else looked up)."""
         boxes, hard, _ = near or self._near(box)
         x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
-        gx0, gy0, gx1, gy1 = x0 - LABEL_GAP, y0 - LABEL_GAP, x1 + LABEL_GAP, y1 + LABEL_GAP
-        for b in boxes:                   # (box.grown(LABEL_GAP).overlaps(b))
+        gx0, gy0, gx1, gy1 = x0 - LABEL_GAP_X, y0 - LABEL_GAP, x1 + LABEL_GAP_X, y1 + LABEL_GAP
+        for b in boxes:                   # (box grown by the gaps overlaps b)
             if gx0 < b.x1 and b.x0 < gx1 and gy0 < b.y1 and b.y0 < gy1:
                 return False
         for a, b, c in hard:              # (box_hits_segment(box, a, b, c))
@@ -291,7 +294,7 @@ _MAX_SAMPLES = 400
 
 def _box_reach(b: Box):
     """A placed box: its cells, grown by the gap two labels keep (``free``)."""
-    return b.grown(LABEL_GAP + 0.01), None
+    return b.grown(max(LABEL_GAP, LABEL_GAP_X) + 0.01), None
 
 
 def _hard_reach(seg):

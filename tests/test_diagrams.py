@@ -125,17 +125,19 @@ def test_fig7_stages_follow_the_tutorial_with_coriolis_and_offset_line():
     assert "Coriolis" in caps[5]
     final = by["acceleration"]
     labels = [t.text for t in final.items() if isinstance(t, Text)]
-    assert "Coriolis offset line" in labels and "2ωv" in labels and "p4 line" in labels
+    assert "Coriolis offset line" in labels and "2ωv" in labels and "line ⊥ O4P4" in labels
     cor = [a for a in final.items() if isinstance(a, Arrow) and a.role == "coriolis"]
     assert len(cor) == 1 and (cor[0].frm, cor[0].to) == ("p4", "p2_1")
     assert cor[0].style == "c-coriolis"
 
 
-def test_we4_has_the_c_line_and_slider_line_as_the_tutorial_draws():
+def test_we4_has_the_line_perpendicular_to_bc_and_slider_line_as_the_tutorial_draws():
+    """The tutorial's "c line" is named for what it is (one notation: "line ⊥ BC")."""
     sol, ds = solved(CASES / "s001-we4.toml")
     acc = finals(ds)["acceleration"]
     labels = {t.text for t in acc.items() if isinstance(t, Text)}
-    assert {"c line", "slider line", "a", "b", "c1", "c"} <= labels
+    assert {"line ⊥ BC", "slider line", "a", "b", "c1", "c"} <= labels
+    assert not any(t.endswith(" line") and t.split()[0] in ("b", "c", "p4", "r") for t in labels)
     vecs = {(a.frm, a.to): a.role for a in acc.items() if isinstance(a, Arrow)}
     assert vecs[("a", "b")] == "known" and vecs[("b", "c1")] == "known"
     assert vecs[("c1", "c")] == "resolved" and vecs[("a", "c")] == "resolved"
