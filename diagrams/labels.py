@@ -16,9 +16,9 @@ Pt = tuple[float, float]
 
 #: clear space (mm) kept between two labels, so they never touch
 LABEL_GAP = 0.35
-#: clear space (mm) kept between two labels side by side on one line, so they never read as
-#: one word ("(a_P2)ⁿ_O2 (a_P4)ᵗ_O4"): about a word space at the vector-label size
-LABEL_GAP_X = 1.2
+#: clear space (mm) kept between two labels side by side on one line (their middles within half
+#: a height), so that they never read as one ("(a_P2)ⁿ_O2 (a_P4)ᵗ_O4"): close to a word space
+LABEL_GAP_X = 0.6
 
 
 @dataclass(frozen=True)
@@ -169,9 +169,14 @@ class Placer:
         :meth:`_near`, else looked up)."""
         boxes, hard, _ = near or self._near(box)
         x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
-        gx0, gy0, gx1, gy1 = x0 - LABEL_GAP_X, y0 - LABEL_GAP, x1 + LABEL_GAP_X, y1 + LABEL_GAP
-        for b in boxes:                   # (box grown by the gaps overlaps b)
+        gx0, gy0, gx1, gy1 = x0 - LABEL_GAP, y0 - LABEL_GAP, x1 + LABEL_GAP, y1 + LABEL_GAP
+        wx0, wx1, half = x0 - LABEL_GAP_X, x1 + LABEL_GAP_X, (y1 - y0) / 2
+        for b in boxes:                   # (box.grown(LABEL_GAP).overlaps(b))
             if gx0 < b.x1 and b.x0 < gx1 and gy0 < b.y1 and b.y0 < gy1:
+                return False
+            # on one line (their middles within half a height): a word space apart
+            if (wx0 < b.x1 and b.x0 < wx1
+                    and abs((b.y0 + b.y1) - (y0 + y1)) < min(half, (b.y1 - b.y0) / 2) * 2):
                 return False
         for a, b, c in hard:              # (box_hits_segment(box, a, b, c))
             if c <= 0:
