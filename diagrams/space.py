@@ -63,6 +63,26 @@ def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
     return out
 
 
+#: the fixed link between pivots is listed pair by pair up to this many pivots (beyond it,
+#: pivot to next pivot in the scene's order)
+MAX_FIXED_PAIRS = 3
+
+
+def fixed_links(scene) -> list[str]:
+    """The fixed link (the frame) as the books give it: 'AD = 1000 mm (fixed link)' between
+    the fixed pivots, so that a four-bar's fourth link is listed with the other three."""
+    g = list(scene.ground.items())
+    named = {frozenset((ln.a, ln.b)) for ln in scene.links.values()}
+    pairs = ([(g[i], g[j]) for i in range(len(g)) for j in range(i + 1, len(g))]
+             if len(g) <= MAX_FIXED_PAIRS else list(zip(g, g[1:])))
+    out = []
+    for (a, pa), (b, pb) in pairs:
+        if frozenset((a, b)) in named:
+            continue
+        out.append(f"{a}{b} = {number(math.dist(pa, pb) * 1000)} mm (fixed link)")
+    return out
+
+
 def rolling_wheels(scene) -> dict:
     """The wheels rolling on the fixed ground, by centre: each is solved as its equivalent
     slider (the centre on a line parallel to the ground) but drawn and listed as a wheel."""
@@ -461,6 +481,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     for name, ln in scene.links.items():
         if ln.a in sol.placement.points and ln.b in sol.placement.points:
             legend.append((f"{name} = {number(ln.length * 1000)} mm", "normal"))
+    legend += [(text, "normal") for text in fixed_links(scene)]
     for slot in scene.model.slots() + scene.model.crossings():
         legend.append((f"{slot.at} slides in the slot of {slot.carrier} "
                        f"(pivot {slot.line.origin})", "normal"))

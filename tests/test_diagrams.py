@@ -771,3 +771,13 @@ def test_the_coriolis_vector_is_drawn_once_and_its_stepped_back_copy_light():
     assert LOOKS["coriolis-aux"].width < LOOKS["coriolis"].width / 2
     keys = [t.text for t in acc.items("key") if isinstance(t, Text)]
     assert any("stepped back" in t for t in keys)
+
+
+def test_the_links_list_gives_the_fixed_link_as_the_title_does():
+    """WE3's title gives AD 1 m: the space diagram lists AD = 1000 mm (fixed link) with AB, BC,
+    DC; a link already named between two pivots is not listed twice."""
+    sol = solve(load_scene(CASES / "s001-we3.toml"))
+    d = diagrams.drawings(sol, None, None, False)[0]
+    texts = [t.text for t in d.items("legend") if isinstance(t, Text)]
+    assert "AD = 1000 mm (fixed link)" in texts
+    assert sum("(fixed link)" in t for t in texts) == 1
