@@ -29,7 +29,7 @@ import numpy as np
 
 from .errors import PolygonsError, UnitError, UnknownLabelError, show, suggest
 from .plan import construction, make_plan
-from .scene import Crank, Scene, link_length_ok, link_length_problem
+from .scene import MIN_LENGTH, Crank, Scene, link_length_ok
 from .steps import Diagram
 from .units import LIMITS, SI_UNIT
 from .sweep import compile_plan
@@ -207,14 +207,6 @@ def _column(scene: Scene, name: str, v) -> np.ndarray:
         raise UnitError(f"value {float(np.atleast_1d(a)[i])!r} (row {i}) is outside "
                         f"the domain: finite and at most {shown} in magnitude, as in a scene "
                         f"file", file=scene.file, where=name)
-    if name in scene.links:                  # the scene file's rule for a link length
-        with np.errstate(invalid="ignore"):
-            short = ~link_length_ok(a)
-        if np.any(short):
-            i = int(np.flatnonzero(np.atleast_1d(short))[0])
-            value = float(np.atleast_1d(a)[i])
-            raise UnitError(f"row {i}: {link_length_problem(value, repr(value) + ' m')}",
-                            file=scene.file, where=name)
     return a
 
 
@@ -370,7 +362,11 @@ def _failures(scene, cols, n):
 
     for name, a in cols.items():
         if name in scene.links:
-            mark(~(np.broadcast_to(a, (n,)) > 0), name, f"the length of {name} must be positive")
+            a = np.broadcast_to(a, (n,))
+            mark(~(a > 0), name, f"the length of {name} must be positive")
+            # the scene file's rule (scene.link_length_ok): 5e-324 m is refused as in [links]
+            mark(~link_length_ok(a), name, f"the length of {name} is too small to compute "
+                                           f"with: a link must be at least {MIN_LENGTH:g} m long")
     return fail, where, mark
 
 

@@ -205,8 +205,10 @@ def test_every_shipped_case_in_one_process_in_two_orders_as_alone():
 @pytest.mark.parametrize("bad", [5e-324, 1e-12, 1e-300, 0.0, -0.05])
 def test_solve_many_refuses_a_link_length_a_scene_refuses(bad):
     scene = polygons.load(FOUR_BAR)
-    with pytest.raises(PolygonsError, match="row 1"):
-        polygons.solve_many(scene, AB=[0.1, bad])
+    b = polygons.solve_many(scene, AB=[0.1, bad])      # the row refused, as a scene file is
+    assert list(b.ok) == [True, False] and [e.where for e in b.errors] == ["AB"]
+    assert re.search("positive|too small", b.errors[0].reason)
+    assert np.isnan(b.omega("BC")[1])
     with pytest.raises(PolygonsError, match="links.AB"):
         polygons.load(FOUR_BAR.replace('AB = "100 mm"', f'AB = "{bad} m"'))
 
