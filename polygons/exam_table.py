@@ -295,6 +295,10 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             1 <= factor <= 20):
         raise SceneError(f"partial_factor must be a number from 1 to 20, got {show(factor)}",
                          file=scene.file, where="exam.partial_factor")
+    if not ratio > factor:
+        raise SceneError(f"min_ratio ({show(ratio)}) must be more than partial_factor "
+                         f"({show(factor)}): otherwise the partial band of a small answer "
+                         f"reaches zero and its sign", file=scene.file, where="exam.min_ratio")
     title = r.string(raw.get("title", "Exam"), "exam.title")
     if not title.strip() or len(title) > 200:
         raise SceneError("title must be 1 to 200 characters", file=scene.file,

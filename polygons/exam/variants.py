@@ -63,8 +63,8 @@ SIGNED = ("omega", "alpha", "vs", "as")
 #: draws of the fixed probe that finds answers constant across variants or duplicated
 PROBE_DRAWS = 12
 #: the cost model of one draw (s): a solve, its checks and, when kept, the emulation —
-#: measured on this project's 2-core machine (Fig 7: ~3 ms; a 100-link chain: ~15 ms)
-DRAW_S_BASE, DRAW_S_PER_POINT = 2e-3, 1.3e-4
+#: measured on this project's 2-core machine (Fig 7: ~3 ms; a 100-link chain: ~45 ms)
+DRAW_S_BASE, DRAW_S_PER_POINT = 2e-3, 2.2e-4
 #: the default worst-case work budget of one `exam` run (seconds; --budget raises it)
 BUDGET_S = 600.0
 
@@ -295,16 +295,17 @@ def pose_check(scene: Scene, sp: ExamSpec, asked: tuple[str, ...]) -> tuple[floa
     turn = math.radians(sp.pose_margin_deg)
     if not hasattr(scene.driver, "pivot"):
         turn *= max((ln.length or 0.0 for ln in scene.links.values()), default=0.0)
-    xs = x0 + turn * np.array([0.0, -1.0, -0.5, 0.5, 1.0])
-    with np.errstate(all="ignore"):
-        out = evaluate(prog, xs, rates=True)
-    m = np.asarray(out["margin"], dtype=float)
-    m0 = float(m[0])
+    with np.errstate(all="ignore"):         # the pose first: positions only (cheap)
+        m0 = float(evaluate(prog, np.array([x0]), rates=False)["margin"][0])
     closure = 0.0 if not math.isfinite(m0) or m0 < 0 else math.degrees(math.asin(min(m0, 1.0)))
     if closure < sp.closure_margin_deg:
         return closure, (f"within {sp.closure_margin_deg:g}° of the other closure or a toggle")
     if turn == 0:
         return closure, None
+    xs = x0 + turn * np.array([0.0, -1.0, -0.5, 0.5, 1.0])
+    with np.errstate(all="ignore"):
+        out = evaluate(prog, xs, rates=True)
+    m = np.asarray(out["margin"], dtype=float)
     margin_words = f"{sp.pose_margin_deg:g}°"
     if not (np.all(np.isfinite(m)) and np.all(m > 0)):
         return closure, f"within {margin_words} of a pose where it does not close"
@@ -563,13 +564,17 @@ def _plan_asked(data, base: Scene, sp: ExamSpec, path) -> tuple[tuple[str, ...],
         return sp.ask, []
     values: list[list[float]] = []
     rng = random.Random(0)
+    from ..memo import forget, recording
     for index in _order(sp, rng, min(combinations(sp), 4 * PROBE_DRAWS)):
         d = _variant_data(data, base, sp, _pick(sp, index), 0)
         try:
-            sol = solve(parse_scene(d, file=f"{path} (probe)"))
-            values.append([quantity(sol, e) for e in sp.ask])
+            with recording() as made:
+                sol = solve(parse_scene(d, file=f"{path} (probe)"))
+                values.append([quantity(sol, e) for e in sp.ask])
         except (PolygonsError, Warning, ArithmeticError):
             continue
+        finally:
+            forget(made)
         if len(values) >= PROBE_DRAWS:
             break
     if len(values) < 2:
@@ -610,17 +615,27 @@ def _variant_data(data, base, sp: ExamSpec, pick, k) -> dict:
 
 
 def _try(data, base, sp: ExamSpec, pick, k, path, seen):
-    """(reason, None) for a rejected draw — nothing of it is kept — or ("", the variant)."""
+    """(reason, None) for a rejected draw — nothing of it is kept: the memos its scene and
+    solution made are dropped (:func:`polygons.memo.forget`) — or ("", the variant)."""
+    from ..memo import forget, recording
+    with recording() as made:
+        reason, variant = _draw(data, base, sp, pick, k, path, seen)
+    if variant is None:
+        forget(made)
+    return reason, variant
+
+
+def _draw(data, base, sp: ExamSpec, pick, k, path, seen):
     d = _variant_data(data, base, sp, pick, k)
     try:
         scene = parse_scene(d, file=f"{path} (variant {k})")
         sol = solve(scene)
-        sol.steps                       # the construction, drawn
         closure, why = pose_check(scene, sp, sp.ask)
+        if why:
+            return why, None
+        sol.steps                       # the construction, drawn
     except (PolygonsError, Warning, ArithmeticError):   # (a command runs with every warning
         return "does not assemble or cannot be constructed", None      # an error)
-    if why:
-        return why, None
     scales = round_scales(sol)
     why = _rejects(sol, sp, scales, sp.ask)
     if why:
