@@ -94,7 +94,8 @@ TABLES: tuple[Table, ...] = (
         Key("min_ratio", "number", "smallest ratio of every asked answer to its full tolerance "
                                    "(2 .. 100, and more than partial_factor: the partial band "
                                    "never reaches zero, so no answer is rounding noise and "
-                                   "every sign is meaningful)", example="5",
+                                   "every sign is meaningful; default 5, or partial_factor "
+                                   "+ 1 when that is more)", example="5",
             default=DEFAULTS["min_ratio"]),
         Key("pose_margin", "quantity", "how far the pose must be from a dead centre (a moving "
                                        "link or slider at rest) and from a change point (an "
@@ -276,7 +277,12 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             1 <= attempts <= MAX_ATTEMPTS):
         raise SceneError(f"attempts must be a whole number from 1 to {MAX_ATTEMPTS:,}, got "
                          f"{show(attempts)}", file=scene.file, where="exam.attempts")
-    ratio = raw.get("min_ratio", DEFAULTS["min_ratio"])
+    ratio = raw.get("min_ratio")
+    if ratio is None:       # the default, and more than a partial_factor the scene raised
+        f = raw.get("partial_factor", DEFAULTS["partial_factor"])
+        ratio = DEFAULTS["min_ratio"]
+        if isinstance(f, (int, float)) and not isinstance(f, bool) and f + 1 > ratio:
+            ratio = min(100, math.floor(f) + 1)
     if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) or not (
             2 <= ratio <= 100):
         raise SceneError(f"min_ratio must be a number from 2 to 100, got {show(ratio)}",
