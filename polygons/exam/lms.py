@@ -37,9 +37,9 @@ from .variants import Asked, ExamSet, Variant, convention, data_rows, one_line
 #: units as a learner types them (Moodle compares the unit text)
 ASCII_UNIT = {"m/s": "m/s", "m/s²": "m/s^2", "rad/s": "rad/s", "rad/s²": "rad/s^2"}
 ZIP_TIME = (1980, 1, 1, 0, 0, 0)
-#: the picture's caption: a screen shows it at no known scale, so it is not measured
-NOT_TO_SCALE = ("Space diagram not to scale: take every dimension from the data table and "
-                "draw at your own stated scale.")
+#: the picture's caption: a screen shows it at no known size (its scale bar grows with it)
+NOT_TO_SCALE = ("Space diagram not to scale on screen: measure against its scale bar, which "
+                "is resized with it, or take every dimension from the data table.")
 
 
 def number(x: float) -> str:
