@@ -31,7 +31,7 @@ def register(sub) -> None:
     from ..exam import MAX_VARIANTS
     p = sub.add_parser(
         "exam", help="seeded exam variants: Moodle XML, GIFT, QTI, key and worksheets",
-        description="Write N well-conditioned variants of a scene (its [exam] table says "
+        description="Write N well-posed variants of a scene (its [exam] table says "
                     "what varies and what is asked) as a Moodle XML quiz, GIFT, a QTI 1.2 "
                     "package, the teacher's key and one worksheet per variant or student. "
                     "The same seed gives the same files.")
