@@ -127,7 +127,7 @@ def test_ranges_that_cannot_give_n_variants_say_how_many_and_why(tmp_path):
 
 
 @pytest.mark.skipif(not os.environ.get("POLYGONS_EXAM_SEEDS"),
-                    reason="100 seeds × 40 variants of every shipped exam case (~3 min): set "
+                    reason="100 seeds × 40 variants of every shipped exam case (~6 min): set "
                            "POLYGONS_EXAM_SEEDS=1")
 def test_100_seeds_of_40_variants_have_no_noise_answer():
     """Issue 29's "done when": no noise answer and no sign asked on a near-zero quantity."""
