@@ -209,6 +209,44 @@ def _rule(sol, s: Step, start, end, vec, pole, diagram) -> Expected:
     return Expected(start, end, vec, rule, perp, along, s, coriolis, quantity, factor)
 
 
+# ---------------------------------------------------------------- tolerances
+DEFAULT_TOLERANCE = 0.02
+
+
+def emulated_tolerances(sol: Solution, trials: int = 400) -> dict[str, float]:
+    """{expression: relative tolerance}: the 95th percentile of a careful drawing's error from
+    the drawing-board emulation (:mod:`polygons.drawing_board`: pencil and rule ±0.25 mm,
+    protractor ±0.25°), at this case's crank angle; {} when the emulation does not cover the
+    case (a slider driver, or a dyad it does not draw).  Fixed seed, so the grading is
+    reproducible."""
+    from . import drawing_board
+    from .errors import UnsupportedError
+    from .scene import Crank
+    drv = sol.scene.driver
+    if not isinstance(drv, Crank):
+        return {}
+    try:
+        result = drawing_board.summary(drawing_board.emulate(sol.scene, [drv.angle],
+                                                             trials=trials, seed=1))
+    except UnsupportedError:  # a dyad the emulation does not draw: the stated ± % applies
+        return {}
+    out = {}
+    for q, stats in result.items():        # keyed by the typed quantity (scene.Quantity)
+        p95 = float(stats["p95"])
+        if math.isfinite(p95) and p95 > 0:
+            out[str(q)] = p95
+    return out
+
+
+def stated_tolerance(sol: Solution) -> float:
+    """The case's stated drawing tolerance (``[source] drawing_tolerance``, default 2 %)."""
+    from .units import parse_quantity
+    text = sol.scene.source.get("drawing_tolerance")
+    if text is None:
+        return DEFAULT_TOLERANCE
+    return parse_quantity(text, "fraction")
+
+
 # ---------------------------------------------------------------- the rules' data
 def _space_mm(sol: Solution) -> float:
     """Metres per mm of a 150 mm space diagram (the emulation's)."""
@@ -396,20 +434,13 @@ def grade_rules(R: dict, drawing: StudentDrawing) -> DrawingGrade:
     marks, ratio = _carry_forward(R, marks, k)
     need = {(e["start"], e["end"]) for e in R["expected"]}
     need |= {(b, a) for a, b in need}
-    extras = []
-    V = R["vertices"]
-    for a, b in drawn:
-        if (a, b) in need or a == b:
-            continue
-        vec = [V[b][0] - V[a][0], V[b][1] - V[a][1]]
-        if math.hypot(*vec) == 0:
-            continue
-        e = {"start": a, "end": b, "vector": vec, "line": False, "coriolis": False,
-             "centripetal": False, "centre": None, "perp_to": None, "along": None,
-             "rule": "the resultant" if a == R["pole"] else "by the polygon", "step": None,
-             "op": "", "rel": R["absolute"].get(b, R["stated"]) if a == R["pole"]
-             else R["stated"], "link_mm": None, "slips": [], "where": "not a step"}
-        extras.append(_mark(R, e, drawn, P, k))
+    # a vector the construction does not draw (the resultant o₂p₄ ...) joins two of the
+    # student's own vertices: carried forward, it is right whenever they are; not graded
+    N = R["names"]
+    extras = [VectorMark(a + b, N.get(a, a) + N.get(b, b), "joins two of your vertices", None,
+                         False, True, True, True, None, None, None, 0.0, None, 1.0, "", "",
+                         "not graded on its own")
+              for a, b in drawn if (a, b) not in need and a != b]
     closures = _closures(R, P, k)
     score = sum(m.mark for m in marks)
     return DrawingGrade(R["diagram"], drawing.scale_text, tuple(marks), tuple(extras),

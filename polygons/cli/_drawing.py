@@ -54,9 +54,9 @@ def report(sol, g, path: str) -> str:
                      f": {c.off_mm:.2f} mm from where its lines meet (± {c.tol_mm:.2f} mm)")
         if c.hint:
             lines.append(f"       hint: {c.hint}")
-    for m in g.extras:
-        lines.append(f"  {'ok ' if m.mark == 1 else 'OFF'}  {m.shown:<8} (also drawn: "
-                     f"{m.rule}) {m.problem}".rstrip())
+    if g.extras:
+        lines.append(f"  also drawn: {', '.join(m.shown for m in g.extras)} (joining your own "
+                     f"vertices: not graded on its own)")
     if g.unknown:
         lines.append(f"  not graded: vertices {', '.join(g.unknown)} are not in the "
                      f"construction (its vertices: "

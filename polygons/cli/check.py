@@ -412,34 +412,8 @@ def tolerance_for(sol: Solution, expr: str, expected: float, pct: float,
     return tol
 
 
-def emulated_tolerances(sol: Solution, trials: int = 400) -> dict[str, float]:
-    """{expression: relative tolerance}: the 95th percentile of a careful drawing's error from
-    the drawing-board emulation (:mod:`polygons.drawing_board`: pencil and rule ±0.25 mm,
-    protractor ±0.25°), at this case's crank angle; {} when the emulation does not cover the
-    case (a slider driver, or a dyad it does not draw).  Fixed seed, so the grading is reproducible."""
-    from .. import drawing_board
-    from ..scene import Crank
-    drv = sol.scene.driver
-    if not isinstance(drv, Crank):
-        return {}
-    try:
-        result = drawing_board.summary(drawing_board.emulate(sol.scene, [drv.angle],
-                                                             trials=trials, seed=1))
-    except UnsupportedError:  # a dyad the emulation does not draw: the stated ± % applies
-        return {}
-    out = {}
-    for q, stats in result.items():        # keyed by the typed quantity (scene.Quantity)
-        p95 = float(stats["p95"])
-        if math.isfinite(p95) and p95 > 0:
-            out[str(q)] = p95
-    return out
-
-
-def stated_tolerance(sol: Solution) -> float:
-    text = sol.scene.source.get("drawing_tolerance")
-    if text is None:
-        return DEFAULT_TOLERANCE
-    return parse_quantity(text, "fraction")
+# the tolerances of a careful drawing live with the drawing grader (the page uses them too)
+from ..grade_drawing import emulated_tolerances, stated_tolerance  # noqa: E402,F401
 
 
 def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
