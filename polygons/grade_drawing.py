@@ -547,7 +547,8 @@ def _carry_forward(R: dict, marks: list, k: float):
     """The first known vector of the wrong length sets a ratio r; a later known vector off by
     the same r (within :data:`SAME_RATIO`) is consistent with it and keeps its length mark.
     Returns the marks and r when at least two known vectors share it (else None)."""
-    known = [m for m in marks if not m.line and m.length_ok is not None]
+    known = [m for m in marks if not m.line and m.length_ok is not None
+             and m.length_err_pct is not None]
     first = next((m for m in known if m.length_ok is False), None)
     if first is None:
         return marks, None
@@ -555,6 +556,7 @@ def _carry_forward(R: dict, marks: list, k: float):
     out, shared = [], 0
     for m in marks:
         if (m is not first and not m.line and m.length_ok is False
+                and m.length_err_pct is not None and r != 0
                 and abs(_ratio(m) / r - 1.0) <= R["constants"]["same_ratio"]):
             shared += 1
             direction = m.direction_ok and m.sense_ok

@@ -49,3 +49,39 @@ def check(name: str, result: dict) -> None:
     assert result["unknown_vertices"] == want.get("unknown", [])
     assert result["all_ok"] == (name.endswith("-right") or all(
         m == 1 for m in want["marks"].values()) and not off), name
+
+
+def mangled(n: int, seed: int = 29):
+    """``n`` drawings made from the corpus by random slips of every kind at once (vertices
+    moved up to 40 mm, one set onto another, arrows dropped, reversed or doubled, the pole
+    called o): (name of the source drawing, StudentDrawing)."""
+    import random
+    from polygons.drawing_format import StudentDrawing, read_drawing
+    rng = random.Random(seed)
+    names = sorted(CORPUS)
+    out = []
+    for i in range(n):
+        name = names[i % len(names)]
+        d = read_drawing(str(DRAWINGS / CORPUS[name]["file"]))
+        V = {v: (x + rng.choice((0, 0, rng.uniform(-40, 40))),
+                 y + rng.choice((0, 0, rng.uniform(-40, 40)))) for v, (x, y) in d.vertices.items()}
+        keys = sorted(V)
+        if rng.random() < 0.2 and len(keys) > 1:
+            V[keys[1]] = V[keys[0]]                                # two vertices on one point
+        vecs = []
+        for a, b in d.vectors:
+            r = rng.random()
+            if r < 0.15:
+                continue
+            vecs.append((b, a) if r < 0.3 else (a, b))
+            if r > 0.9:
+                vecs.append((a, b))
+        if rng.random() < 0.2 and vecs:
+            vecs.append((vecs[0][1], vecs[-1][0]))
+        if rng.random() < 0.2:
+            pole = sorted(V)[0]
+            V = {("o" if v == pole else v): p for v, p in V.items()}
+            vecs = [tuple("o" if x == pole else x for x in ab) for ab in vecs]
+        out.append((name, StudentDrawing(d.diagram, d.scale, d.scale_text, V, tuple(vecs),
+                                         f"<mangled {i}>")))
+    return out

@@ -665,7 +665,7 @@ def test_page_grades_the_corpus_as_the_python_grader(tmp_path, session):
     corpus of typical errors (tests/data/drawings) exactly as `polygons check --drawing`:
     the same marks, problems, hints and notes, numbers to 1e-9, and the corpus's expected
     marks and feedback."""
-    from drawing_corpus import CORPUS, DRAWINGS, case_of, check
+    from drawing_corpus import CORPUS, DRAWINGS, case_of, check, mangled
     from polygons.cli._drawing import grade_json
     from polygons.cli.handout import write_page
     from polygons.drawing_format import read_drawing
@@ -686,6 +686,14 @@ def test_page_grades_the_corpus_as_the_python_grader(tmp_path, session):
                                   f"['{d.diagram}'].rules, {json.dumps(_drawing_data(d))})")
             _same(js, py, name)
             check(name, js)
+        for name, d in mangled(60):            # random slips of every kind at once
+            if case_of(name) != case:
+                continue
+            R = data["drawing"][d.diagram]["rules"]
+            js = session.evaluate(f"window.polygonsGrade.grade(JSON.parse(document."
+                                  f"getElementById('frames').textContent).drawing"
+                                  f"['{d.diagram}'].rules, {json.dumps(_drawing_data(d))})")
+            _same(js, grade_json(grade_rules(R, d)), d.file)
         assert not _console_errors(session)
 
 

@@ -256,3 +256,12 @@ def test_corpus_is_large_and_varied():
     assert any(f.endswith(".svg") for f in files) and any(f.endswith(".json") for f in files)
     assert {p.name for p in DRAWINGS.glob("*.json")} | {p.name for p in DRAWINGS.glob("*.svg")} \
         == set(files)
+
+
+def test_mangled_drawings_grade_without_error():
+    """Random slips of every kind at once: always a grade, marks 0, ½ or 1, no error."""
+    from drawing_corpus import mangled
+    for name, d in mangled(150):
+        sol, em, st = solved(case_of(name))
+        g = grade(sol, d, em, st)
+        assert all(m.mark in (0.0, 0.5, 1.0) for m in g.marks) and 0 <= g.score <= g.out_of

@@ -153,13 +153,15 @@
   }
 
   function carryForward(R, marks) {
-    var known = marks.filter(function (m) { return !m.line && m.length_ok !== null; });
+    var known = marks.filter(function (m) {
+      return !m.line && m.length_ok !== null && m.length_error_pct !== null;
+    });
     var first = known.filter(function (m) { return m.length_ok === false; })[0];
     if (!first) { return [marks, null]; }
     var r = 1.0 + first.length_error_pct / 100.0, shared = 0;
     var out = marks.map(function (m) {
-      if (m !== first && !m.line && m.length_ok === false &&
-          Math.abs((1.0 + m.length_error_pct / 100.0) / r - 1.0) <= R.constants.same_ratio) {
+      if (m !== first && !m.line && m.length_ok === false && m.length_error_pct !== null &&
+          r !== 0 && Math.abs((1.0 + m.length_error_pct / 100.0) / r - 1.0) <= R.constants.same_ratio) {
         shared += 1;
         var direction = m.direction_ok && m.sense_ok;
         var i = m.problem.indexOf('; length ');
