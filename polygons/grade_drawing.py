@@ -46,8 +46,8 @@ Tolerances come from the drawing-board emulation (:mod:`polygons.drawing_board`)
 * closure: :data:`FLOOR_MM` plus each line's protractor error over its length, divided by the
   sine of the angle at which the lines cross.
 
-Not yet carried forward: an image vertex (similar triangles) is graded against the true
-image at the stated scale, not against the student's own triangle.
+An image vertex (similar triangles) is graded against the image of the student's own two
+vertices of that link (the triangle's complex ratio, :func:`rules`), carried forward too.
 """
 from __future__ import annotations
 
@@ -319,7 +319,20 @@ def rules(sol: Solution, diagram: str, emulated: dict | None = None,
     out = []
     for e in expected_vectors(sol, diagram):
         line = e.step.kind == Kind.LINE or e.step.op == Op.JOIN
-        out.append({
+        image = None
+        if e.step.kind == Kind.IMAGE and len(e.step.args) >= 4:
+            # an image vertex: start + z·(q − start), z the complex ratio of the link's
+            # triangle (similar, turned with the link): carried forward from the student's
+            # own start and q
+            q = sol.vertex_of(e.step.args[2])
+            base = (verts[q][0] - verts[e.start][0], verts[q][1] - verts[e.start][1]) \
+                if q in verts else (0.0, 0.0)
+            n2 = base[0] ** 2 + base[1] ** 2
+            if n2 > 0 and q != e.start:
+                z = ((e.vector[0] * base[0] + e.vector[1] * base[1]) / n2,
+                     (e.vector[1] * base[0] - e.vector[0] * base[1]) / n2)
+                image = {"base": q, "z": list(z)}
+        out.append({"image": image,
             "start": e.start, "end": e.end, "vector": list(e.vector),
             "rule": vertices_in(e.rule, names), "perp_to": e.perp_to, "along": e.along,
             "step": e.step.number, "op": str(e.step.op), "line": line, "coriolis": e.coriolis,
@@ -454,7 +467,15 @@ def _fmt(x: float, d: int = 1) -> str:
 def _mark(R: dict, e: dict, drawn, P, k) -> VectorMark:
     N = R["names"]
     name, shown = e["start"] + e["end"], N.get(e["start"], e["start"]) + N.get(e["end"], e["end"])
-    true_mm = math.hypot(*e["vector"]) / k
+    im = e.get("image")
+    if im and im["base"] in P and e["start"] in P:
+        # carried forward: the image of the student's own start → base, by the link's ratio
+        b = (P[im["base"]][0] - P[e["start"]][0], P[im["base"]][1] - P[e["start"]][1])
+        z = im["z"]
+        ev = (z[0] * b[0] - z[1] * b[1], z[0] * b[1] + z[1] * b[0])        # mm
+    else:
+        ev = (e["vector"][0] / k, e["vector"][1] / k)
+    true_mm = math.hypot(*ev)
     len_tol_mm = max(e["rel"] * true_mm, R["constants"]["floor_mm"])
     where, rule, line = e["where"], e["rule"], e["line"]
     back = (e["end"], e["start"]) in drawn
@@ -462,7 +483,7 @@ def _mark(R: dict, e: dict, drawn, P, k) -> VectorMark:
     if (e["start"], e["end"]) not in drawn:
         if back and line:
             # a line has no sense of its own: the arrow may run either way along it
-            flipped = dict(e, start=e["end"], end=e["start"],
+            flipped = dict(e, start=e["end"], end=e["start"], image=None,
                            vector=[-e["vector"][0], -e["vector"][1]])
             return _mark(R, flipped, drawn, P, k)
         if back:
@@ -485,13 +506,13 @@ def _mark(R: dict, e: dict, drawn, P, k) -> VectorMark:
                           length_ok=False, angle_err_deg=None, length_err_pct=None,
                           direction_tol_deg=dtol, length_tol_pct=None, mark=0.0,
                           problem="drawn with no length", hint=f"{shown} must be {rule} ({where})")
-    err = _angle(e["vector"], s)
+    err = _angle(ev, s)
     if line and abs(err) > 90.0:        # a line: either sense along it
         err = err - 180.0 if err > 0 else err + 180.0
     dir_ok = within(err, dtol, 1)
     sense_ok = line or not within(abs(err) - 180.0, dtol, 1)
     drawn_at = f"drawn towards {_fmt(_heading(s))}°"
-    right_at = f"{_fmt(_heading(e['vector']))}°"
+    right_at = f"{_fmt(_heading(ev))}°"
     problem = hint = ""
     if not sense_ok:
         if e["coriolis"]:

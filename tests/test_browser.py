@@ -695,6 +695,38 @@ def test_page_grades_the_corpus_as_the_python_grader(tmp_path, session):
                                   f"['{d.diagram}'].rules, {json.dumps(_drawing_data(d))})")
             _same(js, grade_json(grade_rules(R, d)), d.file)
         assert not _console_errors(session)
+    # an image vertex (bce similar to BCE) carried forward: a case with coupler points
+    import importlib.util
+    from polygons.drawing_format import StudentDrawing
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
+    spec = importlib.util.spec_from_file_location("make_corpus", DRAWINGS / "make_corpus.py")
+    mk = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mk)
+    case = CASES / "forces-actuator-four-bar.toml"
+    sol = solve(load_scene(case))
+    page = write_page(str(case), tmp_path / "four-bar.html")
+    data = _page_data(page.read_text(encoding="utf-8"))
+    session.open(page)
+    for diagram in ("velocity", "acceleration"):
+        steps = [st for st in sol.steps if st.diagram == diagram]
+        R = data["drawing"][diagram]["rules"]
+        assert any(e["image"] for e in R["expected"])
+        k = data["drawing"][diagram]["si_per_mm"]
+        for mods in ({}, {st.number: {"scale": 0.9, "turn": 3.0} for st in steps
+                          if st.kind == "vector"}):
+            P = mk.replay(sol, diagram, mods)
+            d = StudentDrawing(diagram, k, "1 mm", {v: (p[0] / k + 50, p[1] / k + 40)
+                                                    for v, p in P.items()},
+                               tuple((e["start"], e["end"]) for e in R["expected"]), "<four-bar>")
+            js = session.evaluate(f"window.polygonsGrade.grade(JSON.parse(document."
+                                  f"getElementById('frames').textContent).drawing"
+                                  f"['{diagram}'].rules, {json.dumps(_drawing_data(d))})")
+            py = grade_json(grade_rules(R, d))
+            _same(js, py, f"four-bar {diagram} {bool(mods)}")
+            images = [v for v, e in zip(py["vectors"], R["expected"]) if e["image"]]
+            assert images and all(v["mark"] == 1 for v in images)
+    assert not _console_errors(session)
 
 
 @needs_chromium

@@ -265,3 +265,33 @@ def test_mangled_drawings_grade_without_error():
         sol, em, st = solved(case_of(name))
         g = grade(sol, d, em, st)
         assert all(m.mark in (0.0, 0.5, 1.0) for m in g.marks) and 0 <= g.score <= g.out_of
+
+
+def _replay():
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("make_corpus", DRAWINGS / "make_corpus.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod.replay
+
+
+@pytest.mark.parametrize("diagram", ["velocity", "acceleration"])
+def test_an_image_vertex_is_carried_forward(diagram):
+    """A coupler point found by its image (bce similar to BCE): with the crank's vector drawn
+    0.955× (ω = N/10), b and c move and e with them; e is graded on the student's own b and c,
+    so the slip costs the crank's vector only."""
+    sol, em, st = solved(CASES / "forces-actuator-four-bar.toml")
+    steps = [s for s in sol.steps if s.diagram == diagram]
+    assert any(s.kind == "image" for s in steps)
+    first = next(s for s in steps if s.kind == "vector")
+    k = _scale(sol, diagram)
+    mods = {first.number: {"scale": 3 / math.pi}}
+    if diagram == "acceleration":       # every known acceleration vector scales with ω²
+        mods = {s.number: {"scale": (3 / math.pi) ** 2} for s in steps if s.kind == "vector"}
+    P = _replay()(sol, diagram, mods)
+    g = grade(sol, _drawing(sol, diagram, P, k), em, st)
+    images = [m for m in g.marks if next(s for s in steps if s.number == m.step).kind == "image"]
+    assert images and all(m.mark == 1 and m.problem == "" for m in images)
+    assert g.score == g.out_of - 0.5, [(m.name, m.mark, m.problem) for m in g.marks]
+    truth = grade(sol, _drawing(sol, diagram, sol.vertices[diagram], k, 7), em, st)
+    assert truth.ok

@@ -61,14 +61,22 @@
   function mark(R, e, drawn, P, k) {
     var N = R.names;
     var name = e.start + e.end, shown = (N[e.start] || e.start) + (N[e.end] || e.end);
-    var trueMm = hypot(e.vector[0], e.vector[1]) / k;
+    var im = e.image, ev;
+    if (im && P[im.base] && P[e.start]) {
+      // carried forward: the image of the student's own start → base, by the link's ratio
+      var bb = [P[im.base][0] - P[e.start][0], P[im.base][1] - P[e.start][1]], z = im.z;
+      ev = [z[0] * bb[0] - z[1] * bb[1], z[0] * bb[1] + z[1] * bb[0]];
+    } else {
+      ev = [e.vector[0] / k, e.vector[1] / k];
+    }
+    var trueMm = hypot(ev[0], ev[1]);
     var lenTolMm = Math.max(e.rel * trueMm, R.constants.floor_mm);
     var where = e.where, rule = e.rule, line = e.line;
     var back = has(drawn, e.end, e.start);
     var base = {name: name, shown: shown, rule: rule, step: e.step, line: line};
     if (!has(drawn, e.start, e.end)) {
       if (back && line) {
-        var flipped = Object.assign({}, e, {start: e.end, end: e.start,
+        var flipped = Object.assign({}, e, {start: e.end, end: e.start, image: null,
                                             vector: [-e.vector[0], -e.vector[1]]});
         return mark(R, flipped, drawn, P, k);
       }
@@ -93,12 +101,12 @@
         length_tolerance_pct: null, mark: 0.0, problem: 'drawn with no length',
         hint: shown + ' must be ' + rule + ' (' + where + ')'});
     }
-    var err = angle(e.vector, s);
+    var err = angle(ev, s);
     if (line && Math.abs(err) > 90.0) { err = err > 0 ? err - 180.0 : err + 180.0; }
     var dirOk = within(err, dtol, 1);
     var senseOk = line || !within(Math.abs(err) - 180.0, dtol, 1);
     var drawnAt = 'drawn towards ' + fixed(heading(s), 1) + '°';
-    var rightAt = fixed(heading(e.vector), 1) + '°';
+    var rightAt = fixed(heading(ev), 1) + '°';
     var problem = '', hint = '';
     if (!senseOk) {
       if (e.coriolis) {

@@ -48,7 +48,17 @@ def replay(sol, diagram, mods):
     lines = {}
     for s in (s for s in sol.steps if s.diagram == diagram):
         m = mods.get(s.number, {})
-        if s.kind in (Kind.VECTOR, Kind.IMAGE) and s.start and s.end and s.end not in P:
+        if s.kind == Kind.IMAGE and s.end not in P and len(s.args) >= 4:
+            # the student's own triangle: start + z·(base − start), z the link's ratio
+            q = sol.vertex_of(s.args[2])
+            t = (V[s.end][0] - V[s.start][0], V[s.end][1] - V[s.start][1])
+            b = (V[q][0] - V[s.start][0], V[q][1] - V[s.start][1])
+            n2 = b[0] ** 2 + b[1] ** 2
+            z = ((t[0] * b[0] + t[1] * b[1]) / n2, (t[1] * b[0] - t[0] * b[1]) / n2)
+            o = (P[q][0] - P[s.start][0], P[q][1] - P[s.start][1])
+            P[s.end] = (P[s.start][0] + z[0] * o[0] - z[1] * o[1],
+                        P[s.start][1] + z[0] * o[1] + z[1] * o[0])
+        elif s.kind == Kind.VECTOR and s.start and s.end and s.end not in P:
             v = (V[s.end][0] - V[s.start][0], V[s.end][1] - V[s.start][1])
             v = _rot(v, m.get("turn", 0.0))
             r = m.get("scale", 1.0)
