@@ -540,7 +540,9 @@ def _mark(R: dict, e: dict, drawn, P, k) -> VectorMark:
                           direction_tol_deg=dtol, length_tol_pct=None,
                           mark=1.0 if dir_ok else 0.0, problem=problem, hint=hint)
     len_err = (s_mm - true_mm) / true_mm * 100.0
-    len_ok = within(s_mm - true_mm, len_tol_mm, 1)
+    # inside when either way it is shown (mm in the problem, % in the report) says so
+    len_ok = within(s_mm - true_mm, len_tol_mm, 1) or within(len_err, len_tol_mm / true_mm
+                                                             * 100.0, 1)
     if not len_ok:
         ratio = s_mm / true_mm
         fits = sorted((abs(s_mm - r * true_mm), w) for r, w in e["slips"]

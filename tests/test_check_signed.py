@@ -47,3 +47,10 @@ def test_no_sign_grades_the_magnitude_and_says_so(capsys):
 def test_json_says_what_was_graded(capsys, value, graded):
     rc, out = _run(capsys, value, as_json=True)
     assert json.loads(out)["grades"][0]["graded"] == graded
+
+
+def test_an_angular_velocity_without_a_sense_says_so(capsys):
+    rc, out = _run(capsys, "omega_AB=1")
+    assert "magnitude only: no sense was written" in out
+    rc, out = _run(capsys, "omega_AB=1CW")
+    assert "magnitude only" not in out

@@ -138,7 +138,8 @@
         length_tolerance_pct: null, mark: dirOk ? 1.0 : 0.0, problem: problem, hint: hint});
     }
     var lenErr = (sMm - trueMm) / trueMm * 100.0;
-    var lenOk = within(sMm - trueMm, lenTolMm, 1);
+    // inside when either way it is shown (mm in the problem, % in the report) says so
+    var lenOk = within(sMm - trueMm, lenTolMm, 1) || within(lenErr, lenTolMm / trueMm * 100.0, 1);
     if (!lenOk) {
       var ratio = sMm / trueMm;
       var fits = e.slips.filter(function (rw) {

@@ -581,14 +581,18 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
             lines.append(f"       the sense is wrong: {_slide_words(sol, g.expr, g.expected)}")
         elif g.sense_ok is False:
             lines.append(f"       the sense is wrong: it turns{_sense(g.expected)}")
-        if fn in ("vs", "as") and g.sense_given is None and g.expected != 0:
-            lines.append(f"       magnitude only: no sign was written, so its sense is not "
-                         f"graded; {g.name} is signed, {_slide_words(sol, g.expr, g.expected)}"
-                         f" (write {_num(abs(g.measured))} with + or - to have it graded)")
         if g.hint:
             lines.append(f"       hint: {g.hint}")
         if g.tutorial_note:
             lines.append(f"       note: {g.tutorial_note}")
+        if fn in ("omega", "alpha") and g.sense_ok is None and g.expected != 0:
+            lines.append(f"       magnitude only: no sense was written, so it is not graded "
+                         f"(write {_num(abs(g.measured))}CW or CCW, or a negative value for "
+                         f"CW, to have it graded)")
+        if fn in ("vs", "as") and g.sense_given is None and g.expected != 0:
+            lines.append(f"       magnitude only: no sign was written, so its sense is not "
+                         f"graded; {g.name} is signed, {_slide_words(sol, g.expr, g.expected)}"
+                         f" (write {_num(abs(g.measured))} with + or - to have it graded)")
     off = [g for g in grades if not g.ok]
     lines.append("")
     lines.append(f"{len(grades) - len(off)} of {len(grades)} within tolerance"
