@@ -25,6 +25,9 @@ from polygons.report import sense
 
 from .html import esc, inline_svg, svg_size, sym
 
+#: the command a handout's force sections run for (named in a refusal)
+HANDOUT = "polygons handout"
+
 #: printed width available to a figure, mm (the portrait page's text width)
 WIDTH_MM = 180.0
 
@@ -57,7 +60,7 @@ def check(sol):
             raise _refused("turning_moment", e, sol.scene.file) from None
         if not (polys or lever):
             from polygons.forces import analyse
-            return analyse(sol.scene)
+            return analyse(sol.scene, method=HANDOUT)
     if not (polys or lever):
         return None
     from polygons.forces import analyse, has_forces, graphical, zhukovsky
@@ -72,7 +75,7 @@ def check(sol):
             graphical.groups_of(scene)
         except UnsupportedError as e:
             raise _refused("force_polygons", e, scene.file) from None
-    an = analyse(scene)
+    an = analyse(scene, method=HANDOUT)
     for st in an.states:
         if polys:
             try:
@@ -301,7 +304,7 @@ def _cycle(sol):
     if "turning_moment" not in memo:
         from polygons.forces.analysis import load_model
         from polygons.forces.cycle import turning_moment
-        memo["turning_moment"] = turning_moment(load_model(sol.scene), sol.scene,
+        memo["turning_moment"] = turning_moment(load_model(sol.scene, HANDOUT), sol.scene,
                                                 CYCLE_ANGLES)
     return memo["turning_moment"]
 

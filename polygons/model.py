@@ -321,17 +321,26 @@ def refuse(method: str, kind: str, where: str = "", file: str | None = None
                             file=file)
 
 
+def unhandled(handles: frozenset[str], model: Mechanism) -> tuple[str, str] | None:
+    """The first (kind, where) of a body or pair of ``model`` outside ``handles``, or None."""
+    for b in model.bodies:
+        if b.kind not in handles:
+            return b.kind, b.name
+    for p in model.turning + model.sliding:
+        if p.kind not in handles:
+            return p.kind, getattr(p, "label", None) or p.at
+    return None
+
+
 def check_handles(method: str, handles: frozenset[str], model: Mechanism,
                   file: str | None = None) -> None:
     """Refuse, in one line naming ``method`` and the kind, a mechanism holding a kind of body
-    or pair that ``method`` does not declare in ``handles`` (its ``HANDLES``)."""
-    for b in model.bodies:
-        if b.kind not in handles:
-            raise refuse(method, b.kind, b.name, file)
-    for p in model.turning + model.sliding:
-        if p.kind not in handles:
-            raise refuse(method, p.kind, getattr(p, "label", None) or p.at, file)
+    or pair that ``method`` does not declare in ``handles`` (its ``HANDLES``).  ``method`` is
+    what the user ran ('polygons forces', 'polygons solve', 'the space diagram')."""
+    found = unhandled(handles, model)
+    if found is not None:
+        raise refuse(method, *found, file)
 
 
 __all__ = ["BODY_KINDS", "PAIR_KINDS", "FRAME", "Body", "Turning", "SlideLine", "Sliding",
-           "Mechanism", "build", "refuse", "check_handles", "KIND_WORDS", "BUILT"]
+           "Mechanism", "build", "refuse", "check_handles", "unhandled", "KIND_WORDS", "BUILT"]

@@ -175,7 +175,7 @@ def force_analysis(sol: Solution):
             raise MeasuredError("a force answer needs the scene's loads ([masses], [forces], "
                                 "[torques] or [springs]): this case has none",
                                 file=sol.scene.file)
-        memo["force_analysis"] = analyse(sol.scene)
+        memo["force_analysis"] = analyse(sol.scene, method="polygons check")
     return memo["force_analysis"]
 
 
