@@ -252,9 +252,7 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
                       effort=None)
     r = _Values(file)
     active = has_loads(ex)
-    # a kind the force analysis does not handle is refused by the command that asks for the
-    # forces, in its own name (polygons.forces.analysis.load_model), not here at load: the
-    # other methods (centres, sweep, check) take the scene, its masses unused
+    # an unhandled kind is refused by the command asking for forces (forces.analysis)
     handled = unhandled(HANDLES, scene.model) is None
     reversed_names = {b.b + b.a: n for n, b in bodies.items() if b.kind == "link"}
 

@@ -19,7 +19,9 @@ WHERE = {
     "polygons.scene": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
-    "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
+    "polygons.grade_drawing": "interpreters", "polygons.tolerances": "interpreters",
+    # the exam's variants and their keys: a library below the commands (polygons.cli.exam)
+    "polygons.exam": "render",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
     "polygons.loadeffort": "scene",
     # the mechanism model: the joint tables read once into bodies and pairs, the last step of
@@ -72,6 +74,16 @@ def test_imports_go_downward_only(mod):
     up = sorted(n for n in GRAPH[mod] if n in GRAPH and n != "polygons"
                 and LAYERS.index(layer_of(n)) > mine)
     assert up == [], f"{mod} ({layer_of(mod)}) imports higher layers: {up}"
+
+
+def test_only_the_entry_points_import_the_command_line():
+    """polygons.cli is the top: a library module (the exam's variants, once) reaching up into
+    a command for a helper is a back arrow.  polygons.api sits beside it (commands) and reads
+    the forces' JSON of `polygons forces --json` from it."""
+    users = sorted(m for m in MODULES if not m.startswith("polygons.cli")
+                   and any(n == "polygons.cli" or n.startswith("polygons.cli.")
+                           for n in GRAPH[m]))
+    assert users == ["polygons.__main__", "polygons.api"]
 
 
 def test_the_solver_core_never_imports_diagrams():

@@ -32,15 +32,18 @@ import math
 import re
 from dataclasses import dataclass
 
-from ..errors import UnsupportedError, PolygonsError, SceneError
+from ..errors import PolygonsError, SceneError
 from ..evaluate import Solution, link_ends, solve
 from ..plan import Step
 from ..notation import vertices_in
-from ..quantities import dimension_of_quantity, drawn_on_polygon, quantity
+from ..quantities import dimension_of_quantity, quantity
 from ..scene import load_scene
 from ..units import parse_quantity
 from ._output import add_out_option, emit
 from ..steps import sense as sense_word
+# the tolerances a measured value is graded against (shared with the exam's keys)
+from ..tolerances import (DEFAULT_TOLERANCE, READING_MM, emulated_tolerances,  # noqa: F401
+                          stated_tolerance, tolerance_for)
 
 #: textbook prefix -> quantities function
 PREFIX = {"v": "v", "a": "a", "omega": "omega", "w": "omega", "alpha": "alpha", "an": "an",
@@ -52,8 +55,6 @@ UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
         "angular_acceleration": "rad/s²", "force": "N", "torque": "N m", "angle": "rad",
         "fraction": "", "length": "m", "energy": "J"}
 SIGNED = ("omega", "alpha", "vs", "as")
-DEFAULT_TOLERANCE = 0.02
-READING_MM = 0.5
 
 _VALUE = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
@@ -390,50 +391,6 @@ def diagram_scales(sol: Solution, forced: dict | None = None) -> dict:
             xs, ys = [p[0] for p in pts], [p[1] for p in pts]
             out[d] = scales.choose(d, (max(xs) - min(xs), max(ys) - min(ys)))
     return out
-
-
-def tolerance_for(sol: Solution, expr: str, expected: float, pct: float,
-                  scales: dict) -> float:
-    tol = pct * abs(expected)
-    diagram, drawn = drawn_on_polygon(sol, expr, expected)
-    sc = scales.get(diagram)
-    if sc is not None:
-        reading = READING_MM / sc.mm_per_si          # SI value of 0.5 mm of paper
-        if drawn > 0:
-            tol = max(tol, reading * abs(expected) / drawn)
-        else:
-            tol = max(tol, reading)
-    return tol
-
-
-def emulated_tolerances(sol: Solution, trials: int = 400) -> dict[str, float]:
-    """{expression: relative tolerance}: the 95th percentile of a careful drawing's error from
-    the drawing-board emulation (:mod:`polygons.drawing_board`: pencil and rule ±0.25 mm,
-    protractor ±0.25°), at this case's crank angle; {} when the emulation does not cover the
-    case (a slider driver, or a dyad it does not draw).  Fixed seed, so the grading is reproducible."""
-    from .. import drawing_board
-    from ..scene import Crank
-    drv = sol.scene.driver
-    if not isinstance(drv, Crank):
-        return {}
-    try:
-        result = drawing_board.summary(drawing_board.emulate(sol.scene, [drv.angle],
-                                                             trials=trials, seed=1))
-    except UnsupportedError:  # a dyad the emulation does not draw: the stated ± % applies
-        return {}
-    out = {}
-    for q, stats in result.items():        # keyed by the typed quantity (scene.Quantity)
-        p95 = float(stats["p95"])
-        if math.isfinite(p95) and p95 > 0:
-            out[str(q)] = p95
-    return out
-
-
-def stated_tolerance(sol: Solution) -> float:
-    text = sol.scene.source.get("drawing_tolerance")
-    if text is None:
-        return DEFAULT_TOLERANCE
-    return parse_quantity(text, "fraction")
 
 
 def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
