@@ -128,3 +128,38 @@ def test_no_import_cycle():
 def test_no_module_over_800_lines(mod, path):
     n = len(path.read_text(encoding="utf-8").splitlines())
     assert n <= 800, f"{mod}: {n} lines"
+
+
+# ---------------------------------------------------------------- groups own their methods
+def _group_kinds() -> set[str]:
+    from polygons import dyads
+    return {n for n in dyads.__all__ if isinstance(getattr(dyads, n), type)}
+
+
+def test_no_isinstance_on_a_group_kind_outside_the_groups():
+    """What differs by kind is the group's own (a method, or a name it gives a table):
+    nobody outside polygons/dyads/ asks a group what class it is."""
+    import ast
+    kinds = _group_kinds()
+    found = []
+    for mod, path in module_files().items():
+        if mod.startswith("polygons.dyads"):
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "isinstance"
+                    and len(node.args) == 2):
+                names = {getattr(n, "id", None) or getattr(n, "attr", None)
+                         for n in ast.walk(node.args[1])}
+                if names & kinds:
+                    found.append(f"{mod}:{node.lineno}")
+    assert found == []
+
+
+def test_each_group_names_a_force_polygon_the_construction_has():
+    """A group kind's ``force_polygon`` is a key of forces.graphical.POLYGONS (or None: no
+    body of its own); a kind without one is refused by construction."""
+    from polygons import dyads
+    from polygons.forces.graphical import POLYGONS
+    named = {n: getattr(getattr(dyads, n), "force_polygon", "—") for n in _group_kinds()}
+    assert {n: k for n, k in named.items() if k not in POLYGONS and k not in (None, "—")} == {}
+    assert set(POLYGONS) == {k for k in named.values() if k not in (None, "—")}

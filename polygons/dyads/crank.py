@@ -24,6 +24,14 @@ class CrankDyad:
     tangential: bool = False
     two_closures = False
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "crank"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.link,)
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.tip,)

@@ -40,6 +40,14 @@ class Guided:
     coincident: str
     two_closures = True
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RRP, moving guide"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.link,)
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.x, self.coincident)

@@ -23,6 +23,14 @@ class Image:
     q: str
     two_closures = False
 
+    #: its force polygon: none of its own (a point on a link placed before: the loads
+    #: there act on that link, in its group)
+    force_polygon = None
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """No body: its point rides on a link another group closes."""
+        return ()
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.x,)

@@ -22,6 +22,14 @@ class RPP:
     x: str
     two_closures = False
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RPP"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.x,)
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.x,)

@@ -37,6 +37,14 @@ class RPR:
     offset: bool = False
     two_closures = False
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RPR"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.lever,)
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.coincident,) + ((self.far,) if self.far else ())

@@ -24,6 +24,14 @@ class RRR:
     link_q: str
     two_closures = True
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RRR"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.link_p, self.link_q)
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.x,)

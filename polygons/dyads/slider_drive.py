@@ -18,6 +18,14 @@ class SliderDriveDyad:
     point: str
     two_closures = False
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "slider driver"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.point,)
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.point,)

@@ -53,6 +53,15 @@ class Triad:
     two_closures = False
     many_closures = True
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "triad"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (((self.plate,) if self.ternary else tuple(self.plate_links))
+                + (self.link_b, self.link_c, self.link_x))
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.b, self.c, self.x, self.s)
