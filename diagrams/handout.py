@@ -246,9 +246,9 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
     for lab, p in scene.ground.items():
         rows.append((f"fixed point {lab}", f"({_g(p[0] * 1000)}, {_g(p[1] * 1000)}) mm"))
     drv = scene.driver
-    for name, ln in scene.links.items():
+    for ln in scene.model.links():
         if ln.length is not None:
-            rows.append((f"link {name}", _fmt_len(ln.length)))
+            rows.append((f"link {ln.name}", _fmt_len(ln.length)))
     model = scene.model
     for pin, slot in model.slot.items():
         lever, pivot = slot.carrier, slot.line.origin
@@ -277,7 +277,7 @@ def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
                      for p, a, d in wheel_of(scene, lab).rim]
             continue
         rows.append((f"slider {lab}", txt))
-    for lab, bp in scene.points.items():
+    for lab, bp in scene.model.points.items():
         if bp.along is not None:
             where = f"{_fmt_len(bp.along)} along {bp.link}"
         else:

@@ -28,7 +28,7 @@ not handle refuses it in one line naming both (:func:`refuse`).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
@@ -161,9 +161,26 @@ class Mechanism:
     slot: Mapping[str, Sliding]                # pin → its block's pair in a lever's slot
     collar: Mapping[str, Sliding]              # point → its collar's prescribed slide
     under: Mapping[str, Sliding]               # a carrier's point under a block → its pair
+    #: label → the [points] record of a point rigid with a body (its ``link``, ``along`` or
+    #: ``fraction``, ``left``), in the scene's order
+    points: Mapping[str, object] = field(default_factory=lambda: MappingProxyType({}))
+    #: point → its [driver.slide] record (the second input: its link, ends ``p`` → ``q`` and
+    #: the slide's ``position``, ``velocity``, ``acceleration``)
+    prescribed: Mapping[str, object] = field(default_factory=lambda: MappingProxyType({}))
 
     def body(self, name: str) -> Body:
         return self.named[name]
+
+    def links(self) -> tuple[Body, ...]:
+        """The [links] entries as bodies (kind 'link': ``a``, ``b``, ``length`` — None for a
+        slotted lever without one), in the scene's order: the lengths as loaded (a batch's
+        varied lengths are the scene's own, read by the groups)."""
+        return tuple(b for b in self.bodies if b.kind == "link")
+
+    def link(self, name: str) -> Body | None:
+        """The [links] entry ``name`` as a body, or None."""
+        b = self.named.get(name)
+        return b if b is not None and b.kind == "link" else None
 
     @property
     def moving(self) -> tuple[Body, ...]:
@@ -295,7 +312,8 @@ def build(*, ground, links, sliders, slots, points, prescribed, driver, crossing
                      MappingProxyType({b.name: b for b in bodies}),
                      by(lambda s: s.carrier == FRAME), by(lambda s: s.key.startswith("slots.")),
                      by(lambda s: s.prescribed),
-                     MappingProxyType({s.coincident: s for s in sliding if s.coincident}))
+                     MappingProxyType({s.coincident: s for s in sliding if s.coincident}),
+                     MappingProxyType(dict(points)), MappingProxyType(dict(prescribed)))
 
 
 # ---------------------------------------------------------------- capabilities

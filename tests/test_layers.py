@@ -163,3 +163,33 @@ def test_each_group_names_a_force_polygon_the_construction_has():
     named = {n: getattr(getattr(dyads, n), "force_polygon", "—") for n in _group_kinds()}
     assert {n: k for n, k in named.items() if k not in POLYGONS and k not in (None, "—")} == {}
     assert set(POLYGONS) == {k for k in named.values() if k not in (None, "—")}
+
+
+# ---------------------------------------------------------------- one reader of the joint tables
+#: the scene's joint tables ([links], [sliders], [slots], [points], [crossing], [driver.slide])
+JOINT_TABLES = {"links", "sliders", "slots", "points", "crossing", "prescribed"}
+#: who still reads them outside the groups and the model, and why: the planner's topology
+#: (the groups' own helpers), mobility (a redundant link's stated length, varied by a batch),
+#: the batch (it writes varied tables) and the sweep's range of a slider driver
+TABLE_READERS = {"polygons.topology", "polygons.mobility", "polygons.batch", "polygons.sweep"}
+
+
+def _joint_table_readers() -> set[str]:
+    import ast
+    out = set()
+    for mod, path in module_files().items():
+        if mod.startswith("polygons.dyads") or mod == "polygons.model":
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Attribute) and node.attr in JOINT_TABLES:
+                v = node.value
+                if getattr(v, "id", None) == "scene" or getattr(v, "attr", None) == "scene":
+                    out.add(mod)
+    return out
+
+
+def test_only_the_model_and_the_groups_read_the_joint_tables():
+    """Everything else reads the mechanism model (polygons.model): at most four modules
+    outside polygons/dyads/ read scene.links, scene.sliders, scene.slots... directly."""
+    readers = _joint_table_readers()
+    assert readers <= TABLE_READERS and len(readers) <= 4, sorted(readers)

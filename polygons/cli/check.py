@@ -124,7 +124,7 @@ def offered(sol: Solution) -> list[tuple[str, str]]:
     for name in sol.links:
         a, b = link_ends(scene, name)
         pairs.append((b, a))
-    for bp in scene.points.values():
+    for bp in scene.model.points.values():
         if bp.link in sol.links:
             a, _ = link_ends(scene, bp.link)
             pairs.append((bp.label, a))

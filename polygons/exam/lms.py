@@ -60,9 +60,9 @@ def data_html(v: Variant) -> str:
     """The variant's data as an HTML list (every value from the scene, escaped)."""
     scene = v.scene
     rows = []
-    for name, link in scene.links.items():
+    for link in scene.model.links():
         if link.length is not None:
-            rows.append(f"{name} = {link.length * 1000:g} mm")
+            rows.append(f"{link.name} = {link.length * 1000:g} mm")
     drv = scene.driver
     if hasattr(drv, "pivot"):
         rows.append(f"crank {drv.link} at {math.degrees(drv.angle):g}° from +x (CCW), "
