@@ -54,8 +54,8 @@ class CrankDyad:
         (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
         r = g.param(lambda s: s.links[self.link].length)
         px, py = g.pos(self.pivot)
-        c, s_ = g.let(f"cos({g.x})"), g.let(f"sin({g.x})")
-        g.place(self.tip, g.let(f"{px} + {r} * {c}"), g.let(f"{py} + {r} * {s_}"))
+        c, s_ = g.let("cos({})", g.x), g.let("sin({})", g.x)
+        g.place(self.tip, g.let("{} + {} * {}", px, r, c), g.let("{} + {} * {}", py, r, s_))
 
     def why_not(self, scene, pos) -> str:
         return ""

@@ -79,17 +79,17 @@ class Guided:
         e = BQ/|BQ|, through = B + d perp(e), X on the circle |PX| = L and the line
         through + t e (closure σ), X1 = X."""
         (bx, by), (qx, qy) = g.pos(self.pivot), g.pos(self.far)
-        dx, dy = g.let(f"{qx} - {bx}"), g.let(f"{qy} - {by}")
-        n = g.let(f"hypot_p({dx}, {dy})")
-        ex, ey = g.let(f"{dx} / {n}"), g.let(f"{dy} / {n}")
+        dx, dy = g.let("{} - {}", qx, bx), g.let("{} - {}", qy, by)
+        n = g.let("hypot_p({}, {})", dx, dy)
+        ex, ey = g.let("{} / {}", dx, n), g.let("{} / {}", dy, n)
         off = g.param(lambda s: s.slots[self.x].offset)
-        tx, ty = g.let(f"{bx} + {off} * -{ey}"), g.let(f"{by} + {off} * {ex}")
+        tx, ty = g.let("{} + {} * -{}", bx, off, ey), g.let("{} + {} * {}", by, off, ex)
         L = g.param(lambda s: s.links[self.link].length)
         x, y, m = g.call(circle_line_scalar, *g.pos(self.p), L, tx, ty, ex, ey,
                          g.sigma(self.x), n=3)
         # a stated slot length is refused (see why_not): the flag is -1 then, else +1
         ok = g.param(lambda s: 1.0 if s.slots[self.x].length is None else -1.0)
-        g.margin(g.let(f"where({ok} > 0.0, {m}, -1.0)"))
+        g.margin(g.let("where({} > 0.0, {}, -1.0)", ok, m))
         g.place(self.x, x, y)
         g.place(self.coincident, x, y)
 

@@ -55,13 +55,13 @@ class Image:
                        if s.points[self.x].along is None else 0.0)
         left = g.param(lambda s: s.points[self.x].left)
         (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
-        dx, dy = g.let(f"{qx} - {px}"), g.let(f"{qy} - {py}")
-        n = g.let(f"hypot({dx}, {dy})")
-        g.margin(g.let(f"where({n} > 0, 1.0, -1.0)"))
-        ux, uy = g.let(f"{dx} / {n}"), g.let(f"{dy} / {n}")
-        a = g.let(f"{along} + {frac} * {n}")
-        g.place(self.x, g.let(f"{px} + {a} * {ux} + {left} * -{uy}"),
-                g.let(f"{py} + {a} * {uy} + {left} * {ux}"))
+        dx, dy = g.let("{} - {}", qx, px), g.let("{} - {}", qy, py)
+        n = g.let("hypot({}, {})", dx, dy)
+        g.margin(g.let("where({} > 0, 1.0, -1.0)", n))
+        ux, uy = g.let("{} / {}", dx, n), g.let("{} / {}", dy, n)
+        a = g.let("{} + {} * {}", along, frac, n)
+        g.place(self.x, g.let("{} + {} * {} + {} * -{}", px, a, ux, left, uy),
+                g.let("{} + {} * {} + {} * {}", py, a, uy, left, ux))
 
     def why_not(self, scene, pos) -> str:
         return (f"link {self.link} has zero length at this instant, so {self.x} cannot be "

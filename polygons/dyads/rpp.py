@@ -59,11 +59,11 @@ class RPP:
         tx = g.param(lambda s: sl(s).through[0])
         ty = g.param(lambda s: sl(s).through[1])
         ax, ay = g.pos(self.pin)
-        den = g.let(f"{ex} * {fy} - {ey} * {fx}")
-        g.margin(g.let(f"abs({den})"))
-        wx, wy = g.let(f"{ax} - {tx}"), g.let(f"{ay} - {ty}")
-        t = g.let(f"({wx} * {fy} - {wy} * {fx}) / {den}")
-        g.place(self.x, g.let(f"{tx} + {t} * {ex}"), g.let(f"{ty} + {t} * {ey}"))
+        den = g.let("{} * {} - {} * {}", ex, fy, ey, fx)
+        g.margin(g.let("abs({})", den))
+        wx, wy = g.let("{} - {}", ax, tx), g.let("{} - {}", ay, ty)
+        t = g.let("({} * {} - {} * {}) / {}", wx, fy, wy, fx, den)
+        g.place(self.x, g.let("{} + {} * {}", tx, t, ex), g.let("{} + {} * {}", ty, t, ey))
 
     def why_not(self, scene, pos) -> str:
         return f"the slot of the yoke {self.x} is parallel to its guide"

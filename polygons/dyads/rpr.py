@@ -81,16 +81,16 @@ class RPR:
             self._source_offset(g, ax, ay, bx, by)
             return
         tiny = g.param(lambda s: 1e-12 * size_of(s))
-        dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
-        n = g.let(f"hypot({dx}, {dy})")
-        m0 = g.let(f"where({n} > {tiny}, 1.0, 0.0)")
+        dx, dy = g.let("{} - {}", ax, bx), g.let("{} - {}", ay, by)
+        n = g.let("hypot({}, {})", dx, dy)
+        m0 = g.let("where({} > {}, 1.0, 0.0)", n, tiny)
         hi = g.param(lambda s: _hi(s.slots[self.pin]))
         g.margin(g.call(end_margin_scalar, m0, n, "0.0", hi, tiny)[0])
         g.place(self.coincident, ax, ay)
         if self.far:
             fl = g.param(lambda s: s.slots[self.pin].far_length)
-            g.place(self.far, g.let(f"{bx} + {fl} * {dx} / {n}"),
-                    g.let(f"{by} + {fl} * {dy} / {n}"))
+            g.place(self.far, g.let("{} + {} * {} / {}", bx, fl, dx, n),
+                    g.let("{} + {} * {} / {}", by, fl, dy, n))
 
     def _source_offset(self, g, ax, ay, bx, by) -> None:
         """The offset slot: BA = t e + δ perp(e), t = √(|BA|² − δ²) > 0,
@@ -99,22 +99,22 @@ class RPR:
         off = g.param(lambda s: s.slots[self.pin].offset)
         fl = g.param(lambda s: s.slots[self.pin].far_length)
         tiny2 = g.param(lambda s: 1e-12 * size_of(s) ** 2)
-        dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
-        n = g.let(f"hypot_p({dx}, {dy})")
-        t2 = g.let(f"{n} * {n} - {off} * {off}")
-        t = g.let(f"sqrt(where({t2} > 0, {t2}, nan))")
+        dx, dy = g.let("{} - {}", ax, bx), g.let("{} - {}", ay, by)
+        n = g.let("hypot_p({}, {})", dx, dy)
+        t2 = g.let("{} * {} - {} * {}", n, n, off, off)
+        t = g.let("sqrt(where({} > 0, {}, nan))", t2, t2)
         # over floats the test comes first (no division by a zero |BA|); over arrays the
         # margin is kept, NaN-free, as locate's
-        m0 = g.let(f"where({t2} > {tiny2}, {t} / {n}, -1.0)" if g.arrays else
-                   f"({t} / {n} if {t2} > {tiny2} else -1.0)")
+        m0 = g.let(g.e("where({} > {}, {} / {}, -1.0)", t2, tiny2, t, n) if g.arrays else
+                   g.e("({} / {} if {} > {} else -1.0)", t, n, t2, tiny2))
         hi = g.param(lambda s: _hi(s.slots[self.pin]))
         tiny = g.param(lambda s: 1e-12 * size_of(s))
         g.margin(g.call(end_margin_scalar, m0, t, "0.0", hi, tiny)[0])
         g.place(self.coincident, ax, ay)
-        n2 = g.let(f"{n} * {n}")
-        ex = g.let(f"({t} * {dx} - {off} * -{dy}) / {n2}")
-        ey = g.let(f"({t} * {dy} - {off} * {dx}) / {n2}")
-        g.place(self.far, g.let(f"{bx} + {fl} * {ex}"), g.let(f"{by} + {fl} * {ey}"))
+        n2 = g.let("{} * {}", n, n)
+        ex = g.let("({} * {} - {} * -{}) / {}", t, dx, off, dy, n2)
+        ey = g.let("({} * {} - {} * {}) / {}", t, dy, off, dx, n2)
+        g.place(self.far, g.let("{} + {} * {}", bx, fl, ex), g.let("{} + {} * {}", by, fl, ey))
 
     def why_not(self, scene, pos) -> str:
         slot = scene.slots[self.pin]

@@ -48,7 +48,7 @@ class SliderDriveDyad:
         ty = g.param(lambda s: s.sliders[self.point].through[1])
         ex = g.param(lambda s: s.sliders[self.point].direction[0])
         ey = g.param(lambda s: s.sliders[self.point].direction[1])
-        g.place(self.point, g.let(f"{tx} + {g.x} * {ex}"), g.let(f"{ty} + {g.x} * {ey}"))
+        g.place(self.point, g.let("{} + {} * {}", tx, g.x, ex), g.let("{} + {} * {}", ty, g.x, ey))
 
     def why_not(self, scene, pos) -> str:
         return ""

@@ -57,9 +57,9 @@ class WheelPin:
         rho = g.param(lambda s: _wheel(s, self.x)[2])
         r = g.param(lambda s: _wheel(s, self.x)[0].radius)
         wx, wy = g.pos(self.w)
-        phi = g.let(f"{phi0} - {g.x} / {r}")
-        g.place(self.x, g.let(f"{wx} + {rho} * cos({phi})"),
-                g.let(f"{wy} + {rho} * sin({phi})"))
+        phi = g.let("{} - {} / {}", phi0, g.x, r)
+        g.place(self.x, g.let("{} + {} * cos({})", wx, rho, phi),
+                g.let("{} + {} * sin({})", wy, rho, phi))
 
     def why_not(self, scene, pos) -> str:
         return ""
