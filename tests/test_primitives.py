@@ -11,14 +11,22 @@ import pytest
 
 from polygons import dyads
 from polygons.codegen import Source
-from polygons.dyads.primitives import (PRIMITIVES, CircleCircle, CircleLine, Constructed,
-                                       FixedLine, Length, LineLine, RigidImage, Rotation,
-                                       Translation)
+from polygons.dyads.primitives import (PRIMITIVES, AlongLink, CircleCircle, CircleLine,
+                                       Constructed, FixedLine, Guarded, LeverLine, Length,
+                                       LineLine, LinesMeet, Prescribed, RigidImage, RimPoint,
+                                       Rotation, SlotUnstated, Translation, WheelRim)
 
-SCENE = NS(links={"PX": NS(length=0.9), "QX": NS(length=0.7), "OA": NS(length=0.3)},
+class _Scene(NS):
+    """A scene's tables, as the primitives read them (a weak reference allowed: memos)."""
+
+
+SCENE = _Scene(links={"PX": NS(length=0.9), "QX": NS(length=0.7), "OA": NS(length=0.3)},
            sliders={"X": NS(through=(0.1, -0.2), direction=(math.cos(0.3), math.sin(0.3)),
                             slot_direction=(math.cos(1.4), math.sin(1.4)))},
-           points={"X": NS(along=None, fraction=0.4, left=0.15)})
+           points={"X": NS(along=None, fraction=0.4, left=0.15)},
+           slots={"X": NS(offset=0.05, length=None)}, prescribed={"X": NS(position=0.3)},
+           equivalents=[NS(kind="rolling", driven=True, radius=0.2, rim=[("X", 0.5, 0.15)])],
+           ground={"P": (0.0, 0.0)})
 POS = {"P": np.array([0.0, 0.0]), "Q": np.array([1.0, 0.2]), "A": np.array([0.3, 0.5])}
 
 
@@ -44,6 +52,11 @@ CASES = [
     Translation("X", FixedLine("X")),
     LineLine("X", "A", FixedLine("X")),
     RigidImage("X", "P", "Q"),
+    LinesMeet("X", "P", "Q", "A", "P", also=("X1",)),
+    AlongLink("X", "P", "Q", Prescribed("X"), also=("X1",)),
+    RimPoint("X", "A", WheelRim("X")),
+    Guarded(CircleLine("X", "A", Length("PX"), LeverLine("X", "P", "Q"), also=("X1",)),
+            SlotUnstated("X")),
 ]
 
 
@@ -87,6 +100,19 @@ def test_each_primitive_meets_its_equations():
     u = (Q - P) / np.hypot(*(Q - P))
     assert math.isclose((X - P) @ u, 0.4 * np.hypot(*(Q - P)))
     assert math.isclose(_cross(u, X - P), 0.15)
+    X, m = _at(CASES[6], 1.0, 0.0)                    # on both lines P→Q and A→P
+    assert abs(_cross(Q - P, X - P)) < 1e-12 and abs(_cross(P - A, X - A)) < 1e-12 and m > 0
+    X, m = _at(CASES[7], 1.0, 0.0)
+    assert np.allclose(X, P + 0.3 * u, atol=1e-15) and m > 0
+    X, _ = _at(CASES[8], 1.0, 0.4)                    # φ = φ₀ − s/r
+    assert np.allclose(X, A + 0.15 * np.array([math.cos(0.5 - 2.0), math.sin(0.5 - 2.0)]))
+    X, m = _at(CASES[9], 1.0, 0.0)                    # |AX| = 0.9, on the slot offset 0.05
+    assert math.isclose(np.hypot(*(X - A)), 0.9) and math.isclose(_cross(u, X - P), 0.05)
+    SCENE.slots["X"].length = 0.2                      # a stated slot length: refused
+    try:
+        assert _at(CASES[9], 1.0, 0.0)[1] == -1.0
+    finally:
+        SCENE.slots["X"].length = None
 
 
 def test_a_sweep_of_positions_is_the_same_primitive():
@@ -100,6 +126,6 @@ def test_a_sweep_of_positions_is_the_same_primitive():
 def test_the_groups_stated_in_primitives():
     """Their locate and source are the primitive's (no second statement in the module)."""
     for kind in (dyads.RRR, dyads.RRP, dyads.CrankDyad, dyads.SliderDriveDyad, dyads.RPP,
-                 dyads.Image):
+                 dyads.Image, dyads.Guided, dyads.Crossing, dyads.SlideDyad, dyads.WheelPin):
         assert issubclass(kind, Constructed)
         assert "locate" not in vars(kind) and "source" not in vars(kind)
