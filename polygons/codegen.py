@@ -553,7 +553,7 @@ def check_compilable(scene: Scene, plan: Plan, steps: tuple[Step, ...]) -> None:
     ``source``, a step op without its generator (every shipped dyad and op has one now; this
     stays the guard for a new kind added to the kernel before its generator)."""
     for d in plan.dyads:
-        if not hasattr(d, "source"):
+        if not callable(getattr(d, "source", None)):
             raise NotCompiled(f"the compiled evaluator does not generate the "
                               f"{type(d).__name__} dyad at {', '.join(d.placed)} yet",
                               file=scene.file)

@@ -13,7 +13,7 @@ from polygons import dyads
 from polygons.codegen import Source
 from polygons.dyads.primitives import (PRIMITIVES, AlongLink, CircleCircle, CircleLine,
                                        Constructed, FixedLine, Guarded, LeverLine, Length,
-                                       LineLine, LinesMeet, Prescribed, RigidImage, RimPoint,
+                                       LineLine, LinesMeet, PinInSlot, Prescribed, RigidImage, RimPoint,
                                        Rotation, SlotUnstated, Translation, WheelRim)
 
 class _Scene(NS):
@@ -24,13 +24,14 @@ SCENE = _Scene(links={"PX": NS(length=0.9), "QX": NS(length=0.7), "OA": NS(lengt
            sliders={"X": NS(through=(0.1, -0.2), direction=(math.cos(0.3), math.sin(0.3)),
                             slot_direction=(math.cos(1.4), math.sin(1.4)))},
            points={"X": NS(along=None, fraction=0.4, left=0.15)},
-           slots={"X": NS(offset=0.05, length=None)}, prescribed={"X": NS(position=0.3)},
+           slots={"X": NS(offset=0.05, length=None),
+                  "A": NS(offset=0.0, length=None, far_length=0.8)}, prescribed={"X": NS(position=0.3)},
            equivalents=[NS(kind="rolling", driven=True, radius=0.2, rim=[("X", 0.5, 0.15)])],
            ground={"P": (0.0, 0.0)})
 POS = {"P": np.array([0.0, 0.0]), "Q": np.array([1.0, 0.2]), "A": np.array([0.3, 0.5])}
 
 
-def generated(prim, sigma=1.0, x=0.7):
+def generated(prim, sigma=1.0, x=0.7, label=None):
     """The point ``prim.source`` writes, run as a program over floats."""
     g = Source(SCENE, {prim.x: sigma})
     for lab, (px, py) in POS.items():
@@ -41,7 +42,7 @@ def generated(prim, sigma=1.0, x=0.7):
     ns = dict(g.namespace, x=x, **{f"k{i}": v for i, v in enumerate(params)})
     for line in g.lines:
         exec(line.text, ns)
-    xs, ys = g.pos(prim.x)
+    xs, ys = g.pos(label or prim.x)
     return np.array([ns[xs], ns[ys]])
 
 
@@ -57,7 +58,26 @@ CASES = [
     RimPoint("X", "A", WheelRim("X")),
     Guarded(CircleLine("X", "A", Length("PX"), LeverLine("X", "P", "Q"), also=("X1",)),
             SlotUnstated("X")),
+    PinInSlot("X", "A", "P", "F"),
 ]
+
+
+@pytest.mark.parametrize("offset", [0.0, 0.1])
+def test_a_lever_through_its_pin(offset):
+    """PinInSlot: X = A, the far end F at the lever's length along the slot (offset δ from
+    the pivot: F − P = l e with (A − P) = t e + δ perp(e)); locate = source."""
+    SCENE.slots["A"].offset = offset
+    try:
+        prim = PinInSlot("X", "A", "P", "F")
+        pts, m = prim.locate(SCENE, POS, 1.0, 0.0)
+        A, P = POS["A"], POS["P"]
+        e = (pts["F"] - P) / 0.8
+        assert np.allclose(pts["X"], A) and math.isclose(np.hypot(*e), 1.0) and m > 0
+        assert math.isclose(_cross(e, A - P), offset, abs_tol=1e-15)
+        assert np.max(np.abs(generated(prim) - pts["X"])) <= 1e-12
+        assert np.max(np.abs(generated(prim, label="F") - pts["F"])) <= 1e-12
+    finally:
+        SCENE.slots["A"].offset = 0.0
 
 
 def test_every_primitive_is_tested():
@@ -126,6 +146,7 @@ def test_a_sweep_of_positions_is_the_same_primitive():
 def test_the_groups_stated_in_primitives():
     """Their locate and source are the primitive's (no second statement in the module)."""
     for kind in (dyads.RRR, dyads.RRP, dyads.CrankDyad, dyads.SliderDriveDyad, dyads.RPP,
-                 dyads.Image, dyads.Guided, dyads.Crossing, dyads.SlideDyad, dyads.WheelPin):
+                 dyads.Image, dyads.Guided, dyads.Crossing, dyads.SlideDyad, dyads.WheelPin,
+                 dyads.RPR):
         assert issubclass(kind, Constructed)
         assert "locate" not in vars(kind) and "source" not in vars(kind)

@@ -23,6 +23,8 @@ primitives:
 * :class:`LinesMeet` — where the lines A₁ → Q₁ and A₂ → Q₂ meet (a pin in two moving slots);
 * :class:`AlongLink` — X = P + s PQ/|PQ|, s prescribed (a collar driven along a link);
 * :class:`RimPoint` — X = W + ρ (cos φ, sin φ), φ = φ₀ − s/r (a pin on a rolling wheel);
+* :class:`PinInSlot` — a slotted lever's point under its placed pin, and its far end along
+  the slot (RPR; a slot offset from the pivot too);
 * :class:`Guarded` — a primitive refused where a stated condition fails (a case not
   modelled, which the group's ``why_not`` names).
 
@@ -433,6 +435,85 @@ class RimPoint:
 
 
 @dataclass(frozen=True)
+class PinInSlot:
+    """The lever turning about B whose slot the placed pin A slides in ([slots.A]): the
+    lever's point X under the pin is A; its far end F at the lever's stated length l along
+    the slot — e = BA/|BA| (F = B + l e), or, for a slot offset δ from the pivot,
+    BA = t e + δ perp(e), t = √(|BA|² − δ²), e = (t BA − δ perp(BA)) / |BA|²; the margin
+    |BA| (or t/|BA|) beyond 1e-12 of the size and the pin within the slot's stated length
+    (:func:`~polygons.dyads.base.end_margin_scalar`)."""
+    x: str
+    pin: str
+    pivot: str
+    far: str | None
+
+    def locate(self, scene, pos, sigma, x):
+        a, b = pos[self.pin], pos[self.pivot]
+        d = a - b
+        s = np.hypot(d[0], d[1])
+        out = {self.x: a.copy()}
+        slot = scene.slots[self.pin]
+        tiny = 1e-12 * size_of(scene)
+        if slot.offset:
+            # BA = t e + δ perp(e) with t > 0:  e = (t BA − δ perp(BA)) / |BA|²
+            off = slot.offset
+            t2 = s * s - off * off
+            t = np.sqrt(np.where(t2 > 0, t2, np.nan))
+            e = (t * d - off * perp(d)) / (s * s)
+            out[self.far] = b + slot.far_length * e
+            m0 = np.where(t2 > 1e-12 * size_of(scene) ** 2, t / s, -1.0)
+            return out, end_margin_cols(m0, t, 0.0, _slot_end(slot), tiny)
+        if self.far:
+            out[self.far] = b + slot.far_length * d / s
+        margin = np.where(s > tiny, 1.0, 0.0)
+        return out, end_margin_cols(margin, s, 0.0, _slot_end(slot), tiny)
+
+    def source(self, g, check=True):
+        (ax, ay), (bx, by) = g.pos(self.pin), g.pos(self.pivot)
+        if g.scene.slots[self.pin].offset:      # (the cache key tells offset slots apart)
+            return self._source_offset(g, ax, ay, bx, by, check)
+        tiny = g.param(lambda s: 1e-12 * size_of(s))
+        dx, dy = g.let("{} - {}", ax, bx), g.let("{} - {}", ay, by)
+        n = g.let("hypot({}, {})", dx, dy)
+        m0 = g.let("where({} > {}, 1.0, 0.0)", n, tiny)
+        hi = g.param(lambda s: _slot_end(s.slots[self.pin]))
+        m = _check(g, g.call(end_margin_scalar, m0, n, "0.0", hi, tiny)[0], check)
+        g.place(self.x, ax, ay)
+        if self.far:
+            fl = g.param(lambda s: s.slots[self.pin].far_length)
+            g.place(self.far, g.let("{} + {} * {} / {}", bx, fl, dx, n),
+                    g.let("{} + {} * {} / {}", by, fl, dy, n))
+        return m
+
+    def _source_offset(self, g, ax, ay, bx, by, check):
+        off = g.param(lambda s: s.slots[self.pin].offset)
+        fl = g.param(lambda s: s.slots[self.pin].far_length)
+        tiny2 = g.param(lambda s: 1e-12 * size_of(s) ** 2)
+        dx, dy = g.let("{} - {}", ax, bx), g.let("{} - {}", ay, by)
+        n = g.let("hypot_p({}, {})", dx, dy)
+        t2 = g.let("{} * {} - {} * {}", n, n, off, off)
+        t = g.let("sqrt(where({} > 0, {}, nan))", t2, t2)
+        # over floats the test comes first (no division by a zero |BA|); over arrays the
+        # margin is kept, NaN-free, as locate's
+        m0 = g.let(g.e("where({} > {}, {} / {}, -1.0)", t2, tiny2, t, n) if g.arrays else
+                   g.e("({} / {} if {} > {} else -1.0)", t, n, t2, tiny2))
+        hi = g.param(lambda s: _slot_end(s.slots[self.pin]))
+        tiny = g.param(lambda s: 1e-12 * size_of(s))
+        m = _check(g, g.call(end_margin_scalar, m0, t, "0.0", hi, tiny)[0], check)
+        g.place(self.x, ax, ay)
+        n2 = g.let("{} * {}", n, n)
+        ex = g.let("({} * {} - {} * -{}) / {}", t, dx, off, dy, n2)
+        ey = g.let("({} * {} - {} * {}) / {}", t, dy, off, dx, n2)
+        g.place(self.far, g.let("{} + {} * {}", bx, fl, ex), g.let("{} + {} * {}", by, fl, ey))
+        return m
+
+
+def _slot_end(slot) -> float:
+    """The slot's stated length (NaN: open-ended)."""
+    return math.nan if slot.length is None else slot.length
+
+
+@dataclass(frozen=True)
 class Guarded:
     """``inner`` refused (margin −1) where ``ok`` does not hold: a case the construction does
     not model, which the group's ``why_not`` names."""
@@ -457,7 +538,7 @@ class Guarded:
 
 #: every primitive (a group's ``construction`` is one of these)
 PRIMITIVES = (CircleCircle, CircleLine, Rotation, Translation, LineLine, RigidImage,
-              LinesMeet, AlongLink, RimPoint, Guarded)
+              LinesMeet, AlongLink, RimPoint, PinInSlot, Guarded)
 
 
 class Constructed:
@@ -475,4 +556,4 @@ class Constructed:
 
 __all__ = ["Length", "FixedLine", "LeverLine", "SlotUnstated", "Prescribed", "WheelRim",
            "CircleCircle", "CircleLine", "Rotation", "Translation", "LineLine", "RigidImage",
-           "LinesMeet", "AlongLink", "RimPoint", "Guarded", "PRIMITIVES", "Constructed"]
+           "LinesMeet", "AlongLink", "RimPoint", "PinInSlot", "Guarded", "PRIMITIVES", "Constructed"]
