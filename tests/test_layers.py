@@ -20,9 +20,7 @@ WHERE = {
     "polygons.scene": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
-    "polygons.grade_drawing": "interpreters", "polygons.tolerances": "interpreters",
-    # the exam's variants and their keys: a library below the commands (polygons.cli.exam)
-    "polygons.exam": "render",
+    "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
     "polygons.loadeffort": "scene",
     # the mechanism model: the joint tables read once into bodies and pairs, the last step of
@@ -44,6 +42,12 @@ WHERE = {
     "polygons.report": "render", "diagrams": "render",
     "polygons.cli": "commands", "polygons.api": "commands", "polygons": "commands",
 }
+
+
+# the exam's variants and their keys: a library below the commands (polygons.cli.exam), so
+# that an import of a command from it is a back arrow; the grading tolerances it shares with
+# `polygons check`, below both
+WHERE.update({"polygons.exam": "render", "polygons.tolerances": "interpreters"})
 
 
 #: entries that stand for the package module itself, not for everything below it
