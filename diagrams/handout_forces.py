@@ -25,9 +25,6 @@ from polygons.report import sense
 
 from .html import esc, inline_svg, svg_size, sym
 
-#: the command a handout's force sections run for (named in a refusal)
-HANDOUT = "polygons handout"
-
 #: printed width available to a figure, mm (the portrait page's text width)
 WIDTH_MM = 180.0
 
@@ -60,7 +57,7 @@ def check(sol):
             raise _refused("turning_moment", e, sol.scene.file) from None
         if not (polys or lever):
             from polygons.forces import analyse
-            return analyse(sol.scene, method=HANDOUT)
+            return analyse(sol.scene)
     if not (polys or lever):
         return None
     from polygons.forces import analyse, has_forces, graphical, zhukovsky
@@ -75,7 +72,7 @@ def check(sol):
             graphical.groups_of(scene)
         except UnsupportedError as e:
             raise _refused("force_polygons", e, scene.file) from None
-    an = analyse(scene, method=HANDOUT)
+    an = analyse(scene)
     for st in an.states:
         if polys:
             try:
@@ -304,7 +301,7 @@ def _cycle(sol):
     if "turning_moment" not in memo:
         from polygons.forces.analysis import load_model
         from polygons.forces.cycle import turning_moment
-        memo["turning_moment"] = turning_moment(load_model(sol.scene, HANDOUT), sol.scene,
+        memo["turning_moment"] = turning_moment(load_model(sol.scene), sol.scene,
                                                 CYCLE_ANGLES)
     return memo["turning_moment"]
 

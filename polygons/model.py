@@ -28,6 +28,7 @@ not handle refuses it in one line naming both (:func:`refuse`).
 from __future__ import annotations
 
 import math
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
@@ -331,6 +332,17 @@ KIND_WORDS = {
 BUILT = frozenset(BODY_KINDS) | {"turning", "sliding"}
 
 
+#: the command the user ran ('polygons sweep'), while it runs (set by polygons.cli.main): a
+#: method refusing a kind names it (:func:`running`), whichever module the guard sits in
+RUNNING: ContextVar[str | None] = ContextVar("polygons_command", default=None)
+
+
+def running(default: str) -> str:
+    """The command the user ran, or ``default`` (the method's own name, when it is called
+    from Python rather than from the command line)."""
+    return RUNNING.get() or default
+
+
 def refuse(method: str, kind: str, where: str = "", file: str | None = None
            ) -> UnsupportedError:
     """The one-line refusal of a kind a method does not handle, naming both."""
@@ -361,4 +373,4 @@ def check_handles(method: str, handles: frozenset[str], model: Mechanism,
 
 
 __all__ = ["BODY_KINDS", "PAIR_KINDS", "FRAME", "Body", "Turning", "SlideLine", "Sliding",
-           "Mechanism", "build", "refuse", "check_handles", "unhandled", "KIND_WORDS", "BUILT"]
+           "Mechanism", "build", "refuse", "check_handles", "unhandled", "RUNNING", "running", "KIND_WORDS", "BUILT"]

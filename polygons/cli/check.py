@@ -176,7 +176,7 @@ def force_analysis(sol: Solution):
             raise MeasuredError("a force answer needs the scene's loads ([masses], [forces], "
                                 "[torques] or [springs]): this case has none",
                                 file=sol.scene.file)
-        memo["force_analysis"] = analyse(sol.scene, method="polygons check")
+        memo["force_analysis"] = analyse(sol.scene)
     return memo["force_analysis"]
 
 

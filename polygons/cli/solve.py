@@ -40,7 +40,7 @@ def run(args) -> int:
         # (the forces package is imported only for a scene with loads: a quicker start)
         from ..forces import analyse
         from .forces import forces_table, to_dict
-        forces = analyse(scene, method="polygons solve")
+        forces = analyse(scene)
     method = args.klein or scene.options.diagram.klein
     fig = None
     if method:
