@@ -228,7 +228,7 @@ def _name_map(sol: Solution, drawing: StudentDrawing, diagram: str) -> dict[str,
 def grade(sol: Solution, drawing: StudentDrawing, emulated: dict | None = None,
           stated: float = 0.02) -> DrawingGrade:
     """Grade ``drawing`` (see :mod:`polygons.drawing_format`) against the construction.
-    ``emulated``: {quantity: relative p95} (:func:`polygons.tolerances.emulated_tolerances`)."""
+    ``emulated``: {quantity: relative p95} (:func:`polygons.cli.check.emulated_tolerances`)."""
     emulated = emulated or {}
     diagram = drawing.diagram
     k = drawing.scale                                # SI per mm
