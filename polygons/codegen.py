@@ -95,6 +95,7 @@ class Source:
         self._n = 0
         self._memo: dict[str, str] = {}
         self._checked: set[str] = set()
+        self.untyped: list[str] = []   # formulas given as bare text (see let)
 
     # -- used by the dyad modules ----------------------------------------------------------
     def param(self, getter) -> str:
@@ -115,9 +116,16 @@ class Source:
         """``expr`` in a fresh local (or the local that already holds it: every local is
         assigned once, so equal text is an equal value); a template and its operands make
         the formula (:meth:`e`): ``g.let("{} - {}", qx, px)``."""
-        if type(expr) is str:
-            if not operands:        # text with no operands: an f-string's names, untyped
-                raise TypeError(f"let takes a template and its operands, not {expr!r}")
+        if type(expr) is str and not operands:
+            # text whose names are not typed (an f-string: the way before typed formulas):
+            # taken as reading every name made so far, so no statement it needs is dropped;
+            # counted (``untyped``) — tests/test_program.py holds the shipped groups at none
+            self.untyped.append(expr)
+            reads = frozenset(Name(f"v{i}") for i in range(1, self._n + 1)) | frozenset(
+                Name(f"k{i}") for i in range(len(self.getters)))
+            expr = Expr("{}", Lit(expr))
+            expr.reads = reads
+        elif type(expr) is str:
             expr = Expr(expr, *operands)
         elif not isinstance(expr, (Expr, Name)) or operands:
             raise TypeError(f"let takes a typed formula (Source.e), not {expr!r}")

@@ -48,9 +48,34 @@ def test_a_generated_program_is_made_of_typed_lines():
     assert isinstance(n, Name) and g.lines[-1].reads == {px, g.x}
     assert g.let("hypot({}, {})", px, g.x) == n            # the same formula: the same local
     with pytest.raises(TypeError):
-        g.let(f"{n} + 1.0" + "")                            # an f-string's names are not typed
-    with pytest.raises(TypeError):
         g.let(Expr("{} + 1.0", n), n)
+    m = g.let(f"{n} + 1.0")              # bare text: its names untyped, taken as all so far
+    assert g.untyped == [f"{n} + 1.0"] and g.lines[-1].reads >= {n, px}
+    assert [ln.text for ln in live(g.lines, [m])][-1] == f"{m} = {n} + 1.0"
+
+
+def test_no_shipped_group_writes_untyped_text():
+    """Every formula of every case's generated programs is typed (a bare f-string given to
+    ``let`` is kept working, reading every name made before it, and counted here)."""
+    from polygons.codegen import generate
+    from polygons.plan import construction, make_plan
+    from polygons.scene import load_scene
+    from polygons import codegen
+    seen = []
+    real = codegen.Source.__init__
+
+    def spy(self, *a, **k):
+        real(self, *a, **k)
+        seen.append(self)
+    codegen.Source.__init__ = spy
+    try:
+        for path in sorted((Path(__file__).resolve().parents[1] / "cases").glob("*.toml")):
+            scene = load_scene(path)
+            plan = make_plan(scene)
+            generate(scene, plan, construction(plan), {}, arrays=True)
+    finally:
+        codegen.Source.__init__ = real
+    assert seen and [u for g in seen for u in g.untyped] == []
 
 
 def test_codegen_reads_no_text_back():
