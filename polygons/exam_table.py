@@ -213,8 +213,8 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             rg = _range(value, name, SLIDER_KEYS[name], r, where)
             _magnitude(rg, name, value, scene, where)
             ranges.append(Range(f"driver.{name}", name, rg.dimension, rg.values))
-        elif name in scene.links:
-            if scene.links[name].length is None:
+        elif scene.model.link(name) is not None:
+            if scene.model.link(name).length is None:
                 raise SceneError(f"link {name} has no length to vary (a slotted lever)",
                                  file=scene.file, where=where)
             rg = _range(value, name, "length", r, where)
@@ -227,7 +227,7 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             from .errors import UnknownKeyError, suggest
             raise UnknownKeyError(f"unknown key {show(name)}: a link of [links] with a length, "
                                   f"{', '.join(DRIVER_KEYS)}, {', '.join(SLIDER_KEYS)}, or "
-                                  f"{suggest(name, _FIXED + tuple(scene.links))}",
+                                  f"{suggest(name, _FIXED + tuple(b.name for b in scene.model.links()))}",
                                   file=scene.file, where=where)
     ask = raw.get("ask")
     if ask is None:

@@ -132,14 +132,14 @@ def engine(scene):
             continue
         for a, b in ((body.a, body.b), (body.b, body.a)):
             g = model.fixed_guide(b)
-            if a == drv.tip and g is not None and b not in scene.slots and \
-                    scene.sliders.get(b) is not None and scene.sliders[b].pin is None:
+            if a == drv.tip and g is not None and b not in model.slot and \
+                    model.body(b).kind == "block":
                 rods.append((body.name, a, b, g))
     if len(rods) != 1:
         found = "no link joins the crank pin to a slider on a fixed guide" if not rods else \
             "more than one rod joins the crank pin to a slider"
         raise refuse(f"{what}: in this scene {found}", scene)
-    if scene.slots or scene.crossing or scene.prescribed:
+    if model.slot or model.crossings() or model.collar:
         raise refuse(f"{what}: this scene also has slots or a second input", scene)
     rod, a, b, g = rods[0]
     return drv, rod, drv.pivot, a, b, g

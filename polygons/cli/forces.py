@@ -353,7 +353,7 @@ def _sections(an: Analysis, st: State):
         for lab in body.labels:
             if lab in (body.a, body.b) or lab in loaded:
                 continue
-            if lab not in model.scene.points:
+            if lab not in model.scene.model.points:
                 continue
             try:
                 n, s, m = section(model, st, lab, name)

@@ -29,7 +29,7 @@ vary, ``at(P2,O2)`` = 0 of a steady crank) or equal in size to another asked ans
 with the reason (:attr:`ExamSet.dropped`).
 
 Each asked quantity's tolerance is what ``polygons check`` allows: the 95th percentile of its
-error in the drawing-board emulation (:func:`polygons.cli.check.emulated_tolerances`), else
+error in the drawing-board emulation (:func:`polygons.tolerances.emulated_tolerances`), else
 the scene's stated drawing tolerance, and never less than a 0.5 mm ruler reading at the
 variant's scale.
 """
@@ -260,7 +260,7 @@ def round_scales(sol: Solution) -> dict[str, float]:
 
 
 class _Scale:
-    """What :func:`polygons.cli.check.tolerance_for` reads of a scale."""
+    """What :func:`polygons.tolerances.tolerance_for` reads of a scale."""
 
     def __init__(self, per_cm: float):
         self.mm_per_si = 10.0 / per_cm
@@ -353,7 +353,7 @@ def closure_angle_deg(scene: Scene) -> float:
 
 def answers(sol: Solution, asked: tuple[str, ...], scales: Mapping[str, float]
             ) -> tuple[Asked, ...]:
-    from ..cli.check import emulated_tolerances, stated_tolerance, tolerance_for
+    from ..tolerances import emulated_tolerances, stated_tolerance, tolerance_for
     emulated = emulated_tolerances(sol)
     stated = stated_tolerance(sol)
     sc = {d: _Scale(v) for d, v in scales.items()}
