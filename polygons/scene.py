@@ -43,6 +43,7 @@ from . import contacts, topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
 from .exam_table import spec as exam_spec
+from .question_table import check as check_questions
 from .loads import parse as parse_loads
 from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record, refuse_control_characters
@@ -62,7 +63,7 @@ OPTION_KEYS = ("sweep", "diagram", "handout", "centres")
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                   "force_answers", "flywheel", "efficiency", "pins", "least_velocity",
-                  "pin_answers", "exam")
+                  "pin_answers", "exam", "questions")
 DIAGRAMS = ("velocity", "acceleration")
 #: the text keys of [source] (where the case comes from; shown in reports and handouts)
 SOURCE_TEXT = ("id", "seed", "example", "category", "statement", "conventions", "notes",
@@ -571,6 +572,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         spec, r, where, default_tol, **kw))
     scene = record(Scene, **{**vars(scene), "loads": loads})
     exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
+    check_questions(scene, parse_quantity_expr, default_tol)   # [[questions]] (question_table)
     return scene
 
 
