@@ -143,8 +143,12 @@ def input_in_unit(q: Question, x: float) -> float:
 # ------------------------------------------------------------------ q(x)
 def _measure(scene: Scene, q: Question):
     """(q(scene) -> float, the quantity's dimension); force quantities by the force analysis."""
-    fn = q.quantity.split("(", 1)[0].strip()
-    if fn in kq.FUNCTIONS and "(" in q.quantity and " " not in q.quantity.strip():
+    try:
+        parse_quantity_expr(q.quantity)
+        kinematic = True
+    except PolygonsError:
+        kinematic = False
+    if kinematic:
         from .evaluate import solve
         return (lambda s: kq.quantity(solve(s), q.quantity)), kq.dimension_of_quantity(
             q.quantity)

@@ -13,6 +13,8 @@
     arm(O,P,C)  perpendicular distance from O to the line PC         (m)
     x(C), y(C)  coordinates                                         (m)
     dir_v(C), dir_a(C)   direction of v_C / a_C, degrees CCW from +x in [0, 360)
+    X / Y       the ratio of two quantities of one kind (a velocity ratio v(C) / v(B), a
+                mechanical advantage): a pure number, signed as their quotient
     omega(W), alpha(W)   a rolling wheel's ([rolling.W]) ω and α, signed, CCW positive;
                 every point function also of a wheel's named points ([rolling.W] rim) and
                 of a cylinder's centre between two plates (not points of the polygons:
@@ -33,17 +35,34 @@ from .evaluate import PointResult, Solution
 from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse  # noqa: F401
 
 def dimension_of_quantity(expr: str) -> str:
-    fn = _parse(expr)[0]
+    fn, args = _parse(expr)
+    if fn == "ratio":
+        dims = [dimension_of_quantity(x) for x in args]
+        if dims[0] != dims[1]:
+            raise SceneError(f"{expr!r}: a ratio of {article_of(dims[0])} to "
+                             f"{article_of(dims[1])} has a unit; ask for a ratio of two "
+                             f"quantities of one kind (v(C) / v(B), omega(CD) / omega(AB))")
+        return "fraction"
     return {"v": "velocity", "a": "acceleration", "an": "acceleration", "at": "acceleration",
             "omega": "angular_velocity", "alpha": "angular_acceleration", "cor": "acceleration",
             "dist": "length", "x": "length", "y": "length", "dir_v": "angle",
             "dir_a": "angle", "angle": "angle", "arm": "length"}.get(fn, "velocity" if fn == "vs" else "acceleration")
 
 
+def article_of(dimension: str) -> str:
+    word = dimension.replace("_", " ")
+    return ("an " if word[0] in "aeiou" else "a ") + word
+
+
 def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float]:
     """(diagram, length on that polygon in SI) of the line ``expr`` is read from: |ω|·length
-    (|α|·length) for a link's — a rolling wheel's: its radius — and |value| otherwise."""
+    (|α|·length) for a link's — a rolling wheel's: its radius — and |value| otherwise.  A
+    ratio X / Y read off two lines x, y: the length whose reading error is the ratio's,
+    1 / (1/x + 1/y) (relative errors add; the numerator's diagram)."""
     fn, args = _parse(expr)
+    if fn == "ratio":
+        (dx, lx), (_, ly) = (drawn_on_polygon(sol, x, quantity(sol, x)) for x in args)
+        return dx, (1.0 / (1.0 / lx + 1.0 / ly) if lx > 0 and ly > 0 else 0.0)
     if fn in ("omega", "alpha"):
         lr = sol.links.get(args[0])
         length = lr.length if lr is not None else contacts.wheel_of(sol.scene, args[0]).radius
@@ -54,6 +73,13 @@ def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float
 def quantity(sol: Solution, expr: str) -> float:
     """The SI value of ``expr`` (see module docstring) in solution ``sol``."""
     fn, args = _parse(expr)
+    if fn == "ratio":
+        dimension_of_quantity(expr)             # of one kind, or refused
+        num, den = quantity(sol, args[0]), quantity(sol, args[1])
+        if not abs(den) > 1e-12 * abs(num):
+            raise SceneError(f"{args[1]} is zero at this instant: the ratio {expr!r} is not "
+                             f"defined", file=sol.scene.file)
+        return num / den
     p, q, rest = args[0], (args[1] if len(args) > 1 else None), args[2:]
     scene = sol.scene
 

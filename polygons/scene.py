@@ -698,6 +698,12 @@ _CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
 #: the functions of an answer's ``quantity`` (see :mod:`polygons.quantities`)
 QUANTITY_FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x",
                       "y", "dir_v", "dir_a", "angle", "arm")
+#: the kind of each function's value (a ratio is of two of one kind)
+_KIND = {"v": "a velocity", "vs": "a velocity", "a": "an acceleration", "an": "an acceleration",
+         "at": "an acceleration", "as": "an acceleration", "cor": "an acceleration",
+         "omega": "an angular velocity", "alpha": "an angular acceleration", "dist": "a length",
+         "x": "a length", "y": "a length", "arm": "a length", "dir_v": "an angle",
+         "dir_a": "an angle", "angle": "an angle"}
 _ARITY = {"angle": (3,), "arm": (3,), "v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,),
           "dist": (2,), "vs": (1, 2), "as": (1, 2), "cor": (1, 2)}
 
@@ -707,6 +713,18 @@ def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None
     read = _READ_EXPR.get(expr) if isinstance(expr, str) else None
     if read is not None:
         return read
+    if isinstance(expr, str) and "/" in expr:   # a ratio: 'v(C) / v(B)' -> ('ratio', (X, Y))
+        num, _, den = expr.partition("/")
+        if "/" in den or not num.strip() or not den.strip():
+            raise SceneError(f"cannot read the ratio {show(expr)}: write one quantity over "
+                             f"another, e.g. 'v(C) / v(B)'", file=file, where=where)
+        kinds = [_KIND.get(parse_quantity_expr(x.strip(), file=file, where=where)[0])
+                 for x in (num, den)]
+        if kinds[0] != kinds[1]:
+            raise SceneError(f"{show(expr)}: a ratio of {kinds[0]} to {kinds[1]} has a unit; "
+                             f"ask for a ratio of two quantities of one kind (v(C) / v(B), "
+                             f"omega(CD) / omega(AB))", file=file, where=where)
+        return "ratio", (num.strip(), den.strip())
     m = _CALL.match(expr) if isinstance(expr, str) else None
     if not m or m.group(1) not in QUANTITY_FUNCTIONS:
         raise SceneError(f"cannot read quantity {show(expr)}: write e.g. 'v(C)', 'v(C,B)', "

@@ -21,7 +21,9 @@ ANSWER_FIELDS = _ANSWER_KEYS = (
                               "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
                               "cor(P), dist(B,A), x(C), y(C), dir_v(C), dir_a(C), "
                               "angle(P,Q,R), arm(O,P,C); a [rolling.W] wheel's omega(W), "
-                              "alpha(W) (and v(W), a(W) between two plates)",
+                              "alpha(W) (and v(W), a(W) between two plates); the ratio of "
+                              "two of one kind, X / Y (velocity ratio v(C) / v(B), "
+                              "mechanical advantage omega(AB) / omega(CD), unit '-')",
         example='"omega(BC)"', required=True),
     Key("unit", "string", "the unit of tutorial and exact (any unit of the table below, or "
                           "'-' for a pure number)", example='"rad/s"', required=True),

@@ -80,6 +80,8 @@ OWN_EXACT_CHECK = {
     **{name: ("test_conditions.py",
               "test_question_cases_exact_values_are_the_closed_form_and_ours")
        for name in ("question-engine-conditions", "question-offset-quick-return")},
+    "ratio-four-bar": ("test_conditions.py",
+                       "test_ratio_case_exact_answers_are_the_closed_form_and_kennedy"),
     "khurmi-ex7.2": ("test_centres.py", "test_khurmi_exact_answers_are_the_closed_form_and_ours"),
     "new-crossing-slots": ("test_crossing.py",
                            "test_the_case_exact_answers_come_from_the_loop_solution"),

@@ -183,3 +183,49 @@ def test_ask_command_answers_and_narrates_the_construction_at_a_root(tmp_path):
     assert [q["exact_ok"] for q in data["questions"]] == [True] * 4
     assert main(["ask", str(OFFSET), "--show", "9"]) == 1
     assert main(["ask", str(ROOT / "cases" / "s001-we1.toml")]) == 1
+
+
+# ------------------------------------------------------------------ ratios as answers
+RATIO = ROOT / "cases" / "ratio-four-bar.toml"
+
+
+def test_ratio_case_exact_answers_are_the_closed_form_and_kennedy():
+    """v_C / v_B and ω_CD / ω_AB from the closed-form four-bar; ω_CD / ω_AB also by Kennedy's
+    theorem: I24 on AD produced where BC meets it, ω4 / ω2 = A I24 / D I24 (signed)."""
+    import analytic
+    import numpy as np
+    from polygons.evaluate import solve
+    from polygons.report import check_answers
+    fb = analytic.four_bar((0, 0), (0.45, 0), 0.1, 0.4, 0.35, math.radians(90), 12.0, 0.0, +1)
+    B, C = np.array(fb["B"]), np.array(fb["C"])
+    x_i = B[0] - B[1] * (C[0] - B[0]) / (C[1] - B[1])          # BC produced meets y = 0
+    kennedy = (x_i - 0.0) / (x_i - 0.45)
+    want = {"v(C) / v(B)": float(np.hypot(*fb["vC"]) / np.hypot(*fb["vB"])),
+            "omega(CD) / omega(AB)": fb["omega_CD"] / 12.0,
+            "omega(AB) / omega(CD)": 12.0 / fb["omega_CD"]}
+    assert want["omega(CD) / omega(AB)"] == pytest.approx(kennedy, rel=1e-12)
+    scene = load_scene(RATIO)
+    assert {a.quantity: a.exact for a in scene.answers} == pytest.approx(want, rel=1e-12)
+    for c in check_answers(solve(scene)):
+        assert c.compared == pytest.approx(c.answer.exact, rel=1e-9), c.answer.quantity
+
+
+def test_a_ratio_of_two_kinds_is_refused_at_load_and_a_force_ratio_works():
+    import tomllib
+    from polygons.errors import SceneError
+    from polygons.forces import analyse, force_quantity
+    from polygons.scene import parse_scene
+    data = tomllib.loads(RATIO.read_text(encoding="utf-8"))
+    data["answers"][0]["quantity"] = "v(C) / omega(AB)"
+    with pytest.raises(SceneError, match="a ratio of a velocity to an angular velocity"):
+        parse_scene(data, file="r.toml")
+    an = analyse(load_scene(ROOT / "cases" / "efficiency-four-bar.toml"))
+    # the input torque by Newton–Euler over that by virtual work: one
+    assert force_quantity(an, "Tin / Tin_vw") == pytest.approx(1.0, rel=1e-9)
+    assert force_quantity(an, "Tin / Tin") == 1.0
+
+
+def test_a_ratio_is_graded_like_any_other_answer(capsys):
+    from polygons.cli import main
+    assert main(["check", str(RATIO), "--measured", "v(C)/v(B)=0.85"]) == 0
+    assert main(["check", str(RATIO), "--measured", "v(C)/v(B)=0.95"]) == 3

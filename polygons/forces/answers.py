@@ -94,7 +94,40 @@ def _dimension_of(fn: str, args) -> str:
     return kq.dimension_of_quantity(f"{fn}({','.join(args)})")
 
 
+def _ratio(expr: str) -> tuple[str, str] | None:
+    """'Tout / Tin' -> ('Tout', 'Tin'): a ratio of two quantities (or sums), else None."""
+    num, slash, den = expr.partition("/")
+    return (num.strip(), den.strip()) if slash else None
+
+
 def check_expr(expr: str, unit: str, scene: Scene, where: str) -> None:
+    ratio = _ratio(expr)
+    if ratio is not None:            # a ratio of two quantities of one kind: a pure number
+        if "/" in ratio[1] or not all(ratio):
+            raise SceneError(f"cannot read the ratio {expr!r}: write one quantity over another",
+                             file=scene.file, where=where + ".quantity")
+        from ..units import UNITS as _U
+        si = {d: u for u, (d, f) in reversed(list(_U.items())) if f == 1.0}
+        dims = []
+        for part in ratio:
+            fn = parse_call(_split_terms(part)[0][1])[0] if part else ""
+            try:
+                dims.append(_dimension_of(fn, parse_call(_split_terms(part)[0][1])[1]))
+            except SceneError as exc:
+                raise SceneError(exc.reason, file=scene.file, where=where + ".quantity") \
+                    from None
+        if dims[0] != dims[1]:
+            raise SceneError(f"{expr!r}: a ratio of a {dims[0].replace('_', ' ')} to a "
+                             f"{dims[1].replace('_', ' ')} has a unit; ask for a ratio of two "
+                             f"quantities of one kind", file=scene.file,
+                             where=where + ".quantity")
+        for part in ratio:
+            check_expr(part, si.get(dims[0], "-") if dims[0] != "fraction" else "-", scene,
+                       where)
+        if unit_dimension(unit) != "fraction":
+            raise UnitError(f"{expr!r} is a ratio, a pure number: unit = \"-\"",
+                            file=scene.file, where=where + ".unit")
+        return
     dims = set()
     for _, term in _split_terms(expr):
         try:
@@ -129,6 +162,13 @@ def force_quantity(an: Analysis, expr: str, state: str | None = None,
                    positive: int = 1) -> float:
     """The SI value of ``expr`` (see README, "Forces") at ``state``; ``positive`` = −1 takes
     normal components, moments, ω and α positive clockwise."""
+    ratio = _ratio(expr)
+    if ratio is not None:
+        num, den = (force_quantity(an, part, state, positive) for part in ratio)
+        if not abs(den) > 1e-12 * abs(num):
+            raise SceneError(f"{ratio[1]} is zero at this instant: the ratio {expr!r} is not "
+                             f"defined", file=an.model.scene.file)
+        return num / den
     st = an.state(state)
     total = 0.0
     for sign, term in _split_terms(expr):
