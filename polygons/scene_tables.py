@@ -20,7 +20,10 @@ ANSWER_FIELDS = _ANSWER_KEYS = (
     Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
                               "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
                               "cor(P), dist(B,A), x(C), y(C), dir_v(C), dir_a(C), "
-                              "angle(P,Q,R), arm(O,P,C); a [rolling.W] wheel's omega(W), "
+                              "angle(P,Q,R), arm(O,P,C) (a point may be an instant centre "
+                              "I13, numbered as `polygons centres` numbers the links, or a "
+                              "point of Klein's figure of a slider-crank: dist(O,N)); "
+                              "a [rolling.W] wheel's omega(W), "
                               "alpha(W) (and v(W), a(W) between two plates); the ratio of "
                               "two of one kind, X / Y (velocity ratio v(C) / v(B), "
                               "mechanical advantage omega(AB) / omega(CD), unit '-')",

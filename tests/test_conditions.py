@@ -204,10 +204,27 @@ def test_ratio_case_exact_answers_are_the_closed_form_and_kennedy():
             "omega(CD) / omega(AB)": fb["omega_CD"] / 12.0,
             "omega(AB) / omega(CD)": 12.0 / fb["omega_CD"]}
     assert want["omega(CD) / omega(AB)"] == pytest.approx(kennedy, rel=1e-12)
+    # "the distance of I13 from C": I13 where AB (x = 0) meets DC produced, in mm
+    D = np.array([0.45, 0.0])
+    i13 = D + (0.0 - D[0]) / (C[0] - D[0]) * (C - D)
+    want["dist(I13,C)"] = float(np.hypot(*(C - i13))) * 1e3
+    assert want["dist(I13,C)"] / 1e3 * abs(fb["omega_BC"]) == pytest.approx(
+        float(np.hypot(*fb["vC"])), rel=1e-12)               # v_C = ω_BC · I13C
     scene = load_scene(RATIO)
     assert {a.quantity: a.exact for a in scene.answers} == pytest.approx(want, rel=1e-12)
     for c in check_answers(solve(scene)):
         assert c.compared == pytest.approx(c.answer.exact, rel=1e-9), c.answer.quantity
+
+
+def test_an_unknown_or_infinite_instant_centre_is_refused_in_words():
+    """'the distance of I19 from C' in a four-bar (links 1 … 4); a slider's I14 at infinity."""
+    from polygons.errors import PolygonsError
+    from polygons.evaluate import solve
+    from polygons.quantities import quantity
+    with pytest.raises(PolygonsError, match="numbered 1 … 4"):
+        quantity(solve(load_scene(RATIO)), "dist(I19,C)")
+    with pytest.raises(PolygonsError, match="at infinity"):
+        quantity(solve(load_scene(OFFSET)), "dist(I14,O)")
 
 
 def test_a_ratio_of_two_kinds_is_refused_at_load_and_a_force_ratio_works():
