@@ -95,7 +95,10 @@ TABLES: tuple[Table, ...] = (
         Key("angle", "string", "crank angle (an angle with its unit), CCW from +x (reduced to one turn exactly; "
                                  "beyond ±1e6° refused); also 'θ from idc' / 'θ from odc' "
                                  "(slider-crank: from inner / outer dead centre, in the "
-                                 "crank's sense), 'θ from AD' (CCW from the ray A→D), "
+                                 "crank's sense; any line of stroke, a vertical engine's "
+                                 "too: [assembly] P = \"P above O\" puts the cylinder above "
+                                 "O, idc the crank pointing at it; 'from tdc' / 'from bdc' "
+                                 "the same), 'θ from AD' (CCW from the ray A→D), "
                                  "'θ from +y' (or +x, -x, -y) and 'θ CW from AD' / "
                                  "'θ clockwise from +y' (measured clockwise); "
                                  "default: from the tip's [drawn] position",

@@ -85,6 +85,13 @@ def test_question_cases_exact_values_are_the_closed_form_and_ours(path, closed):
     instant = {ENGINE: 3000 * math.pi / 30 * abs(dx(math.radians(135), 0.04, 0.14)),
                OFFSET: x_p(math.radians(60), 0.04, 0.14, 0.02) * 1e3}[path]
     assert answer.exact == pytest.approx(instant, rel=1e-12)
+    if path == ENGINE:      # "the piston effort": F_P = F − m ω² x''(θ) along the stroke
+        (fp,) = scene.loads.answers
+        w = 3000 * math.pi / 30
+        assert fp.exact == pytest.approx(2000 - 0.5 * w * w * ddx(math.radians(135), 0.04,
+                                                                  0.14), rel=1e-12)
+        from polygons.forces import analyse, force_quantity
+        assert force_quantity(analyse(scene), "Fp(P)") == pytest.approx(fp.exact, rel=1e-9)
     qs = conditions.scene_questions(scene)
     assert len(qs) == len(want)
     for q in qs:

@@ -64,3 +64,43 @@ def test_centres_json_names_links_by_a_stable_key(tmp_path):
     i13 = next(c for c in data["centres"] if c["label"] == "I13")
     assert i13["keys"] == ["frame", "BC"]
     assert {o["key"] for o in data["omegas"]} == {"frame", "AB", "BC", "DC"}
+
+
+def test_piston_effort_and_turning_moment_are_named_without_a_flywheel(tmp_path):
+    """"Find the piston effort and the turning moment on the crank shaft" (no flywheel, no
+    efficiency): F_P = F_gas − m a_P along the line of stroke, T = F_P · (OC sin(θ+β)/cos β)
+    in the sense of rotation, both printed by `polygons forces`."""
+    from polygons.cli import main
+    from polygons.forces import analyse, force_quantity
+    path = ROOT / "cases" / "question-engine-conditions.toml"
+    scene = load_scene(path)
+    an = analyse(scene)
+    sol = solve(scene)
+    fp = 2000.0 - 0.5 * quantity(sol, "as(P)")
+    assert force_quantity(an, "Fp(P)") == pytest.approx(fp, rel=1e-12)
+    r, l, th = 0.04, 0.14, math.radians(135)        # the crank pin above, P to the left
+    beta = math.asin(r * math.sin(th) / l)
+    # the rod's thrust F_P / cos β, its moment about O: F_P r sin(θ + β) / cos β
+    torque = fp * r * math.sin(math.pi - th + beta) / math.cos(beta)
+    assert force_quantity(an, "Tturn") == pytest.approx(torque, rel=1e-9)
+    out = tmp_path / "f.txt"
+    assert main(["forces", str(path), "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    assert f"turning moment T on the crank, in the sense of rotation: {torque:.8g} N m" in text
+    assert f"piston effort F_P at P" in text and f"{fp:.8g} N" in text
+
+
+def test_a_vertical_engine_is_placed_from_inner_dead_centre():
+    """"A vertical engine ... when the crank has turned 25° from the inner dead centre": the
+    cylinder above O, the line of stroke vertical; idc is the crank pointing at the cylinder
+    (90°), 25° past it in the crank's sense (CW) is 65° from +x."""
+    data = {"ground": {"O": ["0 mm", "0 mm"]}, "links": {"OC": "100 mm", "PC": "400 mm"},
+            "driver": {"crank": "OC", "angle": "25 deg from idc", "omega": "10 rad/s",
+                       "sense": "CW"},
+            "sliders": {"P": {"through": ["0 mm", "0 mm"], "direction": "90 deg"}},
+            "assembly": {"P": "P above O"}}
+    sol = solve(parse_scene(data, file="vertical.toml"))
+    assert math.degrees(sol.scene.driver.angle) == pytest.approx(65.0, abs=1e-12)
+    c = math.radians(65.0)
+    y = 0.1 * math.sin(c) + math.sqrt(0.4 ** 2 - (0.1 * math.cos(c)) ** 2)
+    assert sol.points["P"].position[1] == pytest.approx(y, rel=1e-12)

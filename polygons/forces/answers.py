@@ -52,6 +52,7 @@ FORCE_FUNCTIONS: dict[str, tuple[str, bool, tuple[int, int]]] = {
     "Fout_eta": ("force", False, (1, 1)),
     "Fc": ("force", False, (1, 1)), "phi": ("angle", False, (1, 1)),
     "Ff": ("force", False, (1, 1)), "mu": ("fraction", False, (1, 1)),
+    "Fp": ("force", False, (1, 1)),
 }
 _KIN_FLIP = ("omega", "alpha")
 _NAME = frozenset(string.ascii_letters + "_")
@@ -299,6 +300,8 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
                                  f"pressure angle is not defined", file=file)
             return c.pressure_angle
         return c.push if c.push is not None else c.magnitude
+    if fn == "Fp":      # the piston effort: what the piston hands its rod along the stroke
+        return piston_effort(scene, ne, model, args[0], file)
     if fn == "mass":
         return item(args[0]).mass
     if fn == "I":
@@ -380,6 +383,25 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
                              file=file)
         return machine.output_effort(model, st, out)
     raise SceneError(f"unknown quantity {fn!r}", file=file)  # pragma: no cover
+
+
+def piston_effort(scene, ne, model, lab: str, file) -> float:
+    """F_P, the piston effort of the slider ``lab``: the net force along the line of stroke
+    that the piston hands its connecting rod at the gudgeon pin (the gas force less the
+    piston's inertia force, its weight and guide friction where given), signed along the
+    guide's direction: the force of the pin on the rod, projected on the stroke."""
+    sliding = scene.model.guide.get(lab)
+    if sliding is None:
+        raise UnknownLabelError(f"{lab!r} is not a slider on a fixed guide (a piston): "
+                                f"{suggest(lab, scene.model.guide)}", file=file)
+    rods = [n for n in scene.model.members.get(lab, ())
+            if scene.model.body(n).kind in ("link", "lever")]
+    if len(rods) != 1:
+        raise SceneError(f"the piston effort at {lab} is the force on its connecting rod; "
+                         f"{lab} carries {len(rods)} links ({', '.join(rods) or 'none'})",
+                         file=file)
+    f = contact_force(model, ne, lab, rods[0])
+    return float(np.asarray(f) @ np.asarray(sliding.line.direction))
 
 
 @dataclass(frozen=True)
