@@ -224,6 +224,8 @@ MAX_POINTS = 250
 def parse_scene(data: dict, *, file: str = "<scene>",
                 extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
+    if isinstance(data, dict) and "ground" not in data and _lone_wheel(data):
+        data = {**data, "ground": _surface_point(data)}
     data, equivalents = contacts.rewrite(data, file) if isinstance(data, dict) else (data, ())
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
@@ -574,6 +576,24 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
     check_questions(scene, parse_quantity_expr, default_tol)   # [[questions]] (question_table)
     return scene
+
+
+def _lone_wheel(data) -> bool:
+    """A wheel rolling on a fixed surface and driving itself ([driver] wheel): the surface is
+    its frame, so the book states no fixed pivot (a lone wheel, its centre O)."""
+    drv, rolling = data.get("driver"), data.get("rolling")
+    return (isinstance(drv, dict) and isinstance(drv.get("wheel"), str)
+            and isinstance(rolling, dict) and isinstance(rolling.get(drv["wheel"]), dict)
+            and "through" in rolling[drv["wheel"]])
+
+
+def _surface_point(data) -> dict:
+    """The frame of a lone wheel: its surface's ``through`` point, labelled G (the ground; G1,
+    G2 ... where the scene uses G), a fixed point of the surface (velocity and acceleration
+    zero — not the wheel's point in contact, whose acceleration is r ω²)."""
+    used = set(re.findall(r"[A-Z][a-z0-9_']*", repr(data)))
+    label = next(x for x in ("G", *(f"G{k}" for k in range(1, 100))) if x not in used)
+    return {label: data["rolling"][data["driver"]["wheel"]]["through"]}
 
 
 #: the smallest link length or offset accepted, as a fraction of the mechanism's size, and the

@@ -78,7 +78,9 @@ TABLES: tuple[Table, ...] = (
     Table("ground", "Fixed pivots: one entry per label, its coordinates [x, y]; or, as books "
                     "place a pivot from another, a table { from = \"A\", distance = "
                     "\"300 mm\", angle = \"30 deg\" } (the angle CCW from +x, or \"30 deg CW\"; "
-                    "from a pivot given before it).", (
+                    "from a pivot given before it).  A lone wheel ([driver] wheel, "
+                    "[rolling.O]) needs none: its road is the frame, whose point G is the "
+                    "road's `through` point.", (
         Key("<LABEL>", "point", "position [x, y] of a fixed pivot (or { from, distance, angle })",
             example='["0 mm", "0 mm"]', dimension="length", sign="x to the right, y up"),
     ), required=True),

@@ -104,3 +104,50 @@ def test_a_vertical_engine_is_placed_from_inner_dead_centre():
     c = math.radians(65.0)
     y = 0.1 * math.sin(c) + math.sqrt(0.4 ** 2 - (0.1 * math.cos(c)) ** 2)
     assert sol.points["P"].position[1] == pytest.approx(y, rel=1e-12)
+
+
+LONE_WHEEL = """
+title = "A wheel rolling on a level road"
+[driver]
+wheel = "O"
+omega = "10 rad/s CW"
+alpha = "4 rad/s^2 CCW"
+[rolling.O]
+radius = "500 mm"
+through = ["0 m", "0 m"]
+direction = "0 deg"
+rim = { A = "90 deg", B = "0 deg", P = "-90 deg" }
+[[answers]]
+quantity = "v(A)"
+unit = "m/s"
+"""
+
+
+def test_a_lone_wheel_needs_no_ground_point_and_its_centre_is_the_books_o(tmp_path):
+    """"A wheel of 0.5 m radius, centre O, rolls without slipping on a level road at 10 rad/s
+    clockwise, slowing at 4 rad/s².  Find the velocity and acceleration of the point A at the
+    top, of B level with O and of the point P in contact with the road."  No [ground]: the
+    road is the frame.  v_O = rω, a_O = rα along the road; v_A = 2rω; P: v = 0, a = rω² up;
+    the rim points and O are points of the JSON like any other."""
+    path = tmp_path / "wheel.toml"
+    path.write_text(LONE_WHEEL, encoding="utf-8")
+    sol = solve(load_scene(path))
+    r, w, al = 0.5, -10.0, 4.0
+    vo, ao = -w * r, -al * r                     # rolling to the right, slowing
+    assert quantity(sol, "vs(O)") == pytest.approx(vo, rel=1e-12)
+    assert quantity(sol, "as(O)") == pytest.approx(ao, rel=1e-12)
+    assert quantity(sol, "v(A)") == pytest.approx(2 * r * abs(w), rel=1e-12)
+    assert quantity(sol, "v(B)") == pytest.approx(math.sqrt(2) * r * abs(w), rel=1e-12)
+    assert quantity(sol, "v(P)") == pytest.approx(0.0, abs=1e-12)
+    assert quantity(sol, "a(P)") == pytest.approx(r * w * w, rel=1e-12)
+    assert math.degrees(quantity(sol, "dir_a(P)")) == pytest.approx(90.0, abs=1e-9)
+    assert quantity(sol, "omega(O)") == pytest.approx(w, rel=1e-12)
+    from polygons.cli import main
+    out = tmp_path / "w.json"
+    assert main(["solve", str(path), "--json", "-o", str(out)]) == 0
+    points = json.loads(out.read_text(encoding="utf-8"))["points"]
+    assert {"O", "A", "B", "P"} <= set(points)
+    assert points["A"]["speed"] == pytest.approx(2 * r * abs(w), rel=1e-12)
+    assert points["P"]["acceleration_magnitude"] == pytest.approx(r * w * w, rel=1e-12)
+    # the frame's one point is the road's `through` point, G, at rest
+    assert points["G"]["speed"] == 0.0 and points["G"]["position"] == [0.0, 0.0]
