@@ -15,7 +15,7 @@ from .schema import Key, Table
 #: modules that declare scene tables (a module that does not exist yet is skipped)
 MODULES = ("polygons.scene", "polygons.topology", "polygons.options", "polygons.loads",
            "polygons.pins", "polygons.exam_table", "polygons.contacts",
-           "polygons.question_table")
+           "polygons.question_table", "polygons.cam_profiles")
 REFERENCE = "docs/scene-reference.md"
 JSON_SCHEMA = "polygons/scene.schema.json"
 _LABEL_RE = r"^[A-Z][a-z0-9_']*$"

@@ -39,7 +39,7 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from . import contacts, topology
+from . import cam_profiles, contacts, topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
 from .exam_table import spec as exam_spec
@@ -226,6 +226,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
     if isinstance(data, dict) and "ground" not in data and _lone_wheel(data):
         data = {**data, "ground": _surface_point(data)}
+    if isinstance(data, dict) and "cam_profiles" in data:     # a cam by its profile
+        data = cam_profiles.rewrite(data, file)
     data, equivalents = contacts.rewrite(data, file) if isinstance(data, dict) else (data, ())
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,

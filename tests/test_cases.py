@@ -80,6 +80,8 @@ OWN_EXACT_CHECK = {
     **{name: ("test_conditions.py",
               "test_question_cases_exact_values_are_the_closed_form_and_ours")
        for name in ("question-engine-conditions", "question-offset-quick-return")},
+    "cam-profile-circular-arc": ("test_cam_profiles.py",
+                                 "test_case_exact_answers_are_the_closed_form"),
     "ratio-four-bar": ("test_conditions.py",
                        "test_ratio_case_exact_answers_are_the_closed_form_and_kennedy"),
     "khurmi-ex7.2": ("test_centres.py", "test_khurmi_exact_answers_are_the_closed_form_and_ours"),
