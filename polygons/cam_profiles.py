@@ -65,6 +65,11 @@ TABLES: tuple[Table, ...] = (
             example='"circular arc"', default="circular arc"),
         Key("flank_radius", "quantity", "a circular-arc cam's flank radius R",
             example='"60 mm"', dimension="length"),
+        Key("angle_of_action", "quantity", "the cam's turn while the follower moves (rise "
+                                           "and return, 2 φ_b): with a circular-arc cam and "
+                                           "no flank_radius, the flank radius is found from "
+                                           "it; otherwise checked against the profile (to "
+                                           "0.05°)", example='"150 deg"', dimension="angle"),
         Key("follower", "string", "'knife', 'roller' or 'flat' (translating)",
             example='"roller"', default="roller"),
         Key("roller", "quantity", "the roller's radius", example='"10 mm"',
@@ -198,10 +203,15 @@ def profile_of(table: dict, file: str, where: str) -> Profile:
         raise SceneError("the nose centre must lie beyond O (base_radius + lift > "
                          "nose_radius)", file=file, where=f"{where}.lift")
     flank = None
+    action = (_q(table["angle_of_action"], "angle", file, f"{where}.angle_of_action")
+              if "angle_of_action" in table else None)
+    if kind == "circular arc" and "flank_radius" not in table and action is not None:
+        flank = flank_for_action(r1, r2, lift, action, file, f"{where}.angle_of_action")
+        return Profile(r1, r2, lift, flank)
     if kind == "circular arc":
         if "flank_radius" not in table:
-            raise SceneError("a circular-arc cam needs flank_radius (or kind = \"tangent\")",
-                             file=file, where=where)
+            raise SceneError("a circular-arc cam needs flank_radius or angle_of_action (or "
+                             "kind = \"tangent\")", file=file, where=where)
         flank = _q(table["flank_radius"], "length", file, f"{where}.flank_radius")
         p = Profile(r1, r2, lift, flank)
         u = (p.d ** 2 - (flank - r2) ** 2 + (flank - r1) ** 2) / (2 * p.d)
@@ -212,7 +222,41 @@ def profile_of(table: dict, file: str, where: str) -> Profile:
     elif "flank_radius" in table:
         raise SceneError("a tangent cam's flanks are straight: leave flank_radius out",
                          file=file, where=f"{where}.flank_radius")
-    return Profile(r1, r2, lift, flank)
+    prof = Profile(r1, r2, lift, flank)
+    if action is not None and abs(2 * prof.spans()[1] - action) > math.radians(0.05):
+        raise SceneError(f"angle_of_action {show(table['angle_of_action'])} does not fit the "
+                         f"profile, whose angle of action is "
+                         f"{math.degrees(2 * prof.spans()[1]):.6g} deg", file=file,
+                         where=f"{where}.angle_of_action")
+    return prof
+
+
+def flank_for_action(r1: float, r2: float, lift: float, action: float, file, where) -> float:
+    """The flank radius R of the circular-arc cam whose angle of action is ``action``: 2 φ_b
+    falls from 360° (the smallest flank that touches both circles) to the tangent cam's 2 β as
+    R grows; bisection on log R."""
+    tangent = 2 * Profile(r1, r2, lift, None).spans()[1]
+    if not tangent < action < 2 * math.pi:
+        raise SceneError(f"a circular-arc cam with this base circle, nose and lift has an angle "
+                         f"of action between {math.degrees(tangent):.6g} deg (straight flanks) "
+                         f"and 360 deg", file=file, where=where)
+    d = r1 + lift - r2
+
+    def phi_b(R):
+        u = (d * d - (R - r2) ** 2 + (R - r1) ** 2) / (2 * d)
+        if (R - r1) ** 2 <= u * u:
+            return math.pi
+        return Profile(r1, r2, lift, R).spans()[1]
+    lo, hi = math.log(r1), math.log(1e9 * r1)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if 2 * phi_b(math.exp(mid)) > action:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo < 1e-15:
+            break
+    return math.exp(0.5 * (lo + hi))
 
 
 def rewrite(data: dict, file: str) -> dict:

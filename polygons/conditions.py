@@ -220,6 +220,12 @@ def answer(scene: Scene, q: Question) -> Finding:
     if q.find != "position" and not isinstance(scene.driver, Crank):
         raise SceneError("find = 'angle' or 'omega' needs a crank driver", file=scene.file,
                          where=q.where + ".find")
+    cams = [e.at for e in getattr(scene, "equivalents", ()) if "cam" in e.kind]
+    if cams:
+        raise SceneError(f"the cam at {cams[0]} is replaced by its equivalent linkage at this "
+                         f"instant only (the profile's part in contact changes as it turns): "
+                         f"a question over a range of inputs is not served for it",
+                         file=scene.file, where=q.where)
     f, dim = _measure(scene, q)
     xs, scenes, periodic = _samples(scene, q)
     fs = np.array([_safe(f, s) for s in scenes])

@@ -164,3 +164,19 @@ def test_a_bad_profile_is_refused_in_one_line(change, words):
     text = scene_text(60.0).replace(*change)
     with pytest.raises(SceneError, match=words):
         parse_scene(parse_toml(text, "c.toml"), file="c.toml")
+
+
+def test_the_flank_radius_from_the_angle_of_action():
+    """"... a circular-arc cam, base circle 25 mm, nose 8 mm, lift 20 mm, angle of action
+    175.13°": the flank radius found is the one whose flank meets the base circle at half that
+    angle from the nose axis (geometry() of this test: 60 mm gives 2 × 87.566°)."""
+    from polygons.cam_profiles import profile_of
+    d, P, phi_n, phi_b = geometry("circular arc")
+    table = {"base_radius": "25 mm", "nose_radius": "8 mm", "lift": "20 mm",
+             "angle_of_action": f"{math.degrees(2 * phi_b)!r} deg", "stroke": "90 deg"}
+    assert profile_of(table, "c.toml", "cam_profiles.R").flank == pytest.approx(RF, rel=1e-9)
+    bad = dict(table, flank_radius="50 mm")
+    with pytest.raises(SceneError, match="does not fit the profile"):
+        profile_of(bad, "c.toml", "cam_profiles.R")
+    with pytest.raises(SceneError, match="between 125.296 deg"):
+        profile_of(dict(table, angle_of_action="100 deg"), "c.toml", "cam_profiles.R")

@@ -253,3 +253,15 @@ def test_a_ratio_is_graded_like_any_other_answer(capsys):
     from polygons.cli import main
     assert main(["check", str(RATIO), "--measured", "v(C)/v(B)=0.85"]) == 0
     assert main(["check", str(RATIO), "--measured", "v(C)/v(B)=0.95"]) == 3
+
+
+def test_a_question_on_a_cam_is_refused_in_words():
+    import tomllib
+    from polygons.errors import SceneError
+    from polygons.scene import parse_scene
+    path = ROOT / "cases" / "cam-profile-circular-arc.toml"
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    data["questions"] = [{"find": "angle", "quantity": "vs(R)", "condition": "max",
+                          "unit": "deg"}]
+    with pytest.raises(SceneError, match="at this instant only"):
+        conditions.answer_all(parse_scene(data, file=str(path)))
