@@ -318,7 +318,7 @@ def rewrite(data: dict, file: str) -> dict:
         raise SceneError(f"give the cam's centre {centre_o} as [x, y]", file=file,
                          where=f"ground.{centre_o}")
     c = got.centre
-    out = {key: value for key, value in data.items() if key != TABLE}
+    out = dict(data)            # the table stays: kept raw in Scene.extra for diagram()
     out["links"] = {**data.get("links", {}),
                     drv["crank"]: f"{math.hypot(*c)!r} m"}
     out["driver"] = {**drv, "angle": f"{math.degrees(axis + math.atan2(c[1], c[0]))!r} deg"}

@@ -63,7 +63,7 @@ OPTION_KEYS = ("sweep", "diagram", "handout", "centres")
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                   "force_answers", "flywheel", "efficiency", "pins", "least_velocity",
-                  "pin_answers", "exam", "questions")
+                  "pin_answers", "exam", "questions", "cam_profiles")
 DIAGRAMS = ("velocity", "acceleration")
 #: the text keys of [source] (where the case comes from; shown in reports and handouts)
 SOURCE_TEXT = ("id", "seed", "example", "category", "statement", "conventions", "notes",

@@ -180,3 +180,27 @@ def test_the_flank_radius_from_the_angle_of_action():
         profile_of(bad, "c.toml", "cam_profiles.R")
     with pytest.raises(SceneError, match="between 125.296 deg"):
         profile_of(dict(table, angle_of_action="100 deg"), "c.toml", "cam_profiles.R")
+
+
+def test_the_displacement_diagram_over_a_turn_is_each_parts_closed_form():
+    """cam_diagram.diagram: the equivalent linkage of the part in contact solved at each
+    cam angle (the dwell on the base circle at r1 + roller, at rest), against closed_form;
+    a sweep, which would follow one part's linkage round the turn, is refused."""
+    from polygons import cam_diagram
+    from polygons.errors import PolygonsError
+    from polygons.sweep import sweep
+    scene = load_scene(CASE)
+    rows = cam_diagram.diagram(scene, 24)
+    assert len(rows) == 24 and {r.part for r in rows} == {"base circle", "flank", "nose"}
+    for r in rows:
+        part, s, v, a = closed_form(r.angle, "roller", "circular arc")
+        assert r.part == part
+        if part == "base circle":
+            assert (r.s, r.v, r.a) == (R1 + RR, 0.0, 0.0)
+            continue
+        assert r.s == pytest.approx(s, rel=1e-12)
+        assert r.v == pytest.approx(v, rel=1e-9, abs=1e-12)
+        assert r.a == pytest.approx(a, rel=1e-9)
+    assert max(r.s for r in rows) == pytest.approx(R1 + RR + LIFT, rel=1e-12)   # the lift
+    with pytest.raises(PolygonsError, match="diagram"):
+        sweep(scene, 8)
