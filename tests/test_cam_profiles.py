@@ -204,3 +204,9 @@ def test_the_displacement_diagram_over_a_turn_is_each_parts_closed_form():
     assert max(r.s for r in rows) == pytest.approx(R1 + RR + LIFT, rel=1e-12)   # the lift
     with pytest.raises(PolygonsError, match="diagram"):
         sweep(scene, 8)
+
+
+def test_the_interactive_page_is_refused_in_one_line(tmp_path):
+    from polygons.cli import main
+    assert main(["handout", str(CASE), "--interactive", "-o", str(tmp_path / "p.html")]) == 1
+    assert not (tmp_path / "p.html").exists()
