@@ -20,6 +20,8 @@ WHERE = {
     "polygons.scene": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
+    "polygons.question_table": "scene", "polygons.cam_profiles": "scene",
+    "polygons.cam_diagram": "interpreters", "polygons.conditions": "forces",
     "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
     "polygons.loadeffort": "scene",

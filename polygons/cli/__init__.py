@@ -25,6 +25,8 @@ COMMANDS = {
                                         "velocities"),
     "exam": ("polygons.cli.exam", "seeded exam variants: Moodle XML, GIFT, QTI, key and "
                                   "worksheets"),
+    "ask": ("polygons.cli.ask", "answer the scene's [[questions]]: the angle or speed at which "
+                                "a condition holds, stroke, dead centres, time ratio"),
     "gallery": ("polygons.cli.gallery", "write every case's handout and worksheet and an "
                                         "index page"),
 }
