@@ -26,7 +26,7 @@ def test_no_silent_disagreement_across_the_domain(kind):
 def test_the_check_finds_a_wrong_contact_number(monkeypatch):
     """The old bearing output (the contact point's speed along the bar reported as the
     sliding velocity) is a silent disagreement for the check."""
-    import polygons.contacts as contacts
+    import polygons.higher as contacts
     right = contacts.bearing
 
     def old(sol, q):
