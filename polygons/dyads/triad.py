@@ -251,16 +251,15 @@ class Triad:
         def read(L, O, Q):
             """(the vector the rate is read from, the words saying so)."""
             if tangential is None:
-                return f"{V(O)}{V(Q)}", f"{V(O)}{V(Q)}, the velocity of {Q} relative to {O},"
+                return f"{V(O)}{V(Q)}", f"{V(O)}{V(Q)}"
             t = f"{tangential[L][0]}{V(tangential[L][1])}"
-            return t, (f"{t}, the tangential part of {V(O)}{V(Q)} (from the end of the "
-                       f"centripetal vector ω_{L}² × {O}{Q} to {V(Q)}, ⟂ {O}{Q}),")
+            return t, f"{t} (the tangential part of {V(O)}{V(Q)})"
         vec, words = read(P, S, X)
         plate = f"{B}{C}{X}"            # the plate named for its corners (the link P carries it)
         b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
               f"{sym}_{plate} = {vec} / {S}{X}",
-              f"The {what} of the plate {plate} (the {what} of {P}) is {words} divided by "
-              f"{S}{X}.", component=comp, link=P)
+              f"The {what} of the plate {plate} is {words} divided by {S}{X}.",
+              component=comp, link=P)
         image.emit_image(b, B, P, S, X)
         image.emit_image(b, C, P, S, X)
         for L, O, Q in ((self.link_b, self.ob, B), (self.link_c, self.oc, C),
@@ -285,12 +284,11 @@ class Triad:
         one line (S on PQ produced)."""
         if terms is None:
             name = f"(a_{Q})_{P}^t"
-            why = f"for the tangential acceleration {name}"
+            why = "for the tangential accelerations"
         else:
             q1, p1, q2, p2 = terms
             name = f"(a_{q1})_{p1}^t + (a_{q2})_{p2}^t"
-            why = (f"for the sum of the tangential accelerations {name}, both ⟂ {P}{Q} "
-                   f"({q2} is on {P}{Q} produced)")
+            why = f"for {name} (both ⟂ {P}{Q})"
         return b.add(Kind.LINE, Op.LINE_PERP, (P, Q), f"line ⟂ {P}{Q}", frm, None,
                      "tangential", name, f"{name} ⟂ {P}{Q}",
                      f"Through {frm} draw a line ⟂ {P}{Q} {why}, of unknown length.",
