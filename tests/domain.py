@@ -294,9 +294,11 @@ def _solves(mech, x):
 
 
 def _bisect(mech, good, bad, iters=80):
+    """The end of what solve answers between ``good`` and ``bad``, to 1e-13 (rad or ×size)."""
+    unit = 1.0 if mech.crank else mech.size
     for _ in range(iters):
         mid = 0.5 * (good + bad)
-        if mid in (good, bad):
+        if mid in (good, bad) or abs(good - bad) < 1e-13 * unit:
             break
         if _solves(mech, mid) is not None:
             good = mid
@@ -309,6 +311,24 @@ def _angle(mech, x):
     sol = _solves(mech, x)
     a = None if sol is None else sol.min_intersection_angle_deg
     return math.inf if a is None else a
+
+
+def _golden(mech, lo, hi, iters=44):
+    """The local minimum of the smallest construction angle in [lo, hi] (golden section, one
+    solve per step: the interval shrinks to 0.618⁴⁴ ≈ 6e-10 of itself)."""
+    g = (math.sqrt(5) - 1) / 2
+    m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
+    f1, f2 = _angle(mech, m1), _angle(mech, m2)
+    for _ in range(iters):
+        if f1 < f2:
+            hi, m2, f2 = m2, m1, f1
+            m1 = hi - g * (hi - lo)
+            f1 = _angle(mech, m1)
+        else:
+            lo, m1, f1 = m1, m2, f2
+            m2 = lo + g * (hi - lo)
+            f2 = _angle(mech, m2)
+    return 0.5 * (lo + hi)
 
 
 def poses(mech: Mechanism, rng: random.Random, n_random: int, grid: int = 48):
@@ -348,14 +368,7 @@ def poses(mech: Mechanism, rng: random.Random, n_random: int, grid: int = 48):
     angles = [_angle(mech, x) if k else math.inf for x, k in zip(xs, ok)]
     for i in range(1, len(xs) - 1):
         if ok[i] and angles[i] < angles[i - 1] and angles[i] < angles[i + 1] and angles[i] < 20:
-            lo, hi = xs[i - 1], xs[i + 1]
-            for _ in range(60):     # golden section on the smallest angle
-                m1, m2 = lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo)
-                if _angle(mech, m1) < _angle(mech, m2):
-                    hi = m2
-                else:
-                    lo = m1
-            x = 0.5 * (lo + hi)
+            x = _golden(mech, xs[i - 1], xs[i + 1])
             for d in (0.0, near, -near):
                 out.append((x + d, max(dist(x + d), near), "at a parallel pair"))
     return out
@@ -588,7 +601,8 @@ def _contact(d: _Diff, sol, sw, q, h, w, al, vs, as_, rv, ra):
                  k=1 / q.radius)
 
 
-def run(kinds, seeds, n_random: int, rng_seed: int = 0, limit: int | None = None):
+def run(kinds, seeds, n_random: int, rng_seed: int = 0, limit: int | None = None,
+        grid: int = 48):
     """Every outcome over the random mechanisms ``seeds`` of each of ``kinds`` — at most
     ``limit`` of them per kind that assemble somewhere (a random mechanism may not)."""
     out = []
@@ -601,7 +615,7 @@ def run(kinds, seeds, n_random: int, rng_seed: int = 0, limit: int | None = None
             if mech is None:
                 continue
             rng = random.Random(f"poses/{kind}/{seed}/{rng_seed}")
-            todo = poses(mech, rng, n_random)
+            todo = poses(mech, rng, n_random, grid)
             used += bool(todo)
             for x, dist, why in todo:
                 out.append(check(mech, x, dist, why))
