@@ -475,6 +475,7 @@ def check(mech: Mechanism, x: float, dist: float, why: str) -> Outcome:
                       d2H * w * w + d1H * al, as_, rounding=ra)
     for q in getattr(scene, "equivalents", ()):
         _contact(d, sol, sw, q, h, w, al, vs, as_, rv, ra)
+    nearest = _nearest(mech, scene, sol, x, xs)
     for i in (2, 4):        # the closure chosen by the words at x ± h: the one followed?
         nb = _solves(mech, xs[i])
         for p in labels if nb is not None else ():
@@ -486,7 +487,7 @@ def check(mech: Mechanism, x: float, dist: float, why: str) -> Outcome:
                 break
     rigid = _rigid(sol, scene, vs, as_, mech.size)
     out.checks = d.n + len(labels) + rigid[0]
-    failed = mismatch + ([max(d.worst)[1]] if d.worst else []) + rigid[1]
+    failed = mismatch + ([max(d.worst)[1]] if d.worst else []) + rigid[1] + nearest
     if failed:
         out.verdict = "warned" if warned else "silent"
         out.detail = "; ".join(failed)[:400]
@@ -497,6 +498,28 @@ def check(mech: Mechanism, x: float, dist: float, why: str) -> Outcome:
         out.verdict = "warned"
         out.detail = warned[0][:200]
     return out
+
+
+def _nearest(mech, scene, sol, x, xs):
+    """A closure chosen ``near`` a point is the nearest of all: each neighbour's closure
+    (solve at x ± h, then followed back to x by the sweep) found nearer than the one solve
+    took at x means solve missed a closure there — a second route to the closures."""
+    bad = []
+    for label, br in scene.assembly.items():
+        if br.relation != "near" or label not in sol.points:
+            continue
+        took = math.dist(sol.points[label].position, br.near)
+        for i in (2, 4):
+            try:
+                back = sweep(mech.at(xs[i]), inputs=[x]).position(label)[0]
+            except PolygonsError:
+                continue
+            if np.all(np.isfinite(back)) and math.dist(back, br.near) < took - 1e-6 * mech.size:
+                bad.append(f"near {label}: solve took {sol.points[label].position} "
+                           f"({took:.6g} from the near point) but the closure followed from "
+                           f"{xs[i]!r} is at {tuple(back)} ({math.dist(back, br.near):.6g})")
+                break
+    return bad
 
 
 def _rigid(sol, scene, vs, as_, size):
