@@ -59,7 +59,7 @@ def main(argv=None) -> int:
                     silent.append(o.replay)
             mechs[kind] += domain.make(kind, seed) is not None
             seed += 1
-        print(f"{kind:22s} {sum(counts[kind].values()):7d} poses  "
+        print(f"{kind:22s} {mechs[kind]:5d} mechanisms {sum(counts[kind].values()):7d} poses  "
               + "  ".join(f"{TITLES[v]} {counts[kind][v]}" for v in VERDICTS)
               + f"  flips {flips[kind]}", flush=True)
     total = sum(sum(c.values()) for c in counts.values())
