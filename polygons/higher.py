@@ -12,7 +12,8 @@ from .wheels import rolling
 #: Every output of a higher pair (``higher_pair`` in ``solve --json``, :func:`higher`), by the
 #: kind of contact: (field, meaning).  SI units; vectors [x, y]; rates CCW positive.  Generated
 #: into docs/contact-outputs.md (``python -m polygons.reference``); tests/test_contact_outputs.py
-#: holds :func:`higher` to it (no field unnamed here) and checks each by finite differences.
+#: holds :func:`higher` to it (no field unnamed here); tests/domain.py checks each by finite
+#: differences of positions on random mechanisms.
 OUTPUTS: dict[str, tuple[tuple[str, str], ...]] = {
     "bearing": (
         ("contact", "the contact point T, m: the foot of the perpendicular from the circle's "

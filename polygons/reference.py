@@ -300,7 +300,9 @@ def contact_outputs() -> str:
              "velocity of the two bodies' material points at the contact; the speed at which "
              "the contact point itself moves over a body is a separate field, named for it. "
              "Each field is checked against finite differences of positions on random "
-             "mechanisms (tests/test_contact_outputs.py).", ""]
+             "mechanisms (tests/domain.py, run by tests/test_domain.py and "
+             "benchmarks/domain_checks.py); the bar's by hand in tests/test_contact_outputs.py.",
+             ""]
     for kind, fields in OUTPUTS.items():
         lines += [f"## {kind} (`[{TABLE_OF[kind]}]`)", ""]
         if not fields:
