@@ -63,6 +63,12 @@ def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
     return out
 
 
+def _triads(sol: Solution) -> list:
+    """The class-III groups of the solution's plan (their auxiliary points S)."""
+    from polygons.dyads.triad import Triad
+    return [d for d in sol.plan.dyads if isinstance(d, Triad)]
+
+
 #: the fixed link between pivots is listed pair by pair up to this many pivots (beyond it,
 #: pivot to next pivot in the scene's order)
 MAX_FIXED_PAIRS = 3
@@ -96,7 +102,18 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     wheels = rolling_wheels(scene)
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
     from . import rolling           # a wheel on a moving surface (placed by no-slip)
-    bb = bounds(list(pos.values()) + rolling.extent(sol))
+    triads = _triads(sol)
+    aux = {t.s for t in triads}
+    bb = bounds([p for lab, p in pos.items() if lab not in aux] + rolling.extent(sol))
+    far = set()
+    for lab in aux:     # the Assur point S: drawn when near, else said (at infinity: AB ∥ DC)
+        if lab in pos:
+            grown = bounds([(bb.x0, bb.y0), (bb.x1, bb.y1), pos[lab]])
+            if (grown.x1 - grown.x0) + (grown.y1 - grown.y0) > \
+                    2.0 * ((bb.x1 - bb.x0) + (bb.y1 - bb.y0)):
+                far.add(lab)
+            else:
+                bb = grown
     extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
     if scale is None:
         scale = scales.choose("length", extent, [], paper, pad_mm=PAD_MM)
@@ -237,6 +254,34 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         neighbours[ln.a].append(P[ln.b])
         neighbours[ln.b].append(P[ln.a])
 
+    # a class-III group's auxiliary point S, where AB and DC produced meet (its velocity and
+    # acceleration polygons are drawn through it): the lines produced dashed, S marked
+    for t in triads:
+        if t.s not in P:
+            continue
+        if t.s in far:
+            mid = P[t.b] if t.b in P else None
+            if mid is not None:
+                eq_notes.append((f"{t.s} (where {t.ob}{t.b} and {t.oc}{t.c} produced meet) is "
+                                 f"off the drawing: the lines are nearly parallel", mid))
+            continue
+        sp = P[t.s]
+        for a_, b_ in ((t.ob, t.b), (t.oc, t.c)):
+            if a_ not in P or b_ not in P:
+                continue
+            pa, pb = P[a_], P[b_]
+            ab = (pb[0] - pa[0], pb[1] - pa[1])
+            L2 = ab[0] ** 2 + ab[1] ** 2
+            u = ((sp[0] - pa[0]) * ab[0] + (sp[1] - pa[1]) * ab[1]) / L2 if L2 else 0.5
+            if u > 1.0 or u < 0.0:          # S beyond an end: the link produced to it
+                end = pb if u > 1.0 else pa
+                back.append(Segment(_r(end), _r(sp), "construction", cls=f"produced {a_}{b_}"))
+                placer.soft(end, sp)
+        back.append(Circle(_r(sp), 0.7, "vertex", cls=f"auxiliary-point at-{t.s}"))
+        placer.block(Box(sp[0] - 0.8, sp[1] - 0.8, sp[0] + 0.8, sp[1] + 0.8))
+        eq_notes.append((f"{t.s}: {t.ob}{t.b} and {t.oc}{t.c} produced meet (auxiliary point)",
+                         sp))
+
     # points rigid with a link: continuation or plate
     for lab, bp in scene.model.points.items():
         if lab not in P:
@@ -350,7 +395,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     # pins (one per place) and labels
     groups: list[list[str]] = []
     for lab in scene.labels:
-        if lab not in P:
+        if lab not in P or lab in aux:
             continue
         for gr in groups:
             q = P[gr[0]]
