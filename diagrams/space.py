@@ -9,6 +9,7 @@ levers an open slot around the pin, and the input crank an arc arrow with its se
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from polygons.evaluate import Solution, link_ends
 from polygons.contacts import wheel_of
@@ -63,10 +64,22 @@ def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
     return out
 
 
+@dataclass(frozen=True)
+class _Auxiliary:
+    """A construction point a group draws on the space diagram: s where ob·b and oc·c
+    produced meet (a class-III group's Assur point S)."""
+    s: str
+    ob: str
+    b: str
+    oc: str
+    c: str
+
+
 def _triads(sol: Solution) -> list:
-    """The class-III groups of the solution's plan (their auxiliary points S)."""
-    from polygons.dyads.triad import Triad
-    return [d for d in sol.plan.dyads if isinstance(d, Triad)]
+    """The auxiliary points of the solution's groups (each group says its own: a class-III
+    group's Assur point S)."""
+    return [_Auxiliary(s, ob, b, oc, c) for d in sol.plan.dyads
+            for s, (ob, b), (oc, c) in getattr(d, "auxiliary_points", tuple)()]
 
 
 #: the fixed link between pivots is listed pair by pair up to this many pivots (beyond it,

@@ -57,6 +57,11 @@ class Triad:
     #: :data:`polygons.forces.graphical.POLYGONS`
     force_polygon = "triad"
 
+    def auxiliary_points(self) -> tuple[tuple[str, tuple[str, str], tuple[str, str]], ...]:
+        """The construction points the space diagram draws with the group: (S, (OB, B),
+        (OC, C)): Assur's point S where OB·B and OC·C produced meet."""
+        return ((self.s, (self.ob, self.b), (self.oc, self.c)),)
+
     def force_bodies(self) -> tuple[str, ...]:
         """The bodies whose force polygon this group closes."""
         return (((self.plate,) if self.ternary else tuple(self.plate_links))
