@@ -9,6 +9,7 @@ levers an open slot around the pin, and the input crank an arc arrow with its se
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from polygons.evaluate import Solution, link_ends
 from polygons.contacts import wheel_of
@@ -63,6 +64,24 @@ def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
     return out
 
 
+@dataclass(frozen=True)
+class _Auxiliary:
+    """A construction point a group draws on the space diagram: s where ob·b and oc·c
+    produced meet (a class-III group's Assur point S)."""
+    s: str
+    ob: str
+    b: str
+    oc: str
+    c: str
+
+
+def _triads(sol: Solution) -> list:
+    """The auxiliary points of the solution's groups (each group says its own: a class-III
+    group's Assur point S)."""
+    return [_Auxiliary(s, ob, b, oc, c) for d in sol.plan.dyads
+            for s, (ob, b), (oc, c) in getattr(d, "auxiliary_points", tuple)()]
+
+
 #: the fixed link between pivots is listed pair by pair up to this many pivots (beyond it,
 #: pivot to next pivot in the scene's order)
 MAX_FIXED_PAIRS = 3
@@ -72,7 +91,7 @@ def fixed_links(scene) -> list[str]:
     """The fixed link (the frame) as the books give it: 'AD = 1000 mm (fixed link)' between
     the fixed pivots, so that a four-bar's fourth link is listed with the other three."""
     g = list(scene.ground.items())
-    named = {frozenset((ln.a, ln.b)) for ln in scene.links.values()}
+    named = {frozenset((ln.a, ln.b)) for ln in scene.model.links()}
     pairs = ([(g[i], g[j]) for i in range(len(g)) for j in range(i + 1, len(g))]
              if len(g) <= MAX_FIXED_PAIRS else list(zip(g, g[1:])))
     out = []
@@ -96,7 +115,18 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     wheels = rolling_wheels(scene)
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
     from . import rolling           # a wheel on a moving surface (placed by no-slip)
-    bb = bounds(list(pos.values()) + rolling.extent(sol))
+    triads = _triads(sol)
+    aux = {t.s for t in triads}
+    bb = bounds([p for lab, p in pos.items() if lab not in aux] + rolling.extent(sol))
+    far = set()
+    for lab in aux:     # the Assur point S: drawn when near, else said (at infinity: AB ∥ DC)
+        if lab in pos:
+            grown = bounds([(bb.x0, bb.y0), (bb.x1, bb.y1), pos[lab]])
+            if (grown.x1 - grown.x0) + (grown.y1 - grown.y0) > \
+                    2.0 * ((bb.x1 - bb.x0) + (bb.y1 - bb.y0)):
+                far.add(lab)
+            else:
+                bb = grown
     extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
     if scale is None:
         scale = scales.choose("length", extent, [], paper, pad_mm=PAD_MM)
@@ -222,7 +252,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             back.append(Polyline(arc, "slot", cls="contact-arc"))
         if q.roller:
             back.append(Circle(_r(at), round(q.roller * k, 3), "slot", cls="roller"))
-    for name, ln in scene.links.items():
+    for ln in scene.model.links():
+        name = ln.name
         if name in slotted or ln.a not in P or ln.b not in P:
             continue
         if name in equivalent:
@@ -236,8 +267,36 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         neighbours[ln.a].append(P[ln.b])
         neighbours[ln.b].append(P[ln.a])
 
+    # a class-III group's auxiliary point S, where AB and DC produced meet (its velocity and
+    # acceleration polygons are drawn through it): the lines produced dashed, S marked
+    for t in triads:
+        if t.s not in P:
+            continue
+        if t.s in far:
+            mid = P[t.b] if t.b in P else None
+            if mid is not None:
+                eq_notes.append((f"{t.s} (where {t.ob}{t.b} and {t.oc}{t.c} produced meet) is "
+                                 f"off the drawing: the lines are nearly parallel", mid))
+            continue
+        sp = P[t.s]
+        for a_, b_ in ((t.ob, t.b), (t.oc, t.c)):
+            if a_ not in P or b_ not in P:
+                continue
+            pa, pb = P[a_], P[b_]
+            ab = (pb[0] - pa[0], pb[1] - pa[1])
+            L2 = ab[0] ** 2 + ab[1] ** 2
+            u = ((sp[0] - pa[0]) * ab[0] + (sp[1] - pa[1]) * ab[1]) / L2 if L2 else 0.5
+            if u > 1.0 or u < 0.0:          # S beyond an end: the link produced to it
+                end = pb if u > 1.0 else pa
+                back.append(Segment(_r(end), _r(sp), "construction", cls=f"produced {a_}{b_}"))
+                placer.soft(end, sp)
+        back.append(Circle(_r(sp), 0.7, "vertex", cls=f"auxiliary-point at-{t.s}"))
+        placer.block(Box(sp[0] - 0.8, sp[1] - 0.8, sp[0] + 0.8, sp[1] + 0.8))
+        eq_notes.append((f"{t.s}: {t.ob}{t.b} and {t.oc}{t.c} produced meet (auxiliary point)",
+                         sp))
+
     # points rigid with a link: continuation or plate
-    for lab, bp in scene.points.items():
+    for lab, bp in scene.model.points.items():
         if lab not in P:
             continue
         try:
@@ -349,7 +408,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     # pins (one per place) and labels
     groups: list[list[str]] = []
     for lab in scene.labels:
-        if lab not in P:
+        if lab not in P or lab in aux:
             continue
         for gr in groups:
             q = P[gr[0]]
@@ -358,7 +417,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
                 break
         else:
             groups.append([lab])
-    body = set(scene.points)
+    body = set(scene.model.points)
     for gr in groups:
         p = P[gr[0]]
         at = " ".join(f"at-{token(lab)}" for lab in gr)
@@ -406,7 +465,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         arc_inputs(c, L, drv.angle, arcs)
     elif rod is not None:   # the book gives the rod's ω and α: arcs about its middle (the
         name, w, al = rod   # slider's v and a are answers then, not drawn)
-        a, b = next(((ln.a, ln.b) for ln in scene.links.values()
+        a, b = next(((ln.a, ln.b) for ln in scene.model.links()
                      if name in (ln.a + ln.b, ln.b + ln.a)), (None, None))
         if a in P and b in P:
             c = ((P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2)
@@ -478,9 +537,9 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     scene = sol.scene
     content, box, sc, _ = space_layout(sol, scale, paper)
     legend = [("Links:", "bold")]
-    for name, ln in scene.links.items():
+    for ln in scene.model.links():
         if ln.a in sol.placement.points and ln.b in sol.placement.points:
-            legend.append((f"{name} = {number(ln.length * 1000)} mm", "normal"))
+            legend.append((f"{ln.name} = {number(ln.length * 1000)} mm", "normal"))
     legend += [(text, "normal") for text in fixed_links(scene)]
     for slot in scene.model.slots() + scene.model.crossings():
         legend.append((f"{slot.at} slides in the slot of {slot.carrier} "
@@ -522,7 +581,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
         else:
             legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
                            f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))
-    for point, sl in scene.prescribed.items():      # the second input's values
+    for point, sl in scene.model.prescribed.items():      # the second input's values
         legend.append((f"collar {point}: {number(sl.position * 1000)} mm from "
                        f"{sl.p}, ṡ = {number(sl.velocity)} m/s, s̈ = "
                        f"{number(sl.acceleration)} m/s² along {sl.link}", "normal"))

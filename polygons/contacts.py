@@ -45,6 +45,7 @@ from .errors import SceneError, UnsupportedError, show
 from .reader import LABEL
 from .schema import Key, Table
 from .units import parse_quantity
+from .higher import OUTPUTS, _bearing_lines, bearing, higher, on_arc  # noqa: F401
 from .wheels import _moving_lines, _rim_lines, rolling, wheel_centres, wheel_point
 
 TABLES: tuple[Table, ...] = (
@@ -146,6 +147,8 @@ TABLE_OF = {"curved slot": "curved_slots", "cam": "cams", "flat-faced cam": "cam
 #: the force tables a scene with contacts cannot carry yet
 FORCE_TABLES = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                 "force_answers", "flywheel", "efficiency")
+
+
 
 
 @dataclass(frozen=True)
@@ -655,34 +658,6 @@ def _plate(table, key, label, ang, sliders, file, where):
     return name
 
 
-def higher(sol, q: Equivalent) -> dict | None:
-    """The higher pair's own numbers read off the solved equivalent linkage: a rolling wheel's
-    ω, α, instant centre (the contact) and the acceleration of its point there; a bar on a
-    circle: the contact point, the bar's instant centre (where the normal to the path of its
-    first end meets the normal at the contact) and the contact's sliding along the bar."""
-    pts = sol.points
-    if q.kind == "rolling":
-        return rolling(sol, q)
-    if q.kind == "bearing":
-        link = sol.links.get(q.link)
-        if link is None or link.omega is None:
-            return None
-        A, B, K = pts[link.a].position, pts[link.b].position, pts[q.at].position
-        L = math.dist(A, B)
-        u = ((B[0] - A[0]) / L, (B[1] - A[1]) / L)
-        t = (K[0] - A[0]) * u[0] + (K[1] - A[1]) * u[1]
-        out = {"contact": (A[0] + t * u[0], A[1] + t * u[1]), "omega": link.omega,
-               "alpha": link.alpha}
-        vA = pts[link.a].velocity
-        if link.omega != 0.0:
-            out["instant_centre"] = (A[0] - vA[1] / link.omega, A[1] + vA[0] / link.omega)
-        slide = sol.slides.get(q.at)
-        if slide is not None:
-            out["sliding_velocity"] = -slide.velocity   # the contact along the bar
-        return out
-    return None
-
-
 def report_lines(sol) -> list[str]:
     """The equivalences and the follower's (pin's) velocity and acceleration."""
     eqs = getattr(sol.scene, "equivalents", ())
@@ -719,13 +694,17 @@ def report_lines(sol) -> list[str]:
                              f"; the wheel's point there accelerates at r·ω² = "
                              f"{math.hypot(*h['contact_acceleration']):.6g} m/s² towards "
                              f"{q.at}" if "contact_acceleration" in h else ""))
-        elif q.kind != "rolling":
-            lines.append(f"    contact with the bar at {mm(h['contact'])}"
-                         + (f", sliding along the bar at {abs(h['sliding_velocity']):.6g} m/s"
-                            if "sliding_velocity" in h else ""))
-            if "instant_centre" in h:
-                lines.append(f"    instant centre of {q.link}: {mm(h['instant_centre'])} "
-                             f"(on the normal to the bar at the contact, through {q.at})")
+        elif q.kind == "bearing":
+            lines += _bearing_lines(q, h, mm)
+        elif q.kind == "curved slot":
+            lines.append(f"    the pin {q.at} slides in the slot (cut in {h['slot_body']}) at "
+                         f"{abs(h['sliding_velocity']):.6g} m/s relative to it "
+                         f"({q.link}·(ω_{q.link} − ω of the slot's body))")
+        elif q.kind == "cam":
+            lines.append(f"    contact with the profile at {mm(h['contact'])}; the roller's "
+                         f"centre moves relative to the cam ({h['cam_body']}) at "
+                         f"{abs(h['follower_velocity_relative']):.6g} m/s, the contact point "
+                         f"over the profile at {abs(h['contact_velocity_along_profile']):.6g} m/s")
         lines += _rim_lines(sol, q, mm)
     return lines
 

@@ -65,6 +65,9 @@ def run(args) -> int:
         from ..forces import analyse
         from .forces import forces_table, to_dict
         forces = analyse(scene)
+    if not method:              # an answer naming a point of Klein's figure (Klein's ON)
+        from ..classic.klein import asked
+        method = "klein" if asked(sol) else None
     fig = None
     if method:
         from ..classic.klein import figure

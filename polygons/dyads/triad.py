@@ -53,6 +53,20 @@ class Triad:
     two_closures = False
     many_closures = True
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "triad"
+
+    def auxiliary_points(self) -> tuple[tuple[str, tuple[str, str], tuple[str, str]], ...]:
+        """The construction points the space diagram draws with the group: (S, (OB, B),
+        (OC, C)): Assur's point S where OB·B and OC·C produced meet."""
+        return ((self.s, (self.ob, self.b), (self.oc, self.c)),)
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (((self.plate,) if self.ternary else tuple(self.plate_links))
+                + (self.link_b, self.link_c, self.link_x))
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.b, self.c, self.x, self.s)
@@ -156,13 +170,13 @@ class Triad:
         g.place(self.b, bx, by)
         g.place(self.c, cx, cy)
         g.place(self.x, xx, xy)
-        ux, uy = g.let(f"{bx} - {ax}"), g.let(f"{by} - {ay}")
-        wx, wy = g.let(f"{cx} - {dx}"), g.let(f"{cy} - {dy}")
-        den = g.let(f"{ux} * {wy} - {uy} * {wx}")
-        safe = g.let(f"where({den} != 0.0, {den}, nan)" if g.arrays else
-                     f"({den} if {den} != 0.0 else nan)")
-        t = g.let(f"(({dx} - {ax}) * {wy} - ({dy} - {ay}) * {wx}) / {safe}")
-        g.place(self.s, g.let(f"{ax} + {t} * {ux}"), g.let(f"{ay} + {t} * {uy}"))
+        ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
+        wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
+        den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
+        safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
+                     g.e("({} if {} != 0.0 else nan)", den, den))
+        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", dx, ax, wy, dy, ay, wx, safe)
+        g.place(self.s, g.let("{} + {} * {}", ax, t, ux), g.let("{} + {} * {}", ay, t, uy))
 
     def why_not(self, scene, pos) -> str:
         return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c}, "
@@ -214,10 +228,12 @@ class Triad:
         k = [b.fresh(B), b.fresh(S), b.fresh(C), b.fresh(S), b.fresh(X), b.fresh(X)]
         self._normal(b, LB, A, B, a, k[0], f"(a_{B})_{A}^n")
         self._normal(b, P, B, S, k[0], k[1], f"(a_{S})_{B}^n")
-        n1 = self._tangent_line(b, A, B, k[1], LB)
+        # S is on AB produced: (a_B)_A^t and (a_S)_B^t are both ⟂ AB, so the line through s₁
+        # carries their sum (one vector s₁s, of no single link: named as the sum it is)
+        n1 = self._tangent_line(b, A, B, k[1], None, (B, A, S, B))
         self._normal(b, LC, D, C, d, k[2], f"(a_{C})_{D}^n")
         self._normal(b, P, C, S, k[2], k[3], f"(a_{S})_{C}^n")
-        n2 = self._tangent_line(b, D, C, k[3], LC)
+        n2 = self._tangent_line(b, D, C, k[3], None, (C, D, S, C))
         b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
               f"{s} = intersection of the two lines",
               f"The lines meet at {s}: {b.names.pole}{s} is the acceleration of the "
@@ -230,28 +246,42 @@ class Triad:
               f"{x} = intersection of the two lines",
               f"The lines meet at {x}: {b.names.pole}{x} is the acceleration of {X}.",
               (n3, n4), component=Cm.RESULTANT)
-        self._rates(b, Op.ALPHA)
+        # each α from its own tangential part: x₁x (plate), b₁b, c₁c, x₂x (the links), the
+        # end of each centripetal vector to the point — never the whole relative acceleration
+        self._rates(b, Op.ALPHA, {P: (k[4], X), LB: (k[0], B), LC: (k[2], C), LX: (k[5], X)})
 
-    def _rates(self, b: Builder, op) -> None:
-        """The plate's ω (α) from s and x, the images b and c, each link's ω (α)."""
+    def _rates(self, b: Builder, op, tangential=None) -> None:
+        """The plate's ω (α) from s and x, the images b and c, each link's ω (α).
+
+        ω = (the relative velocity) / length; α = (the tangential part, from the end of the
+        centripetal vector to the point: x₁x, b₁b, c₁c, x₂x) / length."""
         B, C, X, S = self.b, self.c, self.x, self.s
         V = b.names.of
         sym, what, th = (("ω", "angular velocity", "angular_velocity") if op is Op.OMEGA
                          else ("α", "angular acceleration", "angular_acceleration"))
         comp = Component.RELATIVE if op is Op.OMEGA else Component.TANGENTIAL
         P = self.plate
-        b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{P}", None, None, th, f"{sym}_{P}",
-              f"{sym}_{P} = {V(S)}{V(X)} / {S}{X}",
-              f"The {what} of the plate {P} is {V(S)}{V(X)} (its part ⟂ {S}{X}) divided by "
-              f"{S}{X}.", component=comp, link=P)
+
+        def read(L, O, Q):
+            """(the vector the rate is read from, the words saying so)."""
+            if tangential is None:
+                return f"{V(O)}{V(Q)}", f"{V(O)}{V(Q)}"
+            t = f"{tangential[L][0]}{V(tangential[L][1])}"
+            return t, f"{t} (the tangential part of {V(O)}{V(Q)})"
+        vec, words = read(P, S, X)
+        plate = f"{B}{C}{X}"            # the plate named for its corners (the link P carries it)
+        b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
+              f"{sym}_{plate} = {vec} / {S}{X}",
+              f"The {what} of the plate {plate} is {words} divided by {S}{X}.",
+              component=comp, link=P)
         image.emit_image(b, B, P, S, X)
         image.emit_image(b, C, P, S, X)
         for L, O, Q in ((self.link_b, self.ob, B), (self.link_c, self.oc, C),
                         (self.link_x, self.ox, X)):
+            vec, words = read(L, O, Q)
             b.add(Kind.MEASURE, op, (L, O, Q), f"{sym}_{L}", None, None, th, f"{sym}_{L}",
-                  f"{sym}_{L} = {V(O)}{V(Q)} / {O}{Q}",
-                  f"The {what} of {L} is {V(O)}{V(Q)} (its part ⟂ {O}{Q}) divided by "
-                  f"{O}{Q}.", component=comp, link=L)
+                  f"{sym}_{L} = {vec} / {O}{Q}",
+                  f"The {what} of {L} is {words} divided by {O}{Q}.", component=comp, link=L)
 
     @staticmethod
     def _normal(b: Builder, L, P, Q, frm, to, name) -> None:
@@ -262,11 +292,21 @@ class Triad:
               component=Component.CENTRIPETAL, link=L)
 
     @staticmethod
-    def _tangent_line(b: Builder, P, Q, frm, L):
+    def _tangent_line(b: Builder, P, Q, frm, L, terms=None):
+        """The line ⟂ PQ through ``frm`` for the tangential acceleration (a_Q)_P^t; with
+        ``terms`` (Q, P, Q2, P2) for the sum (a_Q)_P^t + (a_Q2)_P2^t of two such terms along
+        one line (S on PQ produced)."""
+        if terms is None:
+            name = f"(a_{Q})_{P}^t"
+            why = "for the tangential accelerations"
+        else:
+            q1, p1, q2, p2 = terms
+            name = f"(a_{q1})_{p1}^t + (a_{q2})_{p2}^t"
+            why = f"for {name} (both ⟂ {P}{Q})"
         return b.add(Kind.LINE, Op.LINE_PERP, (P, Q), f"line ⟂ {P}{Q}", frm, None,
-                     "tangential", f"(a_{Q})_{P}^t", f"(a_{Q})_{P}^t ⟂ {P}{Q}",
-                     f"Through {frm} draw a line ⟂ {P}{Q} for the tangential accelerations, "
-                     f"of unknown length.", component=Component.CONSTRUCTION, link=L)
+                     "tangential", name, f"{name} ⟂ {P}{Q}",
+                     f"Through {frm} draw a line ⟂ {P}{Q} {why}, of unknown length.",
+                     component=Component.CONSTRUCTION, link=L)
 
 
 # ---------------------------------------------------------------- finding the groups
