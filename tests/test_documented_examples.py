@@ -62,6 +62,8 @@ def documented_commands() -> list[tuple[str, str]]:
 def _case_for(cmd: str) -> str:
     if cmd.startswith("forces"):
         return "cases/forces-toggle-press.toml"
+    if cmd.startswith("ask"):
+        return "cases/question-engine-conditions.toml"
     if "--klein" in cmd:
         return "cases/klein-inline-engine.toml"
     if "--drawing" in cmd:
@@ -123,7 +125,8 @@ _RAN = {"check": (0, 3)}
 
 
 # ---------------------------------------------------------------- --help examples
-_CMDS = ("solve", "draw", "sweep", "forces", "centres", "check", "handout", "exam", "gallery")
+_CMDS = ("solve", "draw", "sweep", "forces", "centres", "check", "handout", "exam", "gallery",
+         "ask")
 
 
 def _subparser(command: str):
@@ -177,6 +180,7 @@ _BASE = {
     "centres": ["cases/s001-we4.toml", "-o", "out.txt"],
     "check": ["cases/s001-we6.toml", "--measured", "v_C=15.1", "-o", "out.txt"],
     "handout": ["cases/s001-we4.toml", "-o", "out.html"],
+    "ask": ["cases/question-engine-conditions.toml"],
 }
 
 
