@@ -17,7 +17,7 @@ WHERE = {
     "polygons.errors": "base", "polygons.units": "base", "polygons.schema": "base",
     "polygons.theorems": "base", "polygons.steps": "base", "polygons.memo": "base", "polygons.notation": "base",
     "polygons.program": "base",
-    "polygons.scene": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
+    "polygons.scene": "scene", "polygons.quantity_grammar": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.higher": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
     "polygons.question_table": "scene", "polygons.cam_profiles": "scene",
