@@ -650,6 +650,11 @@ def path_stem(file: str) -> str:
 
 
 _RELATIONS = RELATIONS
+#: other phrasings of the assembly words, read as the relation beside them
+_SYNONYMS = (("lower than", "below"), ("higher than", "above"), ("is below", "below"),
+             ("is above", "above"), ("to the left of", "left of"),
+             ("to the right of", "right of"), ("is left of", "left of"),
+             ("is right of", "right of"))
 
 
 def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
@@ -663,6 +668,10 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     # '{label} {rel} REF' or '{rel} REF' (a label starts upper-case, a relation lower-case)
     head = label + " "
     rest = words[len(head):] if words.startswith(head) else words
+    for said, rel in _SYNONYMS:                 # the book's other phrasings
+        if rest.startswith(said + " "):
+            rest = rel + rest[len(said):]
+            break
     for rel in _RELATIONS:
         if rest.startswith(rel) and rest[len(rel):len(rel) + 1] == " ":
             ref = rest[len(rel) + 1:]

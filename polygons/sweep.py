@@ -247,7 +247,9 @@ def place(prog: Program, t: np.ndarray):
     pos = {k: np.array(v).reshape((2,) + (1,) * np.ndim(t)) for k, v in prog.ground.items()}
     margins = []
     for d in prog.plan.dyads:
-        pts, m = d.locate(scene, pos, prog.sigma.get(d.placed[0]), t)
+        sigma = ({k: prog.sigma[k] for k in d.sigma_keys}       # a triad: its closure's corners
+                 if getattr(d, "many_closures", False) else prog.sigma.get(d.placed[0]))
+        pts, m = d.locate(scene, pos, sigma, t)
         pos.update(pts)
         if m is not None:
             margins.append((d, m))
@@ -403,6 +405,82 @@ def _margin(prog: Program, x) -> np.ndarray:
     return evaluate(prog, np.atleast_1d(np.asarray(x, dtype=float)), rates=False)["margin"]
 
 
+def _groups(prog: Program) -> list:
+    """The plan's groups of several closures (triads), followed by continuation."""
+    return [d for d in prog.plan.dyads if getattr(d, "many_closures", False)]
+
+
+def _referenced(prog: Program, pos: dict, i: int) -> Program:
+    """``prog`` following, in each triad, the closure at position ``i`` of ``pos`` (an
+    evaluation's positions) instead of the scene's own."""
+    from dataclasses import replace
+    sigma = dict(prog.sigma)
+    for d in _groups(prog):
+        sigma.update(zip(d.sigma_keys, (float(pos[d.b][0][i]), float(pos[d.b][1][i]),
+                                        float(pos[d.x][0][i]), float(pos[d.x][1][i]))))
+    return replace(prog, sigma=sigma)
+
+
+def _margin_fn(prog: Program, xs: np.ndarray, ok: np.ndarray):
+    """The margin at an input x as a function: for a triad, by continuation from the nearest
+    probe that assembled (the probes followed the scene's closure), so that bisection and
+    golden section stay on the followed branch; else :func:`_margin`."""
+    if not _groups(prog):
+        return lambda x: float(_margin(prog, x)[0]), (lambda x: prog)
+    pos = evaluate(prog, xs, rates=False)["pos"]
+    good = np.flatnonzero(ok)
+    cache: dict = {}
+    turn = 2.0 * math.pi if prog.input_kind == "crank" else math.inf
+
+    def gap(x):         # x − each good probe (round the turn for a crank)
+        d = x - xs[good]
+        return (d + 0.5 * turn) % turn - 0.5 * turn if math.isfinite(turn) else d
+
+    def near(x):
+        i = int(good[np.argmin(np.abs(gap(x)))]) if len(good) else 0
+        if i not in cache:
+            cache[i] = _referenced(prog, pos, i)
+        return i, cache[i]
+
+    def margin(x):
+        i, p = near(x)
+        dx = float(gap(x)[list(good).index(i)]) if len(good) else 0.0
+        return float(_margin(p, [xs[i], xs[i] + dx])[1])
+    return margin, (lambda x: near(x)[1])
+
+
+def anchored(prog: Program, xs: np.ndarray) -> Program:
+    """``prog`` following, in each triad, the closure reached by continuation from the
+    scene's own input to the input of ``xs`` nearest it (steps of at most 0.25° or 1/1000 of
+    the size): every row then follows the scene's closure, whatever inputs are asked.  The
+    other way round the turn is tried where the branch ends first; where neither reaches,
+    nothing is followed (NaN rows)."""
+    if not _groups(prog) or not len(xs):
+        return prog
+    x0 = prog.input0
+    crank = prog.input_kind == "crank"
+    if crank:
+        rel = (xs - x0 + math.pi) % (2 * math.pi) - math.pi
+        j = int(np.argmin(np.abs(rel)))
+        targets = [x0 + rel[j], x0 + rel[j] - math.copysign(2 * math.pi, rel[j])]
+        h = math.radians(0.25)
+    else:
+        j = int(np.argmin(np.abs(xs - x0)))
+        targets = [float(xs[j])]
+        h = 1e-3 * prog.scale
+    for target in targets:
+        m = int(min(max(2, math.ceil(abs(target - x0) / h) + 1), 20000))
+        path = np.linspace(x0, target, m)
+        pos = evaluate(prog, path, rates=False)["pos"]
+        if all(np.all(np.isfinite(np.asarray(pos[d.b])[:, -1])) for d in _groups(prog)):
+            return _referenced(prog, pos, m - 1)
+    from dataclasses import replace
+    sigma = dict(prog.sigma)
+    for d in _groups(prog):
+        sigma.update(dict.fromkeys(d.sigma_keys, math.nan))
+    return replace(prog, sigma=sigma)
+
+
 def _culprit(prog: Program, x: float) -> tuple[str, str]:
     """The dyad with the smallest margin at input ``x``, and what degenerates there."""
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -414,13 +492,14 @@ def _culprit(prog: Program, x: float) -> tuple[str, str]:
     return d.placed[0], d.toggle_reason(prog.scene, at)
 
 
-def _bisect(prog: Program, good: float, bad: float, iters: int = 200) -> float:
-    """The last input from ``good`` towards ``bad`` where the mechanism still closes."""
+def _bisect(margin, good: float, bad: float, iters: int = 200) -> float:
+    """The last input from ``good`` towards ``bad`` where the mechanism still closes
+    (``margin``: the margin at an input, :func:`_margin_fn`)."""
     for _ in range(iters):
         mid = 0.5 * (good + bad)
         if mid == good or mid == bad:
             break
-        m = _margin(prog, mid)[0]
+        m = margin(mid)
         if m >= 0:
             good = mid
         else:
@@ -428,24 +507,24 @@ def _bisect(prog: Program, good: float, bad: float, iters: int = 200) -> float:
     return good
 
 
-def _golden_min(prog: Program, a: float, b: float, iters: int = 120) -> tuple[float, float]:
+def _golden_min(margin, a: float, b: float, iters: int = 120) -> tuple[float, float]:
     """Minimum of the margin on [a, b] (golden section; the margin is unimodal near a toggle)."""
     g = (math.sqrt(5) - 1) / 2
     c, d = b - g * (b - a), a + g * (b - a)
-    fc, fd = _margin(prog, c)[0], _margin(prog, d)[0]
+    fc, fd = margin(c), margin(d)
     for _ in range(iters):
         if not (fc >= fd):    # also when fc is NaN
             b, d, fd = d, c, fc
             c = b - g * (b - a)
-            fc = _margin(prog, c)[0]
+            fc = margin(c)
         else:
             a, c, fc = c, d, fd
             d = a + g * (b - a)
-            fd = _margin(prog, d)[0]
+            fd = margin(d)
         if b - a <= 1e-15 * max(1.0, abs(a)):
             break
     x = 0.5 * (a + b)
-    return x, float(_margin(prog, x)[0])
+    return x, float(margin(x))
 
 
 def _deg_of(m: float) -> float:
@@ -477,6 +556,7 @@ def find_range(prog: Program, probe: int = PROBE):
         xs = x0 + step * np.arange(-half, half + 1)
     m = _margin(prog, xs)
     ok = m >= 0
+    margin, near = _margin_fn(prog, xs, ok)
     # local minima below the warning angle, refined
     left = np.roll(m, 1)
     right = np.roll(m, -1)
@@ -486,12 +566,12 @@ def find_range(prog: Program, probe: int = PROBE):
     events: list[Limit] = []
     gaps: list[float] = []
     for i in np.flatnonzero(cand):
-        xm, fm = _golden_min(prog, xs[i] - step, xs[i] + step)
+        xm, fm = _golden_min(margin, xs[i] - step, xs[i] + step)
         if not np.isfinite(fm) or fm < 0:
             gaps.append(xm)
         else:
             kind = "toggle" if fm < _SIN_PARALLEL else "near-toggle"
-            events.append(Limit(xm, kind, *_culprit(prog, xm), angle_deg=_deg_of(fm)))
+            events.append(Limit(xm, kind, *_culprit(near(xm), xm), angle_deg=_deg_of(fm)))
     bad = [float(x) for x in xs[~ok]] + gaps
     if closed and not bad:
         return True, (x0, x0 + period), (), tuple(events)
@@ -518,10 +598,10 @@ def find_range(prog: Program, probe: int = PROBE):
             continue
         k = math.floor(abs(bad_x - x0) / step - 1e-9)      # probes strictly before bad_x
         good = x0 + sign * k * step
-        x = _bisect(prog, good, bad_x)
+        x = _bisect(margin, good, bad_x)
         ends.append(x)
-        pt, why = _culprit(prog, x)
-        limits.append(Limit(x, "limit", pt, why, _deg_of(max(float(_margin(prog, x)[0]), 0.0))))
+        pt, why = _culprit(near(x), x)
+        limits.append(Limit(x, "limit", pt, why, _deg_of(max(margin(x), 0.0))))
     lo, hi = ends
     inside = []
     for ev in events:
@@ -602,6 +682,8 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
         xs = np.asarray(inputs, dtype=float).reshape(-1)
         full = False
         rng = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 0.0)
+    if _groups(prog):       # a triad follows its closure from the scene's input: one pass
+        prog, chunk = anchored(prog, xs), max(len(xs), 1)
     res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
     segments = _segments(xs, toggles, full)
     warnings = []
