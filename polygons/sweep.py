@@ -685,6 +685,7 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
     if _groups(prog):       # a triad follows its closure from the scene's input: one pass
         prog, chunk = anchored(prog, xs), max(len(xs), 1)
     res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
+    res, assur_notes = _assur_rows(prog, xs, res)
     segments = _segments(xs, toggles, full)
     warnings = []
     for tg in toggles:
@@ -696,6 +697,7 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
         else:
             warnings.append(f"near toggle at {where}: {tg.reason}; the construction lines "
                             f"meet at only {tg.angle_deg:.3g}°")
+    warnings.extend(assur_notes)
     margin = res["margin"]
     lowest = float(np.min(margin)) if len(margin) else 1.0
     if not lowest >= _SIN_PARALLEL:          # one pass when all is well (NaN compares False)
@@ -714,6 +716,56 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
                  res["pos"], res["vel"], res["acc"], res["omega"], res["alpha"],
                  res["slide_v"], res["slide_a"], res["travel"], res["coriolis"], margin,
                  tuple(warnings))
+
+
+def _assur_rows(prog: Program, xs: np.ndarray, res: dict):
+    """The rows where a triad's auxiliary point S is at infinity or nearly (its two links
+    parallel within 1°: a point of the construction, not a singularity of the group) taken
+    from the same construction through the pair of links that meet best there (the same
+    positions: the closure followed is the same).  Returns (results, notes)."""
+    from dataclasses import replace
+    groups = _groups(prog)
+    if not groups or not len(xs):
+        return res, []
+    pos = {k: np.asarray(v, dtype=float) for k, v in res["pos"].items()}
+
+    def sine(d, via):
+        (p1, o1, _), (p2, o2, _), _ = replace(d, via=via).roles
+        u = pos[p1] - pos[o1].reshape(2, -1)
+        w = pos[p2] - pos[o2].reshape(2, -1)
+        with np.errstate(all="ignore"):
+            return np.abs(u[0] * w[1] - u[1] * w[0]) / (np.hypot(*u) * np.hypot(*w))
+    notes = []
+    for gi, d in enumerate(groups):
+        s = np.array([sine(d, v) for v in range(3)])
+        own = s[d.via]
+        rows = np.isfinite(own) & (own < math.sin(math.radians(1.0)))
+        if not rows.any():
+            continue
+        best = np.argmax(np.where(np.isfinite(s), s, -1.0), axis=0)
+        pairs = []
+        for via in {int(v) for v in best[rows]} - {d.via}:
+            take = np.flatnonzero(rows & (best == via))
+            dyads = tuple(replace(e, via=via) if e is d else e for e in prog.plan.dyads)
+            plan = replace(prog.plan, dyads=dyads)
+            alt = replace(prog, plan=plan, steps=construction(plan, tuple(Diagram)))
+            other = run(alt, xs[take[0]:take[-1] + 1], chunk=max(len(xs), 1))
+            for key in ("vel", "acc", "coriolis", "omega", "alpha", "slide_v", "slide_a"):
+                for lab, arr in res[key].items():       # the rows' rates through the other
+                    got = other[key].get(lab)          # pair (their positions agree)
+                    if isinstance(arr, np.ndarray) and arr.flags.writeable and got is not None:
+                        arr[..., take] = np.asarray(got)[..., take - take[0]]
+            S = np.asarray(res["pos"][d.s])          # S itself: where that pair meets
+            if S.flags.writeable:
+                S[:, take] = np.asarray(other["pos"][d.s])[:, take - take[0]]
+            (q1, r1, _), (q2, r2, _), _ = replace(d, via=via).roles
+            pairs.append(f"{r1}{q1} and {r2}{q2} ({len(take)})")
+        (p1, o1, _), (p2, o2, _), _ = d.roles
+        notes.append(f"{int(rows.sum())} of {len(xs)} positions have {o1}{p1} and {o2}{p2} "
+                     f"parallel within 1° (the auxiliary point {d.s} at infinity, not a "
+                     f"singularity of the group): their rates are constructed with {d.s} "
+                     f"where {' or '.join(pairs) or 'they'} meet")
+    return res, notes
 
 
 def _undefine(res: dict, mask: np.ndarray) -> None:
