@@ -209,7 +209,10 @@ def point_on_link(spec, r, where, length=None) -> tuple[float | None, float | No
         text, turn = _turn_of(spec["angle"]) if isinstance(spec["angle"], str) else (
             spec["angle"], 1.0)
         phi = turn * r.quantity(text, "angle", where + ".angle")
-        return d * math.cos(phi), None, d * math.sin(phi)
+        along, left = d * math.cos(phi), d * math.sin(phi)
+        # a right angle's cosine is 6e-17, not 0: rounding, not a length (90 deg CW)
+        return (0.0 if abs(along) <= 1e-12 * abs(d) else along), None, \
+            (0.0 if abs(left) <= 1e-12 * abs(d) else left)
     if ("along" in spec) == ("fraction" in spec):
         raise SceneError("give exactly one of 'along' (a length from the link's first "
                          "label) or 'fraction' (of the link length, e.g. 0.5 for the "
