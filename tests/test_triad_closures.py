@@ -202,3 +202,18 @@ def test_a_point_by_distance_and_a_right_angle_clockwise_is_read():
     scene = parse_scene(data, file="t.toml")
     assert scene.points["M"].along == 0.0
     assert scene.points["M"].left == pytest.approx(-0.075)
+
+
+def test_within_a_millionth_of_a_degree_of_the_fold_the_rates_are_the_oracles():
+    """1e-6° inside each end of the branch (two closures about to meet, velocities ~500×
+    the scene's): the sweep's row and the staged solve there equal the linear-solve oracle."""
+    scene = load_scene(CASES / "triad-ternary-coupler.toml")
+    for lim in sweep(scene, 36).limits:
+        th = lim.input + math.copysign(math.radians(1e-6), scene.driver.angle - lim.input)
+        row = sweep(scene, inputs=[th])
+        sol = solve(row.scene_at(0))
+        (_, _, vX), (_, _, aX) = _oracle_rates(sol)
+        assert np.hypot(*vX) > 100.0
+        assert np.allclose(np.array(row.vel["X"])[:, 0], vX, rtol=1e-9)
+        assert np.allclose(np.array(row.acc["X"])[:, 0], aX, rtol=1e-9)
+        assert np.allclose(sol.points["X"].velocity, vX, rtol=1e-9)
