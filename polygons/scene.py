@@ -160,6 +160,24 @@ def split_link_name(name: str, *, file: str | None = None, where: str | None = N
 _LINK_ENDS: dict[str, tuple[str, str]] = {}
 
 
+def _plate_side(on: str, links, points):
+    """(link, P, Q) where the two labels of ``on`` are both points of one link's plate (its
+    ends and its [points] read so far), P and Q in the link's frame (its first label at the
+    origin, the second on +x); else None."""
+    ends = split_link_name(on)
+    for name, link in links.items():
+        if link.length is None:
+            continue
+        frame = {link.a: (0.0, 0.0), link.b: (link.length, 0.0)}
+        for bp in points.values():
+            if bp.link == name:
+                along = bp.along if bp.along is not None else bp.fraction * link.length
+                frame[bp.label] = (along, bp.left)
+        if all(e in frame for e in ends) and math.dist(*(frame[e] for e in ends)) > 0:
+            return name, frame[ends[0]], frame[ends[1]]
+    return None
+
+
 _Reader = Reader     # the name the loader's helpers use
 
 
@@ -325,6 +343,18 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         r.table(spec, where, KEYS["points"], required=("on",))
         on = r.string(spec["on"], where + ".on")
         split_link_name(on, file=file, where=where + ".on")
+        side = _plate_side(on, links, points)
+        if side is not None and on not in links \
+                and not any(s.lever == on for s in slots.values()):
+            # a side of a plate that is not a link (CX of the plate BC carrying X): the point
+            # restated on the plate's link, in its frame
+            body, P, Q = side
+            a, f, lft = topology.point_on_link(spec, r, where, math.dist(P, Q))
+            ux, uy = (Q[0] - P[0]) / math.dist(P, Q), (Q[1] - P[1]) / math.dist(P, Q)
+            s = a if a is not None else f * math.dist(P, Q)
+            points[label] = BodyPoint(label, body, P[0] + s * ux - lft * uy, None,
+                                      P[1] + s * uy + lft * ux)
+            continue
         if on not in links and not any(s.lever == on for s in slots.values()):
             raise UnknownLabelError(f"link {show(on)} is not defined: "
                                     f"{suggest(on, list(links) + [s.lever for s in slots.values()])}",

@@ -217,3 +217,15 @@ def test_within_a_millionth_of_a_degree_of_the_fold_the_rates_are_the_oracles():
         assert np.allclose(np.array(row.vel["X"])[:, 0], vX, rtol=1e-9)
         assert np.allclose(np.array(row.acc["X"])[:, 0], aX, rtol=1e-9)
         assert np.allclose(sol.points["X"].velocity, vX, rtol=1e-9)
+
+
+@pytest.mark.parametrize("side", ["CX", "XC", "BX"])
+def test_a_point_on_a_side_of_the_plate_that_is_no_link(side):
+    """The plate is the link BC carrying X: the mid-point of CX (a side, not a link) is read
+    onto the plate, and moves as the mid-point of the two corners."""
+    data = tomllib.loads((CASES / "triad-plate-point.toml").read_text(encoding="utf-8"))
+    data.setdefault("points", {})["M"] = {"on": side, "fraction": 0.5}
+    P = solve(parse_scene(data, file="t.toml")).points
+    for what in ("position", "velocity", "acceleration"):
+        mid = 0.5 * (np.array(getattr(P[side[0]], what)) + np.array(getattr(P[side[1]], what)))
+        assert np.allclose(getattr(P["M"], what), mid, rtol=1e-12, atol=1e-14)
