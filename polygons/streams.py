@@ -18,8 +18,8 @@ import numpy as np
 from .errors import PolygonsError
 from .scene import Scene
 from .sweep import (CHUNK, PROBE, Limit, Program, _SIN_PARALLEL, _assur_rows, _fmt_input,
-                    _groups, _referenced, anchored, arrays_program, compile_plan, find_range,
-                    from_arrays)
+                    _groups, _referenced, _refined, _take, anchored, arrays_program,
+                    compile_plan, find_range, from_arrays)
 from .sweep_store import adopt
 
 
@@ -79,7 +79,10 @@ def stream(st: Stream, *, chunk: int = CHUNK * 4):
         if follow:  # each chunk continues from the last row of the one before
             ext = xs if last is None else np.concatenate(([last[0]], xs))
             code, params = arrays_program(prog)
-            res = adopt(from_arrays(prog, code, params, ext), len(ext))
+            fine, rows = _refined(prog, ext)        # steps no coarser than continuation's
+            res = adopt(from_arrays(prog, code, params, fine), len(fine))
+            if len(fine) != len(ext):
+                res = _take(res, rows)
             res, _ = _assur_rows(prog, ext, res)
             if last is not None:
                 res = _rows_from(res, 1)

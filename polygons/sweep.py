@@ -682,9 +682,16 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
         xs = np.asarray(inputs, dtype=float).reshape(-1)
         full = False
         rng = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 0.0)
-    if _groups(prog):       # a triad follows its closure from the scene's input: one pass
-        prog, chunk = anchored(prog, xs), max(len(xs), 1)
-    res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
+    if _groups(prog):       # a triad follows its closure from the scene's input: one pass,
+        prog = anchored(prog, xs)       # in steps no coarser than the continuation's
+        fine, rows = _refined(prog, xs)
+        res = run(prog, fine, chunk=max(len(fine), 1), jit=jit)
+        if len(fine) != len(xs):
+            res = _take(res, rows)
+        if progress:
+            progress(len(xs))
+    else:
+        res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
     res, assur_notes = _assur_rows(prog, xs, res)
     segments = _segments(xs, toggles, full)
     warnings = []
@@ -716,6 +723,43 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
                  res["pos"], res["vel"], res["acc"], res["omega"], res["alpha"],
                  res["slide_v"], res["slide_a"], res["travel"], res["coriolis"], margin,
                  tuple(warnings))
+
+
+def _refined(prog: Program, xs: np.ndarray, most: int = 1 << 18):
+    """The inputs ``xs`` with inputs inserted between neighbours farther apart than a
+    triad's continuation steps (0.25° of a crank, 1/1000 of the size of a slider), and where
+    each of ``xs`` is in them: (fine, rows).  At most ``most`` inputs in all (beyond, ``xs``
+    as they are)."""
+    h = math.radians(0.25) if prog.input_kind == "crank" else 1e-3 * prog.scale
+    if len(xs) < 2:
+        return xs, np.arange(len(xs))
+    gaps = np.abs(np.diff(xs))
+    extra = np.ceil(gaps / h).astype(int) - 1
+    extra = np.maximum(extra, 0)
+    if not extra.any() or len(xs) + int(extra.sum()) > most:
+        return xs, np.arange(len(xs))
+    parts, rows, at = [], [], 0
+    for i in range(len(xs) - 1):
+        seg = np.linspace(xs[i], xs[i + 1], extra[i] + 2)[:-1]
+        rows.append(at)
+        parts.append(seg)
+        at += len(seg)
+    rows.append(at)
+    parts.append(xs[-1:])
+    return np.concatenate(parts), np.array(rows)
+
+
+def _take(res: dict, rows: np.ndarray) -> dict:
+    """The results at ``rows`` only."""
+    out = {}
+    for key, d in res.items():
+        if key == "margin":
+            out[key] = np.ascontiguousarray(d[rows])
+            continue
+        out[key] = {lab: (v if v is None or (key == "pos" and np.ndim(v[0]) == 0)
+                          else np.array(np.asarray(v)[..., rows]))
+                    for lab, v in d.items()}
+    return out
 
 
 def _assur_rows(prog: Program, xs: np.ndarray, res: dict):

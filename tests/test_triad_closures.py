@@ -229,3 +229,24 @@ def test_a_point_on_a_side_of_the_plate_that_is_no_link(side):
     for what in ("position", "velocity", "acceleration"):
         mid = 0.5 * (np.array(getattr(P[side[0]], what)) + np.array(getattr(P[side[1]], what)))
         assert np.allclose(getattr(P["M"], what), mid, rtol=1e-12, atol=1e-14)
+
+
+@pytest.mark.parametrize("case", ["triad-eight-bar", "triad-ternary-coupler", "triad-parallel"])
+def test_solve_at_theta_is_the_sweeps_row_and_one_smallest_construction_angle(case):
+    """At inputs across the branch (one of them 1e-6° from the parallel pose of
+    triad-parallel), a staged solve of the scene restated at the row equals the row: the
+    corners, the rates and the smallest construction angle (one definition in both)."""
+    path = DATA if case == "triad-parallel" else CASES
+    scene = load_scene(path / f"{case}.toml")
+    sw = sweep(scene, 12)
+    rows = list(range(0, 12, 3))
+    if case == "triad-parallel":
+        sw = sweep(scene, inputs=np.radians([60.0 + 1e-6, 55.0, 80.0]))
+        rows = [0, 1, 2]
+    for k in rows:
+        sol = solve(sw.scene_at(k))
+        for p in ("B", "C", "X"):
+            assert np.allclose(sol.points[p].position, np.array(sw.pos[p])[:, k], atol=1e-12)
+            assert np.allclose(sol.points[p].velocity, np.array(sw.vel[p])[:, k], rtol=1e-9,
+                               atol=1e-12)
+        assert sol.min_intersection_angle_deg == pytest.approx(sw.angle_deg[k], rel=1e-9)

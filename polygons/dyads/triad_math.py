@@ -358,6 +358,35 @@ def _follow(q, mirror, ref_b, ref_x, size, pose=None, fallback=True, reach=None)
     return (B, C, X), new, margin_at(q[:11] + (new[3],), new[:3], size)
 
 
+_SIN_1DEG = math.sin(math.radians(1.0))
+_PAIRS = ((0, 1, 2), (0, 2, 1), (1, 2, 0))
+
+
+def construction_sine(q, B, C, X) -> float:
+    """The sine of the smallest angle of the group's construction (the conditioning a solve
+    and a sweep report, one definition): the two links' lines that meet at S, then the line
+    S–P₃ against the third link, for the pair the construction takes (AB, DC unless they are
+    parallel within 1°, then the pair that meets best: :meth:`Triad.for_instant`).  Zero only
+    where the three links' lines are concurrent (two closures meet)."""
+    ax, ay, _, dx, dy, _, ex, ey = q[:8]
+    P = (B, C, X)
+    u = ((B[0] - ax, B[1] - ay), (C[0] - dx, C[1] - dy), (X[0] - ex, X[1] - ey))
+    O = ((ax, ay), (dx, dy), (ex, ey))
+
+    def sin(a, b):
+        n = math.hypot(*a) * math.hypot(*b)
+        return abs(a[0] * b[1] - a[1] * b[0]) / n if n > 0 else 0.0
+    s = [sin(u[i], u[j]) for i, j, _ in _PAIRS]
+    v = 0 if s[0] >= _SIN_1DEG else max(range(3), key=s.__getitem__)
+    i, j, k = _PAIRS[v]
+    cr = u[i][0] * u[j][1] - u[i][1] * u[j][0]
+    if cr == 0.0:
+        return 0.0
+    t = ((O[j][0] - O[i][0]) * u[j][1] - (O[j][1] - O[i][1]) * u[j][0]) / cr
+    S = (O[i][0] + t * u[i][0], O[i][1] + t * u[i][1])
+    return min(s[v], sin((P[k][0] - S[0], P[k][1] - S[1]), u[k]))
+
+
 def margin_at(q, pose, size) -> float:
     """The conditioning of the closure at the plate pose: |det J| / (|J₁| |J₂| |J₃|) of the
     loop equations (φ scaled by the size; 0 where two closures meet)."""
@@ -407,7 +436,7 @@ def triad_scalar(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, 
     if res is None:
         return _NAN7
     (B, C, X), _, m = res
-    return (*B, *C, *X, m)
+    return (*B, *C, *X, construction_sine(q, B, C, X) if m > 0 else m)
 
 
 def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rxx, rxy,
@@ -466,7 +495,8 @@ def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rx
                     moved = max(math.dist(new[0][0], B), math.dist(new[0][2], X))
                     res = new
                 (B, C, X), _, m = res
-                out[:, k] = (*B, *C, *X, m)
+                out[:, k] = (*B, *C, *X,
+                             construction_sine(qs[k], B, C, X) if m > 0 else m)
                 done[k] = True
     return tuple(o.reshape(shape) if shape else o[0] for o in out)
 
