@@ -126,6 +126,11 @@ def satisfies(branch: Branch, cand, pos, scene: Scene) -> bool:
     rel = branch.relation
     if rel == "near":
         raise AssertionError("near is decided by distance")
+    if not branch.ref:
+        raise BranchError(f"'{branch.text}' compares the corners of a class-III group, and "
+                          f"{branch.label} is not one; say '{branch.label} above' a point or "
+                          f"a line",
+                          file=scene.file, where=f"assembly.{branch.label}")
     for r in branch.ref:
         if r not in pos:
             raise BranchError(f"'{branch.text}' refers to {r}, which is not placed before "
@@ -218,6 +223,8 @@ def _choose_group(dyad, scene: Scene, pos, size):
                     f"{listing}); give a nearer point", file=scene.file,
                     where=f"assembly.{k}")
             ok = [ok[order[0]]]
+        elif not branch.ref:        # 'D uppermost': the extreme of the group's corners
+            ok = [c for c in ok if _extreme(branch.relation, k, c, labels)]
         else:       # words may name another corner of the group ("C lower than B")
             ok = [c for c in ok if satisfies(branch, c[k], {**pos, **c}, scene)]
     if len(ok) != 1:
@@ -232,6 +239,14 @@ def _choose_group(dyad, scene: Scene, pos, size):
              else "; the only closure")
     return pick, (f"{' and '.join(b.text for _, b in stated)} → "
                   f"{', '.join(f'{k} {_fmt(pick[k])}' for k in labels)}{apart}")
+
+
+def _extreme(rel: str, k: str, c, labels) -> bool:
+    """Whether corner ``k`` is the ``rel`` ('uppermost', 'lowest', 'leftmost', 'rightmost')
+    of the corners ``labels`` in the closure ``c``."""
+    axis, sign = {"uppermost": (1, 1.0), "lowest": (1, -1.0), "rightmost": (0, 1.0),
+                  "leftmost": (0, -1.0)}[rel]
+    return all(sign * float(c[k][axis]) > sign * float(c[o][axis]) for o in labels if o != k)
 
 
 def _fmt(c) -> str:

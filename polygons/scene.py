@@ -680,6 +680,10 @@ def path_stem(file: str) -> str:
 
 
 _RELATIONS = RELATIONS
+#: a corner named the extreme one of its class-III group's corners
+_EXTREMES = {"uppermost": "uppermost", "highest": "uppermost", "topmost": "uppermost",
+             "lowest": "lowest", "lowermost": "lowest", "bottommost": "lowest",
+             "leftmost": "leftmost", "rightmost": "rightmost"}
 #: other phrasings of the assembly words, read as the relation beside them
 _SYNONYMS = (("lower than", "below"), ("higher than", "above"), ("is below", "below"),
              ("is above", "above"), ("to the left of", "left of"),
@@ -698,6 +702,9 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     # '{label} {rel} REF' or '{rel} REF' (a label starts upper-case, a relation lower-case)
     head = label + " "
     rest = words[len(head):] if words.startswith(head) else words
+    if rest in _EXTREMES:                       # 'D uppermost': of its group's corners
+        return record(Branch, label=label, text=text, relation=_EXTREMES[rest], ref=(),
+                      near=None)
     for said, rel in _SYNONYMS:                 # the book's other phrasings
         if rest.startswith(said + " "):
             rest = rel + rest[len(said):]

@@ -214,10 +214,16 @@ TABLES: tuple[Table, ...] = (
     ), many=True),
     Table("assembly", "Which of the two closures of a dyad, in words: C = \"C above AD\", "
                       "\"below AD\", \"left of B\", \"right of B\" (the leading label is "
-                      "optional; the reference is a point or a line of two points), or "
+                      "optional; the reference is a point or a line of two points; also "
+                      "\"lower than\", \"higher than\", \"to the left of\"; a corner of a "
+                      "class-III group may name another corner, or be \"uppermost\", "
+                      "\"lowest\", \"leftmost\", \"rightmost\" of its corners), or "
                       "C = { near = [x, y] }.", (
         Key("<LABEL>", "branch", "'above', 'below', 'left of' or 'right of' a point or a line "
-                                 "of two labels, or an inline table { near = [x, y] }",
+                                 "of two labels ('lower than', 'higher than', 'to the left of', "
+                                 "'to the right of' too; a triad's corner: 'uppermost', "
+                                 "'lowest', 'leftmost', 'rightmost'), or an inline table "
+                                 "{ near = [x, y] }",
             example='"C right of A"'),
     )),
     Table("drawn", "The space diagram as drawn: coordinates of moving points at this instant "

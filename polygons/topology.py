@@ -681,8 +681,9 @@ def why_unplaced(scene, x: str, placed) -> str:
         return (f"{x} is joined by {', '.join(n for _, n in joints)}, and fewer than two of "
                 f"their other ends are placed: unless a link or guide is missing, the links "
                 f"around {x} form a closed group (a class-III Assur group, a triad) that no "
-                f"single dyad places; only mechanisms that decompose into dyads are "
-                f"supported")
+                f"single dyad places; a triad is solved when its plate's three corners each "
+                f"have one link to a placed point (a block on a guide at a corner, "
+                f"[sliders], is not supported yet)")
     if len(joints) == 1 and x not in scene.sliders and x not in scene.points:
         return (f"{x} hangs from one link ({joints[0][1]}) only: it needs a second link, a "
                 f"guide ([sliders.{x}]), a slot ([slots.{x}]) or [points.{x}] on a link")

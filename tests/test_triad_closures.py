@@ -250,3 +250,21 @@ def test_solve_at_theta_is_the_sweeps_row_and_one_smallest_construction_angle(ca
             assert np.allclose(sol.points[p].velocity, np.array(sw.vel[p])[:, k], rtol=1e-9,
                                atol=1e-12)
         assert sol.min_intersection_angle_deg == pytest.approx(sw.angle_deg[k], rel=1e-9)
+
+
+@pytest.mark.parametrize("words, same", [("B uppermost", True), ("B highest", True),
+                                         ("X rightmost", True), ("C rightmost", False)])
+def test_a_corner_named_the_extreme_of_its_group(words, same):
+    data = _coupler_data()
+    ref = solve(parse_scene(data, file="t.toml")).points["X"].position
+    data["assembly"] = {words[0]: words}
+    got = solve(parse_scene(data, file="t.toml")).points["X"].position
+    assert (math.dist(got, ref) < 1e-12) == same
+
+
+def test_an_extreme_word_on_a_dyad_is_refused_in_words():
+    data = tomllib.loads((CASES / "s001-we1.toml").read_text(encoding="utf-8"))
+    data["assembly"] = {"B": "B uppermost"}
+    with pytest.raises(BranchError) as e:
+        solve(parse_scene(data, file="t.toml"))
+    assert "compares the corners of a class-III group" in str(e.value)
