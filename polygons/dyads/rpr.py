@@ -180,7 +180,8 @@ class RPR:
                   f"From {b_} draw the centripetal acceleration of {A1} about {B}, ω² × "
                   f"{B}{A}, pointing towards {B}; call its end {k1}.",
                   component=C.CENTRIPETAL, link=lev)
-            n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"{a1} line", k1, None, "tangential",
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"line ⟂ {B}{A}", k1, None,
+                       "tangential",
                        f"(a_{A1})_{B}^t", f"(a_{A1})_{B}^t = α_{lev} × {B}{A} ⟂ {B}{A}",
                        f"Through {k1} draw a line perpendicular to {B}{A} for the tangential "
                        f"acceleration of {A1}, of unknown length.", component=C.TANGENTIAL,
