@@ -268,3 +268,14 @@ def test_an_extreme_word_on_a_dyad_is_refused_in_words():
     with pytest.raises(BranchError) as e:
         solve(parse_scene(data, file="t.toml"))
     assert "compares the corners of a class-III group" in str(e.value)
+
+
+def test_the_closures_counted_by_two_routes_agree():
+    """The same groups eliminated from the corner C instead of B (another polynomial): the
+    same closures, on 40 groups, half with two closures a hair apart (the check that found a
+    stalled bracket returning the critical point twice)."""
+    import sys
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from triad_closures import main
+    counts = main(40, 0, seed=7)
+    assert counts["routes_disagree"] == 0 and counts["closures"] >= 40

@@ -77,18 +77,19 @@ def _val(c, t):
 
 
 def _bracket(c, lo, hi, flo, fhi):
-    """The root of c in [lo, hi] where it changes sign (Illinois regula falsi, then
-    bisection to the last bit)."""
-    side, last = 0, math.nan
-    for _ in range(200):
+    """The root of c in [lo, hi] where it changes sign, to the last bit: the Illinois form
+    of regula falsi, with a bisection wherever two of its steps have not halved the bracket
+    (so a far end with a huge value cannot stall it)."""
+    side, slow = 0, 0
+    for _ in range(400):
+        width = hi - lo
+        if width <= 2.0 * _EPS * max(abs(lo), abs(hi)):
+            break
         x = (lo * fhi - hi * flo) / (fhi - flo) if fhi != flo else 0.5 * (lo + hi)
-        if not lo < x < hi:
-            x = 0.5 * (lo + hi)
+        if slow >= 2 or not lo < x < hi:
+            x, slow = 0.5 * (lo + hi), 0
             if not lo < x < hi:
-                return x
-        if abs(x - last) <= 4.0 * _EPS * abs(x):
-            return x                    # no longer moving: converged to the last bits
-        last = x
+                break
         fx = _val(c, x)[0]
         if fx == 0.0:
             return x
@@ -102,9 +103,8 @@ def _bracket(c, lo, hi, flo, fhi):
             if side == 1:
                 fhi *= 0.5
             side = 1
-        if hi - lo <= 4.0 * _EPS * max(abs(lo), abs(hi)):
-            break
-    return 0.5 * (lo + hi)
+        slow = slow + 1 if hi - lo > 0.5 * width else 0
+    return lo if abs(flo) < abs(fhi) else hi
 
 
 def real_roots(c) -> list[float]:
