@@ -7,8 +7,13 @@ carrying a point X ([points.X] on = "BC", a ternary link), or a triangle of thre
 CX, BX (its mirror image is then a closure too); each corner has one more link to a placed
 point.  ``[assembly]`` (words or ``near``) on any corner chooses the closure.
 
-Position: every closure, numerically (:mod:`polygons.dyads.triad_math`); the one the scene's
-words or ``near`` choose, followed by continuation through a sweep.
+Position: every closure, algebraically (:mod:`polygons.dyads.triad_math`: the real roots of
+a polynomial of degree ≤ 6, each polished by Newton); the one the scene's words or ``near``
+choose, followed by continuation through a sweep.
+
+Where AB and DC are parallel S is at infinity (a point of the construction, not a singularity
+of the group): the construction then takes S where another pair of the three links meets
+(:attr:`Triad.via`, :meth:`Triad.for_instant`).
 
 Velocity, by the auxiliary (Assur) point S, where the lines of AB and DC cross: S is a point
 of the plate on AB produced, so v_S − v_A = ω_AB × AB + ω_plate × BS is ⟂ AB, and likewise
