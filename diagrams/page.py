@@ -11,7 +11,9 @@ colours, line styles and key, at one scale for the whole cycle; the slider start
 the scene's own position.  Hovering a link highlights the polygon vectors that belong to it.
 Below, "draw it yourself": the student places a polygon's vertices with the mouse or the
 keyboard alone and saves the drawing as JSON (what ``polygons check SCENE --drawing FILE``
-grades) or SVG.  The data come from :mod:`diagrams.pagedata`; the script and style are the
+grades) or SVG; "Check my drawing" grades it in the page, offline, by the same rules
+(``diagrams/assets/grade.js`` on :func:`polygons.grade_drawing.rules`): each vector's mark,
+what is wrong with it and the step to redo, the wrong arrows drawn red.  The data come from :mod:`diagrams.pagedata`; the script and style are the
 files in ``diagrams/assets``.
 
 The page's state can be set from its address (``#stage=7&frame=40``) and read or driven by a
@@ -119,7 +121,7 @@ def page(sol, figs=None, n: int = FRAMES) -> str:
         "TITLE": esc(head), "CSS": asset("page.css") + HTML_CSS, "H1": typeset(title),
         "SID": esc(sid), "STAGES": "\n".join(stages), "KEY": _key(kinds),
         "OPTIONS": options, "DATA": script_json(data),
-        "JS": asset("page.js") + "\n" + asset("draw.js"),
+        "JS": asset("page.js") + "\n" + asset("grade.js") + "\n" + asset("draw.js"),
     })
 
 
@@ -166,7 +168,8 @@ click, or with the keyboard alone — Tab to the paper, arrow keys move the curs
 (Shift + arrow: 10 mm), Enter places the vertex and selects the next one in construction order,
 N / P select the next / previous vertex, Delete removes it. Arrows appear between consecutive
 construction vertices. Save the drawing as JSON (for <code>polygons check SCENE --drawing
-FILE</code>) or as SVG.</p>
+FILE</code>) or as SVG. "Check my drawing" grades it here, by the rules of
+<code>polygons check</code>: each vector's mark, what is wrong and the step to redo.</p>
 <div class="bar"><label for="draw-diagram">Polygon</label> <select id="draw-diagram">{OPTIONS}
 </select> <span id="draw-scale"></span></div>
 <div class="bar" role="group" aria-label="Vertex to place"><span>Vertex:</span>
@@ -176,7 +179,9 @@ FILE</code>) or as SVG.</p>
 <p id="draw-status" role="status" aria-live="polite"></p>
 <div class="bar"><button id="save-json" type="button">Save JSON</button>
 <button id="save-svg" type="button">Save SVG</button>
-<button id="draw-clear" type="button">Clear</button></div>
+<button id="draw-clear" type="button">Clear</button>
+<button id="draw-check" type="button">Check my drawing</button></div>
+<div id="draw-grade" aria-live="polite"></div>
 </section>
 <script type="application/json" id="frames">{DATA}</script>
 <script>

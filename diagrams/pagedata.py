@@ -13,7 +13,9 @@ Everything the page's script draws is computed here, in SI, and sent as one JSON
   that frame's input — the same program, on the same closures, as the static drawings;
 * one **box per polygon over the whole cycle**, so the live polygons keep one scale;
 * the **drawing mode** of each diagram: the vertices to place in construction order, the
-  construction's vectors, the static drawing's stated scale and a paper size.
+  construction's vectors, the static drawing's stated scale and a paper size, and the
+  grading rules of ``polygons check --drawing`` (:func:`polygons.grade_drawing.rules`: the
+  vectors to draw with their tolerances and slips) that the page's ``grade.js`` applies.
 
 Nothing here computes kinematics of its own.
 """
@@ -245,6 +247,8 @@ def frames(sol, figs=(), n: int = FRAMES) -> dict:
     layouts = {f.kind: f.meta.get("layout") for f in figs
                if f.stage is None and f.kind in diagrams and f.meta.get("layout") is not None}
     polys, drawing = {}, {}
+    from polygons.grade_drawing import emulated_tolerances, rules, stated_tolerance
+    emulated, stated = emulated_tolerances(sol), stated_tolerance(sol)
     for d in diagrams:
         con = layouts[d].con if d in layouts else construction(sol, d)
         names = [con.pole] + sorted((v for v in con.born if v != con.pole),
@@ -272,6 +276,8 @@ def frames(sol, figs=(), n: int = FRAMES) -> dict:
                     "names": {v: vertex_name(v) for v in names},
                     "key": key({st["c"] for st in ok})}
         drawing[d] = drawing_mode(sol, con, layouts.get(d), names)
+        # the grading rules of `polygons check --drawing`, for the page's grade.js
+        drawing[d]["rules"] = rules(sol, d, emulated, stated)
     if crank:
         shown = [_r(math.degrees(x) % 360.0) for x in xs]
     else:
@@ -323,7 +329,9 @@ def drawing_mode(sol, con, lay, names) -> dict:
             vectors.append([st.frm, st.to])
     unit = sc.unit.replace("²", "^2")
     per_mm = sc.per_cm_display / 10.0
-    return {"scale": f"1 mm = {float(f'{per_mm:.6g}'):g} {unit}",
+    from polygons.options import scale_per_cm
+    text = f"1 mm = {float(f'{per_mm:.6g}'):g} {unit}"
+    return {"scale": text, "si_per_mm": scale_per_cm(text, con.diagram) / 10.0,
             "statement": sc.statement, "paper": [W, H],
             "cursor": [float(round(pole[0])), float(round(pole[1]))],
             "vertices": names,

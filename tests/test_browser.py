@@ -632,3 +632,136 @@ def test_hostile_title_is_text_on_the_page(tmp_path, session):
     svg = session.evaluate("window.polygonsDrawing.svg()")
     root = ET.fromstring(svg.split("?>", 1)[1])
     assert hostile in root.find("{http://www.w3.org/2000/svg}title").text
+
+
+# ---------------------------------------------------------------- grading in the page
+def _drawing_data(d) -> dict:
+    return {"diagram": d.diagram, "scale": d.scale, "scale_text": d.scale_text,
+            "vertices": {n: list(p) for n, p in d.vertices.items()},
+            "vectors": [list(v) for v in d.vectors]}
+
+
+def _same(js, py, path="grade"):
+    """The page's grade equals the Python grader's: every string and flag exactly, every
+    number to 1e-9."""
+    if isinstance(py, float) or isinstance(js, float):
+        assert js is not None and py is not None, (path, js, py)
+        assert math.isclose(js, py, rel_tol=1e-9, abs_tol=1e-9), (path, js, py)
+    elif isinstance(py, dict):
+        assert set(js) == set(py), (path, set(js) ^ set(py))
+        for k in py:
+            _same(js[k], py[k], f"{path}.{k}")
+    elif isinstance(py, list):
+        assert len(js) == len(py), (path, js, py)
+        for i, (a, b) in enumerate(zip(js, py)):
+            _same(a, b, f"{path}[{i}]")
+    else:
+        assert js == py, (path, js, py)
+
+
+@needs_chromium
+def test_page_grades_the_corpus_as_the_python_grader(tmp_path, session):
+    """grade.js in the page, on the rules the page carries, grades every drawing of the
+    corpus of typical errors (tests/data/drawings) exactly as `polygons check --drawing`:
+    the same marks, problems, hints and notes, numbers to 1e-9, and the corpus's expected
+    marks and feedback."""
+    from drawing_corpus import CORPUS, DRAWINGS, case_of, check, mangled
+    from polygons.cli._drawing import grade_json
+    from polygons.cli.handout import write_page
+    from polygons.drawing_format import read_drawing
+    from polygons.grade_drawing import grade_rules
+    by_case = {}
+    for name in sorted(CORPUS):
+        by_case.setdefault(case_of(name), []).append(name)
+    for case, names in by_case.items():
+        page = write_page(str(case), tmp_path / f"{case.stem}.html")
+        data = _page_data(page.read_text(encoding="utf-8"))
+        session.open(page)
+        for name in names:
+            d = read_drawing(str(DRAWINGS / CORPUS[name]["file"]))
+            R = data["drawing"][d.diagram]["rules"]
+            py = grade_json(grade_rules(R, d))
+            js = session.evaluate(f"window.polygonsGrade.grade(JSON.parse(document."
+                                  f"getElementById('frames').textContent).drawing"
+                                  f"['{d.diagram}'].rules, {json.dumps(_drawing_data(d))})")
+            _same(js, py, name)
+            check(name, js)
+        for name, d in mangled(60):            # random slips of every kind at once
+            if case_of(name) != case:
+                continue
+            R = data["drawing"][d.diagram]["rules"]
+            js = session.evaluate(f"window.polygonsGrade.grade(JSON.parse(document."
+                                  f"getElementById('frames').textContent).drawing"
+                                  f"['{d.diagram}'].rules, {json.dumps(_drawing_data(d))})")
+            _same(js, grade_json(grade_rules(R, d)), d.file)
+        assert not _console_errors(session)
+    # an image vertex (bce similar to BCE) carried forward: a case with coupler points
+    import importlib.util
+    from polygons.drawing_format import StudentDrawing
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
+    spec = importlib.util.spec_from_file_location("make_corpus", DRAWINGS / "make_corpus.py")
+    mk = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mk)
+    case = CASES / "forces-actuator-four-bar.toml"
+    sol = solve(load_scene(case))
+    page = write_page(str(case), tmp_path / "four-bar.html")
+    data = _page_data(page.read_text(encoding="utf-8"))
+    session.open(page)
+    for diagram in ("velocity", "acceleration"):
+        steps = [st for st in sol.steps if st.diagram == diagram]
+        R = data["drawing"][diagram]["rules"]
+        assert any(e["image"] for e in R["expected"])
+        k = data["drawing"][diagram]["si_per_mm"]
+        for mods in ({}, {st.number: {"scale": 0.9, "turn": 3.0} for st in steps
+                          if st.kind == "vector"}):
+            P = mk.replay(sol, diagram, mods)
+            d = StudentDrawing(diagram, k, "1 mm", {v: (p[0] / k + 50, p[1] / k + 40)
+                                                    for v, p in P.items()},
+                               tuple((e["start"], e["end"]) for e in R["expected"]), "<four-bar>")
+            js = session.evaluate(f"window.polygonsGrade.grade(JSON.parse(document."
+                                  f"getElementById('frames').textContent).drawing"
+                                  f"['{diagram}'].rules, {json.dumps(_drawing_data(d))})")
+            py = grade_json(grade_rules(R, d))
+            _same(js, py, f"four-bar {diagram} {bool(mods)}")
+            images = [v for v, e in zip(py["vectors"], R["expected"]) if e["image"]]
+            assert images and all(v["mark"] == 1 for v in images)
+    assert not _console_errors(session)
+
+
+@needs_chromium
+def test_page_shows_a_reversed_coriolis(tmp_path, session):
+    """Draw it yourself, Fig 7's acceleration polygon with the Coriolis component reversed:
+    "Check my drawing" marks p₄p₂′ ½ and says why (reversed, the drawn direction, the step),
+    draws that arrow red, and keeps full marks for the steps built on it; a right drawing
+    checks "all right"."""
+    from drawing_corpus import DRAWINGS
+    from polygons.cli.handout import write_page
+    from polygons.drawing_format import read_drawing
+    page = write_page(str(CASES / "s003-fig7.toml"), tmp_path / "page.html")
+    session.open(page)
+    session.evaluate("window.polygonsDrawing.choose('acceleration')")
+    for f, right in (("fig7-a-coriolis-reversed.svg", False), ("fig7-a-right.json", True)):
+        d = read_drawing(str(DRAWINGS / f))
+        for v, p in d.vertices.items():
+            session.evaluate(f"window.polygonsDrawing.set({json.dumps(v)}, {json.dumps(list(p))})")
+        session.evaluate("document.getElementById('draw-check').click()")
+        got = json.loads(session.evaluate(
+            "JSON.stringify({text: document.getElementById('draw-grade').textContent,"
+            " marks: Array.prototype.map.call(document.querySelectorAll('#draw-grade li[data-vector]'),"
+            "   function (li) { return [li.dataset.vector, +li.dataset.mark]; }),"
+            " wrong: Array.prototype.map.call(document.querySelectorAll('#paper line.wrong'),"
+            "   function (l) { return [l.getAttribute('data-from'), l.getAttribute('data-to'),"
+            "                          l.getAttribute('stroke')]; }),"
+            " status: document.getElementById('draw-status').textContent})"))
+        marks = dict(got["marks"])
+        if right:
+            assert "5 of 5 vectors — all right" in got["text"] and not got["wrong"]
+            assert all(m == 1 for m in marks.values())
+            continue
+        assert marks["p4p2_1"] == 0.5 and marks["p4_1p4"] == 1 and marks["p2_1p2"] == 1
+        assert "p₄p₂′" in got["text"] and "the Coriolis component is reversed" in got["text"]
+        assert "acceleration step 6" in got["text"] and "p2_1" not in got["text"]
+        assert ["p4", "p2_1", "#C00000"] in got["wrong"]
+        assert "4.5 of 5" in got["status"]
+    assert not _console_errors(session)

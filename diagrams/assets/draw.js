@@ -9,7 +9,9 @@
   var status = document.getElementById('draw-status'), scaleOut = document.getElementById('draw-scale');
   var looks = {};
   Object.keys(D.polys).forEach(function (d) { D.polys[d].key.forEach(function (k) { looks[k.kind] = k; }); });
-  var state = {};                                // diagram → {placed, sel, cursor}
+  var state = {};                                // diagram → {placed, sel, cursor, graded}
+  var gradeOut = document.getElementById('draw-grade');
+  var WRONG = '#C00000';                         // a wrong vector, once graded
   var d = null;
 
   function S() { return state[d]; }
@@ -26,7 +28,8 @@
   }
   function choose(name) {
     d = name; pick.value = name;
-    if (!state[d]) { state[d] = {placed: {}, sel: 0, cursor: G().cursor.slice()}; }
+    if (!state[d]) { state[d] = {placed: {}, sel: 0, cursor: G().cursor.slice(), graded: null}; }
+    showGrade(state[d].graded);
     var P = G().paper;
     paper.setAttribute('viewBox', '0 0 ' + P[0] + ' ' + P[1]);
     paper.setAttribute('width', P[0] + 'mm'); paper.setAttribute('height', P[1] + 'mm');
@@ -68,6 +71,7 @@
     }
     if (next >= 0) { S().sel = next; msg += '; next: ' + G().labels[order[next]]; }
     else { msg += '; every vertex is placed: save the drawing'; }
+    if (S().graded) { gradeNow(); }
     say(msg + '.'); buttons(); render();
   }
   function move(dx, dy) {
@@ -98,8 +102,11 @@
     vectors().forEach(function (v) {
       var a = Y(S().placed[v[0]]), b = Y(S().placed[v[1]]);
       var lk = looks[kindOf(v[0], v[1])] || {colour: '#000', width: 0.5, dash: null};
-      var look = {colour: lk.colour, width: lk.width, dash: lk.dash, open: lk.open};
-      segs.push(K.arrow(paper, a, b, look, px, 'dv', {'data-from': v[0], 'data-to': v[1]}));
+      var bad = wrongOf(v[0], v[1]);
+      var look = {colour: bad ? WRONG : lk.colour, width: lk.width, dash: lk.dash, open: lk.open};
+      var attrs = {'data-from': v[0], 'data-to': v[1]};
+      if (bad) { attrs['data-wrong'] = bad; }
+      segs.push(K.arrow(paper, a, b, look, px, 'dv' + (bad ? ' wrong' : ''), attrs));
     });
     var names = Object.keys(S().placed);
     names.forEach(function (v) {
@@ -120,6 +127,60 @@
     paper.setAttribute('aria-label', 'Drawing paper for the ' + d + ' polygon, ' + W + ' by ' + H +
                        ' mm, scale ' + G().statement + '. Placing ' + G().labels[sel] +
                        '; cursor at ' + fmt(S().cursor[0]) + ', ' + fmt(S().cursor[1]) + ' mm.');
+  }
+  // ---- grading in the page: grade.js on the rules of `polygons check --drawing`
+  function wrongOf(f, t) {
+    var g = S().graded;
+    if (!g) { return null; }
+    var m = g.vectors.concat(g.extras).filter(function (m) {
+      return m.mark < 1 && (m.vector === f + t || m.vector === t + f);
+    })[0];
+    return m ? (m.problem || 'wrong') : null;
+  }
+  function gradeNow() {
+    var j = json();
+    var drawing = {diagram: d, scale: G().si_per_mm, scale_text: G().scale,
+                   vertices: j.vertices, vectors: j.vectors};
+    S().graded = window.polygonsGrade.grade(G().rules, drawing);
+    showGrade(S().graded);
+    return S().graded;
+  }
+  function showGrade(g) {
+    K.clear(gradeOut);
+    if (!g) { return; }
+    var h = document.createElement('p');
+    h.className = 'grade-total';
+    h.textContent = g.score + ' of ' + g.out_of + ' vectors' + (g.all_ok ? ' — all right' : '') +
+      ' (the rules of polygons check: a line is graded by its direction through your own ' +
+      'vertices; a known vector by its direction and its length at ' + G().statement + ')';
+    gradeOut.appendChild(h);
+    var ul = document.createElement('ul');
+    ul.className = 'grade-list';
+    g.vectors.forEach(function (m) {
+      var li = document.createElement('li');
+      li.dataset.vector = m.vector;
+      li.dataset.mark = String(m.mark);
+      li.className = m.mark === 1 ? 'ok' : (m.mark === 0.5 ? 'half' : 'off');
+      var v = document.createElement('b');
+      v.textContent = (m.mark === 1 ? '✓ ' : (m.mark === 0.5 ? '½ ' : '✗ ')) + m.shown;
+      li.appendChild(v);
+      li.appendChild(document.createTextNode(' ' + m.rule + (m.problem ? ': ' + m.problem : '')));
+      [m.note, m.mark < 1 ? m.hint : ''].forEach(function (t) {
+        if (t) { var p = document.createElement('div'); p.className = 'grade-hint'; p.textContent = t; li.appendChild(p); }
+      });
+      ul.appendChild(li);
+    });
+    g.closures.forEach(function (c) {
+      if (c.ok) { return; }
+      var li = document.createElement('li'); li.className = 'off';
+      li.textContent = '✗ closure: ' + c.hint; ul.appendChild(li);
+    });
+    if (g.unknown_vertices.length) {
+      var li = document.createElement('li'); li.className = 'off';
+      li.textContent = 'not graded: vertices ' + g.unknown_vertices.join(', ');
+      ul.appendChild(li);
+    }
+    gradeOut.appendChild(ul);
   }
   function json() {
     var out = {diagram: d, scale: G().scale, vertices: {}, vectors: vectors()};
@@ -159,6 +220,7 @@
       case 'p': case '[': select(S().sel - 1); break;
       case 'Delete': case 'Backspace':
         delete S().placed[G().vertices[S().sel]];
+        if (S().graded) { gradeNow(); }
         say(G().labels[G().vertices[S().sel]] + ' removed.'); buttons(); render(); break;
       default: done = false;
     }
@@ -179,11 +241,19 @@
     save(svgText(), 'image/svg+xml', 'svg');
   });
   document.getElementById('draw-clear').addEventListener('click', function () {
-    state[d] = null; choose(d); say('Cleared.');
+    state[d] = null; choose(d); showGrade(null); say('Cleared.');
+  });
+  document.getElementById('draw-check').addEventListener('click', function () {
+    var g = gradeNow(); render();
+    say('Graded: ' + g.score + ' of ' + g.out_of + ' vectors' + (g.all_ok ? ', all right.' : '; see below.'));
   });
   if (!D.diagrams.length) { root.hidden = true; return; }
   choose(D.diagrams[0]);
   window.polygonsDrawing = {json: json, svg: svgText, diagram: function () { return d; },
+                            // a script places a vertex (mm, y up) and grades as the button does
+                            set: function (v, p) { S().placed[v] = p.slice(); buttons(); render(); },
+                            choose: function (name) { choose(name); },
+                            check: function () { var g = gradeNow(); render(); return g; },
                             cursor: function () { return S().cursor.slice(); },
                             selected: function () { return G().vertices[S().sel]; }};
 })();

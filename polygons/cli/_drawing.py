@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+from ..notation import vertex
+
 from ..errors import SceneError
 
 
@@ -29,36 +31,38 @@ def report(sol, g, path: str) -> str:
              + (" — all right" if g.ok else ""),
              "  (tolerances: length from the drawing-board emulation's 95th percentile of "
              "each quantity, never under 1.0 mm of paper; direction from the instruments: "
-             "protractor ±0.25°, pencil ±0.25 mm)", ""]
+             "protractor ±0.25°, pencil ±0.25 mm; a line is graded by its direction through "
+             "your own vertices, its length is your own; a value shown equal to its "
+             "tolerance is within it)", ""]
     for m in g.marks:
         verdict = "ok " if m.mark == 1 else ("1/2" if m.mark == 0.5 else "OFF")
-        rule = m.expected.rule if m.expected else ""
         detail = ""
         if m.drawn and m.angle_err_deg is not None:
             detail = f"  direction {m.angle_err_deg:+.1f}° (± {m.direction_tol_deg:.1f}°)"
             if m.length_err_pct is not None:
                 detail += f", length {m.length_err_pct:+.1f} % (± {m.length_tol_pct:.1f} %)"
-        lines.append(f"  {verdict}  {m.name:<8} {rule}{detail}")
+        lines.append(f"  {verdict}  {m.shown:<8} {'line ' if m.line else ''}{m.rule}{detail}")
         if m.problem:
             lines.append(f"       {m.problem}")
+        if m.note:
+            lines.append(f"       {m.note}")
         if m.hint and m.mark < 1:
             lines.append(f"       hint: {m.hint}")
+    names = {v: vertex(v) for v in sol.vertices[g.diagram]}
     for c in g.closures:
-        lines.append(f"  {'ok ' if c.ok else 'OFF'}  closure at {c.vertex}: {c.off_mm:.2f} mm "
-                     f"from where its lines meet (± {c.tol_mm:.2f} mm)")
+        lines.append(f"  {'ok ' if c.ok else 'OFF'}  closure at {names.get(c.vertex, c.vertex)}"
+                     f": {c.off_mm:.2f} mm from where its lines meet (± {c.tol_mm:.2f} mm)")
         if c.hint:
             lines.append(f"       hint: {c.hint}")
-    for m in g.extras:
-        lines.append(f"  {'ok ' if m.mark == 1 else 'OFF'}  {m.name:<8} (also drawn: "
-                     f"{m.expected.rule}) {m.problem}".rstrip())
-    if g.scale_ratio is not None:
-        lines.append(f"  wrong scale: every length is {g.scale_ratio:.3g}× what {g.scale_text} "
-                     f"gives — the polygon's shape is right")
+    if g.extras:
+        lines.append(f"  also drawn: {', '.join(m.shown for m in g.extras)} (joining your own "
+                     f"vertices: not graded on its own)")
     if g.unknown:
         lines.append(f"  not graded: vertices {', '.join(g.unknown)} are not in the "
                      f"construction (its vertices: "
-                     f"{', '.join(sorted(sol.vertices[g.diagram]))}; the pole may also be "
-                     f"called o)")
+                     f"{', '.join(vertex(v) for v in sorted(sol.vertices[g.diagram]))}, "
+                     f"written {', '.join(sorted(sol.vertices[g.diagram]))} in a file; the "
+                     f"pole may also be called o)")
     return "\n".join(lines) + "\n"
 
 
@@ -67,23 +71,27 @@ def _f(x):
     return x if x is None or math.isfinite(x) else None
 
 
-def to_json(sol, g, path: str) -> dict:
-    def mark(m):
-        return {"vector": m.name, "rule": m.expected.rule if m.expected else None,
-                "step": ({"diagram": m.expected.step.diagram, "number": m.expected.step.number,
-                          "op": m.expected.step.op} if m.expected else None),
-                "drawn": m.drawn, "mark": m.mark, "direction_ok": m.direction_ok,
-                "sense_ok": m.sense_ok, "length_ok": m.length_ok,
-                "angle_error_deg": _f(m.angle_err_deg),
-                "length_error_pct": _f(m.length_err_pct),
-                "direction_tolerance_deg": _f(m.direction_tol_deg),
-                "length_tolerance_pct": _f(m.length_tol_pct), "problem": m.problem,
-                "hint": m.hint}
-    return {"case": {"file": sol.scene.file, "title": sol.scene.title}, "drawing": path,
-            "diagram": g.diagram, "scale": g.scale_text, "score": g.score,
-            "out_of": g.out_of, "all_ok": g.ok, "vectors": [mark(m) for m in g.marks],
-            "extras": [mark(m) for m in g.extras],
+def mark_json(m) -> dict:
+    return {"vector": m.name, "shown": m.shown, "rule": m.rule, "step": m.step,
+            "line": m.line, "drawn": m.drawn, "mark": m.mark,
+            "direction_ok": m.direction_ok, "sense_ok": m.sense_ok, "length_ok": m.length_ok,
+            "angle_error_deg": _f(m.angle_err_deg), "length_error_pct": _f(m.length_err_pct),
+            "direction_tolerance_deg": _f(m.direction_tol_deg),
+            "length_tolerance_pct": _f(m.length_tol_pct), "problem": m.problem,
+            "hint": m.hint, "note": m.note}
+
+
+def grade_json(g) -> dict:
+    """The grade as plain data (what the page's grade.js returns, field for field)."""
+    return {"diagram": g.diagram, "scale": g.scale_text, "score": g.score,
+            "out_of": g.out_of, "all_ok": g.ok, "vectors": [mark_json(m) for m in g.marks],
+            "extras": [mark_json(m) for m in g.extras],
             "closures": [{"vertex": c.vertex, "off_mm": _f(c.off_mm),
-                          "tolerance_mm": _f(c.tol_mm),
-                          "ok": c.ok, "hint": c.hint} for c in g.closures],
-            "wrong_scale_ratio": _f(g.scale_ratio), "unknown_vertices": list(g.unknown)}
+                          "tolerance_mm": _f(c.tol_mm), "ok": c.ok, "hint": c.hint}
+                         for c in g.closures],
+            "carried_ratio": _f(g.scale_ratio), "unknown_vertices": list(g.unknown)}
+
+
+def to_json(sol, g, path: str) -> dict:
+    return {"case": {"file": sol.scene.file, "title": sol.scene.title}, "drawing": path,
+            **grade_json(g)}

@@ -21,7 +21,11 @@ part of a_CB), ``cor_A`` (Coriolis 2ωv of pin A), ``vs_C`` / ``as_C`` (sliding 
 acceleration); a quantity expression of :mod:`polygons.quantities` (``v(C,B)``) also works.
 Values are SI (m/s, m/s², rad/s, rad/s²) unless a unit is written (``v_C="7.1 m/s"``,
 ``omega_BC=2000rpm``); ``CW``/``CCW`` after ω or α (``alpha_CD=150000CW``) also checks the
-sense, and so does a negative ω or α (CCW positive).
+sense, and so does a negative ω or α (CCW positive).  A sliding velocity or acceleration
+(``vs_C``, ``as_C``) is signed along its guide's or slot's direction: written with a sign
+(``vs_C=+6.9``, ``vs_C=-6.9``) it is graded with its sign; written without one, only its
+magnitude is graded (a length read off a polygon has none) and the report says so, giving the
+direction the sign is taken along.
 
 Exit status: 0 when every value is within tolerance, 3 when some are off, 1 on an error
 (unknown name, bad value), 2 on a usage error.
@@ -73,7 +77,7 @@ class Grade:
     tolerance_pct: float    # the same, as % of |expected|
     diff_pct: float | None  # (|measured| - |expected|) / |expected| × 100
     ok: bool
-    sense_given: str | None
+    sense_given: str | None  # 'CW'/'CCW' for ω, α; '+'/'-' for a signed slide; else None
     sense_ok: bool | None
     step: Step | None
     hint: str
@@ -221,7 +225,7 @@ def resolve(sol: Solution, name: str) -> str:
 # ---------------------------------------------------------------- values
 def parse_value(text: str, dimension: str, name: str, file: str | None) -> tuple[float, str | None]:
     """'7.1', '7.1 m/s', '150000CW', '2000 rpm CCW' -> (SI value, sense or None)."""
-    s = text.strip()
+    s = text.strip().replace("\u2212", "-")
     sense = None
     m = re.search(r"(?<![A-Za-z/])(CCW|ACW|CW)\s*$", s, re.IGNORECASE)
     if m:
@@ -261,6 +265,8 @@ def parse_measured(sol: Solution, items: list[str]) -> list[tuple[str, str, floa
             raise MeasuredError(f"{name} is given twice", file=sol.scene.file)
         seen.add(expr)
         value, sense = parse_value(text, _dimension(expr), name, sol.scene.file)
+        if _fn_args(expr)[0] in ("vs", "as") and text.strip()[:1] in ("+", "-", "\u2212"):
+            sense = "-" if value < 0 else "+"     # a written sign: the slide's sense graded
         out.append((name, expr, value, sense))
     return out
 
@@ -406,34 +412,8 @@ def tolerance_for(sol: Solution, expr: str, expected: float, pct: float,
     return tol
 
 
-def emulated_tolerances(sol: Solution, trials: int = 400) -> dict[str, float]:
-    """{expression: relative tolerance}: the 95th percentile of a careful drawing's error from
-    the drawing-board emulation (:mod:`polygons.drawing_board`: pencil and rule ±0.25 mm,
-    protractor ±0.25°), at this case's crank angle; {} when the emulation does not cover the
-    case (a slider driver, or a dyad it does not draw).  Fixed seed, so the grading is reproducible."""
-    from .. import drawing_board
-    from ..scene import Crank
-    drv = sol.scene.driver
-    if not isinstance(drv, Crank):
-        return {}
-    try:
-        result = drawing_board.summary(drawing_board.emulate(sol.scene, [drv.angle],
-                                                             trials=trials, seed=1))
-    except UnsupportedError:  # a dyad the emulation does not draw: the stated ± % applies
-        return {}
-    out = {}
-    for q, stats in result.items():        # keyed by the typed quantity (scene.Quantity)
-        p95 = float(stats["p95"])
-        if math.isfinite(p95) and p95 > 0:
-            out[str(q)] = p95
-    return out
-
-
-def stated_tolerance(sol: Solution) -> float:
-    text = sol.scene.source.get("drawing_tolerance")
-    if text is None:
-        return DEFAULT_TOLERANCE
-    return parse_quantity(text, "fraction")
+# the tolerances of a careful drawing live with the drawing grader (the page uses them too)
+from ..grade_drawing import emulated_tolerances, stated_tolerance  # noqa: E402,F401
 
 
 def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
@@ -464,6 +444,8 @@ def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
         if tol > pct * abs(expected) * (1 + 1e-9):
             source = "reading"
         signed = fn in SIGNED and (value < 0 or sense is not None)
+        if fn in ("vs", "as") and value < 0 and sense is None:
+            sense = "-"
         if fn in ("omega", "alpha") and sense is not None:
             value = abs(value) if sense == "CCW" else -abs(value)
         if signed and fn in ("vs", "as"):
@@ -473,6 +455,8 @@ def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],
         diff = err / abs(expected) * 100.0 if expected != 0 else None
         sense_ok = None
         if fn in ("omega", "alpha") and (sense is not None or value < 0) and expected != 0:
+            sense_ok = (value > 0) == (expected > 0)
+        if signed and fn in ("vs", "as") and expected != 0 and value != 0:
             sense_ok = (value > 0) == (expected > 0)
         ok = abs(err) <= tol * (1 + 1e-12) and sense_ok is not False
         step = producing_step(sol, expr)
@@ -579,8 +563,12 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
             shown = f"{_num(abs(g.measured))} {g.unit}" + (
                 _sense(g.measured) if g.sense_given or g.measured < 0 else "")
             exp = f"{_num(abs(g.expected))} {g.unit}{_sense(g.expected)}"
+        elif fn in ("vs", "as") and g.sense_given is None:     # the magnitude only
+            shown = f"{_num(abs(g.measured))} {g.unit}"
+            exp = f"{_num(abs(g.expected))} {g.unit} (magnitude)"
         elif fn in ("vs", "as"):
-            shown, exp = f"{_num(g.measured)} {g.unit}", f"{_num(g.expected)} {g.unit}"
+            shown = f"{'+' if g.measured > 0 else ''}{_num(g.measured)} {g.unit}"
+            exp = f"{'+' if g.expected > 0 else ''}{_num(g.expected)} {g.unit}"
         else:
             shown = f"{_num(abs(g.measured))} {g.unit}"
             exp = f"{_num(abs(g.expected))} {g.unit}"
@@ -589,17 +577,50 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
         lines.append(f"  {verdict}  {g.name:<{wn}}  measured {shown}, expected {exp} "
                      f"± {_num(g.tolerance)} (±{g.tolerance_pct:.2g} %, "
                      f"{SOURCE_WORDS[g.source]}): {diff}")
-        if g.sense_ok is False:
+        if g.sense_ok is False and fn in ("vs", "as"):
+            lines.append(f"       the sense is wrong: {_slide_words(sol, g.expr, g.expected)}")
+        elif g.sense_ok is False:
             lines.append(f"       the sense is wrong: it turns{_sense(g.expected)}")
         if g.hint:
             lines.append(f"       hint: {g.hint}")
         if g.tutorial_note:
             lines.append(f"       note: {g.tutorial_note}")
+        if fn in ("omega", "alpha") and g.sense_ok is None and g.expected != 0:
+            lines.append(f"       magnitude only: no sense was written, so it is not graded "
+                         f"(write {_num(abs(g.measured))}CW or CCW, or a negative value for "
+                         f"CW, to have it graded)")
+        if fn in ("vs", "as") and g.sense_given is None and g.expected != 0:
+            lines.append(f"       magnitude only: no sign was written, so its sense is not "
+                         f"graded; {g.name} is signed, {_slide_words(sol, g.expr, g.expected)}"
+                         f" (write {_num(abs(g.measured))} with + or - to have it graded)")
     off = [g for g in grades if not g.ok]
     lines.append("")
     lines.append(f"{len(grades) - len(off)} of {len(grades)} within tolerance"
                  + (f"; off: {', '.join(g.name for g in off)}" if off else "."))
     return "\n".join(lines) + "\n"
+
+
+def _slide_words(sol: Solution, expr: str, expected: float) -> str:
+    """'+ along the guide's direction 90°; the construction gives -6.928 (towards 270°)'."""
+    p = _fn_args(expr)[1][0]
+    sr = sol.slides.get(p)
+    if sr is None:
+        return f"the construction gives {_num(expected)}"
+    ang = math.degrees(math.atan2(sr.direction[1], sr.direction[0])) % 360.0
+    toward = ang if expected > 0 else (ang + 180.0) % 360.0
+    along = "the guide" if sr.along == "guide" else f"the slot of {sr.along}"
+    return (f"+ along {along}'s direction {ang:.0f}° (CCW from +x); the construction gives "
+            f"{_num(expected)}, towards {toward:.0f}°")
+
+
+def _graded(g: Grade) -> str:
+    """What of a value was graded: 'signed', 'magnitude and sense' or 'magnitude'."""
+    fn = g.expr.split("(")[0]
+    if fn in ("vs", "as") and g.sense_given is not None:
+        return "signed"
+    if fn in ("omega", "alpha") and g.sense_ok is not None:
+        return "magnitude and sense"
+    return "magnitude"
 
 
 def _finite(x):
@@ -621,6 +642,7 @@ def to_json(sol: Solution, grades: list[Grade], pct: float, scales: dict,
                     "tolerance_pct": _finite(g.tolerance_pct), "tolerance_source": g.source,
                     "diff_pct": _finite(g.diff_pct), "ok": g.ok,
                     "sense": g.sense_given, "sense_ok": g.sense_ok,
+                    "graded": _graded(g),
                     "step": ({"diagram": g.step.diagram, "number": g.step.number,
                               "op": g.step.op, "gives": g.step.gives,
                               "reason": g.step.reason} if g.step else None),

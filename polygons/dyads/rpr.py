@@ -196,7 +196,7 @@ class RPR:
                   f"a_{A1}", f"{a1} = intersection of the two lines",
                   f"The lines meet at {a1}: {b_}{a1} is the acceleration of {A1}.", (n1, n2),
                   component=C.RESULTANT)
-            k2 = b.fresh(A)
+            k2 = b.fresh(A, dash=True)
             b.add(Kind.VECTOR, Op.CORIOLIS, (A,), f"{a1}{k2}", a1, k2, "coriolis",
                   "a_cor", f"a_cor = 2 ω_{lev} × (v_{A})_{A1}",
                   f"From {a1} the Coriolis acceleration 2ωv, perpendicular to the slot, to "
