@@ -17,9 +17,9 @@ import numpy as np
 
 from .errors import PolygonsError
 from .scene import Scene
-from .sweep import (CHUNK, PROBE, Limit, Program, _SIN_PARALLEL, _assur_rows, _fmt_input,
-                    _groups, _referenced, _refined, _take, anchored, arrays_program,
-                    compile_plan, find_range, from_arrays)
+from .sweep import (CHUNK, PROBE, Limit, Program, _SIN_PARALLEL, _fmt_input, arrays_program,
+                    compile_plan, evaluate, find_range, from_arrays, run)
+from .sweep_follow import _assur_rows, _groups, _referenced, _refined, _take, anchored
 from .sweep_store import adopt
 
 
@@ -71,7 +71,7 @@ def stream(st: Stream, *, chunk: int = CHUNK * 4):
     sweep of any length runs in constant memory."""
     follow = _groups(st.prog) and st.n > 0
     if follow:      # a triad: from the scene's closure to the first input, then chunk to chunk
-        prog = anchored(st.prog, st.inputs(0, 1))
+        prog = anchored(st.prog, st.inputs(0, 1), evaluate)
         last = None
     for s in range(0, st.n, chunk):
         e = min(st.n, s + chunk)
@@ -83,7 +83,7 @@ def stream(st: Stream, *, chunk: int = CHUNK * 4):
             res = adopt(from_arrays(prog, code, params, fine), len(fine))
             if len(fine) != len(ext):
                 res = _take(res, rows)
-            res, _ = _assur_rows(prog, ext, res)
+            res, _ = _assur_rows(prog, ext, res, run)
             if last is not None:
                 res = _rows_from(res, 1)
             prog, last = _referenced(prog, res["pos"], len(xs) - 1), xs[-1:]

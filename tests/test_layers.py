@@ -31,7 +31,7 @@ WHERE = {
     "polygons.geometry": "interpreters",
     "polygons.narrate": "interpreters", "polygons.position": "interpreters",
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
-    "polygons.sweep_store": "interpreters",
+    "polygons.sweep_store": "interpreters", "polygons.sweep_follow": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
