@@ -91,16 +91,27 @@ def key_html(exam, figs: dict | None = None) -> str:
              + "".join(f"; {c} {esc(r)}" for r, c in exam.rejected.items()) + ".</p>\n",
              f"<p class=\"sub\">Every variant: construction angles ≥ "
              f"{exam.spec.min_angle_deg:g}°, assembly ≥ {exam.spec.closure_margin_deg:g}° "
-             f"from the other closure, asked vectors ≥ {exam.spec.min_vector_mm:g} mm at the "
-             f"stated scale. Full credit within the tolerance, "
-             f"{exam.spec.partial * 100:g} % within {exam.spec.partial_factor:g}× it.</p>\n",
+             f"from the other closure, no dead centre or change of sign of an asked answer "
+             f"within {exam.spec.pose_margin_deg:g}° of the pose, the line of every asked "
+             f"answer ≥ {exam.spec.min_vector_mm:g} mm at the stated scale and every answer ≥ "
+             f"{exam.spec.min_ratio:g}× its tolerance. Full credit within the tolerance, "
+             f"{exam.spec.partial * 100:g} % within {exam.spec.partial_factor:g}× it (not in "
+             f"the Canvas QTI: Canvas makes every band fully correct). ω and α are answered "
+             f"signed (+ counter-clockwise), a sliding value signed along its slot, a point's "
+             f"velocity or acceleration by its magnitude.</p>\n",
              f"<p class=\"sub\">{LEGEND}</p>\n"]
+    for expr, why in getattr(exam, "dropped", ()):
+        parts.append(f"<p class=\"sub\">Not asked: {esc(expr)} {esc(why)}.</p>\n")
     for v in exam.variants:
         first = " first" if v is exam.variants[0] else ""
         parts.append(f"<section class=\"variant{first}\">\n<h2>Variant {v.number}</h2>\n")
         parts.append("<p>" + "; ".join(f"{esc(n)} = {esc(t)}" for n, t in v.values)
                      + f" &nbsp;·&nbsp; smallest construction angle {v.min_angle_deg:.1f}°, "
                        f"assembly {v.closure_deg:.1f}°</p>\n")
+        if getattr(v, "data", ()):
+            parts.append("<table>" + "".join(
+                f"<tr><td>{esc(what)}</td><td>{esc(value)}</td></tr>" for what, value in v.data)
+                + "</table>\n")
         parts.append("<table><tr><th>quantity</th><th></th><th>answer</th><th>sense</th>"
                      "<th>± full</th><th>± partial</th><th>tolerance from</th></tr>\n")
         for a in v.asked:

@@ -28,12 +28,12 @@ from polygons.evaluate import Solution
 from polygons.narrate import worked
 from polygons.plan import Step
 from polygons.report import check_answers, sense
-from polygons.contacts import wheel_of
-from polygons.scene import Crank
 
 from .figures import Figures, cell_stage, cells, figures, stage_of, stage_width
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
-from .handout_forces import load_rows
+# the problem section (PAIRED_DATA, _data_rows: read by the tests from here)
+from .handout_problem import PAIRED_DATA, _data_rows  # noqa: F401
+from .handout_problem import _paragraphs, problem as _problem, redact_answers
 from .handout_style import CSS, EXPLAIN, SUBSUP_CSS  # noqa: F401 (SUBSUP_CSS: public)
 from .notation import join_vectors, link_names, name_bare_omegas, slot_names
 
@@ -82,39 +82,6 @@ def formula_with_numbers(step: Step, scene) -> str:
     """The step's worked line (symbol = theorem = numbers), as one line of text (not escaped):
     made by :func:`polygons.narrate.worked` from the step's terms (powers of ten printed)."""
     return plain_text(worked(step, scene, printed=True))
-
-
-def _paragraphs(text: str) -> list[str]:
-    """A statement written with hard line breaks → its paragraphs / list items."""
-    out: list[str] = []
-    marker = re.compile(r"^(\s*[-•]\s|\s*\d+\.\s|\s*\([ivx]+\)\s|\s*\([a-z]\)\s|\s*\(Ans|"
-                        r"\s*\(Answer)")
-    for line in text.strip().splitlines():
-        if not line.strip():
-            out.append("")
-            continue
-        if out and out[-1] and not marker.match(line):
-            out[-1] += " " + line.strip()
-        else:
-            out.append(line.strip())
-    return [p for p in out if p]
-
-
-_ANSWER_UNITS = r"(?:m/s\^?2|m/s²|m/s|rad/s\^?2|rad/s²|rad/s|N\b|kN\b|N ?m\b|W\b)"
-_PAREN = re.compile(r"\(([^()]*)\)")
-
-
-def redact_answers(text: str) -> str:
-    """The statement without the printed answers: '(Ans. 76 rad/s clockwise.)', '(Answer 34
-    m/s ...)' and parentheses quoting results in m/s, rad/s, N ... become '(answer on the
-    key)'.  Given data in words ('(alpha is 21.052 deg at this position)') stays."""
-    def repl(m):
-        inner = m.group(1).strip()
-        if re.match(r"(?i)ans(wer)?s?\b", inner) or re.search(
-                r"\d\s*" + _ANSWER_UNITS, inner):
-            return "(answer on the key)"
-        return m.group(0)
-    return _PAREN.sub(repl, text)
 
 
 # ---------------------------------------------------------------- the document
@@ -193,138 +160,6 @@ def _header(doc: _Doc, sol: Solution, worksheet: bool, kind: str) -> None:
                 'stated under it (print at 100 %: the grid squares are 5 mm). Measure your '
                 'answers off your drawings and write them in the table at the end.</p>\n')
     doc.add("</header>\n")
-
-
-def _g(x: float) -> str:
-    """A given datum as written: up to 6 significant figures, no trailing zeros."""
-    if x == 0:
-        return "0"
-    return f"{x:.6g}".replace("-", "−")
-
-
-def _fmt_len(si: float) -> str:
-    return f"{_g(si * 1000.0)} mm"
-
-
-#: a data table longer than this many rows sets two short data side by side in a row
-#: (link OA | 100 mm | link AF | 300 mm), as books print a long list of lengths
-PAIRED_DATA = 8
-#: a datum of at most this many characters is short
-SHORT_DATUM = 28
-
-
-def _data_rows(rows: list[tuple[str, str]]) -> list[list[tuple[str, str]]]:
-    """The data table's rows: one datum a row, or, for a table of more than
-    :data:`PAIRED_DATA` data, two consecutive short data (:data:`SHORT_DATUM`) a row, in
-    the order given (read across, then down); a long datum has its row to itself."""
-    if len(rows) <= PAIRED_DATA:
-        return [[r] for r in rows]
-    def short(r):
-        return len(r[0]) + len(r[1]) <= SHORT_DATUM
-    out: list[list[tuple[str, str]]] = []
-    for r in rows:
-        if short(r) and out and len(out[-1]) == 1 and short(out[-1][0]):
-            out[-1].append(r)
-        else:
-            out.append([r])
-    return out
-
-
-def _problem(doc: _Doc, sol: Solution, worksheet: bool) -> None:
-    scene = sol.scene
-    doc.add(f'<section id="problem">\n<h2>{doc.sec()}. The problem</h2>\n')
-    statement = scene.source.get("statement", "")
-    if statement:
-        if worksheet:
-            statement = redact_answers(statement)
-        doc.add('<div class="statement">\n')
-        for para in _paragraphs(statement):
-            doc.add(f"<p>{esc(plain_text(para))}</p>\n")
-        doc.add("</div>\n")
-    doc.add("<h3>Data</h3>\n<table class=\"data\">\n<tbody>\n")
-    rows: list[tuple[str, str]] = []
-    for lab, p in scene.ground.items():
-        rows.append((f"fixed point {lab}", f"({_g(p[0] * 1000)}, {_g(p[1] * 1000)}) mm"))
-    drv = scene.driver
-    for name, ln in scene.links.items():
-        if ln.length is not None:
-            rows.append((f"link {name}", _fmt_len(ln.length)))
-    model = scene.model
-    for pin, slot in model.slot.items():
-        lever, pivot = slot.carrier, slot.line.origin
-        txt = (f"{pin} slides in the slot of the lever {lever}, which turns about "
-               f"{pivot}; {slot.coincident} is the point of the lever under {pin}")
-        far_length = model.body(lever).length
-        if slot.far and far_length:
-            txt += f"; {pivot}{slot.far} = {_fmt_len(far_length)}"
-        rows.append((f"slot {lever}", txt))
-    for lab, g in model.guide.items():
-        through, angle = g.line.through, g.line.angle
-        txt = (f"slides on a fixed guide through ({_g(through[0] * 1000)}, "
-               f"{_g(through[1] * 1000)}) mm at {_g(math.degrees(angle))}°")
-        for yoke in model.yoke_slots():
-            if yoke.carrier == lab:
-                txt += (f"; it carries a slot at {_g(math.degrees(yoke.line.angle))}° in "
-                        f"which {yoke.at} slides")
-        if model.body(lab).kind == "wheel":           # a driven rolling wheel
-            r = wheel_of(scene, lab).radius
-            txt = (f"a wheel of radius {_fmt_len(r)} rolling without slipping on the fixed "
-                   f"surface at {_g(math.degrees(angle))}°; its centre at "
-                   f"({_g(through[0] * 1000)}, {_g(through[1] * 1000)}) mm")
-            rows.append((f"wheel {lab}", txt))
-            rows += [(f"pin {p}", f"on the wheel {lab}, {_fmt_len(d)} from its centre at "
-                                  f"{_g(math.degrees(a))}°")
-                     for p, a, d in wheel_of(scene, lab).rim]
-            continue
-        rows.append((f"slider {lab}", txt))
-    for lab, bp in scene.points.items():
-        if bp.along is not None:
-            where = f"{_fmt_len(bp.along)} along {bp.link}"
-        else:
-            where = f"at {_g(bp.fraction)} of {bp.link}"
-        if bp.left:
-            where += f", {_fmt_len(bp.left)} to the left"
-        rows.append((f"point {lab}", f"rigid with {bp.link}: {where}"))
-    if isinstance(drv, Crank):
-        rows.append((f"input crank {drv.link}",
-                     f"turns about {drv.pivot}; at this instant {drv.link} is at "
-                     f"{_g(math.degrees(drv.angle))}° (CCW from the +x axis)"))
-        rpm = abs(drv.omega) * 60.0 / (2 * math.pi)
-        rows.append(("ω of the crank", f"{_g(abs(drv.omega))} rad/s {sense(drv.omega)} "
-                                       f"(= {_g(rpm)} rev/min)"))
-        rows.append(("α of the crank", "0 (constant speed)" if drv.alpha == 0 else
-                     f"{_g(abs(drv.alpha))} rad/s² {sense(drv.alpha)}"))
-    elif model.body(drv.point).kind == "wheel":
-        r = wheel_of(scene, drv.point).radius
-        rows.append((f"input wheel {drv.point}",
-                     f"ω = {_g(abs(drv.velocity / r))} rad/s {sense(-drv.velocity)}, α = "
-                     f"{_g(abs(drv.acceleration / r))} rad/s² {sense(-drv.acceleration)}"))
-    elif drv.rod_rate is not None:        # the book gives the rod's ω and α
-        rod, w, al = drv.rod_rate
-        pts = sol.placement.points
-        a, b = (drv.point, rod.replace(drv.point, "", 1)) if rod.startswith(drv.point) else \
-            (rod.replace(drv.point, "", 1), drv.point)
-        at = (f"at {_g(math.degrees(math.atan2(pts[b][1] - pts[a][1], pts[b][0] - pts[a][0])))}"
-              f"° ({a} → {b}, CCW from +x); " if a in pts and b in pts else "")
-        rows.append((f"input rod {rod}", f"{at}ω = {_g(abs(w))} rad/s {sense(w)}, α = "
-                                         f"{_g(abs(al))} rad/s² {sense(al)}".rstrip()))
-    else:
-        rows.append((f"input slider {drv.point}",
-                     f"v = {_g(drv.velocity)} m/s, a = {_g(drv.acceleration)} m/s² along its "
-                     f"guide"))
-    for lab, br in scene.assembly.items():
-        rows.append((f"assembly of {lab}", br.text))
-    rows += load_rows(scene.loads, _g)
-    for pair in _data_rows(rows):
-        cells = "".join(f"<th scope=\"row\">{esc(a)}</th><td>{esc(plain_text(b))}</td>"
-                        for a, b in pair)
-        if len(pair) == 1 and len(rows) > PAIRED_DATA:      # across the table
-            cells = cells.replace("<td>", '<td colspan="3">')
-        doc.add(f"<tr>{cells}</tr>\n")
-    doc.add("</tbody>\n</table>\n")
-    doc.add('<p class="note">Coordinates: x to the right, y up; angles counter-clockwise (CCW) '
-            'from +x; CW = clockwise.</p>\n')
-    doc.add("</section>\n")
 
 
 def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,

@@ -347,7 +347,7 @@ def table(sol, readings: dict, ruler: float | None = RULER_MM) -> str:
             labels = list(r.points)
             for i, a in enumerate(labels):
                 for b in labels[i + 1:]:
-                    if any({a, b} == {ln.a, ln.b} for ln in sol.scene.links.values()):
+                    if any({a, b} == {ln.a, ln.b} for ln in sol.scene.model.links()):
                         mm = r.length(r.points[a], r.points[b])
                         lines.append(f"  {a + b:<12} {mm:8.1f} mm   {number(r.si(mm, ruler) * 1000):>10} mm")
             continue

@@ -66,13 +66,13 @@ def edges(scene) -> list[tuple[str, str, str]]:
     A slotted lever is its pivot to its *own* point under the pin (P4 under P2, not the pin P2
     of the other link) and on to its far end when it has one."""
     from polygons.evaluate import link_ends
-    out = [(ln.a, ln.b, name) for name, ln in scene.links.items()]
     model = scene.model                    # the slot runs on to the lever's point under the pin
+    out = [(ln.a, ln.b, ln.name) for ln in model.links()]
     for slot in model.slots() + model.crossings():
         out.append((slot.line.origin, slot.coincident, slot.carrier))
         if slot.far:
             out.append((slot.coincident, slot.far, slot.carrier))
-    for lab, bp in scene.points.items():
+    for lab, bp in model.points.items():
         try:
             a, b = link_ends(scene, bp.link)
         except KeyError:

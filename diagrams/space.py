@@ -72,7 +72,7 @@ def fixed_links(scene) -> list[str]:
     """The fixed link (the frame) as the books give it: 'AD = 1000 mm (fixed link)' between
     the fixed pivots, so that a four-bar's fourth link is listed with the other three."""
     g = list(scene.ground.items())
-    named = {frozenset((ln.a, ln.b)) for ln in scene.links.values()}
+    named = {frozenset((ln.a, ln.b)) for ln in scene.model.links()}
     pairs = ([(g[i], g[j]) for i in range(len(g)) for j in range(i + 1, len(g))]
              if len(g) <= MAX_FIXED_PAIRS else list(zip(g, g[1:])))
     out = []
@@ -222,7 +222,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             back.append(Polyline(arc, "slot", cls="contact-arc"))
         if q.roller:
             back.append(Circle(_r(at), round(q.roller * k, 3), "slot", cls="roller"))
-    for name, ln in scene.links.items():
+    for ln in scene.model.links():
+        name = ln.name
         if name in slotted or ln.a not in P or ln.b not in P:
             continue
         if name in equivalent:
@@ -237,7 +238,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         neighbours[ln.b].append(P[ln.a])
 
     # points rigid with a link: continuation or plate
-    for lab, bp in scene.points.items():
+    for lab, bp in scene.model.points.items():
         if lab not in P:
             continue
         try:
@@ -358,7 +359,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
                 break
         else:
             groups.append([lab])
-    body = set(scene.points)
+    body = set(scene.model.points)
     for gr in groups:
         p = P[gr[0]]
         at = " ".join(f"at-{token(lab)}" for lab in gr)
@@ -406,7 +407,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         arc_inputs(c, L, drv.angle, arcs)
     elif rod is not None:   # the book gives the rod's ω and α: arcs about its middle (the
         name, w, al = rod   # slider's v and a are answers then, not drawn)
-        a, b = next(((ln.a, ln.b) for ln in scene.links.values()
+        a, b = next(((ln.a, ln.b) for ln in scene.model.links()
                      if name in (ln.a + ln.b, ln.b + ln.a)), (None, None))
         if a in P and b in P:
             c = ((P[a][0] + P[b][0]) / 2, (P[a][1] + P[b][1]) / 2)
@@ -478,9 +479,9 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     scene = sol.scene
     content, box, sc, _ = space_layout(sol, scale, paper)
     legend = [("Links:", "bold")]
-    for name, ln in scene.links.items():
+    for ln in scene.model.links():
         if ln.a in sol.placement.points and ln.b in sol.placement.points:
-            legend.append((f"{name} = {number(ln.length * 1000)} mm", "normal"))
+            legend.append((f"{ln.name} = {number(ln.length * 1000)} mm", "normal"))
     legend += [(text, "normal") for text in fixed_links(scene)]
     for slot in scene.model.slots() + scene.model.crossings():
         legend.append((f"{slot.at} slides in the slot of {slot.carrier} "
@@ -522,7 +523,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
         else:
             legend.append((f"slider {drv.point}: v = {number(drv.velocity)} m/s, "
                            f"a = {number(drv.acceleration)} m/s² along its guide", "normal"))
-    for point, sl in scene.prescribed.items():      # the second input's values
+    for point, sl in scene.model.prescribed.items():      # the second input's values
         legend.append((f"collar {point}: {number(sl.position * 1000)} mm from "
                        f"{sl.p}, ṡ = {number(sl.velocity)} m/s, s̈ = "
                        f"{number(sl.acceleration)} m/s² along {sl.link}", "normal"))

@@ -95,7 +95,7 @@ class Result:
         from .forces import analyse, has_forces
         if has_forces(self.scene):
             from .cli.forces import to_dict as forces_dict
-            data["forces"] = forces_dict(analyse(self.scene))
+            data["forces"] = forces_dict(analyse(self.scene, method="polygons.api (Result.to_dict)"))
         return data
 
     def to_json(self) -> str:

@@ -21,7 +21,6 @@ This module imports neither shapely nor the diagrams.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -30,6 +29,7 @@ from .contacts import wheel_of
 from .dyads.base import ARRAY_TWIN
 from .errors import UnsupportedError
 from .plan import Plan
+from .program import Expr, Line, Lit, Name, live
 from .scene import Crank, Scene
 from .steps import Diagram, Op, Step, Vertices
 
@@ -53,12 +53,15 @@ class _Fail(Exception):
     """Raised by generated code: ``args[0]`` indexes the program's failure table."""
 
 
+E = Expr
+
+
 # ---------------------------------------------------------------- code generation
 class Source:
     """What a dyad's ``source(g)`` and the op generators write with: fresh local names,
     scene parameters, placed positions, checks.  (The ``g`` of :meth:`Dyad.source`.)"""
 
-    x = "x"   # the driver's input (θ in rad or s in m)
+    x = Name("x")   # the driver's input (θ in rad or s in m)
 
     # Names the generated code may call: cos, sin, atan2, degrees, sqrt, nan, where (math or
     # numpy); ``hypot`` is the kernel's norm (√(x² + y²) over arrays), ``hypot_p`` a dyad
@@ -74,7 +77,7 @@ class Source:
         self.margins: list[str] = []
         self.margin_of: list = []      # the dyad of each margin
         self.crossings: list = []      # (u × v, u · v, step) of every intersection
-        self.lines: list[str] = []
+        self.lines: list[Line] = []     # the statements, typed (polygons.program)
         self.getters: list = []        # scene -> float, one per parameter k<i>
         self.namespace: dict = ({"cos": np.cos, "sin": np.sin, "hypot": _hypot_cols,
                                  "atan2": np.arctan2, "degrees": np.degrees, "where": np.where,
@@ -92,37 +95,60 @@ class Source:
         self._n = 0
         self._memo: dict[str, str] = {}
         self._checked: set[str] = set()
+        self.untyped: list[str] = []   # formulas given as bare text (see let)
 
     # -- used by the dyad modules ----------------------------------------------------------
     def param(self, getter) -> str:
         """A scene number as a parameter of the compiled function: ``getter(scene)`` (or
         ("sigma", label) for a closure) is read per scene, so the code serves a topology."""
         self.getters.append(getter)
-        return f"k{len(self.getters) - 1}"
+        return Name(f"k{len(self.getters) - 1}")
 
     def sigma(self, label: str) -> str:
         return self.param(("sigma", label))
 
-    def let(self, expr: str) -> str:
+    def e(self, template: str, *operands) -> Expr:
+        """A formula over names: ``template`` with one ``{}`` per operand (Names from
+        :meth:`let`, :meth:`param`, :meth:`pos`; Exprs; numbers), what it reads typed."""
+        return Expr(template, *operands)
+
+    def let(self, expr: Expr | Name | str, *operands) -> Name:
         """``expr`` in a fresh local (or the local that already holds it: every local is
-        assigned once, so equal text is an equal value)."""
-        name = self._memo.get(expr)
+        assigned once, so equal text is an equal value); a template and its operands make
+        the formula (:meth:`e`): ``g.let("{} - {}", qx, px)``."""
+        if type(expr) is str and not operands:
+            # text whose names are not typed (an f-string: the way before typed formulas):
+            # taken as reading every name made so far, so no statement it needs is dropped;
+            # counted (``untyped``) — tests/test_program.py holds the shipped groups at none
+            self.untyped.append(expr)
+            reads = frozenset(Name(f"v{i}") for i in range(1, self._n + 1)) | frozenset(
+                Name(f"k{i}") for i in range(len(self.getters)))
+            expr = Expr("{}", Lit(expr))
+            expr.reads = reads
+        elif type(expr) is str:
+            expr = Expr(expr, *operands)
+        elif not isinstance(expr, (Expr, Name)) or operands:
+            raise TypeError(f"let takes a typed formula (Source.e), not {expr!r}")
+        text = str(expr)
+        name = self._memo.get(text)
         if name is not None:
             return name
         self._n += 1
-        name = f"v{self._n}"
-        self.lines.append(f"{name} = {expr}")
-        self._memo[expr] = name
+        name = Name(f"v{self._n}")
+        self.lines.append(Line((name,), f"{name} = {text}", expr.reads))
+        self._memo[text] = name
         return name
 
-    def call(self, fn, *args, n: int = 1):
+    def call(self, fn, *args, n: int = 1) -> list[Name]:
         if self.arrays:
             fn = ARRAY_TWIN.get(fn, fn)
         fname = f"_f_{fn.__name__}"
         self.namespace[fname] = fn
-        names = [f"v{self._n + i + 1}" for i in range(n)]
+        names = [Name(f"v{self._n + i + 1}") for i in range(n)]
         self._n += n
-        self.lines.append(f"{', '.join(names)} = {fname}({', '.join(args)})")
+        args = Expr(", ".join("{}" for _ in args), *args)
+        self.lines.append(Line(tuple(names), f"{', '.join(names)} = {fname}({args})",
+                               args.reads))
         return names
 
     def margin(self, m: str) -> None:
@@ -133,7 +159,7 @@ class Source:
             self.margin_of.append(self.dyad)
             return
         test = ">= 0.0" if self.dyad.two_closures else "> 0.0"
-        self.fail_unless(f"{m} {test}", ("dyad", self.dyad))
+        self.fail_unless(E("{} " + test, m), ("dyad", self.dyad))
 
     def pos(self, label: str) -> tuple[str, str]:
         """The local names of a placed point's coordinates."""
@@ -143,15 +169,16 @@ class Source:
         self.placed[label] = (x, y)
 
     # -- used by the op generators ---------------------------------------------------------
-    def fail_unless(self, cond: str, why) -> None:
+    def fail_unless(self, cond: Expr, why) -> None:
         # over arrays there are no checks; a test already made on the same locals has passed
-        if self.arrays or cond in self._checked:
+        if self.arrays or cond.text in self._checked:
             return
-        self._checked.add(cond)
+        self._checked.add(cond.text)
         self.fails.append(why)
-        self.lines.append(f"if not ({cond}): raise _Fail({len(self.fails) - 1})")
+        self.lines.append(Line((), f"if not ({cond}): raise _Fail({len(self.fails) - 1})",
+                               cond.reads))
 
-    def vec(self, ex: str, ey: str) -> tuple[str, str]:
+    def vec(self, ex: Expr, ey: Expr) -> tuple[Name, Name]:
         return self.let(ex), self.let(ey)
 
 
@@ -186,24 +213,24 @@ class _Steps:
     # vector helpers over pairs of local names
     def r(self, p, x):
         (px, py), (xx, xy) = self.g.pos(p), self.g.pos(x)
-        return self.g.vec(f"{xx} - {px}", f"{xy} - {py}")
+        return self.g.vec(E("{} - {}", xx, px), E("{} - {}", xy, py))
 
     def of(self, d, label):
         return self.vx[d][self.names.of(label)]
 
     def norm(self, v):
-        return self.g.let(f"hypot({v[0]}, {v[1]})")
+        return self.g.let("hypot({}, {})", v[0], v[1])
 
     def sub(self, a, b):
         if b == ("0.0", "0.0"):
             return a
-        return self.g.vec(f"{a[0]} - {b[0]}", f"{a[1]} - {b[1]}")
+        return self.g.vec(E("{} - {}", a[0], b[0]), E("{} - {}", a[1], b[1]))
 
     def cross(self, a, b):
-        return self.g.let(f"{a[0]} * {b[1]} - {a[1]} * {b[0]}")
+        return self.g.let("{} * {} - {} * {}", a[0], b[1], a[1], b[0])
 
     def dot(self, a, b):
-        return self.g.let(f"{a[0]} * {b[0]} + {a[1]} * {b[1]}")
+        return self.g.let("{} * {} + {} * {}", a[0], b[0], a[1], b[1])
 
     def slider_e(self, X, attr="direction"):
         """The unit vector of the fixed guide of ``X`` (``attr`` 'slot_direction': of the slot
@@ -236,19 +263,19 @@ class _Steps:
     def unit(self, r):
         """r / |r|."""
         n = self.norm(r)
-        return self.g.vec(f"{r[0]} / {n}", f"{r[1]} / {n}")
+        return self.g.vec(E("{} / {}", r[0], n), E("{} / {}", r[1], n))
 
     def rel_vel(self, w, r):
-        return self.g.vec(f"{w} * -{r[1]}", f"{w} * {r[0]}")
+        return self.g.vec(E("{} * -{}", w, r[1]), E("{} * {}", w, r[0]))
 
     def centripetal(self, w, r):
-        w2 = self.g.let(f"-({w} * {w})")
-        return self.g.vec(f"{w2} * {r[0]}", f"{w2} * {r[1]}")
+        w2 = self.g.let("-({} * {})", w, w)
+        return self.g.vec(E("{} * {}", w2, r[0]), E("{} * {}", w2, r[1]))
 
     def ang(self, r, rel):
         """cross(r, rel) / dot(r, r): ω or α from a relative vector."""
-        return self.g.let(f"({r[0]} * {rel[1]} - {r[1]} * {rel[0]}) / "
-                          f"({r[0]} * {r[0]} + {r[1]} * {r[1]})")
+        return self.g.let("({} * {} - {} * {}) / ({} * {} + {} * {})",
+                            r[0], rel[1], r[1], rel[0], r[0], r[0], r[1], r[1])
 
     def drawn(self, s, stroke: str, xy):
         """``xy`` as the drawing board's instrument draws it (``stroke``: 'vector' set off
@@ -257,12 +284,12 @@ class _Steps:
         inst = self.g.instruments
         if inst is None:
             return xy
-        return tuple(self.g.call(getattr(inst, stroke), repr(str(s.diagram)), *xy, n=2))
+        return tuple(self.g.call(getattr(inst, stroke), Lit(repr(str(s.diagram))), *xy, n=2))
 
     def vector(self, s, vec, unit, terms):
         vec = self.drawn(s, "vector", vec)
         start = self.vx[s.diagram][s.start]
-        end = self.g.vec(f"{start[0]} + {vec[0]}", f"{start[1]} + {vec[1]}")
+        end = self.g.vec(E("{} + {}", start[0], vec[0]), E("{} + {}", start[1], vec[1]))
         self.vx[s.diagram][s.end] = end
         return dict(at=start, vector=vec, point=end), None, None, unit, terms
 
@@ -270,8 +297,8 @@ class _Steps:
         g = self.g
         d = self.drawn(s, "direction", d)
         n = self.norm(d)
-        g.fail_unless(f"{n} != 0.0 and {n} == {n}", ("step", s, "zero"))
-        u = g.vec(f"{d[0]} / {n}", f"{d[1]} / {n}")
+        g.fail_unless(E("{} != 0.0 and {} == {}", n, n, n), ("step", s, "zero"))
+        u = g.vec(E("{} / {}", d[0], n), E("{} / {}", d[1], n))
         self.lines[(s.diagram, s.number)] = (anchor, u)
         return anchor, u
 
@@ -295,7 +322,7 @@ class _Steps:
         val = self.g.param((lambda sc: sc.driver.velocity) if vel
                            else (lambda sc: sc.driver.acceleration))
         unit = _unit_of(s.diagram)
-        vec = self.g.vec(f"{val} * {e[0]}", f"{val} * {e[1]}")
+        vec = self.g.vec(E("{} * {}", val, e[0]), E("{} * {}", val, e[1]))
         return self.vector(s, vec, unit, ((s.quantity, val, unit),))
 
     def centripetal_op(self, s):
@@ -319,7 +346,8 @@ class _Steps:
     def line_perp(self, s):
         P, X = s.args
         r = self.r(P, X)
-        return self.line_result(s, self.line(s, (f"-{r[1]}", r[0]), self.vx[s.diagram][s.start]))
+        return self.line_result(s, self.line(s, (E("-{}", r[1]), r[0]),
+                                             self.vx[s.diagram][s.start]))
 
     def line_along(self, s):
         P, X = s.args
@@ -340,13 +368,13 @@ class _Steps:
         e, slot = self.slot_e(A_)
         w = self.omega[slot.carrier]
         v_s = self.slide_v[A_]
-        ve = g.vec(f"{v_s} * {e[0]}", f"{v_s} * {e[1]}")
-        w2 = g.let(f"2.0 * {w}")
-        a_cor = g.vec(f"{w2} * -{ve[1]}", f"{w2} * {ve[0]}")
+        ve = g.vec(E("{} * {}", v_s, e[0]), E("{} * {}", v_s, e[1]))
+        w2 = g.let("2.0 * {}", w)
+        a_cor = g.vec(E("{} * -{}", w2, ve[1]), E("{} * {}", w2, ve[0]))
         self.cor[A_] = a_cor
         anchor = self.sub(self.of(s.diagram, A_), self.drawn(s, "vector", a_cor))
         ln = self.line(s, e, anchor)
-        neg = g.vec(f"-{a_cor[0]}", f"-{a_cor[1]}")
+        neg = g.vec(E("-{}", a_cor[0]), E("-{}", a_cor[1]))
         return dict(at=ln[0], vector=neg, direction=ln[1]), None, None, "m/s^2", (
             (f"ω_{slot.carrier}", ("abs", w), "rad/s"),
             (f"(v_{A_})_{slot.coincident}", ("abs", v_s), "m/s"),
@@ -368,9 +396,9 @@ class _Steps:
             e, slot = self.slot_e(*s.args)
             L, v_s = slot.carrier, self.slide_v[key]
         w = self.omega[L]
-        ve = g.vec(f"{v_s} * {e[0]}", f"{v_s} * {e[1]}")
-        w2 = g.let(f"2.0 * {w}")
-        a_cor = self.cor[key] = g.vec(f"{w2} * -{ve[1]}", f"{w2} * {ve[0]}")
+        ve = g.vec(E("{} * {}", v_s, e[0]), E("{} * {}", v_s, e[1]))
+        w2 = g.let("2.0 * {}", w)
+        a_cor = self.cor[key] = g.vec(E("{} * -{}", w2, ve[1]), E("{} * {}", w2, ve[0]))
         return self.vector(s, a_cor, "m/s^2", ((f"ω_{L}", ("abs", w), "rad/s"),
                                                (f"ṡ_{A_}", ("abs", v_s), "m/s"),
                                                ("2ωv", ("hypot", a_cor), "m/s^2")))
@@ -389,7 +417,7 @@ class _Steps:
         else:
             val = self.slide_a[C] = g.param(lambda sc: sc.prescribed[C].acceleration)
         unit = _unit_of(s.diagram)
-        vec = g.vec(f"{val} * {e[0]}", f"{val} * {e[1]}")
+        vec = g.vec(E("{} * {}", val, e[0]), E("{} * {}", val, e[1]))
         return self.vector(s, vec, unit, ((s.quantity, val, unit),))
 
     def join(self, s):
@@ -403,16 +431,16 @@ class _Steps:
         (p, u), (q, v) = (self.lines[(s.diagram, n)] for n in s.lines)
         den = self.cross(u, v)
         dot = self.dot(u, v)
-        angle = g.let(f"degrees(atan2(abs({den}), abs({dot})))")
+        angle = g.let("degrees(atan2(abs({}), abs({})))", den, dot)
         g.crossings.append((den, dot, s))
-        g.fail_unless(f"{angle} >= {PARALLEL_DEG!r}", ("step", s, "parallel"))
+        g.fail_unless(E("{} >= {}", angle, PARALLEL_DEG), ("step", s, "parallel"))
         if g.meet is not None:        # the staged solver: drawn and intersected by shapely
             pt = tuple(g.call(g.meet, *p, *u, *q, *v, n=2))
-            g.fail_unless(f"{pt[0]} == {pt[0]}", ("step", s, "meet"))
+            g.fail_unless(E("{} == {}", pt[0], pt[0]), ("step", s, "meet"))
         else:
             w = self.sub(q, p)
-            t = g.let(f"({w[0]} * {v[1]} - {w[1]} * {v[0]}) / {den}")
-            pt = g.vec(f"{p[0]} + {t} * {u[0]}", f"{p[1]} + {t} * {u[1]}")
+            t = g.let("({} * {} - {} * {}) / {}", w[0], v[1], w[1], v[0], den)
+            pt = g.vec(E("{} + {} * {}", p[0], t, u[0]), E("{} + {} * {}", p[1], t, u[1]))
         pt = self.drawn(s, "mark", pt)
         self.vx[s.diagram][s.end] = pt
         unit = _unit_of(s.diagram)
@@ -471,7 +499,7 @@ class _Steps:
                 self.alpha[L] = self.ang(self.r(P, Q), self.sub(self.of(A, Q), self.of(A, P)))
             t = self.rel_vel(self.alpha[L], r)
             c = self.centripetal(self.omega[L], r)
-            vec = self.g.vec(f"{t[0]} + {c[0]}", f"{t[1]} + {c[1]}")
+            vec = self.g.vec(E("{} + {}", t[0], c[0]), E("{} + {}", t[1], c[1]))
         unit = _unit_of(s.diagram)
         return self.vector(s, vec, unit, ((f"{s.start}{s.end}", ("hypot", vec), unit),))
 
@@ -482,7 +510,7 @@ class _Steps:
         e = self.slider_e(W)
         r = self.g.param(lambda sc: wheel_of(sc, W).radius)
         along = self.dot(self.of(s.diagram, W), e)
-        val = self.g.let(f"-{along} / {r}")
+        val = self.g.let("-{} / {}", along, r)
         vel = s.diagram == V
         (self.omega if vel else self.alpha)[L] = val
         unit, rate = ("m/s", "rad/s") if vel else ("m/s^2", "rad/s^2")
@@ -533,7 +561,7 @@ def check_compilable(scene: Scene, plan: Plan, steps: tuple[Step, ...]) -> None:
     ``source``, a step op without its generator (every shipped dyad and op has one now; this
     stays the guard for a new kind added to the kernel before its generator)."""
     for d in plan.dyads:
-        if not hasattr(d, "source"):
+        if not callable(getattr(d, "source", None)):
             raise NotCompiled(f"the compiled evaluator does not generate the "
                               f"{type(d).__name__} dyad at {', '.join(d.placed)} yet",
                               file=scene.file)
@@ -639,9 +667,9 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
         index[("margins", "")] = tuple(put(m) for m in g.margins)
         index[("margin_of", "")] = tuple(g.margin_of)
         index[("crossings", "")] = tuple((put(c[0]), put(c[1]), c[2]) for c in g.crossings)
-    lines = _live(lines, out)
+    lines = live(lines, out)            # the ops the outputs need (polygons.program)
     params = ", ".join(f"k{i}" for i in range(len(g.getters)))
-    body = "\n    ".join(lines)
+    body = "\n    ".join(line.text for line in lines)
     src = (f"def _solve(x, _k):\n    ({params}{',' if len(g.getters) == 1 else ''}) = _k\n"
            f"    {body}\n    return ({', '.join(out)},)\n")
     ns = dict(g.namespace)
@@ -649,25 +677,6 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
          ns)
     return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src,
                  g.namespace)
-
-
-_NAME = re.compile(r"\bv\d+\b")
-
-
-def _live(lines: list[str], out: list[str]) -> list[str]:
-    """Dead-code elimination on the straight-line code: keep the assignments ``out`` needs."""
-    need = {n for o in out for n in _NAME.findall(o)}
-    kept = []
-    for line in reversed(lines):
-        if line.startswith("if "):      # a check stays, with what it tests
-            kept.append(line)
-            need.update(_NAME.findall(line))
-            continue
-        targets, _, expr = line.partition(" = ")
-        if any(t.strip() in need for t in targets.split(",")):
-            kept.append(line)
-            need.update(_NAME.findall(expr))
-    return kept[::-1]
 
 
 def _lazy(v, put):

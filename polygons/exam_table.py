@@ -42,7 +42,10 @@ SLIDER_KEYS = {"position": "length", "velocity": "velocity", "acceleration": "ac
 #: quantity functions an exam may ask (a number read off the polygons)
 ASKABLE = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor")
 DEFAULTS = {"min_angle": "30 deg", "closure_margin": "15 deg", "min_vector": "8 mm",
-            "attempts": 200, "partial": "50 %", "partial_factor": 3}
+            "min_ratio": 5, "pose_margin": "5 deg", "attempts": 200, "partial": "50 %",
+            "partial_factor": 3}
+#: keys whose range is a magnitude (the sense stays the scene's)
+MAGNITUDES = ("omega", "alpha", "rod_omega", "rod_alpha")
 
 _RANGE = re.compile(r"^\s*([-+]?\d+(?:\.\d+)?)\s*\.\.\s*([-+]?\d+(?:\.\d+)?)\s*(.*?)\s+"
                     r"step\s+(\d+(?:\.\d+)?)\s*$")
@@ -88,6 +91,18 @@ TABLES: tuple[Table, ...] = (
         Key("min_vector", "quantity", "shortest asked vector on paper at the variant's round "
                                       "drawing scale", example='"8 mm"', dimension="length",
             default=DEFAULTS["min_vector"]),
+        Key("min_ratio", "number", "smallest ratio of every asked answer to its full tolerance "
+                                   "(2 .. 100, and more than partial_factor: the partial band "
+                                   "never reaches zero, so no answer is rounding noise and "
+                                   "every sign is meaningful; default 5, or partial_factor "
+                                   "+ 1 when that is more)", example="5",
+            default=DEFAULTS["min_ratio"]),
+        Key("pose_margin", "quantity", "how far the pose must be from a dead centre (a moving "
+                                       "link or slider at rest) and from a change point (an "
+                                       "asked signed answer changing sign), as a turn of the "
+                                       "driving crank or rod (a slider placed by position: "
+                                       "that arc of its longest link)", example='"5 deg"',
+            dimension="angle", default=DEFAULTS["pose_margin"]),
         Key("attempts", "integer", f"draws per variant before giving up, 1 .. {MAX_ATTEMPTS:,}",
             example="200", default=DEFAULTS["attempts"]),
         Key("partial", "quantity", "credit of the second, wider answer of each numerical "
@@ -121,6 +136,8 @@ class ExamSpec:
     closure_margin_deg: float
     min_vector_mm: float
     attempts: int
+    min_ratio: float
+    pose_margin_deg: float
     partial: float
     partial_factor: float
 
@@ -148,6 +165,15 @@ def _range(text, name: str, dimension: str, r: Reader, where: str) -> Range:
     return Range(where.replace("exam.", ""), name, dimension, values)
 
 
+def _magnitude(rg: Range, name: str, text, scene, where: str) -> None:
+    """ω and α ranges are magnitudes: the sense is the scene's [driver] sense."""
+    if name in MAGNITUDES and rg.values[0].lstrip().startswith("-"):
+        raise SceneError(f"{name} = {show(text)} gives negative values: a range of {name} is "
+                         f"a magnitude (the sense stays the scene's [driver] sense); write it "
+                         f"from 0 up, e.g. \"10..30 rad/s step 2\"", file=scene.file,
+                         where=where)
+
+
 def spec(scene, parse_expr=None) -> ExamSpec | None:
     """The scene's ``[exam]``, checked against the scene (None when it has none).
     ``parse_expr`` checks an asked quantity's grammar (the loader passes its own)."""
@@ -167,6 +193,7 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
                 raise SceneError(f"{name} varies a crank driver's {name}; this scene's driver "
                                  f"is not a crank", file=scene.file, where=where)
             rg = _range(value, name, DRIVER_KEYS[name], r, where)
+            _magnitude(rg, name, value, scene, where)
             ranges.append(Range(f"driver.{name}", name, rg.dimension, rg.values))
         elif name in SLIDER_KEYS:
             slider = hasattr(scene.driver, "point")
@@ -184,9 +211,10 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
                                  f"this scene's driver is {what}", file=scene.file,
                                  where=where)
             rg = _range(value, name, SLIDER_KEYS[name], r, where)
+            _magnitude(rg, name, value, scene, where)
             ranges.append(Range(f"driver.{name}", name, rg.dimension, rg.values))
-        elif name in scene.links:
-            if scene.links[name].length is None:
+        elif scene.model.link(name) is not None:
+            if scene.model.link(name).length is None:
                 raise SceneError(f"link {name} has no length to vary (a slotted lever)",
                                  file=scene.file, where=where)
             rg = _range(value, name, "length", r, where)
@@ -199,7 +227,7 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             from .errors import UnknownKeyError, suggest
             raise UnknownKeyError(f"unknown key {show(name)}: a link of [links] with a length, "
                                   f"{', '.join(DRIVER_KEYS)}, {', '.join(SLIDER_KEYS)}, or "
-                                  f"{suggest(name, _FIXED + tuple(scene.links))}",
+                                  f"{suggest(name, _FIXED + tuple(b.name for b in scene.model.links()))}",
                                   file=scene.file, where=where)
     ask = raw.get("ask")
     if ask is None:
@@ -249,6 +277,21 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             1 <= attempts <= MAX_ATTEMPTS):
         raise SceneError(f"attempts must be a whole number from 1 to {MAX_ATTEMPTS:,}, got "
                          f"{show(attempts)}", file=scene.file, where="exam.attempts")
+    ratio = raw.get("min_ratio")
+    if ratio is None:       # the default, and more than a partial_factor the scene raised
+        f = raw.get("partial_factor", DEFAULTS["partial_factor"])
+        ratio = DEFAULTS["min_ratio"]
+        if isinstance(f, (int, float)) and not isinstance(f, bool) and f + 1 > ratio:
+            ratio = min(100, math.floor(f) + 1)
+    if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) or not (
+            2 <= ratio <= 100):
+        raise SceneError(f"min_ratio must be a number from 2 to 100, got {show(ratio)}",
+                         file=scene.file, where="exam.min_ratio")
+    pose = r.quantity(raw.get("pose_margin", DEFAULTS["pose_margin"]), "angle",
+                      "exam.pose_margin")
+    if not 0 <= pose <= math.radians(30):
+        raise SceneError("pose_margin must be between 0 and 30 deg", file=scene.file,
+                         where="exam.pose_margin")
     partial = r.quantity(raw.get("partial", DEFAULTS["partial"]), "fraction", "exam.partial")
     if not 0 <= partial < 1:
         raise SceneError("partial must be from 0 % to under 100 %", file=scene.file,
@@ -258,14 +301,17 @@ def spec(scene, parse_expr=None) -> ExamSpec | None:
             1 <= factor <= 20):
         raise SceneError(f"partial_factor must be a number from 1 to 20, got {show(factor)}",
                          file=scene.file, where="exam.partial_factor")
+    if not ratio > factor:
+        raise SceneError(f"min_ratio ({show(ratio)}) must be more than partial_factor "
+                         f"({show(factor)}): otherwise the partial band of a small answer "
+                         f"reaches zero and its sign", file=scene.file, where="exam.min_ratio")
     title = r.string(raw.get("title", "Exam"), "exam.title")
     if not title.strip() or len(title) > 200:
         raise SceneError("title must be 1 to 200 characters", file=scene.file,
                          where="exam.title")
     return ExamSpec(tuple(ranges), tuple(asked), title, round(math.degrees(min_angle), 9),
                     round(math.degrees(margin), 9), round(min_vector * 1000.0, 9), attempts,
-                    partial,
-                    float(factor))
+                    float(ratio), round(math.degrees(pose), 9), partial, float(factor))
 
 
 __all__ = ["TABLES", "ExamSpec", "Range", "spec", "MAX_RANGE_VALUES", "MAX_ATTEMPTS"]

@@ -41,7 +41,7 @@ from .loadmodel import (EQUIVALENT_LINK, AppliedForce, AppliedTorque, Efficiency
                         ForceAnswer, Friction, Joint, Loads, MassItem, Spring, bodies_of,
                         slot_contacts)
 from .loadeffort import EFFORT_KEY, parse_effort
-from .model import BUILT, check_handles
+from .model import BUILT, unhandled
 from .reader import Reader, record
 from .schema import Key, Table
 
@@ -252,11 +252,11 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
                       effort=None)
     r = _Values(file)
     active = has_loads(ex)
-    if active:
-        check_handles("polygons forces", HANDLES, scene.model, file)
+    # an unhandled kind is refused by the command asking for forces (forces.analysis)
+    handled = unhandled(HANDLES, scene.model) is None
     reversed_names = {b.b + b.a: n for n, b in bodies.items() if b.kind == "link"}
 
-    slots = slot_contacts(scene.model, members, file) if active else []
+    slots = slot_contacts(scene.model, members, file) if active and handled else []
 
     equivalent = {q.link: q for q in getattr(scene, "equivalents", ()) if q.link}
 

@@ -28,7 +28,8 @@ not handle refuses it in one line naming both (:func:`refuse`).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from contextvars import ContextVar
+from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Mapping
 
@@ -161,9 +162,26 @@ class Mechanism:
     slot: Mapping[str, Sliding]                # pin → its block's pair in a lever's slot
     collar: Mapping[str, Sliding]              # point → its collar's prescribed slide
     under: Mapping[str, Sliding]               # a carrier's point under a block → its pair
+    #: label → the [points] record of a point rigid with a body (its ``link``, ``along`` or
+    #: ``fraction``, ``left``), in the scene's order
+    points: Mapping[str, object] = field(default_factory=lambda: MappingProxyType({}))
+    #: point → its [driver.slide] record (the second input: its link, ends ``p`` → ``q`` and
+    #: the slide's ``position``, ``velocity``, ``acceleration``)
+    prescribed: Mapping[str, object] = field(default_factory=lambda: MappingProxyType({}))
 
     def body(self, name: str) -> Body:
         return self.named[name]
+
+    def links(self) -> tuple[Body, ...]:
+        """The [links] entries as bodies (kind 'link': ``a``, ``b``, ``length`` — None for a
+        slotted lever without one), in the scene's order: the lengths as loaded (a batch's
+        varied lengths are the scene's own, read by the groups)."""
+        return tuple(b for b in self.bodies if b.kind == "link")
+
+    def link(self, name: str) -> Body | None:
+        """The [links] entry ``name`` as a body, or None."""
+        b = self.named.get(name)
+        return b if b is not None and b.kind == "link" else None
 
     @property
     def moving(self) -> tuple[Body, ...]:
@@ -295,7 +313,8 @@ def build(*, ground, links, sliders, slots, points, prescribed, driver, crossing
                      MappingProxyType({b.name: b for b in bodies}),
                      by(lambda s: s.carrier == FRAME), by(lambda s: s.key.startswith("slots.")),
                      by(lambda s: s.prescribed),
-                     MappingProxyType({s.coincident: s for s in sliding if s.coincident}))
+                     MappingProxyType({s.coincident: s for s in sliding if s.coincident}),
+                     MappingProxyType(dict(points)), MappingProxyType(dict(prescribed)))
 
 
 # ---------------------------------------------------------------- capabilities
@@ -313,6 +332,17 @@ KIND_WORDS = {
 BUILT = frozenset(BODY_KINDS) | {"turning", "sliding"}
 
 
+#: the command the user ran ('polygons sweep'), while it runs (set by polygons.cli.main): a
+#: method refusing a kind names it (:func:`running`), whichever module the guard sits in
+RUNNING: ContextVar[str | None] = ContextVar("polygons_command", default=None)
+
+
+def running(default: str) -> str:
+    """The command the user ran, or ``default`` (the method's own name, when it is called
+    from Python rather than from the command line)."""
+    return RUNNING.get() or default
+
+
 def refuse(method: str, kind: str, where: str = "", file: str | None = None
            ) -> UnsupportedError:
     """The one-line refusal of a kind a method does not handle, naming both."""
@@ -321,17 +351,26 @@ def refuse(method: str, kind: str, where: str = "", file: str | None = None
                             file=file)
 
 
+def unhandled(handles: frozenset[str], model: Mechanism) -> tuple[str, str] | None:
+    """The first (kind, where) of a body or pair of ``model`` outside ``handles``, or None."""
+    for b in model.bodies:
+        if b.kind not in handles:
+            return b.kind, b.name
+    for p in model.turning + model.sliding:
+        if p.kind not in handles:
+            return p.kind, getattr(p, "label", None) or p.at
+    return None
+
+
 def check_handles(method: str, handles: frozenset[str], model: Mechanism,
                   file: str | None = None) -> None:
     """Refuse, in one line naming ``method`` and the kind, a mechanism holding a kind of body
-    or pair that ``method`` does not declare in ``handles`` (its ``HANDLES``)."""
-    for b in model.bodies:
-        if b.kind not in handles:
-            raise refuse(method, b.kind, b.name, file)
-    for p in model.turning + model.sliding:
-        if p.kind not in handles:
-            raise refuse(method, p.kind, getattr(p, "label", None) or p.at, file)
+    or pair that ``method`` does not declare in ``handles`` (its ``HANDLES``).  ``method`` is
+    what the user ran ('polygons forces', 'polygons solve', 'the space diagram')."""
+    found = unhandled(handles, model)
+    if found is not None:
+        raise refuse(method, *found, file)
 
 
 __all__ = ["BODY_KINDS", "PAIR_KINDS", "FRAME", "Body", "Turning", "SlideLine", "Sliding",
-           "Mechanism", "build", "refuse", "check_handles", "KIND_WORDS", "BUILT"]
+           "Mechanism", "build", "refuse", "check_handles", "unhandled", "RUNNING", "running", "KIND_WORDS", "BUILT"]

@@ -36,7 +36,8 @@ def make_plan(scene: Scene, targets: Iterable[str] | None = None) -> Plan:
     The scene's mobility is checked first (:func:`polygons.mobility.check_mobility`): a
     locked, over-constrained or under-driven scene is refused before any dyad is ordered."""
     dyads = _order(scene)
-    check_mobility(scene, redundant=tuple(sorted(set(scene.links) - used_links(dyads))))
+    links = {b.name for b in scene.model.links()}
+    check_mobility(scene, redundant=tuple(sorted(links - used_links(dyads))))
     if targets is None:
         return Plan(scene, tuple(dyads), tuple(scene.labels))
     targets = tuple(targets)
@@ -59,7 +60,7 @@ def _order(scene: Scene) -> list[Dyad]:
             break
 
     labels = [lab for lab in scene.labels if lab not in placed]
-    links = list(scene.links.values())
+    links = scene.model.links()               # (a, b and whether it has a length: the model's)
     at: dict[str, list] = {}                  # each point's links, in the scene's order
     for ln in links:
         for end in dict.fromkeys((ln.a, ln.b)):

@@ -8,11 +8,15 @@
     omega(BC), alpha(BC)   signed, CCW positive                     (rad/s, rad/s²)
     vs(P), as(P)  sliding velocity / acceleration of P along its guide or slot, signed
     cor(P)      magnitude of the Coriolis acceleration of pin P     (m/s²)
-    dist(B,A)   distance between two points at this instant         (m)
+    dist(B,A)   distance between two points at this instant         (m); either may be an
+                instantaneous centre, I13 (:func:`instant_centre`): dist(I13,C), or a
+                point of Klein's figure of a slider-crank (M, K, L, Q, N): dist(O,N)
     angle(P,Q,R)  angle at Q between QP and QR, 0..180°               (rad in SI)
     arm(O,P,C)  perpendicular distance from O to the line PC         (m)
     x(C), y(C)  coordinates                                         (m)
     dir_v(C), dir_a(C)   direction of v_C / a_C, degrees CCW from +x in [0, 360)
+    X / Y       the ratio of two quantities of one kind (a velocity ratio v(C) / v(B), a
+                mechanical advantage): a pure number, signed as their quotient
     omega(W), alpha(W)   a rolling wheel's ([rolling.W]) ω and α, signed, CCW positive;
                 every point function also of a wheel's named points ([rolling.W] rim) and
                 of a cylinder's centre between two plates (not points of the polygons:
@@ -23,6 +27,7 @@ Used by the answers table, the tests and ``polygons check``.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -33,17 +38,34 @@ from .evaluate import PointResult, Solution
 from .scene import QUANTITY_FUNCTIONS as FUNCTIONS, parse_quantity_expr as _parse  # noqa: F401
 
 def dimension_of_quantity(expr: str) -> str:
-    fn = _parse(expr)[0]
+    fn, args = _parse(expr)
+    if fn == "ratio":
+        dims = [dimension_of_quantity(x) for x in args]
+        if dims[0] != dims[1]:
+            raise SceneError(f"{expr!r}: a ratio of {article_of(dims[0])} to "
+                             f"{article_of(dims[1])} has a unit; ask for a ratio of two "
+                             f"quantities of one kind (v(C) / v(B), omega(CD) / omega(AB))")
+        return "fraction"
     return {"v": "velocity", "a": "acceleration", "an": "acceleration", "at": "acceleration",
             "omega": "angular_velocity", "alpha": "angular_acceleration", "cor": "acceleration",
             "dist": "length", "x": "length", "y": "length", "dir_v": "angle",
             "dir_a": "angle", "angle": "angle", "arm": "length"}.get(fn, "velocity" if fn == "vs" else "acceleration")
 
 
+def article_of(dimension: str) -> str:
+    word = dimension.replace("_", " ")
+    return ("an " if word[0] in "aeiou" else "a ") + word
+
+
 def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float]:
     """(diagram, length on that polygon in SI) of the line ``expr`` is read from: |ω|·length
-    (|α|·length) for a link's — a rolling wheel's: its radius — and |value| otherwise."""
+    (|α|·length) for a link's — a rolling wheel's: its radius — and |value| otherwise.  A
+    ratio X / Y read off two lines x, y: the length whose reading error is the ratio's,
+    1 / (1/x + 1/y) (relative errors add; the numerator's diagram)."""
     fn, args = _parse(expr)
+    if fn == "ratio":
+        (dx, lx), (_, ly) = (drawn_on_polygon(sol, x, quantity(sol, x)) for x in args)
+        return dx, (1.0 / (1.0 / lx + 1.0 / ly) if lx > 0 and ly > 0 else 0.0)
     if fn in ("omega", "alpha"):
         lr = sol.links.get(args[0])
         length = lr.length if lr is not None else contacts.wheel_of(sol.scene, args[0]).radius
@@ -51,9 +73,46 @@ def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float
     return ("velocity" if fn in ("v", "vs") else "acceleration"), abs(value)
 
 
+#: an instantaneous centre's label, I13 (links numbered as `polygons centres` numbers them)
+_CENTRE = re.compile(r"^I(\d)(\d)$")
+
+
+def instant_centre(sol: Solution, label: str) -> tuple[float, float]:
+    """The position of the instantaneous centre ``label`` (``I13``: of links 1 and 3, numbered
+    as :func:`polygons.centres.instant_centres` numbers them — the frame 1, the driver 2 ...,
+    or as ``[centres] numbers`` says), a point of the space diagram for ``dist``, ``arm``,
+    ``angle``, ``x`` and ``y`` (its velocity is not a point's: it is a pair of bodies')."""
+    from .centres import find_centres
+    from .memo import memo_of
+    memo = memo_of(sol)
+    found = memo.get("centres")
+    if found is None:
+        bodies, centres = find_centres(sol)
+        found = memo["centres"] = {c.label: c for c in centres}
+        memo["centre_count"] = len(bodies)
+    i, j = sorted(map(int, _CENTRE.match(label).groups()))
+    c = found.get(f"I{i}{j}")
+    if c is None:
+        raise UnknownLabelError(f"no instant centre {label}: the links are numbered 1 … "
+                                f"{memo['centre_count']} (polygons centres lists them)",
+                                file=sol.scene.file)
+    if c.point is None:
+        raise SceneError(f"{label} is at infinity (links {c.names[0]} and {c.names[1]} "
+                         f"translate relative to each other): it has no distance",
+                         file=sol.scene.file)
+    return (float(c.point[0]), float(c.point[1]))
+
+
 def quantity(sol: Solution, expr: str) -> float:
     """The SI value of ``expr`` (see module docstring) in solution ``sol``."""
     fn, args = _parse(expr)
+    if fn == "ratio":
+        dimension_of_quantity(expr)             # of one kind, or refused
+        num, den = quantity(sol, args[0]), quantity(sol, args[1])
+        if not abs(den) > 1e-12 * abs(num):
+            raise SceneError(f"{args[1]} is zero at this instant: the ratio {expr!r} is not "
+                             f"defined", file=sol.scene.file)
+        return num / den
     p, q, rest = args[0], (args[1] if len(args) > 1 else None), args[2:]
     scene = sol.scene
 
@@ -63,6 +122,13 @@ def quantity(sol: Solution, expr: str) -> float:
                 got = contacts.wheel_point(sol, e, label) if e.kind == "rolling" else None
                 if got is not None:
                     return PointResult(*got)
+        if label not in sol.points and _CENTRE.match(label):   # an instant centre, I13
+            return PointResult(instant_centre(sol, label), None, None)
+        if label not in sol.points:         # a point of Klein's figure: Klein's ON
+            from .classic.klein import figure_point
+            got = figure_point(sol, label)
+            if got is not None:
+                return PointResult(got, None, None)
         if label not in sol.points:
             raise UnknownLabelError(f"unknown point {show(label)} in {show(expr)}: "
                                     f"{suggest(label, sol.points)}", file=scene.file)
@@ -70,6 +136,10 @@ def quantity(sol: Solution, expr: str) -> float:
 
     def vec(label, kind):
         value = getattr(point(label), kind)
+        if value is None and label not in sol.points:
+            raise SceneError(f"{label} in {expr!r} is a point of a construction (an instant "
+                             f"centre, Klein's figure), not of the mechanism: it has no "
+                             f"{kind}; ask for its place (dist, x, y)", file=scene.file)
         if value is None:
             raise SceneError(f"{expr!r} needs the {kind} polygon, which this scene does not "
                              f"solve (solve = {list(scene.solve)})", file=scene.file)

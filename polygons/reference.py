@@ -14,7 +14,8 @@ from .schema import Key, Table
 
 #: modules that declare scene tables (a module that does not exist yet is skipped)
 MODULES = ("polygons.scene", "polygons.topology", "polygons.options", "polygons.loads",
-           "polygons.pins", "polygons.exam_table", "polygons.contacts")
+           "polygons.pins", "polygons.exam_table", "polygons.contacts",
+           "polygons.question_table", "polygons.cam_profiles")
 REFERENCE = "docs/scene-reference.md"
 JSON_SCHEMA = "polygons/scene.schema.json"
 _LABEL_RE = r"^[A-Z][a-z0-9_']*$"
@@ -54,7 +55,7 @@ def _type_words(k: Key) -> str:
                                                        else "fraction (number or %)")
     return {"label": "point label", "link": "link name", "branch": "assembly words or "
             "{ near = [x, y] }", "array": "array", "bool": "true/false", "number": "number",
-            "integer": "integer", "string": "text",
+            "integer": "integer", "string": "text", "numbers": "number or array of numbers",
             "bool-or-string": "true/false or text"}.get(k.type, k.type)
 
 
@@ -208,6 +209,8 @@ def _key_schema(k: Key) -> dict:
             "properties": {"near": _key_schema(Key("near", "point", "", dimension="length"))}}]
     elif k.type == "array":
         d |= {"anyOf": [{"type": "array", "items": {"type": "string"}}, {"type": "string"}]}
+    elif k.type == "numbers":
+        d |= {"anyOf": [{"type": "array", "items": {"type": "number"}}, {"type": "number"}]}
     elif k.type in ("string", "scale"):
         # a text key whose example is a number (a mass's centre: 0.5 of the link, or
         # "90 mm") is read as either

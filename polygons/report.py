@@ -76,10 +76,28 @@ def _mag(v) -> float:
     return float(np.hypot(v[0], v[1]))
 
 
+def _every_point(sol: Solution):
+    """(label, PointResult) of every point of the polygons, then each rolling wheel's named
+    points not among them (its rim points, a centre between two plates: the same fields,
+    from the wheel's ω and α, :func:`polygons.wheels.wheel_point`)."""
+    yield from sol.points.items()
+    from .contacts import wheel_point
+    from .evaluate import PointResult
+    for e in getattr(sol.scene, "equivalents", ()):
+        if e.kind != "rolling":
+            continue
+        for label in (e.at, *(r[0] for r in e.rim)):
+            if label in sol.points:
+                continue
+            got = wheel_point(sol, e, label)
+            if got is not None:
+                yield label, PointResult(*got)
+
+
 def to_json(sol: Solution) -> dict:
     scene = sol.scene
     points = {}
-    for label, pr in sol.points.items():
+    for label, pr in _every_point(sol):
         entry = {"position": list(pr.position)}
         if pr.velocity is not None:
             entry |= {"velocity": list(pr.velocity), "speed": _mag(pr.velocity),

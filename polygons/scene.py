@@ -39,10 +39,11 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from . import contacts, topology
+from . import cam_profiles, contacts, topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
 from .exam_table import spec as exam_spec
+from .question_table import check as check_questions
 from .loads import parse as parse_loads
 from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record, refuse_control_characters
@@ -62,7 +63,7 @@ OPTION_KEYS = ("sweep", "diagram", "handout", "centres")
 #: validated by the module that uses them (it must raise SceneError subclasses itself)
 EXTENSION_KEYS = ("masses", "forces", "torques", "springs", "gravity", "dynamics",
                   "force_answers", "flywheel", "efficiency", "pins", "least_velocity",
-                  "pin_answers", "exam")
+                  "pin_answers", "exam", "questions", "cam_profiles")
 DIAGRAMS = ("velocity", "acceleration")
 #: the text keys of [source] (where the case comes from; shown in reports and handouts)
 SOURCE_TEXT = ("id", "seed", "example", "category", "statement", "conventions", "notes",
@@ -241,6 +242,10 @@ MAX_POINTS = 250
 def parse_scene(data: dict, *, file: str = "<scene>",
                 extra_keys: tuple[str, ...] = EXTENSION_KEYS) -> Scene:
     """Build a :class:`Scene` from parsed TOML ``data`` (see module docstring)."""
+    if isinstance(data, dict) and "ground" not in data and _lone_wheel(data):
+        data = {**data, "ground": _surface_point(data)}
+    if isinstance(data, dict) and "cam_profiles" in data:     # a cam by its profile
+        data = cam_profiles.rewrite(data, file)
     data, equivalents = contacts.rewrite(data, file) if isinstance(data, dict) else (data, ())
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
@@ -601,7 +606,26 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         spec, r, where, default_tol, **kw))
     scene = record(Scene, **{**vars(scene), "loads": loads})
     exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
+    check_questions(scene, parse_quantity_expr, default_tol)   # [[questions]] (question_table)
     return scene
+
+
+def _lone_wheel(data) -> bool:
+    """A wheel rolling on a fixed surface and driving itself ([driver] wheel): the surface is
+    its frame, so the book states no fixed pivot (a lone wheel, its centre O)."""
+    drv, rolling = data.get("driver"), data.get("rolling")
+    return (isinstance(drv, dict) and isinstance(drv.get("wheel"), str)
+            and isinstance(rolling, dict) and isinstance(rolling.get(drv["wheel"]), dict)
+            and "through" in rolling[drv["wheel"]])
+
+
+def _surface_point(data) -> dict:
+    """The frame of a lone wheel: its surface's ``through`` point, labelled G (the ground; G1,
+    G2 ... where the scene uses G), a fixed point of the surface (velocity and acceleration
+    zero — not the wheel's point in contact, whose acceleration is r ω²)."""
+    used = set(re.findall(r"[A-Z][a-z0-9_']*", repr(data)))
+    label = next(x for x in ("G", *(f"G{k}" for k in range(1, 100))) if x not in used)
+    return {label: data["rolling"][data["driver"]["wheel"]]["through"]}
 
 
 #: the smallest link length or offset accepted, as a fraction of the mechanism's size, and the
@@ -742,6 +766,12 @@ _CALL = re.compile(r"^\s*([a-z_]+)\(\s*([^,()\s]+)\s*(?:,\s*([^,()\s]+)\s*)?"
 #: the functions of an answer's ``quantity`` (see :mod:`polygons.quantities`)
 QUANTITY_FUNCTIONS = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x",
                       "y", "dir_v", "dir_a", "angle", "arm")
+#: the kind of each function's value (a ratio is of two of one kind)
+_KIND = {"v": "a velocity", "vs": "a velocity", "a": "an acceleration", "an": "an acceleration",
+         "at": "an acceleration", "as": "an acceleration", "cor": "an acceleration",
+         "omega": "an angular velocity", "alpha": "an angular acceleration", "dist": "a length",
+         "x": "a length", "y": "a length", "arm": "a length", "dir_v": "an angle",
+         "dir_a": "an angle", "angle": "an angle"}
 _ARITY = {"angle": (3,), "arm": (3,), "v": (1, 2), "a": (1, 2), "an": (2,), "at": (2,),
           "dist": (2,), "vs": (1, 2), "as": (1, 2), "cor": (1, 2)}
 
@@ -751,6 +781,18 @@ def parse_quantity_expr(expr: str, *, file: str | None = None, where: str | None
     read = _READ_EXPR.get(expr) if isinstance(expr, str) else None
     if read is not None:
         return read
+    if isinstance(expr, str) and "/" in expr:   # a ratio: 'v(C) / v(B)' -> ('ratio', (X, Y))
+        num, _, den = expr.partition("/")
+        if "/" in den or not num.strip() or not den.strip():
+            raise SceneError(f"cannot read the ratio {show(expr)}: write one quantity over "
+                             f"another, e.g. 'v(C) / v(B)'", file=file, where=where)
+        kinds = [_KIND.get(parse_quantity_expr(x.strip(), file=file, where=where)[0])
+                 for x in (num, den)]
+        if kinds[0] != kinds[1]:
+            raise SceneError(f"{show(expr)}: a ratio of {kinds[0]} to {kinds[1]} has a unit; "
+                             f"ask for a ratio of two quantities of one kind (v(C) / v(B), "
+                             f"omega(CD) / omega(AB))", file=file, where=where)
+        return "ratio", (num.strip(), den.strip())
     m = _CALL.match(expr) if isinstance(expr, str) else None
     if not m or m.group(1) not in QUANTITY_FUNCTIONS:
         raise SceneError(f"cannot read quantity {show(expr)}: write e.g. 'v(C)', 'v(C,B)', "

@@ -20,8 +20,13 @@ ANSWER_FIELDS = _ANSWER_KEYS = (
     Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
                               "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
                               "cor(P), dist(B,A), x(C), y(C), dir_v(C), dir_a(C), "
-                              "angle(P,Q,R), arm(O,P,C); a [rolling.W] wheel's omega(W), "
-                              "alpha(W) (and v(W), a(W) between two plates)",
+                              "angle(P,Q,R), arm(O,P,C) (a point may be an instant centre "
+                              "I13, numbered as `polygons centres` numbers the links, or a "
+                              "point of Klein's figure of a slider-crank: dist(O,N)); "
+                              "a [rolling.W] wheel's omega(W), "
+                              "alpha(W) (and v(W), a(W) between two plates); the ratio of "
+                              "two of one kind, X / Y (velocity ratio v(C) / v(B), "
+                              "mechanical advantage omega(AB) / omega(CD), unit '-')",
         example='"omega(BC)"', required=True),
     Key("unit", "string", "the unit of tutorial and exact (any unit of the table below, or "
                           "'-' for a pure number)", example='"rad/s"', required=True),
@@ -73,7 +78,9 @@ TABLES: tuple[Table, ...] = (
     Table("ground", "Fixed pivots: one entry per label, its coordinates [x, y]; or, as books "
                     "place a pivot from another, a table { from = \"A\", distance = "
                     "\"300 mm\", angle = \"30 deg\" } (the angle CCW from +x, or \"30 deg CW\"; "
-                    "from a pivot given before it).", (
+                    "from a pivot given before it).  A lone wheel ([driver] wheel, "
+                    "[rolling.O]) needs none: its road is the frame, whose point G is the "
+                    "road's `through` point.", (
         Key("<LABEL>", "point", "position [x, y] of a fixed pivot (or { from, distance, angle })",
             example='["0 mm", "0 mm"]', dimension="length", sign="x to the right, y up"),
     ), required=True),
@@ -90,7 +97,10 @@ TABLES: tuple[Table, ...] = (
         Key("angle", "string", "crank angle (an angle with its unit), CCW from +x (reduced to one turn exactly; "
                                  "beyond ±1e6° refused); also 'θ from idc' / 'θ from odc' "
                                  "(slider-crank: from inner / outer dead centre, in the "
-                                 "crank's sense), 'θ from AD' (CCW from the ray A→D), "
+                                 "crank's sense; any line of stroke, a vertical engine's "
+                                 "too: [assembly] P = \"P above O\" puts the cylinder above "
+                                 "O, idc the crank pointing at it; 'from tdc' / 'from bdc' "
+                                 "the same), 'θ from AD' (CCW from the ray A→D), "
                                  "'θ from +y' (or +x, -x, -y) and 'θ CW from AD' / "
                                  "'θ clockwise from +y' (measured clockwise); "
                                  "default: from the tip's [drawn] position",

@@ -16,7 +16,7 @@ class Key:
 
     ``type``: 'quantity' (a string with a unit of ``dimension``), 'string', 'number', 'bool',
     'label' (a point label), 'link' (a link name), 'point' (a pair of lengths), 'array',
-    'table'.  ``default`` is None for a required key (``required``) or when absent means
+    'numbers' (a number or an array of them), 'table'.  ``default`` is None for a required key (``required``) or when absent means
     "not stated".
     """
 

@@ -548,6 +548,10 @@ def _check_sweep_args(scene, steps, inputs, chunk):
     if not isinstance(scene, Scene):
         raise PolygonsError(f"sweep: expected a Scene (polygons.load(...)), got "
                             f"{type(scene).__name__}", file="<api>")
+    if "cam_profiles" in scene.extra:       # its linkage holds for the part in contact only
+        raise PolygonsError("a cam stated by its profile changes its equivalent linkage as the "
+                            "part in contact changes: its displacement diagram over a turn is "
+                            "polygons.cam_diagram.diagram(scene, steps)", file=scene.file)
     for name, value, low in (("steps", steps, 2),) + ((("chunk", chunk, 1),)
                                                        if chunk is not None else ()):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \

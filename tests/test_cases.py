@@ -77,6 +77,13 @@ def test_case_senses_agree_with_tutorial(path, solved):
 OWN_EXACT_CHECK = {
     "bj-engine-imperial": ("test_units.py", "test_imperial_case_exact_answers_are_the_closed_form"),
     "efficiency-four-bar": ("test_cases.py", "test_exact_values_outside_the_reference_are_closed_forms"),
+    **{name: ("test_conditions.py",
+              "test_question_cases_exact_values_are_the_closed_form_and_ours")
+       for name in ("question-engine-conditions", "question-offset-quick-return")},
+    "cam-profile-circular-arc": ("test_cam_profiles.py",
+                                 "test_case_exact_answers_are_the_closed_form"),
+    "ratio-four-bar": ("test_conditions.py",
+                       "test_ratio_case_exact_answers_are_the_closed_form_and_kennedy"),
     "khurmi-ex7.2": ("test_centres.py", "test_khurmi_exact_answers_are_the_closed_form_and_ours"),
     "new-crossing-slots": ("test_crossing.py",
                            "test_the_case_exact_answers_come_from_the_loop_solution"),

@@ -160,7 +160,28 @@ def test_parallel_slots_are_refused_in_words():
 
 def test_forces_refuse_a_pin_in_two_slots_naming_both():
     text = scene_text() + '\n[masses.O4B]\nmass = "1 kg"\n'
+    scene = parse_scene(tomllib.loads(text), file="t.toml")   # loads: its masses unused yet
+    from polygons.forces.analysis import analyse
     with pytest.raises(PolygonsError) as e:
-        parse_scene(tomllib.loads(text), file="t.toml")
+        analyse(scene)
     assert "polygons forces does not handle a pin sliding in the slots of two moving" in str(
         e.value)
+
+
+def test_the_guard_names_the_command_the_user_ran(tmp_path, capsys):
+    """A crossing-slots scene with a mass: centres, sweep and check take it (the masses are
+    for the forces); solve and forces, which analyse the forces, refuse it in their own
+    names (the guard once named `polygons forces` whatever the command)."""
+    from polygons.cli import main
+    path = tmp_path / "cx.toml"
+    path.write_text(CASE.read_text(encoding="utf-8") + '\n[masses.AB]\nmass = "2 kg"\n',
+                    encoding="utf-8")
+    words = "does not handle a pin sliding in the slots of two moving levers"
+    for cmd, extra in (("solve", ()), ("forces", ()), ("check", ("--measured", "Tin=1"))):
+        assert main([cmd, str(path), *extra]) == 1
+        err = capsys.readouterr().err
+        assert f"polygons {cmd} {words}" in err and err.count("\n") == 1, err
+    assert main(["centres", str(path), "-o", str(tmp_path / "c")]) == 0
+    assert main(["check", str(path), "--measured", "v_P=1.0733"]) == 0
+    assert main(["sweep", str(path), "--steps", "12", "-o", str(tmp_path / "s")]) == 0
+    assert "does not handle" not in capsys.readouterr().err

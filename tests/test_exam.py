@@ -28,13 +28,9 @@ CASES = Path(__file__).resolve().parents[1] / "cases"
 WE3 = CASES / "s001-we3.toml"
 FIG7 = CASES / "s003-fig7.toml"
 
-FIG7_EXAM = """
-[exam]
-O2P2 = "150..250 mm step 10"
-angle = "0..350 deg step 10"
-omega = "30..60 rev/min step 5"
-ask = ["omega(O4P4)", "alpha(O4P4)", "cor(P2)", "vs(P2)", "v(P4)"]
-"""
+#: the [exam] table Fig 7 ships (the README's example); FIG7_BARE is the case without it
+FIG7_EXAM = FIG7.read_text(encoding="utf-8")[FIG7.read_text(encoding="utf-8").index("[exam]"):]
+FIG7_BARE = FIG7.read_text(encoding="utf-8").replace(FIG7_EXAM, "")
 
 
 @pytest.fixture(scope="module")
@@ -45,7 +41,7 @@ def we3_exam():
 @pytest.fixture(scope="module")
 def fig7_path(tmp_path_factory):
     path = tmp_path_factory.mktemp("fig7") / "fig7-exam.toml"
-    path.write_text(FIG7.read_text(encoding="utf-8") + FIG7_EXAM, encoding="utf-8")
+    path.write_text(FIG7.read_text(encoding="utf-8"), encoding="utf-8")
     return path
 
 
@@ -58,6 +54,8 @@ def test_variants_are_well_conditioned_and_answers_match_the_closed_form(we3_exa
     assert len(we3_exam.variants) == 3
     for v in we3_exam.variants:
         assert v.min_angle_deg >= 30 and v.closure_deg >= 15
+        for a in v.asked:                  # no noise answer
+            assert abs(a.value) >= we3_exam.spec.min_ratio * a.tolerance
         drv = v.scene.driver
         A, D = v.scene.ground["A"], v.scene.ground["D"]
         ln = {n: l.length for n, l in v.scene.links.items()}
@@ -103,9 +101,10 @@ def test_quiz_tolerance_is_what_polygons_check_accepts(fig7_exam):
     from polygons.exam.variants import _Scale
     for v in fig7_exam.variants:
         scales = {d: _Scale(per_cm) for d, per_cm in v.scales.items()}
-        for a in v.asked:
-            inside = a.answer + 0.99 * a.tolerance
-            outside = a.answer + 1.01 * a.tolerance
+        for a in v.asked:                   # moved away from zero: any sign rule agrees
+            away = math.copysign(1.0, a.value)
+            inside = a.value + away * 0.99 * a.tolerance
+            outside = a.value + away * 1.01 * a.tolerance
             for x, ok in ((inside, True), (outside, False)):
                 g = grade(v.solution, [(a.symbol, a.expr, x, None)], scales=scales)[0]
                 assert g.ok is ok, (a.expr, x, g.tolerance, a.tolerance)
@@ -130,8 +129,11 @@ def test_rejections_are_counted_with_reasons(fig7_path, tmp_path):
     assert len(ex.variants) == 1
     text = text.replace('min_angle = "89.9 deg"', 'min_vector = "150 mm"\nattempts = 5')
     strict.write_text(text, encoding="utf-8")
-    with pytest.raises(Exception, match="under 150 mm"):
+    with pytest.raises(Exception, match="under 150 mm") as e:
         make_exam(str(strict), 1, 1)
+    # how many the ranges can give (an estimate when the attempts ran out) and what limits them
+    assert "combinations would be" in str(e.value) and "the limiting criterion: an asked " \
+        "answer's line under 150 mm" in str(e.value)
 
 
 def _moodle_grade(question, x: float) -> float:
@@ -143,6 +145,10 @@ def _moodle_grade(question, x: float) -> float:
 
 
 def test_moodle_xml_field_by_field_and_simulated_grading(fig7_exam):
+    """Moodle's question/format/xml/format.php ``import_numerical`` reads answer@fraction,
+    answer/text and answer/tolerance; question/type/numerical/question.php
+    ``get_matching_answer`` grades by the FIRST answer whose tolerance interval holds the
+    response, so the full band comes first and the partial (wider) one second."""
     images = {v.number: b"<svg xmlns='http://www.w3.org/2000/svg'/>" for v in
               fig7_exam.variants}
     root = ET.fromstring(lms.moodle_xml(fig7_exam, images))
@@ -152,7 +158,7 @@ def test_moodle_xml_field_by_field_and_simulated_grading(fig7_exam):
     nvar = len(fig7_exam.variants)
     assert types.count("category") == nvar
     assert types.count("numerical") == 5 * nvar
-    assert types.count("multichoice") == 2 * nvar          # the sense of ω and α
+    assert types.count("multichoice") == 0     # ω, α answered signed: no separate sense
     asked = {(v.number, a.expr): a for v in fig7_exam.variants for a in v.asked}
     for q in qs:
         if q.get("type") == "category":
@@ -165,6 +171,9 @@ def test_moodle_xml_field_by_field_and_simulated_grading(fig7_exam):
         f = qt.find("file")
         assert f.get("encoding") == "base64" and f.get("path") == "/"
         assert f"@@PLUGINFILE@@/{f.get('name')}" in qt.find("text").text
+        stem = qt.find("text").text                 # answerable without the picture
+        assert "max-width" not in stem and "not to scale" in stem
+        assert "fixed point O2" in stem and "fixed point O4" in stem and "O2P2 = " in stem
         assert base64.b64decode(f.text) == images[number]
         assert float(q.find("defaultgrade").text) == 1.0
         if q.get("type") == "numerical":
@@ -187,17 +196,19 @@ def test_moodle_xml_field_by_field_and_simulated_grading(fig7_exam):
             assert _moodle_grade(q, a.answer + 2 * a.tolerance) == 0.5
             assert _moodle_grade(q, a.answer - 2 * a.tolerance) == 0.5
             assert _moodle_grade(q, a.answer + 3.5 * a.tolerance) == 0.0
-        else:
-            assert q.find("single").text == "true"
-            expr = q.find("idnumber").text.split("-", 3)[3]
-            a = asked[(number, expr)]
-            right = [x.find("text").text for x in q.findall("answer")
-                     if x.get("fraction") == "100"]
-            assert len(right) == 1 and right[0].startswith(a.sense + " ")
-            assert a.sense == ("CCW" if a.value > 0 else "CW")
+            if a.signed:                            # the sign is graded: −answer earns 0
+                assert _moodle_grade(q, -a.answer) == 0.0
+                assert "signed" in stem and ("counter-clockwise" in stem or "away from" in stem)
+            else:
+                assert a.answer > 0 and "magnitude" in stem
 
 
 def test_qti_package_structure(fig7_exam):
+    """Canvas's importer (gems/plugins/qti_exporter/lib/qti/numeric_interaction.rb,
+    ``get_canvas_answers``) makes an answer of ``:weight=>100`` of every respcondition — an
+    ``or`` of a varequal (the exact value) and an ``and`` whose varlte gives the margin — so
+    each numerical item carries exactly one: the full band (a partial band would be graded
+    fully correct)."""
     images = {1: b"<svg xmlns='http://www.w3.org/2000/svg'/>"}
     z = zipfile.ZipFile(__import__("io").BytesIO(lms.qti_zip(fig7_exam, images)))
     names = z.namelist()
@@ -221,6 +232,8 @@ def test_qti_package_structure(fig7_exam):
             continue
         a = asked[item.get("ident")]
         conds = item.findall(".//q:respcondition", q)
+        assert len(conds) == 1                      # no partial band for Canvas to make 100 %
+        assert float(conds[0].find(".//q:varequal", q).text) == pytest.approx(a.answer, rel=1e-5)
         lo = float(conds[0].find(".//q:vargte", q).text)
         hi = float(conds[0].find(".//q:varlte", q).text)
         assert lo == pytest.approx(a.answer - a.tolerance, rel=1e-5, abs=1e-9)
@@ -234,8 +247,7 @@ NASTY = "<script>alert(1)</script> ]]> & ~ = # { } : \\ end"
 def test_user_text_stays_escaped_in_xml_gift_and_qti(fig7_path, tmp_path):
     text = fig7_path.read_text(encoding="utf-8")
     title = "title = " + __import__("json").dumps(NASTY)
-    text = re.sub(r'^title = ".*"$', lambda m: title, text, flags=re.M)
-    text = text.replace("[exam]", "[exam]\ntitle = " + __import__("json").dumps(NASTY))
+    text = re.sub(r'^title = ".*"$', lambda m: title, text, flags=re.M)   # both titles
     path = tmp_path / "nasty.toml"
     path.write_text(text, encoding="utf-8")
     ex = make_exam(str(path), 1, 1)
@@ -309,11 +321,14 @@ def test_cli_students_and_refusals(fig7_path, tmp_path, capsys):
 def test_exam_table_is_checked_at_load(fig7_path, tmp_path, capsys):
     bad = tmp_path / "bad.toml"
     for extra, words in (('[exam]\nXY = "1..2 mm step 1"\n', "unknown key"),
+                         ('[exam]\nomega = "-30..-10 rad/s step 5"\n', "a magnitude"),
+                         ('[exam]\nmin_ratio = 2\n', "more than partial_factor"),
+                         ('[exam]\npose_margin = "40 deg"\n', "pose_margin"),
                          ('[exam]\nO2P2 = "10..20 mm"\n', "LOW..HIGH UNIT step STEP"),
                          ('[exam]\nangle = "1..2 mm step 1"\n', "angle"),
                          ('[exam]\nO2P2 = "1..100000 mm step 1"\n', "at most"),
                          ('[exam]\nask = ["x(C)"]\n', "cannot be asked")):
-        bad.write_text(FIG7.read_text(encoding="utf-8") + extra, encoding="utf-8")
+        bad.write_text(FIG7_BARE + extra, encoding="utf-8")
         assert main(["solve", str(bad)]) == 1
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "[exam" in err and words in err, err

@@ -139,7 +139,8 @@ def test_comparison_gives_percent_differences_and_names_the_slips():
 
 # ---------------------------------------------------------------- the worksheet
 UNIT_RE = {"velocity": r"\s*(m/s|mm/s)(?![²^])", "acceleration": r"\s*(m/s|mm/s)(²|\^2)",
-           "angular_velocity": r"\s*rad/s(?![²^])", "angular_acceleration": r"\s*rad/s(²|\^2)"}
+           "angular_velocity": r"\s*rad/s(?![²^])", "angular_acceleration": r"\s*rad/s(²|\^2)",
+           "fraction": r""}     # a ratio (v(C) / v(B)): the bare number
 
 
 def _answer_strings(sol):

@@ -28,7 +28,11 @@ from diagrams.polygon import construction
 N = 48
 
 
-@pytest.mark.parametrize("path", case_files(), ids=lambda p: p.stem)
+#: every case but a cam stated by its profile, which has no page (no sweep follows its
+#: changing linkage: refused in one line, tests/test_cam_profiles.py)
+@pytest.mark.parametrize("path", [f for f in case_files()
+                                  if "[cam_profiles." not in f.read_text(encoding="utf-8")],
+                         ids=lambda p: p.stem)
 def test_live_polygons_are_the_construction_at_every_frame(path):
     scene = load_scene(path)
     sol = solve(scene)

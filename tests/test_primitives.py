@@ -1,123 +1,152 @@
-"""One hand-checked test per geometric primitive and theorem."""
+"""The typed primitives a group's position is stated in (polygons/dyads/primitives.py): each
+one's numpy ``locate`` meets its defining equations, and its generated ``source`` gives the
+same point to 1e-12 — one statement, two interpreters."""
+from __future__ import annotations
+
 import math
+from types import SimpleNamespace as NS
 
 import numpy as np
 import pytest
 
-from polygons import geometry, theorems, units
-from polygons.errors import ParallelLinesError, SceneError, UnitError
-from polygons.scene import split_link_name
+from polygons import dyads
+from polygons.codegen import Source
+from polygons.dyads.primitives import (PRIMITIVES, AlongLink, CircleCircle, CircleLine,
+                                       Constructed, FixedLine, Guarded, LeverLine, Length,
+                                       LineLine, LinesMeet, PinInSlot, Prescribed, RigidImage, RimPoint,
+                                       Rotation, SlotUnstated, Translation, WheelRim)
+
+class _Scene(NS):
+    """A scene's tables, as the primitives read them (a weak reference allowed: memos)."""
 
 
-def test_relative_velocity_is_omega_times_length_perpendicular():
-    # crank 50 mm at 90 deg turning CCW at 10 rad/s: v = 0.5 m/s towards -x
-    v = theorems.relative_velocity(10.0, [0.0, 0.05])
-    assert v == pytest.approx([-0.5, 0.0], abs=1e-15)
+SCENE = _Scene(links={"PX": NS(length=0.9), "QX": NS(length=0.7), "OA": NS(length=0.3)},
+           sliders={"X": NS(through=(0.1, -0.2), direction=(math.cos(0.3), math.sin(0.3)),
+                            slot_direction=(math.cos(1.4), math.sin(1.4)))},
+           points={"X": NS(along=None, fraction=0.4, left=0.15)},
+           slots={"X": NS(offset=0.05, length=None),
+                  "A": NS(offset=0.0, length=None, far_length=0.8)}, prescribed={"X": NS(position=0.3)},
+           equivalents=[NS(kind="rolling", driven=True, radius=0.2, rim=[("X", 0.5, 0.15)])],
+           ground={"P": (0.0, 0.0)})
+POS = {"P": np.array([0.0, 0.0]), "Q": np.array([1.0, 0.2]), "A": np.array([0.3, 0.5])}
 
 
-def test_centripetal_points_towards_the_centre_with_omega_squared_r():
-    # B at (0.1, 0) about A at origin, ω = 3 (either sense): a = 0.9 m/s² towards A (-x)
-    assert theorems.centripetal(3.0, [0.1, 0.0]) == pytest.approx([-0.9, 0.0])
-    assert theorems.centripetal(-3.0, [0.1, 0.0]) == pytest.approx([-0.9, 0.0])
+def generated(prim, sigma=1.0, x=0.7, label=None):
+    """The point ``prim.source`` writes, run as a program over floats."""
+    g = Source(SCENE, {prim.x: sigma})
+    for lab, (px, py) in POS.items():
+        g.place(lab, g.param(lambda s, v=float(px): v), g.param(lambda s, v=float(py): v))
+    g.dyad = NS(two_closures=True)
+    prim.source(g)
+    params = [sigma if isinstance(get, tuple) else get(SCENE) for get in g.getters]
+    ns = dict(g.namespace, x=x, **{f"k{i}": v for i, v in enumerate(params)})
+    for line in g.lines:
+        exec(line.text, ns)
+    xs, ys = g.pos(label or prim.x)
+    return np.array([ns[xs], ns[ys]])
 
 
-def test_tangential_is_alpha_cross_r():
-    # α = 2 rad/s² CW on r = (0, 0.5): α × r = -2 k × 0.5 j = +1.0 i
-    assert theorems.tangential(-2.0, [0.0, 0.5]) == pytest.approx([1.0, 0.0])
+CASES = [
+    CircleCircle("X", "P", Length("PX"), "Q", Length("QX")),
+    CircleLine("X", "A", Length("PX"), FixedLine("X")),
+    Rotation("X", "P", Length("OA")),
+    Translation("X", FixedLine("X")),
+    LineLine("X", "A", FixedLine("X")),
+    RigidImage("X", "P", "Q"),
+    LinesMeet("X", "P", "Q", "A", "P", also=("X1",)),
+    AlongLink("X", "P", "Q", Prescribed("X"), also=("X1",)),
+    RimPoint("X", "A", WheelRim("X")),
+    Guarded(CircleLine("X", "A", Length("PX"), LeverLine("X", "P", "Q"), also=("X1",)),
+            SlotUnstated("X")),
+    PinInSlot("X", "A", "P", "F"),
+]
 
 
-def test_coriolis_is_2_omega_v_turned_in_sense_of_omega():
-    # ω = 1.5 CCW, sliding v = 2 m/s along +x: 2ω × v = 6 m/s² along +y
-    assert theorems.coriolis(1.5, [2.0, 0.0]) == pytest.approx([0.0, 6.0])
-    assert theorems.coriolis(-1.5, [2.0, 0.0]) == pytest.approx([0.0, -6.0])
+@pytest.mark.parametrize("offset", [0.0, 0.1])
+def test_a_lever_through_its_pin(offset):
+    """PinInSlot: X = A, the far end F at the lever's length along the slot (offset δ from
+    the pivot: F − P = l e with (A − P) = t e + δ perp(e)); locate = source."""
+    SCENE.slots["A"].offset = offset
+    try:
+        prim = PinInSlot("X", "A", "P", "F")
+        pts, m = prim.locate(SCENE, POS, 1.0, 0.0)
+        A, P = POS["A"], POS["P"]
+        e = (pts["F"] - P) / 0.8
+        assert np.allclose(pts["X"], A) and math.isclose(np.hypot(*e), 1.0) and m > 0
+        assert math.isclose(_cross(e, A - P), offset, abs_tol=1e-15)
+        assert np.max(np.abs(generated(prim) - pts["X"])) <= 1e-12
+        assert np.max(np.abs(generated(prim, label="F") - pts["F"])) <= 1e-12
+    finally:
+        SCENE.slots["A"].offset = 0.0
 
 
-def test_angular_velocity_and_acceleration_invert_the_theorems():
-    r = np.array([0.03, -0.04])
-    assert theorems.angular_velocity(r, theorems.relative_velocity(-7.0, r)) == pytest.approx(-7.0)
-    a = theorems.tangential(12.0, r) + theorems.centripetal(5.0, r)
-    assert theorems.angular_acceleration(r, a) == pytest.approx(12.0)
+def test_every_primitive_is_tested():
+    assert {type(c) for c in CASES} == set(PRIMITIVES)
 
 
-def test_intersect_perpendicular_lines():
-    hit = geometry.intersect(geometry.line((0, 1), (1, 0), "horizontal"),
-                             geometry.line((2, 0), (0, 1), "vertical"))
-    assert hit.point == pytest.approx((2.0, 1.0), abs=1e-15)
-    assert hit.angle_deg == pytest.approx(90.0)
+@pytest.mark.parametrize("prim", CASES, ids=lambda p: type(p).__name__)
+@pytest.mark.parametrize("sigma", [1.0, -1.0])
+def test_locate_and_source_agree(prim, sigma):
+    X = prim.locate(SCENE, POS, sigma, 0.7)[0]["X"]
+    assert np.max(np.abs(generated(prim, sigma) - X)) <= 1e-12
 
 
-def test_intersect_reports_the_acute_angle_and_is_exact_for_30_degrees():
-    l1 = geometry.line((0, 0), (1, 0), "slider line")
-    l2 = geometry.line((1, 0), (math.cos(math.radians(150)), math.sin(math.radians(150))), "c line")
-    hit = geometry.intersect(l1, l2)
-    assert hit.point == pytest.approx((1.0, 0.0), abs=1e-15)
-    assert hit.angle_deg == pytest.approx(30.0)
+def _cross(a, b) -> float:
+    return float(a[0] * b[1] - a[1] * b[0])
 
 
-def test_intersect_far_away_point_of_nearly_parallel_lines():
-    # lines through (0,0) and (0,1) at 0 and 0.01 deg: they meet 1/tan(0.01°) to the left
-    t = math.tan(math.radians(0.01))
-    hit = geometry.intersect(geometry.line((0, 0), (1, 0)), geometry.line((0, 1), (1, t)))
-    assert hit.point[0] == pytest.approx(-1 / t, rel=1e-9)
-    assert hit.angle_deg == pytest.approx(0.01, rel=1e-9)
+def _at(prim, sigma, x):
+    pts, m = prim.locate(SCENE, POS, sigma, x)
+    return pts["X"], m
 
 
-def test_subnormal_coordinates_do_not_derail_the_intersection():
-    # found by hypothesis: a crank at 2e-313 rad put a vertical line at x = -5e-314, and GEOS
-    # returned the segment's end point instead of the crossing
-    hit = geometry.intersect(geometry.line((-5.215016856e-314, 0.234375), (-0.0, 1.0)),
-                             geometry.line((0.0, 0.0), (1.0, 0.0)))
-    assert hit.point == pytest.approx((0.0, 0.0), abs=1e-300)
+def test_each_primitive_meets_its_equations():
+    P, Q, A = POS["P"], POS["Q"], POS["A"]
+    X, m = _at(CASES[0], 1.0, 0.0)
+    assert math.isclose(np.hypot(*(X - P)), 0.9) and math.isclose(np.hypot(*(X - Q)), 0.7)
+    assert m > 0 and _cross(Q - P, X - P) > 0              # σ = +1: left of P→Q
+    g = SCENE.sliders["X"]
+    X, _ = _at(CASES[1], 1.0, 0.0)
+    assert math.isclose(np.hypot(*(X - A)), 0.9)
+    assert abs(_cross(g.direction, X - np.array(g.through))) < 1e-12
+    X, _ = _at(CASES[2], 1.0, 0.7)
+    assert np.allclose(X, 0.3 * np.array([math.cos(0.7), math.sin(0.7)]), atol=1e-15)
+    X, _ = _at(CASES[3], 1.0, 0.7)
+    assert np.allclose(X, np.array(g.through) + 0.7 * np.array(g.direction), atol=1e-15)
+    X, m = _at(CASES[4], 1.0, 0.0)
+    assert abs(_cross(g.direction, X - np.array(g.through))) < 1e-12    # on the guide
+    assert abs(_cross(g.slot_direction, X - A)) < 1e-12                 # under the slot
+    X, _ = _at(CASES[5], 1.0, 0.0)
+    u = (Q - P) / np.hypot(*(Q - P))
+    assert math.isclose((X - P) @ u, 0.4 * np.hypot(*(Q - P)))
+    assert math.isclose(_cross(u, X - P), 0.15)
+    X, m = _at(CASES[6], 1.0, 0.0)                    # on both lines P→Q and A→P
+    assert abs(_cross(Q - P, X - P)) < 1e-12 and abs(_cross(P - A, X - A)) < 1e-12 and m > 0
+    X, m = _at(CASES[7], 1.0, 0.0)
+    assert np.allclose(X, P + 0.3 * u, atol=1e-15) and m > 0
+    X, _ = _at(CASES[8], 1.0, 0.4)                    # φ = φ₀ − s/r
+    assert np.allclose(X, A + 0.15 * np.array([math.cos(0.5 - 2.0), math.sin(0.5 - 2.0)]))
+    X, m = _at(CASES[9], 1.0, 0.0)                    # |AX| = 0.9, on the slot offset 0.05
+    assert math.isclose(np.hypot(*(X - A)), 0.9) and math.isclose(_cross(u, X - P), 0.05)
+    SCENE.slots["X"].length = 0.2                      # a stated slot length: refused
+    try:
+        assert _at(CASES[9], 1.0, 0.0)[1] == -1.0
+    finally:
+        SCENE.slots["X"].length = None
 
 
-def test_meet_is_the_crossing_of_the_drawn_segments():
-    """X = P + t u = Q + s v, hand-checked: the 3-4-5 lines from (0, 0) and (6, 0) meet at
-    (3, 4); lines through one point meet there exactly (an instant at rest)."""
-    assert geometry.meet(0.0, 0.0, 0.6, 0.8, 6.0, 0.0, -0.6, 0.8) == pytest.approx((3.0, 4.0),
-                                                                             abs=1e-15)
-    assert geometry.meet(2.0, 5.0, 1.0, 0.0, 2.0, 5.0, 0.0, 1.0) == (2.0, 5.0)
+def test_a_sweep_of_positions_is_the_same_primitive():
+    xs = np.linspace(0.0, 6.0, 7)
+    cols = {k: v.reshape(2, 1) for k, v in POS.items()}        # a fixed point in a sweep
+    X = CASES[2].locate(SCENE, cols, 1.0, xs)[0]["X"]
+    for i, x in enumerate(xs):
+        assert np.max(np.abs(X[:, i] - _at(CASES[2], 1.0, float(x))[0])) < 1e-15
 
 
-def test_meet_of_anchors_an_ulp_apart_far_from_the_origin():
-    """Anchors 1e-12 apart at 7700 m/s² (a parallelogram four-bar's acceleration polygon): the
-    segments are drawn at least as long as the coordinates' size, so shapely still finds the
-    point (it found none on segments 1e-12 long)."""
-    x, y = geometry.meet(-7712.741183798629, -7575.981453466156, -5.551115123125783e-17, 1.0,
-                         -7712.741183798629, -7575.9814534661555, -0.7007535786004547,
-                         0.7134034076724448)
-    assert abs(x + 7712.741183798629) <= 1e-11 and abs(y + 7575.981453466156) <= 1e-11
-
-
-def test_parallel_lines_raise_a_named_error():
-    with pytest.raises(ParallelLinesError, match="c line.*slider line.*parallel"):
-        geometry.intersect(geometry.line((0, 0), (1, 0), "c line"),
-                           geometry.line((0, 1), (-2, 0), "slider line"), step="acceleration 4")
-
-
-def test_units_convert_to_si():
-    assert units.parse_quantity("50 mm", "length") == pytest.approx(0.05)
-    assert units.parse_quantity("2000 rev/min", "angular_velocity") == pytest.approx(209.43951023931953)
-    assert units.parse_quantity("60 deg", "angle") == pytest.approx(math.pi / 3)
-    assert units.parse_quantity("1.2 MPa", "pressure") == pytest.approx(1.2e6)
-    assert units.parse_quantity("3 %", "fraction") == pytest.approx(0.03)
-
-
-@pytest.mark.parametrize("value,dimension,message", [
-    (50, "length", "missing unit"),
-    ("50", "length", "missing unit"),
-    ("50 furlong", "length", "unknown unit"),
-    ("50 rad/s", "length", "angular velocity"),
-    ("fifty mm", "length", "cannot read"),
-])
-def test_units_reject_bad_values(value, dimension, message):
-    with pytest.raises(UnitError, match=message):
-        units.parse_quantity(value, dimension, file="x.toml", where="links.AB")
-
-
-def test_link_names_split_into_labels():
-    assert split_link_name("BC") == ("B", "C")
-    assert split_link_name("O2P2") == ("O2", "P2")
-    with pytest.raises(SceneError):
-        split_link_name("ABC")
-    with pytest.raises(SceneError):
-        split_link_name("bc")
+def test_the_groups_stated_in_primitives():
+    """Their locate and source are the primitive's (no second statement in the module)."""
+    for kind in (dyads.RRR, dyads.RRP, dyads.CrankDyad, dyads.SliderDriveDyad, dyads.RPP,
+                 dyads.Image, dyads.Guided, dyads.Crossing, dyads.SlideDyad, dyads.WheelPin,
+                 dyads.RPR):
+        assert issubclass(kind, Constructed)
+        assert "locate" not in vars(kind) and "source" not in vars(kind)

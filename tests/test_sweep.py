@@ -21,7 +21,9 @@ from polygons.scene import Branch, Crank, load_scene, parse_scene
 from polygons.sweep import harmonic, sweep
 
 AGREE = 1e-12
-FILES = case_files()
+#: every case a sweep follows (a cam stated by its profile changes its linkage with the part
+#: in contact: its diagram is polygons.cam_diagram's, tests/test_cam_profiles.py)
+FILES = [f for f in case_files() if "[cam_profiles." not in f.read_text(encoding="utf-8")]
 IDS = [f.stem for f in FILES]
 
 

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 from typing import Mapping
 
 from .. import geometry
-from ..errors import UnsupportedError
+from ..errors import PolygonsError, UnsupportedError
 from ..records import Crank
 
 Vec = tuple[float, float]
@@ -132,14 +132,14 @@ def engine(scene):
             continue
         for a, b in ((body.a, body.b), (body.b, body.a)):
             g = model.fixed_guide(b)
-            if a == drv.tip and g is not None and b not in scene.slots and \
-                    scene.sliders.get(b) is not None and scene.sliders[b].pin is None:
+            if a == drv.tip and g is not None and b not in model.slot and \
+                    model.body(b).kind == "block":
                 rods.append((body.name, a, b, g))
     if len(rods) != 1:
         found = "no link joins the crank pin to a slider on a fixed guide" if not rods else \
             "more than one rod joins the crank pin to a slider"
         raise refuse(f"{what}: in this scene {found}", scene)
-    if scene.slots or scene.crossing or scene.prescribed:
+    if model.slot or model.crossings() or model.collar:
         raise refuse(f"{what}: this scene also has slots or a second input", scene)
     rod, a, b, g = rods[0]
     return drv, rod, drv.pivot, a, b, g
@@ -246,6 +246,38 @@ def figure(sol, method: str = "klein") -> Figure:
                   a_b[0] * e[0] + a_b[1] * e[1], w * lam, alpha_rod, polygon)
 
 
+def asked(sol) -> bool:
+    """Whether an answer of ``sol``'s scene names a point of Klein's figure (``dist(O,N)``,
+    "Klein's ON"): then the figure is drawn and reported without ``--klein``."""
+    import re
+    labels = {x for a in sol.scene.answers
+              for x in re.findall(r"[A-Z][a-z0-9_']*", a.quantity)} - set(sol.points)
+    if not labels:
+        return False
+    try:
+        f = figure(sol)
+    except PolygonsError:
+        return False
+    return bool(labels & {f.names[r] for r in ROLES})
+
+
+def figure_point(sol, label: str) -> Vec | None:
+    """The position of ``label`` if it is a point of Klein's figure at ``sol`` (M, K, L, Q, N
+    or the letters the figure took), else None (not a slider-crank: None too)."""
+    from ..memo import memo_of
+    memo = memo_of(sol)
+    if "klein" not in memo:
+        try:
+            memo["klein"] = figure(sol)
+        except PolygonsError:
+            memo["klein"] = None
+    f = memo["klein"]
+    if f is None:
+        return None
+    role = next((r for r in ROLES if f.names[r] == label), None)
+    return f.points.get(role) if role is not None else None
+
+
 def _fresh(letter: str, used: set) -> str:
     """The book's letter, or the first of letter′, letter₁ ... the scene does not use."""
     for cand in (letter, letter + "1", letter + "2", letter + "3", letter + "4"):
@@ -322,4 +354,4 @@ def to_dict(f: Figure) -> dict:
             "max_relative_difference": f.difference}
 
 
-__all__ = ["Figure", "figure", "engine", "report_lines", "to_dict", "METHODS", "TITLES"]
+__all__ = ["Figure", "figure", "asked", "figure_point", "engine", "report_lines", "to_dict", "METHODS", "TITLES"]

@@ -25,6 +25,8 @@ COMMANDS = {
                                         "velocities"),
     "exam": ("polygons.cli.exam", "seeded exam variants: Moodle XML, GIFT, QTI, key and "
                                   "worksheets"),
+    "ask": ("polygons.cli.ask", "answer the scene's [[questions]]: the angle or speed at which "
+                                "a condition holds, stroke, dead centres, time ratio"),
     "gallery": ("polygons.cli.gallery", "write every case's handout and worksheet and an "
                                         "index page"),
 }
@@ -101,7 +103,12 @@ def main(argv=None) -> int:
             refuse_overwriting_input(args)       # the input file is never written over
             func = args.func     # looked up again: the parser is reused, a test may patch it
             func = getattr(sys.modules.get(func.__module__), func.__name__, func)
-            return int(func(args) or 0)
+            from ..model import RUNNING          # a refusal names the command run
+            token = RUNNING.set(f"polygons {_command_of(argv)}")
+            try:
+                return int(func(args) or 0)
+            finally:
+                RUNNING.reset(token)
     except PolygonsError as exc:
         scene = getattr(args, "scene", None)
         if not exc.file and isinstance(scene, str):

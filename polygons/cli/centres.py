@@ -65,27 +65,36 @@ def run(args) -> int:
     return 0
 
 
+def _key(b) -> str:
+    return b.key or b.name
+
+
 def to_json(sol, cs) -> dict:
+    keys = {b.number: _key(b) for b in cs.bodies}
     return {
         "scene": sol.scene.file,
         "units": {"length": "m", "velocity": "m/s", "omega": "rad/s (CCW positive)",
                   "direction": "unit vector of a centre at infinity (no sense)"},
         "note": cs.note,
         "complete": cs.complete,
-        "links": [{"number": b.number, "name": b.name, "kind": b.kind, "labels": list(b.labels)}
-                  for b in cs.bodies],
+        # "key": the model's name of the body, the same whatever else the mechanism has
+        # (a lookup by name: "name" is a report's words, "CP (with 4 links fixed to it)")
+        "links": [{"number": b.number, "name": b.name, "key": _key(b), "kind": b.kind,
+                   "labels": list(b.labels), "fixed": list(b.fixed)} for b in cs.bodies],
         "centres": [{"label": c.label, "i": c.i, "j": c.j, "names": list(c.names),
+                     "keys": [keys[c.i], keys[c.j]],
                      "point": list(c.point) if c.point is not None else None,
                      "direction": list(c.direction) if c.direction is not None else None,
                      "how": c.how, "primary": c.primary, "order": c.order,
                      "from_velocity_field": c.by_field,
                      "lines": [list(x) for x in c.lines], "angle_deg": c.angle_deg}
                     for c in cs.centres],
-        "omegas": [{"number": o.number, "name": o.name, "omega": o.omega,
+        "omegas": [{"number": o.number, "name": o.name, "key": keys[o.number],
+                    "omega": o.omega,
                     "velocity": list(o.velocity) if o.velocity is not None else None,
                     "how": o.how, "rule": o.rule, "via": o.via, "speed": o.speed,
                     "radius": o.radius} for o in cs.omegas],
-        "velocities": {x: {"link": v.number, "velocity": list(v.velocity), "speed": v.speed,
+        "velocities": {x: {"link": v.number, "key": keys[v.number], "velocity": list(v.velocity), "speed": v.speed,
                            "radius": v.radius, "omega": v.omega, "how": v.how}
                        for x, v in cs.velocities.items()},
     }

@@ -36,15 +36,18 @@ import math
 import re
 from dataclasses import dataclass
 
-from ..errors import UnsupportedError, PolygonsError, SceneError
+from ..errors import PolygonsError, SceneError
 from ..evaluate import Solution, link_ends, solve
 from ..plan import Step
 from ..notation import vertices_in
-from ..quantities import dimension_of_quantity, drawn_on_polygon, quantity
+from ..quantities import dimension_of_quantity, quantity
 from ..scene import load_scene
 from ..units import parse_quantity
 from ._output import add_out_option, emit
 from ..steps import sense as sense_word
+# the tolerances a measured value is graded against (shared with the exam's keys)
+from ..tolerances import (DEFAULT_TOLERANCE, READING_MM, emulated_tolerances,  # noqa: F401
+                          stated_tolerance, tolerance_for)
 
 #: textbook prefix -> quantities function
 PREFIX = {"v": "v", "a": "a", "omega": "omega", "w": "omega", "alpha": "alpha", "an": "an",
@@ -56,8 +59,6 @@ UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
         "angular_acceleration": "rad/s²", "force": "N", "torque": "N m", "angle": "rad",
         "fraction": "", "length": "m", "energy": "J"}
 SIGNED = ("omega", "alpha", "vs", "as")
-DEFAULT_TOLERANCE = 0.02
-READING_MM = 0.5
 
 _VALUE = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
@@ -127,7 +128,7 @@ def offered(sol: Solution) -> list[tuple[str, str]]:
     for name in sol.links:
         a, b = link_ends(scene, name)
         pairs.append((b, a))
-    for bp in scene.points.values():
+    for bp in scene.model.points.values():
         if bp.link in sol.links:
             a, _ = link_ends(scene, bp.link)
             pairs.append((bp.label, a))
@@ -396,24 +397,6 @@ def diagram_scales(sol: Solution, forced: dict | None = None) -> dict:
             xs, ys = [p[0] for p in pts], [p[1] for p in pts]
             out[d] = scales.choose(d, (max(xs) - min(xs), max(ys) - min(ys)))
     return out
-
-
-def tolerance_for(sol: Solution, expr: str, expected: float, pct: float,
-                  scales: dict) -> float:
-    tol = pct * abs(expected)
-    diagram, drawn = drawn_on_polygon(sol, expr, expected)
-    sc = scales.get(diagram)
-    if sc is not None:
-        reading = READING_MM / sc.mm_per_si          # SI value of 0.5 mm of paper
-        if drawn > 0:
-            tol = max(tol, reading * abs(expected) / drawn)
-        else:
-            tol = max(tol, reading)
-    return tol
-
-
-# the tolerances of a careful drawing live with the drawing grader (the page uses them too)
-from ..grade_drawing import emulated_tolerances, stated_tolerance  # noqa: E402,F401
 
 
 def grade(sol: Solution, measured: list[tuple[str, str, float, str | None]],

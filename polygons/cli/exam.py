@@ -1,7 +1,7 @@
 """``polygons exam SCENE --variants N --seed S --out DIR``: seeded exam variants for a class.
 
-Writes into DIR (made if missing; an existing file of that name is refused, and nothing is
-written over the scene or the class list): ``quiz.xml`` (Moodle XML), ``quiz.gift`` (GIFT),
+Writes into DIR (made if missing; every file is created new — an existing file or link of
+that name is refused, so nothing is written through a link, over the scene or the class list): ``quiz.xml`` (Moodle XML), ``quiz.gift`` (GIFT),
 ``quiz-qti.zip`` (QTI 1.2, Canvas), ``key.pdf`` (the teacher's key) and ``worksheets/`` (one
 PDF per variant, or per student with ``--students names.csv``).  PDFs are printed by headless
 Chromium; without it the command says so in one line and writes the HTML instead.  What
@@ -19,6 +19,8 @@ from ..errors import PolygonsError, SceneError
 #: most students of one class list (the same bound as the variants)
 MAX_STUDENTS = 500
 MAX_CLASS_LIST = 1_000_000      # bytes
+#: the default and the largest worst-case work budget (minutes)
+BUDGET_MIN, MAX_BUDGET_MIN = 10.0, 24 * 60.0
 
 
 class ExamError(PolygonsError):
@@ -29,7 +31,7 @@ def register(sub) -> None:
     from ..exam import MAX_VARIANTS
     p = sub.add_parser(
         "exam", help="seeded exam variants: Moodle XML, GIFT, QTI, key and worksheets",
-        description="Write N well-conditioned variants of a scene (its [exam] table says "
+        description="Write N well-posed variants of a scene (its [exam] table says "
                     "what varies and what is asked) as a Moodle XML quiz, GIFT, a QTI 1.2 "
                     "package, the teacher's key and one worksheet per variant or student. "
                     "The same seed gives the same files.")
@@ -41,6 +43,10 @@ def register(sub) -> None:
     p.add_argument("--students", metavar="CSV",
                    help=f"class list, one name per line (first column; at most "
                         f"{MAX_STUDENTS}): one worksheet per student, variants dealt in turn")
+    p.add_argument("--budget", type=float, default=BUDGET_MIN, metavar="MINUTES",
+                   help=f"the most worst-case work to start (default {BUDGET_MIN:g} min, at "
+                        f"most {MAX_BUDGET_MIN:g}): the draws an exam may need (variants × "
+                        f"attempts) are estimated before any work and refused above it")
     p.add_argument("--html", action="store_true",
                    help="write the key and worksheets as HTML (no Chromium needed)")
     p.set_defaults(func=run)
@@ -81,12 +87,39 @@ def _out_dir(out: str) -> Path:
     return d
 
 
+def _sub_dir(d: Path) -> Path:
+    """A folder inside --out, made new or already a real folder (never a link)."""
+    if d.is_symlink():
+        raise ExamError(f"{d} is a symbolic link: refusing to write through it")
+    if d.exists() and not d.is_dir():
+        raise ExamError(f"{d} exists and is not a folder")
+    d.mkdir(exist_ok=True)
+    return d
+
+
 def _write(path: Path, data: bytes, protect: set[Path]) -> Path:
+    """Create ``path`` new (O_CREAT | O_EXCL | O_NOFOLLOW): an existing file, folder or
+    symbolic link of that name is refused, so nothing is written through a link or over
+    an input."""
+    import os
+    if path.is_symlink():
+        raise ExamError(f"{path} is a symbolic link: refusing to write through it")
     if path.resolve() in protect:
         raise ExamError(f"{path} is an input file: refusing to write over it")
-    if path.exists() and path.is_dir():
-        raise ExamError(f"{path} is a folder: cannot write the file there")
-    path.write_bytes(data)
+    if path.exists():
+        what = "a folder" if path.is_dir() else "a file"
+        raise ExamError(f"{path} exists ({what}): refusing to write over it; choose a new "
+                        f"--out folder or remove it")
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_NOFOLLOW", 0) \
+        | getattr(os, "O_BINARY", 0)
+    try:
+        fd = os.open(path, flags, 0o644)
+    except FileExistsError:
+        raise ExamError(f"{path} appeared while writing: refusing to write over it") from None
+    except OSError as exc:
+        raise ExamError(f"cannot create {path}: {exc.strerror}") from None
+    with os.fdopen(fd, "wb") as f:
+        f.write(data)
     return path
 
 
@@ -97,12 +130,20 @@ def run(args) -> int:
         raise ExamError(f"--variants must be from 1 to {MAX_VARIANTS}, got {args.variants}")
     if not 0 <= args.seed < 2 ** 63:
         raise ExamError(f"--seed must be from 0 to 2^63 - 1, got {args.seed}")
+    import math
+    if not (math.isfinite(args.budget) and 0 < args.budget <= MAX_BUDGET_MIN):
+        raise ExamError(f"--budget is minutes, more than 0 and at most {MAX_BUDGET_MIN:g}, "
+                        f"got {args.budget:g}")
     students = read_students(args.students) if args.students else None
     protect = {Path(args.scene).resolve()}
     if args.students:
         protect.add(Path(args.students).resolve())
-    exam = make_exam(args.scene, args.variants, args.seed)
+    exam = make_exam(args.scene, args.variants, args.seed, budget_s=args.budget * 60.0)
     out = _out_dir(args.out)
+    for name in ("quiz.xml", "quiz.gift", "quiz-qti.zip", "key.pdf", "key.html"):
+        if (out / name).is_symlink() or (out / name).exists():    # before writing any
+            _write(out / name, b"", protect)
+    sheets_dir = _sub_dir(out / "worksheets")
 
     from diagrams import exam_sheets as sheets
     from diagrams.browser import TIMEOUT, BrowserError, find, run as chromium
@@ -127,10 +168,6 @@ def run(args) -> int:
     if not args.html and not pdf:
         print("Chromium not found (Debian: apt-get install chromium; or set "
               "POLYGONS_CHROMIUM): writing the key and worksheets as HTML")
-    sheets_dir = out / "worksheets"
-    if sheets_dir.exists() and not sheets_dir.is_dir():
-        raise ExamError(f"{sheets_dir} exists and is not a folder")
-    sheets_dir.mkdir(exist_ok=True)
 
     def document(html_text: str, stem: Path, timeout: int = TIMEOUT) -> Path:
         html_path = stem.with_suffix(".html")
@@ -161,6 +198,9 @@ def run(args) -> int:
           f"drawn; rejected {exam.drawn - kept}"
           + ("" if not exam.rejected else ": " + "; ".join(
               f"{c} {r}" for r, c in exam.rejected.items())))
+    for expr, why in exam.dropped:
+        from ..exam.variants import symbol
+        print(f"  not asked: {symbol(expr)} {why}")
     if exam.default_ranges:
         print("  (no [exam] table: the crank angle was varied round the turn and the "
               "scene's [[answers]] asked)")

@@ -192,8 +192,9 @@ def _state_dict(an: Analysis, st: State) -> dict:
     out["warnings"] = list(st.warnings)
     out["unknowns"] = [{"key": k, "words": name, "value": float(x)}
                        for k, name, x in zip(ne.keys, ne.names, ne.values)]
-    if model.parsed.flywheel is not None or model.parsed.efficiency is not None:
-        out["machine"] = _machine(an, st)
+    machine_results = _machine(an, st)
+    if machine_results:
+        out["machine"] = machine_results
     out["force_polygons"] = _graphical.polygons_dict(an, st)
     out["zhukovsky"] = _graphical.lever_dict(an, st)
     return out
@@ -242,10 +243,26 @@ def _machine(an: Analysis, st: State) -> list[dict]:
 
     def add(key, words, value, unit):
         out.append({"key": key, "words": words, "value": value, "unit": unit})
-    if model.parsed.flywheel is not None and model.mode == "kinetostatic":
-        fw = model.parsed.flywheel
+    kinetostatic_crank = (model.mode == "kinetostatic" and isinstance(model.scene.driver, Crank)
+                          and model.parsed.effort is None)
+    if kinetostatic_crank:                 # with or without a flywheel
         add("turning_moment", "turning moment T on the crank, in the sense of rotation",
             machine.turning_moment(st), "N m")
+    if kinetostatic_crank:                 # each loaded piston on its rod: its effort F_P
+        from ..forces.answers import piston_effort
+        loaded = {x.at for x in model.parsed.forces} | {
+            m.at if m.at else model.bodies[m.body].a for m in model.parsed.masses
+            if m.kind in ("block", "point") and (m.at or m.body in model.bodies)}
+        for lab in model.scene.model.guide:
+            if lab in loaded:
+                try:
+                    value = piston_effort(model.scene, st.ne, model, lab, model.scene.file)
+                except SceneError:         # not a piston on one rod
+                    continue
+                add(f"piston_effort_{lab}", f"piston effort F_P at {lab} (the net force along "
+                    f"the line of stroke on the rod, + along the guide)", value, "N")
+    if model.parsed.flywheel is not None and model.mode == "kinetostatic":
+        fw = model.parsed.flywheel
         add("resisting_torque", "resisting torque T_R (= P/ω)" if fw.power is not None
             else "resisting torque T_R (given)", machine.resisting_torque(model, st), "N m")
         add("flywheel_inertia", f"flywheel I ({fw.how})", fw.inertia, "kg m^2")
@@ -353,7 +370,7 @@ def _sections(an: Analysis, st: State):
         for lab in body.labels:
             if lab in (body.a, body.b) or lab in loaded:
                 continue
-            if lab not in model.scene.points:
+            if lab not in model.scene.model.points:
                 continue
             try:
                 n, s, m = section(model, st, lab, name)
@@ -516,7 +533,7 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     for lab, link, n, s, m in _sections(an, st):
         out.append(f"  section {lab} of {link} (on the part from {model.bodies[link].a}): "
                    f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = {m:.6g} N m (CCW)")
-    for m in (_machine(an, st) if (model.parsed.flywheel or model.parsed.efficiency) else ()):
+    for m in _machine(an, st):
         if m["value"] is None:
             out.append(f"  {m['words']}")
         else:

@@ -141,8 +141,9 @@ def _mechanism(sol) -> str:
     if words:
         return words
     scene = sol.scene
-    parts = [f"{len(scene.links)} link{'s' if len(scene.links) != 1 else ''}"]
     model = scene.model
+    n = len(model.links())
+    parts = [f"{n} link{'s' if n != 1 else ''}"]
     if model.guide:
         parts.append(f"{len(model.guide)} slider{'s' if len(model.guide) != 1 else ''}")
     if model.slot:

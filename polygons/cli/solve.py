@@ -42,6 +42,9 @@ def run(args) -> int:
         from .forces import forces_table, to_dict
         forces = analyse(scene)
     method = args.klein or scene.options.diagram.klein
+    if not method:              # an answer naming a point of Klein's figure (Klein's ON)
+        from ..classic.klein import asked
+        method = "klein" if asked(sol) else None
     fig = None
     if method:
         from ..classic.klein import figure

@@ -6,16 +6,14 @@ Position: X = P + r (cos θ, sin θ).  Velocity: (v_X)_P = ω × PX.  Accelerati
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import math
-
-import numpy as np
+from functools import cached_property
 
 from ..steps import Builder, Component, Kind, Op
+from .primitives import Constructed, Length, Rotation
 
 
 @dataclass(frozen=True)
-class CrankDyad:
+class CrankDyad(Constructed):
     """The input crank ``link``: ``tip`` turns about fixed ``pivot``; ``tangential`` when the
     crank has an angular acceleration (its tangential component is drawn)."""
     link: str
@@ -23,6 +21,14 @@ class CrankDyad:
     tip: str
     tangential: bool = False
     two_closures = False
+
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "crank"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.link,)
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -32,22 +38,11 @@ class CrankDyad:
     def needs(self) -> tuple[str, ...]:
         return (self.pivot,)
 
-    def locate(self, scene, pos, sigma, x):
-        r = scene.links[self.link].length
-        p = pos[self.pivot]
-        if np.ndim(x) == 0:
-            tip = p + r * np.array([math.cos(x), math.sin(x)])
-        else:
-            tip = p + r * np.array([np.cos(x), np.sin(x)])
-        return {self.tip: tip}, None
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
-        r = g.param(lambda s: s.links[self.link].length)
-        px, py = g.pos(self.pivot)
-        c, s_ = g.let(f"cos({g.x})"), g.let(f"sin({g.x})")
-        g.place(self.tip, g.let(f"{px} + {r} * {c}"), g.let(f"{py} + {r} * {s_}"))
+    @cached_property
+    def construction(self) -> Rotation:
+        """Its position, stated once: the tip X = P + r (cos θ, sin θ).  ``locate`` and ``source`` are
+        this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return Rotation(self.tip, self.pivot, Length(self.link))
 
     def why_not(self, scene, pos) -> str:
         return ""

@@ -17,15 +17,15 @@ from p1′ the Coriolis 2ω₁v₁ to k1 and a line ∥ slot 1 through it; from 
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import numpy as np
+from functools import cached_property
 
 from ..steps import Builder, Component, Kind, Op
 from . import image
+from .primitives import Constructed, LinesMeet
 
 
 @dataclass(frozen=True)
-class Crossing:
+class Crossing(Constructed):
     """Pin ``x`` in the slots of ``lever1`` (``a1`` → ``q1``) and ``lever2`` (``a2`` →
     ``q2``); ``under1``, ``under2`` the levers' points under the pin."""
     x: str
@@ -47,42 +47,12 @@ class Crossing:
     def needs(self) -> tuple[str, ...]:
         return (self.a1, self.q1, self.a2, self.q2)
 
-    def locate(self, scene, pos, sigma, x):
-        """P = A + t e₁, t = ((B − A) × e₂) / (e₁ × e₂); margin |e₁ × e₂| (−1 where the
-        slots are parallel, P NaN there)."""
-        a, b = pos[self.a1], pos[self.a2]
-        d1, d2 = pos[self.q1] - a, pos[self.q2] - b
-        e1 = d1 / np.hypot(d1[0], d1[1])
-        e2 = d2 / np.hypot(d2[0], d2[1])
-        den = e1[0] * e2[1] - e1[1] * e2[0]
-        ok = np.abs(den) > 1e-12
-        w = b - a
-        t = (w[0] * e2[1] - w[1] * e2[0]) / np.where(ok, den, np.nan)
-        X = a + t * e1
-        margin = np.where(ok, np.abs(den), -1.0)
-        return {self.x: X, self.under1: X.copy(), self.under2: X.copy()}, margin
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line code (floats or arrays), the same formula."""
-        (ax, ay), (qx, qy) = g.pos(self.a1), g.pos(self.q1)
-        (bx, by), (rx, ry) = g.pos(self.a2), g.pos(self.q2)
-        d1x, d1y = g.let(f"{qx} - {ax}"), g.let(f"{qy} - {ay}")
-        d2x, d2y = g.let(f"{rx} - {bx}"), g.let(f"{ry} - {by}")
-        n1, n2 = g.let(f"hypot_p({d1x}, {d1y})"), g.let(f"hypot_p({d2x}, {d2y})")
-        e1x, e1y = g.let(f"{d1x} / {n1}"), g.let(f"{d1y} / {n1}")
-        e2x, e2y = g.let(f"{d2x} / {n2}"), g.let(f"{d2y} / {n2}")
-        den = g.let(f"{e1x} * {e2y} - {e1y} * {e2x}")
-        if g.arrays:
-            safe = g.let(f"where(abs({den}) > 1e-12, {den}, nan)")
-            g.margin(g.let(f"where(abs({den}) > 1e-12, abs({den}), -1.0)"))
-        else:
-            safe = g.let(f"({den} if abs({den}) > 1e-12 else nan)")
-            g.margin(g.let(f"(abs({den}) if abs({den}) > 1e-12 else -1.0)"))
-        wx, wy = g.let(f"{bx} - {ax}"), g.let(f"{by} - {ay}")
-        t = g.let(f"({wx} * {e2y} - {wy} * {e2x}) / {safe}")
-        x, y = g.let(f"{ax} + {t} * {e1x}"), g.let(f"{ay} + {t} * {e1y}")
-        for lab in self.placed:
-            g.place(lab, x, y)
+    @cached_property
+    def construction(self) -> LinesMeet:
+        """Its position, stated once: P where the two slots' lines meet, P1 = P2 = P.
+        ``locate`` and ``source`` are this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return LinesMeet(self.x, self.a1, self.q1, self.a2, self.q2,
+                         also=(self.under1, self.under2))
 
     def why_not(self, scene, pos) -> str:
         return (f"the slots of {self.lever1} and {self.lever2} are parallel at this instant, "

@@ -17,18 +17,16 @@ its end; the lines meet at x.
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import numpy as np
+from functools import cached_property
 
 from ..steps import Builder, Component, Kind, Op
-from ..theorems import perp
 from ..topology import guided_pin
-from .base import circle_line, circle_line_scalar
 from . import image
+from .primitives import Constructed, CircleLine, Guarded, Length, LeverLine, SlotUnstated
 
 
 @dataclass(frozen=True)
-class Guided:
+class Guided(Constructed):
     """Pin ``x`` joined by ``link`` to placed ``p``, sliding in the slot of the placed lever
     ``lever`` (pivot ``pivot``, far end ``far``); also places the lever point ``coincident``."""
     p: str
@@ -39,6 +37,14 @@ class Guided:
     far: str
     coincident: str
     two_closures = True
+
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RRP, moving guide"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.link,)
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -52,38 +58,14 @@ class Guided:
     def default_ref(self) -> tuple[str, ...]:
         return (self.p, self.pivot)
 
-    def _line(self, scene, pos):
-        d = pos[self.far] - pos[self.pivot]
-        e = d / np.hypot(d[0], d[1])
-        return pos[self.pivot] + scene.slots[self.x].offset * perp(e), e
-
-    def locate(self, scene, pos, sigma, x):
-        through, e = self._line(scene, pos)
-        X, margin = circle_line(pos[self.p], scene.links[self.link].length, through, e, sigma)
-        if scene.slots[self.x].length is not None:      # not modelled: refused (why_not)
-            margin = np.full_like(np.asarray(margin, dtype=float), -1.0)
-        return {self.x: X, self.coincident: X.copy()}, margin
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``.
-
-        e = BQ/|BQ|, through = B + d perp(e), X on the circle |PX| = L and the line
-        through + t e (closure σ), X1 = X."""
-        (bx, by), (qx, qy) = g.pos(self.pivot), g.pos(self.far)
-        dx, dy = g.let(f"{qx} - {bx}"), g.let(f"{qy} - {by}")
-        n = g.let(f"hypot_p({dx}, {dy})")
-        ex, ey = g.let(f"{dx} / {n}"), g.let(f"{dy} / {n}")
-        off = g.param(lambda s: s.slots[self.x].offset)
-        tx, ty = g.let(f"{bx} + {off} * -{ey}"), g.let(f"{by} + {off} * {ex}")
-        L = g.param(lambda s: s.links[self.link].length)
-        x, y, m = g.call(circle_line_scalar, *g.pos(self.p), L, tx, ty, ex, ey,
-                         g.sigma(self.x), n=3)
-        # a stated slot length is refused (see why_not): the flag is -1 then, else +1
-        ok = g.param(lambda s: 1.0 if s.slots[self.x].length is None else -1.0)
-        g.margin(g.let(f"where({ok} > 0.0, {m}, -1.0)"))
-        g.place(self.x, x, y)
-        g.place(self.coincident, x, y)
+    @cached_property
+    def construction(self) -> Guarded:
+        """Its position, stated once: X on the circle |PX| = L and the lever's slot (closure σ), X1 = X; a stated slot length refused.
+        ``locate`` and ``source`` are this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return Guarded(CircleLine(self.x, self.p, Length(self.link),
+                                  LeverLine(self.x, self.pivot, self.far),
+                                  also=(self.coincident,)),
+                       SlotUnstated(self.x))
 
     def why_not(self, scene, pos) -> str:
         from ..theorems import cross
@@ -94,7 +76,7 @@ class Guided:
                     f"assembly would have to test the one chosen): remove it, the slot of "
                     f"{self.lever} is then open-ended (a cylinder's piston rod reaches beyond "
                     f"its end)")
-        through, e = self._line(scene, pos)
+        through, e = self.construction.inner.line.at(scene, pos)
         L = scene.links[self.link].length
         dist = abs(float(cross(e, pos[self.p] - through)))
         if dist > L:

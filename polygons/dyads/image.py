@@ -7,21 +7,28 @@ velocity image pqx is similar to PQX).  Acceleration: a_X = a_P + α × PX − �
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import numpy as np
+from functools import cached_property
 
 from ..steps import Builder, Component, Kind, Op
-from ..theorems import perp
+from .primitives import Constructed, RigidImage
 
 
 @dataclass(frozen=True)
-class Image:
+class Image(Constructed):
     """Point ``x`` rigid with link ``link`` whose ends ``p`` and ``q`` are placed."""
     x: str
     link: str
     p: str
     q: str
     two_closures = False
+
+    #: its force polygon: none of its own (a point on a link placed before: the loads
+    #: there act on that link, in its group)
+    force_polygon = None
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """No body: its point rides on a link another group closes."""
+        return ()
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -31,29 +38,11 @@ class Image:
     def needs(self) -> tuple[str, ...]:
         return (self.p, self.q)
 
-    def locate(self, scene, pos, sigma, x):
-        bp = scene.points[self.x]
-        d = pos[self.q] - pos[self.p]
-        n = np.hypot(d[0], d[1])
-        u = d / n
-        along = bp.along if bp.along is not None else bp.fraction * n
-        return {self.x: pos[self.p] + along * u + bp.left * perp(u)}, np.where(n > 0, 1.0, -1.0)
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
-        along = g.param(lambda s: s.points[self.x].along or 0.0)
-        frac = g.param(lambda s: s.points[self.x].fraction
-                       if s.points[self.x].along is None else 0.0)
-        left = g.param(lambda s: s.points[self.x].left)
-        (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
-        dx, dy = g.let(f"{qx} - {px}"), g.let(f"{qy} - {py}")
-        n = g.let(f"hypot({dx}, {dy})")
-        g.margin(g.let(f"where({n} > 0, 1.0, -1.0)"))
-        ux, uy = g.let(f"{dx} / {n}"), g.let(f"{dy} / {n}")
-        a = g.let(f"{along} + {frac} * {n}")
-        g.place(self.x, g.let(f"{px} + {a} * {ux} + {left} * -{uy}"),
-                g.let(f"{py} + {a} * {uy} + {left} * {ux}"))
+    @cached_property
+    def construction(self) -> RigidImage:
+        """Its position, stated once: X = P + a u + l perp(u), rigid with the link PQ.  ``locate`` and ``source`` are
+        this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return RigidImage(self.x, self.p, self.q)
 
     def why_not(self, scene, pos) -> str:
         return (f"link {self.link} has zero length at this instant, so {self.x} cannot be "

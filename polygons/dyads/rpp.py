@@ -8,19 +8,26 @@ guide through the pole meets the line along the slot through a (or a's accelerat
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import numpy as np
+from functools import cached_property
 
 from ..steps import Builder, Component, Kind, Op
-from .base import as_col
+from .primitives import Constructed, FixedLine, LineLine
 
 
 @dataclass(frozen=True)
-class RPP:
+class RPP(Constructed):
     """Scotch yoke: placed pin ``pin`` slides in the slot of the yoke ``x`` on its guide."""
     pin: str
     x: str
     two_closures = False
+
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RPP"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.x,)
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -30,32 +37,11 @@ class RPP:
     def needs(self) -> tuple[str, ...]:
         return (self.pin,)
 
-    def locate(self, scene, pos, sigma, x):
-        g = scene.sliders[self.x]
-        a = pos[self.pin]
-        e, f = np.array(g.direction), np.array(g.slot_direction)
-        through = as_col(g.through, a)
-        den = e[0] * f[1] - e[1] * f[0]
-        w = a - through
-        t = (w[0] * f[1] - w[1] * f[0]) / den
-        return {self.x: through + t * as_col(e, a)}, abs(den) + 0.0 * t
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
-        sl = lambda s: s.sliders[self.x]  # noqa: E731
-        ex = g.param(lambda s: sl(s).direction[0])
-        ey = g.param(lambda s: sl(s).direction[1])
-        fx = g.param(lambda s: sl(s).slot_direction[0])
-        fy = g.param(lambda s: sl(s).slot_direction[1])
-        tx = g.param(lambda s: sl(s).through[0])
-        ty = g.param(lambda s: sl(s).through[1])
-        ax, ay = g.pos(self.pin)
-        den = g.let(f"{ex} * {fy} - {ey} * {fx}")
-        g.margin(g.let(f"abs({den})"))
-        wx, wy = g.let(f"{ax} - {tx}"), g.let(f"{ay} - {ty}")
-        t = g.let(f"({wx} * {fy} - {wy} * {fx}) / {den}")
-        g.place(self.x, g.let(f"{tx} + {t} * {ex}"), g.let(f"{ty} + {t} * {ey}"))
+    @cached_property
+    def construction(self) -> LineLine:
+        """Its position, stated once: the yoke's point on its guide under the slot line through the pin.  ``locate`` and ``source`` are
+        this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return LineLine(self.x, self.pin, FixedLine(self.x))
 
     def why_not(self, scene, pos) -> str:
         return f"the slot of the yoke {self.x} is parallel to its guide"

@@ -15,17 +15,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
-from ..theorems import perp
-from .base import end_margin_cols, end_margin_scalar, size_of
+from .base import size_of
 from . import image
+from .primitives import Constructed, PinInSlot
 
 
 @dataclass(frozen=True)
-class RPR:
+class RPR(Constructed):
     """Placed pin ``pin`` slides in the slot of ``lever`` turning about ``pivot``;
     places the lever's point ``coincident`` under the pin and its far end ``far``; ``offset``
     when the slot runs parallel to the lever, off its pivot."""
@@ -37,6 +38,14 @@ class RPR:
     offset: bool = False
     two_closures = False
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RPR"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.lever,)
+
     @property
     def placed(self) -> tuple[str, ...]:
         return (self.coincident,) + ((self.far,) if self.far else ())
@@ -45,68 +54,12 @@ class RPR:
     def needs(self) -> tuple[str, ...]:
         return (self.pin, self.pivot)
 
-    def locate(self, scene, pos, sigma, x):
-        a, b = pos[self.pin], pos[self.pivot]
-        d = a - b
-        s = np.hypot(d[0], d[1])
-        out = {self.coincident: a.copy()}
-        slot = scene.slots[self.pin]
-        if slot.offset:
-            # BA = t e + δ perp(e) with t > 0:  e = (t BA − δ perp(BA)) / |BA|²
-            off = slot.offset
-            t2 = s * s - off * off
-            t = np.sqrt(np.where(t2 > 0, t2, np.nan))
-            e = (t * d - off * perp(d)) / (s * s)
-            out[self.far] = b + slot.far_length * e
-            m0 = np.where(t2 > 1e-12 * size_of(scene) ** 2, t / s, -1.0)
-            return out, end_margin_cols(m0, t, 0.0, _hi(slot), 1e-12 * size_of(scene))
-        if self.far:
-            out[self.far] = b + slot.far_length * d / s
-        margin = np.where(s > 1e-12 * size_of(scene), 1.0, 0.0)
-        return out, end_margin_cols(margin, s, 0.0, _hi(slot), 1e-12 * size_of(scene))
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
-        (ax, ay), (bx, by) = g.pos(self.pin), g.pos(self.pivot)
-        if g.scene.slots[self.pin].offset:      # (the cache key tells offset slots apart)
-            self._source_offset(g, ax, ay, bx, by)
-            return
-        tiny = g.param(lambda s: 1e-12 * size_of(s))
-        dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
-        n = g.let(f"hypot({dx}, {dy})")
-        m0 = g.let(f"where({n} > {tiny}, 1.0, 0.0)")
-        hi = g.param(lambda s: _hi(s.slots[self.pin]))
-        g.margin(g.call(end_margin_scalar, m0, n, "0.0", hi, tiny)[0])
-        g.place(self.coincident, ax, ay)
-        if self.far:
-            fl = g.param(lambda s: s.slots[self.pin].far_length)
-            g.place(self.far, g.let(f"{bx} + {fl} * {dx} / {n}"),
-                    g.let(f"{by} + {fl} * {dy} / {n}"))
-
-    def _source_offset(self, g, ax, ay, bx, by) -> None:
-        """The offset slot: BA = t e + δ perp(e), t = √(|BA|² − δ²) > 0,
-        e = (t BA − δ perp(BA)) / |BA|², the far end B + l e; margin t/|BA| (−1 where
-        t² ≤ 1e-12 of the size squared)."""
-        off = g.param(lambda s: s.slots[self.pin].offset)
-        fl = g.param(lambda s: s.slots[self.pin].far_length)
-        tiny2 = g.param(lambda s: 1e-12 * size_of(s) ** 2)
-        dx, dy = g.let(f"{ax} - {bx}"), g.let(f"{ay} - {by}")
-        n = g.let(f"hypot_p({dx}, {dy})")
-        t2 = g.let(f"{n} * {n} - {off} * {off}")
-        t = g.let(f"sqrt(where({t2} > 0, {t2}, nan))")
-        # over floats the test comes first (no division by a zero |BA|); over arrays the
-        # margin is kept, NaN-free, as locate's
-        m0 = g.let(f"where({t2} > {tiny2}, {t} / {n}, -1.0)" if g.arrays else
-                   f"({t} / {n} if {t2} > {tiny2} else -1.0)")
-        hi = g.param(lambda s: _hi(s.slots[self.pin]))
-        tiny = g.param(lambda s: 1e-12 * size_of(s))
-        g.margin(g.call(end_margin_scalar, m0, t, "0.0", hi, tiny)[0])
-        g.place(self.coincident, ax, ay)
-        n2 = g.let(f"{n} * {n}")
-        ex = g.let(f"({t} * {dx} - {off} * -{dy}) / {n2}")
-        ey = g.let(f"({t} * {dy} - {off} * {dx}) / {n2}")
-        g.place(self.far, g.let(f"{bx} + {fl} * {ex}"), g.let(f"{by} + {fl} * {ey}"))
+    @cached_property
+    def construction(self) -> PinInSlot:
+        """Its position, stated once: the lever's point A1 = A, its far end along the slot at
+        its stated length.  ``locate`` and ``source`` are this primitive's
+        (:mod:`polygons.dyads.primitives`)."""
+        return PinInSlot(self.coincident, self.pin, self.pivot, self.far)
 
     def why_not(self, scene, pos) -> str:
         slot = scene.slots[self.pin]
@@ -216,11 +169,6 @@ class RPR:
                   component=C.SLIDING)
         if self.far:
             image.emit_image(b, self.far, lev, B, A1)
-
-
-def _hi(slot) -> float:
-    """The slot's stated length (NaN: open-ended)."""
-    return math.nan if slot.length is None else slot.length
 
 
 def matches(scene, placed):

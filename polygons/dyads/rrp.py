@@ -8,21 +8,30 @@ Acceleration: a_X = a_P − ω² PX + α × PX ∥ guide.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from ..steps import Builder
-from .base import circle_line, circle_line_scalar
 from . import pinned
+from .primitives import Constructed, CircleLine, FixedLine, Length
 
 
 @dataclass(frozen=True)
-class RRP:
+class RRP(Constructed):
     """Point ``x`` joined by ``link`` to placed ``p`` and sliding on a fixed straight guide."""
     p: str
     x: str
     link: str
     two_closures = True
+
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RRP"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.link, self.x)
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -36,24 +45,11 @@ class RRP:
     def default_ref(self) -> tuple[str, ...]:
         return (self.p,)
 
-    def locate(self, scene, pos, sigma, x):
-        g = scene.sliders[self.x]
-        X, margin = circle_line(pos[self.p], scene.links[self.link].length, g.through,
-                                g.direction, sigma)
-        return {self.x: X}, margin
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
-        L = g.param(lambda s: s.links[self.link].length)
-        gx = g.param(lambda s: s.sliders[self.x].through[0])
-        gy = g.param(lambda s: s.sliders[self.x].through[1])
-        ex = g.param(lambda s: s.sliders[self.x].direction[0])
-        ey = g.param(lambda s: s.sliders[self.x].direction[1])
-        x, y, m = g.call(circle_line_scalar, *g.pos(self.p), L, gx, gy, ex, ey,
-                         g.sigma(self.x), n=3)
-        g.margin(m)
-        g.place(self.x, x, y)
+    @cached_property
+    def construction(self) -> CircleLine:
+        """Its position, stated once: X on the guide with |PX| = L (closure σ).  ``locate`` and ``source`` are
+        this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return CircleLine(self.x, self.p, Length(self.link), FixedLine(self.x))
 
     def why_not(self, scene, pos) -> str:
         from ..theorems import cross

@@ -8,14 +8,15 @@ centripetal vectors are known, the two tangential lines meet at x.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 from ..steps import Builder
-from .base import circle_circle, circle_circle_scalar
 from . import pinned
+from .primitives import Constructed, CircleCircle, Length
 
 
 @dataclass(frozen=True)
-class RRR:
+class RRR(Constructed):
     """Point ``x`` joined by link ``link_p`` to placed ``p`` and by ``link_q`` to placed ``q``."""
     p: str
     x: str
@@ -23,6 +24,14 @@ class RRR:
     link_p: str
     link_q: str
     two_closures = True
+
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "RRR"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.link_p, self.link_q)
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -36,21 +45,11 @@ class RRR:
     def default_ref(self) -> tuple[str, ...]:
         return (self.p, self.q)
 
-    def locate(self, scene, pos, sigma, x):
-        r1 = scene.links[self.link_p].length
-        r2 = scene.links[self.link_q].length
-        X, margin = circle_circle(pos[self.p], r1, pos[self.q], r2, sigma)
-        return {self.x: X}, margin
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
-        r1 = g.param(lambda s: s.links[self.link_p].length)
-        r2 = g.param(lambda s: s.links[self.link_q].length)
-        x, y, m = g.call(circle_circle_scalar, *g.pos(self.p), r1, *g.pos(self.q), r2,
-                         g.sigma(self.x), n=3)
-        g.margin(m)
-        g.place(self.x, x, y)
+    @cached_property
+    def construction(self) -> CircleCircle:
+        """Its position, stated once: X on both circles |PX| = r₁, |QX| = r₂ (closure σ).  ``locate`` and ``source`` are
+        this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return CircleCircle(self.x, self.p, Length(self.link_p), self.q, Length(self.link_q))
 
     def why_not(self, scene, pos) -> str:
         import math

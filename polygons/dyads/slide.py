@@ -12,16 +12,18 @@ known, so the polygon closes with no intersection (the Coriolis 2ωṡ drawn fro
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
-from .base import end_margin_cols, end_margin_scalar, size_of
+from .base import size_of
 from . import image
+from .primitives import Constructed, AlongLink, Prescribed
 
 
 @dataclass(frozen=True)
-class SlideDyad:
+class SlideDyad(Constructed):
     """``point`` moved along ``link`` (ends ``p`` → ``q``); ``coincident`` is the link's point
     under it."""
     point: str
@@ -39,31 +41,12 @@ class SlideDyad:
     def needs(self) -> tuple[str, ...]:
         return (self.p, self.q)
 
-    def locate(self, scene, pos, sigma, x):
-        s = scene.prescribed[self.point].position
-        d = pos[self.q] - pos[self.p]
-        n = np.hypot(d[0], d[1])
-        c = pos[self.p] + s * d / n
-        tiny = 1e-12 * size_of(scene)
-        margin = end_margin_cols(np.where(n > tiny, 1.0, -1.0), s, 0.0, n, tiny)
-        return {self.coincident: c, self.point: c.copy()}, margin
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``.
-
-        C = P + s PQ/|PQ|, C1 = C; the margin: |PQ| beyond 1e-12 of the mechanism's size, and
-        0 ≤ s ≤ |PQ| (:func:`~polygons.dyads.base.end_margin_scalar`, within that tolerance)."""
-        (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
-        s_ = g.param(lambda s: s.prescribed[self.point].position)
-        tiny = g.param(lambda s: 1e-12 * size_of(s))
-        dx, dy = g.let(f"{qx} - {px}"), g.let(f"{qy} - {py}")
-        n = g.let(f"hypot_p({dx}, {dy})")
-        m0 = g.let(f"where({n} > {tiny}, 1.0, -1.0)")
-        g.margin(g.call(end_margin_scalar, m0, s_, "0.0", n, tiny)[0])
-        cx, cy = g.let(f"{px} + {s_} * {dx} / {n}"), g.let(f"{py} + {s_} * {dy} / {n}")
-        g.place(self.coincident, cx, cy)
-        g.place(self.point, cx, cy)
+    @cached_property
+    def construction(self) -> AlongLink:
+        """Its position, stated once: C = P + s PQ/|PQ|, C1 = C.
+        ``locate`` and ``source`` are this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return AlongLink(self.coincident, self.p, self.q, Prescribed(self.point),
+                         also=(self.point,))
 
     def why_not(self, scene, pos) -> str:
         d = np.asarray(pos[self.q], dtype=float) - np.asarray(pos[self.p], dtype=float)

@@ -5,18 +5,25 @@ Position: X = G + s e.  Velocity: v_X = ṡ e.  Acceleration: a_X = s̈ e (given
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import numpy as np
+from functools import cached_property
 
 from ..steps import Builder, Component, Kind, Op
-from .base import as_col
+from .primitives import Constructed, FixedLine, Translation
 
 
 @dataclass(frozen=True)
-class SliderDriveDyad:
+class SliderDriveDyad(Constructed):
     """The input slider ``point`` on its fixed guide."""
     point: str
     two_closures = False
+
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "slider driver"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (self.point,)
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -26,21 +33,11 @@ class SliderDriveDyad:
     def needs(self) -> tuple[str, ...]:
         return ()
 
-    def locate(self, scene, pos, sigma, x):
-        g = scene.sliders[self.point]
-        through, e = np.array(g.through), np.array(g.direction)
-        if np.ndim(x) == 0:
-            return {self.point: through + x * e}, None
-        return {self.point: as_col(through, x[None]) + x * as_col(e, x[None])}, None
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator
-        (:mod:`polygons.compiled`): the same formula, emitted through ``g``."""
-        tx = g.param(lambda s: s.sliders[self.point].through[0])
-        ty = g.param(lambda s: s.sliders[self.point].through[1])
-        ex = g.param(lambda s: s.sliders[self.point].direction[0])
-        ey = g.param(lambda s: s.sliders[self.point].direction[1])
-        g.place(self.point, g.let(f"{tx} + {g.x} * {ex}"), g.let(f"{ty} + {g.x} * {ey}"))
+    @cached_property
+    def construction(self) -> Translation:
+        """Its position, stated once: X = G + s e along its guide.  ``locate`` and ``source`` are
+        this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return Translation(self.point, FixedLine(self.point))
 
     def why_not(self, scene, pos) -> str:
         return ""

@@ -60,6 +60,15 @@ class Triad:
     two_closures = False
     many_closures = True
 
+    #: its force polygon: the construction of that name in
+    #: :data:`polygons.forces.graphical.POLYGONS`
+    force_polygon = "triad"
+
+    def force_bodies(self) -> tuple[str, ...]:
+        """The bodies whose force polygon this group closes."""
+        return (((self.plate,) if self.ternary else tuple(self.plate_links))
+                + (self.link_b, self.link_c, self.link_x))
+
     @property
     def roles(self):
         """((P₁, O₁, link₁), (P₂, O₂, link₂), (P₃, O₃, link₃)): S where O₁P₁ and O₂P₂
@@ -207,13 +216,13 @@ class Triad:
         (p1, _, _), (p2, _, _), _ = self.roles
         (bx, by), (ax, ay) = corner[p1], outer[p1]
         (cx, cy), (dx, dy) = corner[p2], outer[p2]
-        ux, uy = g.let(f"{bx} - {ax}"), g.let(f"{by} - {ay}")
-        wx, wy = g.let(f"{cx} - {dx}"), g.let(f"{cy} - {dy}")
-        den = g.let(f"{ux} * {wy} - {uy} * {wx}")
-        safe = g.let(f"where({den} != 0.0, {den}, nan)" if g.arrays else
-                     f"({den} if {den} != 0.0 else nan)")
-        t = g.let(f"(({dx} - {ax}) * {wy} - ({dy} - {ay}) * {wx}) / {safe}")
-        g.place(self.s, g.let(f"{ax} + {t} * {ux}"), g.let(f"{ay} + {t} * {uy}"))
+        ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
+        wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
+        den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
+        safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
+                     g.e("({} if {} != 0.0 else nan)", den, den))
+        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", dx, ax, wy, dy, ay, wx, safe)
+        g.place(self.s, g.let("{} + {} * {}", ax, t, ux), g.let("{} + {} * {}", ay, t, uy))
 
     def why_not(self, scene, pos) -> str:
         return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c}, "

@@ -11,12 +11,11 @@ image of the rigid wheel about W:
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
-
-import numpy as np
+from functools import cached_property
 
 from ..steps import Builder, Component, Kind, Op
+from .primitives import Constructed, RimPoint, WheelRim
 
 
 def _wheel(scene, pin):
@@ -30,7 +29,7 @@ def _wheel(scene, pin):
 
 
 @dataclass(frozen=True)
-class WheelPin:
+class WheelPin(Constructed):
     """Point ``x`` on the rim of the driven wheel centred at ``w``."""
     x: str
     w: str
@@ -44,22 +43,11 @@ class WheelPin:
     def needs(self) -> tuple[str, ...]:
         return (self.w,)
 
-    def locate(self, scene, pos, sigma, x):
-        q, phi0, rho = _wheel(scene, self.x)
-        phi = phi0 - x / q.radius      # (the rim angles are stated at input position 0)
-        if np.ndim(x) == 0:
-            return {self.x: pos[self.w] + rho * np.array([math.cos(phi), math.sin(phi)])}, None
-        return {self.x: pos[self.w] + rho * np.array([np.cos(phi), np.sin(phi)])}, None
-
-    def source(self, g) -> None:
-        """:meth:`locate` as straight-line float code for the compiled evaluator."""
-        phi0 = g.param(lambda s: _wheel(s, self.x)[1])
-        rho = g.param(lambda s: _wheel(s, self.x)[2])
-        r = g.param(lambda s: _wheel(s, self.x)[0].radius)
-        wx, wy = g.pos(self.w)
-        phi = g.let(f"{phi0} - {g.x} / {r}")
-        g.place(self.x, g.let(f"{wx} + {rho} * cos({phi})"),
-                g.let(f"{wy} + {rho} * sin({phi})"))
+    @cached_property
+    def construction(self) -> RimPoint:
+        """Its position, stated once: X = W + ρ (cos φ, sin φ), φ = φ₀ − s/r.
+        ``locate`` and ``source`` are this primitive's (:mod:`polygons.dyads.primitives`)."""
+        return RimPoint(self.x, self.w, WheelRim(self.x))
 
     def why_not(self, scene, pos) -> str:
         return ""

@@ -1,21 +1,26 @@
 """An exam's questions for learning systems: Moodle XML, GIFT and a QTI 1.2 package.
 
-Per variant and per asked quantity one **numerical** question: the answer (a magnitude; a
-sliding value signed along its slot), full credit within the drawing tolerance and
-``partial`` credit within ``partial_factor`` × that tolerance (Moodle grades the first answer
-whose |response − answer| ≤ tolerance); for ω and α a separate **multiple choice** asks the
-sense (CW / CCW).  Moodle XML is written the way ``question/format/xml/format.php`` imports it
+Per variant and per asked quantity one **numerical** question.  Every question carries the
+variant's data in words (a table: fixed points, lengths, slots, the driver), states what is
+asked and its one sign convention (ω, α signed, + counter-clockwise; a sliding value signed
+along its slot; a point's velocity or acceleration as a magnitude); a picture, where there
+is one, is marked not to scale (a screen shows it at no known scale).  Full credit within the
+drawing tolerance and ``partial`` credit within ``partial_factor`` × it (Moodle's numerical
+``get_matching_answer`` grades by the first answer whose |response − answer| ≤ tolerance).
+Moodle XML is written the way ``question/format/xml/format.php`` imports it
 (``<question type="numerical">``, ``<questiontext format="html">`` with the space diagram as
 ``<file name=... encoding="base64">`` referred to as ``@@PLUGINFILE@@/name``, ``<answer
 fraction=...><text/><tolerance/>``, ``<units><unit><multiplier/><unit_name/>``); each variant's
 questions go in a category of their own so a quiz can draw one variant per student.  GIFT
-cannot carry a file: its questions give the variant's data in words.  The QTI package
-(``imsmanifest.xml`` + one assessment, Canvas's ``numerical_question`` /
-``multiple_choice_question`` metadata) carries the diagrams as files.
+cannot carry a file: the data in words make it self-contained; each item is one line.  The
+QTI package (``imsmanifest.xml`` + one assessment with Canvas's ``numerical_question``
+metadata) carries the diagrams as files and only the full-credit band (Canvas makes every
+respcondition a fully correct answer: :func:`_qti_numerical`).
 
 Every piece of text from the scene is escaped where it lands: HTML inside XML (ElementTree
-escapes the XML, :func:`html.escape` the HTML), GIFT's ``~ = # { } :`` and backslash.
-Output is deterministic: the same variants give the same bytes (fixed zip timestamps).
+escapes the XML, :func:`html.escape` the HTML), GIFT's ``~ = # { } :`` and backslash in
+names and stems; a GIFT category has no escape at all (:func:`_cat`).  Output is
+deterministic: the same variants give the same bytes (fixed zip timestamps).
 """
 from __future__ import annotations
 
@@ -27,11 +32,14 @@ import xml.etree.ElementTree as ET
 import zipfile
 from typing import Mapping
 
-from .variants import Asked, ExamSet, Variant
+from .variants import Asked, ExamSet, Variant, convention, data_rows, one_line
 
 #: units as a learner types them (Moodle compares the unit text)
 ASCII_UNIT = {"m/s": "m/s", "m/s²": "m/s^2", "rad/s": "rad/s", "rad/s²": "rad/s^2"}
 ZIP_TIME = (1980, 1, 1, 0, 0, 0)
+#: the picture's caption: a screen shows it at no known size (its scale bar grows with it)
+NOT_TO_SCALE = ("Space diagram not to scale on screen: measure against its scale bar, which "
+                "is resized with it, or take every dimension from the data table.")
 
 
 def number(x: float) -> str:
@@ -57,37 +65,27 @@ def image_name(v: Variant) -> str:
 
 # ---------------------------------------------------------------- the question's words
 def data_html(v: Variant) -> str:
-    """The variant's data as an HTML list (every value from the scene, escaped)."""
-    scene = v.scene
-    rows = []
-    for name, link in scene.links.items():
-        if link.length is not None:
-            rows.append(f"{name} = {link.length * 1000:g} mm")
-    drv = scene.driver
-    if hasattr(drv, "pivot"):
-        rows.append(f"crank {drv.link} at {math.degrees(drv.angle):g}° from +x (CCW), "
-                    f"ω = {abs(drv.omega):g} rad/s {'CCW' if drv.omega >= 0 else 'CW'}")
-        alpha = getattr(drv, "alpha", 0.0) or 0.0
-        if alpha:
-            rows.append(f"α = {abs(alpha):g} rad/s² {'CCW' if alpha > 0 else 'CW'}")
-    return "<ul>" + "".join(f"<li>{html.escape(r)}</li>" for r in rows) + "</ul>"
+    """The variant's data as an HTML table (every value from the scene, escaped): all a
+    student needs, whatever the picture shows."""
+    rows = "".join(f"<tr><td>{html.escape(what)}</td><td>{html.escape(value)}</td></tr>"
+                   for what, value in (v.data or data_rows(v.scene)))
+    return ("<table><caption>Data (x to the right, y up; angles counter-clockwise from "
+            "+x)</caption>" + rows + "</table>")
 
 
-def stem_html(exam: ExamSet, v: Variant, a: Asked, image: bool, sense: bool = False) -> str:
-    title = html.escape(v.scene.title)
+def stem_html(exam: ExamSet, v: Variant, a: Asked, image: bool) -> str:
+    """One question: title, picture (marked not to scale: the data table is the data),
+    the data in words, what is asked and its sign convention.  One line: GIFT items end at
+    a blank line."""
+    title = html.escape(one_line(v.scene.title))
     head = (f"<p><strong>{title}</strong></p>"
             + (f'<p><img src="@@PLUGINFILE@@/{html.escape(image_name(v))}" '
-               f'alt="space diagram of variant {v.number}" style="max-width:100%"></p>'
-               if image else "")
+               f'alt="space diagram of variant {v.number}"><br>'
+               f"<em>{NOT_TO_SCALE}</em></p>" if image else "")
             + data_html(v))
-    if sense:
-        return head + (f"<p>In which sense is the {html.escape(a.words)} "
-                       f"({html.escape(a.symbol)})?</p>")
-    what = html.escape(a.words)
-    if a.fn in ("omega", "alpha"):
-        what += " (its magnitude; the sense is asked separately)"
-    return head + (f"<p>Draw the construction and find the {what}, "
-                   f"{html.escape(a.symbol)}, in {html.escape(ASCII_UNIT[a.unit])}.</p>")
+    return head + (f"<p>Draw the construction and find the {html.escape(a.words)}, "
+                   f"{html.escape(a.symbol)}, in {html.escape(ASCII_UNIT[a.unit])}. "
+                   f"{html.escape(convention(a.fn, a.expr, v.solution))}</p>")
 
 
 # ---------------------------------------------------------------- Moodle XML
@@ -143,41 +141,18 @@ def moodle_xml(exam: ExamSet, images: Mapping[int, bytes] | None = None) -> byte
             unit = ET.SubElement(units, "unit")
             _value(unit, "multiplier", "1")
             _value(unit, "unit_name", ASCII_UNIT[a.unit])
-            if a.sense:
-                _moodle_sense(root, exam, v, a, images.get(v.number))
     ET.indent(root, space="  ")
     return ET.tostring(root, encoding="UTF-8", xml_declaration=True) + b"\n"
 
 
-def _moodle_sense(root, exam, v, a, image: bytes | None) -> None:
-    q = ET.SubElement(root, "question", {"type": "multichoice"})
-    _text(q, "name", qname(v, a, "sense of "))
-    qt = _text(q, "questiontext", stem_html(exam, v, a, image is not None, sense=True),
-               "html")
-    if image is not None:   # the file again: each question owns its files in Moodle
-        f = ET.SubElement(qt, "file", {"name": image_name(v), "path": "/",
-                                       "encoding": "base64"})
-        f.text = base64.b64encode(image).decode("ascii")
-    _text(q, "generalfeedback", html.escape(f"{a.symbol} is {a.sense}."), "html")
-    _value(q, "defaultgrade", "1.0000000")
-    _value(q, "penalty", "1.0000000")
-    _value(q, "hidden", "0")
-    _value(q, "idnumber", f"polygons-v{v.number:02d}-sense-{a.expr}")
-    _value(q, "single", "true")
-    _value(q, "shuffleanswers", "false")
-    _value(q, "answernumbering", "none")
-    for tag in ("correctfeedback", "partiallycorrectfeedback", "incorrectfeedback"):
-        _text(q, tag, "", "html")
-    for sense, words in (("CW", "CW (clockwise)"), ("CCW", "CCW (counter-clockwise)")):
-        ans = ET.SubElement(q, "answer", {"fraction": "100" if sense == a.sense else "0",
-                                          "format": "html"})
-        ET.SubElement(ans, "text").text = html.escape(words)
-        _text(ans, "feedback", "", "html")
-
-
 def _cat(title: str) -> str:
-    """A category path segment: '/' would nest categories."""
-    return title.replace("/", "-")
+    """A category path segment: one line ('/' would nest categories).  Moodle's GIFT
+    importer runs ``escapedchar_pre`` over the ``$CATEGORY`` line and never
+    ``escapedchar_post`` (question/format/gift/format.php, ``readquestion``), so an escape
+    there would arrive as '&&058;': the segment needs none — the category line is read whole
+    before any ``::``, ``{`` or ``~`` is looked for, so those survive as they are, and a
+    backslash (the only start of an escape) becomes '-'."""
+    return one_line(title).replace("/", "-").replace("\\", "-")
 
 
 # ---------------------------------------------------------------- GIFT
@@ -189,24 +164,21 @@ def gift_escape(text: str) -> str:
 
 
 def gift(exam: ExamSet) -> str:
+    """One GIFT item per question, each on one line (Moodle splits items at blank lines):
+    ``::name::[html]stem{#=answer:tolerance =%50%answer:3×tolerance}``, each variant after
+    its ``$CATEGORY`` line."""
     out = [f"// polygons exam: {_comment(exam.scene.title)} (seed {exam.seed}); GIFT "
            f"carries no picture: the data are given in words", ""]
     for v in exam.variants:
-        out += [f"$CATEGORY: $course$/top/polygons exam/{gift_escape(_cat(exam.scene.title))}"
+        out += [f"$CATEGORY: $course$/top/polygons exam/{_cat(exam.scene.title)}"
                 f"/variant {v.number:02d}", ""]
         for a in v.asked:
-            stem = gift_escape(stem_html(exam, v, a, False))
+            stem = gift_escape(one_line(stem_html(exam, v, a, False)))
             p = number(exam.spec.partial * 100)
-            out.append(f"::{gift_escape(qname(v, a))}::[html]{stem}"
+            out.append(f"::{gift_escape(one_line(qname(v, a)))}::[html]{stem}"
                        f"{{#={number(a.answer)}:{number(a.tolerance)} "
                        f"=%{p}%{number(a.answer)}:{number(partial_tolerance(exam, a))}}}")
             out.append("")
-            if a.sense:
-                stem = gift_escape(stem_html(exam, v, a, False, sense=True))
-                right, wrong = (a.sense, "CW" if a.sense == "CCW" else "CCW")
-                out.append(f"::{gift_escape(qname(v, a, 'sense of '))}::[html]{stem}"
-                           f"{{={right} ~{wrong}}}")
-                out.append("")
     return "\n".join(out)
 
 
@@ -246,13 +218,16 @@ def qti_assessment(exam: ExamSet, images: Mapping[int, bytes]) -> bytes:
     for v in exam.variants:
         for a in v.asked:
             _qti_numerical(section, exam, v, a, v.number in images)
-            if a.sense:
-                _qti_sense(section, exam, v, a, v.number in images)
     ET.indent(root, space="  ")
     return ET.tostring(root, encoding="UTF-8", xml_declaration=True) + b"\n"
 
 
 def _qti_numerical(section, exam, v, a, image: bool) -> None:
+    """One numerical item with ONE respcondition, full credit within the tolerance.  Canvas's
+    importer (gems/plugins/qti_exporter/lib/qti/numeric_interaction.rb,
+    ``get_canvas_answers``) turns every respcondition into an answer of ``:weight=>100``:
+    a partial band would become a second fully correct answer, so it is left out (Canvas's
+    numerical questions have no partial credit; the README says so)."""
     item = ET.SubElement(section, "item", {"ident": f"v{v.number:02d}-{_ident(a.expr)}",
                                            "title": qname(v, a)})
     _meta(item, {"question_type": "numerical_question", "points_possible": "1.0"})
@@ -264,8 +239,7 @@ def _qti_numerical(section, exam, v, a, image: bool) -> None:
     proc = ET.SubElement(item, "resprocessing")
     ET.SubElement(ET.SubElement(proc, "outcomes"), "decvar", {
         "maxvalue": "100", "minvalue": "0", "varname": "SCORE", "vartype": "Decimal"})
-    for score, tol in (("100", a.tolerance),
-                       (number(exam.spec.partial * 100), partial_tolerance(exam, a))):
+    for score, tol in (("100", a.tolerance),):
         cond = ET.SubElement(proc, "respcondition", {"continue": "No"})
         var = ET.SubElement(ET.SubElement(cond, "conditionvar"), "or")
         ET.SubElement(var, "varequal", {"respident": "response1"}).text = number(a.answer)
@@ -273,26 +247,6 @@ def _qti_numerical(section, exam, v, a, image: bool) -> None:
         ET.SubElement(both, "vargte", {"respident": "response1"}).text = number(a.answer - tol)
         ET.SubElement(both, "varlte", {"respident": "response1"}).text = number(a.answer + tol)
         ET.SubElement(cond, "setvar", {"action": "Set", "varname": "SCORE"}).text = score
-
-
-def _qti_sense(section, exam, v, a, image: bool) -> None:
-    item = ET.SubElement(section, "item", {
-        "ident": f"v{v.number:02d}-sense-{_ident(a.expr)}", "title": qname(v, a, "sense of ")})
-    _meta(item, {"question_type": "multiple_choice_question", "points_possible": "1.0"})
-    pres = ET.SubElement(item, "presentation")
-    _mat(pres, _qti_image(stem_html(exam, v, a, image, sense=True), v))
-    lid = ET.SubElement(pres, "response_lid", {"ident": "response1", "rcardinality": "Single"})
-    choice = ET.SubElement(lid, "render_choice")
-    for s in ("CW", "CCW"):
-        lab = ET.SubElement(choice, "response_label", {"ident": s})
-        _mat(lab, s)
-    proc = ET.SubElement(item, "resprocessing")
-    ET.SubElement(ET.SubElement(proc, "outcomes"), "decvar", {
-        "maxvalue": "100", "minvalue": "0", "varname": "SCORE", "vartype": "Decimal"})
-    cond = ET.SubElement(proc, "respcondition", {"continue": "No"})
-    ET.SubElement(ET.SubElement(cond, "conditionvar"), "varequal",
-                  {"respident": "response1"}).text = a.sense
-    ET.SubElement(cond, "setvar", {"action": "Set", "varname": "SCORE"}).text = "100"
 
 
 def _ident(expr: str) -> str:

@@ -52,6 +52,7 @@ FORCE_FUNCTIONS: dict[str, tuple[str, bool, tuple[int, int]]] = {
     "Fout_eta": ("force", False, (1, 1)),
     "Fc": ("force", False, (1, 1)), "phi": ("angle", False, (1, 1)),
     "Ff": ("force", False, (1, 1)), "mu": ("fraction", False, (1, 1)),
+    "Fp": ("force", False, (1, 1)),
 }
 _KIN_FLIP = ("omega", "alpha")
 _NAME = frozenset(string.ascii_letters + "_")
@@ -94,7 +95,40 @@ def _dimension_of(fn: str, args) -> str:
     return kq.dimension_of_quantity(f"{fn}({','.join(args)})")
 
 
+def _ratio(expr: str) -> tuple[str, str] | None:
+    """'Tout / Tin' -> ('Tout', 'Tin'): a ratio of two quantities (or sums), else None."""
+    num, slash, den = expr.partition("/")
+    return (num.strip(), den.strip()) if slash else None
+
+
 def check_expr(expr: str, unit: str, scene: Scene, where: str) -> None:
+    ratio = _ratio(expr)
+    if ratio is not None:            # a ratio of two quantities of one kind: a pure number
+        if "/" in ratio[1] or not all(ratio):
+            raise SceneError(f"cannot read the ratio {expr!r}: write one quantity over another",
+                             file=scene.file, where=where + ".quantity")
+        from ..units import UNITS as _U
+        si = {d: u for u, (d, f) in reversed(list(_U.items())) if f == 1.0}
+        dims = []
+        for part in ratio:
+            fn = parse_call(_split_terms(part)[0][1])[0] if part else ""
+            try:
+                dims.append(_dimension_of(fn, parse_call(_split_terms(part)[0][1])[1]))
+            except SceneError as exc:
+                raise SceneError(exc.reason, file=scene.file, where=where + ".quantity") \
+                    from None
+        if dims[0] != dims[1]:
+            raise SceneError(f"{expr!r}: a ratio of a {dims[0].replace('_', ' ')} to a "
+                             f"{dims[1].replace('_', ' ')} has a unit; ask for a ratio of two "
+                             f"quantities of one kind", file=scene.file,
+                             where=where + ".quantity")
+        for part in ratio:
+            check_expr(part, si.get(dims[0], "-") if dims[0] != "fraction" else "-", scene,
+                       where)
+        if unit_dimension(unit) != "fraction":
+            raise UnitError(f"{expr!r} is a ratio, a pure number: unit = \"-\"",
+                            file=scene.file, where=where + ".unit")
+        return
     dims = set()
     for _, term in _split_terms(expr):
         try:
@@ -129,6 +163,13 @@ def force_quantity(an: Analysis, expr: str, state: str | None = None,
                    positive: int = 1) -> float:
     """The SI value of ``expr`` (see README, "Forces") at ``state``; ``positive`` = −1 takes
     normal components, moments, ω and α positive clockwise."""
+    ratio = _ratio(expr)
+    if ratio is not None:
+        num, den = (force_quantity(an, part, state, positive) for part in ratio)
+        if not abs(den) > 1e-12 * abs(num):
+            raise SceneError(f"{ratio[1]} is zero at this instant: the ratio {expr!r} is not "
+                             f"defined", file=an.model.scene.file)
+        return num / den
     st = an.state(state)
     total = 0.0
     for sign, term in _split_terms(expr):
@@ -259,6 +300,8 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
                                  f"pressure angle is not defined", file=file)
             return c.pressure_angle
         return c.push if c.push is not None else c.magnitude
+    if fn == "Fp":      # the piston effort: what the piston hands its rod along the stroke
+        return piston_effort(scene, ne, model, args[0], file)
     if fn == "mass":
         return item(args[0]).mass
     if fn == "I":
@@ -340,6 +383,25 @@ def _term(an: Analysis, st: State, term: str, positive: int) -> float:
                              file=file)
         return machine.output_effort(model, st, out)
     raise SceneError(f"unknown quantity {fn!r}", file=file)  # pragma: no cover
+
+
+def piston_effort(scene, ne, model, lab: str, file) -> float:
+    """F_P, the piston effort of the slider ``lab``: the net force along the line of stroke
+    that the piston hands its connecting rod at the gudgeon pin (the gas force less the
+    piston's inertia force, its weight and guide friction where given), signed along the
+    guide's direction: the force of the pin on the rod, projected on the stroke."""
+    sliding = scene.model.guide.get(lab)
+    if sliding is None:
+        raise UnknownLabelError(f"{lab!r} is not a slider on a fixed guide (a piston): "
+                                f"{suggest(lab, scene.model.guide)}", file=file)
+    rods = [n for n in scene.model.members.get(lab, ())
+            if scene.model.body(n).kind in ("link", "lever")]
+    if len(rods) != 1:
+        raise SceneError(f"the piston effort at {lab} is the force on its connecting rod; "
+                         f"{lab} carries {len(rods)} links ({', '.join(rods) or 'none'})",
+                         file=file)
+    f = contact_force(model, ne, lab, rods[0])
+    return float(np.asarray(f) @ np.asarray(sliding.line.direction))
 
 
 @dataclass(frozen=True)

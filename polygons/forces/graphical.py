@@ -42,15 +42,15 @@ A pin is carried with the body placed first (the frame, or the group's first lin
 later groups pass on through a pin act on that body.  Each reaction is returned as the force
 on a body at a pin, the same as :func:`polygons.forces.newton_euler.newton_euler`'s, and the
 tests hold them equal to 1e-9.  Kinds the construction does not handle are refused in one line
-naming the kind (:data:`HANDLES`, :data:`GROUP_KINDS`).
+naming the kind (:data:`HANDLES`; a group whose kind names no :data:`POLYGONS` entry).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
+from types import MappingProxyType
 
 import numpy as np
 
-from ..dyads import RPP, RPR, RRP, RRR, CrankDyad, Guided, Image, SliderDriveDyad, Triad
 from ..errors import UnsupportedError
 from ..model import FRAME, check_handles
 from ..plan import make_plan
@@ -60,10 +60,9 @@ from .states import Analysis, State
 #: the kinds of body and pair the construction handles (polygons.model)
 HANDLES = frozenset({"frame", "link", "lever", "block", "yoke", "pin-block", "turning",
                      "sliding"})
-#: the plan's dyads it handles: the driver (crank or slider), RRR, RRP, points on links, a pin
-#: in a lever's slot (RPR), a pin on a link in a moving slot (Guided), the Scotch yoke (RPP),
-#: the class-III group with a ternary plate (Triad)
-GROUP_KINDS = (CrankDyad, SliderDriveDyad, RRR, RRP, Image, RPR, Guided, RPP, Triad)
+#: a group kind without ``force_polygon`` (the plan's groups handled: those naming one of
+#: :data:`POLYGONS`, and points on links, which name None)
+_MISSING = object()
 #: Group.kind of the groups drawn as a dyad (two bodies, a middle pin's force as the diagonal)
 DYAD_KINDS = ("RRR", "RRP", "RRP, moving guide")
 METHOD = "the force-polygon construction"
@@ -150,26 +149,15 @@ def groups_of(scene):
         raise _refuse("a rolling contact (its friction is no guide couple)", rolled[0], file)
     out = []
     for d in make_plan(scene).dyads:
-        if not isinstance(d, GROUP_KINDS):
+        # the construction is the group's own (``force_polygon``): a kind that names none
+        # it knows, or has no such attribute, is refused by construction
+        kind = getattr(d, "force_polygon", _MISSING)
+        if kind is None:                 # no body of its own (a point on a placed link)
+            continue
+        if kind is _MISSING or kind not in POLYGONS:
             raise _refuse(f"a group of kind {type(d).__name__}", "placing "
                           + ", ".join(d.placed), file)
-        if isinstance(d, CrankDyad):
-            out.append(("crank", d, (d.link,)))
-        elif isinstance(d, SliderDriveDyad):
-            out.append(("slider driver", d, (d.point,)))
-        elif isinstance(d, RRR):
-            out.append(("RRR", d, (d.link_p, d.link_q)))
-        elif isinstance(d, RRP):
-            out.append(("RRP", d, (d.link, d.x)))
-        elif isinstance(d, RPR):
-            out.append(("RPR", d, (d.lever,)))
-        elif isinstance(d, Guided):
-            out.append(("RRP, moving guide", d, (d.link,)))
-        elif isinstance(d, RPP):
-            out.append(("RPP", d, (d.x,)))
-        elif isinstance(d, Triad):
-            plate = (d.plate,) if d.ternary else tuple(d.plate_links)
-            out.append(("triad", d, plate + (d.link_b, d.link_c, d.link_x)))
+        out.append((kind, d, tuple(d.force_bodies())))
     return out
 
 
@@ -182,36 +170,40 @@ def _solve2(u1, u2, rhs, file, what) -> tuple[float, float]:
     return cross(rhs, u2) / det, cross(u1, rhs) / det
 
 
-def construct(an: Analysis, st: State) -> ForcePolygons:
-    """The force polygons of every group at the state ``st``."""
-    model = an.model
-    scene = model.scene
-    file = scene.file
-    sol = st.sol
-    groups = groups_of(scene)
-    order = [FRAME] + [b for _, _, bs in groups for b in bs]
-    group_of = {b: i for i, (_, _, bs) in enumerate(groups) for b in bs}
-    missing = [b for b in model.bodies if b not in group_of]
-    if missing:
-        raise _refuse("a body placed by no group", ", ".join(missing), file)
-    carriers: dict[str, list[str]] = {}
-    for lab in scene.labels:
-        cs = ([FRAME] if lab in scene.ground else []) + list(model.members.get(lab, ()))
-        carriers[lab] = sorted(dict.fromkeys(cs), key=order.index)
-    owner = {lab: cs[0] for lab, cs in carriers.items() if cs}
+class _Board:
+    """The drawing board of one state: where every pin is, the forces found so far (``pin``:
+    (label, body) → the force on the body from the pin; ``guide``, ``slot``), the groups drawn
+    (``done``), and what each body carries when its group is drawn (:meth:`knowns`)."""
 
-    def P(lab):
-        return position(sol, lab)
+    def __init__(self, an: Analysis, st: State, groups):
+        model = an.model
+        self.model, self.scene, self.st = model, model.scene, st
+        self.file, self.sol = self.scene.file, st.sol
+        order = [FRAME] + [b for _, _, bs in groups for b in bs]
+        group_of = {b: i for i, (_, _, bs) in enumerate(groups) for b in bs}
+        missing = [b for b in model.bodies if b not in group_of]
+        if missing:
+            raise _refuse("a body placed by no group", ", ".join(missing), self.file)
+        self.carriers: dict[str, list[str]] = {}
+        for lab in self.scene.labels:
+            cs = ([FRAME] if lab in self.scene.ground else []) + list(
+                model.members.get(lab, ()))
+            self.carriers[lab] = sorted(dict.fromkeys(cs), key=order.index)
+        self.owner = {lab: cs[0] for lab, cs in self.carriers.items() if cs}
+        self.pin: dict = {}
+        self.guide: dict = {}
+        self.slot: dict = {}
+        self.joints: list[Group] = []
+        self.done: set[str] = set()
+        self.effort = 0.0
 
-    pin: dict = {}
-    guide: dict = {}
-    slot: dict = {}
-    joints: list[Group] = []
-    done: set[str] = set()
-    out: list[Group] = []
-    effort = 0.0
+    def P(self, lab):
+        return position(self.sol, lab)
 
-    def knowns(body: str) -> list[Known]:
+    def knowns(self, body: str) -> list[Known]:
+        """The loads, weights and inertia forces on ``body``, and the forces the groups
+        already drawn pass on to it through its pins and slots."""
+        model, st, P = self.model, self.st, self.P
         ks = []
         for ld in st.ne.loads:
             if ld.body != body:
@@ -236,209 +228,73 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
             elif c:
                 ks.append(Known(f"−I_G α ({it.item})", "inertia", body, np.zeros(2), None, c))
         for lab in model.bodies[body].labels:
-            if owner.get(lab) != body:
+            if self.owner.get(lab) != body:
                 continue
-            for other in carriers[lab]:
-                if other != body and other in done:
+            for other in self.carriers[lab]:
+                if other != body and other in self.done:
                     ks.append(Known(f"from {other} at {lab}", "transmitted", body,
-                                    -pin[(lab, other)], P(lab)))
+                                    -self.pin[(lab, other)], P(lab)))
         for s in model.slots:                   # a slot's force found with the other body
-            if s.pin not in slot or body not in (s.lever, s.carrier):
+            if s.pin not in self.slot or body not in (s.lever, s.carrier):
                 continue
             other = s.carrier if body == s.lever else s.lever
-            if other in done:
-                val, n = slot[s.pin]
+            if other in self.done:
+                val, n = self.slot[s.pin]
                 ks.append(Known(f"from {other} at {s.pin} (slot)", "transmitted", body,
                                 (val if body == s.lever else -val) * n, P(s.pin)))
         return ks
 
-    def slot_of(pin: str):
-        return next(s for s in model.slots if s.pin == pin)
+    def slot_of(self, pin: str):
+        return next(s for s in self.model.slots if s.pin == pin)
 
-    def slot_normal(s) -> np.ndarray:
+    def slot_normal(self, s) -> np.ndarray:
         """The slot's unit normal, as Newton–Euler takes it (perp of the slot's direction)."""
+        P = self.P
         u = (np.array(s.direction) if s.direction else
              P(s.far) - P(s.pivot) if s.far else P(s.pin) - P(s.pivot))
         return perp(u / float(np.hypot(*u)))
 
-    def K(ks) -> np.ndarray:
-        return sum((k.force for k in ks), np.zeros(2))
+    def guide_normal(self, label: str) -> tuple[np.ndarray, np.ndarray]:
+        """(e, n): the fixed guide's unit direction at ``label`` and its unit normal."""
+        e = np.array(self.scene.model.guide[label].line.direction)
+        return e, perp(e)
 
-    def M(ks, about) -> float:
-        return sum(((cross(k.pos - about, k.force) if k.pos is not None else 0.0) + k.couple
-                    for k in ks), 0.0)
 
-    def words(body, about, m):
-        return f"moments about {about} of {body}'s known forces: {m + 0.0:.6g} N m (CCW)"
+def _K(ks) -> np.ndarray:
+    return sum((k.force for k in ks), np.zeros(2))
 
+
+def _M(ks, about) -> float:
+    return sum(((cross(k.pos - about, k.force) if k.pos is not None else 0.0) + k.couple
+                for k in ks), 0.0)
+
+
+def _words(body, about, m):
+    return f"moments about {about} of {body}'s known forces: {m + 0.0:.6g} N m (CCW)"
+
+
+def _unit(r) -> tuple[np.ndarray, float]:
+    rv = float(np.hypot(*r))
+    return (r / rv if rv else np.array([1.0, 0.0])), rv
+
+
+def construct(an: Analysis, st: State) -> ForcePolygons:
+    """The force polygons of every group at the state ``st``: each group's construction is
+    the one it names (``force_polygon``, a key of :data:`POLYGONS`), drawn from the group
+    furthest from the driver to the driver."""
+    groups = groups_of(an.model.scene)
+    board = _Board(an, st, groups)
+    out: list[Group] = []
     for gi in range(len(groups) - 1, -1, -1):
         kind, d, bodies = groups[gi]
-        ks = {b: knowns(b) for b in bodies}
+        ks = {b: board.knowns(b) for b in bodies}
         allk = tuple(k for b in bodies for k in ks[b])
-        if kind == "RRR":
-            l1, l2 = d.link_p, d.link_q
-            for outer, body in ((d.p, l1), (d.q, l2)):
-                if owner.get(outer) in bodies:
-                    raise _refuse("an RRR group whose outer pin is its own", outer, file)
-            x = P(d.x)
-            u1 = x - P(d.p)
-            len1 = float(np.hypot(*u1))
-            u1 = u1 / len1
-            u2 = x - P(d.q)
-            len2 = float(np.hypot(*u2))
-            u2 = u2 / len2
-            m1, m2 = M(ks[l1], x), M(ks[l2], x)
-            t1 = Found(f"F_{d.p}^t on {l1}", l1, d.p, perp(u1), m1 / len1, "moments")
-            t2 = Found(f"F_{d.q}^t on {l2}", l2, d.q, perp(u2), m2 / len2, "moments")
-            rhs = -(K(ks[l1]) + K(ks[l2]) + t1.force + t2.force)
-            a, b = _solve2(u1, u2, rhs, file, f"the group {l1}, {l2}")
-            n1 = Found(f"F_{d.p}^n on {l1}", l1, d.p, u1, a, "polygon")
-            n2 = Found(f"F_{d.q}^n on {l2}", l2, d.q, u2, b, "polygon")
-            fq = t2.force + n2.force
-            pin[(d.p, l1)] = t1.force + n1.force
-            pin[(d.q, l2)] = fq
-            r = -(K(ks[l2]) + fq)
-            pin[(d.x, l2)] = r
-            rv = float(np.hypot(*r))
-            reac = (Found(f"R_{d.x} on {l2}", l2, d.x, r / rv if rv else np.array([1.0, 0.0]),
-                          rv, "reaction"),)
-            out.append(Group(gi + 1, kind, f"group {gi + 1}: dyad {l1}, {l2} (RRR, pins "
-                             f"{d.p}, {d.x}, {d.q})", bodies, allk, (t1, t2), (n2, n1), reac,
-                             (words(l1, d.x, m1), words(l2, d.x, m2))))
-        elif kind == "RRP":
-            link, blk = d.link, d.x
-            x = P(d.x)
-            u = x - P(d.p)
-            ln = float(np.hypot(*u))
-            u = u / ln
-            e = np.array(scene.model.guide[blk].line.direction)
-            ng = perp(e)
-            m1 = M(ks[link], x)
-            t1 = Found(f"F_{d.p}^t on {link}", link, d.p, perp(u), m1 / ln, "moments")
-            rhs = -(K(ks[link]) + K(ks[blk]) + t1.force)
-            a, nval = _solve2(u, ng, rhs, file, f"the group {link}, slider {blk}")
-            n1 = Found(f"F_{d.p}^n on {link}", link, d.p, u, a, "polygon")
-            nn = Found(f"N_{blk} (guide)", blk, blk, ng, nval, "polygon")
-            pin[(d.p, link)] = t1.force + n1.force
-            r = -(K(ks[blk]) + nn.force)
-            pin[(d.x, blk)] = r
-            couple = -M(ks[blk], x) + 0.0
-            guide[blk] = (nval, ng, couple)
-            rv = float(np.hypot(*r))
-            reac = (Found(f"R_{d.x} on slider {blk}", blk, d.x,
-                          r / rv if rv else np.array([1.0, 0.0]), rv, "reaction"),)
-            out.append(Group(gi + 1, kind, f"group {gi + 1}: dyad {link}, slider {blk} (RRP, "
-                             f"pins {d.p}, {d.x}, guide)", bodies, allk, (t1,), (nn, n1), reac,
-                             (words(link, d.x, m1), f"the guide couple on {blk}: "
-                              f"{couple:.6g} N m")))
-        elif kind == "RPR":
-            lever, s = d.lever, slot_of(d.pin)
-            b, a = P(d.pivot), P(d.pin)
-            n = slot_normal(s)
-            m = M(ks[lever], b)
-            arm = cross(a - b, n)
-            if abs(arm) < 1e-9 * max(1e-12, float(np.hypot(*(a - b)))):
-                raise UnsupportedError(f"the force polygon of the lever {lever} cannot close: "
-                                       f"the slot's normal at {d.pin} passes through the pivot "
-                                       f"{d.pivot}", file=file)
-            nval = -m / arm
-            slot[d.pin] = (nval, n)
-            nn = Found(f"N_{d.pin} on {lever}", lever, d.pin, n, nval, "moments",
-                       "normal to the slot")
-            fb = -(K(ks[lever]) + nn.force)
-            fv = float(np.hypot(*fb))
-            pin[(d.pivot, lever)] = fb
-            fo = Found(f"F_{d.pivot} on {lever}", lever, d.pivot,
-                       fb / fv if fv else np.array([1.0, 0.0]), fv, "polygon")
-            back = -nn.force
-            bv = float(np.hypot(*back))
-            ra = Found(f"R_{d.pin} on {s.carrier} (through the block)", s.carrier, d.pin,
-                       back / bv if bv else np.array([1.0, 0.0]), bv, "reaction")
-            out.append(Group(gi + 1, kind, f"group {gi + 1}: the slotted lever {lever} and the "
-                             f"block {d.pin} in its slot (RPR, pins {d.pin}, {d.pivot})",
-                             bodies, allk, (nn,), (fo,), (ra,),
-                             (f"moments about {d.pivot} of {lever}'s known forces: "
-                              f"{m + 0.0:.6g} N m (CCW); the slot's force at {d.pin} has arm "
-                              f"{arm * 1e3 + 0.0:.6g} mm: N = {nval + 0.0:.6g} N",)))
-        elif kind == "RRP, moving guide":
-            link, s = d.link, slot_of(d.x)
-            if s.carrier != link:
-                raise _refuse(f"a pin in a moving slot carried by another body than its link "
-                              f"({s.carrier})", d.x, file)
-            x = P(d.x)
-            u = x - P(d.p)
-            ln = float(np.hypot(*u))
-            u = u / ln
-            n = slot_normal(s)
-            m1 = M(ks[link], x)
-            t1 = Found(f"F_{d.p}^t on {link}", link, d.p, perp(u), m1 / ln, "moments")
-            a, c = _solve2(u, n, -(K(ks[link]) + t1.force), file,
-                           f"the group {link}, block {d.x} in the slot of {d.lever}")
-            n1 = Found(f"F_{d.p}^n on {link}", link, d.p, u, a, "polygon")
-            nn = Found(f"N_{d.x} from {d.lever}", link, d.x, n, c, "polygon")
-            pin[(d.p, link)] = t1.force + n1.force
-            slot[d.x] = (-c, n)
-            r = -nn.force
-            rv = float(np.hypot(*r))
-            reac = (Found(f"R_{d.x} on block {d.x}", link, d.x,
-                          r / rv if rv else np.array([1.0, 0.0]), rv, "reaction"),)
-            out.append(Group(gi + 1, kind, f"group {gi + 1}: {link} and the block {d.x} in the "
-                             f"slot of {d.lever} (RRP on a moving guide, pins {d.p}, {d.x})",
-                             bodies, allk, (t1,), (nn, n1), reac,
-                             (words(link, d.x, m1),)))
-        elif kind == "RPP":
-            yoke, s = d.x, slot_of(d.pin)
-            y = P(yoke)
-            ns = slot_normal(s)
-            ng = perp(np.array(scene.model.guide[yoke].line.direction))
-            sval, nval = _solve2(ns, ng, -K(ks[yoke]), file, f"the yoke {yoke}")
-            slot[d.pin] = (sval, ns)
-            couple = -(M(ks[yoke], y) + cross(P(d.pin) - y, sval * ns)) + 0.0
-            guide[yoke] = (nval, ng, couple)
-            nsl = Found(f"N_{d.pin} on yoke {yoke}", yoke, d.pin, ns, sval, "polygon")
-            nn = Found(f"N_{yoke} (guide)", yoke, yoke, ng, nval, "polygon")
-            back = -nsl.force
-            bv = float(np.hypot(*back))
-            ra = Found(f"R_{d.pin} on {s.carrier} (through the block)", s.carrier, d.pin,
-                       back / bv if bv else np.array([1.0, 0.0]), bv, "reaction")
-            out.append(Group(gi + 1, kind, f"group {gi + 1}: the yoke {yoke} and the block "
-                             f"{d.pin} in its slot (RPP, Scotch yoke)", bodies, allk, (),
-                             (nsl, nn), (ra,),
-                             (f"the guide couple on {yoke}: {couple:.6g} N m (moments about "
-                              f"{yoke})",)))
-        elif kind == "triad":
-            out.append(_triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints))
-        elif kind == "crank":
-            body = d.link
-            o = P(d.pivot)
-            f = -K(ks[body])
-            fv = float(np.hypot(*f))
-            effort = -M(ks[body], o)
-            pin[(d.pivot, body)] = f
-            fo = Found(f"F_{d.pivot} on {body}", body, d.pivot,
-                       f / fv if fv else np.array([1.0, 0.0]), fv, "polygon")
-            te = Found(f"T on {body}", body, d.pivot, np.zeros(2), effort, "effort")
-            out.append(Group(gi + 1, kind, f"group {gi + 1}: the crank {body} (driver)",
-                             bodies, allk, (), (fo,), (te,),
-                             (f"moments about {d.pivot}: T + ({M(ks[body], o) + 0.0:.6g} N m) "
-                              f"= 0, T = {effort + 0.0:.6g} N m (CCW)",)))
-        else:                                     # slider driver
-            blk = d.point
-            x = P(blk)
-            e = np.array(scene.model.guide[blk].line.direction)
-            ng = perp(e)
-            effort, nval = _solve2(e, ng, -K(ks[blk]), file, f"the slider {blk}")
-            couple = -M(ks[blk], x) + 0.0
-            guide[blk] = (nval, ng, couple)
-            fin = Found(f"F_in on slider {blk}", blk, blk, e, effort, "effort")
-            nn = Found(f"N_{blk} (guide)", blk, blk, ng, nval, "polygon")
-            out.append(Group(gi + 1, kind, f"group {gi + 1}: the slider {blk} (driver)",
-                             bodies, allk, (), (fin, nn), (),
-                             (f"the guide couple on {blk}: {couple:.6g} N m",)))
-        done.update(bodies)
+        out.append(POLYGONS[kind](board, gi, d, bodies, ks, allk))
+        board.done.update(bodies)
     # every pin's owner: minus the forces on the others; the frame's: the ground reaction
+    pin = board.pin
     ground = {}
-    for lab, cs in carriers.items():
+    for lab, cs in board.carriers.items():
         if len(cs) < 2:
             continue
         total = sum((pin[(lab, b)] for b in cs[1:]), np.zeros(2))
@@ -446,7 +302,186 @@ def construct(an: Analysis, st: State) -> ForcePolygons:
             ground[lab] = -total
         else:
             pin[(lab, cs[0])] = -total
-    return ForcePolygons(st.name, tuple(out), pin, ground, guide, effort, slot, tuple(joints))
+    return ForcePolygons(st.name, tuple(out), pin, ground, board.guide, board.effort,
+                         board.slot, tuple(board.joints))
+
+
+def _rrr(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    """RRR: the outer pins' normal components by moments about X, the polygon closing on the
+    two along-link components; the middle pin's force from one link's polygon."""
+    P, file, pin = b.P, b.file, b.pin
+    l1, l2 = d.link_p, d.link_q
+    for outer, body in ((d.p, l1), (d.q, l2)):
+        if b.owner.get(outer) in bodies:
+            raise _refuse("an RRR group whose outer pin is its own", outer, file)
+    x = P(d.x)
+    u1 = x - P(d.p)
+    len1 = float(np.hypot(*u1))
+    u1 = u1 / len1
+    u2 = x - P(d.q)
+    len2 = float(np.hypot(*u2))
+    u2 = u2 / len2
+    m1, m2 = _M(ks[l1], x), _M(ks[l2], x)
+    t1 = Found(f"F_{d.p}^t on {l1}", l1, d.p, perp(u1), m1 / len1, "moments")
+    t2 = Found(f"F_{d.q}^t on {l2}", l2, d.q, perp(u2), m2 / len2, "moments")
+    rhs = -(_K(ks[l1]) + _K(ks[l2]) + t1.force + t2.force)
+    a, bv = _solve2(u1, u2, rhs, file, f"the group {l1}, {l2}")
+    n1 = Found(f"F_{d.p}^n on {l1}", l1, d.p, u1, a, "polygon")
+    n2 = Found(f"F_{d.q}^n on {l2}", l2, d.q, u2, bv, "polygon")
+    fq = t2.force + n2.force
+    pin[(d.p, l1)] = t1.force + n1.force
+    pin[(d.q, l2)] = fq
+    r = -(_K(ks[l2]) + fq)
+    pin[(d.x, l2)] = r
+    reac = (Found(f"R_{d.x} on {l2}", l2, d.x, *_unit(r), "reaction"),)
+    return Group(gi + 1, "RRR", f"group {gi + 1}: dyad {l1}, {l2} (RRR, pins "
+                 f"{d.p}, {d.x}, {d.q})", bodies, allk, (t1, t2), (n2, n1), reac,
+                 (_words(l1, d.x, m1), _words(l2, d.x, m2)))
+
+
+def _rrp(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    """RRP: P's normal component by moments about X, the polygon closing on the along-link
+    component and the guide's normal force; the guide couple from the block's moments."""
+    P, file, pin = b.P, b.file, b.pin
+    link, blk = d.link, d.x
+    x = P(d.x)
+    u = x - P(d.p)
+    ln = float(np.hypot(*u))
+    u = u / ln
+    _, ng = b.guide_normal(blk)
+    m1 = _M(ks[link], x)
+    t1 = Found(f"F_{d.p}^t on {link}", link, d.p, perp(u), m1 / ln, "moments")
+    rhs = -(_K(ks[link]) + _K(ks[blk]) + t1.force)
+    a, nval = _solve2(u, ng, rhs, file, f"the group {link}, slider {blk}")
+    n1 = Found(f"F_{d.p}^n on {link}", link, d.p, u, a, "polygon")
+    nn = Found(f"N_{blk} (guide)", blk, blk, ng, nval, "polygon")
+    pin[(d.p, link)] = t1.force + n1.force
+    r = -(_K(ks[blk]) + nn.force)
+    pin[(d.x, blk)] = r
+    couple = -_M(ks[blk], x) + 0.0
+    b.guide[blk] = (nval, ng, couple)
+    reac = (Found(f"R_{d.x} on slider {blk}", blk, d.x, *_unit(r), "reaction"),)
+    return Group(gi + 1, "RRP", f"group {gi + 1}: dyad {link}, slider {blk} (RRP, "
+                 f"pins {d.p}, {d.x}, guide)", bodies, allk, (t1,), (nn, n1), reac,
+                 (_words(link, d.x, m1), f"the guide couple on {blk}: {couple:.6g} N m"))
+
+
+def _rpr(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    """RPR: the slot's force on the lever, normal to the slot through the pin, by moments
+    about the pivot; the polygon closes on the pivot's force; the light block passes the
+    slot's force back to the pin's body."""
+    P, file = b.P, b.file
+    lever, s = d.lever, b.slot_of(d.pin)
+    bp, a = P(d.pivot), P(d.pin)
+    n = b.slot_normal(s)
+    m = _M(ks[lever], bp)
+    arm = cross(a - bp, n)
+    if abs(arm) < 1e-9 * max(1e-12, float(np.hypot(*(a - bp)))):
+        raise UnsupportedError(f"the force polygon of the lever {lever} cannot close: "
+                               f"the slot's normal at {d.pin} passes through the pivot "
+                               f"{d.pivot}", file=file)
+    nval = -m / arm
+    b.slot[d.pin] = (nval, n)
+    nn = Found(f"N_{d.pin} on {lever}", lever, d.pin, n, nval, "moments",
+               "normal to the slot")
+    fb = -(_K(ks[lever]) + nn.force)
+    b.pin[(d.pivot, lever)] = fb
+    fo = Found(f"F_{d.pivot} on {lever}", lever, d.pivot, *_unit(fb), "polygon")
+    ra = Found(f"R_{d.pin} on {s.carrier} (through the block)", s.carrier, d.pin,
+               *_unit(-nn.force), "reaction")
+    return Group(gi + 1, "RPR", f"group {gi + 1}: the slotted lever {lever} and the "
+                 f"block {d.pin} in its slot (RPR, pins {d.pin}, {d.pivot})",
+                 bodies, allk, (nn,), (fo,), (ra,),
+                 (f"moments about {d.pivot} of {lever}'s known forces: "
+                  f"{m + 0.0:.6g} N m (CCW); the slot's force at {d.pin} has arm "
+                  f"{arm * 1e3 + 0.0:.6g} mm: N = {nval + 0.0:.6g} N",))
+
+
+def _moving_guide(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    """RRP on a moving guide: as RRP, the slot's normal taking the guide normal's place; the
+    lever receives the slot's force with its own group."""
+    P, file = b.P, b.file
+    link, s = d.link, b.slot_of(d.x)
+    if s.carrier != link:
+        raise _refuse(f"a pin in a moving slot carried by another body than its link "
+                      f"({s.carrier})", d.x, file)
+    x = P(d.x)
+    u = x - P(d.p)
+    ln = float(np.hypot(*u))
+    u = u / ln
+    n = b.slot_normal(s)
+    m1 = _M(ks[link], x)
+    t1 = Found(f"F_{d.p}^t on {link}", link, d.p, perp(u), m1 / ln, "moments")
+    a, c = _solve2(u, n, -(_K(ks[link]) + t1.force), file,
+                   f"the group {link}, block {d.x} in the slot of {d.lever}")
+    n1 = Found(f"F_{d.p}^n on {link}", link, d.p, u, a, "polygon")
+    nn = Found(f"N_{d.x} from {d.lever}", link, d.x, n, c, "polygon")
+    b.pin[(d.p, link)] = t1.force + n1.force
+    b.slot[d.x] = (-c, n)
+    reac = (Found(f"R_{d.x} on block {d.x}", link, d.x, *_unit(-nn.force), "reaction"),)
+    return Group(gi + 1, "RRP, moving guide", f"group {gi + 1}: {link} and the block {d.x} "
+                 f"in the slot of {d.lever} (RRP on a moving guide, pins {d.p}, {d.x})",
+                 bodies, allk, (t1,), (nn, n1), reac, (_words(link, d.x, m1),))
+
+
+def _rpp(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    """RPP (a Scotch yoke): the yoke's polygon closes on the slot's force and the guide's
+    normal force; the guide couple by moments."""
+    P, file = b.P, b.file
+    yoke, s = d.x, b.slot_of(d.pin)
+    y = P(yoke)
+    ns = b.slot_normal(s)
+    _, ng = b.guide_normal(yoke)
+    sval, nval = _solve2(ns, ng, -_K(ks[yoke]), file, f"the yoke {yoke}")
+    b.slot[d.pin] = (sval, ns)
+    couple = -(_M(ks[yoke], y) + cross(P(d.pin) - y, sval * ns)) + 0.0
+    b.guide[yoke] = (nval, ng, couple)
+    nsl = Found(f"N_{d.pin} on yoke {yoke}", yoke, d.pin, ns, sval, "polygon")
+    nn = Found(f"N_{yoke} (guide)", yoke, yoke, ng, nval, "polygon")
+    ra = Found(f"R_{d.pin} on {s.carrier} (through the block)", s.carrier, d.pin,
+               *_unit(-nsl.force), "reaction")
+    return Group(gi + 1, "RPP", f"group {gi + 1}: the yoke {yoke} and the block "
+                 f"{d.pin} in its slot (RPP, Scotch yoke)", bodies, allk, (),
+                 (nsl, nn), (ra,),
+                 (f"the guide couple on {yoke}: {couple:.6g} N m (moments about "
+                  f"{yoke})",))
+
+
+def _crank(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    """The crank (the driver): its bearing force closes its polygon, the input torque is the
+    moment about its pivot."""
+    body = d.link
+    o = b.P(d.pivot)
+    f = -_K(ks[body])
+    b.effort = effort = -_M(ks[body], o)
+    b.pin[(d.pivot, body)] = f
+    fo = Found(f"F_{d.pivot} on {body}", body, d.pivot, *_unit(f), "polygon")
+    te = Found(f"T on {body}", body, d.pivot, np.zeros(2), effort, "effort")
+    return Group(gi + 1, "crank", f"group {gi + 1}: the crank {body} (driver)",
+                 bodies, allk, (), (fo,), (te,),
+                 (f"moments about {d.pivot}: T + ({_M(ks[body], o) + 0.0:.6g} N m) "
+                  f"= 0, T = {effort + 0.0:.6g} N m (CCW)",))
+
+
+def _slider_driver(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    """A slider driver: the input force along the guide and the guide normal close the
+    block's polygon."""
+    blk = d.point
+    x = b.P(blk)
+    e, ng = b.guide_normal(blk)
+    effort, nval = _solve2(e, ng, -_K(ks[blk]), b.file, f"the slider {blk}")
+    b.effort = effort
+    couple = -_M(ks[blk], x) + 0.0
+    b.guide[blk] = (nval, ng, couple)
+    fin = Found(f"F_in on slider {blk}", blk, blk, e, effort, "effort")
+    nn = Found(f"N_{blk} (guide)", blk, blk, ng, nval, "polygon")
+    return Group(gi + 1, "slider driver", f"group {gi + 1}: the slider {blk} (driver)",
+                 bodies, allk, (), (fin, nn), (),
+                 (f"the guide couple on {blk}: {couple:.6g} N m",))
+
+
+def _triad_group(b: _Board, gi, d, bodies, ks, allk) -> Group:
+    return _triad(gi, d, bodies, ks, allk, b.P, _K, _M, b.pin, b.file, b.model, b.joints)
 
 
 def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints) -> Group:
@@ -601,6 +636,13 @@ def _plate_truss(gi, d, legs, ks, P, K, M, pin, file, model):
     return out, tuple(lines), js
 
 
+#: each group's force polygon, by the name the group gives (its ``force_polygon``): a
+#: group kind names one of these, or none (it adds no body: a point on a placed link)
+POLYGONS = MappingProxyType({
+    "crank": _crank, "slider driver": _slider_driver, "RRR": _rrr, "RRP": _rrp,
+    "RPR": _rpr, "RRP, moving guide": _moving_guide, "RPP": _rpp, "triad": _triad_group})
+
+
 def handled(scene) -> str | None:
     """None when the force polygons handle ``scene``, else the one-line reason."""
     try:
@@ -610,5 +652,5 @@ def handled(scene) -> str | None:
     return None
 
 
-__all__ = ["HANDLES", "GROUP_KINDS", "Known", "Found", "Group", "ForcePolygons", "construct",
+__all__ = ["HANDLES", "POLYGONS", "Known", "Found", "Group", "ForcePolygons", "construct",
            "groups_of", "handled"]
