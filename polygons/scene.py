@@ -52,7 +52,8 @@ from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  
                       SliderDrive, Slot, Vec)
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
-from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
+from .scene_tables import (ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS,  # noqa: F401
+                           EXTREMES as _EXTREMES, book_words)
 from .units import dimension_of
 
 _LABEL_TOKEN = re.compile(r"[A-Z][a-z0-9_']*")
@@ -159,24 +160,6 @@ def split_link_name(name: str, *, file: str | None = None, where: str | None = N
 
 
 _LINK_ENDS: dict[str, tuple[str, str]] = {}
-
-
-def _plate_side(on: str, links, points):
-    """(link, P, Q) where the two labels of ``on`` are both points of one link's plate (its
-    ends and its [points] read so far), P and Q in the link's frame (its first label at the
-    origin, the second on +x); else None."""
-    ends = split_link_name(on)
-    for name, link in links.items():
-        if link.length is None:
-            continue
-        frame = {link.a: (0.0, 0.0), link.b: (link.length, 0.0)}
-        for bp in points.values():
-            if bp.link == name:
-                along = bp.along if bp.along is not None else bp.fraction * link.length
-                frame[bp.label] = (along, bp.left)
-        if all(e in frame for e in ends) and math.dist(*(frame[e] for e in ends)) > 0:
-            return name, frame[ends[0]], frame[ends[1]]
-    return None
 
 
 _Reader = Reader     # the name the loader's helpers use
@@ -348,17 +331,10 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         r.table(spec, where, KEYS["points"], required=("on",))
         on = r.string(spec["on"], where + ".on")
         split_link_name(on, file=file, where=where + ".on")
-        side = _plate_side(on, links, points)
+        side = topology.plate_side(split_link_name(on), links, points)
         if side is not None and on not in links \
                 and not any(s.lever == on for s in slots.values()):
-            # a side of a plate that is not a link (CX of the plate BC carrying X): the point
-            # restated on the plate's link, in its frame
-            body, P, Q = side
-            a, f, lft = topology.point_on_link(spec, r, where, math.dist(P, Q))
-            ux, uy = (Q[0] - P[0]) / math.dist(P, Q), (Q[1] - P[1]) / math.dist(P, Q)
-            s = a if a is not None else f * math.dist(P, Q)
-            points[label] = BodyPoint(label, body, P[0] + s * ux - lft * uy, None,
-                                      P[1] + s * uy + lft * ux)
+            points[label] = BodyPoint(label, side[0], *topology.on_side(spec, r, where, side))
             continue
         if on not in links and not any(s.lever == on for s in slots.values()):
             raise UnknownLabelError(f"link {show(on)} is not defined: "
@@ -704,16 +680,6 @@ def path_stem(file: str) -> str:
 
 
 _RELATIONS = RELATIONS
-#: a corner named the extreme one of its class-III group's corners
-_EXTREMES = {"uppermost": "uppermost", "highest": "uppermost", "topmost": "uppermost",
-             "lowest": "lowest", "lowermost": "lowest", "bottommost": "lowest",
-             "leftmost": "leftmost", "rightmost": "rightmost"}
-#: other phrasings of the assembly words, read as the relation beside them
-_SYNONYMS = (("lower than", "below"), ("higher than", "above"), ("is below", "below"),
-             ("is above", "above"), ("to the left of", "left of"),
-             ("to the right of", "right of"), ("is left of", "left of"),
-             ("is right of", "right of"))
-
 
 def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     if isinstance(spec, dict):
@@ -729,10 +695,7 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     if rest in _EXTREMES:                       # 'D uppermost': of its group's corners
         return record(Branch, label=label, text=text, relation=_EXTREMES[rest], ref=(),
                       near=None)
-    for said, rel in _SYNONYMS:                 # the book's other phrasings
-        if rest.startswith(said + " "):
-            rest = rel + rest[len(said):]
-            break
+    rest = book_words(rest)                     # the book's other phrasings
     for rel in _RELATIONS:
         if rest.startswith(rel) and rest[len(rel):len(rel) + 1] == " ":
             ref = rest[len(rel) + 1:]

@@ -692,3 +692,31 @@ def why_unplaced(scene, x: str, placed) -> str:
                 f"{' and '.join(others)} {'is' if len(others) == 1 else 'are'} not placed "
                 f"before it")
     return ""
+
+
+def plate_side(ends, links, points):
+    """(link, P, Q) where the two labels ``ends`` are both points of one link's plate (its
+    ends and its [points] read so far), P and Q in the link's frame (its first label at the
+    origin, the second on +x); else None."""
+    for name, link in links.items():
+        if link.length is None:
+            continue
+        frame = {link.a: (0.0, 0.0), link.b: (link.length, 0.0)}
+        for bp in points.values():
+            if bp.link == name:
+                along = bp.along if bp.along is not None else bp.fraction * link.length
+                frame[bp.label] = (along, bp.left)
+        if all(e in frame for e in ends) and math.dist(*(frame[e] for e in ends)) > 0:
+            return name, frame[ends[0]], frame[ends[1]]
+    return None
+
+
+def on_side(spec, r, where, side) -> tuple[float, None, float]:
+    """(along, None, left) on the plate's link of a point stated on a side of the plate that
+    is no link (``side`` from :func:`plate_side`: CX of the plate BC carrying X)."""
+    _, P, Q = side
+    n = math.dist(P, Q)
+    a, f, lft = point_on_link(spec, r, where, n)
+    ux, uy = (Q[0] - P[0]) / n, (Q[1] - P[1]) / n
+    s = a if a is not None else f * n
+    return P[0] + s * ux - lft * uy, None, P[1] + s * uy + lft * ux
