@@ -304,8 +304,9 @@ def _primary(solution, bods: tuple[Body, ...]) -> dict[tuple[int, int], Centre]:
     model = solution.scene.model
     pos = solution.placement.points
     num = {b.key: b.number for b in bods}
-    for b in bods[0].fixed:
-        num[b] = 1
+    for b in bods:          # the bodies fixed to one (a plate's other links): its number
+        for m in b.fixed:
+            num.setdefault(m, b.number)
     names = {b.number: b.name for b in bods}
     known: dict[tuple[int, int], Centre] = {}
     for t in model.turning:

@@ -190,8 +190,13 @@ def solve(scene: Scene, targets: Iterable[str] | None = None) -> Solution:
     they are made once per scene (and ``targets``) and kept with it; each solve assembles the
     mechanism (the dyad modules' ``locate``) and runs the program, whose intersections are
     drawn and found by shapely (:func:`polygons.geometry.meet`)."""
-    plan, steps, staged = planned(scene, tuple(targets) if targets is not None else None)
+    targets = tuple(targets) if targets is not None else None
+    plan, steps, staged = planned(scene, targets)
     placement = assemble(plan)
+    plan, notes = assur_pairs(plan, placement.points)
+    if notes:       # a triad's S at infinity: its construction through another pair of links
+        plan, steps, staged = planned(scene, targets, plan)
+        placement = Placement(placement.points, placement.branches + notes, placement.sigmas)
     record = staged.record(placement)
     # the positions reported are the program's (the same dyad formulas over floats, on the
     # closures the assembly chose), so every number of a Solution comes from one record
@@ -199,16 +204,33 @@ def solve(scene: Scene, targets: Iterable[str] | None = None) -> Solution:
     return Solution(scene, plan, placement, staged, record)
 
 
-def planned(scene: Scene, targets: tuple[str, ...] | None = None):
+def planned(scene: Scene, targets: tuple[str, ...] | None = None, plan: Plan | None = None):
     """(plan, construction steps, staged program) of ``scene``, made on first use and kept
-    with the scene."""
+    with the scene (``plan``: this plan of it instead of the scene's own, :func:`assur_pairs`)."""
     cache = memo_of(scene).setdefault("planned", {})   # a memo beside the frozen record
-    hit = cache.get(targets)
+    key = targets if plan is None else (targets, plan.dyads)
+    hit = cache.get(key)
     if hit is None:
-        plan = make_plan(scene, targets)
+        plan = plan or make_plan(scene, targets)
         steps = construction(plan)
-        hit = cache[targets] = (plan, steps, compile_staged(scene, plan, steps, geometry.meet))
+        hit = cache[key] = (plan, steps, compile_staged(scene, plan, steps, geometry.meet))
     return hit
+
+
+def assur_pairs(plan: Plan, points) -> tuple[Plan, tuple]:
+    """``plan`` with each class-III group's auxiliary point S taken on the pair of its links
+    that meet at the instant ``points`` where its own pair is parallel (S at infinity: a
+    point of the construction, not a singularity of the group), and the notes saying so as
+    (label, words)."""
+    from dataclasses import replace
+    dyads, notes = [], []
+    for d in plan.dyads:
+        if getattr(d, "many_closures", False):
+            d, note = d.for_instant(points)
+            if note:
+                notes.append((d.s, note))
+        dyads.append(d)
+    return (replace(plan, dyads=tuple(dyads)) if notes else plan), tuple(notes)
 
 
 def link_ends(scene: Scene, name: str) -> tuple[str, str]:

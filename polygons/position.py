@@ -23,6 +23,9 @@ from .scene import Branch, Crank, Scene
 
 #: a [drawn] position may differ from the assembled one by this fraction of the mechanism size
 DRAWN_TOL = 1e-3
+#: ``near`` chooses a closure of a class-III group only when the next is farther by this
+#: factor (the chosen one at most this fraction of the next one's distance)
+NEAR_CLEAR = 0.5
 
 
 @dataclass(frozen=True)
@@ -123,6 +126,11 @@ def satisfies(branch: Branch, cand, pos, scene: Scene) -> bool:
     rel = branch.relation
     if rel == "near":
         raise AssertionError("near is decided by distance")
+    if not branch.ref:
+        raise BranchError(f"'{branch.text}' compares the corners of a class-III group, and "
+                          f"{branch.label} is not one; say '{branch.label} above' a point or "
+                          f"a line",
+                          file=scene.file, where=f"assembly.{branch.label}")
     for r in branch.ref:
         if r not in pos:
             raise BranchError(f"'{branch.text}' refers to {r}, which is not placed before "
@@ -205,10 +213,20 @@ def _choose_group(dyad, scene: Scene, pos, size):
         if branch.relation == "near":
             nx, ny = branch.near
             dist = [math.hypot(float(c[k][0]) - nx, float(c[k][1]) - ny) for c in ok]
-            best = min(dist)
-            ok = [c for c, dd in zip(ok, dist) if dd <= best + 1e-9 * size]
-        else:
-            ok = [c for c in ok if satisfies(branch, c[k], pos, scene)]
+            order = sorted(range(len(ok)), key=dist.__getitem__)
+            if len(ok) > 1 and not dist[order[0]] < NEAR_CLEAR * dist[order[1]]:
+                i, j = order[:2]
+                raise BranchError(
+                    f"'{branch.text}' is not clearly nearer one closure of the class-III group "
+                    f"{''.join(labels)}: {k} {_fmt(ok[i][k])} is {1e3 * dist[i]:.4g} mm away and "
+                    f"{k} {_fmt(ok[j][k])} {1e3 * dist[j]:.4g} mm (of {len(cands)} closures: "
+                    f"{listing}); give a nearer point", file=scene.file,
+                    where=f"assembly.{k}")
+            ok = [ok[order[0]]]
+        elif not branch.ref:        # 'D uppermost': the extreme of the group's corners
+            ok = [c for c in ok if _extreme(branch.relation, k, c, labels)]
+        else:       # words may name another corner of the group ("C lower than B")
+            ok = [c for c in ok if satisfies(branch, c[k], {**pos, **c}, scene)]
     if len(ok) != 1:
         words = " and ".join(f"'{b.text}'" for _, b in stated)
         raise BranchError(f"{'more than one' if ok else 'none'} of the {len(cands)} closures "
@@ -216,8 +234,19 @@ def _choose_group(dyad, scene: Scene, pos, size):
                           f"{words}; add words for another corner or near = [...]",
                           file=scene.file, where=f"assembly.{stated[0][0]}")
     pick = ok[0]
+    others = [max(math.dist(pick[k], c[k]) for k in labels) for c in cands if c is not pick]
+    apart = (f"; {len(cands)} closures, the next {1e3 * min(others):.4g} mm away" if others
+             else "; the only closure")
     return pick, (f"{' and '.join(b.text for _, b in stated)} → "
-                  f"{', '.join(f'{k} {_fmt(pick[k])}' for k in labels)}")
+                  f"{', '.join(f'{k} {_fmt(pick[k])}' for k in labels)}{apart}")
+
+
+def _extreme(rel: str, k: str, c, labels) -> bool:
+    """Whether corner ``k`` is the ``rel`` ('uppermost', 'lowest', 'leftmost', 'rightmost')
+    of the corners ``labels`` in the closure ``c``."""
+    axis, sign = {"uppermost": (1, 1.0), "lowest": (1, -1.0), "rightmost": (0, 1.0),
+                  "leftmost": (0, -1.0)}[rel]
+    return all(sign * float(c[k][axis]) > sign * float(c[o][axis]) for o in labels if o != k)
 
 
 def _fmt(c) -> str:

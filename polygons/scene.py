@@ -52,7 +52,8 @@ from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  
                       SliderDrive, Slot, Vec)
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
-from .scene_tables import ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS  # noqa: F401
+from .scene_tables import (ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS,  # noqa: F401
+                           EXTREMES as _EXTREMES, book_words)
 from .quantity_grammar import (QUANTITY_FUNCTIONS, parse_quantity_expr,  # noqa: F401
                                _parse_answers, unit_dimension)
 
@@ -328,6 +329,11 @@ def parse_scene(data: dict, *, file: str = "<scene>",
         r.table(spec, where, KEYS["points"], required=("on",))
         on = r.string(spec["on"], where + ".on")
         split_link_name(on, file=file, where=where + ".on")
+        side = topology.plate_side(split_link_name(on), links, points)
+        if side is not None and on not in links \
+                and not any(s.lever == on for s in slots.values()):
+            points[label] = BodyPoint(label, side[0], *topology.on_side(spec, r, where, side))
+            continue
         if on not in links and not any(s.lever == on for s in slots.values()):
             raise UnknownLabelError(f"link {show(on)} is not defined: "
                                     f"{suggest(on, list(links) + [s.lever for s in slots.values()])}",
@@ -688,7 +694,6 @@ def path_stem(file: str) -> str:
 
 _RELATIONS = RELATIONS
 
-
 def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     if isinstance(spec, dict):
         r.table(spec, where, ("near",), required=("near",))
@@ -700,6 +705,10 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     # '{label} {rel} REF' or '{rel} REF' (a label starts upper-case, a relation lower-case)
     head = label + " "
     rest = words[len(head):] if words.startswith(head) else words
+    if rest in _EXTREMES:                       # 'D uppermost': of its group's corners
+        return record(Branch, label=label, text=text, relation=_EXTREMES[rest], ref=(),
+                      near=None)
+    rest = book_words(rest)                     # the book's other phrasings
     for rel in _RELATIONS:
         if rest.startswith(rel) and rest[len(rel):len(rel) + 1] == " ":
             ref = rest[len(rel) + 1:]

@@ -15,6 +15,24 @@ from .schema import Key, Table
 
 #: the assembly words (``[assembly] C = "C above AD"``)
 RELATIONS = ("above", "below", "left of", "right of")
+#: a corner named the extreme one of its class-III group's corners
+EXTREMES = {"uppermost": "uppermost", "highest": "uppermost", "topmost": "uppermost",
+             "lowest": "lowest", "lowermost": "lowest", "bottommost": "lowest",
+             "leftmost": "leftmost", "rightmost": "rightmost"}
+#: other phrasings of the assembly words, read as the relation beside them
+SYNONYMS = (("lower than", "below"), ("higher than", "above"), ("is below", "below"),
+             ("is above", "above"), ("to the left of", "left of"),
+             ("to the right of", "right of"), ("is left of", "left of"),
+             ("is right of", "right of"))
+
+
+def book_words(rest: str) -> str:
+    """Assembly words with another phrasing of a relation ('lower than B') as the relation
+    ('below B')."""
+    for said, rel in SYNONYMS:
+        if rest.startswith(said + " "):
+            return rel + rest[len(said):]
+    return rest
 
 ANSWER_FIELDS = _ANSWER_KEYS = (
     Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
@@ -224,10 +242,16 @@ TABLES: tuple[Table, ...] = (
     ), many=True),
     Table("assembly", "Which of the two closures of a dyad, in words: C = \"C above AD\", "
                       "\"below AD\", \"left of B\", \"right of B\" (the leading label is "
-                      "optional; the reference is a point or a line of two points), or "
+                      "optional; the reference is a point or a line of two points; also "
+                      "\"lower than\", \"higher than\", \"to the left of\"; a corner of a "
+                      "class-III group may name another corner, or be \"uppermost\", "
+                      "\"lowest\", \"leftmost\", \"rightmost\" of its corners), or "
                       "C = { near = [x, y] }.", (
         Key("<LABEL>", "branch", "'above', 'below', 'left of' or 'right of' a point or a line "
-                                 "of two labels, or an inline table { near = [x, y] }",
+                                 "of two labels ('lower than', 'higher than', 'to the left of', "
+                                 "'to the right of' too; a triad's corner: 'uppermost', "
+                                 "'lowest', 'leftmost', 'rightmost'), or an inline table "
+                                 "{ near = [x, y] }",
             example='"C right of A"'),
     )),
     Table("drawn", "The space diagram as drawn: coordinates of moving points at this instant "

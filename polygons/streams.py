@@ -18,7 +18,9 @@ import numpy as np
 from .errors import PolygonsError
 from .scene import Scene
 from .sweep import (CHUNK, PROBE, Limit, Program, _SIN_PARALLEL, _fmt_input, arrays_program,
-                    compile_plan, find_range, from_arrays)
+                    compile_plan, evaluate, find_range, from_arrays, run)
+from .sweep_follow import _assur_rows, _groups, _referenced, _refined, _take, anchored
+from .sweep_store import adopt
 
 
 @dataclass(frozen=True)
@@ -67,15 +69,45 @@ def stream(st: Stream, *, chunk: int = CHUNK * 4):
     """Yield ``(start, inputs, results)`` for consecutive chunks of ``st``'s positions: the
     results of :func:`evaluate` (toggle positions NaN), in memory one chunk at a time, so a
     sweep of any length runs in constant memory."""
+    follow = _groups(st.prog) and st.n > 0
+    if follow:      # a triad: from the scene's closure to the first input, then chunk to chunk
+        prog = anchored(st.prog, st.inputs(0, 1), evaluate)
+        last = None
     for s in range(0, st.n, chunk):
         e = min(st.n, s + chunk)
         xs = st.inputs(s, e)
-        res = evaluate_compiled(st, xs)
+        if follow:  # each chunk continues from the last row of the one before
+            ext = xs if last is None else np.concatenate(([last[0]], xs))
+            code, params = arrays_program(prog)
+            fine, rows = _refined(prog, ext)        # steps no coarser than continuation's
+            res = adopt(from_arrays(prog, code, params, fine), len(fine))
+            if len(fine) != len(ext):
+                res = _take(res, rows)
+            res, _ = _assur_rows(prog, ext, res, run)
+            if last is not None:
+                res = _rows_from(res, 1)
+            prog, last = _referenced(prog, res["pos"], len(xs) - 1), xs[-1:]
+        else:
+            res = evaluate_compiled(st, xs)
         m = res["margin"]
         at = np.isfinite(m) & (m >= 0) & (m < _SIN_PARALLEL)
         if at.any():
             _undefine_chunk(res, at)
         yield s, xs, res
+
+
+def _rows_from(res: dict, k: int) -> dict:
+    """``res`` without its first ``k`` rows (a chunk's lead-in row, the last of the one
+    before)."""
+    out = {}
+    for key, d in res.items():
+        if key == "margin":
+            out[key] = d[k:]
+            continue
+        out[key] = {lab: (v if v is None or (np.ndim(v) == 1 and key == "pos" and
+                                             np.shape(v) == (2,)) else np.asarray(v)[..., k:])
+                    for lab, v in d.items()}
+    return out
 
 
 def evaluate_compiled(st: Stream, xs: np.ndarray) -> dict:

@@ -37,6 +37,7 @@ from typing import Callable, Iterable, Mapping, Sequence
 import numpy as np
 
 from .dyads.base import size_of
+from .harmonic import Harmonic, harmonic  # noqa: F401  (re-exported: the SHM comparison)
 from .errors import ConstructionError, PolygonsError, show
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input
@@ -45,6 +46,8 @@ from .steps import Diagram, Step
 from .theorems import angular_acceleration, angular_velocity
 from .memo import memo_of
 from .sweep_store import adopt, allocate, store
+from .sweep_follow import (_assur_rows, _groups, _margin_fn, _refined, _take,  # noqa: F401
+                           _referenced, anchored)
 
 #: same thresholds as polygons.geometry (kept equal by tests/test_sweep.py)
 PARALLEL_DEG = 1e-5
@@ -247,7 +250,9 @@ def place(prog: Program, t: np.ndarray):
     pos = {k: np.array(v).reshape((2,) + (1,) * np.ndim(t)) for k, v in prog.ground.items()}
     margins = []
     for d in prog.plan.dyads:
-        pts, m = d.locate(scene, pos, prog.sigma.get(d.placed[0]), t)
+        sigma = ({k: prog.sigma[k] for k in d.sigma_keys}       # a triad: its closure's corners
+                 if getattr(d, "many_closures", False) else prog.sigma.get(d.placed[0]))
+        pts, m = d.locate(scene, pos, sigma, t)
         pos.update(pts)
         if m is not None:
             margins.append((d, m))
@@ -414,13 +419,14 @@ def _culprit(prog: Program, x: float) -> tuple[str, str]:
     return d.placed[0], d.toggle_reason(prog.scene, at)
 
 
-def _bisect(prog: Program, good: float, bad: float, iters: int = 200) -> float:
-    """The last input from ``good`` towards ``bad`` where the mechanism still closes."""
+def _bisect(margin, good: float, bad: float, iters: int = 200) -> float:
+    """The last input from ``good`` towards ``bad`` where the mechanism still closes
+    (``margin``: the margin at an input, :func:`_margin_fn`)."""
     for _ in range(iters):
         mid = 0.5 * (good + bad)
         if mid == good or mid == bad:
             break
-        m = _margin(prog, mid)[0]
+        m = margin(mid)
         if m >= 0:
             good = mid
         else:
@@ -428,24 +434,24 @@ def _bisect(prog: Program, good: float, bad: float, iters: int = 200) -> float:
     return good
 
 
-def _golden_min(prog: Program, a: float, b: float, iters: int = 120) -> tuple[float, float]:
+def _golden_min(margin, a: float, b: float, iters: int = 120) -> tuple[float, float]:
     """Minimum of the margin on [a, b] (golden section; the margin is unimodal near a toggle)."""
     g = (math.sqrt(5) - 1) / 2
     c, d = b - g * (b - a), a + g * (b - a)
-    fc, fd = _margin(prog, c)[0], _margin(prog, d)[0]
+    fc, fd = margin(c), margin(d)
     for _ in range(iters):
         if not (fc >= fd):    # also when fc is NaN
             b, d, fd = d, c, fc
             c = b - g * (b - a)
-            fc = _margin(prog, c)[0]
+            fc = margin(c)
         else:
             a, c, fc = c, d, fd
             d = a + g * (b - a)
-            fd = _margin(prog, d)[0]
+            fd = margin(d)
         if b - a <= 1e-15 * max(1.0, abs(a)):
             break
     x = 0.5 * (a + b)
-    return x, float(_margin(prog, x)[0])
+    return x, float(margin(x))
 
 
 def _deg_of(m: float) -> float:
@@ -484,6 +490,7 @@ def find_range(prog: Program, probe: int = PROBE):
         raise ConstructionError(f"every probed position of the input is a toggle or change "
                                 f"point ({point}: {why}): the polygons are undefined throughout "
                                 f"the cycle", file=prog.scene.file)
+    margin, near = _margin_fn(prog, xs, ok, evaluate, _margin)
     # local minima below the warning angle, refined
     left = np.roll(m, 1)
     right = np.roll(m, -1)
@@ -493,12 +500,12 @@ def find_range(prog: Program, probe: int = PROBE):
     events: list[Limit] = []
     gaps: list[float] = []
     for i in np.flatnonzero(cand):
-        xm, fm = _golden_min(prog, xs[i] - step, xs[i] + step)
+        xm, fm = _golden_min(margin, xs[i] - step, xs[i] + step)
         if not np.isfinite(fm) or fm < 0:
             gaps.append(xm)
         else:
             kind = "toggle" if fm < _SIN_PARALLEL else "near-toggle"
-            events.append(Limit(xm, kind, *_culprit(prog, xm), angle_deg=_deg_of(fm)))
+            events.append(Limit(xm, kind, *_culprit(near(xm), xm), angle_deg=_deg_of(fm)))
     bad = [float(x) for x in xs[~ok]] + gaps
     if closed and not bad:
         return True, (x0, x0 + period), (), tuple(events)
@@ -525,10 +532,10 @@ def find_range(prog: Program, probe: int = PROBE):
             continue
         k = math.floor(abs(bad_x - x0) / step - 1e-9)      # probes strictly before bad_x
         good = x0 + sign * k * step
-        x = _bisect(prog, good, bad_x)
+        x = _bisect(margin, good, bad_x)
         ends.append(x)
-        pt, why = _culprit(prog, x)
-        limits.append(Limit(x, "limit", pt, why, _deg_of(max(float(_margin(prog, x)[0]), 0.0))))
+        pt, why = _culprit(near(x), x)
+        limits.append(Limit(x, "limit", pt, why, _deg_of(max(margin(x), 0.0))))
     lo, hi = ends
     inside = []
     for ev in events:
@@ -613,7 +620,17 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
         xs = np.asarray(inputs, dtype=float).reshape(-1)
         full = False
         rng = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 0.0)
-    res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
+    if _groups(prog):       # a triad follows its closure from the scene's input: one pass,
+        prog = anchored(prog, xs, evaluate)   # in steps no coarser than the continuation's
+        fine, rows = _refined(prog, xs)
+        res = run(prog, fine, chunk=max(len(fine), 1), jit=jit)
+        if len(fine) != len(xs):
+            res = _take(res, rows)
+        if progress:
+            progress(len(xs))
+    else:
+        res = run(prog, xs, chunk=chunk, progress=progress, jit=jit)
+    res, assur_notes = _assur_rows(prog, xs, res, run)
     segments = _segments(xs, toggles, full)
     warnings = []
     for tg in toggles:
@@ -625,6 +642,7 @@ def sweep(scene: Scene, steps: int = 360, *, inputs: Sequence[float] | None = No
         else:
             warnings.append(f"near toggle at {where}: {tg.reason}; the construction lines "
                             f"meet at only {tg.angle_deg:.3g}°")
+    warnings.extend(assur_notes)
     margin = res["margin"]
     lowest = float(np.min(margin)) if len(margin) else 1.0
     if not lowest >= _SIN_PARALLEL:          # one pass when all is well (NaN compares False)
@@ -716,42 +734,6 @@ def _fmt_input(prog: Program, x: float) -> str:
     if prog.input_kind == "crank":
         return f"θ = {math.degrees(x) % 360.0:.6g}°"
     return f"s = {1e3 * x:.6g} mm"
-
-
-@dataclass(frozen=True)
-class Harmonic:
-    """The simple-harmonic curve a slider would follow if it were driven by the crank pin's
-    projection on its line of stroke (a Scotch yoke with the same crank): ``travel``,
-    ``velocity``, ``acceleration`` arrays (N,), signed along the slider's guide; ``offset`` is
-    the constant added to the projection so both strokes have the same centre (the harmonic
-    *motion* has no preferred origin)."""
-
-    point: str
-    pin: str
-    travel: np.ndarray
-    velocity: np.ndarray
-    acceleration: np.ndarray
-    offset: float
-
-
-def harmonic(sw: Sweep, point: str) -> Harmonic:
-    """The SHM curve for slider ``point``: the crank pin projected on ``point``'s guide."""
-    scene = sw.scene
-    drv = scene.driver
-    if not isinstance(drv, Crank):
-        raise PolygonsError("the simple-harmonic comparison needs a crank driver",
-                            file=scene.file)
-    if point not in scene.model.guide or point not in sw.travel:
-        raise PolygonsError(f"the simple-harmonic comparison is for a slider; {point} has no "
-                            f"guide", file=scene.file, where=point)
-    ex, ey = scene.model.guide[point].line.direction
-    px, py = scene.ground[drv.pivot]
-    (ax, ay), (vx, vy), (aax, aay) = sw.pos[drv.tip], sw.vel[drv.tip], sw.acc[drv.tip]
-    proj = (ax - px) * ex + (ay - py) * ey
-    tr = sw.travel[point]
-    offset = float(0.5 * (np.nanmax(tr) + np.nanmin(tr)) - 0.5 * (np.nanmax(proj) + np.nanmin(proj)))
-    return Harmonic(point, drv.tip, proj + offset, vx * ex + vy * ey, aax * ex + aay * ey,
-                    offset)
 
 
 def fmt_input(sw: Sweep, x: float) -> str:

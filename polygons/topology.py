@@ -209,7 +209,10 @@ def point_on_link(spec, r, where, length=None) -> tuple[float | None, float | No
         text, turn = _turn_of(spec["angle"]) if isinstance(spec["angle"], str) else (
             spec["angle"], 1.0)
         phi = turn * r.quantity(text, "angle", where + ".angle")
-        return d * math.cos(phi), None, d * math.sin(phi)
+        along, left = d * math.cos(phi), d * math.sin(phi)
+        # a right angle's cosine is 6e-17, not 0: rounding, not a length (90 deg CW)
+        return (0.0 if abs(along) <= 1e-12 * abs(d) else along), None, \
+            (0.0 if abs(left) <= 1e-12 * abs(d) else left)
     if ("along" in spec) == ("fraction" in spec):
         raise SceneError("give exactly one of 'along' (a length from the link's first "
                          "label) or 'fraction' (of the link length, e.g. 0.5 for the "
@@ -678,8 +681,9 @@ def why_unplaced(scene, x: str, placed) -> str:
         return (f"{x} is joined by {', '.join(n for _, n in joints)}, and fewer than two of "
                 f"their other ends are placed: unless a link or guide is missing, the links "
                 f"around {x} form a closed group (a class-III Assur group, a triad) that no "
-                f"single dyad places; only mechanisms that decompose into dyads are "
-                f"supported")
+                f"single dyad places; a triad is solved when its plate's three corners each "
+                f"have one link to a placed point (a block on a guide at a corner, "
+                f"[sliders], is not supported yet)")
     if len(joints) == 1 and x not in scene.sliders and x not in scene.points:
         return (f"{x} hangs from one link ({joints[0][1]}) only: it needs a second link, a "
                 f"guide ([sliders.{x}]), a slot ([slots.{x}]) or [points.{x}] on a link")
@@ -688,3 +692,31 @@ def why_unplaced(scene, x: str, placed) -> str:
                 f"{' and '.join(others)} {'is' if len(others) == 1 else 'are'} not placed "
                 f"before it")
     return ""
+
+
+def plate_side(ends, links, points):
+    """(link, P, Q) where the two labels ``ends`` are both points of one link's plate (its
+    ends and its [points] read so far), P and Q in the link's frame (its first label at the
+    origin, the second on +x); else None."""
+    for name, link in links.items():
+        if link.length is None:
+            continue
+        frame = {link.a: (0.0, 0.0), link.b: (link.length, 0.0)}
+        for bp in points.values():
+            if bp.link == name:
+                along = bp.along if bp.along is not None else bp.fraction * link.length
+                frame[bp.label] = (along, bp.left)
+        if all(e in frame for e in ends) and math.dist(*(frame[e] for e in ends)) > 0:
+            return name, frame[ends[0]], frame[ends[1]]
+    return None
+
+
+def on_side(spec, r, where, side) -> tuple[float, None, float]:
+    """(along, None, left) on the plate's link of a point stated on a side of the plate that
+    is no link (``side`` from :func:`plate_side`: CX of the plate BC carrying X)."""
+    _, P, Q = side
+    n = math.dist(P, Q)
+    a, f, lft = point_on_link(spec, r, where, n)
+    ux, uy = (Q[0] - P[0]) / n, (Q[1] - P[1]) / n
+    s = a if a is not None else f * n
+    return P[0] + s * ux - lft * uy, None, P[1] + s * uy + lft * ux

@@ -10,6 +10,7 @@ import math
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
@@ -692,16 +693,18 @@ def test_a_large_mechanism_draws_each_links_centre_and_says_so():
     assert "drawn are the centre I1j of every link" in text
 
 
-def test_a_triad_centres_kennedy_leaves_open_from_the_velocity_field():
-    """A class-III group (a plate on three links): Kennedy's theorem gives no two lines of
-    centres for I13 and I14; those are read off the polygon's velocity fields, said so; the
-    rest by the pairs and Kennedy; the triad's auxiliary point S is a point of the plate."""
+def test_a_triad_plate_of_three_links_has_its_pins_and_kennedy_finds_every_centre():
+    """A class-III group whose plate is the triangle BC, CX, BX: the pins B, C, X join the
+    plate (one link of the circle diagram) to AB, CD, XE, so Kennedy's theorem gives every
+    centre (it used to say 'leaves 6 open': X was no pin of the plate); the plate's centre
+    I14 is its point of zero velocity; the triad's auxiliary point S is a point of the plate."""
     sol = solve(load_scene(ROOT / "cases/triad-ternary-coupler.toml"))
     cs = instant_centres(sol)
-    assert "leaves 6 of the 15 centres open" in cs.note
-    for i, j in ((1, 3), (1, 4)):
-        c = cs.centre(i, j)
-        assert c.by_field and "Kennedy's theorem leaves it open" in c.how
+    assert "all 15 centres, from the pairs and Kennedy's theorem" in cs.note
+    assert cs.centre(4, 6).how == "pin X"
+    B, vB = np.array(sol.points["B"].position), np.array(sol.points["B"].velocity)
+    w = sol.links["BC"].omega
+    assert np.allclose(cs.centre(1, 4).point, B - np.array([vB[1], -vB[0]]) / w, atol=1e-9)
     assert cs.centre(2, 4).how.startswith("Kennedy: ") and not cs.centre(2, 4).by_field
     sol8 = solve(load_scene(ROOT / "cases/triad-eight-bar.toml"))
     cs8 = instant_centres(sol8)

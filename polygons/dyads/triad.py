@@ -7,8 +7,13 @@ carrying a point X ([points.X] on = "BC", a ternary link), or a triangle of thre
 CX, BX (its mirror image is then a closure too); each corner has one more link to a placed
 point.  ``[assembly]`` (words or ``near``) on any corner chooses the closure.
 
-Position: every closure, numerically (:mod:`polygons.dyads.triad_math`); the one the scene's
-words or ``near`` choose, followed by continuation through a sweep.
+Position: every closure, algebraically (:mod:`polygons.dyads.triad_math`: the real roots of
+a polynomial of degree ≤ 6, each polished by Newton); the one the scene's words or ``near``
+choose, followed by continuation through a sweep.
+
+Where AB and DC are parallel S is at infinity (a point of the construction, not a singularity
+of the group): the construction then takes S where another pair of the three links meets
+(:attr:`Triad.via`, :meth:`Triad.for_instant`).
 
 Velocity, by the auxiliary (Assur) point S, where the lines of AB and DC cross: S is a point
 of the plate on AB produced, so v_S − v_A = ω_AB × AB + ω_plate × BS is ⟂ AB, and likewise
@@ -21,6 +26,7 @@ Acceleration, the same with the normal parts known: a_S = a_A + ω_AB² (A − B
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -50,6 +56,7 @@ class Triad:
     plate_links: tuple[str, ...]
     s: str
     ternary: bool
+    via: int = 0            # the two links whose lines meet at S: 0 AB, DC; 1 AB, EX; 2 DC, EX
     two_closures = False
     many_closures = True
 
@@ -60,12 +67,50 @@ class Triad:
     def auxiliary_points(self) -> tuple[tuple[str, tuple[str, str], tuple[str, str]], ...]:
         """The construction points the space diagram draws with the group: (S, (OB, B),
         (OC, C)): Assur's point S where OB·B and OC·C produced meet."""
-        return ((self.s, (self.ob, self.b), (self.oc, self.c)),)
+        (B, OB, _), (C, OC, _), _ = self.roles
+        return ((self.s, (OB, B), (OC, C)),)
 
     def force_bodies(self) -> tuple[str, ...]:
         """The bodies whose force polygon this group closes."""
         return (((self.plate,) if self.ternary else tuple(self.plate_links))
                 + (self.link_b, self.link_c, self.link_x))
+
+    @property
+    def roles(self):
+        """((P₁, O₁, link₁), (P₂, O₂, link₂), (P₃, O₃, link₃)): S where O₁P₁ and O₂P₂
+        produced meet (:attr:`via`), then the third corner P₃ from S and O₃."""
+        r = ((self.b, self.ob, self.link_b), (self.c, self.oc, self.link_c),
+             (self.x, self.ox, self.link_x))
+        i, j, k = ((0, 1, 2), (0, 2, 1), (1, 2, 0))[self.via]
+        return r[i], r[j], r[k]
+
+    def assur_sine(self, points, via=None) -> float:
+        """|sin| of the angle between the two links that meet at S (for ``via``, default
+        this group's): 0 where they are parallel and S is at infinity."""
+        from dataclasses import replace
+        (p1, o1, _), (p2, o2, _), _ = replace(self, via=self.via if via is None
+                                              else via).roles
+        u = np.subtract(points[p1], points[o1])
+        w = np.subtract(points[p2], points[o2])
+        n = float(np.hypot(*u) * np.hypot(*w))
+        return abs(float(u[0] * w[1] - u[1] * w[0])) / n if n > 0 else 0.0
+
+    def for_instant(self, points):
+        """This group with S taken on the pair of links that meet best at the instant
+        ``points`` when its own pair is parallel within 1° (S at infinity is a point of the
+        construction, not a singularity of the group): (group, note) — note '' if kept."""
+        from dataclasses import replace
+        if self.assur_sine(points) >= math.sin(math.radians(1.0)):
+            return self, ""
+        best = max(range(3), key=lambda v: self.assur_sine(points, v))
+        if best == self.via:
+            return self, ""
+        new = replace(self, via=best)
+        (p1, o1, _), (p2, o2, _), _ = self.roles
+        (q1, r1, _), (q2, r2, _), _ = new.roles
+        return new, (f"the lines {o1}{p1} and {o2}{p2} are parallel here (the auxiliary point "
+                     f"{self.s} at infinity, not a singularity of the group): {self.s} is "
+                     f"taken where {r1}{q1} and {r2}{q2} produced meet instead")
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -116,9 +161,11 @@ class Triad:
         return out
 
     def _assur(self, pos, pts):
-        """S = A + t (B − A) on CD produced: t = ((D − A) × (C − D)) / ((B − A) × (C − D))."""
-        a, d = pos[self.ob], pos[self.oc]
-        u, w = pts[self.b] - a, pts[self.c] - d
+        """S = A + t (B − A) on CD produced: t = ((D − A) × (C − D)) / ((B − A) × (C − D))
+        (with the pair of links :attr:`roles` names)."""
+        (p1, o1, _), (p2, o2, _), _ = self.roles
+        a, d = pos[o1], pos[o2]
+        u, w = pts[p1] - a, pts[p2] - d
         den = u[0] * w[1] - u[1] * w[0]
         q = d - a
         with np.errstate(all="ignore"):
@@ -170,6 +217,11 @@ class Triad:
         g.place(self.b, bx, by)
         g.place(self.c, cx, cy)
         g.place(self.x, xx, xy)
+        corner = {self.b: (bx, by), self.c: (cx, cy), self.x: (xx, xy)}
+        outer = {self.b: (ax, ay), self.c: (dx, dy), self.x: (ex, ey)}
+        (p1, _, _), (p2, _, _), _ = self.roles
+        (bx, by), (ax, ay) = corner[p1], outer[p1]
+        (cx, cy), (dx, dy) = corner[p2], outer[p2]
         ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
         wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
         den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
@@ -190,9 +242,9 @@ class Triad:
 
     # ------------------------------------------------------------ construction
     def emit(self, b: Builder) -> None:
-        B, C, X, S = self.b, self.c, self.x, self.s
-        A, D, E = self.ob, self.oc, self.ox
-        P, LB, LC, LX = self.plate, self.link_b, self.link_c, self.link_x
+        # B, C: the corners whose links meet at S; X the third (the roles, not the labels)
+        (B, A, LB), (C, D, LC), (X, E, LX) = self.roles
+        S, P = self.s, self.plate
         V = b.names.of
         a, d, e, s, x = V(A), V(D), V(E), V(S), V(X)
         Cm = Component
@@ -254,8 +306,10 @@ class Triad:
         """The plate's ω (α) from s and x, the images b and c, each link's ω (α).
 
         ω = (the relative velocity) / length; α = (the tangential part, from the end of the
-        centripetal vector to the point: x₁x, b₁b, c₁c, x₂x) / length."""
-        B, C, X, S = self.b, self.c, self.x, self.s
+        centripetal vector to the point: x₁x, b₁b, c₁c, x₂x) / length.  ``tangential``: link →
+        (the end of its centripetal vector, the point), keyed by the roles' links."""
+        (B, OB, LB), (C, OC, LC), (X, OX, LX) = self.roles
+        S = self.s
         V = b.names.of
         sym, what, th = (("ω", "angular velocity", "angular_velocity") if op is Op.OMEGA
                          else ("α", "angular acceleration", "angular_acceleration"))
@@ -269,15 +323,14 @@ class Triad:
             t = f"{tangential[L][0]}{V(tangential[L][1])}"
             return t, f"{t} (the tangential part of {V(O)}{V(Q)})"
         vec, words = read(P, S, X)
-        plate = f"{B}{C}{X}"            # the plate named for its corners (the link P carries it)
+        plate = f"{self.b}{self.c}{self.x}"   # the plate named for its corners (link P carries it)
         b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
               f"{sym}_{plate} = {vec} / {S}{X}",
               f"The {what} of the plate {plate} is {words} divided by {S}{X}.",
               component=comp, link=P)
         image.emit_image(b, B, P, S, X)
         image.emit_image(b, C, P, S, X)
-        for L, O, Q in ((self.link_b, self.ob, B), (self.link_c, self.oc, C),
-                        (self.link_x, self.ox, X)):
+        for L, O, Q in ((LB, OB, B), (LC, OC, C), (LX, OX, X)):
             vec, words = read(L, O, Q)
             b.add(Kind.MEASURE, op, (L, O, Q), f"{sym}_{L}", None, None, th, f"{sym}_{L}",
                   f"{sym}_{L} = {vec} / {O}{Q}",

@@ -1,21 +1,31 @@
-"""Every closure of a class-III group (a triad), found numerically: the geometry of
+"""Every closure of a class-III group (a triad), found algebraically: the geometry of
 :mod:`polygons.dyads.triad`, in plain floats (one position) and over arrays (a sweep, each
 position following the closure of the one before: continuation).
 
 The group: a rigid plate with corners B, C, X (in the plate's own frame B = (0, 0),
 C = (L, 0), X = (ξ, η)), each corner joined by a binary link to a placed point: |AB| = a,
-|DC| = d, |EX| = e.  With φ the direction of B→C, C − B = L u(φ) and X − B = R(φ)(ξ, η); B
-lies on the circle about A (radius a) and, for C to reach D, on the circle about D − (C − B)
-(radius d): B = circle_circle(A, a, D − L u(φ), d, σ), σ = ±1.  What is left is one equation
-in φ,
+|DC| = d, |EX| = e.  With φ the direction of B→C, C − B = L u(φ), X − B = R(φ)(ξ, η), and
+(A at the origin) the loop equations are
 
-    g(φ, σ) = |B(φ, σ) + R(φ)(ξ, η) − E| − e = 0,
+    |B|² = a²,   |B + L u − D|² = d²,   |B + R(φ)(ξ, η) − E|² = e².
 
-whose real roots are the closures (up to six; with a triangle of three links for the plate,
-its mirror image η → −η too).  φ is scanned at 2048 points on each branch σ, every change of
-sign is refined to the last bit (regula falsi, Illinois), and the branches are joined where they fold
-(B's two circles touch), so no root between samples is lost except a double one (two
-closures that meet: a toggle).  Each closure is checked against the three lengths.
+The second and third less the first are *linear* in B (coefficients linear in cos φ,
+sin φ): B = (N_x, N_y) / Δ by Cramer's rule, and the first becomes
+
+    q(φ) = N_x² + N_y² − a² Δ² = 0,
+
+a quartic form in (cos φ, sin φ).  With the tangent of the half angle, φ = φ₀ + 2 atan t,
+(1 + t²)⁴ q is a polynomial of degree 8 in t that has the factor 1 + t² (the circular
+points: the isotropic solutions of the 3-RPR platform's forward problem, Gosselin, Sefrioui
+and Richard 1994; Wampler 1999): what is left, of degree ≤ 6, has every real closure among its
+real roots.  Its real roots are isolated by the roots of its derivatives (between two
+consecutive real critical points it is monotone: at most one root, found by a bracketing
+method to the last bit; a critical point where it is zero within its rounding is a double
+root: two closures that meet), so two closures however close are both found.  φ₀ keeps the
+closure φ = φ₀ + π away from t = ∞.  Each root is polished by Newton on the three loop
+equations (stopping at the rounding floor of the group's own conditioning, not at an absolute
+step) and checked against the three lengths.  With a triangle of three links for the plate,
+its mirror image η → −η is a group too.
 """
 from __future__ import annotations
 
@@ -23,12 +33,188 @@ import math
 
 import numpy as np
 
-_N = 2048
 _TWO_PI = 2.0 * math.pi
+_EPS = 2.220446049250313e-16
+_PP = np.polynomial.polynomial            # coefficients low → high order
+
+
+def _quartic(p, phi0):
+    """The coefficients (low → high, in t) of (1 + t²)³ q(φ₀ + 2 atan t) / s⁴ (s the group's
+    size: the coefficients are of order one), of degree ≤ 6: see the module docstring."""
+    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = p
+    dx, dy, ex, ey = dx - ax, dy - ay, ex - ax, ey - ay
+    s = max(a, d, e, L, math.hypot(dx, dy), math.hypot(ex, ey), math.hypot(xi, eta))
+    if not s > 0.0:
+        return None
+    a, d, e, L, xi, eta, dx, dy, ex, ey = (v / s for v in (a, d, e, L, xi, eta, dx, dy,
+                                                         ex, ey))
+    c0, s0 = math.cos(phi0), math.sin(phi0)
+
+    def lin(k0, kc, ks):        # (k0 + kc cos φ + ks sin φ)(1 + t²), φ = φ₀ + 2 atan t
+        kc, ks = kc * c0 + ks * s0, ks * c0 - kc * s0
+        return np.array([k0 + kc, 2.0 * ks, k0 - kc])
+    m11, m12 = lin(-2 * dx, 2 * L, 0.0), lin(-2 * dy, 0.0, 2 * L)
+    r1 = lin(-(L * L + dx * dx + dy * dy - d * d + a * a), 2 * L * dx, 2 * L * dy)
+    m21, m22 = lin(-2 * ex, 2 * xi, -2 * eta), lin(-2 * ey, 2 * eta, 2 * xi)
+    r2 = lin(-(xi * xi + eta * eta + ex * ex + ey * ey - e * e + a * a),
+             2 * (ex * xi + ey * eta), 2 * (ey * xi - ex * eta))
+    mul, sub = _PP.polymul, _PP.polysub
+    dl = sub(mul(m11, m22), mul(m12, m21))
+    nx = sub(mul(r1, m22), mul(m12, r2))
+    ny = sub(mul(m11, r2), mul(r1, m21))
+    q = sub(_PP.polyadd(mul(nx, nx), mul(ny, ny)), a * a * mul(dl, dl))
+    q6, _ = _PP.polydiv(q, np.array([1.0, 0.0, 1.0]))
+    return q6
+
+
+def _val(c, t):
+    """c(t) by Horner, and a bound on its rounding error."""
+    v, w, at = 0.0, 0.0, abs(t)
+    for k in range(len(c) - 1, -1, -1):
+        v = v * t + c[k]
+        w = w * at + abs(c[k])
+    return v, 4.0 * len(c) * _EPS * w
+
+
+def _bracket(c, lo, hi, flo, fhi):
+    """The root of c in [lo, hi] where it changes sign, to the last bit: the Illinois form
+    of regula falsi, with a bisection wherever two of its steps have not halved the bracket
+    (so a far end with a huge value cannot stall it)."""
+    side, slow = 0, 0
+    for _ in range(400):
+        width = hi - lo
+        if width <= 2.0 * _EPS * max(abs(lo), abs(hi)):
+            break
+        x = (lo * fhi - hi * flo) / (fhi - flo) if fhi != flo else 0.5 * (lo + hi)
+        if slow >= 2 or not lo < x < hi:
+            x, slow = 0.5 * (lo + hi), 0
+            if not lo < x < hi:
+                break
+        fx = _val(c, x)[0]
+        if fx == 0.0:
+            return x
+        if (fx > 0) == (fhi > 0):
+            hi, fhi = x, fx
+            if side == -1:
+                flo *= 0.5
+            side = -1
+        else:
+            lo, flo = x, fx
+            if side == 1:
+                fhi *= 0.5
+            side = 1
+        slow = slow + 1 if hi - lo > 0.5 * width else 0
+    return lo if abs(flo) < abs(fhi) else hi
+
+
+def real_roots(c) -> list[float]:
+    """Every real root of the polynomial c (low → high), each once: the real line cut at
+    the real roots of c′ (found the same way) into pieces where c is monotone, a root in each
+    piece where c changes sign, and a critical point where c is zero within its rounding
+    (a double root)."""
+    c = [float(v) for v in c]
+    big = max((abs(v) for v in c), default=0.0)
+    while len(c) > 1 and abs(c[-1]) <= 1e-14 * big:     # leading rounding noise
+        c.pop()
+    n = len(c) - 1
+    if n < 1 or big == 0.0:
+        return []
+    if n == 1:
+        return [-c[0] / c[1]]
+    bound = 1.0 + max(abs(v) for v in c[:-1]) / abs(c[-1])      # Cauchy's bound
+    crit = [x for x in real_roots([k * c[k] for k in range(1, n + 1)]) if -bound < x < bound]
+    pts = [-bound] + sorted(crit) + [bound]
+    vals = [_val(c, x) for x in pts]
+    out = []
+    for i, x in enumerate(pts):
+        if 0 < i < len(pts) - 1 and abs(vals[i][0]) <= vals[i][1]:
+            out.append(x)                        # a double root (at rounding level)
+    for (lo, (flo, elo)), (hi, (fhi, ehi)) in zip(zip(pts, vals), zip(pts[1:], vals[1:])):
+        if abs(flo) <= elo or abs(fhi) <= ehi:
+            continue
+        if (flo > 0) != (fhi > 0):
+            out.append(_bracket(c, lo, hi, flo, fhi))
+    return sorted(out)
+
+
+def _phi0(p):
+    """φ₀ and the polynomial: φ₀ chosen so that φ₀ + π is no closure (the leading
+    coefficient is not small), from a few trial values."""
+    best = None
+    for phi0 in (0.0, 1.0, 2.0, 3.0, 4.0, 5.0):
+        c = _quartic(p, phi0)
+        if c is None:
+            return None
+        lead = abs(c[-1]) / max(float(np.max(np.abs(c))), 1e-300) if len(c) == 7 else 0.0
+        if best is None or lead > best[0]:
+            best = (lead, phi0, c)
+        if lead >= 1e-3:
+            break
+    return best[1], best[2]
+
+
+def _b_candidates(phi, p):
+    """B at the plate angle φ: by Cramer's rule, and B's two points on the circles about A
+    and about D − L u(φ) (where Cramer's determinant vanishes)."""
+    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = p
+    c, s = math.cos(phi), math.sin(phi)
+    out = []
+    m11, m12 = 2 * (L * c - dx + ax), 2 * (L * s - dy + ay)
+    px, py = xi * c - eta * s, xi * s + eta * c
+    m21, m22 = 2 * (px - ex + ax), 2 * (py - ey + ay)
+    # relative to A: 2 B'·(Lu − D') = −(|Lu − D'|² − d² + a²), likewise for X
+    r1 = -((L * c - dx + ax) ** 2 + (L * s - dy + ay) ** 2 - d * d + a * a)
+    r2 = -((px - ex + ax) ** 2 + (py - ey + ay) ** 2 - e * e + a * a)
+    det = m11 * m22 - m12 * m21
+    if det != 0.0 and math.isfinite(det):
+        out.append((ax + (r1 * m22 - m12 * r2) / det, ay + (m11 * r2 - r1 * m21) / det))
+    for sigma in (1.0, -1.0):
+        bx, by, ok, _ = _b_of(phi, ax, ay, a, dx, dy, d, L, sigma)
+        out.append((float(bx), float(by)))
+    return out
+
+
+def _residual(q, pose) -> float:
+    """The largest error of the three lengths at the plate pose (bx, by, φ)."""
+    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = q
+    B, C, X = _corners_of(q, pose, eta)
+    return max(abs(math.dist(B, (ax, ay)) - a), abs(math.dist(C, (dx, dy)) - d),
+               abs(math.dist(X, (ex, ey)) - e))
+
+
+def closures(p, size=None) -> list[tuple[float, float, float, float]]:
+    """Every closure (bx, by, φ, η) of the group with parameters ``p`` = (ax, ay, a, dx, dy, d,
+    ex, ey, e, L, ξ, η, mirror): each real root of the polynomial (and, with ``mirror``, of
+    the mirrored plate's), polished by Newton and checked against the three lengths."""
+    *q, mirror = p
+    q = tuple(float(v) for v in q)
+    if not all(math.isfinite(v) for v in q):
+        return []
+    size = size or max(abs(v) for v in q) or 1.0
+    out = []
+    for eta in ((q[11], -q[11]) if mirror and q[11] != 0.0 else (q[11],)):
+        qq = q[:11] + (eta,)
+        got = _phi0(qq)
+        if got is None:
+            continue
+        phi0, c = got
+        for t in real_roots(c):
+            phi = phi0 + 2.0 * math.atan(t)
+            cands = [(bx, by, phi) for bx, by in _b_candidates(phi, qq)
+                     if math.isfinite(bx) and math.isfinite(by)]
+            if not cands:
+                continue
+            pose = min(cands, key=lambda ps: _residual(qq, ps))
+            new, _ = _newton(qq, pose, size)
+            if new is not None and _residual(qq, new) <= _residual(qq, pose):
+                pose = new
+            if _residual(qq, pose) <= 1e-9 * size:
+                out.append(pose + (eta,))
+    return out
 
 
 def _b_of(phi, ax, ay, a, dx, dy, d, L, sigma):
-    """B on the circle about A and on the circle about D − L u(φ); (bx, by, ok)."""
+    """B on the circle about A and on the circle about D − L u(φ); (bx, by, ok, h²)."""
     qx = dx - L * np.cos(phi)
     qy = dy - L * np.sin(phi)
     wx, wy = qx - ax, qy - ay
@@ -42,114 +228,8 @@ def _b_of(phi, ax, ay, a, dx, dy, d, L, sigma):
     return ax + m * ux - sigma * h * uy, ay + m * uy + sigma * h * ux, ok, h2
 
 
-def _g(phi, sigma, p):
-    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = p
-    bx, by, ok, h2 = _b_of(phi, ax, ay, a, dx, dy, d, L, sigma)
-    c, s = np.cos(phi), np.sin(phi)
-    xx = bx + xi * c - eta * s
-    xy = by + xi * s + eta * c
-    return np.hypot(xx - ex, xy - ey) - e, ok, h2
-
-
-def _root(f, lo, hi, flo, fhi, n=80):
-    """The root of f in the bracket [lo, hi] (f changes sign there) by the Illinois form of
-    regula falsi: the bracket is kept, so it cannot leave it; to the last bit or 1e-15 rad."""
-    side, last = 0, math.nan
-    for _ in range(n):
-        den = fhi - flo
-        x = (lo * fhi - hi * flo) / den if den != 0.0 else 0.5 * (lo + hi)
-        if not (min(lo, hi) <= x <= max(lo, hi)):
-            x = 0.5 * (lo + hi)
-        if abs(x - last) <= 4e-16 * max(1.0, abs(x)):
-            return x                    # no longer moving: converged to the last bits
-        last = x
-        fx = f(x)
-        if fx == 0.0 or abs(hi - lo) <= 1e-15:
-            return x
-        if (fx > 0) == (fhi > 0):
-            hi, fhi = x, fx
-            if side == -1:
-                flo *= 0.5
-            side = -1
-        else:
-            lo, flo = x, fx
-            if side == 1:
-                fhi *= 0.5
-            side = 1
-    return 0.5 * (lo + hi)
-
-
-def _fold_h2(p):
-    """h² of B's two circles as a function of φ (zero where they touch: the fold)."""
-    ax, ay, a, dx, dy, d, _, _, _, L = p[:10]
-
-    def h2(phi):
-        dist = math.hypot(dx - L * math.cos(phi) - ax, dy - L * math.sin(phi) - ay)
-        m = (a * a - d * d + dist * dist) / (2.0 * dist) if dist else math.inf
-        return a * a - m * m
-    return h2
-
-
-def _g1(phi, sigma, p):
-    """:func:`_g` at one φ, in plain floats (the root finder's inner loop)."""
-    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = p
-    c, s = math.cos(phi), math.sin(phi)
-    wx, wy = dx - L * c - ax, dy - L * s - ay
-    dist = math.hypot(wx, wy)
-    if dist == 0.0:
-        return math.nan
-    m = (a * a - d * d + dist * dist) / (2.0 * dist)
-    h = math.sqrt(max(a * a - m * m, 0.0))
-    ux, uy = wx / dist, wy / dist
-    bx, by = ax + m * ux - sigma * h * uy, ay + m * uy + sigma * h * ux
-    return math.hypot(bx + xi * c - eta * s - ex, by + xi * s + eta * c - ey) - e
-
-
-def closures(p) -> list[tuple[float, float, float]]:
-    """Every closure (φ, σ, η) of the group with parameters ``p`` = (ax, ay, a, dx, dy, d, ex,
-    ey, e, L, ξ, η, mirror): roots of g(φ, σ) on both branches (and, with ``mirror``, of the
-    mirrored plate)."""
-    *q, mirror = p
-    out = []
-    for eta in ((q[11], -q[11]) if mirror and q[11] != 0.0 else (q[11],)):
-        qq = tuple(q[:11]) + (eta,)
-        phis = np.linspace(0.0, _TWO_PI, _N + 1)
-        vals = {s: _g(phis, s, qq) for s in (1.0, -1.0)}
-        for s in (1.0, -1.0):
-            g, ok, _ = vals[s]
-            pos = g > 0
-            for k in np.nonzero(ok[:-1] & ok[1:] & (pos[:-1] != pos[1:]))[0]:
-                f = (lambda ph, s=s: _g1(ph, s, qq))
-                out.append((_root(f, float(phis[k]), float(phis[k + 1]), float(g[k]),
-                                  float(g[k + 1])), s, eta))
-        # the fold: where B's circles touch, branch +1 turns into branch −1
-        gp, okp, _ = vals[1.0]
-        gm, _, _ = vals[-1.0]
-        for k in np.nonzero(okp[:-1] != okp[1:])[0]:
-            i, j = (k, k + 1) if okp[k] else (k + 1, k)       # i valid, j not
-            h2 = _fold_h2(qq)
-            fold = _root(h2, float(phis[i]), float(phis[j]), h2(float(phis[i])),
-                         h2(float(phis[j])))
-            gf = float(_g(fold, 1.0, qq)[0])
-            for s, gs in ((1.0, gp[i]), (-1.0, gm[i])):
-                if (gs > 0) != (gf > 0):
-                    f = (lambda ph, s=s: _g1(ph, s, qq))
-                    out.append((_root(f, float(phis[i]), fold, float(gs), gf), s, eta))
-    return out
-
-
-def corners(phi, sigma, eta, p):
-    """(B, C, X) of the closure (φ, σ, η)."""
-    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, _ = p[:12]
-    bx, by, _, _ = _b_of(phi, ax, ay, a, dx, dy, d, L, sigma)
-    c, s = math.cos(phi), math.sin(phi)
-    bx, by = float(bx), float(by)
-    return ((bx, by), (bx + L * c, by + L * s),
-            (bx + xi * c - eta * s, by + xi * s + eta * c))
-
-
 def _distinct(points, size):
-    """The closures' corners without repeats (a root found from two sides)."""
+    """The closures' corners without repeats (a root found twice)."""
     out = []
     for pts in points:
         if all(max(math.dist(pts[i], q[i]) for i in range(3)) > 1e-9 * size for q in out):
@@ -158,26 +238,19 @@ def _distinct(points, size):
 
 
 def all_corners(p, size) -> list[tuple]:
-    """The corners (B, C, X) of every closure, each checked against the three lengths."""
-    ax, ay, a, dx, dy, d, ex, ey, e = p[:9]
-    good = []
-    for phi, s, eta in closures(p):
-        B, C, X = corners(phi, s, eta, p)
-        err = max(abs(math.dist(B, (ax, ay)) - a), abs(math.dist(C, (dx, dy)) - d),
-                  abs(math.dist(X, (ex, ey)) - e))
-        if err <= 1e-9 * size:
-            good.append((B, C, X))
-    return _distinct(good, size)
+    """The corners (B, C, X) of every closure (:func:`closures`), without repeats."""
+    q = tuple(float(v) for v in p[:12])
+    return _distinct([_corners_of(q, pose[:3], pose[3]) for pose in closures(p, size)], size)
 
 
-def _pick(cands, rb, rx):
-    """The closure nearest the reference corners B, X, its distance, and the distance from
-    it to the nearest other closure."""
-    dist = [max(math.dist(c[0], rb), math.dist(c[2], rx)) for c in cands]
-    i = int(np.argmin(dist))
-    others = [max(math.dist(c[0], cands[i][0]), math.dist(c[2], cands[i][2]))
-              for j, c in enumerate(cands) if j != i]
-    return cands[i], dist[i], (min(others) if others else math.inf)
+def separation(cands) -> float:
+    """The least distance between two closures (the largest of their corners' distances);
+    inf with fewer than two."""
+    best = math.inf
+    for i, c in enumerate(cands):
+        for o in cands[i + 1:]:
+            best = min(best, max(math.dist(c[k], o[k]) for k in range(3)))
+    return best
 
 
 _NAN7 = (math.nan,) * 6 + (-1.0,)
@@ -190,6 +263,8 @@ def _newton(q, pose, size, iters=30):
     two closures meet), or (None, −1) where it does not converge."""
     ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = q
     bx, by, phi = pose
+    floor = 1e3 * _EPS * size * size        # F (lengths squared) at rounding level
+    prev = math.inf
     for _ in range(iters):
         c, s = math.cos(phi), math.sin(phi)
         cx, cy = bx + L * c - dx, by + L * s - dy          # C − D
@@ -212,10 +287,16 @@ def _newton(q, pose, size, iters=30):
         d3 = ux * (cy * r3 - r2 * xy) - uy * (cx * r3 - r2 * xx) + r1 * (cx * xy - cy * xx)
         step_b, step_p = d1 / det, d2 / det
         bx, by, phi = bx + step_b, by + step_p, phi + d3 / det / size
-        if max(abs(step_b), abs(step_p), abs(d3 / det)) <= 1e-15 * size:
+        step = max(abs(step_b), abs(step_p), abs(d3 / det))
+        res = max(abs(f1), abs(f2), abs(f3))
+        # converged: the step at the last bits, or no longer shrinking with the equations
+        # already met to rounding (the floor of this group's conditioning, not an absolute)
+        if step <= 4.0 * _EPS * size or (res <= floor and step >= 0.5 * prev):
             break
+        prev = step
     else:
-        return None, -1.0
+        if not res <= floor:
+            return None, -1.0
     norms = (math.hypot(ux, uy) * math.sqrt(cx * cx + cy * cy + j23 * j23)
              * math.sqrt(xx * xx + xy * xy + j33 * j33))
     margin = abs(det) / norms if norms > 0 else 0.0
@@ -234,33 +315,93 @@ def _corners_of(q, pose, mirror_eta):
             (bx + xi * c - mirror_eta * s, by + xi * s + mirror_eta * c))
 
 
-def _follow(q, mirror, ref_b, ref_x, size, pose=None, fallback=True):
-    """The closure nearest the reference corners: Newton from ``pose`` (the neighbour's) or,
-    without one or when it fails or jumps, the nearest of every closure.  Returns
-    (corners, pose, η, margin) or None."""
+#: below this conditioning margin another closure may lie near the one Newton found: the
+#: followed closure is then checked against every closure (it must be the nearest)
+_SURE = 0.05
+
+
+def _listed(q, mirror, size):
+    """Every closure as (corners (B, C, X), pose (bx, by, φ, η)), without repeats."""
+    out = []
+    for pose in closures(q + (mirror,), size):
+        pts = _corners_of(q, pose[:3], pose[3])
+        if all(max(math.dist(pts[i], o[0][i]) for i in range(3)) > 1e-9 * size for o in out):
+            out.append((pts, pose))
+    return out
+
+
+def _follow(q, mirror, ref_b, ref_x, size, pose=None, fallback=True, reach=None):
+    """The closure nearest the reference corners: Newton from ``pose`` (the neighbour's),
+    checked against every closure where it is ill-conditioned (:data:`_SURE`: it must be the
+    nearest); without a pose, or where Newton fails, the nearest of every closure.  With a
+    pose, a closure farther than ``reach`` (default a quarter of the size) from the reference
+    is not its continuation: None (the followed closure is gone).  Returns (corners, pose,
+    margin) or None."""
+    reach = 0.25 * size if reach is None else reach
     if pose is not None:
-        for eta in ((q[11], -q[11]) if mirror else (q[11],)):
-            qq = q[:11] + (eta,)
-            new, m = _newton(qq, pose[:3], size)
-            if new is not None:
-                B, C, X = _corners_of(qq, new, eta)
-                if (eta == pose[3] and max(math.dist(B, ref_b), math.dist(X, ref_x))
-                        <= 0.25 * size):
-                    return (B, C, X), new + (eta,), m
+        qq = q[:11] + (pose[3],)
+        new, m = _newton(qq, pose[:3], size)
+        if new is not None:
+            B, C, X = _corners_of(qq, new, pose[3])
+            if max(math.dist(B, ref_b), math.dist(X, ref_x)) <= reach and m >= _SURE:
+                return (B, C, X), new + (pose[3],), m
         if not fallback:
             return None
-    cands = all_corners(q + (mirror,), size)
+    cands = _listed(q, mirror, size)
     if not cands:
         return None
-    (B, C, X), dist, other = _pick(cands, ref_b, ref_x)
-    if pose is not None and dist > 0.25 * size:
+    dist = [max(math.dist(c[0][0], ref_b), math.dist(c[0][2], ref_x)) for c in cands]
+    i = int(np.argmin(dist))
+    if pose is not None and dist[i] > reach:
         return None                         # the followed closure is gone
-    eta = q[11]
-    if mirror and abs(math.dist(B, X) - math.hypot(q[10], q[11])) > 1e-9 * size:
-        eta = -q[11]
-    new = _pose_of(B, C)
-    _, m = _newton(q[:11] + (eta,), new, size)
-    return (B, C, X), new + (eta,), m
+    (B, C, X), new = cands[i]
+    return (B, C, X), new, margin_at(q[:11] + (new[3],), new[:3], size)
+
+
+_SIN_1DEG = math.sin(math.radians(1.0))
+_PAIRS = ((0, 1, 2), (0, 2, 1), (1, 2, 0))
+
+
+def construction_sine(q, B, C, X) -> float:
+    """The sine of the smallest angle of the group's construction (the conditioning a solve
+    and a sweep report, one definition): the two links' lines that meet at S, then the line
+    S–P₃ against the third link, for the pair the construction takes (AB, DC unless they are
+    parallel within 1°, then the pair that meets best: :meth:`Triad.for_instant`).  Zero only
+    where the three links' lines are concurrent (two closures meet)."""
+    ax, ay, _, dx, dy, _, ex, ey = q[:8]
+    P = (B, C, X)
+    u = ((B[0] - ax, B[1] - ay), (C[0] - dx, C[1] - dy), (X[0] - ex, X[1] - ey))
+    O = ((ax, ay), (dx, dy), (ex, ey))
+
+    def sin(a, b):
+        n = math.hypot(*a) * math.hypot(*b)
+        return abs(a[0] * b[1] - a[1] * b[0]) / n if n > 0 else 0.0
+    s = [sin(u[i], u[j]) for i, j, _ in _PAIRS]
+    v = 0 if s[0] >= _SIN_1DEG else max(range(3), key=s.__getitem__)
+    i, j, k = _PAIRS[v]
+    cr = u[i][0] * u[j][1] - u[i][1] * u[j][0]
+    if cr == 0.0:
+        return 0.0
+    t = ((O[j][0] - O[i][0]) * u[j][1] - (O[j][1] - O[i][1]) * u[j][0]) / cr
+    S = (O[i][0] + t * u[i][0], O[i][1] + t * u[i][1])
+    return min(s[v], sin((P[k][0] - S[0], P[k][1] - S[1]), u[k]))
+
+
+def margin_at(q, pose, size) -> float:
+    """The conditioning of the closure at the plate pose: |det J| / (|J₁| |J₂| |J₃|) of the
+    loop equations (φ scaled by the size; 0 where two closures meet)."""
+    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = q
+    bx, by, phi = pose
+    c, s = math.cos(phi), math.sin(phi)
+    cx, cy = bx + L * c - dx, by + L * s - dy
+    xx, xy = bx + xi * c - eta * s - ex, by + xi * s + eta * c - ey
+    ux, uy = bx - ax, by - ay
+    j23 = (cx * -L * s + cy * L * c) / size
+    j33 = (xx * (-xi * s - eta * c) + xy * (xi * c - eta * s)) / size
+    det = ux * (cy * j33 - j23 * xy) - uy * (cx * j33 - j23 * xx)
+    norms = (math.hypot(ux, uy) * math.sqrt(cx * cx + cy * cy + j23 * j23)
+             * math.sqrt(xx * xx + xy * xy + j33 * j33))
+    return abs(det) / norms if norms > 0 else 0.0
 
 
 def _ref_poses(q, mirror, ref_b, ref_x):
@@ -295,14 +436,16 @@ def triad_scalar(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, 
     if res is None:
         return _NAN7
     (B, C, X), _, m = res
-    return (*B, *C, *X, m)
+    return (*B, *C, *X, construction_sine(q, B, C, X) if m > 0 else m)
 
 
 def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rxx, rxy,
                size):
     """:func:`triad_scalar` over N positions, by continuation: the position whose closure
-    is nearest the reference first, then outwards, each by Newton from its neighbour's
-    closure.  Where the followed closure is lost (it met another and both vanished) the
+    is nearest the reference first (where the reference corners meet the lengths: the input
+    the reference was taken at), then outwards, each by Newton from its neighbour's closure,
+    checked against every closure where ill-conditioned, and never jumping farther than four
+    times the last step's motion.  Where the followed closure is lost (it met another and both vanished) the
     positions beyond are NaN and the margin −1: the limit of travel."""
     arrs = [np.asarray(v, dtype=float) for v in (ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta)]
     shape = np.broadcast_shapes(*(v.shape for v in arrs))
@@ -313,7 +456,16 @@ def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rx
     qs = [tuple(c[k] for c in cols) for k in range(n)]
     ref_b, ref_x = (rbx, rby), (rxx, rxy)
     start, best, first = None, math.inf, None
-    for k in range(0, n, max(1, n // 8)):    # the probed position nearest the reference
+    # first the position where the reference closes the group best (the reference is a
+    # closure at one of the inputs: the scene's own, or the one a sweep was anchored at),
+    # then probes through the rest
+    with np.errstate(all="ignore"):
+        P = np.array(cols)
+        r = (np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
+             + np.abs(np.hypot(rxx - P[6], rxy - P[7]) - P[8]))
+    order = ([int(np.nanargmin(r))] if np.isfinite(r).any() else []) \
+        + list(range(0, n, max(1, n // 8)))
+    for k in order:
         if not all(math.isfinite(v) for v in qs[k]):
             continue
         res = _from_reference(qs[k], mirror, ref_b, ref_x, size)
@@ -330,17 +482,21 @@ def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rx
         wrap = n > 2 and _adjacent(qs, 0, n - 1)
         back = list(range(start, -1, -1)) + (list(range(n - 1, start, -1)) if wrap else [])
         for rng in (range(start, n), back):
-            res = first
+            res, moved = first, None
             for k in rng:
                 if k != start:
                     if done[k] or not all(math.isfinite(v) for v in qs[k]):
                         break
                     (B, _, X), pose, _ = res
-                    res = _follow(qs[k], mirror, B, X, size, pose)
-                    if res is None:
+                    reach = 0.25 * size if moved is None else max(4.0 * moved, 1e-3 * size)
+                    new = _follow(qs[k], mirror, B, X, size, pose, reach=reach)
+                    if new is None:
                         break
+                    moved = max(math.dist(new[0][0], B), math.dist(new[0][2], X))
+                    res = new
                 (B, C, X), _, m = res
-                out[:, k] = (*B, *C, *X, m)
+                out[:, k] = (*B, *C, *X,
+                             construction_sine(qs[k], B, C, X) if m > 0 else m)
                 done[k] = True
     return tuple(o.reshape(shape) if shape else o[0] for o in out)
 

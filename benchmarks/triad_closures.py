@@ -1,0 +1,83 @@
+"""Every closure of a class-III group, checked at many random poses (issue 28): the closures
+of :func:`polygons.dyads.triad_math.all_corners` against a second algebraic route (the same
+group eliminated from the corner C instead of B: another polynomial, another φ₀) and, on a
+share of the poses, against the independent dense scan of the coupler curve
+(tests/analytic_triad.scan_closures).  Half the groups are random, half have two closures
+a hair apart (the X link's length within 1e-9 … 1e-5 m of an extremum of |X − E|).
+
+    python benchmarks/triad_closures.py [N] [scan_every]       # default 100000 poses, 1 in 200 scanned
+
+Prints the counts: poses, closures, poses where the two routes disagree, where the scan
+disagrees, the closest two closures listed, and the time per pose.
+"""
+from __future__ import annotations
+
+import math
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+import analytic_triad as at                                    # noqa: E402
+from polygons.dyads.triad_math import all_corners, separation  # noqa: E402
+
+
+def random_group(rng, close: bool):
+    """(A, a, D, d, E, e, L, ξ, η): random, or with two closures a hair apart."""
+    while True:
+        A = rng.uniform(-0.1, 0.1, 2)
+        D = rng.uniform(0.2, 0.4, 2) * [1, rng.choice([-1, 1])]
+        E = rng.uniform(-0.2, 0.4, 2)
+        a, d, L = rng.uniform(0.08, 0.3, 3)
+        xi, eta = rng.uniform(-0.1, 0.2), rng.uniform(-0.15, 0.15)
+        if not close:
+            return A, a, D, d, E, rng.uniform(0.05, 0.4), L, xi, eta
+        sig = rng.choice([1.0, -1.0])
+        psis = np.linspace(0, 2 * math.pi, 181)
+        r = np.array([math.hypot(*(X - E)) if h2 >= 0 else np.nan for _, _, X, h2 in
+                      (at.coupler(A, a, D, d, L, xi, eta, p, sig) for p in psis)])
+        ks = [k for k in range(1, 180) if np.all(np.isfinite(r[k - 1:k + 2]))
+              and (r[k] - r[k - 1]) * (r[k + 1] - r[k]) < 0]
+        if not ks:
+            continue
+        k = int(rng.choice(ks))
+        sign = 1.0 if r[k] < r[k - 1] else -1.0
+
+        def f(p):
+            return math.hypot(*(at.coupler(A, a, D, d, L, xi, eta, p, sig)[2] - E))
+        e = f(at._golden(f, psis[k - 1], psis[k + 1], sign)) + sign * 10 ** rng.uniform(-9, -5)
+        return A, a, D, d, E, e, L, xi, eta
+
+
+def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:
+    rng = np.random.default_rng(seed)
+    counts = dict(poses=0, closures=0, routes_disagree=0, scanned=0, scan_disagree=0)
+    closest = math.inf
+    t0 = time.perf_counter()
+    for i in range(n):
+        A, a, D, d, E, e, L, xi, eta = random_group(rng, close=i % 2 == 1)
+        one = all_corners((*A, a, *D, d, *E, e, L, xi, eta, 0.0), 0.5)
+        # the same group from the corner C: C at the origin of the plate, B at (L, 0)
+        two = all_corners((*D, d, *A, a, *E, e, L, L - xi, -eta, 0.0), 0.5)
+        counts["poses"] += 1
+        counts["closures"] += len(one)
+        same = len(one) == len(two) and all(
+            min(max(math.dist(c[0], o[1]), math.dist(c[2], o[2])) for o in two) < 1e-9
+            for c in one)
+        counts["routes_disagree"] += not same
+        closest = min(closest, separation(one))
+        if scan_every and i % scan_every == 0:
+            ref = at.scan_closures(A, a, D, d, E, e, L, xi, eta, n=360)
+            counts["scanned"] += 1
+            counts["scan_disagree"] += len(ref) != len(one)
+    counts["closest_m"] = closest
+    counts["us_per_pose"] = 1e6 * (time.perf_counter() - t0) / max(n, 1)
+    return counts
+
+
+if __name__ == "__main__":
+    args = [int(a) for a in sys.argv[1:3]]
+    print(main(*args))
