@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..csv_text import COMPILED_FROM, write_csv_rows
 from ..errors import UnknownLabelError, suggest
 from ..scene import Crank, Scene
 from ..streams import Extremes, evaluate_compiled, plan_stream, stream
@@ -46,21 +47,21 @@ def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> in
     path = stem.with_suffix(".csv")
     path.parent.mkdir(parents=True, exist_ok=True)
     ext = Extremes()
+    compiled = n >= COMPILED_FROM        # a long sweep: the compiled writer wherever numba is
     bar = None
     if progress:
         from tqdm import tqdm
         bar = tqdm(total=n, unit="pos", unit_scale=True, desc="sweep", file=sys.stderr,
                    leave=False)
     try:
-        with open(path, "w") as fh:
+        with open(path, "wb") as fh:
             head = None
             for s, xs, res in stream(st):
                 cols = _columns(st, xs, res, points, links)
                 if head is None:
                     head = ",".join(f"{name} [{unit}]" for name, unit, _ in cols)
-                    fh.write(head + "\n")
-                data = np.column_stack([np.broadcast_to(c, xs.shape) for _, _, c in cols])
-                np.savetxt(fh, data, delimiter=",", fmt="%.17g")
+                    fh.write(head.encode() + b"\n")
+                write_csv_rows(fh, [c for _, _, c in cols], len(xs), compiled=compiled)
                 ext.add_chunk(xs, res)
                 if bar is not None:
                     bar.update(len(xs))

@@ -211,11 +211,15 @@ def columns(sw: Sweep, points, links):
 
 
 def write_csv(sw: Sweep, points, links, path: Path) -> Path:
+    """The CSV: a header of names and units, then ``'%.17g'`` of every value (each reads back
+    to the same double; :mod:`polygons.csv_text`)."""
+    from ..csv_text import write_csv_rows
     cols = columns(sw, points, links)
     path.parent.mkdir(parents=True, exist_ok=True)
-    data = np.column_stack([np.broadcast_to(c[2], (sw.n,)) for c in cols])
     header = ",".join(f"{name} [{unit}]" for name, unit, _ in cols)
-    np.savetxt(path, data, delimiter=",", header=header, comments="", fmt="%.17g")
+    with open(path, "wb") as fh:
+        fh.write(header.encode() + b"\n")
+        write_csv_rows(fh, [c[2] for c in cols], sw.n)
     return path
 
 
