@@ -79,7 +79,7 @@ def _put(x, hi, lo, sc, out, pos, dig):
         pl = lo[i]
         a = x
         if sc[i] != 0:
-            a = math.ldexp(x, -sc[i])           # exact: |x|·2^-s
+            a = math.ldexp(x, -int(sc[i]))      # exact: |x|·2^-s
         p = a * ph
         t = 134217729.0 * a                     # Dekker: a·ph = p + e exactly
         ah = t - (t - a)
@@ -234,3 +234,62 @@ def write_csv_rows(fh, columns, n: int, compiled: bool | None = None) -> None:
         e = min(n, s + BLOCK)
         fh.write(csv_rows([c if np.ndim(c) == 0 else c[s:e] for c in columns], e - s,
                           compiled=compiled))
+
+
+#: the fixed timestamp of every member of a written .npz (the same bytes at every run)
+_ZIP_TIME = (1980, 1, 1, 0, 0, 0)
+
+
+class NpzColumns:
+    """A ``.npz`` (numpy's zip of ``.npy`` arrays, read by ``np.load``) written row block by
+    row block in constant memory: ``data`` — float64 (rows, columns), every value exact —,
+    ``columns`` and ``units`` — the names and units of its columns.  Deterministic bytes (fixed
+    member times, no compression).  Use as a context manager; ``add(columns, n)`` appends ``n``
+    rows (each column a scalar or an (n,) array)."""
+
+    def __init__(self, path, names_units, rows: int):
+        self.path, self.names_units, self.rows = path, list(names_units), rows
+        self.done = 0
+
+    def __enter__(self):
+        import zipfile
+        self.zf = zipfile.ZipFile(self.path, "w", compression=zipfile.ZIP_STORED,
+                                  allowZip64=True)
+        for key, i in (("columns", 0), ("units", 1)):
+            arr = np.array([nu[i] for nu in self.names_units], dtype="U")
+            with self.zf.open(self._info(key), "w", force_zip64=True) as fh:
+                np.lib.format.write_array(fh, arr, allow_pickle=False)
+        self.fh = self.zf.open(self._info("data"), "w", force_zip64=True)
+        np.lib.format.write_array_header_2_0(self.fh, {
+            "descr": np.lib.format.dtype_to_descr(np.dtype("<f8")), "fortran_order": False,
+            "shape": (self.rows, len(self.names_units))})
+        return self
+
+    def _info(self, key):
+        import zipfile
+        info = zipfile.ZipInfo(f"{key}.npy", date_time=_ZIP_TIME)
+        info.compress_type = zipfile.ZIP_STORED
+        info.external_attr = 0o644 << 16
+        return info
+
+    def add(self, columns, n: int) -> None:
+        block = np.empty((n, len(columns)), "<f8")
+        for j, c in enumerate(columns):
+            block[:, j] = c
+        self.fh.write(block.tobytes())
+        self.done += n
+
+    def __exit__(self, *exc):
+        self.fh.close()
+        self.zf.close()
+        if exc[0] is None and self.done != self.rows:
+            raise RuntimeError(f"{self.path}: {self.done} rows written of {self.rows}")
+        return False
+
+
+def write_npz(path, names_units, columns, n: int) -> None:
+    """The in-memory table as :class:`NpzColumns` writes it."""
+    with NpzColumns(path, names_units, n) as w:
+        for s in range(0, n, BLOCK):
+            e = min(n, s + BLOCK)
+            w.add([c if np.ndim(c) == 0 else c[s:e] for c in columns], e - s)
