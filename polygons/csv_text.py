@@ -122,12 +122,18 @@ def _put(x, hi, lo, sc, out, pos, dig):
         D = _E16
         k += 1
     E = k + 16
-    for j in range(15, -1, -2):                  # two digits a division
-        r = D % 100
-        D //= 100
-        dig[j + 1] = 48 + r % 10
-        dig[j] = 48 + r // 10
-    dig[0] = 48 + D
+    top = D // 100000000                        # 9 and 8 digits, each in unsigned 32 bits
+    low = np.uint32(D - top * 100000000)         # (3× quicker than 64-bit signed division)
+    top = np.uint32(top)
+    ten = np.uint32(10)
+    for j in range(8):
+        q = low // ten
+        dig[16 - j] = 48 + (low - q * ten)
+        low = q
+    for j in range(9):
+        q = top // ten
+        dig[8 - j] = 48 + (top - q * ten)
+        top = q
     nsig = 17
     while nsig > 1 and dig[nsig - 1] == 48:
         nsig -= 1
@@ -194,8 +200,8 @@ def _compiled():
         return None
     try:
         import numba
-        put = numba.njit(cache=True)(_put)
-        rows = numba.njit(cache=True)(_rows)
+        put = numba.njit(cache=True, error_model="numpy")(_put)
+        rows = numba.njit(cache=True, error_model="numpy")(_rows)
         return lambda data, hi, lo, sc, out: rows(data, hi, lo, sc, out, put)
     except Exception:                            # noqa: BLE001 - any numba failure: np.savetxt
         return None
