@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-ORDER = ("given", "relative", "centripetal", "tangential", "sliding", "coriolis", "image",
-         "resultant", "construction")
+ORDER = ("given", "relative", "centripetal", "tangential", "sliding", "coriolis",
+         "coriolis-aux", "image", "resultant", "construction")
 
 
 @dataclass(frozen=True)
@@ -33,6 +33,10 @@ LOOKS: dict[str, Look] = {
     "tangential": Look("tangential", "#D55E00", 0.5, "2.6 0.9"),
     "sliding": Look("sliding", "#8F6400", 0.5, "2.6 0.8 0.5 0.8"),
     "coriolis": Look("Coriolis 2ωv", "#882255", 0.9, None, open_head=True),
+    # the copy of 2ωv stepped back from the pin's vertex to place the offset line: drawn once as
+    # a vector (heavy), its auxiliary copy as a light construction line, as books draw it
+    "coriolis-aux": Look("2ωv stepped back (construction)", "#882255", 0.25, "1.2 0.8",
+                         open_head=True),
     "image": Look("image side (rigid body)", "#332288", 0.4, "0.9 0.7"),
     "resultant": Look("resultant (absolute, from the pole)", "#000000", 0.75, "0.5 0.8"),
     "construction": Look("construction line", "#555555", 0.25, "3 1.5"),

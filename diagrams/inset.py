@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass, replace
 
 from .crowd import clip_to_circle, clusters, mapped
-from .labels import Box, Placer, box_hits_segment, text_box
+from .labels import Box, Placer, box_hits_segment, leader, text_box
 from .layout import arrow_head
 from .model import Circle, Polyline, Segment, Text
 
@@ -35,14 +35,20 @@ class Inset:
     k: int                     # enlargement
     C: Pt                      # inset centre
     R: float                   # inset radius (= k r)
-    labels: tuple              # (names tuple, text, x, baseline, box) in the inset
+    labels: tuple              # (names tuple, text, x, baseline, box, leader) in the inset;
+    #                            leader: a thin line to the vertex of a label set away from it
     caption: tuple             # (text, x, baseline, box)
     join: tuple | None = None  # the line from the ring to the inset, when it crosses nothing
 
     @property
     def box(self) -> Box:
+        """The inset's circle, its caption and its labels (a label set outside the circle
+        is part of what the key and the legend must keep clear of)."""
         b = Box(self.C[0] - self.R, self.C[1] - self.R, self.C[0] + self.R, self.C[1] + self.R)
-        return b.union(self.caption[3])
+        b = b.union(self.caption[3])
+        for lab in self.labels:
+            b = b.union(lab[4])
+        return b
 
     def show(self, p: Pt) -> Pt:
         return mapped(p, self.c, self.k, self.C)
@@ -168,7 +174,13 @@ def _labels(ins: Inset, points: dict, segments, boxes, size: float, names_of) ->
         at = ins.show(points[g[0]])
         text = " = ".join(names_of(n) for n in g)
         x, base, _, box = placer.place(text, at, size)
-        labels.append((tuple(g), text, x, base, box))
+        labels.append((tuple(g), text, x, base, box, leader(box, at, 0.9)))
+    # a leader crossing another label or the caption is left out (the label stays nearest
+    # its vertex of every free place)
+    boxes_all = [lab[4] for lab in labels] + [tb]
+    labels = [lab if lab[5] is None or not any(
+        box_hits_segment(b, *lab[5], 0.3) for b in boxes_all if b is not lab[4])
+        else lab[:5] + (None,) for lab in labels]
     return replace(ins, labels=tuple(labels), caption=caption)
 
 
@@ -215,7 +227,7 @@ def items(ins: Inset, strokes, points: dict, visible, pole: str, old=()):
                 continue
         out.append(Segment(_r(seg[0]), _r(seg[1]), style, faded, cls="inset-vector"))
     shown = set(visible)
-    for names, _, x, base, _ in ins.labels:
+    for names, _, x, base, _, _ in ins.labels:
         vis = [n for n in names if n in shown]
         if not vis:
             continue
@@ -230,11 +242,13 @@ def labels(ins: Inset, visible, size: float, old=()):
     vertices are ``old``, drawn in earlier stages) and its caption."""
     shown = set(visible)
     out = []
-    for names, text, x, base, _ in ins.labels:
+    for names, text, x, base, _, lead in ins.labels:
         if all(n in shown for n in names):
             faded = all(n in old for n in names)
             out.append(Text(x, base, text, size, role="vertex", cls="inset-label",
                             weight="normal" if faded else "bold", faded=faded))
+            if lead is not None:
+                out.append(Segment(lead[0], lead[1], "leader", faded, cls="inset-leader"))
     text, x, base, _ = ins.caption
     out.append(Text(x, base, text, CAPTION_SIZE, "middle", role="inset", cls="inset-caption"))
     return out

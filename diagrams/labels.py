@@ -16,6 +16,9 @@ Pt = tuple[float, float]
 
 #: clear space (mm) kept between two labels, so they never touch
 LABEL_GAP = 0.35
+#: clear space (mm) kept between two labels side by side on one line (their middles within half
+#: a height), so that they never read as one ("(a_P2)ⁿ_O2 (a_P4)ᵗ_O4"): close to a word space
+LABEL_GAP_X = 0.6
 
 
 @dataclass(frozen=True)
@@ -167,8 +170,13 @@ class Placer:
         boxes, hard, _ = near or self._near(box)
         x0, y0, x1, y1 = box.x0, box.y0, box.x1, box.y1
         gx0, gy0, gx1, gy1 = x0 - LABEL_GAP, y0 - LABEL_GAP, x1 + LABEL_GAP, y1 + LABEL_GAP
+        wx0, wx1, half = x0 - LABEL_GAP_X, x1 + LABEL_GAP_X, (y1 - y0) / 2
         for b in boxes:                   # (box.grown(LABEL_GAP).overlaps(b))
             if gx0 < b.x1 and b.x0 < gx1 and gy0 < b.y1 and b.y0 < gy1:
+                return False
+            # on one line (their middles within half a height): a word space apart
+            if (wx0 < b.x1 and b.x0 < wx1
+                    and abs((b.y0 + b.y1) - (y0 + y1)) < min(half, (b.y1 - b.y0) / 2) * 2):
                 return False
         for a, b, c in hard:              # (box_hits_segment(box, a, b, c))
             if c <= 0:
@@ -291,7 +299,7 @@ _MAX_SAMPLES = 400
 
 def _box_reach(b: Box):
     """A placed box: its cells, grown by the gap two labels keep (``free``)."""
-    return b.grown(LABEL_GAP + 0.01), None
+    return b.grown(max(LABEL_GAP, LABEL_GAP_X) + 0.01), None
 
 
 def _hard_reach(seg):

@@ -118,9 +118,12 @@ def runs(text: str) -> list[Run]:
             add(m.group("ud"), "sub")
         else:
             add(m.group("vl"), "base")
-            add(m.group("vd"), "sub")
-            if m.group("vp"):
-                add(_PRIMES[m.group("vp")], "base")
+            if m.group("vq"):                       # 'p_1': p′ (a Coriolis foot)
+                add(_PRIMES[m.group("vq")], "base")
+            else:
+                add(m.group("vd"), "sub")
+                if m.group("vp"):
+                    add(_PRIMES[m.group("vp")], "base")
         pos = m.end()
     add(text[pos:], "base")
     return out

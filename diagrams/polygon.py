@@ -461,6 +461,11 @@ def _stage_number(con: Construction, stage: int | None) -> int | None:
     return None if stage is None else con.steps[stage - 1].number
 
 
+#: the look of a stroke that only places a line (the Coriolis vector stepped back): a light
+#: construction copy of its component, drawn once heavy as the polygon's side
+AUX = {"coriolis": "coriolis-aux"}
+
+
 def _style(component: str, new: bool) -> str:
     return f"c-{component}" + ("-new" if new else "")
 
@@ -509,16 +514,17 @@ def stroke_items(lay: Layout, stage: int | None):
                 dg = _drawn(lay, st, g)
                 shown.append((dg[0], dg[1], _style(st.component, new), True, look.open_head,
                               faded))
-            else:     # the Coriolis offset: not a polygon side, an arrowed step back
-                lines_g.append(Segment(g[0], shaft_end, _style(st.component, False), faded,
+            else:     # the Coriolis offset: not a polygon side, a light arrowed step back
+                aux = _style(AUX[st.component], False)
+                head, shaft_end = arrow_head(g[0], g[1], open_head=True)
+                lines_g.append(Segment(g[0], shaft_end, aux, faded,
                                        cls=f"offset step-{st.step}"))
-                shown.append((g[0], g[1], _style(st.component, False), True, look.open_head,
-                               faded))
+                shown.append((g[0], g[1], aux, True, True, faded))
                 if head:
-                    lines_g.append(Polyline(head, _style(st.component, False), closed=True,
-                                            faded=faded, cls=f"offset-head step-{st.step}"))
+                    lines_g.append(Polyline(head, aux, closed=True,
+                                            faded=faded, cls=f"offset-head open step-{st.step}"))
                 for a, b in _right_angle(con, st, g):
-                    lines_g.append(Segment(a, b, _style("coriolis", False), faded,
+                    lines_g.append(Segment(a, b, aux, faded,
                                            cls=f"right-angle step-{st.step}"))
         if st.kind in ("arrow", "offset"):
             lab = lay.vector_labels.get((st.step, st.frm, st.to))
@@ -575,8 +581,9 @@ def stroke_items(lay: Layout, stage: int | None):
 def key(lay: Layout, stage: int | None = None) -> list[str]:
     """The component kinds drawn (up to ``stage``), in the legend's order."""
     upto = _stage_number(lay.con, stage)
-    seen = {("construction" if st.kind == "line" else st.component) for st in lay.con.strokes
-            if upto is None or st.step <= upto}
+    seen = {("construction" if st.kind == "line" else
+             AUX[st.component] if st.kind == "offset" else st.component)
+            for st in lay.con.strokes if upto is None or st.step <= upto}
     return [c for c in ORDER if c in seen]
 
 

@@ -63,9 +63,37 @@ def _hatch(a: Pt, b: Pt, side: Pt, step=2.0, length=1.6):
     return out
 
 
+#: the fixed link between pivots is listed pair by pair up to this many pivots (beyond it,
+#: pivot to next pivot in the scene's order)
+MAX_FIXED_PAIRS = 3
+
+
+def fixed_links(scene) -> list[str]:
+    """The fixed link (the frame) as the books give it: 'AD = 1000 mm (fixed link)' between
+    the fixed pivots, so that a four-bar's fourth link is listed with the other three."""
+    g = list(scene.ground.items())
+    named = {frozenset((ln.a, ln.b)) for ln in scene.links.values()}
+    pairs = ([(g[i], g[j]) for i in range(len(g)) for j in range(i + 1, len(g))]
+             if len(g) <= MAX_FIXED_PAIRS else list(zip(g, g[1:])))
+    out = []
+    for (a, pa), (b, pb) in pairs:
+        if frozenset((a, b)) in named:
+            continue
+        out.append(f"{a}{b} = {number(math.dist(pa, pb) * 1000)} mm (fixed link)")
+    return out
+
+
+def rolling_wheels(scene) -> dict:
+    """The wheels rolling on the fixed ground, by centre: each is solved as its equivalent
+    slider (the centre on a line parallel to the ground) but drawn and listed as a wheel."""
+    return {q.at: q for q in scene.equivalents
+            if q.kind == "rolling" and not (q.on or q.opposite)}
+
+
 def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | None = None):
     check_handles("the space diagram", HANDLES, sol.scene.model, sol.scene.file)
     scene = sol.scene
+    wheels = rolling_wheels(scene)
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
     from . import rolling           # a wheel on a moving surface (placed by no-slip)
     bb = bounds(list(pos.values()) + rolling.extent(sol))
@@ -164,7 +192,10 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             back.append(Circle(_r(c), round(rad, 3), "link-thin", cls="wheel"))
             s1, s2 = _add(I, e, -rad * 1.1), _add(I, e, rad * 1.1)
             back.append(Segment(_r(s1), _r(s2), "ground", cls="rolling-surface"))
+            back += _hatch(s1, s2, _unit((I[0] - c[0], I[1] - c[1])))
             placer.hard(s1, s2, 1.0)
+            placer.hard(_add(s1, _unit((I[0] - c[0], I[1] - c[1])), 0.9),
+                        _add(s2, _unit((I[0] - c[0], I[1] - c[1])), 0.9), 1.1)
             back.append(Circle(_r(I), 0.6, "vertex", cls="instant-centre"))
             eq_notes.append((f"I: instant centre of wheel {q.at}", _add(I, e, -rad * 0.9)))
             b_, n_ = rolling.rim_items(
@@ -240,9 +271,10 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             neighbours[a].append(px)
             neighbours[b].append(px)
 
-    # slider guides and blocks
+    # slider guides and blocks (a wheel rolling on the fixed ground is drawn as a wheel on a
+    # hatched ground, not as its equivalent slider: its centre is a pin)
     for lab, guide in scene.model.guide.items():
-        if lab not in P:
+        if lab not in P or lab in wheels:
             continue
         c = P[lab]
         e = guide.line.direction
@@ -449,10 +481,16 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
     for name, ln in scene.links.items():
         if ln.a in sol.placement.points and ln.b in sol.placement.points:
             legend.append((f"{name} = {number(ln.length * 1000)} mm", "normal"))
+    legend += [(text, "normal") for text in fixed_links(scene)]
     for slot in scene.model.slots() + scene.model.crossings():
         legend.append((f"{slot.at} slides in the slot of {slot.carrier} "
                        f"(pivot {slot.line.origin})", "normal"))
+    wheels = rolling_wheels(scene)
     for lab, g in scene.model.guide.items():
+        if lab in wheels:
+            legend.append((f"wheel {lab}: radius {number(wheels[lab].radius * 1000)} mm, rolls "
+                           f"without slipping on the fixed ground", "normal"))
+            continue
         legend.append((f"{lab} slides on a guide at {number(math.degrees(g.line.angle), 4)}°",
                        "normal"))
     for collar in scene.model.collars():
@@ -500,7 +538,7 @@ def drawing(sol: Solution, scale: scales.Scale | None = None, paper: str | None 
         key.append(("slot", "curved slot / cam profile at the contact", False))
     if len(scene.ground) >= 2:
         key.append(("centre", "line of centres", False))
-    if scene.model.guide:
+    if any(lab not in wheels for lab in scene.model.guide):
         key.append(("guide-path", "guide path of a slider", False))
     if isinstance(drv, Crank) or getattr(drv, "rod_rate", None) is not None:
         key.append(("input", "input ω (sense of rotation)", True))

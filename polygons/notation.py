@@ -14,17 +14,19 @@ import re
 #: the dash a vertex name's ``_k`` suffix stands for
 PRIMES = {"1": "′", "2": "″", "3": "‴"}
 #: one vertex name in source form: letter, digits, optional ``_k`` dash
-VERTEX = r"(?P<vl>[a-z])(?P<vd>\d+)(?:_(?P<vp>[123]))?"
+VERTEX = r"(?P<vl>[a-z])(?:(?P<vd>\d+)(?:_(?P<vp>[123]))?|_(?P<vq>[123]))"
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 _ONE = re.compile(rf"{VERTEX}|(?P<bare>[a-z])")
 _WORD = re.compile(r"(?<![\w/′.\-])[a-z][a-z0-9_]*(?![\w])")
 
 
 def vertex(name: str) -> str:
-    """'p4_1' → 'p₄′', 'b1' → 'b₁', 'o' → 'o' (anything else unchanged)."""
+    """'p4_1' → 'p₄′', 'b1' → 'b₁', 'p_1' → 'p′', 'o' → 'o' (anything else unchanged)."""
     m = re.fullmatch(VERTEX, name)
     if m is None:
         return name
+    if m["vq"]:                                     # 'p_1' → 'p′' (a Coriolis foot)
+        return m["vl"] + PRIMES[m["vq"]]
     return m["vl"] + m["vd"].translate(_SUB) + (PRIMES[m["vp"]] if m["vp"] else "")
 
 

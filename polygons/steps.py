@@ -140,10 +140,13 @@ class Vertices:
     def of(self, label: str) -> str:
         return self.pole if label in self.scene.ground else label.lower()
 
-    def fresh(self, label: str, diagram_taken: set[str]) -> str:
-        """A new vertex near ``label``'s: b1, b2, ... (p2_1 for a label ending in a digit)."""
+    def fresh(self, label: str, diagram_taken: set[str], dash: bool = False) -> str:
+        """A new vertex near ``label``'s, as the books name them: the end of a known component
+        numbered, b1, b2, ... (b₁, b₂); the foot of a Coriolis vector dashed, ``dash``: b_1
+        (b′); a label ending in a digit always dashed, p2_1, p2_2 (p₂′, p₂″), since p21
+        would read as the vertex of P21."""
         base = label.lower()
-        sep = "_" if base[-1].isdigit() else ""
+        sep = "_" if dash or base[-1].isdigit() else ""
         k = 1
         while True:
             name = f"{base}{sep}{k}"
@@ -197,8 +200,9 @@ class Builder:
                                link, relative, reads))
         return n
 
-    def fresh(self, label: str) -> str:
-        return self.names.fresh(label, self.taken)
+    def fresh(self, label: str, dash: bool = False) -> str:
+        """A new vertex near ``label``'s (:meth:`Vertices.fresh`; ``dash``: a Coriolis foot)."""
+        return self.names.fresh(label, self.taken, dash)
 
 
 # ---------------------------------------------------------------- the one number formatter

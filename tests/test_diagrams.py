@@ -125,17 +125,19 @@ def test_fig7_stages_follow_the_tutorial_with_coriolis_and_offset_line():
     assert "Coriolis" in caps[5]
     final = by["acceleration"]
     labels = [t.text for t in final.items() if isinstance(t, Text)]
-    assert "Coriolis offset line" in labels and "2ωv" in labels and "p4 line" in labels
+    assert "Coriolis offset line" in labels and "2ωv" in labels and "line ⊥ O4P4" in labels
     cor = [a for a in final.items() if isinstance(a, Arrow) and a.role == "coriolis"]
     assert len(cor) == 1 and (cor[0].frm, cor[0].to) == ("p4", "p2_1")
     assert cor[0].style == "c-coriolis"
 
 
-def test_we4_has_the_c_line_and_slider_line_as_the_tutorial_draws():
+def test_we4_has_the_line_perpendicular_to_bc_and_slider_line_as_the_tutorial_draws():
+    """The tutorial's "c line" is named for what it is (one notation: "line ⊥ BC")."""
     sol, ds = solved(CASES / "s001-we4.toml")
     acc = finals(ds)["acceleration"]
     labels = {t.text for t in acc.items() if isinstance(t, Text)}
-    assert {"c line", "slider line", "a", "b", "c1", "c"} <= labels
+    assert {"line ⊥ BC", "slider line", "a", "b", "c1", "c"} <= labels
+    assert not any(t.endswith(" line") and t.split()[0] in ("b", "c", "p4", "r") for t in labels)
     vecs = {(a.frm, a.to): a.role for a in acc.items() if isinstance(a, Arrow)}
     assert vecs[("a", "b")] == "known" and vecs[("b", "c1")] == "known"
     assert vecs[("c1", "c")] == "resolved" and vecs[("a", "c")] == "resolved"
@@ -741,3 +743,41 @@ def test_fig7_svg_typesets_vertex_labels_with_tspans():
             if s.get("font-size") and float(s.get("font-size")) < float(t.get("font-size"))]
     assert subs and not any("_" in "".join(t.itertext()) for t in root.iter(SVG + "text")
                             if "vertex-label" in (t.get("class") or ""))
+
+
+def test_a_wheel_rolling_on_the_ground_is_drawn_as_a_wheel_not_its_equivalent_slider():
+    """The wheel's centre is a pin (no block in a hatched guide inside the wheel), the ground
+    under it is hatched, and the links list says the wheel rolls (not 'W slides on a guide')."""
+    sol = solve(load_scene(CASES / "rolling-wheel-driven.toml"))
+    d = diagrams.drawings(sol, None, None, False)[0]
+    classes = [it.cls for it in d.items() if hasattr(it, "cls")]
+    assert not any(c.startswith("guide") for c in classes)
+    hatch = [it for it in d.items() if isinstance(it, Segment) and it.style == "hatch"]
+    assert len(hatch) >= 20            # the fixed ground's hatching (the crank's pivot has ~6)
+    texts = [t.text for t in d.items("legend") if isinstance(t, Text)]
+    assert any("wheel W" in t and "rolls without slipping" in t for t in texts)
+    assert not any("W slides on a guide" in t for t in texts)
+
+
+def test_the_coriolis_vector_is_drawn_once_and_its_stepped_back_copy_light():
+    """Fig 7: one heavy 2ωv vector (p4 → p2′); the copy stepped back from p2 to place the offset
+    line is a light construction stroke in the Coriolis colour, with its own key entry."""
+    sol = solve(load_scene(CASES / "s003-fig7.toml"))
+    acc = next(d for d in diagrams.drawings(sol, None, None, False) if d.name == "acceleration")
+    heavy = [a for a in acc.items("vectors") if isinstance(a, Arrow) and "coriolis" in a.style]
+    assert len(heavy) == 1
+    light = [s for s in acc.items() if isinstance(s, Segment) and "offset" in s.cls.split()]
+    assert light and all(s.style == "c-coriolis-aux" for s in light)
+    assert LOOKS["coriolis-aux"].width < LOOKS["coriolis"].width / 2
+    keys = [t.text for t in acc.items("key") if isinstance(t, Text)]
+    assert any("stepped back" in t for t in keys)
+
+
+def test_the_links_list_gives_the_fixed_link_as_the_title_does():
+    """WE3's title gives AD 1 m: the space diagram lists AD = 1000 mm (fixed link) with AB, BC,
+    DC; a link already named between two pivots is not listed twice."""
+    sol = solve(load_scene(CASES / "s001-we3.toml"))
+    d = diagrams.drawings(sol, None, None, False)[0]
+    texts = [t.text for t in d.items("legend") if isinstance(t, Text)]
+    assert "AD = 1000 mm (fixed link)" in texts
+    assert sum("(fixed link)" in t for t in texts) == 1

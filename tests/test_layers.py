@@ -26,6 +26,7 @@ WHERE = {
     # loading a scene (polygons.scene builds it; every layer above reads it)
     "polygons.model": "scene",
     "polygons.reference": "commands", "polygons.__main__": "commands",
+    "polygons.notation_doc": "commands",
     "polygons.plan": "plan", "polygons.dyads": "plan", "polygons.mobility": "plan",
     "polygons.geometry": "interpreters",
     "polygons.narrate": "interpreters", "polygons.position": "interpreters",

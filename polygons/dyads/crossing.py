@@ -110,7 +110,7 @@ class Crossing:
                     f"{X} sliding relative to {U}, of unknown length.",
                     component=C.SLIDING, relative=(X, U)))
                 continue
-            k = b.fresh(U)
+            k = b.fresh(U, dash=True)
             ks.append(k)
             b.add(Kind.VECTOR, Op.CORIOLIS, (X, U), f"{u}{k}", u, k, "coriolis", "a_cor",
                   f"a_cor = 2 ω_{lev} × (v_{X})_{U}",

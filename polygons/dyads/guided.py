@@ -138,7 +138,7 @@ class Guided:
                   f"The sliding velocity of {X} in the slot is {x1}{x} (positive from {B} "
                   f"towards {Q}).", component=C.SLIDING)
             return
-        k1 = b.fresh(X)
+        k1 = b.fresh(X, dash=True)
         b.add(Kind.VECTOR, Op.CORIOLIS, (X,), f"{x1}{k1}", x1, k1, "coriolis", "a_cor",
               f"a_cor = 2 ω_{lev} × (v_{X})_{X1}",
               f"From {x1} draw the Coriolis acceleration 2ωv, the sliding velocity turned "

@@ -60,10 +60,10 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
           f"From {p} draw the centripetal acceleration of {X} relative to {P}, parallel to "
           f"{P}{X} and pointing from {X} towards {P}; call its end {x1}.",
           component=C.CENTRIPETAL, link=LP)
-    n1 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"{x} line", x1, None,
+    n1 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", x1, None,
                "tangential", f"(a_{X})_{P}^t", f"(a_{X})_{P}^t = α_{LP} × {P}{X} ⟂ {P}{X}",
                f"Through {x1} draw a line perpendicular to {P}{X} for the tangential "
-               f"acceleration of unknown length: the {x} line.", component=C.TANGENTIAL,
+               f"acceleration of unknown length.", component=C.TANGENTIAL,
                link=LP, relative=(X, P))
     if other is not None:
         Q, LQ = other

@@ -180,7 +180,8 @@ class RPR:
                   f"From {b_} draw the centripetal acceleration of {A1} about {B}, ω² × "
                   f"{B}{A}, pointing towards {B}; call its end {k1}.",
                   component=C.CENTRIPETAL, link=lev)
-            n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"{a1} line", k1, None, "tangential",
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"line ⟂ {B}{A}", k1, None,
+                       "tangential",
                        f"(a_{A1})_{B}^t", f"(a_{A1})_{B}^t = α_{lev} × {B}{A} ⟂ {B}{A}",
                        f"Through {k1} draw a line perpendicular to {B}{A} for the tangential "
                        f"acceleration of {A1}, of unknown length.", component=C.TANGENTIAL,
@@ -195,7 +196,7 @@ class RPR:
                   f"a_{A1}", f"{a1} = intersection of the two lines",
                   f"The lines meet at {a1}: {b_}{a1} is the acceleration of {A1}.", (n1, n2),
                   component=C.RESULTANT)
-            k2 = b.fresh(A)
+            k2 = b.fresh(A, dash=True)
             b.add(Kind.VECTOR, Op.CORIOLIS, (A,), f"{a1}{k2}", a1, k2, "coriolis",
                   "a_cor", f"a_cor = 2 ω_{lev} × (v_{A})_{A1}",
                   f"From {a1} the Coriolis acceleration 2ωv, perpendicular to the slot, to "
