@@ -204,6 +204,22 @@ def batch_fresh(root, path, runs: int = 5) -> tuple[float, float]:
     return statistics.median(ours), statistics.median(closed)
 
 
+def cli_sweep(root, case: str, steps: int, runs: int) -> float:
+    """Median wall time (s) of ``polygons sweep CASE --steps N --no-plot`` as a whole process
+    (bytecode caching on, as :func:`cold`), the CSV written to a temporary folder."""
+    import tempfile
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    times = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for _ in range(runs):
+            t0 = time.perf_counter_ns()
+            subprocess.run([sys.executable, "-m", "polygons", "sweep", case, "--steps",
+                            str(steps), "--no-plot", "--progress", "off", "--out", tmp],
+                           cwd=root, capture_output=True, check=True, env=env)
+            times.append((time.perf_counter_ns() - t0) * 1e-9)
+    return statistics.median(times)
+
+
 def cold(root, argv, runs: int) -> float:
     """Median wall time (s) of ``python -m polygons ARGV`` as a whole process, as a user's
     shell runs it: bytecode caching on (``PYTHONDONTWRITEBYTECODE`` removed from the child's

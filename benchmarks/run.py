@@ -466,6 +466,54 @@ def protocol_targets(single, ours_b, closed_b, cold, fresh=None):
     return out
 
 
+# ---------------------------------------------------------------- issue 31's table
+#: the case and size of the command-line sweep row (a four-bar, 19 columns of CSV)
+CLI_CASE, CLI_STEPS = "cases/s001-we6.toml", 1_000_000
+
+
+def issue31_rows(chain_rows, single, cold, cli_s) -> list:
+    """Every row of issue 31's table: (figure, the issue's figure, this run, goal, met), the
+    met column None where this run did not measure the row (it says why)."""
+    t = {r["key"]: r["time"] for r in single}
+    by_n = {r["n"]: r for r in chain_rows}
+    rows = []
+    ns = [n for n in (1, 4, 8, 16, 32) if n in by_n]
+    if ns:
+        vals = [by_n[n]["sweep_jit_ratio"] for n in ns]
+        rows.append(("numba sweep vs pylinkage, N = " + "/".join(map(str, ns)),
+                     "5.1× / 2.7× / 1.8× / 1.11× / 1.03×",
+                     " / ".join(f"{v:.2f}×" for v in vals), "≥ 4× at every N ≤ 32",
+                     all(v >= 4.0 for v in vals)))
+        vals = [by_n[n]["sweep_ratio"] for n in ns]
+        rows.append(("numpy sweep vs pylinkage, N = " + "/".join(map(str, ns)), "0.47× (N = 32)",
+                     " / ".join(f"{v:.2f}×" for v in vals), "≥ 1× at every N ≤ 32",
+                     all(v >= 1.0 for v in vals)))
+        cn = [n for n in (8, 32) if n in by_n]
+        vals = [by_n[n]["single_ratio"] for n in cn]
+        rows.append(("compiled pure Python vs pylinkage, N = " + " / ".join(map(str, cn)),
+                     "1.86× / 1.45×", " / ".join(f"{v:.2f}×" for v in vals), "≥ 3×",
+                     all(v >= 3.0 for v in vals) if vals else None))
+    else:
+        for fig, now, goal in (("numba sweep vs pylinkage", "5.1× … 1.03×", "≥ 4×"),
+                               ("numpy sweep vs pylinkage, N = 32", "0.47×", "≥ 1×"),
+                               ("compiled pure Python vs pylinkage, N = 8 / 32",
+                                "1.86× / 1.45×", "≥ 3×")):
+            rows.append((fig, now, "not measured (needs pylinkage and numba)", goal, None))
+    rows.append(("staged solve with Step records (WE6)", "128 µs",
+                 f"{t['staged+steps'] * 1e6:.0f} µs", "≤ 80 µs", t["staged+steps"] <= 80e-6))
+    rows.append((f"CLI `sweep {CLI_CASE} --steps {CLI_STEPS}` (no plots)", "23 s",
+                 f"{cli_s:.1f} s", "≤ 3 s", cli_s <= 3.0))
+    rows.append(("cold `polygons solve cases/s003-fig7.toml`", "304 ms",
+                 f"{cold['solve'] * 1e3:.0f} ms", "≤ 200 ms", cold["solve"] <= 0.200))
+    rows.append(("accuracy: sweep and compiled within 2× of the lean solver at γ = 1°, 0.1°, "
+                 "0.01°", "—", "not measured by this run (issue 31 item 2)", "≤ 2×", None))
+    return rows
+
+
+def _met(m) -> str:
+    return "not measured" if m is None else ("met" if m else "not met")
+
+
 # ---------------------------------------------------------------- README section
 def _cell(r) -> str:
     err = "—" if r["error"] is None else (f"{r['error']:.1e}" if r["error"] < 1e-3
@@ -479,7 +527,8 @@ def _cell(r) -> str:
     return f"{speed} · {err}"
 
 
-def markdown(results, single, batch, fresh, cold, runs, chain_rows, goals, info) -> str:
+def markdown(results, single, batch, fresh, cold, runs, chain_rows, goals, info,
+             issue31=()) -> str:
     """The README's benchmark figures, every one from this run (``--readme``)."""
     out = [f"Measured in one run (`python benchmarks/run.py --readme`, {info['date']}, "
            f"pylinkage {info.get('pylinkage_version', '—')}, numba "
@@ -528,6 +577,13 @@ def markdown(results, single, batch, fresh, cold, runs, chain_rows, goals, info)
                 "path for one position and its numba loop for sweeps of "
                 f"{chain_rows[0]['positions']:,} positions; numba compile = our two kernels' "
                 "one-off compile time, untimed in the rows):", "", chains.table(chain_rows)]
+    if issue31:
+        out += ["", "**Issue 31's table, this run** (the issue's figure, this run's, the goal):",
+                "", "| figure | issue | this run | goal | |", "|---|---|---|---|---|"]
+        for fig, now, val, goal, met in issue31:
+            out.append(f"| {fig} | {now} | {val} | {goal} | {_met(met)} |")
+    out += ["", "![Speed against error: positions per second against the largest relative "
+            "error, per method and mechanism](docs/figures/speed-vs-error.png)"]
     out += ["", "Goals (ratios from this run):", ""]
     for g in goals:
         val = f"{g['value']:.3g}" if g["goal"] != 1e-12 else f"{g['value']:.2g}"
@@ -590,7 +646,11 @@ def main(argv=None) -> int:
     ap.add_argument("--out", default=str(HERE / "results"), help="output directory")
     ap.add_argument("--chains", default="1,2,4,8,16,32",
                     help="chain sizes N against pylinkage (benchmarks/chains.py; '' skips)")
-    ap.add_argument("--chain-positions", type=int, default=100_000)
+    ap.add_argument("--chain-positions", type=int, default=1_000_000,
+                    help="positions of each chain's sweep (issue 31's table: 10^6)")
+    ap.add_argument("--no-large", action="store_true",
+                    help="with --readme: leave README's large-mechanism table "
+                         "(benchmarks/large.py --readme) as it is")
     ap.add_argument("--no-jit", action="store_true",
                     help="leave out the numba rows (polygons/jit.py) even where numba is installed")
     ap.add_argument("--readme", action="store_true",
@@ -631,8 +691,11 @@ def main(argv=None) -> int:
     runs = 3 if args.quick else 10
     cold = {"--help": protocol.cold(ROOT, ["--help"], runs),
             "solve": protocol.cold(ROOT, ["solve", "cases/s003-fig7.toml"], runs)}
+    log(f"command-line sweep: {CLI_CASE} --steps {CLI_STEPS:,}")
+    cli_s = protocol.cli_sweep(ROOT, CLI_CASE, CLI_STEPS, 1 if args.quick else 3)
     goals += protocol_targets(single, ours_b, closed_b, cold, fresh)
     goals += chain_targets(chain_rows)
+    issue31 = issue31_rows(chain_rows, single, cold, cli_s)
     print(table(results))
     print(protocol_table(single, ours_b, closed_b, err_b, ok_b, cold, runs, fresh))
     if chain_rows:
@@ -645,6 +708,9 @@ def main(argv=None) -> int:
     for name, why in avail.items():
         if why:
             print(f"  {name}: not compared — {why}")
+    print("issue 31's table (the issue's figure → this run; goal):")
+    for fig, now, val, goal, met in issue31:
+        print(f"  [{_met(met)}] {fig}: {now} → {val}; goal {goal}")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     info = {"python": sys.version.split()[0], "numpy": np.__version__,
@@ -669,11 +735,18 @@ def main(argv=None) -> int:
                      "batch_fresh": {"ours_s": fresh[0], "closed_form_s": fresh[1]},
                      "cold_s": cold, "rules": protocol.__doc__},
         "chains": chain_rows}, indent=1, default=float))
+    info["cli_sweep_s"] = cli_s
+    written = plot(results, out / "speed-vs-error")
     if args.readme:
         write_readme(markdown(results, single, (ours_b, closed_b, err_b, ok_b), fresh, cold,
-                              runs, chain_rows, goals, info))
+                              runs, chain_rows, goals, info, issue31))
+        # the figure the README shows is committed (benchmarks/results/ is not)
+        written += plot(results, ROOT / "docs" / "figures" / "speed-vs-error")
         print("README.md: the benchmark section rewritten from this run")
-    written = plot(results, out / "speed-vs-error")
+        if not args.no_large:
+            import large
+            log("large mechanisms: benchmarks/large.py --readme")
+            large.main(["--readme"])
     print(f"written: {out / 'bench.json'}, " + ", ".join(str(w) for w in written))
     return 0
 

@@ -18,7 +18,6 @@ this package lets a bare traceback reach the user for a bad scene.
 """
 from __future__ import annotations
 
-import difflib
 import re
 
 
@@ -121,6 +120,7 @@ def show(value, limit: int = MAX_VALUE) -> str:
 def suggest(name: str, options) -> str:
     """' (did you mean 'x'?)' if a close match exists, else the list of options."""
     options = sorted(str(o) for o in options)
+    import difflib                    # only when a name is wrong: a quicker start
     close = difflib.get_close_matches(str(name)[:200], options, n=1)
     if close:
         return f"did you mean {show(close[0])}?"

@@ -1,7 +1,6 @@
 """Results as a readable table (units stated, senses named) and as a JSON object."""
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import asdict, dataclass
 
@@ -169,6 +168,7 @@ def to_json(sol: Solution) -> dict:
 
 def json_text(data: dict) -> str:
     """The one JSON formatting of every command (deterministic, no NaN)."""
+    import json                       # only for --json: a quicker start
     return json.dumps(data, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 

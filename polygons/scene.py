@@ -33,7 +33,6 @@ from __future__ import annotations
 
 import math
 import re
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from types import MappingProxyType
@@ -180,6 +179,7 @@ def parse_toml(text: str, file: str) -> dict:
         else:
             refuse_control_characters(text, data, file)
             return data
+    import tomllib                    # only where rtoml refuses (or is missing): a quicker start
     try:
         data = tomllib.loads(text)
         refuse_control_characters(text, data, file)

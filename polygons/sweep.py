@@ -305,13 +305,18 @@ def kernel_of(prog: Program):
 
 #: bytes of a pass's record (one row of N floats per output of the generated code)
 CHUNK_BYTES = {False: 1 << 22, True: 1 << 22}
+#: the fewest positions a pass takes (numpy, numba)
+CHUNK_FLOOR = {False: 4096, True: 1024}
 
 
 def chunk_for(prog: Program, jit: bool = False) -> int:
     """Positions per pass, from the program's size: a pass's record kept within
     :data:`CHUNK_BYTES` (numpy, whose temporaries are as many again; a numba kernel, which
-    makes none), so that it stays in the caches: ≥ 1024 positions, at most 4 :data:`CHUNK`."""
-    return int(min(4 * CHUNK, max(1024, CHUNK_BYTES[bool(jit)] // 8 // _rows(prog))))
+    makes none), so that it stays in the caches: at most 4 :data:`CHUNK`, at least
+    :data:`CHUNK_FLOOR` (numpy's cost per call outweighs the caches below 4096 positions:
+    twice the rate at N = 32 dyads)."""
+    return int(min(4 * CHUNK, max(CHUNK_FLOOR[bool(jit)],
+                                  CHUNK_BYTES[bool(jit)] // 8 // _rows(prog))))
 
 
 def from_arrays(prog: Program, code, params, xs: np.ndarray, kernel=None, out=None) -> dict:

@@ -43,7 +43,7 @@ WHERE = {
     "polygons.kennedy": "interpreters",
     "polygons.streams": "interpreters",
     "polygons.forces": "forces",
-    "polygons.report": "render", "diagrams": "render",
+    "polygons.report": "render", "polygons.csv_text": "render", "diagrams": "render",
     "polygons.cli": "commands", "polygons.api": "commands", "polygons": "commands",
 }
 

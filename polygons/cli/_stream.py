@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..csv_text import COMPILED_FROM, NpzColumns, write_csv_rows
 from ..errors import UnknownLabelError, suggest
 from ..scene import Crank, Scene
 from ..streams import Extremes, evaluate_compiled, plan_stream, stream
@@ -22,10 +23,9 @@ from ..steps import number
 PLOT_POINTS = 4000
 
 
-def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> int:
-    n = opt["steps"]
-    st = plan_stream(scene, n)
-    probe = evaluate_compiled(st, st.inputs(0, 2))
+def chosen(scene: Scene, opt: dict, st, probe) -> tuple[list, list]:
+    """(points, links) of the CSV, the plots and the summary: the asked ones (checked), else
+    the defaults."""
     labels = [k for k in probe["pos"]]
     for lab in opt["points"] or []:
         if lab not in labels:
@@ -41,29 +41,50 @@ def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units) -> in
     crank = drv.link if isinstance(drv, Crank) else None
     links = opt["links"] if opt["links"] is not None else [k for k in probe["omega"]
                                                            if k != crank]
+    return points, links
+
+
+def run_stream(args, scene: Scene, opt: dict, progress: bool, plot, units, st=None) -> int:
+    n = opt["steps"]
+    st = st if st is not None else plan_stream(scene, n)
+    probe = evaluate_compiled(st, st.inputs(0, 2))
+    points, links = chosen(scene, opt, st, probe)
+    # the .npz holds every point placed and every link
+    data_points, data_links = (list(probe["pos"]), list(probe["omega"])) if opt.get("npz") \
+        else (points, links)
     out = Path(args.out)
     stem = out / f"{Path(args.scene).stem}-sweep"
-    path = stem.with_suffix(".csv")
+    path = stem.with_suffix(".npz" if opt.get("npz") else ".csv")
     path.parent.mkdir(parents=True, exist_ok=True)
     ext = Extremes()
+    compiled = n >= COMPILED_FROM        # a long sweep: the compiled writer wherever numba is
     bar = None
     if progress:
         from tqdm import tqdm
         bar = tqdm(total=n, unit="pos", unit_scale=True, desc="sweep", file=sys.stderr,
                    leave=False)
     try:
-        with open(path, "w") as fh:
-            head = None
-            for s, xs, res in stream(st):
-                cols = _columns(st, xs, res, points, links)
-                if head is None:
-                    head = ",".join(f"{name} [{unit}]" for name, unit, _ in cols)
-                    fh.write(head + "\n")
-                data = np.column_stack([np.broadcast_to(c, xs.shape) for _, _, c in cols])
-                np.savetxt(fh, data, delimiter=",", fmt="%.17g")
-                ext.add_chunk(xs, res)
-                if bar is not None:
-                    bar.update(len(xs))
+        if opt.get("npz"):
+            probe_cols = _columns(st, st.inputs(0, 2), probe, data_points, data_links)
+            with NpzColumns(path, [(nm, u) for nm, u, _ in probe_cols], n) as w:
+                for s, xs, res in stream(st):
+                    w.add([c for _, _, c in _columns(st, xs, res, data_points, data_links)],
+                          len(xs))
+                    ext.add_chunk(xs, res)
+                    if bar is not None:
+                        bar.update(len(xs))
+        else:
+            with open(path, "wb") as fh:
+                head = None
+                for s, xs, res in stream(st):
+                    cols = _columns(st, xs, res, points, links)
+                    if head is None:
+                        head = ",".join(f"{name} [{unit}]" for name, unit, _ in cols)
+                        fh.write(head.encode() + b"\n")
+                    write_csv_rows(fh, [c for _, _, c in cols], len(xs), compiled=compiled)
+                    ext.add_chunk(xs, res)
+                    if bar is not None:
+                        bar.update(len(xs))
     finally:
         if bar is not None:
             bar.close()

@@ -30,6 +30,18 @@ from ..sweep import Sweep, default_points, harmonic, sweep
 PROGRESS_FROM = 100_000
 #: from this many positions the sweep is streamed to the CSV (polygons/cli/_stream.py)
 STREAM_FROM = 1_000_000
+#: the output a sweep may write without --large (estimated before any work)
+MAX_OUTPUT_BYTES = 1_000_000_000
+#: the time a sweep may take without --large (estimated from a timed probe of its positions)
+MAX_SECONDS = 300.0
+#: from this many positions the output and the time are estimated before the sweep starts
+BUDGET_FROM = 100_000
+#: positions solved (and timed) to estimate a sweep's time
+BUDGET_PROBE = 2048
+#: bytes of one value: a CSV field ('%.17g', ~19 characters, and its comma), a .npz float64
+VALUE_BYTES = {"csv": 21, "npz": 8}
+#: values written a second (a CSV with and without numba's compiled writer, a .npz)
+WRITE_RATE = {"csv": 4e6, "csv-python": 1.2e6, "npz": 5e7}
 #: most points drawn per curve (the maxima are always taken from every position)
 PLOT_POINTS = 4000
 #: the formats a plot can be written in (--formats)
@@ -72,6 +84,12 @@ def register(sub) -> None:
                    help=f"plot formats, comma-separated: {', '.join(PLOT_FORMATS)} "
                         f"(default: png,svg)")
     p.add_argument("--no-plot", action="store_true", help="write the CSV only")
+    p.add_argument("--npz", action="store_true",
+                   help="write every point and every link as numpy's .npz (float64, 8 bytes "
+                        "a value, np.load) instead of the chosen ones as CSV")
+    p.add_argument("--large", action="store_true",
+                   help=f"run a sweep estimated above the budget ({MAX_OUTPUT_BYTES / 1e9:g} GB "
+                        f"written or {MAX_SECONDS / 60:g} min)")
     p.add_argument("--shm", action="store_true", default=None,
                    help="overlay the simple-harmonic curve on each slider (crank pin "
                         "projected on its guide) and report the difference")
@@ -108,7 +126,8 @@ def _options(scene: Scene, args) -> dict:
     unit = args.unit or sw.unit
     if unit is None:
         unit = "mm" if size_of(scene) < 1.0 else "m"     # (a scene with no links: its size)
-    return {"points": points, "links": links, "steps": steps, "shm": shm, "unit": unit}
+    return {"points": points, "links": links, "steps": steps, "shm": shm, "unit": unit,
+            "npz": bool(getattr(args, "npz", False))}
 
 
 def _default_points(sw: Sweep) -> list[str]:
@@ -134,9 +153,12 @@ def run(args) -> int:
     bar = None
     show = {"on": True, "off": False, "auto": n >= PROGRESS_FROM and sys.stderr.isatty()}[
         args.progress]
+    st = None
+    if n >= BUDGET_FROM:        # the output and the time estimated before the sweep
+        st = check_budget(scene, opt, allow=args.large)
     if n >= STREAM_FROM:        # chunk by chunk into the CSV, in constant memory
         from ._stream import run_stream
-        return run_stream(args, scene, opt, show, plot, _units)
+        return run_stream(args, scene, opt, show, plot, _units, st=st)
     if show:
         from tqdm import tqdm
         bar = tqdm(total=n, unit="pos", unit_scale=True, desc="sweep", file=sys.stderr,
@@ -165,11 +187,68 @@ def run(args) -> int:
 
     out = Path(args.out)
     stem = out / f"{Path(args.scene).stem}-sweep"
-    written = [write_csv(sw, points, links, stem.with_suffix(".csv"))]
+    if opt["npz"]:
+        from ..csv_text import write_npz
+        cols = columns(sw, list(sw.pos), list(sw.omega))
+        path = stem.with_suffix(".npz")
+        path.parent.mkdir(parents=True, exist_ok=True)
+        write_npz(path, [(nm, u) for nm, u, _ in cols], [c for _, _, c in cols], sw.n)
+        written = [path]
+    else:
+        written = [write_csv(sw, points, links, stem.with_suffix(".csv"))]
     if not args.no_plot:
         written += plot(sw, points, links, shm, opt["unit"], stem, list(args.formats))
     sys.stdout.write(summary(sw, points, links, shm, opt["unit"], written))
     return 0
+
+
+# ---------------------------------------------------------------- the budget
+def estimate(scene: Scene, opt: dict):
+    """(stream plan, bytes, seconds, columns) of the sweep ``opt`` asks for, before it runs:
+    the columns from a probe, the time from BUDGET_PROBE positions spread over the range,
+    solved and timed (their rate times the steps), and the writing at WRITE_RATE."""
+    import time
+    from ..csv_text import _compiled
+    from ..streams import evaluate_compiled, plan_stream
+    from ._stream import _columns, _inputs_at, chosen
+    n = opt["steps"]
+    st = plan_stream(scene, n)
+    evaluate_compiled(st, st.inputs(0, 2))        # first-call costs are not the rate
+    # positions spread over the whole range (a range's ends can be slower: a triad's Newton)
+    xs = _inputs_at(st, np.linspace(0, n - 1, min(n, BUDGET_PROBE)).astype(np.int64))
+    t0 = time.perf_counter()
+    res = evaluate_compiled(st, xs)
+    solve_s = (time.perf_counter() - t0) / len(xs) * n
+    points, links = chosen(scene, opt, st, res)
+    if opt["npz"]:
+        points, links = list(res["pos"]), list(res["omega"])
+    m = len(_columns(st, xs, res, points, links))
+    kind = "npz" if opt["npz"] else "csv"
+    rate = WRITE_RATE[kind if kind == "npz" or _compiled() is not None else "csv-python"]
+    return st, n * m * VALUE_BYTES[kind], solve_s + n * m / rate, m
+
+
+def _size(b: float) -> str:
+    return f"{b / 1e9:.3g} GB" if b >= 1e9 else f"{b / 1e6:.3g} MB"
+
+
+def _duration(s: float) -> str:
+    return f"{s / 60:.3g} min" if s >= 90 else f"{s:.2g} s"
+
+
+def check_budget(scene: Scene, opt: dict, allow: bool = False):
+    """Refuse a sweep estimated above MAX_OUTPUT_BYTES written or MAX_SECONDS (unless
+    ``allow``: ``--large``), naming the estimate and the flag; the stream plan made for it."""
+    st, size, seconds, m = estimate(scene, opt)
+    if (size > MAX_OUTPUT_BYTES or seconds > MAX_SECONDS) and not allow:
+        what = ".npz" if opt["npz"] else "CSV"
+        raise SceneError(
+            f"this sweep would write about {_size(size)} of {what} ({opt['steps']:,} rows × {m} "
+            f"columns) and take about {_duration(seconds)}: above the budget of "
+            f"{_size(MAX_OUTPUT_BYTES)} and {MAX_SECONDS / 60:g} min; pass --large to run it "
+            f"anyway, or ask for fewer --steps, --points or --links", file=scene.file,
+            where="--steps")
+    return st
 
 
 # ---------------------------------------------------------------- units and columns
@@ -211,11 +290,15 @@ def columns(sw: Sweep, points, links):
 
 
 def write_csv(sw: Sweep, points, links, path: Path) -> Path:
+    """The CSV: a header of names and units, then ``'%.17g'`` of every value (each reads back
+    to the same double; :mod:`polygons.csv_text`)."""
+    from ..csv_text import write_csv_rows
     cols = columns(sw, points, links)
     path.parent.mkdir(parents=True, exist_ok=True)
-    data = np.column_stack([np.broadcast_to(c[2], (sw.n,)) for c in cols])
     header = ",".join(f"{name} [{unit}]" for name, unit, _ in cols)
-    np.savetxt(path, data, delimiter=",", header=header, comments="", fmt="%.17g")
+    with open(path, "wb") as fh:
+        fh.write(header.encode() + b"\n")
+        write_csv_rows(fh, [c[2] for c in cols], sw.n)
     return path
 
 

@@ -21,7 +21,6 @@ import math
 
 import numpy as np
 
-from ..theorems import perp
 from ..memo import memo_of
 from .triad_math import triad_cols, triad_scalar
 
@@ -41,17 +40,26 @@ def circle_circle(p, r1, q, r2, sigma):
         x, y, m = circle_circle_scalar(float(p[0]), float(p[1]), r1, float(q[0]), float(q[1]),
                                        r2, sigma)
         return np.array([x, y]), m
-    d = q - p
-    dist = np.hypot(d[0], d[1])
+    x, y, margin = _circle_circle_xy(p[0], p[1], r1, q[0], q[1], r2, sigma)
+    return np.array([x, y]), margin
+
+
+def _circle_circle_xy(px, py, r1, qx, qy, r2, sigma):
+    """:func:`circle_circle` over arrays, coordinate by coordinate (no (2, N) copies):
+    X = P + a u + σ h perp(u), perp(u) = (−u_y, u_x)."""
+    dx, dy = qx - px, qy - py
+    dist = np.hypot(dx, dy)
     a = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
     h2 = r1 * r1 - a * a
     tol = CLOSE_TOL * np.maximum(np.maximum(r1, r2), dist) ** 2
     ok = h2 >= -tol
     h = np.sqrt(np.where(ok, np.maximum(h2, 0.0), np.nan))
-    u = d / dist
-    x = p + a * u + (sigma * h) * perp(u)
+    ux, uy = dx / dist, dy / dist
+    sh = sigma * h
+    x = px + a * ux + sh * -uy
+    y = py + a * uy + sh * ux
     margin = np.where(ok, h * dist, -np.sqrt(np.abs(h2)) * dist) / (r1 * r2)
-    return x, margin
+    return x, y, margin
 
 
 def circle_line(p, length, through, e, sigma):
@@ -130,10 +138,8 @@ def circle_circle_cols(px, py, r1, qx, qy, r2, sigma):
     """:func:`circle_circle_scalar`'s signature over arrays (the compiled program run on N
     positions): :func:`circle_circle` itself, on its coordinates."""
     shape = np.broadcast_shapes(*(np.shape(v) for v in (px, py, qx, qy, r1, r2)))
-    p = np.array([np.broadcast_to(px, shape), np.broadcast_to(py, shape)])
-    q = np.array([np.broadcast_to(qx, shape), np.broadcast_to(qy, shape)])
-    X, m = circle_circle(p, r1, q, r2, sigma)
-    return X[0], X[1], m
+    x, y, m = _circle_circle_xy(px, py, r1, qx, qy, r2, sigma)
+    return np.broadcast_to(x, shape), np.broadcast_to(y, shape), np.broadcast_to(m, shape)
 
 
 def circle_line_cols(px, py, length, gx, gy, ex, ey, sigma):
