@@ -26,6 +26,7 @@ from .errors import PolygonsError, SceneError, show
 from .question_table import CYCLE, Question, questions
 from .records import Crank
 from .scene import Scene, drawing_tolerance, parse_quantity_expr
+from .sweep import golden_min
 from .reader import Reader
 from .units import UNITS
 
@@ -283,7 +284,7 @@ def answer(scene: Scene, q: Question) -> Finding:
         if math.isfinite(sa) and math.isfinite(sb) and sa * sb <= 0.0:
             x = brent(lambda x, i=i: slope(x, i), a, b, sa, sb)
         else:                      # a cusp or an unbracketed slope: golden section
-            x = _golden(lambda x, i=i: (-1 if kind == "max" else 1) * at(x, i), a, b)
+            x = golden_min(lambda x, i=i: (-1 if kind == "max" else 1) * at(x, i), a, b)[0]
         v = at(x, i)
         if kind == "max" and fi > v or kind == "min" and fi < v:   # never worse than a sample
             x, v = xs[i], fi
@@ -322,25 +323,6 @@ def answer(scene: Scene, q: Question) -> Finding:
     turn = math.fmod(sense * (hi_r.input - lo_r.input), _TAU) % _TAU   # least → greatest
     ratio = max(turn, _TAU - turn) / min(turn, _TAU - turn)
     return Finding(q, (lo_r, hi_r), ratio, "", dim)
-
-
-def _golden(f, a: float, b: float, iters: int = 200) -> float:
-    """The least of ``f`` in [a, b] by golden section (a cusp: |v| at a dead centre)."""
-    g = (math.sqrt(5.0) - 1.0) / 2.0
-    c, d = b - g * (b - a), a + g * (b - a)
-    fc, fd = f(c), f(d)
-    for _ in range(iters):
-        if abs(b - a) <= 4 * np.finfo(float).eps * max(abs(a), abs(b), 1.0):
-            break
-        if fc < fd:
-            b, d, fd = d, c, fc
-            c = b - g * (b - a)
-            fc = f(c)
-        else:
-            a, c, fc = c, d, fd
-            d = a + g * (b - a)
-            fd = f(d)
-    return 0.5 * (a + b)
 
 
 def _range_words(q: Question, xs, periodic: bool) -> str:

@@ -439,8 +439,9 @@ def _bisect(margin, good: float, bad: float, iters: int = 200) -> float:
     return good
 
 
-def _golden_min(margin, a: float, b: float, iters: int = 120) -> tuple[float, float]:
-    """Minimum of the margin on [a, b] (golden section; the margin is unimodal near a toggle)."""
+def golden_min(margin, a: float, b: float, iters: int = 120) -> tuple[float, float]:
+    """(x, margin(x)) at the least of ``margin`` on [a, b] by golden section (a unimodal
+    function: the margin near a toggle, |v| at a dead centre); a NaN counts as not less."""
     g = (math.sqrt(5) - 1) / 2
     c, d = b - g * (b - a), a + g * (b - a)
     fc, fd = margin(c), margin(d)
@@ -505,7 +506,7 @@ def find_range(prog: Program, probe: int = PROBE):
     events: list[Limit] = []
     gaps: list[float] = []
     for i in np.flatnonzero(cand):
-        xm, fm = _golden_min(margin, xs[i] - step, xs[i] + step)
+        xm, fm = golden_min(margin, xs[i] - step, xs[i] + step)
         if not np.isfinite(fm) or fm < 0:
             gaps.append(xm)
         else:
