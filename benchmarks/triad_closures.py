@@ -26,30 +26,16 @@ from polygons.dyads.triad_math import all_corners, separation  # noqa: E402
 
 
 def random_group(rng, close: bool):
-    """(A, a, D, d, E, e, L, ξ, η): random, or with two closures a hair apart."""
-    while True:
-        A = rng.uniform(-0.1, 0.1, 2)
-        D = rng.uniform(0.2, 0.4, 2) * [1, rng.choice([-1, 1])]
-        E = rng.uniform(-0.2, 0.4, 2)
-        a, d, L = rng.uniform(0.08, 0.3, 3)
-        xi, eta = rng.uniform(-0.1, 0.2), rng.uniform(-0.15, 0.15)
-        if not close:
-            return A, a, D, d, E, rng.uniform(0.05, 0.4), L, xi, eta
-        sig = rng.choice([1.0, -1.0])
-        psis = np.linspace(0, 2 * math.pi, 181)
-        r = np.array([math.hypot(*(X - E)) if h2 >= 0 else np.nan for _, _, X, h2 in
-                      (at.coupler(A, a, D, d, L, xi, eta, p, sig) for p in psis)])
-        ks = [k for k in range(1, 180) if np.all(np.isfinite(r[k - 1:k + 2]))
-              and (r[k] - r[k - 1]) * (r[k + 1] - r[k]) < 0]
-        if not ks:
-            continue
-        k = int(rng.choice(ks))
-        sign = 1.0 if r[k] < r[k - 1] else -1.0
-
-        def f(p):
-            return math.hypot(*(at.coupler(A, a, D, d, L, xi, eta, p, sig)[2] - E))
-        e = f(at._golden(f, psis[k - 1], psis[k + 1], sign)) + sign * 10 ** rng.uniform(-9, -5)
-        return A, a, D, d, E, e, L, xi, eta
+    """(A, a, D, d, E, e, L, ξ, η): random, or with two closures a hair apart
+    (tests/analytic_triad.close_group on 181 coupler angles)."""
+    if close:
+        return at.close_group(rng, samples=181)
+    A = rng.uniform(-0.1, 0.1, 2)
+    D = rng.uniform(0.2, 0.4, 2) * [1, rng.choice([-1, 1])]
+    E = rng.uniform(-0.2, 0.4, 2)
+    a, d, L = rng.uniform(0.08, 0.3, 3)
+    xi, eta = rng.uniform(-0.1, 0.2), rng.uniform(-0.15, 0.15)
+    return A, a, D, d, E, rng.uniform(0.05, 0.4), L, xi, eta
 
 
 def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:

@@ -181,3 +181,30 @@ def scan_closures(A, a, D, d, E, e, L, xi, eta, n=4096):
         if all(max(np.max(np.abs(B - o[0])), np.max(np.abs(X - o[2]))) > 1e-9 for o in out):
             out.append((B, C, X))
     return out
+
+
+def close_group(rng, samples: int = 361):
+    """(A, a, D, d, E, e, L, ξ, η): a random group whose X-link length e is within δ
+    (1e-9 … 1e-5 m) of an extremum of |X − E| along the four-bar ABCD's coupler curve (found
+    on ``samples`` coupler angles, then by golden section): two closures a hair apart."""
+    while True:
+        A = rng.uniform(-0.1, 0.1, 2)
+        D = rng.uniform(0.2, 0.4, 2) * [1, rng.choice([-1, 1])]
+        E = rng.uniform(-0.2, 0.4, 2)
+        a, d, L = rng.uniform(0.08, 0.3, 3)
+        xi, eta = rng.uniform(-0.1, 0.2), rng.uniform(-0.15, 0.15)
+        sig = rng.choice([1.0, -1.0])
+        psis = np.linspace(0, 2 * math.pi, samples)
+        r = np.array([math.hypot(*(X - E)) if h2 >= 0 else np.nan for _, _, X, h2 in
+                      (coupler(A, a, D, d, L, xi, eta, p, sig) for p in psis)])
+        ks = [k for k in range(1, samples - 1) if np.all(np.isfinite(r[k - 1:k + 2]))
+              and (r[k] - r[k - 1]) * (r[k + 1] - r[k]) < 0]
+        if not ks:
+            continue
+        k = int(rng.choice(ks))
+        sign = 1.0 if r[k] < r[k - 1] else -1.0
+
+        def f(p):
+            return math.hypot(*(coupler(A, a, D, d, L, xi, eta, p, sig)[2] - E))
+        e = f(_golden(f, psis[k - 1], psis[k + 1], sign)) + sign * 10 ** rng.uniform(-9, -5)
+        return A, a, D, d, E, e, L, xi, eta

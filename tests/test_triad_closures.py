@@ -26,40 +26,11 @@ CASES = ROOT / "cases"
 DATA = Path(__file__).resolve().parent / "data"
 
 
-def _close_group(rng):
-    """A random group whose X-link length is within δ (1e-9 … 1e-5 m) of an extremum of
-    |X − E| along the four-bar ABCD's coupler curve: two closures a hair apart."""
-    while True:
-        A = rng.uniform(-0.1, 0.1, 2)
-        D = rng.uniform(0.2, 0.4, 2) * [1, rng.choice([-1, 1])]
-        E = rng.uniform(-0.2, 0.4, 2)
-        a, d, L = rng.uniform(0.08, 0.3, 3)
-        xi, eta = rng.uniform(-0.1, 0.2), rng.uniform(-0.15, 0.15)
-        sig = rng.choice([1.0, -1.0])
-        psis = np.linspace(0, 2 * math.pi, 361)
-        r = []
-        for p in psis:
-            _, _, X, h2 = at.coupler(A, a, D, d, L, xi, eta, p, sig)
-            r.append(math.hypot(*(X - E)) if h2 >= 0 else np.nan)
-        r = np.array(r)
-        ks = [k for k in range(1, 360) if np.all(np.isfinite(r[k - 1:k + 2]))
-              and (r[k] - r[k - 1]) * (r[k + 1] - r[k]) < 0]
-        if not ks:
-            continue
-        k = int(rng.choice(ks))
-        sign = 1.0 if r[k] < r[k - 1] else -1.0
-
-        def f(p):
-            return math.hypot(*(at.coupler(A, a, D, d, L, xi, eta, p, sig)[2] - E))
-        e = f(at._golden(f, psis[k - 1], psis[k + 1], sign)) + sign * 10 ** rng.uniform(-9, -5)
-        return A, a, D, d, E, e, L, xi, eta
-
-
 def test_the_closures_of_random_groups_with_close_closures_are_those_of_a_dense_scan():
     rng = np.random.default_rng(28)
     closest = math.inf
     for _ in range(10):
-        A, a, D, d, E, e, L, xi, eta = _close_group(rng)
+        A, a, D, d, E, e, L, xi, eta = at.close_group(rng)
         got = all_corners((*A, a, *D, d, *E, e, L, xi, eta, 0.0), 0.5)
         ref = at.scan_closures(A, a, D, d, E, e, L, xi, eta, n=360)
         assert len(got) == len(ref)
