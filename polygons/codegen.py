@@ -20,10 +20,7 @@ This module imports neither shapely nor the diagrams.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
-
-import numpy as np
 
 from .contacts import wheel_of
 from .dyads.base import ARRAY_TWIN
@@ -59,10 +56,8 @@ class Source:
 
     x = Name("x")   # the driver's input (θ in rad or s in m)
 
-    # Names the generated code may call: cos, sin, atan2, degrees, sqrt, nan, where (math or
-    # numpy); ``hypot`` is the kernel's norm (√(x² + y²) over arrays), ``hypot_p`` a dyad
-    # locate's np.hypot (math.hypot over floats), so that positions over arrays are the
-    # kernel's to the last bit.
+    # Names the generated code may call: polygons.dyads.numeric.namespace (the same names a
+    # primitive's statement is evaluated in, so its locate is the program's to the last bit).
 
     def __init__(self, scene: Scene, sigma: dict, arrays: bool = False, meet=None,
                  instruments=None):
