@@ -179,12 +179,10 @@ def test_each_group_names_a_force_polygon_the_construction_has():
 JOINT_TABLES = {"links", "sliders", "slots", "points", "crossing", "prescribed"}
 #: who still reads them outside the groups and the model, and why: the planner's topology
 #: (the groups' own helpers), mobility (a redundant link's stated length, varied by a batch),
-#: the batch (it writes varied tables) and the sweep's range of a slider driver; and — NOT
-#: DONE, to the model next — the exam's data table (exam.variants.data_rows, merged from the
-#: exams branch after the others were moved): the goal is at most four
-TABLE_READERS = {"polygons.topology", "polygons.mobility", "polygons.batch", "polygons.sweep",
-                 "polygons.exam.variants"}
-MAX_TABLE_READERS = 5          # the goal: 4 (issue 34), once exam.variants reads the model
+#: the batch (it writes varied tables) and the sweep's range of a slider driver; the exam's
+#: data table reads the model (issue 34's goal: at most four)
+TABLE_READERS = {"polygons.topology", "polygons.mobility", "polygons.batch", "polygons.sweep"}
+MAX_TABLE_READERS = 4
 
 
 def _joint_table_readers() -> set[str]:
