@@ -152,3 +152,14 @@ def test_a_slot_parallel_to_the_guide_is_refused_in_words():
     with pytest.raises(PolygonsError) as e:
         solve(_scene(0.0, 10.0, 0.0, 0.0, 0.0, 150.0, 0.0))
     assert "the slot of OQ is parallel to the guide of P" in str(e.value)
+
+
+def test_the_kind_registers_itself():
+    """Its module declares ROLE and BEFORE; polygons/dyads/__init__.py does not name it."""
+    import inspect
+    from polygons import dyads
+    from polygons.dyads import slot_slider
+    assert "slot_slider" not in inspect.getsource(dyads)
+    kinds = list(dyads.POINT_KINDS)
+    assert kinds.index(slot_slider) < kinds.index(dyads.rrr)
+    assert dyads.SlotSlider is slot_slider.SlotSlider and "SlotSlider" in dyads.__all__
