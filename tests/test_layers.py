@@ -39,6 +39,7 @@ WHERE = {
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
+    "polygons.centres_links": "interpreters", "polygons.centres_velocity": "interpreters",
     "polygons.classic": "interpreters",
     "polygons.kennedy": "interpreters",
     "polygons.streams": "interpreters",
