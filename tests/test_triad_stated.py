@@ -43,3 +43,15 @@ def test_every_interpreter_places_the_triad_alike(path):
                 got.append(np.array(p.position))
             worst = max([worst] + [float(np.max(np.abs(g - ref))) for g in got])
     assert worst <= 1e-12 * size
+
+
+def test_a_batch_of_varied_plates_is_placed_alike_by_both_engines():
+    """The batch's 'located' engine (each group's locate over the rows' varied lengths: the
+    statement run over arrays, triad_cols) and its compiled one give the same corners."""
+    from polygons.batch import solve_many
+    scene = load_scene(ROOT / "triad-ternary-coupler.toml")
+    v = {"BX": scene.links["BX"].length * np.array([0.99, 1.0, 1.01])}
+    a, b = solve_many(scene, v, engine="compiled"), solve_many(scene, v, engine="located")
+    assert a.ok.all() and b.ok.all()
+    for lab in ("B", "C", "X"):
+        assert np.max(np.abs(np.asarray(a.position(lab)) - np.asarray(b.position(lab)))) <= 1e-12
