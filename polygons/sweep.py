@@ -481,7 +481,7 @@ def find_range(prog: Program, probe: int = PROBE):
         xs = x0 + step * np.arange(probe)
         span = period
     else:
-        span = 2.0 * (sum(l.length for l in prog.scene.links.values() if l.length)
+        span = 2.0 * (sum(l.length for l in prog.scene.model.links() if l.length)
                       + max([math.hypot(*g) for g in prog.ground.values()] + [0.0]))
         span = max(span, prog.scale, 4.0 * abs(x0))    # (no links: the input's own size)
         half = probe // 2
