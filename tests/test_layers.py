@@ -36,6 +36,7 @@ WHERE = {
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.harmonic": "interpreters",
     "polygons.sweep_store": "interpreters", "polygons.sweep_follow": "interpreters",
+    "polygons.sweep_range": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
