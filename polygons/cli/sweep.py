@@ -142,6 +142,9 @@ def _default_links(sw: Sweep) -> list[str]:
 
 def run(args) -> int:
     scene = load_scene(args.scene)
+    if "cam_profiles" in scene.extra:       # the follower's displacement diagram
+        from ._cam import run_cam
+        return run_cam(args, scene)
     if args.steps is not None and not 2 <= args.steps <= MAX_STEPS:    # checked with --vary too
         raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
                          f"{args.steps:,}", file=scene.file, where="--steps")
