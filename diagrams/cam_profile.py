@@ -70,7 +70,16 @@ def space_items(sol, to_paper, k, placer=None) -> tuple[list, list]:
     rr = fol.roller if fol.kind == "roller" else 0.0
     n = (math.cos(c.normal), math.sin(c.normal))
     touch = (o[0] + c.point[0] - rr * n[0], o[1] + c.point[1] - rr * n[1])
-    if fol.kind == "flat":      # the face: a line through the contact, ⟂ the normal
+    if fol.kind == "flat" and fol.oscillating:   # the face along the lever, pivot to its end
+        q = (o[0] + fol.pivot[0], o[1] + fol.pivot[1])
+        t = (math.cos(c.s), math.sin(c.s))
+        reach = max(fol.arm, (touch[0] - q[0]) * t[0] + (touch[1] - q[1]) * t[1])
+        left = (-t[1] * fol.face_offset, t[0] * fol.face_offset)
+        back.append(Segment(to_paper((q[0] + left[0], q[1] + left[1])),
+                            to_paper((q[0] + left[0] + reach * t[0],
+                                      q[1] + left[1] + reach * t[1])),
+                            "link", cls="cam-follower-face"))
+    elif fol.kind == "flat":    # the face: a line through the contact, ⟂ the normal
         half = 0.6 * prof.base
         t = (-n[1], n[0])
         back.append(Segment(to_paper((touch[0] - half * t[0], touch[1] - half * t[1])),

@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 
 from .cam_profiles import TABLE, AXIS_KEY, contact, stated, straight_flank_motion
-from .errors import UnsupportedError
+from .errors import SceneError, UnsupportedError
 from .evaluate import solve
 from .scene import parse_scene
 
@@ -54,6 +54,26 @@ def _base(scene):
     return data
 
 
+def movable(data: dict, file: str):
+    """The scene of ``data`` (parsed TOML with [cam_profiles]) restated at a cam angle where
+    the follower moves on a part with a linkage (the stated angle, else the first of each
+    degree): a scene stated on the base circle or a translating follower's straight flank
+    refuses an instant, yet has a displacement diagram."""
+    label, table, prof, fol, *_ = stated(data, file)
+    try:
+        return parse_scene(data, file=file)
+    except SceneError as exc:
+        if "dwells" not in str(exc) and "straight flank" not in str(exc):
+            raise
+    for i in range(360):
+        got = contact(prof, fol, math.radians(i))
+        if got.part in ("nose", "flank") or (got.part == "straight flank" and fol.oscillating):
+            return parse_scene({**data, "driver": {**data["driver"], "angle": f"{i} deg"}},
+                               file=file)
+    raise SceneError("the follower never leaves the base circle", file=file,
+                     where=TABLE)  # pragma: no cover
+
+
 def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
     """The follower's displacement diagram over a turn of the cam of ``scene`` (a scene with
     [cam_profiles]) at ``steps`` nose-axis angles 0, 2π/steps, …: the part in contact found and
@@ -93,4 +113,4 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
     return tuple(rows)
 
 
-__all__ = ["Row", "diagram", "MAX_DIAGRAM_STEPS"]
+__all__ = ["Row", "diagram", "movable", "MAX_DIAGRAM_STEPS"]

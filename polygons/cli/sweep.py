@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import SceneError, UnknownLabelError, suggest
 from ..options import MAX_STEPS, labels
-from ..scene import Crank, Scene, load_scene
+from ..scene import Crank, Scene, parse_scene, parse_toml, read_scene_text
 from ..steps import number
 from ..dyads.base import size_of
 from ..sweep import Sweep, default_points, harmonic, sweep
@@ -141,10 +141,12 @@ def _default_links(sw: Sweep) -> list[str]:
 
 
 def run(args) -> int:
-    scene = load_scene(args.scene)
-    if "cam_profiles" in scene.extra:       # the follower's displacement diagram
+    data = parse_toml(read_scene_text(args.scene), args.scene)
+    if isinstance(data, dict) and "cam_profiles" in data:   # the displacement diagram
+        from ..cam_diagram import movable
         from ._cam import run_cam
-        return run_cam(args, scene)
+        return run_cam(args, movable(data, args.scene))
+    scene = parse_scene(data, file=args.scene)
     if args.steps is not None and not 2 <= args.steps <= MAX_STEPS:    # checked with --vary too
         raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
                          f"{args.steps:,}", file=scene.file, where="--steps")
