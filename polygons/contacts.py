@@ -39,6 +39,7 @@ space diagram draws it dashed, labelled as such.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 from .errors import SceneError, UnsupportedError, show
@@ -129,8 +130,11 @@ TABLES: tuple[Table, ...] = (
                      "the bar stays tangent, the contact slides along it. The table's label "
                      "is the circle's centre (a [ground] point); the equivalent: that centre "
                      "slides in a slot ∥ the bar at the radius from it.", (
-        Key("bar", "link", "the bar (a [links] entry) from its first label", example='"AQ"',
-            required=True),
+        Key("bar", "link", "the bar (a [links] entry) from its first label; its length may "
+                           "be left out when its first label is the slider driver (placed by "
+                           "this bar's angle or at a position) or a fixed pivot: its far end "
+                           "is then its point touching the circle at this instant",
+            example='"AQ"', required=True),
         Key("radius", "quantity", "the circle's radius", example='"100 mm"',
             dimension="length", required=True),
         Key("side", "string", "the side of the bar, looking from its first label to its "
@@ -502,9 +506,6 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                                    where, driven=_driven(data) == label),
                           driven=_driven(data) == label)
     bar, side = table["bar"], table["side"]
-    if not isinstance(bar, str) or bar not in links:
-        raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
-                         where=f"{where}.bar")
     if side not in ("left", "right"):
         raise SceneError(f"side must be 'left' or 'right', got {side!r}", file=file,
                          where=f"{where}.side")
@@ -512,6 +513,11 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
     if not isinstance(ground, dict) or label not in ground:
         raise SceneError(f"the circle's centre {label} must be a [ground] point (a fixed "
                          f"circle)", file=file, where=where)
+    if isinstance(bar, str) and bar not in links and LINK_NAME.match(bar):
+        links[bar] = f"{_bar_to_contact(bar, label, radius, side, data, file, where)!r} m"
+    if not isinstance(bar, str) or bar not in links:
+        raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
+                         where=f"{where}.bar")
     if slots is None or label in slots:
         raise SceneError(f"{label} is already in [slots]", file=file, where=where)
     coincident = _fresh(label, data)
@@ -519,6 +525,77 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
     slots[label] = {"lever": bar, "coincident": coincident, "offset": f"{off!r} m"}
     return Equivalent("bearing", label, label, bar, None, radius, roller=None,
                       face=1.0 if side == "left" else -1.0, surface=None)
+
+
+LINK_NAME = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
+
+
+def _bar_to_contact(bar, label, radius, side, data, file, where) -> float:
+    """A bearing bar stated without a length: its far end is its point touching the circle at
+    this instant, |PT| from its first label P — P a fixed pivot (|PT|² = |PK|² − R²) or the
+    slider driver at a stated position (as a fixed pivot) or placed by this bar's angle (T
+    the foot of K on the bar's line through the slider: |PT| = (K − P)·u, P where the line at
+    the stated angle is tangent to the circle).
+    Otherwise the bar's length is asked for (its first label is a moving pin)."""
+    ground, drv = data.get("ground", {}), data.get("driver")
+    if not (isinstance(ground[label], list) and len(ground[label]) == 2):
+        raise SceneError(f"give the circle's centre {label} as [x, y]", file=file,
+                         where=f"ground.{label}")
+    kx, ky = (_q(v, "length", file, f"ground.{label}") for v in ground[label])
+    splits = [(bar[:i], bar[i:]) for i in range(1, len(bar))
+              if LABEL.match(bar[:i]) and LABEL.match(bar[i:])]
+    for p, q in splits:
+        if p in ground and isinstance(ground[p], list):
+            px, py = (_q(v, "length", file, f"ground.{p}") for v in ground[p])
+            d2 = (kx - px) ** 2 + (ky - py) ** 2 - radius ** 2
+            if d2 <= 0:
+                raise SceneError(f"the bar's pivot {p} is inside the circle about {label}",
+                                 file=file, where=where)
+            return math.sqrt(d2)
+        sliders = data.get("sliders", {})
+        if isinstance(drv, dict) and drv.get("slider") == p and isinstance(
+                drv.get("position"), str) and isinstance(sliders, dict) \
+                and isinstance(sliders.get(p), dict) and "through" in sliders[p]:
+            g = sliders[p]                        # the slider driver at a stated position
+            tx, ty = (_q(v, "length", file, f"sliders.{p}.through") for v in g["through"])
+            e = _q(g.get("direction", "0 deg"), "angle", file, f"sliders.{p}.direction")
+            s = _q(drv["position"], "length", file, "driver.position")
+            d2 = (kx - tx - s * math.cos(e)) ** 2 + (ky - ty - s * math.sin(e)) ** 2 \
+                - radius ** 2
+            if d2 <= 0:
+                raise SceneError(f"the slider {p} is inside the circle about {label}",
+                                 file=file, where=where)
+            return math.sqrt(d2)
+        if isinstance(drv, dict) and drv.get("slider") == p and drv.get("rod") in (bar, q + p) \
+                and isinstance(drv.get("rod_angle"), str) and isinstance(sliders, dict) \
+                and isinstance(sliders.get(p), dict) and "through" in sliders[p]:
+            from .topology import _turn_of
+            text, turn = _turn_of(drv["rod_angle"])
+            phi = turn * _q(text, "angle", file, "driver.rod_angle")
+            if drv["rod"] != bar:
+                phi += math.pi                    # the angle stated far end → slider
+            ux, uy = math.cos(phi), math.sin(phi)
+            g = sliders[p]
+            tx, ty = (_q(v, "length", file, f"sliders.{p}.through") for v in g["through"])
+            e = _q(g.get("direction", "0 deg"), "angle", file, f"sliders.{p}.direction")
+            nx, ny = -uy, ux
+            den = math.cos(e) * nx + math.sin(e) * ny
+            if abs(den) < 1e-12:
+                raise SceneError(f"the bar {bar} is parallel to the guide of {p}: its angle "
+                                 f"does not place the slider", file=file, where="driver.rod")
+            off = radius if side == "left" else -radius
+            s = ((kx - tx) * nx + (ky - ty) * ny - off) / den
+            bx, by = tx + s * math.cos(e), ty + s * math.sin(e)
+            t = (kx - bx) * ux + (ky - by) * uy
+            if t <= 0:
+                raise SceneError(f"the circle about {label} is behind the bar's end {p}",
+                                 file=file, where=where)
+            return t
+    raise SceneError(f"give the bar's length in [links] ({bar} = \"...\"): unstated, its far "
+                     f"end is its point at the contact, found only when its first label is a "
+                     f"fixed pivot or the slider driver (at a position or placed by this "
+                     f"bar's angle)", file=file,
+                     where=f"{where}.bar")
 
 
 def wheel_of(scene, label):
