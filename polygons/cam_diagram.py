@@ -100,9 +100,12 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
             continue
         here = {**data, "driver": {**data["driver"], "angle": f"{axis!r} rad"}}
         sol = solve(parse_scene(here, file=scene.file))
-        if fol.oscillating:
+        if fol.oscillating:         # the arm's angle, ω and α from the construction
             lk = sol.links[arm]
-            rows.append(Row(axis, got.part, got.s, lk.omega, lk.alpha))
+            p = sol.points[label].position
+            q = (o[0] + fol.pivot[0], o[1] + fol.pivot[1])
+            rows.append(Row(axis, got.part, math.atan2(p[1] - q[1], p[0] - q[0]), lk.omega,
+                            lk.alpha))
             continue
         sr = sol.slides[label]
         e = (math.cos(fol.stroke), math.sin(fol.stroke))

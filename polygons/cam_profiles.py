@@ -105,8 +105,8 @@ TABLES: tuple[Table, ...] = (
                               "point); the arm is the link pivot + R", example='"Q"'),
         Key("arm", "quantity", "an oscillating follower: the arm's length from the pivot to "
                                "the roller's centre or the knife's edge (a flat face: the "
-                               "arm drawn, its face along it)", example='"80 mm"',
-            dimension="length"),
+                               "face along the arm from the pivot, the contact on it)",
+            example='"80 mm"', dimension="length"),
         Key("side", "string", "an oscillating follower: 'left' or 'right' — a knife or "
                               "roller: the side of the line pivot → cam centre its point is "
                               "on; a flat face: the side of the face, looking along the arm "
@@ -340,8 +340,8 @@ def contact(profile: Profile, f: Follower, axis: float) -> Contact:
                 pt = (part.centre[0] - f.side * part.radius * nl[0],
                       part.centre[1] - f.side * part.radius * nl[1])
                 normal = math.atan2(-f.side * nl[1], -f.side * nl[0])
-                if _dot((pt[0] - f.pivot[0], pt[1] - f.pivot[1]), _u(psi)) > 0 and \
-                        part.holds(normal):
+                along = _dot((pt[0] - f.pivot[0], pt[1] - f.pivot[1]), _u(psi))
+                if 0 < along <= f.arm and part.holds(normal):       # on the face
                     cands.append((math.hypot(*pt), Contact(part.name, part.side, part.centre,
                                                           part.radius, normal, pt,
                                                           _wrap(psi))))
@@ -388,7 +388,8 @@ def contact(profile: Profile, f: Follower, axis: float) -> Contact:
                                                   part.radius, normal, x, s)))
     if not cands:
         raise SceneError("no part of the cam's profile meets the follower (check the "
-                         "follower's place: the arm too short or too long for the cam)")
+                         "follower's place: the arm too short or too long for the cam, a flat "
+                         "face shorter than the reach of its contact)")
     return max(cands, key=lambda c: c[0])[1]
 
 
