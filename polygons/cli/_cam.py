@@ -44,7 +44,7 @@ def run_cam(args, scene) -> int:
     stem = out / f"{Path(args.scene).stem}-cam"
     stem.parent.mkdir(parents=True, exist_ok=True)
     if osc:
-        head = ["cam angle [deg]", "part", "found by", f"arm {fol and label} angle [deg]",
+        head = ["cam angle [deg]", "part", "found by", "arm angle [deg]",
                 "omega [rad/s]", "alpha [rad/s^2]"]
         vals = [(math.degrees(r.angle), r.part, r.by, math.degrees(r.s), r.v, r.a)
                 for r in rows]
@@ -84,8 +84,9 @@ def _plot(scene, rows, osc, dwell, stem, formats):
         for i in range(1, len(rows) + 1):     # one line per run of a part (breaks at changes)
             if i == len(rows) or rows[i].part != rows[start].part:
                 part = rows[start].part
-                panel.lines.append(Line(part if part not in seen else "", x[start:i + (i < len(rows))],
-                                        y[start:i + (i < len(rows))], "-", colours[part]))
+                end = i + (i < len(rows))        # joined to the next part's first point
+                panel.lines.append(Line(part if part not in seen else "", x[start:end],
+                                        y[start:end], "-", colours[part]))
                 seen.add(part)
                 start = i
     drv = scene.driver
