@@ -10,7 +10,7 @@ import math
 
 from polygons.cam_profiles import pose
 
-from .model import Polyline, Segment
+from .model import Circle, Polyline, Segment
 
 Pt = tuple[float, float]
 #: points of the outline (one per degree of outward normal, and the flank's length)
@@ -59,6 +59,9 @@ def space_items(sol, to_paper, k, placer=None) -> tuple[list, list]:
         if len(trace) >= 2:
             back.append(Polyline(tuple(trace), "link", cls="cam-contact-part"))
     else:       # the straight flank: from the base circle's tangent point to the nose's
+        if fol.kind == "roller":            # (no equivalent link draws the roller here)
+            back.append(Circle(to_paper((o[0] + c.point[0], o[1] + c.point[1])),
+                               round(fol.roller * k, 3), "slot", cls="roller"))
         n = (math.cos(c.normal), math.sin(c.normal))
         nose = (prof.d * math.cos(axis), prof.d * math.sin(axis))
         a = (o[0] + prof.base * n[0], o[1] + prof.base * n[1])

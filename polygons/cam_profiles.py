@@ -656,13 +656,15 @@ def rewrite(data: dict, file: str) -> dict:
                              f"out of [links]", file=file, where=f"links.{arm}")
         links[arm] = f"{fol.arm!r} m"
     if straight:       # a pin in a slot of the cam ∥ the flank, r₁ + roller from O
-        t = _rot(_u(got.normal), -math.pi / 2)       # N is the slot's left normal
+        t = _rot(_u(got.normal), -math.pi / 2)       # N is the slot's left normal …
+        sense = 1.0 if _dot(got.point, t) >= 0 else -1.0    # … K on the roller's side
+        t = (sense * t[0], sense * t[1])
         links[crank] = f"{prof.d!r} m"
         out["driver"] = {**drv, "angle": f"{math.degrees(math.atan2(t[1], t[0]))!r} deg"}
         rr = fol.roller if fol.kind == "roller" else 0.0
         out["slots"] = {**data.get("slots", {}),
                         label: {"lever": crank, "coincident": _fresh(label, data),
-                                "offset": f"{prof.base + rr!r} m"}}
+                                "offset": f"{sense * (prof.base + rr)!r} m"}}
         out["links"] = links
         out["assembly"] = {**data.get("assembly", {}), label: near}
         return out
