@@ -695,7 +695,8 @@ def rewrite(data: dict, file: str) -> dict:
 
 
 __all__ = ["Profile", "Part", "Follower", "Contact", "contact", "profile_of", "follower_of",
-           "stated", "straight_flank_motion", "rewrite", "pose", "TABLES", "AXIS_KEY"]
+           "stated", "straight_flank_motion", "rewrite", "pose", "to_dict", "report_lines",
+           "TABLES", "AXIS_KEY"]
 
 
 def pose(scene):
@@ -713,3 +714,55 @@ def pose(scene):
     fol = follower_of(clean, ground, o, scene.file, f"{TABLE}.{label}")
     axis = _q(table[AXIS_KEY], "angle", scene.file, f"{TABLE}.{label}")
     return prof, fol, axis, o, label, contact(prof, fol, axis)
+
+
+def to_dict(scene) -> dict | None:
+    """The cam's profile as found and the part in contact (SI, angles in degrees): the JSON's
+    ``cam_profile``; None without one."""
+    got = pose(scene)
+    if got is None:
+        return None
+    prof, fol, axis, o, label, c = got
+    phi_n, phi_b = prof.spans()
+    out = {"follower_point": label,
+           "kind": "circular arc" if prof.flank is not None else "tangent",
+           "base_radius": prof.base, "nose_radius": prof.nose, "lift": prof.lift,
+           "flank_radius": prof.flank, "nose_centre_distance": prof.d,
+           "angle_of_action_deg": math.degrees(2 * phi_b),
+           "nose_span_deg": math.degrees(2 * phi_n),
+           "nose_axis_deg": math.degrees(axis),
+           "follower": fol.kind, "motion": "oscillating" if fol.oscillating else "translating",
+           "part_in_contact": c.part,
+           "contact_normal_deg": math.degrees(c.normal) % 360.0,
+           "follower_position": [o[0] + c.point[0], o[1] + c.point[1]]}
+    if fol.oscillating:
+        out["arm_angle_deg"] = math.degrees(c.s)
+    else:
+        rr = fol.roller if fol.kind == "roller" else 0.0
+        dwell = math.sqrt(max((prof.base + rr) ** 2 - fol.offset ** 2, 0.0)) \
+            if fol.kind != "flat" else prof.base
+        out["displacement"] = c.s
+        out["lift_from_dwell"] = c.s - dwell
+    return out
+
+
+def report_lines(scene) -> list[str]:
+    """The cam's profile and its contact, in words (``polygons solve``)."""
+    d = to_dict(scene)
+    if d is None:
+        return []
+    mm = lambda x: f"{x * 1e3:.6g} mm"        # noqa: E731
+    head = (f"cam by its profile ({d['kind']}): base circle {mm(d['base_radius'])}, nose "
+            f"{mm(d['nose_radius'])}, lift {mm(d['lift'])}"
+            + (f", flanks {mm(d['flank_radius'])}" if d["flank_radius"] else "")
+            + f", angle of action {d['angle_of_action_deg']:.6g}°")
+    lines = [head, f"  nose axis at {d['nose_axis_deg']:.6g}°: the {d['part_in_contact']} "
+                   f"touches the {d['motion']} {d['follower']} follower "
+                   f"{d['follower_point']} (contact normal at "
+                   f"{d['contact_normal_deg']:.6g}°)"]
+    if d["motion"] == "oscillating":
+        lines.append(f"  the arm's angle: {d['arm_angle_deg']:.6g}°")
+    else:
+        lines.append(f"  the follower's displacement along the stroke: "
+                     f"{mm(d['displacement'])} ({mm(d['lift_from_dwell'])} above its dwell)")
+    return lines

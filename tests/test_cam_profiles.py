@@ -494,3 +494,20 @@ def test_the_space_diagram_draws_the_whole_profile_touching_the_roller():
               for p in outline.points)
     assert gap == pytest.approx(roller.r, abs=0.05)          # mm of paper (the outline's chords)
     assert any(it.cls == "cam-contact-part" for it in items)
+
+
+def test_solve_reports_the_profile_found_and_the_part_in_contact(capsys):
+    """"Find the radius of the flanks": `solve` states the profile it found (R from the angle
+    of action) and the part in contact, in words and in JSON (`cam_profile`)."""
+    import json
+    from polygons.cli import main
+    case = ROOT / "cases" / "cam-profile-arc-flat-oscillating.toml"
+    assert main(["solve", str(case), "--no-steps"]) == 0
+    out = capsys.readouterr().out
+    assert "flanks 79.4 mm, angle of action 120°" in out
+    assert "the flank touches the oscillating flat follower R" in out
+    assert main(["solve", str(case), "--json"]) == 0
+    cam = json.loads(capsys.readouterr().out)["cam_profile"]
+    assert cam["flank_radius"] == pytest.approx(0.0794, rel=1e-12)
+    assert (cam["part_in_contact"], cam["motion"], cam["follower"]) == ("flank", "oscillating",
+                                                                        "flat")

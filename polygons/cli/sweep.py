@@ -69,7 +69,9 @@ def register(sub) -> None:
                        description="Solve a scene over a full input revolution (or its "
                                    "reachable range, reporting the limits), all positions at "
                                    "once; write CSV and plots of displacement, velocity and "
-                                   "acceleration of chosen points and ω/α of chosen links.")
+                                   "acceleration of chosen points and ω/α of chosen links. "
+                                   "A cam stated by its profile ([cam_profiles]): the "
+                                   "follower's displacement diagram over a turn of the cam.")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--steps", type=int, default=None,
                    help=f"positions over the cycle, 2 .. {MAX_STEPS:,} (default: [sweep] steps "
