@@ -511,3 +511,22 @@ def test_solve_reports_the_profile_found_and_the_part_in_contact(capsys):
     assert cam["flank_radius"] == pytest.approx(0.0794, rel=1e-12)
     assert (cam["part_in_contact"], cam["motion"], cam["follower"]) == ("flank", "oscillating",
                                                                         "flat")
+
+
+def test_the_oscillating_diagram_passes_through_the_case():
+    """The displacement diagram of the oscillating lever (cam_diagram.diagram, 72 angles): at
+    the case's 270° its row is the case's construction (the arm's angle, ω, α), the lever
+    rests on the base circle somewhere and moves on the flanks and the nose elsewhere."""
+    from polygons import cam_diagram
+    case = ROOT / "cases" / "cam-profile-arc-flat-oscillating.toml"
+    scene = load_scene(case)
+    sol = solve(scene)
+    rows = cam_diagram.diagram(scene, 72)
+    row = rows[54]
+    assert row.angle == pytest.approx(math.radians(270), rel=1e-15)
+    R, Qp = sol.points["R"].position, (0.070, 0.050)
+    assert row.s == pytest.approx(math.atan2(R[1] - Qp[1], R[0] - Qp[0]), rel=1e-12)
+    assert (row.v, row.a) == (pytest.approx(sol.links["QR"].omega, rel=1e-12),
+                              pytest.approx(sol.links["QR"].alpha, rel=1e-12))
+    assert {r.part for r in rows} == {"nose", "flank", "base circle"}
+    assert all(r.v == 0.0 and r.a == 0.0 for r in rows if r.part == "base circle")
