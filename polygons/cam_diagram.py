@@ -1,15 +1,15 @@
 """The displacement diagram of a cam stated by its profile ([cam_profiles]): at each cam angle
 the part in contact found and its equivalent linkage built (:mod:`polygons.cam_profiles`) and
 solved by the staged construction — a sweep cannot follow it, the linkage changing with the
-part.  Where there is no linkage the row says how it was found: the dwell on the base circle
-(at rest), a translating knife or roller on a tangent cam's straight flank (the closed form,
-:func:`polygons.cam_profiles.straight_flank_motion`)."""
+part (a translating knife or roller on a tangent cam's straight flank: the tangent mechanism,
+its closed form :func:`polygons.cam_profiles.straight_flank_motion` the tests' oracle).  Where
+there is no linkage the row says so: the dwell on the base circle (at rest)."""
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
-from .cam_profiles import TABLE, AXIS_KEY, contact, stated, straight_flank_motion
+from .cam_profiles import TABLE, AXIS_KEY, contact, stated
 from .errors import SceneError, UnsupportedError
 from .evaluate import solve
 from .scene import parse_scene
@@ -18,7 +18,7 @@ from .scene import parse_scene
 @dataclass(frozen=True)
 class Row:
     """One cam angle of the displacement diagram: the nose axis's angle (rad), the part in
-    contact, how the row was found (``by``: 'linkage', 'dwell', 'closed form'); a translating
+    contact, how the row was found (``by``: 'linkage', 'dwell'); a translating
     follower's displacement from the foot of O along the stroke (m; the roller's centre, the
     knife's edge, a flat face), its velocity and acceleration along the stroke; an oscillating
     follower's arm angle (rad, pivot → R), ω and α (CCW positive)."""
@@ -57,17 +57,17 @@ def _base(scene):
 def movable(data: dict, file: str):
     """The scene of ``data`` (parsed TOML with [cam_profiles]) restated at a cam angle where
     the follower moves on a part with a linkage (the stated angle, else the first of each
-    degree): a scene stated on the base circle or a translating follower's straight flank
-    refuses an instant, yet has a displacement diagram."""
+    degree): a scene stated on the base circle refuses an instant, yet has a displacement
+    diagram."""
     label, table, prof, fol, *_ = stated(data, file)
     try:
         return parse_scene(data, file=file)
     except SceneError as exc:
-        if "dwells" not in str(exc) and "straight flank" not in str(exc):
+        if "dwells" not in str(exc):
             raise
     for i in range(360):
         got = contact(prof, fol, math.radians(i))
-        if got.part in ("nose", "flank") or (got.part == "straight flank" and fol.oscillating):
+        if got.part != "base circle":
             return parse_scene({**data, "driver": {**data["driver"], "angle": f"{i} deg"}},
                                file=file)
     raise SceneError("the follower never leaves the base circle", file=file,
@@ -78,7 +78,7 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
     """The follower's displacement diagram over a turn of the cam of ``scene`` (a scene with
     [cam_profiles]) at ``steps`` nose-axis angles 0, 2π/steps, …: the part in contact found and
     its equivalent linkage built and solved; on the base circle the follower dwells (v = a =
-    0); a translating knife or roller on a straight flank by the closed form."""
+    0)."""
     if isinstance(steps, bool) or not isinstance(steps, int) or not \
             2 <= steps <= MAX_DIAGRAM_STEPS:
         raise UnsupportedError(f"steps must be a whole number 2 … {MAX_DIAGRAM_STEPS:,}",
@@ -94,10 +94,6 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
         if got.part == "base circle":
             rows.append(Row(axis, got.part, got.s, 0.0, 0.0, "dwell"))
             continue
-        if got.part == "straight flank" and not fol.oscillating:
-            s, v, a = straight_flank_motion(prof, fol, axis, drv.omega, drv.alpha)
-            rows.append(Row(axis, got.part, s, v, a, "closed form"))
-            continue
         here = {**data, "driver": {**data["driver"], "angle": f"{axis!r} rad"}}
         sol = solve(parse_scene(here, file=scene.file))
         if fol.oscillating:         # the arm's angle, ω and α from the construction
@@ -107,12 +103,12 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
             rows.append(Row(axis, got.part, math.atan2(p[1] - q[1], p[0] - q[0]), lk.omega,
                             lk.alpha))
             continue
-        sr = sol.slides[label]
         e = (math.cos(fol.stroke), math.sin(fol.stroke))
-        p = sol.points[label].position
+        pr = sol.points[label]       # the follower's block on its line of stroke
+        p, v, a = pr.position, pr.velocity, pr.acceleration
         s_along = (p[0] - o[0] - fol.foot[0]) * e[0] + (p[1] - o[1] - fol.foot[1]) * e[1]
         rows.append(Row(axis, got.part, s_along + (got.radius if fol.kind == "flat" else 0.0),
-                        sr.velocity, sr.acceleration))
+                        v[0] * e[0] + v[1] * e[1], a[0] * e[0] + a[1] * e[1]))
     return tuple(rows)
 
 

@@ -35,10 +35,10 @@ that instant:
   arm of [cams] arm);
 * a straight flank with an oscillating knife or roller → R a pin in a slot of the cam (∥ the
   flank, offset r₁ + roller from O) at the end of the arm QR;
-* a straight flank with a translating knife or roller (a pin in a slot of the cam and on a
-  fixed guide: not among the construction's groups) is refused at an instant; the
-  displacement diagram (:mod:`polygons.cam_diagram`) gives it by the closed form
-  s = (r₁ + r − b·N)/(e·N) and its derivatives.
+* a straight flank with a translating knife or roller → R a pin in that slot of the cam and a
+  block on the fixed line of stroke: the tangent mechanism (:mod:`polygons.dyads.slot_slider`);
+  :func:`straight_flank_motion` is its closed form s = (r₁ + r − b·N)/(e·N) and derivatives,
+  kept as the tests' oracle.
 
 :func:`contact` is the geometry alone (the tests, the diagram, the drawing); :func:`rewrite`
 turns a scene's ``[cam_profiles]`` into ``[links]``, ``[sliders]``, ``[slots]``, ``[cams]``
@@ -69,9 +69,10 @@ TABLES: tuple[Table, ...] = (
                  "part in contact at the driver's angle (the nose's axis) is found and the "
                  "equivalent linkage built: the driver's crank O → K (K: the part's centre of "
                  "curvature, rigid with the cam) and a [cams.R] entry, or a slot of the cam "
-                 "for a straight flank.  The follower dwelling on the base circle and a "
-                 "translating knife or roller on a straight flank are refused in words at an "
-                 "instant (`polygons sweep` gives the displacement diagram over a turn).", (
+                 "for a straight flank (a translating knife or roller: the tangent "
+                 "mechanism, a pin in the slot on the fixed line of stroke).  The follower "
+                 "dwelling on the base circle is refused in words at an instant (`polygons "
+                 "sweep` gives the displacement diagram over a turn).", (
         Key("base_radius", "quantity", "the base circle's radius r₁", example='"25 mm"',
             dimension="length", required=True),
         Key("nose_radius", "quantity", "the nose's radius r₂", example='"8 mm"',
@@ -637,12 +638,6 @@ def rewrite(data: dict, file: str) -> dict:
                          f"is at rest (v = 0, a = 0) and there is no equivalent linkage",
                          file=file, where=where)
     straight = got.part == "straight flank"
-    if straight and not fol.oscillating:
-        raise SceneError("the follower is on a straight flank of the tangent cam: a pin in a "
-                         "slot of the cam and on a fixed guide, not among the construction's "
-                         "groups; `polygons sweep` gives its displacement, velocity and "
-                         "acceleration over the turn (the closed form); the nose is served",
-                         file=file, where=where)
     out = dict(data)
     out[TABLE] = {label: {**table, AXIS_KEY: f"{axis!r} rad"}}     # kept for the drawing
     links = dict(data.get("links", {}))
@@ -665,6 +660,11 @@ def rewrite(data: dict, file: str) -> dict:
         out["slots"] = {**data.get("slots", {}),
                         label: {"lever": crank, "coincident": _fresh(label, data),
                                 "offset": f"{sense * (prof.base + rr)!r} m"}}
+        if not fol.oscillating:      # the pin also on the fixed guide: the tangent mechanism
+            b = (o[0] + fol.foot[0], o[1] + fol.foot[1])
+            out["sliders"] = {**data.get("sliders", {}),
+                              label: {"through": [f"{b[0]!r} m", f"{b[1]!r} m"],
+                                      "direction": f"{math.degrees(fol.stroke)!r} deg"}}
         out["links"] = links
         out["assembly"] = {**data.get("assembly", {}), label: near}
         return out

@@ -63,6 +63,14 @@ def closed_form(axis, follower, kind):
     if P is not None:
         parts.append(("flank", (P[0], side * P[1]), RF, phi_n, phi_b))
     parts.append(("base circle", (0.0, 0.0), R1, phi_b, math.pi))
+    if P is None and follower != "flat" and abs(phi) < phi_b:
+        # the book's tangent cam: on the flank x = p / cos θ, θ = β − |φ| the flank normal from
+        # the stroke, the contact p tan θ along the flank from the base circle (while on it)
+        p, theta = R1 + (RR if follower == "roller" else 0.0), phi_b - abs(phi)
+        if p * math.tan(theta) <= math.sqrt(d * d - (R1 - R2) ** 2):
+            c = math.cos(theta)
+            return ("straight flank", p / c, side * W * p * math.sin(theta) / c ** 2,
+                    W * W * p * (2 - c * c) / c ** 3)
     for name, c, rho, lo, hi in parts:
         cr = math.hypot(*c)
         gamma = math.atan2(c[1], c[0]) - phi         # the crank |c| from the stroke
@@ -89,7 +97,8 @@ def closed_form(axis, follower, kind):
 
 @pytest.mark.parametrize("follower,kind", [("roller", "circular arc"),
                                            ("knife", "circular arc"),
-                                           ("flat", "circular arc"), ("roller", "tangent")])
+                                           ("flat", "circular arc"), ("roller", "tangent"),
+                                           ("knife", "tangent")])
 def test_follower_over_a_turn_is_each_parts_closed_form(follower, kind):
     seen = set()
     for k in range(36):
@@ -97,12 +106,17 @@ def test_follower_over_a_turn_is_each_parts_closed_form(follower, kind):
         part, s, v, a = closed_form(axis, follower, kind)
         seen.add(part)
         text = scene_text(math.degrees(axis), follower, kind)
-        if part in ("base circle", "tangent flank"):
-            with pytest.raises(SceneError, match="dwells" if part == "base circle"
-                               else "straight flank"):
+        if part == "base circle":
+            with pytest.raises(SceneError, match="dwells"):
                 parse_scene(parse_toml(text, "cam.toml"), file="cam.toml")
             continue
         sol = solve(parse_scene(parse_toml(text, "cam.toml"), file="cam.toml"))
+        if part == "straight flank":    # the tangent mechanism: the block R on the stroke
+            r = sol.points["R"]
+            assert r.position[1] == pytest.approx(s, rel=1e-12), (k, part)
+            assert r.velocity[1] == pytest.approx(v, rel=1e-9, abs=1e-12), (k, part)
+            assert r.acceleration[1] == pytest.approx(a, rel=1e-9, abs=1e-9), (k, part)
+            continue
         # a flat face: R is the yoke's point under the centre of curvature, the face ρ beyond
         rho = {"nose": R2, "flank": RF}[part] if follower == "flat" else 0.0
         assert quantity(sol, "y(R)") + rho == pytest.approx(s, rel=1e-12), (k, part)
@@ -110,6 +124,7 @@ def test_follower_over_a_turn_is_each_parts_closed_form(follower, kind):
         assert quantity(sol, "as(R)") == pytest.approx(a, rel=1e-9, abs=1e-9), (k, part)
     assert {"nose", "base circle"} <= seen
     assert ("flank" in seen) == (kind == "circular arc")
+    assert ("straight flank" in seen) == (kind == "tangent")
 
 
 def test_the_parts_meet_smoothly_where_the_profile_changes():
@@ -357,14 +372,15 @@ def test_offset_and_oscillating_followers_touch_the_cam_and_move_as_it_turns(kin
 def test_a_translating_roller_on_a_straight_flank_is_the_books_closed_form():
     """Tangent cam, roller follower in line: on the flank x = (r₁ + r)(1 − cos θ)/cos θ,
     v = ω (r₁ + r) sin θ / cos² θ, a = ω² (r₁ + r)(2 − cos² θ)/cos³ θ, θ the cam's turn from
-    where the flank's normal lies along the stroke (the displacement diagram's rows)."""
+    where the flank's normal lies along the stroke (the displacement diagram's rows, built as
+    the tangent mechanism); with α too, straight_flank_motion's a = ω² s″ + α s′."""
     from polygons import cam_diagram
-    # stated on the flank: refused at the instant, restated for the diagram
-    scene = cam_diagram.movable(parse_toml(scene_text(60.0, "roller", "tangent"), "c.toml"),
-                                "c.toml")
+    from polygons.cam_profiles import contact, follower_of, profile_of, straight_flank_motion
+    data = parse_toml(scene_text(60.0, "roller", "tangent"), "c.toml")
+    scene = parse_scene(data, file="c.toml")          # stated on the flank: solved there
     d, _, beta, _ = geometry("tangent")
     rows = [r for r in cam_diagram.diagram(scene, 72) if r.part == "straight flank"]
-    assert rows and all(r.by == "closed form" for r in rows)
+    assert len(rows) >= 8 and all(r.by == "linkage" for r in rows)
     p = R1 + RR
     for r in rows:
         # the flank's normal at axis ± β; the stroke at 90°
@@ -373,10 +389,22 @@ def test_a_translating_roller_on_a_straight_flank_is_the_books_closed_form():
         rising = r.v > 0
         assert r.s - p == pytest.approx(p * (1 - math.cos(theta)) / math.cos(theta), rel=1e-12)
         assert abs(r.v) == pytest.approx(W * p * math.sin(theta) / math.cos(theta) ** 2,
-                                         rel=1e-12)
+                                         rel=1e-9)
         assert r.a == pytest.approx(W * W * p * (2 - math.cos(theta) ** 2)
-                                    / math.cos(theta) ** 3, rel=1e-12)
+                                    / math.cos(theta) ** 3, rel=1e-9)
         assert rising == (r.angle < math.pi / 2)
+    # speeding up at 40 rad/s², offset 7 mm, a knife: the construction against the closed form
+    text = (scene_text(62.0, "knife", "tangent").replace('sense = "CCW"', 'sense = "CCW"\n'
+            'alpha = "40 rad/s^2"\nalpha_sense = "CCW"') + 'offset = "7 mm"\n')
+    data = parse_toml(text, "c.toml")
+    r = solve(parse_scene(data, file="c.toml")).points["R"]
+    table, o = data["cam_profiles"]["R"], (0.0, 0.0)
+    prof, fol = profile_of(table, "c", "t"), follower_of(table, data["ground"], o, "c", "t")
+    assert contact(prof, fol, math.radians(62.0)).part == "straight flank"
+    s, v, a = straight_flank_motion(prof, fol, math.radians(62.0), W, 40.0)
+    assert (r.position[0], r.position[1]) == pytest.approx((-0.007, s), rel=1e-12)
+    assert r.velocity[1] == pytest.approx(v, rel=1e-9)
+    assert r.acceleration[1] == pytest.approx(a, rel=1e-9)
 
 
 def arc_cam(r1, r2, lift, R):
@@ -458,16 +486,14 @@ def test_the_new_cases_exact_answers_are_the_closed_forms():
 def test_sweep_of_a_cam_by_its_profile_writes_its_displacement_diagram(tmp_path, capsys):
     """`polygons sweep` on a [cam_profiles] scene: the displacement diagram as CSV (the lift
     from the dwell, the part and how each row was found) and a summary — a tangent cam stated
-    on its straight flank (refused at the instant) included; the sweep's other flags refused."""
+    on its straight flank included; the sweep's other flags refused."""
     from polygons.cli import main
     case = ROOT / "cases" / "cam-profile-tangent-roller.toml"
     flank = tmp_path / "flank.toml"
     flank.write_text(case.read_text().replace('\nangle = "90 deg"', '\nangle = "50 deg"'))
-    assert main(["solve", str(flank)]) == 1
-    assert "straight flank" in capsys.readouterr().err
     assert main(["sweep", str(flank), "--steps", "36", "--no-plot", "-o", str(tmp_path)]) == 0
     out = capsys.readouterr().out
-    assert "straight flank" in out and "(closed form)" in out and "lift: 19.882 mm" in out
+    assert "straight flank" in out and "closed form" not in out and "lift: 19.882 mm" in out
     rows = (tmp_path / "flank-cam.csv").read_text().splitlines()
     assert rows[0].startswith("cam angle [deg],part,found by,s [mm],lift [mm]")
     assert len(rows) == 37
