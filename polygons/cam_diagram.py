@@ -13,6 +13,7 @@ from .cam_profiles import TABLE, AXIS_KEY, contact, stated
 from .errors import SceneError, UnsupportedError
 from .evaluate import solve
 from .scene import parse_scene
+from .units import parse_quantity
 
 
 @dataclass(frozen=True)
@@ -31,12 +32,15 @@ class Row:
     by: str = "linkage"
 
 
+#: the force tables restated with the cam at each angle (they name the follower, O, ground)
+LOAD_TABLES = ("masses", "forces", "torques", "springs", "gravity")
 #: most cam angles of a displacement diagram (each a construction: ~1 ms)
 MAX_DIAGRAM_STEPS = 20_000
 
 
-def _base(scene):
-    """The scene's data restated for one cam angle (ground, cam table, driver's rates)."""
+def _base(scene, omega: float | None = None):
+    """The scene's data restated for one cam angle (ground, cam table, driver's rates; the
+    cam's speed ``omega`` in rad/s, CCW positive, for the scene's own)."""
     raw = scene.extra.get(TABLE)
     if not raw:
         raise UnsupportedError("the scene states no cam by its profile ([cam_profiles])",
@@ -44,14 +48,49 @@ def _base(scene):
     (label, table), = raw.items()
     table = {k: v for k, v in table.items() if k != AXIS_KEY}
     drv = scene.driver
+    w = drv.omega if omega is None else omega
     ground = {g: [f"{p[0]!r} m", f"{p[1]!r} m"] for g, p in scene.ground.items()}
-    data = {"ground": ground, TABLE: {label: table},
+    loads = {t: scene.extra[t] for t in LOAD_TABLES if t in scene.extra}
+    data = {**loads, "ground": ground, TABLE: {label: table},
             "driver": {"crank": drv.link, "angle": "0 deg",
-                       "omega": f"{abs(drv.omega)!r} rad/s",
-                       "sense": "CW" if drv.omega < 0 else "CCW",
+                       "omega": f"{abs(w)!r} rad/s",
+                       "sense": "CW" if w < 0 else "CCW",
                        "alpha": f"{abs(drv.alpha)!r} rad/s^2",
                        "alpha_sense": "CW" if drv.alpha < 0 else "CCW"}}
     return data
+
+
+def has_profile(scene) -> bool:
+    """Whether ``scene`` states a cam by its profile ([cam_profiles])."""
+    return bool(scene.extra.get(TABLE))
+
+
+def nose_axis(scene) -> float:
+    """The stated cam angle (the nose axis's, rad) of a scene with [cam_profiles]."""
+    (table,) = scene.extra[TABLE].values()
+    return parse_quantity(table[AXIS_KEY], "angle", file=scene.file, where=TABLE)
+
+
+def scene_at(scene, axis: float, omega: float | None = None):
+    """The scene of a cam stated by its profile restated at the nose axis ``axis`` (rad; the
+    cam's speed ``omega``, rad/s CCW +, for the scene's): the part in contact found and its
+    equivalent linkage built; None where the follower dwells on the base circle (no
+    linkage).  Only the cam, its follower and the driver are restated."""
+    data = _base(scene, None if omega is None else float(omega))
+    data["driver"]["angle"] = f"{float(axis)!r} rad"
+    try:
+        return parse_scene(data, file=scene.file)
+    except SceneError as exc:
+        if "dwells" in str(exc):
+            return None
+        raise
+
+
+def part_at(scene, axis: float) -> tuple[str, int]:
+    """The part of the profile in contact (its name and side) with the nose axis at ``axis``."""
+    label, table, prof, fol, *_ = stated(_base(scene), scene.file)
+    got = contact(prof, fol, float(axis))
+    return got.part, got.side
 
 
 def movable(data: dict, file: str):
@@ -112,4 +151,5 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
     return tuple(rows)
 
 
-__all__ = ["Row", "diagram", "movable", "MAX_DIAGRAM_STEPS"]
+__all__ = ["Row", "diagram", "movable", "has_profile", "nose_axis", "scene_at", "part_at",
+           "MAX_DIAGRAM_STEPS"]

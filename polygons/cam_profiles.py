@@ -619,6 +619,36 @@ def stated(data: dict, file: str):
     return label, table, prof, fol, centre_o, o, drv["crank"], k
 
 
+def _loads_on_the_cam(data: dict, crank: str, k: str, file: str) -> None:
+    """The force tables on a cam by its profile, checked: the crank O → K is the equivalent
+    linkage's (K the part's centre of curvature, found at each angle), not the cam — its
+    mass only at O with an inertia of its own (not a rod's of OK), and nothing at K."""
+    masses = data.get("masses")
+    spec = masses.get(crank) if isinstance(masses, dict) else None
+    if isinstance(spec, dict):
+        c = spec.get("centre", "0.5")
+        try:
+            at_o = float(c) == 0.0
+        except (TypeError, ValueError):
+            at_o = isinstance(c, str) and _q(c, "length", file, f"masses.{crank}.centre") == 0
+        own = "radius_of_gyration" in spec or spec.get("inertia", "rod") != "rod"
+        if not (at_o and own) or "centre_left" in spec:
+            raise SceneError(f"[masses.{crank}] on a cam stated by its profile: {crank} is the "
+                             f"equivalent linkage's crank (O to the centre of curvature {k} "
+                             f"found at each angle), not the cam: give the cam's mass at its "
+                             f"centre (centre = \"0\") with its own inertia "
+                             f"(radius_of_gyration, inertia = \"disc\" or a value)",
+                             file=file, where=f"masses.{crank}")
+    for tab in ("masses", "forces", "springs"):
+        for name, entry in (data.get(tab) or {}).items() if isinstance(data.get(tab),
+                                                                        dict) else ():
+            if isinstance(entry, dict) and k in (entry.get("at"), entry.get("a"),
+                                                 entry.get("b")):
+                raise SceneError(f"{k} is the centre of curvature of the part in contact, "
+                                 f"found at each cam angle, no point of the cam's own: nothing "
+                                 f"can act at it", file=file, where=f"{tab}.{name}")
+
+
 def rewrite(data: dict, file: str) -> dict:
     """``data`` with its [cam_profiles.R] replaced by its equivalent linkage at the driver's
     angle (see the module docstring)."""
@@ -626,6 +656,7 @@ def rewrite(data: dict, file: str) -> dict:
         return data
     label, table, prof, fol, centre_o, o, crank, k = stated(data, file)
     where = f"{TABLE}.{label}"
+    _loads_on_the_cam(data, crank, k, file)
     drv = data["driver"]
     axis = _q(drv["angle"], "angle", file, "driver.angle")
     try:

@@ -556,3 +556,67 @@ def test_the_oscillating_diagram_passes_through_the_case():
                               pytest.approx(sol.links["QR"].alpha, rel=1e-12))
     assert {r.part for r in rows} == {"nose", "flank", "base circle"}
     assert all(r.v == 0.0 and r.a == 0.0 for r in rows if r.part == "base circle")
+
+
+def test_the_tangent_flank_case_is_the_books_closed_form():
+    """cam-profile-tangent-flank (Khurmi's tangent cam, part (1)): on the flank, as the
+    tangent mechanism, y = p / cos θ, v = ω p sin θ / cos² θ, a = ω² p (2 − cos² θ)/cos³ θ
+    (p = r₁ + r, θ = the nose axis − 45°); its questions: the speed and the acceleration are
+    greatest where the flanks end (tan θ = l / p, l = (r₁ − r₂) tan β the flank's length),
+    the acceleration there the nose's slider-crank's (crank d, rod r₂ + r) — against the
+    case's exact and `ask`; the cam's torque greatest there too; the follower's slide, a
+    spring stated at this instant, the cam's mass on OK and a load at K refused in one line."""
+    from polygons import conditions
+    from polygons.scene import load_scene
+    case = ROOT / "cases" / "cam-profile-tangent-flank.toml"
+    w, p, beta = 180 * 2 * math.pi / 60, 0.084, math.pi / 4
+    d = (0.060 - 0.012) / math.cos(beta)
+    th = math.radians(74.74488) - beta
+    c = math.cos(th)
+    want = {"y(R)": p / c * 1e3, "v(R)": w * p * math.sin(th) / c ** 2,
+            "a(R)": w * w * p * (2 - c * c) / c ** 3}
+    scene = load_scene(case)
+    sol = solve(scene)
+    assert [e for e in scene.equivalents if "cam" in e.kind] == []     # no [cams]: the slot
+    for ans in scene.answers:
+        assert ans.exact == pytest.approx(want[ans.quantity], rel=1e-12), ans.quantity
+        factor = 1e3 if ans.unit == "mm" else 1.0
+        assert quantity(sol, ans.quantity) * factor == pytest.approx(want[ans.quantity],
+                                                                     rel=1e-9)
+    the = math.atan(d * math.sin(beta) / p)          # the flank's end
+    edges = [math.degrees(beta + the), 180 - math.degrees(beta + the)]
+    g, L = beta - the, 0.012 + 0.024                  # the nose's crank from the stroke
+    S = math.sqrt(L * L - (d * math.sin(g)) ** 2)
+    a_nose = w * w * (d * math.cos(g) + d * d * math.cos(2 * g) / S
+                      + d ** 4 * (math.sin(g) * math.cos(g)) ** 2 / S ** 3)
+    v_end = w * p * math.sin(the) / math.cos(the) ** 2
+    for fd, value in zip(conditions.answer_all(scene), (v_end, a_nose)):
+        q = fd.question
+        assert list(q.exact) == pytest.approx(edges, rel=1e-12)
+        assert list(q.value_exact) == pytest.approx([value] * 2, rel=1e-12)
+        assert list(fd.reported()) == pytest.approx(edges, rel=1e-10)
+        assert list(fd.values()) == pytest.approx([value] * 2, rel=1e-9)
+        c = conditions.check(fd)
+        assert c.exact_ok and c.value_ok
+    import tomllib
+    data = tomllib.loads(case.read_text(encoding="utf-8"))
+    # the cam's torque over the turn against a 80 N spring load and a 1.5 kg follower: the
+    # greatest at the flank's end (rising), T ω = (F + m a) v there
+    data |= {"masses": {"R": {"mass": "1.5 kg"}},
+             "forces": {"Spring": {"at": "R", "force": ["0 N", "-80 N"]}},
+             "questions": [{"find": "angle", "quantity": "Tin", "condition": "max",
+                            "unit": "deg", "samples": 24}]}
+    a_end = w * w * p * (2 - math.cos(the) ** 2) / math.cos(the) ** 3
+    (fd,) = conditions.answer_all(parse_scene(data, file=str(case)))
+    assert list(fd.reported()) == pytest.approx(edges[:1], rel=1e-10)
+    assert list(fd.values()) == pytest.approx([(80 + 1.5 * a_end) * v_end / w], rel=1e-9)
+    for quantity_, change, words in (
+            ("as(R)", {}, "slot on a straight flank"),
+            ("Tin", {"springs": {"S": {"at": "R", "stiffness": "1 N/mm", "direction": "90 deg",
+                                       "extension": "-5 mm"}}}, "at this instant only"),
+            ("Tin", {"masses": {"OK": {"mass": "2 kg"}}}, r"masses.OK\] on a cam"),
+            ("Tin", {"forces": {"P": {"at": "K", "force": ["1 N", "0 N"]}}}, "no point of")):
+        bad = {**data, **change, "questions": [{"find": "angle", "quantity": quantity_,
+                                                "condition": "max", "unit": "deg"}]}
+        with pytest.raises(SceneError, match=words):
+            conditions.answer_all(parse_scene(bad, file=str(case)))
