@@ -636,7 +636,7 @@ def _loads_on_the_cam(data: dict, crank: str, k: str, file: str) -> None:
             raise SceneError(f"[masses.{crank}] on a cam stated by its profile: {crank} is the "
                              f"equivalent linkage's crank (O to the centre of curvature {k} "
                              f"found at each angle), not the cam: give the cam's mass at its "
-                             f"centre (centre = \"0\") with its own inertia "
+                             f"centre (centre = \"0 mm\") with its own inertia "
                              f"(radius_of_gyration, inertia = \"disc\" or a value)",
                              file=file, where=f"masses.{crank}")
     for tab in ("masses", "forces", "springs"):
