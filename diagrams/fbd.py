@@ -203,7 +203,7 @@ def drawings(an: Analysis):
                 arcs += list(zip(arc, arc[1:]))
                 head, shaft = arrow_head(arc[-2], arc[-1], length=2.2, half=0.8)
                 arrows.append(Arrow(arc[-2], arc[-1], "vector", head, shaft, name=cpl.name,
-                                    role="known", title=f"{cpl.name} {_fmt(abs(cpl.value))} N m"))
+                                    role="arc", title=f"{cpl.name} {_fmt(abs(cpl.value))} N m"))
                 texts.append((f"{cpl.name} {_fmt(abs(cpl.value))} N m "
                               f"{'CCW' if cpl.value > 0 else 'CW'}", c, 2.5, "label", "normal",
                               "arc"))

@@ -142,8 +142,10 @@ def _place_insets(lay: Layout) -> Layout:
     near = _crowded(lay)
     boxes = ([v[3] for v in lay.vertex_labels] + [v[3] for v in lay.line_labels.values()]
              + [v[3] for v in lay.vector_labels.values()])
+    vectors = [(st.frm, st.to) for st, _ in _geometry(lay) if st.kind == "arrow"]
     found = inset.plan(pts, _paper_segments(lay), boxes, lay.frame, _inset_size(lay), near,
-                       lambda n: con.pole_label if n == con.pole else n)
+                       lambda n: con.pole_label if n == con.pole else n, vectors,
+                       lay.size(inset.CAPTION_SIZE))
     return replace(lay, insets=tuple(found))
 
 
@@ -163,10 +165,14 @@ def _drawn(lay: Layout, st: Stroke, g):
     return ((g[0][0] + d[0], g[0][1] + d[1]), (g[1][0] + d[0], g[1][1] + d[1]))
 
 
-def _geometry(lay: Layout):
-    """Paper geometry of every stroke: arrows (tail, tip), line chords, offsets, sides."""
+def _geometry(lay: Layout, every: bool = False):
+    """Paper geometry of every drawn stroke: arrows (tail, tip), line chords, offsets, sides;
+    an arrow shorter than :data:`diagrams.inset.ZERO_MM` is not drawn (no inset can show it:
+    the legend says '≈ 0'), ``every`` includes it."""
     out = []
     for st in lay.con.strokes:
+        if not every and _ghost(lay, st):
+            continue
         if st.kind == "line":
             a = lay.P(st.a)
             chord = clip_line(a, st.b, lay.frame)
@@ -174,6 +180,11 @@ def _geometry(lay: Layout):
         else:
             out.append((st, (lay.P(st.a), lay.P(st.b))))
     return out
+
+
+def _ghost(lay: Layout, st: Stroke) -> bool:
+    """True for a vector too short to draw at the drawing's scale (:data:`inset.ZERO_MM`)."""
+    return st.kind == "arrow" and math.dist(lay.P(st.a), lay.P(st.b)) < inset.ZERO_MM
 
 
 def _place_labels(lay: Layout) -> Layout:
@@ -632,7 +643,7 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     asked = asked_vectors(lay.con)
     asked_m = {a.measure for a in lay.con.asked if a.measure is not None}
     vectors: list[tuple[str, str]] = []
-    for st, g in _geometry(lay):
+    for st, g in _geometry(lay, every=True):
         if st.kind != "arrow":
             continue
         if (st.frm, st.to) in seen:
@@ -642,6 +653,14 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         val = sc.si(mm) / sc.factor
         what = "Coriolis 2ωv" if st.component == "coriolis" else st.label
         mark = "\u2003← asked" if (st.frm, st.to) in asked else ""
+        if _ghost(lay, st):        # too short for any inset: said, not drawn
+            if mm < 0.005:
+                text = f"{vector(st.frm, st.to)} = 0 (a point: not drawn)"
+            else:
+                text = (f"{vector(st.frm, st.to)} ≈ 0 ({mm:.2f} mm at this scale: "
+                        f"{number(val, 3)} {display(sc.unit)}, not drawn)")
+            vectors.append((f"{text}  {what}{mark}", "bold" if mark else "normal"))
+            continue
         vectors.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
                         f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
     for a in lay.con.asked:
@@ -742,7 +761,7 @@ def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:
     con = lay.con
     notes = []
     sc = lay.scale
-    for st, g in _geometry(lay):
+    for st, g in _geometry(lay, every=True):
         if st.step != s.number:
             continue
         if st.kind == "offset":
