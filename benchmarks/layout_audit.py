@@ -67,9 +67,11 @@ def drawings_of(path: Path, handout: bool = True):
     for name, d in figs.drawing.items():
         if d.stage is None:
             t = plate(d)
-            yield f"handout-{d.kind}", name, to_svg(t), min(1.0, PAGE[0] / t.width)
+            yield (f"handout-{d.kind}", f"handout:{name}", to_svg(t),
+                   min(1.0, PAGE[0] / t.width))
         else:
-            yield "handout-stages", name, figs.svg[name], stage_width(d.width, d.height) / d.width
+            yield ("handout-stages", f"handout:{name}", figs.svg[name],
+                   stage_width(d.width, d.height) / d.width)
 
 
 def audit(paths, handout: bool = True):

@@ -82,6 +82,19 @@ def _insets(root) -> list[tuple[Pt, float, Pt, float]]:
     return out
 
 
+_DESCENDERS = set("gjpqyQ(),;[]{}|µ")
+_TALL = set("ABCDEFGHIJKLMNOPQRSTUVWXYZbdfhklt0123456789()[]{}|/!?%&#$@'\"ωαθΔΣ√⊥∥′″°²³")
+
+
+def _ink(text: str) -> tuple[float, float]:
+    """(height above the baseline, depth below it) of the ink of ``text``, × font size: a
+    run of x-height letters (a, n, c) stands 0.56 high, one with a capital, a digit or an
+    ascender :data:`ASCENT`; only descenders (g, p, y, brackets) go below the baseline."""
+    up = ASCENT if any(ch in _TALL for ch in text) else 0.56
+    down = DESCENT if any(ch in _DESCENDERS for ch in text) else 0.02
+    return up, down
+
+
 def _text_box(t) -> tuple[str, float, list]:
     """(text, font size, boxes) of one ``<text>``: a box for each of its runs (a sub- or
     superscript is its own box, shifted and smaller), set one after another."""
@@ -100,7 +113,8 @@ def _text_box(t) -> tuple[str, float, list]:
         base += dy
         w = plain_width(text, sz)
         if text.strip():
-            spans.append((pen, base - ASCENT * sz, pen + w, base + DESCENT * sz))
+            up, down = _ink(text)
+            spans.append((pen, base - up * sz, pen + w, base + down * sz))
         pen += w
     anchor = t.get("text-anchor") or "start"
     x0 = {"start": x, "middle": x - pen / 2, "end": x - pen}.get(anchor, x)
@@ -134,8 +148,10 @@ def measure(svg: bytes | str, name: str = "", reduction: float = 1.0,
         mm = math.dist(tail, tip)
         shown = None
         if mm < min_mm:
+            # its vertices' middle (one drawn beside a collinear vector is moved off them)
+            mid = ((tail[0] + tip[0]) / 2 - sx, (tail[1] + tip[1]) / 2 - sy)
             for c, r, _, R in insets:
-                if math.dist(tail, c) <= r + 1e-6 and math.dist(tip, c) <= r + 1e-6:
+                if math.dist(mid, c) <= r + 1e-6:
                     shown = max(shown or 0.0, mm * R / r)
         parent = _label_of(root, g)
         out.vectors.append((parent, round(mm, 3), None if shown is None else round(shown, 3)))

@@ -75,6 +75,12 @@ def _factor(points: list[Pt], near: float, vectors=()) -> int:
     return FACTORS[-1]
 
 
+def largest_factor(r: float) -> int:
+    """The largest enlargement a ring of radius ``r`` (mm) may have: its inset no wider than
+    :data:`MAX_RADIUS_FOR_VECTORS`."""
+    return max([k for k in FACTORS if k * r <= MAX_RADIUS_FOR_VECTORS] or [FACTORS[0]])
+
+
 def _vector_factor(vectors) -> int:
     """The least round enlargement that draws every one of ``vectors`` (mm) at least
     :data:`MIN_VECTOR_MM` long."""

@@ -63,6 +63,7 @@ class Layout:
     shifts: dict = field(default_factory=dict)   # (step, frm, to) -> (dx, dy) mm: drawn beside
     insets: tuple = ()               # diagrams.inset.Inset: tight clusters drawn enlarged
     leaders: tuple = ()              # (step, (frm, to), (a, b)): a vector's name led to it
+    ghosts: frozenset = frozenset()  # (frm, to) of the vectors too short for any inset
 
     def size(self, base: float) -> float:
         return round(base * self.text_scale, 3)
@@ -106,6 +107,7 @@ def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
     w, h = extent[0] * k, extent[1] * k
     frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
     lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {}, text_scale)
+    lay = replace(lay, ghosts=_ghosts(lay))
     vecs = [((st.step, st.frm, st.to), g[0], g[1]) for st, g in _geometry(lay)
             if st.kind == "arrow"]
     lay = replace(lay, shifts=crowd.shifts(vecs, frame.centre))
@@ -183,8 +185,33 @@ def _geometry(lay: Layout, every: bool = False):
 
 
 def _ghost(lay: Layout, st: Stroke) -> bool:
-    """True for a vector too short to draw at the drawing's scale (:data:`inset.ZERO_MM`)."""
-    return st.kind == "arrow" and math.dist(lay.P(st.a), lay.P(st.b)) < inset.ZERO_MM
+    """True for a vector too short to draw at the drawing's scale (:func:`_ghosts`)."""
+    return st.kind == "arrow" and (st.frm, st.to) in lay.ghosts
+
+
+def _ghosts(lay: Layout) -> frozenset:
+    """(frm, to) of every vector no inset can draw :data:`inset.MIN_VECTOR_MM` long: shorter
+    than :data:`inset.ZERO_MM`, or than the rule at the largest enlargement its cluster's
+    ring allows (:func:`inset.largest_factor`), or with its ends drawn as one point (nearer
+    than 0.6 mm: no ring).  They are not drawn; the legend gives each
+    as '≈ 0 (x mm at this scale)'."""
+    pts = _paper_points(lay)
+    out = set()
+    rings = inset.rings(pts, _crowded(lay))
+    for st in lay.con.strokes:
+        if st.kind != "arrow":
+            continue
+        L = math.dist(lay.P(st.a), lay.P(st.b))
+        if L < inset.ZERO_MM:
+            out.add((st.frm, st.to))
+            continue
+        if L >= inset.MIN_VECTOR_MM:
+            continue
+        ring = next((r for names, _, r in rings if st.frm in names and st.to in names), None)
+        # (no ring: its ends are drawn as one point, one label 'b₁ = s₁')
+        if ring is None or L * inset.largest_factor(ring) < inset.MIN_VECTOR_MM:
+            out.add((st.frm, st.to))
+    return frozenset(out)
 
 
 def _place_labels(lay: Layout) -> Layout:
