@@ -35,18 +35,21 @@ def kind_of(name: str, d) -> str:
     return getattr(d, "kind", None) or name.split("-")[0]
 
 
-def drawings_of(path: Path, handout: bool = True):
-    """(kind, name, svg bytes, reduction) of every drawing of one case."""
+def drawings_of(path: Path, handout: bool = True, forces: bool = True, stages: bool = True):
+    """(kind, name, svg bytes, reduction) of every drawing of one case (``forces``: its
+    force polygons, Zhukovsky's lever and free bodies too; ``handout``: its figures)."""
     import diagrams
     from diagrams.svg import to_svg
     from polygons.api import solve
     from polygons.errors import PolygonsError
     sol = solve(str(path)).solution
     klein = sol.scene.options.diagram.klein
-    for d in diagrams.drawings(sol, None, None, True, klein=klein):
+    for d in diagrams.drawings(sol, None, None, stages, klein=klein):
         kind = "klein" if d.name.startswith("klein") else kind_of(d.name, d)
         yield kind, d.name, to_svg(d), 1.0
     try:
+        if not forces:
+            raise PolygonsError("")
         from polygons.forces import analyse, has_forces
         scene = sol.scene
         if has_forces(scene):
