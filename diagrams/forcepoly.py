@@ -22,6 +22,7 @@ from polygons.forces import effort as effort_mod
 from polygons.forces import graphical, zhukovsky
 
 from .components import LOOKS
+from .inset import MIN_VECTOR_MM
 
 KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load",
              "spring": "force-load", "torque": "force-load", "friction": "force-load",
@@ -184,8 +185,12 @@ def _drawings(groups, fp, st):
         big = max(float(np.hypot(*s[1])) for s in seq)
         if big == 0.0:
             continue
-        fscale = Scale("force", round_up(big * 10.0 / 90.0), "N", 1.0)
+        small = min(float(np.hypot(*s[1])) for s in seq if float(np.hypot(*s[1])) > 0)
+        fscale = Scale("force", force_scale(big, small), "N", 1.0)
         k = fscale.mm_per_si
+        # a force too short to draw at this scale: said in the legend, not drawn
+        ghosts = {i for i, s in enumerate(seq)
+                  if 0 < float(np.hypot(*s[1])) * k < MIN_VECTOR_MM}
         verts = [np.zeros(2)]
         for s in seq:
             verts.append(verts[-1] + s[1] * k)
@@ -214,7 +219,7 @@ def _drawings(groups, fp, st):
                 if stage is not None and sst > stage:
                     continue
                 tail, tip = tuple(map(float, verts[i])), tuple(map(float, verts[i + 1]))
-                if math.dist(tail, tip) < 1e-6:
+                if math.dist(tail, tip) < 1e-6 or i in ghosts:
                     continue
                 new = stage is not None and sst == stage
                 head, shaft = arrow_head(tail, tip)
@@ -309,6 +314,9 @@ def _drawings(groups, fp, st):
             if lines and (stage is None or stage == _closing_stage(g)):
                 key.append(("construction", "line of known direction", False))
             legend = [(s[4], "normal") for s in seq if stage is None or s[3] <= stage]
+            legend += [(f"{seq[i][0]} ≈ 0 ({float(np.hypot(*seq[i][1])) * k:.2f} mm at this "
+                        f"scale: {_fmt(float(np.hypot(*seq[i][1])))} N, not drawn)", "normal")
+                       for i in sorted(ghosts) if stage is None or seq[i][3] <= stage]
             legend += [(m, "normal") for m in g.moments]
             if g.kind == "crank":
                 legend.append((f"input torque T = {abs(fp.effort):.5g} N m "
@@ -344,6 +352,25 @@ def _drawings(groups, fp, st):
                 content_box=box, legend=legend, scale=fscale, caption=[cap],
                 scale_statement=fscale.statement, meta={}, key=key)))
     return out
+
+
+#: the longest force of a polygon is drawn this long (mm) ...
+FORCE_MM = 90.0
+#: ... or up to this long, so that its shortest force is drawn MIN_VECTOR_MM long
+MAX_FORCE_MM = 160.0
+
+
+def force_scale(big: float, small: float) -> float:
+    """The round force scale (N per cm) of a polygon whose longest force is ``big`` and
+    shortest ``small`` (N): the longest :data:`FORCE_MM` long, or longer, up to
+    :data:`MAX_FORCE_MM`, at the coarsest round scale drawing the shortest
+    :data:`diagrams.inset.MIN_VECTOR_MM` long (one still shorter is said in the legend)."""
+    from .figures import round_down
+    from .scale import round_up
+    usual = round_up(big * 10.0 / FORCE_MM)
+    finest = round_up(big * 10.0 / MAX_FORCE_MM)
+    want = round_down(small * 10.0 / MIN_VECTOR_MM)
+    return min(usual, max(finest, want))
 
 
 def _stage_caption(g, stage, nst) -> str:
