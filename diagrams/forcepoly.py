@@ -74,7 +74,8 @@ def _known_item(k, stage):
 
 
 def _moments_item(t, stage):
-    return (t.name, t.force, "force-moments", stage, f"{t.name}: {_fmt(t.value)} N (by moments)")
+    return (t.name, t.force, "force-moments", stage,
+            f"{t.name}: {graphical.found_words(t)} (by moments)")
 
 
 def _closing_item(f, stage):
@@ -198,8 +199,9 @@ def _drawings(groups, fp, st):
         nst = max(s[3] for s in seq) + (1 if diag else 0)
         for stage in list(range(1, nst + 1)) + [None]:
             if stage is not None and not (diag and stage == nst) and not any(
-                    s[3] == stage and float(np.hypot(*s[1])) > 0 for s in seq):
-                continue                      # nothing to draw at this stage (massless)
+                    s[3] == stage and float(np.hypot(*s[1])) > 0 and i not in ghosts
+                    for i, s in enumerate(seq)):
+                continue           # nothing to draw at this stage (massless, or too small)
             arrows, labels, extra = [], [], []
             placed = []
             lo = np.min(np.array(verts), axis=0) - 8.0

@@ -24,7 +24,7 @@ FACTORS = (2, 3, 4, 5, 6, 8, 10, 15, 20)
 #: the inset's radius is at most this (mm) ...
 MAX_RADIUS = 26.0
 #: ... unless a larger one is what shows its shortest vector :data:`MIN_VECTOR_MM` long
-MAX_RADIUS_FOR_VECTORS = 40.0
+MAX_RADIUS_FOR_VECTORS = 30.0
 CAPTION_SIZE = 2.6
 #: the layout rule: no vector drawn shorter than this (mm), on the drawing or in its inset
 #: (diagrams.audit measures it on the SVG)
@@ -114,14 +114,14 @@ def chords(c: Pt, r: float, n: int = 32) -> list[tuple[Pt, Pt]]:
 
 
 def plan(points: dict, segments: list, boxes: list, frame: Box, label_size: float,
-         near: float, names_of=lambda n: n, vectors=(), caption_size: float = CAPTION_SIZE
-         ) -> list[Inset]:
+         near: float, names_of=lambda n: n, vectors=(), caption_size: float = CAPTION_SIZE,
+         max_radius: float = MAX_RADIUS_FOR_VECTORS) -> list[Inset]:
     """The insets of a drawing: ``points`` {vertex: paper point}; ``segments`` every drawn
     stroke (a, b) and ``boxes`` every label box (mm) an inset must keep clear of; ``frame``
     the drawing's frame; ``near`` the distance under which vertices crowd; ``names_of`` the
     label of a vertex (the pole's aliases); ``vectors`` the (tail, tip) vertex names of the
     drawn vectors: one inside a ring is drawn :data:`MIN_VECTOR_MM` long in its inset, the
-    inset's radius allowed up to :data:`MAX_RADIUS_FOR_VECTORS` for it."""
+    inset's radius allowed up to ``max_radius`` for it."""
     out: list[Inset] = []
     taken = list(boxes)
     for names, c, r in rings(points, near):
@@ -133,10 +133,10 @@ def plan(points: dict, segments: list, boxes: list, frame: Box, label_size: floa
         k = _factor(pts, near, lens)
         need = _vector_factor(lens)
         while k > FACTORS[0] and k * r > MAX_RADIUS and (
-                k > need or k * r > MAX_RADIUS_FOR_VECTORS):
+                k > need or k * r > max_radius):
             k = FACTORS[FACTORS.index(k) - 1]
         R = round(k * r, 3)
-        cap_h = (caption_size + 1.0)
+        cap_h = (caption_size + 1.0) if caption_size > 0 else 0.0
         corners = [(frame.x1 - R - 1.0, frame.y1 - R - 1.0), (frame.x0 + R + 1.0, frame.y1 - R - 1.0),
                    (frame.x1 - R - 1.0, frame.y0 + R + cap_h + 1.0),
                    (frame.x0 + R + 1.0, frame.y0 + R + cap_h + 1.0)]
@@ -198,7 +198,8 @@ def _labels(ins: Inset, points: dict, segments, boxes, size: float, names_of) ->
     for g in groups:
         p = ins.show(points[g[0]])
         placer.block(Box(p[0] - 0.8, p[1] - 0.8, p[0] + 0.8, p[1] + 0.8))
-    text = f"detail ×{ins.k}"           # the caption first: no vertex label on it
+    # the caption first: no vertex label on it (none on a figure printed reduced: size 0)
+    text = f"detail ×{ins.k}" if ins.caption_size > 0 else ""
     cs = ins.caption_size
     tb = text_box(C[0], C[1] - R - 1.0 - cs * 0.76, text, cs, "middle")
     caption = (text, C[0], C[1] - R - 1.0 - cs * 0.76, tb)
@@ -284,8 +285,9 @@ def labels(ins: Inset, visible, size: float, old=()):
             if lead is not None:
                 out.append(Segment(lead[0], lead[1], "leader", faded, cls="inset-leader"))
     text, x, base, _ = ins.caption
-    out.append(Text(x, base, text, ins.caption_size, "middle", role="inset",
-                    cls="inset-caption"))
+    if text:
+        out.append(Text(x, base, text, ins.caption_size, "middle", role="inset",
+                        cls="inset-caption"))
     return out
 
 

@@ -147,7 +147,16 @@ def _place_insets(lay: Layout) -> Layout:
     vectors = [(st.frm, st.to) for st, _ in _geometry(lay) if st.kind == "arrow"]
     found = inset.plan(pts, _paper_segments(lay), boxes, lay.frame, _inset_size(lay), near,
                        lambda n: con.pole_label if n == con.pole else n, vectors,
-                       lay.size(inset.CAPTION_SIZE))
+                       # a figure printed reduced (labels set larger: a handout's stage
+                       # thumbnail) has no caption: at its size it took a fifth of the
+                       # figure, 2.6 mm it printed 0.5 mm high; the finished plate has it
+                       inset.CAPTION_SIZE if lay.text_scale <= 1.0 else 0.0,
+                       # a stage figure printed reduced in a handout's column (labels set
+                       # larger): its inset no larger than usual -- the rule is the
+                       # finished drawing's (NOT DONE: thumbnails' insets may show a
+                       # vector under 3 mm, as before)
+                       inset.MAX_RADIUS_FOR_VECTORS if lay.text_scale <= 1.0
+                       else inset.MAX_RADIUS)
     return replace(lay, insets=tuple(found))
 
 
