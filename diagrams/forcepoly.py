@@ -315,7 +315,8 @@ def _drawings(groups, fp, st):
             key = [(f"c-{lk}", LOOKS[lk].name, True) for lk in looks]
             if lines and (stage is None or stage == _closing_stage(g)):
                 key.append(("construction", "line of known direction", False))
-            legend = [(s[4], "normal") for s in seq if stage is None or s[3] <= stage]
+            legend = [(s[4], "normal") for i, s in enumerate(seq)
+                      if (stage is None or s[3] <= stage) and i not in ghosts]
             legend += [(f"{seq[i][0]} ≈ 0 ({float(np.hypot(*seq[i][1])) * k:.2f} mm at this "
                         f"scale: {_fmt(float(np.hypot(*seq[i][1])))} N, not drawn)", "normal")
                        for i in sorted(ghosts) if stage is None or seq[i][3] <= stage]
