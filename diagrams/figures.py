@@ -20,7 +20,7 @@ PRINTED_LABEL = 2.5
 #: the scale bar's numbers on a reduced stage figure are printed at least this high (mm)
 PRINTED_SCALE_TEXT = 2.5
 #: ... but never drawn larger than this (mm), so a much-reduced figure's bar stays a bar
-MAX_SCALE_TEXT = 15.0
+MAX_SCALE_TEXT = 18.0
 #: labels of the stage figures are set at least this much larger than on the full-size drawings
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
