@@ -689,15 +689,16 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         val = sc.si(mm) / sc.factor
         what = "Coriolis 2ωv" if st.component == "coriolis" else st.label
         mark = "\u2003← asked" if (st.frm, st.to) in asked else ""
+        name = vector(_about(lay.con, st), st.to)
         if _ghost(lay, st):        # too short for any inset: said, not drawn
             if mm < 0.005:
-                text = f"{vector(st.frm, st.to)} = 0 (a point: not drawn)"
+                text = f"{name} = 0 (a point: not drawn)"
             else:
-                text = (f"{vector(st.frm, st.to)} ≈ 0 ({mm:.2f} mm at this scale: "
+                text = (f"{name} ≈ 0 ({mm:.2f} mm at this scale: "
                         f"{number(val, 3)} {display(sc.unit)}, not drawn)")
             vectors.append((f"{text}  {what}{mark}", "bold" if mark else "normal"))
             continue
-        vectors.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
+        vectors.append((f"{name} = {number(val, 4)} {display(sc.unit)}  "
                         f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
     for a in lay.con.asked:
         if a.zero:
@@ -719,6 +720,17 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         out.append(("From the construction:", "bold"))
         out += measures
     return out
+
+
+def _about(con: Construction, st: Stroke) -> str:
+    """The tail's name of a vector from the pole as the book writes it: the fixed pivot its
+    intersection names (dc about D where the pole is a = d), else the vertex."""
+    if st.frm != con.pole:
+        return st.frm
+    step = next((s for s in con.steps if s.number == st.step), None)
+    if step is not None and step.kind == "intersection" and step.args:
+        return step.args[0].lower()
+    return st.frm
 
 
 def along_words(angle: float) -> str:
