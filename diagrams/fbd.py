@@ -243,8 +243,8 @@ def drawings(an: Analysis):
                 continue
             big = max(float(np.hypot(*v.force)) for v in drawn)
             small = min(float(np.hypot(*v.force)) for v in drawn)
-            from .forcepoly import force_scale
             from .inset import MIN_VECTOR_MM
+            from .scale import force_scale
             fscale = Scale("force", force_scale(big, small), "N", 1.0)
             kf = fscale.mm_per_si
             cur = np.zeros(2)

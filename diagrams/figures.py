@@ -11,6 +11,8 @@ from dataclasses import dataclass, field
 from polygons.evaluate import Solution
 from polygons.plan import Step
 
+from .scale import round_down  # noqa: F401 (figures.round_down: the rule's one home is scale)
+
 DRAWABLE = ("vector", "image", "line", "intersection")
 #: width (mm) of a stage figure: the narration runs in two columns, two or three stages a page
 STAGE_WIDTH = 56.0
@@ -141,23 +143,6 @@ def _readable(d, scale):
     if not limit > own.per_cm * (1 + 1e-9):
         return None
     return make(scale.quantity, limit, forced=True)
-
-
-def round_down(x: float) -> float:
-    """The largest round scale value (1, 2, 2.5, 5 × 10ⁿ) ≤ ``x`` (0 for a value that is not
-    positive and finite)."""
-    import math
-
-    from .scale import ROUND
-    if not (x > 0 and math.isfinite(x)):
-        return 0.0
-    n = math.floor(math.log10(x))
-    for k in (n + 1, n, n - 1):
-        for m in reversed(ROUND):
-            v = float(f"{m}e{k}")
-            if v <= x * (1 + 1e-12):
-                return v
-    return 0.0  # pragma: no cover
 
 
 def _never_fits(d) -> bool:

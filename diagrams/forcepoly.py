@@ -22,6 +22,7 @@ from polygons.forces import effort as effort_mod
 from polygons.forces import graphical, zhukovsky
 
 from .components import LOOKS
+from . import scale as scales
 from .inset import MIN_VECTOR_MM
 
 KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load",
@@ -187,7 +188,7 @@ def _drawings(groups, fp, st):
         if big == 0.0:
             continue
         small = min(float(np.hypot(*s[1])) for s in seq if float(np.hypot(*s[1])) > 0)
-        fscale = Scale("force", force_scale(big, small), "N", 1.0)
+        fscale = Scale("force", scales.force_scale(big, small), "N", 1.0)
         k = fscale.mm_per_si
         # a force too short to draw at this scale: said in the legend, not drawn
         ghosts = {i for i, s in enumerate(seq)
@@ -355,25 +356,6 @@ def _drawings(groups, fp, st):
                 content_box=box, legend=legend, scale=fscale, caption=[cap],
                 scale_statement=fscale.statement, meta={}, key=key)))
     return out
-
-
-#: the longest force of a polygon is drawn this long (mm) ...
-FORCE_MM = 90.0
-#: ... or up to this long, so that its shortest force is drawn MIN_VECTOR_MM long
-MAX_FORCE_MM = 160.0
-
-
-def force_scale(big: float, small: float) -> float:
-    """The round force scale (N per cm) of a polygon whose longest force is ``big`` and
-    shortest ``small`` (N): the longest :data:`FORCE_MM` long, or longer, up to
-    :data:`MAX_FORCE_MM`, at the coarsest round scale drawing the shortest
-    :data:`diagrams.inset.MIN_VECTOR_MM` long (one still shorter is said in the legend)."""
-    from .figures import round_down
-    from .scale import round_up
-    usual = round_up(big * 10.0 / FORCE_MM)
-    finest = round_up(big * 10.0 / MAX_FORCE_MM)
-    want = round_down(small * 10.0 / MIN_VECTOR_MM)
-    return min(usual, max(finest, want))
 
 
 def _stage_caption(g, stage, nst) -> str:

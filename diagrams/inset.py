@@ -16,6 +16,7 @@ from .crowd import clip_to_circle, clusters, mapped
 from .labels import Box, Placer, box_hits_segment, leader, text_box
 from .layout import arrow_head
 from .model import Circle, Polyline, Segment, Text
+from .scale import RULE_MM
 
 Pt = tuple[float, float]
 
@@ -28,7 +29,7 @@ MAX_RADIUS_FOR_VECTORS = 30.0
 CAPTION_SIZE = 2.6
 #: the layout rule: no vector drawn shorter than this (mm), on the drawing or in its inset
 #: (diagrams.audit measures it on the SVG)
-MIN_VECTOR_MM = 3.0
+MIN_VECTOR_MM = RULE_MM
 #: a vector shorter than this (mm) at the drawing's scale is not drawn at all: no inset can
 #: show it :data:`MIN_VECTOR_MM` long; the legend gives it as '≈ 0 (x mm at this scale)'
 ZERO_MM = MIN_VECTOR_MM / FACTORS[-1]
