@@ -159,6 +159,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     # cam's plate, drawn by cam_profile: no lever bar; its crank end K a point of the plate
     cam_lever = (scene.driver.link if scene.extra.get("cam_profiles")
                  and isinstance(scene.driver, Crank) else None)
+    face_arms = {q.arm for q in scene.equivalents if q.kind == "flat-faced cam" and q.arm}
     for slot in scene.model.slots() + scene.model.crossings():
         pivot, lever = slot.line.origin, slot.carrier
         if slot.at not in P or pivot not in P or slot.at in bearing:
@@ -166,7 +167,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         piv, pin = P[pivot], P[slot.at]
         e = _unit((pin[0] - piv[0], pin[1] - piv[1]))
         off = 0.0
-        if slot.along_lever and slot.far in P and P[slot.far] != piv:   # the slot's own line
+        if slot.line.offset and slot.along_lever and slot.far in P and P[slot.far] != piv:
+            # an offset slot: along its own line, ∥ pivot → far end
             e = _unit((P[slot.far][0] - piv[0], P[slot.far][1] - piv[1]))
             off = slot.line.offset * k          # its offset to the left of pivot → far
         n = (-e[1], e[0])
@@ -176,6 +178,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
         far_off = _add(end, n, off)             # … and of the far end
         if lever == cam_lever:
             pass
+        elif lever in face_arms:    # a flat face's equivalent slot: the face is the arm
+            link(piv, end, cls=f"link {lever}")
         elif abs(off) > 0.05:       # an offset slot: the lever bent to carry it
             link(piv, foot, cls=f"link {lever}")
             if (s0[0] - foot[0]) * e[0] + (s0[1] - foot[1]) * e[1] > 0.0:
