@@ -281,7 +281,30 @@ def _cam_edge(scene: Scene, q: Question, a: float, b: float) -> tuple[float, flo
 
 
 def answer(scene: Scene, q: Question) -> Finding:
-    """Answer one question of the scene (see module docstring)."""
+    """Answer one question of the scene (see module docstring); on a cam stated by its
+    profile, the turn where the follower dwells on the base circle said in words (it has no
+    linkage there, so no value: an extreme is over the rest)."""
+    found = _answer(scene, q)
+    if q.find != "angle" or not cam_diagram.has_profile(scene):
+        return found
+    xs = _samples_only(scene, q)
+    dwell = [x for x in xs if cam_diagram.part_at(scene, x)[0] == "base circle"]
+    if not dwell:
+        return found
+    words = (f"the follower dwells on the base circle (at rest, no linkage) at "
+             f"{len(dwell)} of the {len(xs)} sampled cam angles, "
+             f"{_fmt(input_in_unit(q, dwell[0]))} … {_fmt(input_in_unit(q, dwell[-1]))} "
+             f"{q.unit}: the quantity is not taken there")
+    return replace(found, words=f"{found.words}; {words}" if found.words else words)
+
+
+def _samples_only(scene: Scene, q: Question) -> np.ndarray:
+    if q.range is None:
+        return cam_diagram.nose_axis(scene) + _TAU * np.arange(q.samples) / q.samples
+    return np.linspace(q.range[0], q.range[1], q.samples)
+
+
+def _answer(scene: Scene, q: Question) -> Finding:
     if q.find != "position" and not isinstance(scene.driver, Crank):
         raise SceneError("find = 'angle' or 'omega' needs a crank driver", file=scene.file,
                          where=q.where + ".find")
