@@ -86,9 +86,13 @@ def scene_at(scene, axis: float, omega: float | None = None):
 
 
 def part_at(scene, axis: float) -> tuple[str, int]:
-    """The part of the profile in contact (its name and side) with the nose axis at ``axis``."""
+    """The part of the profile in contact (its name and side) with the nose axis at ``axis``
+    ('none' where no part meets the follower)."""
     label, table, prof, fol, *_ = stated(_base(scene), scene.file)
-    got = contact(prof, fol, float(axis))
+    try:
+        got = contact(prof, fol, float(axis))
+    except SceneError:          # no part meets the follower at this angle
+        return "none", 0
     return got.part, got.side
 
 
