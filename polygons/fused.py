@@ -307,8 +307,9 @@ def generate(prog):
     src += [f"    k{j} = _k[{j}]" for j in range(len(g.params))]
     src += [f"    r{j} = _O[{j}]" for j in range(len(g.rows))]
     src.append(f"    M = _O[{margin}]")
-    src.append(f"    for _s in range(0, _n, {CHUNK}):")
-    src.append(f"        _e = min(_n, _s + {CHUNK})")
+    src.append(f"    for _c in range((_n + {CHUNK - 1}) // {CHUNK}):")
+    src.append(f"        _s = np.uint64(_c * {CHUNK})")
+    src.append(f"        _e = np.uint64(min(_n, _c * {CHUNK} + {CHUNK}))")
     src.append("        for i in range(_s, _e):")
     src.append("            M[i] = 1.0")
     for body in g.loops:
@@ -330,7 +331,7 @@ def _compile(src: str):
     fn = _COMPILED.get(src)
     if fn is None:
         import numba
-        ns = {"math": math, "_mg": numba.njit(inline="always")(_mg)}
+        ns = {"math": math, "np": np, "_mg": numba.njit(inline="always")(_mg)}
         exec(compile(src, "<polygons.fused>", "exec"), ns)
         fn = _COMPILED[src] = numba.njit("void(float64[::1], float64[::1], float64[:, ::1])",
                                          error_model="numpy", cache=False,
