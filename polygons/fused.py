@@ -223,11 +223,8 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
         g.loop(body)
         return
     if isinstance(c, RigidImage):
-        bp = scene.points[c.x]
         P, Q = g.pts[c.p], g.pts[c.q]
-        along = g.k(bp.along if bp.along is not None else 0.0)
-        frac = g.k(bp.fraction if bp.along is None else 0.0)
-        left = g.k(bp.left)
+        along, frac, left = (g.k(v) for v in c.offsets(scene))
         X = g.point_rows(c.x)
         g.loop([f"px = {P[0]}", f"py = {P[1]}",
                 f"dx = {Q[0]} - px", f"dy = {Q[1]} - py",
@@ -278,10 +275,10 @@ def _links_and_guides(g: _Gen, prog, done_links: dict) -> None:
         g.loop(body)
 
 
-def generate(prog):
-    """(source, params, rows, links) of ``prog``'s fused kernel; raises :class:`Unsupported`."""
-    from .sweep import arrays_program
-    code, _ = arrays_program(prog)
+def generate(prog, index):
+    """(source, params, rows, links) of ``prog``'s fused kernel, which must make every output
+    in ``index`` (the arrays program's, :func:`polygons.sweep.arrays_program`); raises
+    :class:`Unsupported`."""
     g = _Gen()
     _ground(g, prog)
     done: dict = {}
@@ -292,7 +289,7 @@ def generate(prog):
         _emit(g, prog, c, done)
     _links_and_guides(g, prog, done)
     # every output of the arrays program must be one the kernel makes
-    for key, label in code.index:
+    for key, label in index:
         if key in ("pos", "velocity", "acceleration"):
             if label not in g.pts:
                 raise Unsupported(f"{key} of {label}")
@@ -392,19 +389,19 @@ def _ordered(d: dict, order) -> dict:
     return out
 
 
-def fused_of(prog):
+def fused_of(prog, index):
     """``prog``'s :class:`Fused` kernel, made once per program, or None (numba missing, or a
-    construction the kernel does not make)."""
+    construction the kernel does not make); ``index``: the outputs it must make (the arrays
+    program's)."""
     memo = memo_of(prog)
     if "_fused" not in memo:
         from . import jit
         fused = None
         if jit.available():
             try:
-                from .sweep import arrays_program
-                src, params, rows, links = generate(prog)
+                src, params, rows, links = generate(prog, index)
                 fused = Fused(_compile(src), np.array(params, dtype=float), tuple(rows),
-                              links, src, tuple(arrays_program(prog)[0].index))
+                              links, src, tuple(index))
             except Unsupported:
                 fused = None
         memo["_fused"] = fused

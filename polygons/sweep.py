@@ -692,7 +692,7 @@ def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
     n = len(xs)
     if jit and n and FUSED:
         from .fused import fused_of
-        fused = fused_of(prog)
+        fused = fused_of(prog, arrays_program(prog)[0].index)
         if fused is not None:           # one kernel for the whole chain, into the results
             out = fused.run(prog, xs)
             if progress:

@@ -12,7 +12,7 @@ from polygons import jit
 from polygons import sweep as sweep_mod
 from polygons.fused import Unsupported, fused_of, generate
 from polygons.scene import load_scene
-from polygons.sweep import compile_plan, sweep
+from polygons.sweep import arrays_program, compile_plan, sweep
 from test_compiled import _four_bar
 from test_jit import _same_sweep
 
@@ -29,7 +29,7 @@ needs_numba = pytest.mark.skipif(not jit.available(), reason="numba is not insta
 def test_the_fused_kernel_is_the_numpy_sweep(case, primitives):
     scene = load_scene(str(ROOT / "cases" / f"{case}.toml"))
     prog = compile_plan(scene)
-    assert fused_of(prog) is not None, primitives
+    assert fused_of(prog, arrays_program(prog)[0].index) is not None, primitives
     x0 = prog.input0
     xs = x0 + (np.linspace(-0.5, 0.5, 601) if prog.input_kind == "crank"
                else np.linspace(-0.05, 0.05, 601) * prog.scale)
@@ -49,12 +49,12 @@ def test_where_the_four_bar_cannot_close_both_give_nan_and_the_same_margin():
 def test_a_construction_it_does_not_make_is_named_and_left_to_the_arrays_program():
     prog = compile_plan(load_scene(str(ROOT / "cases" / "s003-fig7.toml")))
     with pytest.raises(Unsupported, match="PinInSlot"):
-        generate(prog)
-    assert fused_of(prog) is None
+        generate(prog, arrays_program(prog)[0].index)
+    assert fused_of(prog, arrays_program(prog)[0].index) is None
 
 
 def test_without_numba_there_is_no_fused_kernel(monkeypatch):
     monkeypatch.setattr(jit, "available", lambda: False)
     prog = compile_plan(_four_bar(0.5, 0.1, 0.4, 0.3, 1.0, 10.0, 0.0))
-    assert fused_of(prog) is None
+    assert fused_of(prog, arrays_program(prog)[0].index) is None
     assert sweep_mod.run(prog, np.array([0.1, 0.2]), jit=True)["omega"]["BC"].shape == (2,)

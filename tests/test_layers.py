@@ -38,12 +38,14 @@ WHERE = {
     "polygons.sweep_store": "interpreters", "polygons.sweep_follow": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
+    "polygons.fused": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
     "polygons.classic": "interpreters",
     "polygons.kennedy": "interpreters",
     "polygons.streams": "interpreters",
     "polygons.forces": "forces",
-    "polygons.report": "render", "polygons.csv_text": "render", "diagrams": "render",
+    "polygons.report": "render", "polygons.csv_text": "render",
+    "polygons.csv_jit": "render", "polygons.csv_format": "render", "diagrams": "render",
     "polygons.cli": "commands", "polygons.api": "commands", "polygons": "commands",
 }
 
