@@ -78,10 +78,13 @@ def csv_rows(columns, n: int, compiled: bool | None = None) -> bytes:
         buf = io.BytesIO()
         np.savetxt(buf, data, delimiter=",", fmt="%.17g")
         return buf.getvalue()
+    from .csv_jit import FIELD, PARTS
     hi, lo, sc = _powers()
-    out = np.empty(n * m * 25, np.uint8)
-    used = kernel(data, hi, lo, sc, out)
-    return out[:used].tobytes()
+    out = np.empty(n * m * FIELD, np.uint8)
+    used = np.zeros(PARTS, np.int64)
+    kernel(data, hi, lo, sc, out, used)
+    step = -(-n // PARTS) * m * FIELD
+    return b"".join(out[p * step:p * step + used[p]] for p in range(PARTS))
 
 
 def write_csv_rows(fh, columns, n: int, compiled: bool | None = None) -> None:
