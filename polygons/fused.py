@@ -119,7 +119,7 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
         P = g.pts[c.p]
         R, w, al = g.k(c.r.value(scene)), g.k(prog.rate), g.k(prog.rate2)
         X = g.point_rows(c.x)
-        body = [f"dx = {R} * math.cos(xs[i])", f"dy = {R} * math.sin(xs[i])",
+        body = [f"dx = {R} * _cos(xs[i])", f"dy = {R} * _sin(xs[i])",
                 f"{X[0]} = {P[0]} + dx", f"{X[1]} = {P[1]} + dy",
                 f"{X[2]} = {P[2]} - {w} * dy", f"{X[3]} = {P[3]} + {w} * dx",
                 f"{X[4]} = {P[4]} - {al} * dy - {w} * {w} * dx",
@@ -144,19 +144,19 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
         P, Q = g.pts[c.p], g.pts[c.q]
         r1, r2 = c.r1.value(scene), c.r2.value(scene)
         k1, k2, sg = g.k(r1), g.k(r2), g.k(prog.sigma[c.x])
-        inv12 = g.k(1.0 / (r1 * r2))
+        inv12, kbig = g.k(1.0 / (r1 * r2)), g.k(max(r1, r2))
         X = g.point_rows(c.x)
         body = [f"px = {P[0]}", f"py = {P[1]}", f"qx = {Q[0]}", f"qy = {Q[1]}",
-                "dx = qx - px", "dy = qy - py", "dist = math.sqrt(dx * dx + dy * dy)",
+                "dx = qx - px", "dy = qy - py", "dist = _sqrt(dx * dx + dy * dy)",
                 f"a = ({k1} * {k1} - {k2} * {k2} + dist * dist) / (2.0 * dist)",
                 f"h2 = {k1} * {k1} - a * a",
-                f"big = max(max({k1}, {k2}), dist)",
+                f"big = _max({kbig}, dist)",
                 f"ok = h2 >= -({CLOSE_TOL!r} * (big * big))",
-                "rt = math.sqrt(abs(h2))",
-                "h = rt if h2 > 0.0 else (0.0 if ok else math.nan)",
+                "rt = _sqrt(_abs(h2))",
+                "h = _sel(h2 > 0.0, rt, _sel(ok, 0.0, nan))",
                 "ux = dx / dist", "uy = dy / dist", f"sh = {sg} * h",
                 "x = px + a * ux + sh * -uy", "y = py + a * uy + sh * ux",
-                f"m = (h if ok else -rt) * dist * {inv12}",
+                f"m = _sel(ok, h, -rt) * dist * {inv12}",
                 # rates: the 2x2 Cartesian solve
                 "dpx = x - px", "dpy = y - py", "dqx = x - qx", "dqy = y - qy",
                 "iD = 1.0 / (dpx * dqy - dpy * dqx)",
@@ -198,11 +198,11 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
                 f"c = wx * wx + wy * wy - {kl} * {kl}",
                 "disc = bq * bq - c",
                 f"ok = disc >= -{CLOSE_TOL!r} * {kl} * {kl}",
-                "rt = math.sqrt(abs(disc))",
-                "root = rt if disc > 0.0 else (0.0 if ok else math.nan)",
+                "rt = _sqrt(_abs(disc))",
+                "root = _sel(disc > 0.0, rt, _sel(ok, 0.0, nan))",
                 f"t = -bq + {sg} * root",
                 f"x = {gx} + t * {ex}", f"y = {gy} + t * {ey}",
-                f"m = (root if ok else -rt) / {kl}",
+                f"m = _sel(ok, root, -rt) / {kl}",
                 "dpx = x - px", "dpy = y - py",
                 f"iD = 1.0 / (dpx * {ex} + dpy * {ey})",
                 f"td = ({_dot('dpx', 'dpy', P[2], P[3])}) * iD",
@@ -228,8 +228,8 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
         X = g.point_rows(c.x)
         g.loop([f"px = {P[0]}", f"py = {P[1]}",
                 f"dx = {Q[0]} - px", f"dy = {Q[1]} - py",
-                "n2 = dx * dx + dy * dy", "n = math.sqrt(n2)",
-                "_mg(M, i, 1.0 if n > 0 else -1.0)",
+                "n2 = dx * dx + dy * dy", "n = _sqrt(n2)",
+                "_mg(M, i, _sel(n > 0, 1.0, -1.0))",
                 "ux = dx / n", "uy = dy / n", f"a = {along} + {frac} * n",
                 f"x = px + a * ux + {left} * -uy", f"y = py + a * uy + {left} * ux",
                 f"w = (dx * ({Q[3]} - {P[3]}) - dy * ({Q[2]} - {P[2]})) / n2",
@@ -276,7 +276,7 @@ def _links_and_guides(g: _Gen, prog, done_links: dict) -> None:
 
 
 def generate(prog, index):
-    """(source, params, rows, links) of ``prog``'s fused kernel, which must make every output
+    """(loops, params, rows, links, margin row) of ``prog``'s fused kernel, which must make every output
     in ``index`` (the arrays program's, :func:`polygons.sweep.arrays_program`); raises
     :class:`Unsupported`."""
     g = _Gen()
@@ -299,20 +299,34 @@ def generate(prog, index):
         elif key not in ("margins", "margin_of", "crossings"):
             raise Unsupported(key)
     margin = g.row(("margin", ""))
+    return g.loops, g.params, g.rows, done, margin
+
+
+def source(loops, nparams: int, nrows: int, margin: int, arrays: bool) -> str:
+    """The kernel's text: ``_fused(xs, _k, _O)`` filling the block ``_O`` chunk by chunk, each
+    loop body over one position (numba: ``i`` runs over the chunk, unsigned so that LLVM
+    vectorises the loop) or over the whole chunk (numpy: ``i`` is the chunk's slice)."""
     # (the loops' own names start with an underscore: a body's locals never do)
+    chunk = CHUNK_ARRAYS if arrays else CHUNK
     src = ["def _fused(xs, _k, _O):", "    _n = xs.shape[0]"]
-    src += [f"    k{j} = _k[{j}]" for j in range(len(g.params))]
-    src += [f"    r{j} = _O[{j}]" for j in range(len(g.rows))]
+    src += [f"    k{j} = _k[{j}]" for j in range(nparams)]
+    src += [f"    r{j} = _O[{j}]" for j in range(nrows)]
     src.append(f"    M = _O[{margin}]")
-    src.append(f"    for _c in range((_n + {CHUNK - 1}) // {CHUNK}):")
-    src.append(f"        _s = np.uint64(_c * {CHUNK})")
-    src.append(f"        _e = np.uint64(min(_n, _c * {CHUNK} + {CHUNK}))")
+    src.append(f"    for _c in range((_n + {chunk - 1}) // {chunk}):")
+    if arrays:
+        src.append(f"        i = slice(_c * {chunk}, min(_n, _c * {chunk} + {chunk}))")
+        src.append("        M[i] = 1.0")
+        for body in loops:
+            src += [f"        {b}" for b in body]
+        return "\n".join(src) + "\n"
+    src.append(f"        _s = np.uint64(_c * {chunk})")
+    src.append(f"        _e = np.uint64(min(_n, _c * {chunk} + {chunk}))")
     src.append("        for i in range(_s, _e):")
     src.append("            M[i] = 1.0")
-    for body in g.loops:
+    for body in loops:
         src.append("        for i in range(_s, _e):")
         src += [f"            {b}" for b in body]
-    return "\n".join(src) + "\n", g.params, g.rows, done
+    return "\n".join(src) + "\n"
 
 
 def _mg(M, i, m):
@@ -321,18 +335,51 @@ def _mg(M, i, m):
     M[i] = cur if (cur != cur or cur <= m) else m
 
 
+def _sel(c, a, b):
+    return a if c else b
+
+
+def _max(a, b):
+    return a if a > b else b
+
+
+def _mg_cols(M, i, m):
+    """The margin rows ``M[i]`` lowered to ``m`` (NaN kept)."""
+    M[i] = np.minimum(M[i], m)
+
+
+#: positions per chunk of the numpy kernel (numpy's cost per call outweighs the caches below)
+CHUNK_ARRAYS = 8192
+
 _COMPILED: dict = {}
 
 
-def _compile(src: str):
-    fn = _COMPILED.get(src)
-    if fn is None:
+def _compile(src: str, arrays: bool):
+    fn = _COMPILED.get((src, arrays))
+    if fn is not None:
+        return fn
+    if arrays:
+        ns = {"np": np, "nan": math.nan, "_cos": np.cos, "_sin": np.sin, "_sqrt": np.sqrt,
+              "_abs": np.abs, "_sel": np.where, "_max": lambda a, b: np.where(a > b, a, b),
+              "_mg": _mg_cols}
+        exec(compile(src, "<polygons.fused arrays>", "exec"), ns)
+        raw = ns["_fused"]
+
+        def fn(xs, k, O):
+            with np.errstate(all="ignore"):
+                raw(xs, k, O)
+    else:
         import numba
-        ns = {"math": math, "np": np, "_mg": numba.njit(inline="always")(_mg)}
+        inline = numba.njit(inline="always")
+        ns = {"np": np, "nan": math.nan, "_cos": math.cos, "_sin": math.sin,
+              "_sqrt": math.sqrt, "_abs": abs, "_sel": inline(_sel), "_max": inline(_max),
+              "_mg": inline(_mg)}
         exec(compile(src, "<polygons.fused>", "exec"), ns)
-        fn = _COMPILED[src] = numba.njit("void(float64[::1], float64[::1], float64[:, ::1])",
-                                         error_model="numpy", cache=False,
-                                         boundscheck=False)(ns["_fused"])
+        fn = numba.njit("void(float64[::1], float64[::1], float64[:, ::1])",
+                        error_model="numpy", cache=False, boundscheck=False)(ns["_fused"])
+    if len(_COMPILED) >= 256:
+        _COMPILED.clear()
+    _COMPILED[(src, arrays)] = fn
     return fn
 
 
@@ -389,23 +436,25 @@ def _ordered(d: dict, order) -> dict:
     return out
 
 
-def fused_of(prog, index):
-    """``prog``'s :class:`Fused` kernel, made once per program, or None (numba missing, or a
-    construction the kernel does not make); ``index``: the outputs it must make (the arrays
-    program's)."""
+def fused_of(prog, index, arrays: bool = False):
+    """``prog``'s :class:`Fused` kernel, made once per program, or None (a construction the
+    kernel does not make; numba missing, unless ``arrays``); ``index``: the outputs it must
+    make (the arrays program's); ``arrays``: the same loops over numpy slices (no numba)."""
     memo = memo_of(prog)
-    if "_fused" not in memo:
+    key = "_fused_arrays" if arrays else "_fused"
+    if key not in memo:
         from . import jit
         fused = None
-        if jit.available():
+        if arrays or jit.available():
             try:
-                src, params, rows, links = generate(prog, index)
-                fused = Fused(_compile(src), np.array(params, dtype=float), tuple(rows),
-                              links, src, tuple(index))
+                loops, params, rows, links, margin = generate(prog, index)
+                src = source(loops, len(params), len(rows), margin, arrays)
+                fused = Fused(_compile(src, arrays), np.array(params, dtype=float),
+                              tuple(rows), links, src, tuple(index))
             except Unsupported:
                 fused = None
-        memo["_fused"] = fused
-    return memo["_fused"]
+        memo[key] = fused
+    return memo[key]
 
 
-__all__ = ["CHUNK", "Fused", "Unsupported", "fused_of", "generate"]
+__all__ = ["CHUNK", "CHUNK_ARRAYS", "Fused", "Unsupported", "fused_of", "generate", "source"]
