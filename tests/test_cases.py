@@ -80,6 +80,12 @@ OWN_EXACT_CHECK = {
     **{name: ("test_conditions.py",
               "test_question_cases_exact_values_are_the_closed_form_and_ours")
        for name in ("question-engine-conditions", "question-offset-quick-return")},
+    "cam-profile-tangent-roller": ("test_cam_profiles.py",
+                                   "test_the_new_cases_exact_answers_are_the_closed_forms"),
+    "cam-profile-arc-flat-oscillating": ("test_cam_profiles.py",
+                                         "test_the_new_cases_exact_answers_are_the_closed_forms"),
+    "bar-on-cylinder-rod-angle": ("test_contacts.py",
+                                  "test_the_bar_on_a_cylinder_placed_by_its_angle"),
     "cam-profile-circular-arc": ("test_cam_profiles.py",
                                  "test_case_exact_answers_are_the_closed_form"),
     "ratio-four-bar": ("test_conditions.py",
@@ -87,6 +93,8 @@ OWN_EXACT_CHECK = {
     "khurmi-ex7.2": ("test_centres.py", "test_khurmi_exact_answers_are_the_closed_form_and_ours"),
     "new-crossing-slots": ("test_crossing.py",
                            "test_the_case_exact_answers_come_from_the_loop_solution"),
+    "new-slot-slider": ("test_slot_slider.py",
+                        "test_the_case_is_its_closed_form_and_its_answers_are_the_oracles"),
     "new-screw-slotted-arm": ("test_book_forms.py",
                               "test_the_screw_case_exact_answers_are_the_closed_form"),
     **{name: ("test_triad.py", "test_the_case_exact_answers_come_from_the_oracle")
