@@ -428,7 +428,11 @@ class _Steps:
         self.vx[s.diagram][s.end] = pt
         unit = _unit_of(s.diagram)
         return dict(point=pt), None, angle, unit, (
-            ("angle", angle, "deg"), (f"{self.names.pole}{s.end}", ("hypot", pt), unit))
+            ("angle", angle, "deg"),
+            # from the fixed pivot the resultant is read about, as the book names it (dc
+            # about D where the pole is a = d), else from the pole
+            (f"{self.names.named(s.args[0]) if s.args else self.names.pole}{s.end}",
+             ("hypot", pt), unit))
 
     def omega_op(self, s):
         L, P, Q = s.args
