@@ -139,23 +139,125 @@ class Numeric:
         self.placed[label] = (x, y)
 
 
+class Traced:
+    """The ``g`` of a primitive's ``source`` that writes it down once: every name a variable
+    of one Python function (:func:`_compile`), each ``let`` its formula's text — the same
+    text :class:`Numeric` evaluates, so the function's numbers are :class:`Numeric`'s to the
+    last bit, without building the formulas again at each call."""
+
+    def __init__(self, scene, arrays: bool):
+        self.scene, self.arrays, self.x = scene, arrays, "_x"
+        self.getters: list = []
+        self.labels: list = []
+        self.sigmas: list = []
+        self.fns: dict = {}
+        self.lines: list = []
+        self.placed: dict = {}
+        self.margins: list = []
+
+    def _var(self, text: str) -> str:
+        name = f"_v{len(self.lines)}"
+        self.lines.append(f"{name} = {text}")
+        return name
+
+    def param(self, getter):
+        if isinstance(getter, tuple):
+            return self.sigma(getter[1])
+        self.getters.append(getter)
+        return f"_k[{len(self.getters) - 1}]"
+
+    def sigma(self, label: str):
+        self.sigmas.append(label)
+        return f"_s[{len(self.sigmas) - 1}]"
+
+    def e(self, template: str, *operands) -> Formula:
+        return Formula(template, operands)
+
+    def let(self, expr, *operands):
+        if type(expr) is str:
+            expr = Formula(expr, operands)
+        return self._var(expr.text) if isinstance(expr, Formula) else expr
+
+    def call(self, fn, *args, n: int = 1) -> list:
+        if self.arrays:
+            fn = ARRAY_TWIN.get(fn, fn)
+        name = self.fns.setdefault(fn, f"_f{len(self.fns)}")
+        vals = [self.let(a) for a in args]
+        out = self._var(f"{name}({', '.join(vals)})")
+        if n > 1:
+            return [self._var(f"{out}[{i}]") for i in range(n)]
+        return [self._var(f"_first({out})")]
+
+    def margin(self, m) -> None:
+        self.margins.append(m)
+
+    def pos(self, label: str):
+        got = self.placed.get(label)
+        if got is not None:
+            return got
+        self.labels.append(label)
+        i = len(self.labels) - 1
+        if self.arrays:
+            return self._var(f"_p[{i}][0]"), self._var(f"_p[{i}][1]")
+        return self._var(f"float(_p[{i}][0])"), self._var(f"float(_p[{i}][1])")
+
+    def place(self, label: str, x, y) -> None:
+        self.placed[label] = (x, y)
+
+
+def _first(out):
+    return out[0] if isinstance(out, tuple) else out
+
+
+def _compile(prim, scene, arrays: bool):
+    """``prim.source`` written down once as one function (per primitive, kind of numbers and
+    :meth:`Stated.variant`), with the scene's getters, the labels it reads and its closures."""
+    t = Traced(scene, arrays)
+    m = prim.source(t)
+    ns = {**_NS[arrays], "_first": _first, **{v: f for f, v in t.fns.items()}}
+    out = ", ".join(f"{k!r}: ({x}, {y})" for k, (x, y) in t.placed.items())
+    body = "\n".join(["def _stmt(_k, _p, _s, _x):", *(f"    {ln}" for ln in t.lines),
+                      f"    return {{{out}}}, {m if m is not None else None}"])
+    exec(body, ns)
+    return ns["_stmt"], tuple(t.getters), tuple(t.labels), tuple(t.sigmas)
+
+
+def _statement(prim, scene, arrays: bool):
+    """The compiled statement, kept on the primitive itself (a frozen value: its fields, and
+    so its equality and hash, untouched; no hash of nested fields at each call)."""
+    kept = prim.__dict__.get("_statements")
+    if kept is None:
+        kept = prim.__dict__.setdefault("_statements", {})
+    key = (arrays, prim.variant(scene))
+    got = kept.get(key)
+    if got is None:
+        got = kept[key] = _compile(prim, scene, arrays)
+    return got
+
+
 def interpret(prim, scene, pos, sigma, x):
     """``prim.source`` evaluated at the positions ``pos`` (one position, or (2, N) arrays of a
     sweep), closure ``sigma``, input ``x``: (the points it places, its margin — None where
-    it has none)."""
-    arrays = np.ndim(x) > 0 or any(np.ndim(v) > 1 for v in pos.values())
-    try:
-        g = Numeric(scene, pos, sigma, x, arrays)
-        m = prim.source(g)
-    except _OverArrays:
-        g = Numeric(scene, pos, sigma, x, True)
-        m = prim.source(g)
-    if g.arrays:
-        pts = {k: np.array(np.broadcast_arrays(np.asarray(a, dtype=float),
-                                               np.asarray(b, dtype=float)))
-               for k, (a, b) in g.placed.items()}
+    it has none).  The statement is written down once per primitive (:func:`_statement`);
+    each call reads the scene's numbers and runs it."""
+    arrays = np.ndim(x) > 0
+    fn, getters, labels, sigmas = _statement(prim, scene, arrays)
+    p = [pos[lab] for lab in labels]
+    k = [get(scene) for get in getters]
+    if not arrays and (any(np.ndim(v) > 1 for v in p)                 # a sweep's positions
+                       or any(type(v) is not float and np.ndim(v) > 0 for v in k)):  # a batch's
+        arrays = True
+        fn, getters, labels, sigmas = _statement(prim, scene, True)
+        p = [pos[lab] for lab in labels]
+        k = [get(scene) for get in getters]
+    s = [sigma[lab] if isinstance(sigma, dict) else sigma for lab in sigmas]
+    placed, m = fn(k, p, s, x)
+    if arrays:
+        pts = {k_: np.array(np.broadcast_arrays(np.asarray(a, dtype=float),
+                                                np.asarray(b, dtype=float)))
+               for k_, (a, b) in placed.items()}
     else:
-        pts = {k: np.array([a, b], dtype=float) for k, (a, b) in g.placed.items()}
+        pts = {k_: np.array([a, b], dtype=float) for k_, (a, b) in placed.items()}
     return pts, m
 
 
@@ -166,6 +268,11 @@ class Stated:
     def locate(self, scene, pos, sigma, x):
         return interpret(self, scene, pos, sigma, x)
 
+    def variant(self, scene) -> tuple:
+        """What of the scene changes the statement's shape (a branch of ``source`` on the
+        scene): none."""
+        return ()
 
-__all__ = ["namespace", "where_scalar", "hypot_cols", "Formula", "Numeric", "interpret",
+
+__all__ = ["namespace", "where_scalar", "hypot_cols", "Formula", "Numeric", "Traced", "interpret",
            "Stated"]

@@ -170,7 +170,7 @@ def _check(g, m, check: bool):
 
 
 @dataclass(frozen=True)
-class CircleCircle:
+class CircleCircle(Stated):
     """X with |PX| = r₁ and |QX| = r₂, left of P→Q for σ = +1 (right for −1):
     X = P + a u + σ h perp(u), a = (r₁² − r₂² + d²)/2d, h = √(r₁² − a²)
     (:func:`~polygons.dyads.base.circle_circle`)."""
@@ -179,11 +179,6 @@ class CircleCircle:
     r1: Length
     q: str
     r2: Length
-
-    def locate(self, scene, pos, sigma, x):
-        X, margin = circle_circle(pos[self.p], self.r1.value(scene), pos[self.q],
-                                  self.r2.value(scene), sigma)
-        return {self.x: X}, margin
 
     def source(self, g, check=True):
         r1, r2 = self.r1.param(g), self.r2.param(g)
@@ -195,7 +190,7 @@ class CircleCircle:
 
 
 @dataclass(frozen=True)
-class CircleLine:
+class CircleLine(Stated):
     """X on the line G + t e (fixed, or a lever's slot) with |PX| = r, (X − P)·e of sign σ:
     t = −b + σ √(b² − c), b = e·(G − P), c = |G − P|² − r²
     (:func:`~polygons.dyads.base.circle_line`); ``also``: labels placed at X too (the
@@ -205,11 +200,6 @@ class CircleLine:
     r: Length
     line: "FixedLine | LeverLine"
     also: tuple[str, ...] = ()
-
-    def locate(self, scene, pos, sigma, x):
-        through, e = self.line.at(scene, pos)
-        X, margin = circle_line(pos[self.p], self.r.value(scene), through, e, sigma)
-        return {self.x: X, **{a: X.copy() for a in self.also}}, margin
 
     def source(self, g, check=True):
         if isinstance(self.line, LeverLine):     # the line first, as it is drawn
@@ -227,20 +217,11 @@ class CircleLine:
 
 
 @dataclass(frozen=True)
-class Rotation:
+class Rotation(Stated):
     """X = P + r (cos θ, sin θ), θ the driver's input (a crank about its fixed pivot)."""
     x: str
     p: str
     r: Length
-
-    def locate(self, scene, pos, sigma, x):
-        r = self.r.value(scene)
-        p = pos[self.p]
-        if np.ndim(x) == 0:
-            tip = p + r * np.array([math.cos(x), math.sin(x)])
-        else:
-            tip = p + r * np.array([np.cos(x), np.sin(x)])
-        return {self.x: tip}, None
 
     def source(self, g, check=True):
         r = self.r.param(g)
@@ -251,17 +232,10 @@ class Rotation:
 
 
 @dataclass(frozen=True)
-class Translation:
+class Translation(Stated):
     """X = G + s e, s the driver's input (a slider driven along its fixed guide)."""
     x: str
     line: FixedLine
-
-    def locate(self, scene, pos, sigma, x):
-        through = np.array(self.line.through(scene))
-        e = np.array(self.line.direction(scene))
-        if np.ndim(x) == 0:
-            return {self.x: through + x * e}, None
-        return {self.x: as_col(through, x[None]) + x * as_col(e, x[None])}, None
 
     def source(self, g, check=True):
         tx, ty = self.line.params(g, "through")
@@ -271,21 +245,12 @@ class Translation:
 
 
 @dataclass(frozen=True)
-class LineLine:
+class LineLine(Stated):
     """X = G + t e on the fixed line where the line through the placed A along the yoke's
     slot f meets it: t = ((A − G) × f) / (e × f); the margin |e × f| (0: parallel)."""
     x: str
     a: str
     line: FixedLine
-
-    def locate(self, scene, pos, sigma, x):
-        a = pos[self.a]
-        e, f = np.array(self.line.direction(scene)), np.array(self.line.slot(scene))
-        through = as_col(self.line.through(scene), a)
-        den = e[0] * f[1] - e[1] * f[0]
-        w = a - through
-        t = (w[0] * f[1] - w[1] * f[0]) / den
-        return {self.x: through + t * as_col(e, a)}, abs(den) + 0.0 * t
 
     def source(self, g, check=True):
         ex, ey = self.line.params(g, "direction")
@@ -301,7 +266,7 @@ class LineLine:
 
 
 @dataclass(frozen=True)
-class RigidImage:
+class RigidImage(Stated):
     """X rigid with the link PQ ([points.X]): X = P + a u + l perp(u), u = PQ/|PQ|,
     a = along (or fraction · |PQ|), l its offset to the left; the margin +1 (−1 where
     |PQ| = 0)."""
@@ -316,14 +281,6 @@ class RigidImage:
         if bp.along is not None:
             return bp.along, 0.0, bp.left
         return 0.0, bp.fraction, bp.left
-
-    def locate(self, scene, pos, sigma, x):
-        bp = scene.points[self.x]
-        d = pos[self.q] - pos[self.p]
-        n = np.hypot(d[0], d[1])
-        u = d / n
-        along = bp.along if bp.along is not None else bp.fraction * n
-        return {self.x: pos[self.p] + along * u + bp.left * perp(u)}, np.where(n > 0, 1.0, -1.0)
 
     def source(self, g, check=True):
         along = g.param(lambda s: s.points[self.x].along or 0.0)
@@ -342,7 +299,7 @@ class RigidImage:
 
 
 @dataclass(frozen=True)
-class LinesMeet:
+class LinesMeet(Stated):
     """X where the line A₁ → Q₁ meets the line A₂ → Q₂ (two moving slots):
     X = A₁ + t e₁, t = ((A₂ − A₁) × e₂) / (e₁ × e₂); the margin |e₁ × e₂| (−1 where the
     lines are parallel, X NaN there); ``also``: labels placed at X too."""
@@ -352,19 +309,6 @@ class LinesMeet:
     a2: str
     q2: str
     also: tuple[str, ...] = ()
-
-    def locate(self, scene, pos, sigma, x):
-        a, b = pos[self.a1], pos[self.a2]
-        d1, d2 = pos[self.q1] - a, pos[self.q2] - b
-        e1 = d1 / np.hypot(d1[0], d1[1])
-        e2 = d2 / np.hypot(d2[0], d2[1])
-        den = e1[0] * e2[1] - e1[1] * e2[0]
-        ok = np.abs(den) > 1e-12
-        w = b - a
-        t = (w[0] * e2[1] - w[1] * e2[0]) / np.where(ok, den, np.nan)
-        X = a + t * e1
-        margin = np.where(ok, np.abs(den), -1.0)
-        return {self.x: X, **{lab: X.copy() for lab in self.also}}, margin
 
     def source(self, g, check=True):
         (ax, ay), (qx, qy) = g.pos(self.a1), g.pos(self.q1)
@@ -390,7 +334,7 @@ class LinesMeet:
 
 
 @dataclass(frozen=True)
-class AlongLink:
+class AlongLink(Stated):
     """X = P + s PQ/|PQ|, s a prescribed slide (a collar driven along the link PQ); the
     margin: |PQ| beyond 1e-12 of the mechanism's size and 0 ≤ s ≤ |PQ|
     (:func:`~polygons.dyads.base.end_margin_scalar`, within that tolerance); ``also``:
@@ -400,15 +344,6 @@ class AlongLink:
     q: str
     s: Prescribed
     also: tuple[str, ...] = ()
-
-    def locate(self, scene, pos, sigma, x):
-        s = self.s.value(scene)
-        d = pos[self.q] - pos[self.p]
-        n = np.hypot(d[0], d[1])
-        c = pos[self.p] + s * d / n
-        tiny = 1e-12 * size_of(scene)
-        margin = end_margin_cols(np.where(n > tiny, 1.0, -1.0), s, 0.0, n, tiny)
-        return {self.x: c, **{lab: c.copy() for lab in self.also}}, margin
 
     def source(self, g, check=True):
         (px, py), (qx, qy) = g.pos(self.p), g.pos(self.q)
@@ -426,20 +361,13 @@ class AlongLink:
 
 
 @dataclass(frozen=True)
-class RimPoint:
+class RimPoint(Stated):
     """X on the rim of the driven rolling wheel centred at W: X = W + ρ (cos φ, sin φ),
     φ = φ₀ − s/r, s the input (the wheel's centre along its surface: rolling turns it by
     −s/r; the rim angles stated at input 0)."""
     x: str
     w: str
     rim: WheelRim
-
-    def locate(self, scene, pos, sigma, x):
-        radius, phi0, rho = self.rim.value(scene)
-        phi = phi0 - x / radius
-        if np.ndim(x) == 0:
-            return {self.x: pos[self.w] + rho * np.array([math.cos(phi), math.sin(phi)])}, None
-        return {self.x: pos[self.w] + rho * np.array([np.cos(phi), np.sin(phi)])}, None
 
     def source(self, g, check=True):
         phi0 = g.param(lambda s: self.rim.value(s)[1])
@@ -453,7 +381,7 @@ class RimPoint:
 
 
 @dataclass(frozen=True)
-class PinInSlot:
+class PinInSlot(Stated):
     """The lever turning about B whose slot the placed pin A slides in ([slots.A]): the
     lever's point X under the pin is A; its far end F at the lever's stated length l along
     the slot — e = BA/|BA| (F = B + l e), or, for a slot offset δ from the pivot,
@@ -465,26 +393,9 @@ class PinInSlot:
     pivot: str
     far: str | None
 
-    def locate(self, scene, pos, sigma, x):
-        a, b = pos[self.pin], pos[self.pivot]
-        d = a - b
-        s = np.hypot(d[0], d[1])
-        out = {self.x: a.copy()}
-        slot = scene.slots[self.pin]
-        tiny = 1e-12 * size_of(scene)
-        if slot.offset:
-            # BA = t e + δ perp(e) with t > 0:  e = (t BA − δ perp(BA)) / |BA|²
-            off = slot.offset
-            t2 = s * s - off * off
-            t = np.sqrt(np.where(t2 > 0, t2, np.nan))
-            e = (t * d - off * perp(d)) / (s * s)
-            out[self.far] = b + slot.far_length * e
-            m0 = np.where(t2 > 1e-12 * size_of(scene) ** 2, t / s, -1.0)
-            return out, end_margin_cols(m0, t, 0.0, _slot_end(slot), tiny)
-        if self.far:
-            out[self.far] = b + slot.far_length * d / s
-        margin = np.where(s > tiny, 1.0, 0.0)
-        return out, end_margin_cols(margin, s, 0.0, _slot_end(slot), tiny)
+    def variant(self, scene) -> tuple:
+        """A slot offset from the pivot is another statement (:meth:`_source_offset`)."""
+        return (bool(scene.slots[self.pin].offset),)
 
     def source(self, g, check=True):
         (ax, ay), (bx, by) = g.pos(self.pin), g.pos(self.pivot)
@@ -532,7 +443,7 @@ def _slot_end(slot) -> float:
 
 
 @dataclass(frozen=True)
-class Guarded:
+class Guarded(Stated):
     """``inner`` refused (margin −1) where ``ok`` does not hold: a case the construction does
     not model, which the group's ``why_not`` names."""
     inner: "CircleLine"
@@ -542,11 +453,8 @@ class Guarded:
     def x(self) -> str:
         return self.inner.x
 
-    def locate(self, scene, pos, sigma, x):
-        pts, margin = self.inner.locate(scene, pos, sigma, x)
-        if not self.ok.value(scene):
-            margin = np.full_like(np.asarray(margin, dtype=float), -1.0)
-        return pts, margin
+    def variant(self, scene) -> tuple:
+        return self.inner.variant(scene)
 
     def source(self, g, check=True):
         m = self.inner.source(g, check=False)
@@ -662,6 +570,9 @@ class Then(Stated):
     @property
     def x(self) -> str:
         return self.steps[0].x
+
+    def variant(self, scene) -> tuple:
+        return tuple(s.variant(scene) for s in self.steps)
 
     def source(self, g, check=True):
         margins = [s.source(g, check) for s in self.steps]
