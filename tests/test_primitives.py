@@ -179,14 +179,38 @@ def test_the_groups_stated_in_primitives():
         assert "locate" not in vars(kind) and "source" not in vars(kind)
 
 
-def test_the_stated_primitives_have_no_second_statement():
-    """The class-III group's primitives are written once, as ``source``: ``locate`` is that
-    statement evaluated (polygons.dyads.numeric), not a second formula."""
-    for kind in (TriadClosure, AssurPoint, Then):
-        assert issubclass(kind, Stated) and "locate" not in vars(kind)
+def test_every_primitive_has_one_statement():
+    """Every primitive is written once, as ``source``: ``locate`` is that statement evaluated
+    (polygons.dyads.numeric), never a second, hand-written formula."""
+    from polygons.dyads.slot_slider import SlotCrossesGuide
+    for kind in (*PRIMITIVES, SlotCrossesGuide):
+        assert issubclass(kind, Stated), kind.__name__
+        assert "source" in vars(kind) and "locate" not in vars(kind), kind.__name__
+        assert kind.locate is Stated.locate, kind.__name__
     assert "source" in vars(dyads.Triad) and isinstance(
         dyads.Triad("B", "C", "X", "P", "Q", "A", "PB", "QC", "AX", "BC", ("BC",), "S",
                     True).construction, Then)
+
+
+@pytest.mark.parametrize("prim", CASES, ids=lambda p: type(p).__name__)
+def test_the_compiled_statement_is_the_statement(prim):
+    """``locate`` runs the statement written down once per primitive (numeric.Traced); it is
+    the statement evaluated name by name (numeric.Numeric) to the last bit, over one position
+    and over a sweep."""
+    from polygons.dyads.numeric import Numeric
+    xs = np.linspace(-0.02, 0.02, 3)
+    sweep = {k: v.reshape(2, 1) + np.array([xs, 0.5 * xs]) for k, v in POS.items()}
+    for pos, x, arrays in ((POS, 0.7, False), (sweep, 0.7 + xs, True)):
+        sigma = {k: 0.1 for k in getattr(prim, "keys", ())} or 1.0
+        g = Numeric(SCENE, pos, sigma, x, arrays)
+        m = prim.source(g)
+        pts, m2 = prim.locate(SCENE, pos, sigma, x)
+        assert set(pts) == set(g.placed)
+        for k, (a, b) in g.placed.items():
+            assert np.array_equal(np.broadcast_to(pts[k], np.shape(pts[k])),
+                                  np.array(np.broadcast_arrays(a, b), dtype=float),
+                                  equal_nan=True), (type(prim).__name__, k)
+        assert (m is None and m2 is None) or np.array_equal(m, m2, equal_nan=True)
 
 
 def test_the_triads_closure_and_assur_point_meet_their_equations():
