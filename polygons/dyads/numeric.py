@@ -222,6 +222,10 @@ def _compile(prim, scene, arrays: bool):
     return ns["_stmt"], tuple(t.getters), tuple(t.labels), tuple(t.sigmas)
 
 
+#: every statement compiled, by (primitive, (arrays, variant)): equal primitives share one
+_STATEMENTS: dict = {}
+
+
 def _statement(prim, scene, arrays: bool):
     """The compiled statement, kept on the primitive itself (a frozen value: its fields, and
     so its equality and hash, untouched; no hash of nested fields at each call)."""
@@ -230,9 +234,16 @@ def _statement(prim, scene, arrays: bool):
         kept = prim.__dict__.setdefault("_statements", {})
     key = (arrays, prim.variant(scene))
     got = kept.get(key)
-    if got is None:
-        got = kept[key] = _compile(prim, scene, arrays)
+    if got is None:                 # a new instance of an equal primitive (a new plan): shared
+        got = _STATEMENTS.get((prim, key))
+        if got is None:
+            got = _STATEMENTS[(prim, key)] = _compile(prim, scene, arrays)
+        kept[key] = got
     return got
+
+
+def _ndim(v) -> int:
+    return v.ndim if type(v) is np.ndarray else np.ndim(v)
 
 
 def interpret(prim, scene, pos, sigma, x):
@@ -240,17 +251,17 @@ def interpret(prim, scene, pos, sigma, x):
     sweep), closure ``sigma``, input ``x``: (the points it places, its margin — None where
     it has none).  The statement is written down once per primitive (:func:`_statement`);
     each call reads the scene's numbers and runs it."""
-    arrays = np.ndim(x) > 0
+    arrays = type(x) is not float and np.ndim(x) > 0
     fn, getters, labels, sigmas = _statement(prim, scene, arrays)
     p = [pos[lab] for lab in labels]
     k = [get(scene) for get in getters]
-    if not arrays and (any(np.ndim(v) > 1 for v in p)                 # a sweep's positions
+    if not arrays and (any(_ndim(v) > 1 for v in p)                    # a sweep's positions
                        or any(type(v) is not float and np.ndim(v) > 0 for v in k)):  # a batch's
         arrays = True
         fn, getters, labels, sigmas = _statement(prim, scene, True)
         p = [pos[lab] for lab in labels]
         k = [get(scene) for get in getters]
-    s = [sigma[lab] if isinstance(sigma, dict) else sigma for lab in sigmas]
+    s = [sigma[lab] for lab in sigmas] if isinstance(sigma, dict) else [sigma] * len(sigmas)
     placed, m = fn(k, p, s, x)
     if arrays:
         pts = {k_: np.array(np.broadcast_arrays(np.asarray(a, dtype=float),
