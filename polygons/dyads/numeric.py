@@ -12,7 +12,11 @@ same statement through :class:`Numeric`, which gives every name its value at onc
 * ``g.pos`` / ``g.place`` hold points; ``g.margin`` keeps the margin (the caller tests it).
 
 So the staged solve, the numpy sweep and the generated program evaluate the same formulas,
-written once (:class:`Stated`).  Over one position every point is a plain float pair; over
+written once (:class:`Stated`).  :func:`interpret` does not build the formulas at each call:
+the first one writes the statement down as one Python function (:class:`Traced`: each
+``let`` a line of the same text), kept per primitive and shared by equal ones, which later
+calls run on the scene's numbers — :class:`Numeric`'s values to the last bit
+(tests/test_primitives.py).  Over one position every point is a plain float pair; over
 a sweep the arrays of shape (N,) (or a scene number that is an array: a batch's varied
 lengths, which makes the statement run again over arrays).
 """

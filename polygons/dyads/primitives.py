@@ -33,8 +33,11 @@ primitives:
 * :class:`AssurPoint` — where two links' lines produced meet (NaN where parallel);
 * :class:`Then` — primitives in order (the triad: its closure, then S).
 
-The last three are written once, as ``source``: their ``locate`` is that statement evaluated
-(:mod:`polygons.dyads.numeric`), the same formulas term for term.
+Every primitive is written once, as ``source``: its ``locate`` is that statement evaluated
+(:class:`~polygons.dyads.numeric.Stated`; written down as one Python function per primitive
+the first time, :class:`~polygons.dyads.numeric.Traced`), the same formulas term for term as
+the generated program.  The fused kernel (:mod:`polygons.fused`) reads the primitives' typed
+operands, not these statements.
 
 A line operand is fixed (:class:`FixedLine`) or a lever's slot (:class:`LeverLine`).
 """
@@ -159,9 +162,10 @@ class WheelRim:
 
 
 # ---------------------------------------------------------------- primitives
-# Each has ``locate(scene, pos, sigma, x) -> (points, margin)`` and ``source(g, check)``,
-# which writes the same formula and returns its margin's name (None: always placed), the
-# margin checked where it is made unless ``check`` is False (a wrapper checks it then).
+# Each states ``source(g, check)``: its formula, returning its margin's name (None: always
+# placed), the margin checked where it is made unless ``check`` is False (a wrapper checks it
+# then); ``locate(scene, pos, sigma, x) -> (points, margin)`` is that statement evaluated
+# (:class:`~polygons.dyads.numeric.Stated`).
 def _check(g, m, check: bool):
     """The margin ``m`` checked by the program here (over arrays: kept), when asked."""
     if check:
@@ -462,10 +466,7 @@ class Guarded(Stated):
         return _check(g, g.let("where({} > 0.0, {}, -1.0)", ok, m), check)
 
 
-# ---------------------------------------------------------------- stated once: the class-III group
-# These are written once, as ``source``; their ``locate`` is that statement evaluated
-# (:class:`~polygons.dyads.numeric.Stated`): numpy and the generated program run the same
-# formulas term for term.
+# ---------------------------------------------------------------- the class-III group
 @dataclass(frozen=True)
 class PlateShape:
     """A triad's plate in its own frame, B = (0, 0): C = (L, 0), X = (ξ, η) — a link BC
