@@ -210,7 +210,10 @@ def test_the_compiled_statement_is_the_statement(prim):
             assert np.array_equal(np.broadcast_to(pts[k], np.shape(pts[k])),
                                   np.array(np.broadcast_arrays(a, b), dtype=float),
                                   equal_nan=True), (type(prim).__name__, k)
-        assert (m is None and m2 is None) or np.array_equal(m, m2, equal_nan=True)
+        assert (m is None and m2 is None) or np.array_equal(np.broadcast_to(m, np.shape(m2)), m2,
+                                                           equal_nan=True)
+        if arrays and m2 is not None:                  # over a sweep: a margin per position
+            assert np.shape(m2) == (len(xs),), type(prim).__name__
 
 
 def test_the_triads_closure_and_assur_point_meet_their_equations():

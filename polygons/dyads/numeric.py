@@ -271,6 +271,8 @@ def interpret(prim, scene, pos, sigma, x):
         pts = {k_: np.array(np.broadcast_arrays(np.asarray(a, dtype=float),
                                                 np.asarray(b, dtype=float)))
                for k_, (a, b) in placed.items()}
+        if m is not None and np.ndim(m) == 0 and pts:    # a margin of the scene's numbers
+            m = np.full(next(iter(pts.values())).shape[1:], float(m))    # alone: one a position
     else:
         pts = {k_: np.array([a, b], dtype=float) for k_, (a, b) in placed.items()}
     return pts, m
