@@ -143,6 +143,8 @@ def _assur_rows(prog, xs: np.ndarray, res: dict, run):
             return np.abs(u[0] * w[1] - u[1] * w[0]) / (np.hypot(*u) * np.hypot(*w))
     notes = []
     for gi, d in enumerate(groups):
+        if getattr(d, "single_pair", False):    # S on one pair only (a block at a corner)
+            continue
         s = np.array([sine(d, v) for v in range(3)])
         own = s[d.via]
         rows = np.isfinite(own) & (own < math.sin(math.radians(1.0)))

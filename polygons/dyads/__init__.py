@@ -11,9 +11,10 @@ dyad").
 from __future__ import annotations
 
 from . import (crank, crossing, guided, image, rpp, rpr, rrp, rrr, slide, slider_drive, triad,
-               wheel_pin)
+               triad_slider, wheel_pin)
 from .crossing import Crossing
 from .triad import Triad
+from .triad_slider import TriadSlider
 from .guided import Guided
 from .slide import SlideDyad
 from .crank import CrankDyad
@@ -33,11 +34,11 @@ SLOT_KINDS = (rpr, slide)
 POINT_KINDS = (wheel_pin, rpp, image, rrp, guided, crossing, rrr)
 #: modules with ``matches(scene, placed)``: groups of a higher class (a triad), tried when no
 #: dyad can be placed
-GROUP_KINDS = (triad,)
+GROUP_KINDS = (triad, triad_slider)
 
 Dyad = (CrankDyad | SliderDriveDyad | RRR | RRP | RPR | Image | RPP | Guided | SlideDyad
-        | Crossing | Triad | WheelPin)
+        | Crossing | Triad | TriadSlider | WheelPin)
 
 __all__ = ["CrankDyad", "SliderDriveDyad", "RRR", "RRP", "RPR", "Image", "RPP", "Dyad", "Guided",
-           "SlideDyad", "Crossing", "Triad", "WheelPin", "GROUP_KINDS",
+           "SlideDyad", "Crossing", "Triad", "TriadSlider", "WheelPin", "GROUP_KINDS",
            "DRIVERS", "SLOT_KINDS", "POINT_KINDS"]

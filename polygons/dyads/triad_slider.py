@@ -1,0 +1,368 @@
+"""The class-III Assur group with a block on a guide at a corner ("two links and a block"):
+a rigid plate whose corners B, C are joined by binary links to placed points (AB, DC) and
+whose third corner X is a pin in a block sliding on a fixed straight guide ([sliders.X]).
+No dyad places it: the three corners close together.
+
+The scene states it as the book draws it: the plate is a link carrying a point ([points.X]
+on = "BC", a ternary link) or a triangle of three links; the corner on the guide has
+[sliders.X] and no link of its own, each other corner one link to a placed point.  Any corner
+may be the one on the guide.  ``[assembly]`` (words or ``near``) on any corner chooses the
+closure.
+
+Position: every closure, algebraically (:mod:`polygons.dyads.triad_slider_math`: the real
+roots of a polynomial of degree ≤ 6, each polished by Newton); the one the scene's words or
+``near`` choose, followed by continuation through a sweep.
+
+Velocity, by the auxiliary (Assur) point S where AB and DC produced meet (a point of the
+plate): v_S − v_A ⟂ AB and v_S − v_D ⟂ DC give s; then v_X − v_S ⟂ SX and v_X ∥ the guide (a
+block on a fixed guide) give x; b, c are images on the plate (s, x); the slider's velocity is
+ox along the guide.
+
+Acceleration, the same with the normal parts known: a_S = a_A + ω_AB² (A − B) + ω_p² (B − S)
++ [⟂ AB] = a_D + ω_DC² (D − C) + ω_p² (C − S) + [⟂ DC] gives s′; a_X = a_S + ω_p² (S − X)
++ [⟂ SX] = [∥ guide] gives x′ (no Coriolis term: the guide is fixed); b′, c′ are images.
+
+Not done: where AB and DC are parallel (S at infinity) the three-link triad takes S on
+another pair of links; here the other pairs involve the block, whose line is the normal to the
+guide at X, and that construction is not written.  The construction is exact however near
+parallel the pair is, down to the drawing's parallel limit (1e-5°), where it refuses.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..steps import Builder, Component, Kind, Op
+from . import image
+from .base import size_of
+from .triad import Triad, _aux_label, _plates
+from .triad_slider_math import all_corners, triad_slider_cols, triad_slider_scalar
+
+
+@dataclass(frozen=True)
+class TriadSlider:
+    """Plate ``plate`` with corners ``b``, ``c`` joined by ``link_b``, ``link_c`` to the placed
+    ``ob``, ``oc``, and corner ``x`` a block on its fixed guide ([sliders.x]); ``s`` the
+    Assur point (AB and DC produced); ``frame``: (label, (x, y)) of the plate's three corners
+    in its own frame; ``ternary``: the plate is a link with a [points] corner (else a
+    triangle of links, whose mirror image is a closure too)."""
+    b: str
+    c: str
+    x: str
+    ob: str
+    oc: str
+    link_b: str
+    link_c: str
+    plate: str
+    plate_links: tuple[str, ...]
+    s: str
+    ternary: bool
+    via: int = 0            # S on AB and DC only (the other pairs are not done: the module)
+    two_closures = False
+    many_closures = True
+    #: S is always where the two links meet (no other pair: see the module's docstring)
+    single_pair = True
+
+    #: the graphical force polygon of this group is not written: refused in one line by
+    #: :func:`polygons.forces.graphical.groups_of` (Newton–Euler and Zhukovsky's lever do it)
+    force_polygon = "triad with a block on a guide"
+
+    def auxiliary_points(self):
+        """(S, (A, B), (D, C)): Assur's point S where AB and DC produced meet."""
+        return ((self.s, (self.ob, self.b), (self.oc, self.c)),)
+
+    def force_bodies(self) -> tuple[str, ...]:
+        return (((self.plate,) if self.ternary else tuple(self.plate_links))
+                + (self.link_b, self.link_c, self.x))
+
+    @property
+    def roles(self):
+        """((B, A, AB), (C, D, DC), (X, None, None)): S on the first two."""
+        return ((self.b, self.ob, self.link_b), (self.c, self.oc, self.link_c),
+                (self.x, None, None))
+
+    def assur_sine(self, points, via=None) -> float:
+        u = np.subtract(points[self.b], points[self.ob])
+        w = np.subtract(points[self.c], points[self.oc])
+        n = float(np.hypot(*u) * np.hypot(*w))
+        return abs(float(u[0] * w[1] - u[1] * w[0])) / n if n > 0 else 0.0
+
+    def for_instant(self, points):
+        """This group (its S is always on AB and DC: no other pair), no note."""
+        return self, ""
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.b, self.c, self.x, self.s)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.ob, self.oc)
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        return (self.link_b, self.link_c) + self.plate_links
+
+    @property
+    def sigma_keys(self) -> tuple[str, ...]:
+        """Where the chosen closure is kept: B's and X's coordinates under B's label."""
+        return (f"{self.b}#bx", f"{self.b}#by", f"{self.b}#xx", f"{self.b}#xy")
+
+    # ------------------------------------------------------------ geometry
+    def frame(self, scene):
+        """The plate in the roles' frame: C = (L, 0), X = (ξ, η) from B (arrays in a batch)."""
+        if self.ternary:
+            lk = scene.links[self.plate]
+            bp = next(p for p in scene.points.values() if p.link == self.plate)
+            along = bp.along if bp.along is not None else bp.fraction * lk.length
+            own = {lk.a: (0.0, 0.0), lk.b: (lk.length, 0.0), bp.label: (along, bp.left)}
+        else:
+            lbc, lbx, lcx = (scene.links[n].length for n in self.plate_links)
+            first = scene.links[self.plate_links[0]]
+            third = ({self.b, self.c, self.x} - {first.a, first.b}).pop()
+            xi = (lbc * lbc + lbx * lbx - lcx * lcx) / (2.0 * lbc)
+            own = {first.a: (0.0, 0.0), first.b: (lbc, 0.0),
+                   third: (xi, np.sqrt(np.maximum(lbx * lbx - xi * xi, 0.0)))}
+        (bx, by), (cx, cy), (xx, xy) = (own[k] for k in (self.b, self.c, self.x))
+        ux, uy = np.subtract(cx, bx), np.subtract(cy, by)
+        L = np.hypot(ux, uy)
+        ux, uy = ux / L, uy / L
+        wx, wy = np.subtract(xx, bx), np.subtract(xy, by)
+        return L, wx * ux + wy * uy, wy * ux - wx * uy
+
+    def _params(self, scene, pos):
+        L, xi, eta = self.frame(scene)
+        g = scene.sliders[self.x]
+        (ax, ay), (dx, dy) = pos[self.ob], pos[self.oc]
+        lk = scene.links
+        return (ax, ay, lk[self.link_b].length, dx, dy, lk[self.link_c].length,
+                float(g.through[0]), float(g.through[1]), *g.direction, L, xi, eta,
+                0.0 if self.ternary else 1.0)
+
+    def closures(self, scene, pos) -> list[dict]:
+        """Every closure at the positions ``pos``: {B, C, X, S} each."""
+        p = tuple(float(v) for v in self._params(scene, pos))
+        out = []
+        for B, C, X in all_corners(p, size_of(scene)):
+            pts = {self.b: np.array(B), self.c: np.array(C), self.x: np.array(X)}
+            pts[self.s] = self._assur(pos, pts)
+            out.append(pts)
+        return out
+
+    def _assur(self, pos, pts):
+        """S = A + t (B − A) on DC produced: t = ((D − A) × (C − D)) / ((B − A) × (C − D))."""
+        a, d = pos[self.ob], pos[self.oc]
+        u, w = pts[self.b] - a, pts[self.c] - d
+        den = u[0] * w[1] - u[1] * w[0]
+        q = d - a
+        with np.errstate(all="ignore"):
+            t = (q[0] * w[1] - q[1] * w[0]) / np.where(den != 0.0, den, np.nan)
+        return a + t * u
+
+    def locate(self, scene, pos, sigma, x):
+        """The closure nearest the reference ``sigma`` (None: the first closure), over one
+        position or (2, N) arrays (continuation)."""
+        p = self._params(scene, pos)
+        ref = [sigma[k] for k in self.sigma_keys] if sigma else None
+        size = size_of(scene)
+        if np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1:
+            if ref is None:
+                cands = self.closures(scene, pos)
+                if not cands:
+                    return self._nan(pos), -1.0
+                B, X = cands[0][self.b], cands[0][self.x]
+                ref = [B[0], B[1], X[0], X[1]]
+            r = triad_slider_scalar(*(float(v) for v in p), *ref, size)
+        else:
+            r = triad_slider_cols(*p, *(ref or [0.0] * 4), size)
+        pts = {self.b: np.array([r[0], r[1]]), self.c: np.array([r[2], r[3]]),
+               self.x: np.array([r[4], r[5]])}
+        pts[self.s] = self._assur(pos, pts)
+        return pts, r[6]
+
+    def _nan(self, pos):
+        return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
+                for k in self.placed}
+
+    def source(self, g) -> None:
+        """:meth:`locate` as generated code (triad_slider_math; its array twin follows the
+        closure through a sweep), then S."""
+        (ax, ay), (dx, dy) = (g.pos(k) for k in (self.ob, self.oc))
+        lb = g.param(lambda s: s.links[self.link_b].length)
+        lc = g.param(lambda s: s.links[self.link_c].length)
+        gx = g.param(lambda s: float(s.sliders[self.x].through[0]))
+        gy = g.param(lambda s: float(s.sliders[self.x].through[1]))
+        ex = g.param(lambda s: s.sliders[self.x].direction[0])
+        ey = g.param(lambda s: s.sliders[self.x].direction[1])
+        L = g.param(lambda s: self.frame(s)[0])
+        xi = g.param(lambda s: self.frame(s)[1])
+        eta = g.param(lambda s: self.frame(s)[2])
+        refs = [g.sigma(k) for k in self.sigma_keys]
+        size = g.param(lambda s: size_of(s))
+        bx, by, cx, cy, xx, xy, m = g.call(
+            triad_slider_scalar, ax, ay, lb, dx, dy, lc, gx, gy, ex, ey, L, xi, eta,
+            "0.0" if self.ternary else "1.0", *refs, size, n=7)
+        g.margin(m)
+        g.place(self.b, bx, by)
+        g.place(self.c, cx, cy)
+        g.place(self.x, xx, xy)
+        ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
+        wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
+        den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
+        safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
+                     g.e("({} if {} != 0.0 else nan)", den, den))
+        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", dx, ax, wy, dy, ay, wx, safe)
+        g.place(self.s, g.let("{} + {} * {}", ax, t, ux), g.let("{} + {} * {}", ay, t, uy))
+
+    def why_not(self, scene, pos) -> str:
+        return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c} "
+                f"on the links {self.link_b}, {self.link_c} and {self.x} a block on its "
+                f"guide) cannot close at this input: no position of the plate gives both links "
+                f"their lengths with {self.x} on the guide")
+
+    def toggle_reason(self, scene, pos) -> str:
+        return (f"two closures of the class-III group {self.b}{self.c}{self.x} meet here (the "
+                f"lines of {self.link_b}, {self.link_c} and the normal to the guide of "
+                f"{self.x} through {self.x} are concurrent: the plate {self.plate} cannot turn "
+                f"further this way)")
+
+    # ------------------------------------------------------------ construction
+    def emit(self, b: Builder) -> None:
+        B, A, LB, C, D, LC, X = (self.b, self.ob, self.link_b, self.c, self.oc, self.link_c,
+                                 self.x)
+        S, P = self.s, self.plate
+        V = b.names.of
+        a, d, s, x, pole = V(A), V(D), V(S), V(X), b.names.pole
+        Cm = Component
+        if b.velocity:
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (A, B), f"line ⟂ {A}{B}", a, None,
+                       "relative_velocity", f"(v_{S})_{A}", f"(v_{S})_{A} ⟂ {A}{B}",
+                       f"The auxiliary point {S}, where {A}{B} and {D}{C} produced meet, is a "
+                       f"point of the plate {P} on {A}{B} produced: its velocity relative to "
+                       f"{A} is perpendicular to {A}{B}. Through {a} draw a line ⟂ {A}{B}.",
+                       component=Cm.CONSTRUCTION, link=LB)
+            n2 = b.add(Kind.LINE, Op.LINE_PERP, (D, C), f"line ⟂ {D}{C}", d, None,
+                       "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
+                       f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
+                       component=Cm.CONSTRUCTION, link=LC)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
+                  f"{s} = intersection of the two lines",
+                  f"The lines meet at {s}: {pole}{s} is the velocity of the auxiliary "
+                  f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+            n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
+                       "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
+                       f"{X} and {S} are points of the plate: through {s} draw a line "
+                       f"⟂ {S}{X}.", component=Cm.CONSTRUCTION, link=P)
+            n4 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None,
+                       "slider_line", f"v_{X}", f"v_{X} ∥ guide of {X}",
+                       f"The block at {X} slides on a fixed guide: through {pole} draw a line "
+                       f"along the guide of {X}.", component=Cm.RESULTANT)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
+                  f"{x} = intersection of the two lines",
+                  f"The lines meet at {x}: {pole}{x} is the velocity of {X}, along its "
+                  f"guide.", (n3, n4), component=Cm.RESULTANT)
+            self._rates(b, Op.OMEGA)
+            return
+        k = [b.fresh(B), b.fresh(S), b.fresh(C), b.fresh(S), b.fresh(X)]
+        Triad._normal(b, LB, A, B, a, k[0], f"(a_{B})_{A}^n")
+        Triad._normal(b, P, B, S, k[0], k[1], f"(a_{S})_{B}^n")
+        n1 = Triad._tangent_line(b, A, B, k[1], None, (B, A, S, B))
+        Triad._normal(b, LC, D, C, d, k[2], f"(a_{C})_{D}^n")
+        Triad._normal(b, P, C, S, k[2], k[3], f"(a_{S})_{C}^n")
+        n2 = Triad._tangent_line(b, D, C, k[3], None, (C, D, S, C))
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
+              f"{s} = intersection of the two lines",
+              f"The lines meet at {s}: {pole}{s} is the acceleration of the auxiliary "
+              f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+        Triad._normal(b, P, S, X, s, k[4], f"(a_{X})_{S}^n")
+        n3 = Triad._tangent_line(b, S, X, k[4], P)
+        n4 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None, "slider_line",
+                   f"a_{X}", f"a_{X} ∥ guide of {X}",
+                   f"Through {pole} draw a line along the guide of {X}: the block's "
+                   f"acceleration lies along it (the guide is fixed: no Coriolis term).",
+                   component=Cm.RESULTANT)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
+              f"{x} = intersection of the two lines",
+              f"The lines meet at {x}: {pole}{x} is the acceleration of {X}, along its "
+              f"guide.", (n3, n4), component=Cm.RESULTANT)
+        self._rates(b, Op.ALPHA, {P: (k[4], X), LB: (k[0], B), LC: (k[2], C)})
+
+    def _rates(self, b: Builder, op, tangential=None) -> None:
+        """The plate's ω (α) from s and x, the images b and c, each link's ω (α), the
+        block's velocity (acceleration) along its guide.  ω = relative velocity / length;
+        α = the tangential part (from the end of the centripetal vector to the point) /
+        length."""
+        B, A, LB, C, D, LC, X = (self.b, self.ob, self.link_b, self.c, self.oc, self.link_c,
+                                 self.x)
+        S, P = self.s, self.plate
+        V = b.names.of
+        vel = op is Op.OMEGA
+        sym, what, th = (("ω", "angular velocity", "angular_velocity") if vel
+                         else ("α", "angular acceleration", "angular_acceleration"))
+        comp = Component.RELATIVE if vel else Component.TANGENTIAL
+
+        def read(L, O, Q):
+            if tangential is None:
+                return f"{V(O)}{V(Q)}", f"{V(O)}{V(Q)}"
+            t = f"{tangential[L][0]}{V(tangential[L][1])}"
+            return t, f"{t} (the tangential part of {V(O)}{V(Q)})"
+        vec, words = read(P, S, X)
+        plate = f"{self.b}{self.c}{self.x}"
+        b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
+              f"{sym}_{plate} = {vec} / {S}{X}",
+              f"The {what} of the plate {plate} is {words} divided by {S}{X}.",
+              component=comp, link=P)
+        image.emit_image(b, B, P, S, X)
+        image.emit_image(b, C, P, S, X)
+        for L, O, Q in ((LB, A, B), (LC, D, C)):
+            vec, words = read(L, O, Q)
+            b.add(Kind.MEASURE, op, (L, O, Q), f"{sym}_{L}", None, None, th, f"{sym}_{L}",
+                  f"{sym}_{L} = {vec} / {O}{Q}",
+                  f"The {what} of {L} is {words} divided by {O}{Q}.", component=comp, link=L)
+        pole, x = b.names.pole, V(X)
+        if vel:
+            b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (X,), f"v_{X}", None, None, "slider",
+                  f"v_{X} along guide", f"v_{X} = {pole}{x}",
+                  f"The block's velocity is {pole}{x}, signed along the guide direction.",
+                  component=Component.RESULTANT)
+        else:
+            b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (X,), f"a_{X}", None, None, "slider",
+                  f"a_{X} along guide", f"a_{X} = {pole}{x}",
+                  f"The block's acceleration is {pole}{x}, signed along the guide direction.",
+                  component=Component.RESULTANT)
+
+
+# ---------------------------------------------------------------- finding the groups
+def matches(scene, placed):
+    """Every plate whose one corner is a block on a fixed guide ([sliders], no slot or pin on
+    it) with no link of its own, and whose two other corners each have one link to a placed
+    point, none of the corners placed."""
+    found = []
+    taken = set(placed)
+    for corners, plate, plate_links, ternary in _plates(scene):
+        if any(k in placed or k in scene.slots for k in corners):
+            continue
+        on_guide = [k for k in corners if k in scene.sliders]
+        if len(on_guide) != 1:
+            continue
+        x = on_guide[0]
+        g = scene.sliders[x]
+        if g.pin is not None or g.slot_angle is not None:
+            continue
+        outer = {}
+        for k in corners:
+            outer[k] = [(l.b if l.a == k else l.a, l.name) for l in scene.links.values()
+                        if k in (l.a, l.b) and l.length is not None
+                        and l.name not in plate_links and (l.b if l.a == k else l.a)
+                        not in corners]
+        if outer[x]:
+            continue
+        b, c = (k for k in corners if k != x)
+        if not all(len(outer[k]) == 1 and outer[k][0][0] in placed for k in (b, c)):
+            continue
+        (ob, lb), (oc, lc) = outer[b][0], outer[c][0]
+        s = _aux_label(scene, taken)
+        taken.add(s)
+        found.append(TriadSlider(b, c, x, ob, oc, lb, lc, plate, plate_links, s, ternary))
+    return found
