@@ -29,7 +29,8 @@ parallel the pair is, down to the drawing's parallel limit (1e-5°), where it re
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -58,18 +59,27 @@ class TriadSlider:
     plate_links: tuple[str, ...]
     s: str
     ternary: bool
-    via: int = 0            # S on AB and DC only (the other pairs are not done: the module)
+    #: the guide's direction (kept for the construction's choice of S)
+    guide_e: tuple = field(default=(1.0, 0.0), compare=False)
+    #: the lines meeting at S: 0 AB, DC; 1 AB and the normal to the guide at X; 2 DC and it
+    via: int = 0
     two_closures = False
     many_closures = True
-    #: S is always where the two links meet (no other pair: see the module's docstring)
-    single_pair = True
+
+    @property
+    def _guide_e(self):
+        return self.guide_e
 
     #: the graphical force polygon of this group is not written: refused in one line by
     #: :func:`polygons.forces.graphical.groups_of` (Newton–Euler and Zhukovsky's lever do it)
     force_polygon = "triad with a block on a guide"
 
     def auxiliary_points(self):
-        """(S, (A, B), (D, C)): Assur's point S where AB and DC produced meet."""
+        """(S, (A, B), (D, C)): Assur's point S where AB and DC produced meet; none drawn when
+        S is taken on a link and the normal to the guide (:attr:`via` 1, 2: no second named
+        point on that line; the steps say where S is)."""
+        if self.via:
+            return ()
         return ((self.s, (self.ob, self.b), (self.oc, self.c)),)
 
     def force_bodies(self) -> tuple[str, ...]:
@@ -78,19 +88,52 @@ class TriadSlider:
 
     @property
     def roles(self):
-        """((B, A, AB), (C, D, DC), (X, None, None)): S on the first two."""
-        return ((self.b, self.ob, self.link_b), (self.c, self.oc, self.link_c),
-                (self.x, None, None))
+        """((P₁, O₁, link₁), (P₂, O₂, link₂)): S on O₁P₁ produced and on O₂P₂ produced
+        (:attr:`via` 0: AB, DC), or on O₁P₁ produced and the normal to the guide at X (via 1:
+        AB; via 2: DC), the other link's corner P₂ found from S and O₂ then."""
+        rb, rc = (self.b, self.ob, self.link_b), (self.c, self.oc, self.link_c)
+        return (rc, rb) if self.via == 2 else (rb, rc)
+
+    def pair_words(self, via=None) -> str:
+        """The two lines meeting at S for ``via`` (default this group's), in words."""
+        via = self.via if via is None else via
+        if via == 0:
+            return f"{self.ob}{self.b} and {self.oc}{self.c}"
+        o, p = (self.ob, self.b) if via == 1 else (self.oc, self.c)
+        return f"{o}{p} and the normal to the guide of {self.x} at {self.x}"
+
+    def pair_sine(self, points, via=None):
+        """|sin| of the angle between the two lines meeting at S for ``via`` (0: AB, DC; 1:
+        AB and the guide's normal; 2: DC and the normal), over one position or arrays."""
+        via = self.via if via is None else via
+        P = {k: np.asarray(points[k], dtype=float) for k in (self.b, self.c, self.ob, self.oc)}
+        col = (lambda v: v.reshape(2, 1) if v.ndim == 1 and P[self.b].ndim > 1 else v)
+        u = P[self.b] - col(P[self.ob])
+        w = P[self.c] - col(P[self.oc])
+        e = self._guide_e
+        n = np.array([-e[1], e[0]]).reshape((2,) + (1,) * (u.ndim - 1))
+        first, second = {0: (u, w), 1: (u, n), 2: (w, n)}[via]
+        with np.errstate(all="ignore"):
+            return (np.abs(first[0] * second[1] - first[1] * second[0])
+                    / (np.hypot(*first) * np.hypot(*second)))
 
     def assur_sine(self, points, via=None) -> float:
-        u = np.subtract(points[self.b], points[self.ob])
-        w = np.subtract(points[self.c], points[self.oc])
-        n = float(np.hypot(*u) * np.hypot(*w))
-        return abs(float(u[0] * w[1] - u[1] * w[0])) / n if n > 0 else 0.0
+        return float(self.pair_sine(points, via))
 
     def for_instant(self, points):
-        """This group (its S is always on AB and DC: no other pair), no note."""
-        return self, ""
+        """This group with S taken on the pair of lines that meet best at the instant
+        ``points`` when its own pair is parallel within 1° (S at infinity is a point of the
+        construction, not a singularity of the group): (group, note) — note '' if kept."""
+        from dataclasses import replace
+        if self.assur_sine(points) >= math.sin(math.radians(1.0)):
+            return self, ""
+        best = max(range(3), key=lambda v: self.assur_sine(points, v))
+        if best == self.via:
+            return self, ""
+        new = replace(self, via=best)
+        return new, (f"the lines {self.pair_words()} are parallel here (the auxiliary point "
+                     f"{self.s} at infinity, not a singularity of the group): {self.s} is "
+                     f"taken where {new.pair_words()} meet instead")
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -151,13 +194,22 @@ class TriadSlider:
         return out
 
     def _assur(self, pos, pts):
-        """S = A + t (B − A) on DC produced: t = ((D − A) × (C − D)) / ((B − A) × (C − D))."""
-        a, d = pos[self.ob], pos[self.oc]
-        u, w = pts[self.b] - a, pts[self.c] - d
+        """S = O₁ + t (P₁ − O₁) where the second line (O₂ + r (P₂ − O₂), or X + r n: the
+        normal to the guide) meets it: t = ((Q − O₁) × w) / ((P₁ − O₁) × w), Q and w that
+        line's point and direction (:attr:`roles`)."""
+        (p1, o1, _), (p2, o2, _) = self.roles
+        a = pos[o1]
+        u = pts[p1] - a
+        if self.via == 0:
+            q, w = pos[o2], pts[p2] - pos[o2]
+        else:
+            e = self.guide_e
+            q = pts[self.x]
+            w = np.array([-e[1], e[0]]).reshape((2,) + (1,) * (np.ndim(u) - 1)) + 0.0 * u
         den = u[0] * w[1] - u[1] * w[0]
-        q = d - a
+        qa = q - a
         with np.errstate(all="ignore"):
-            t = (q[0] * w[1] - q[1] * w[0]) / np.where(den != 0.0, den, np.nan)
+            t = (qa[0] * w[1] - qa[1] * w[0]) / np.where(den != 0.0, den, np.nan)
         return a + t * u
 
     def locate(self, scene, pos, sigma, x):
@@ -207,13 +259,22 @@ class TriadSlider:
         g.place(self.b, bx, by)
         g.place(self.c, cx, cy)
         g.place(self.x, xx, xy)
-        ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
-        wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
+        corner = {self.b: (bx, by), self.c: (cx, cy)}
+        outer = {self.b: (ax, ay), self.c: (dx, dy)}
+        (p1, _, _), (p2, _, _) = self.roles
+        (px, py), (ox, oy) = corner[p1], outer[p1]
+        ux, uy = g.let("{} - {}", px, ox), g.let("{} - {}", py, oy)
+        if self.via == 0:
+            (qx, qy), (rx, ry) = corner[p2], outer[p2]
+            wx, wy = g.let("{} - {}", qx, rx), g.let("{} - {}", qy, ry)
+        else:           # the normal to the guide at X: through X along (−e_y, e_x)
+            rx, ry = xx, xy
+            wx, wy = g.let("-{}", ey), g.let("{} + 0.0", ex)
         den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
         safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
                      g.e("({} if {} != 0.0 else nan)", den, den))
-        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", dx, ax, wy, dy, ay, wx, safe)
-        g.place(self.s, g.let("{} + {} * {}", ax, t, ux), g.let("{} + {} * {}", ay, t, uy))
+        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", rx, ox, wy, ry, oy, wx, safe)
+        g.place(self.s, g.let("{} + {} * {}", ox, t, ux), g.let("{} + {} * {}", oy, t, uy))
 
     def why_not(self, scene, pos) -> str:
         return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c} "
@@ -229,6 +290,9 @@ class TriadSlider:
 
     # ------------------------------------------------------------ construction
     def emit(self, b: Builder) -> None:
+        if self.via:
+            self._emit_on_normal(b)
+            return
         B, A, LB, C, D, LC, X = (self.b, self.ob, self.link_b, self.c, self.oc, self.link_c,
                                  self.x)
         S, P = self.s, self.plate
@@ -288,6 +352,74 @@ class TriadSlider:
               f"guide.", (n3, n4), component=Cm.RESULTANT)
         self._rates(b, Op.ALPHA, {P: (k[4], X), LB: (k[0], B), LC: (k[2], C)})
 
+    def _emit_on_normal(self, b: Builder) -> None:
+        """S on the link O₁P₁ produced and on the normal to the guide at X (where AB ∥ DC):
+        v_S − v_X = ω_p × XS is along the guide, and so is v_X: s is where the line ⟂ O₁P₁
+        through o₁ meets the guide's direction through the pole; then v_P₂ − v_S ⟂ SP₂ and
+        v_P₂ − v_O₂ ⟂ O₂P₂ give p₂; x, p₁ are images.  Acceleration: a_S = a_O₁ + ω₁² (O₁ − P₁)
+        + ω_p² (P₁ − S) + [⟂ O₁P₁] = ω_p² (X − S) + [∥ guide] (a_X and (a_S)ᵗ_X both along
+        it), then p₂′ as v."""
+        (P1, O1, L1), (P2, O2, L2) = self.roles
+        X, S, P = self.x, self.s, self.plate
+        V = b.names.of
+        o1, o2, s, p2, pole = V(O1), V(O2), V(S), V(P2), b.names.pole
+        Cm = Component
+        where = (f"The auxiliary point {S}, where {O1}{P1} produced meets the normal to the "
+                 f"guide of {X} at {X} ({self.pair_words(0)} are parallel here), is a point "
+                 f"of the plate {P}")
+        if b.velocity:
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (O1, P1), f"line ⟂ {O1}{P1}", o1, None,
+                       "relative_velocity", f"(v_{S})_{O1}", f"(v_{S})_{O1} ⟂ {O1}{P1}",
+                       f"{where}: its velocity relative to {O1} is perpendicular to "
+                       f"{O1}{P1}. Through {o1} draw a line ⟂ {O1}{P1}.",
+                       component=Cm.CONSTRUCTION, link=L1)
+            n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None,
+                       "slider_line", f"v_{S}", f"v_{S} ∥ guide of {X}",
+                       f"{S} is on the normal to the guide at {X}: v_{S} − v_{X} = ω × "
+                       f"{X}{S} is along the guide, and so is v_{X}. Through {pole} draw a "
+                       f"line along the guide of {X}.", component=Cm.CONSTRUCTION)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
+                  f"{s} = intersection of the two lines",
+                  f"The lines meet at {s}: {pole}{s} is the velocity of the auxiliary "
+                  f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+            n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, P2), f"line ⟂ {S}{P2}", s, None,
+                       "relative_velocity", f"(v_{P2})_{S}", f"(v_{P2})_{S} ⟂ {S}{P2}",
+                       f"{P2} and {S} are points of the plate: through {s} draw a line "
+                       f"⟂ {S}{P2}.", component=Cm.CONSTRUCTION, link=P)
+            n4 = b.add(Kind.LINE, Op.LINE_PERP, (O2, P2), f"line ⟂ {O2}{P2}", o2, None,
+                       "relative_velocity", f"(v_{P2})_{O2}", f"(v_{P2})_{O2} ⟂ {O2}{P2}",
+                       f"Through {o2} draw a line ⟂ {O2}{P2}: the velocity of {P2} relative "
+                       f"to {O2}.", component=Cm.CONSTRUCTION, link=L2)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), p2, None, p2, "intersection",
+                  f"v_{P2}", f"{p2} = intersection of the two lines",
+                  f"The lines meet at {p2}: {pole}{p2} is the velocity of {P2}.", (n3, n4),
+                  component=Cm.RESULTANT)
+            self._rates(b, Op.OMEGA)
+            return
+        k = [b.fresh(P1), b.fresh(S), b.fresh(S), b.fresh(P2), b.fresh(P2)]
+        Triad._normal(b, L1, O1, P1, o1, k[0], f"(a_{P1})_{O1}^n")
+        Triad._normal(b, P, P1, S, k[0], k[1], f"(a_{S})_{P1}^n")
+        n1 = Triad._tangent_line(b, O1, P1, k[1], None, (P1, O1, S, P1))
+        Triad._normal(b, P, X, S, pole, k[2], f"(a_{S})_{X}^n")
+        n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", k[2], None, "slider_line",
+                   f"a_{X} + (a_{S})_{X}^t", f"a_{X} + (a_{S})_{X}^t ∥ guide of {X}",
+                   f"Through {k[2]} draw a line along the guide of {X}: a_{X} (the block on "
+                   f"a fixed guide) and (a_{S})_{X}^t (⟂ {X}{S}) both lie along it.",
+                   component=Cm.CONSTRUCTION)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
+              f"{s} = intersection of the two lines",
+              f"The lines meet at {s}: {pole}{s} is the acceleration of the auxiliary "
+              f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+        Triad._normal(b, P, S, P2, s, k[3], f"(a_{P2})_{S}^n")
+        n3 = Triad._tangent_line(b, S, P2, k[3], P)
+        Triad._normal(b, L2, O2, P2, o2, k[4], f"(a_{P2})_{O2}^n")
+        n4 = Triad._tangent_line(b, O2, P2, k[4], L2)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), p2, None, p2, "intersection", f"a_{P2}",
+              f"{p2} = intersection of the two lines",
+              f"The lines meet at {p2}: {pole}{p2} is the acceleration of {P2}.", (n3, n4),
+              component=Cm.RESULTANT)
+        self._rates(b, Op.ALPHA, {P: (k[3], P2), L1: (k[0], P1), L2: (k[4], P2)})
+
     def _rates(self, b: Builder, op, tangential=None) -> None:
         """The plate's ω (α) from s and x, the images b and c, each link's ω (α), the
         block's velocity (acceleration) along its guide.  ω = relative velocity / length;
@@ -307,14 +439,16 @@ class TriadSlider:
                 return f"{V(O)}{V(Q)}", f"{V(O)}{V(Q)}"
             t = f"{tangential[L][0]}{V(tangential[L][1])}"
             return t, f"{t} (the tangential part of {V(O)}{V(Q)})"
-        vec, words = read(P, S, X)
+        T = X if self.via == 0 else self.roles[1][0]      # the corner found with S
+        vec, words = read(P, S, T)
         plate = f"{self.b}{self.c}{self.x}"
-        b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
-              f"{sym}_{plate} = {vec} / {S}{X}",
-              f"The {what} of the plate {plate} is {words} divided by {S}{X}.",
+        b.add(Kind.MEASURE, op, (P, S, T), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
+              f"{sym}_{plate} = {vec} / {S}{T}",
+              f"The {what} of the plate {plate} is {words} divided by {S}{T}.",
               component=comp, link=P)
-        image.emit_image(b, B, P, S, X)
-        image.emit_image(b, C, P, S, X)
+        for Q in (B, C, X):
+            if Q != T:
+                image.emit_image(b, Q, P, S, T)
         for L, O, Q in ((LB, A, B), (LC, D, C)):
             vec, words = read(L, O, Q)
             b.add(Kind.MEASURE, op, (L, O, Q), f"{sym}_{L}", None, None, th, f"{sym}_{L}",
@@ -364,5 +498,6 @@ def matches(scene, placed):
         (ob, lb), (oc, lc) = outer[b][0], outer[c][0]
         s = _aux_label(scene, taken)
         taken.add(s)
-        found.append(TriadSlider(b, c, x, ob, oc, lb, lc, plate, plate_links, s, ternary))
+        found.append(TriadSlider(b, c, x, ob, oc, lb, lc, plate, plate_links, s, ternary,
+                                 guide_e=tuple(float(v) for v in g.direction)))
     return found

@@ -253,23 +253,36 @@ def all_corners(p, size) -> list[tuple]:
     return [c for c, _ in _listed(q, p[13], size)]
 
 
+_SIN_1DEG = math.sin(math.radians(1.0))
+
+
 def construction_sine(q, B, C, X) -> float:
-    """The sine of the smallest angle of the group's construction: the two links' lines that
-    meet at S (AP₁, DP₂), then the line S–P₃ against the guide's normal (the lines ⟂ SP₃ and
-    along the guide that meet at p₃).  Zero where the three lines are concurrent (two
-    closures meet) or AP₁ ∥ DP₂ (S at infinity)."""
+    """The sine of the smallest angle of the group's construction (one definition for a solve
+    and a sweep): the two lines that meet at S — AP₁ and DP₂ produced, unless they are parallel
+    within 1°, then the pair of the three (with the normal to the guide at P₃) that meets best
+    (:meth:`polygons.dyads.triad_slider.TriadSlider.for_instant`) — then the line from S to the
+    third corner against that corner's own line (its link, or the guide's normal).  Zero only
+    where the three lines are concurrent (two closures meet)."""
     ax, ay, _, dx, dy, _, _, _, ex, ey = _unpack(q)[:10]
-    u1, u2 = (B[0] - ax, B[1] - ay), (C[0] - dx, C[1] - dy)
+    n = (-ey, ex)
+    lines = (((ax, ay), (B[0] - ax, B[1] - ay)), ((dx, dy), (C[0] - dx, C[1] - dy)), (X, n))
+    corner = (B, C, X)
 
     def sin(a, b):
-        n = math.hypot(*a) * math.hypot(*b)
-        return abs(a[0] * b[1] - a[1] * b[0]) / n if n > 0 else 0.0
-    cr = u1[0] * u2[1] - u1[1] * u2[0]
+        m = math.hypot(*a) * math.hypot(*b)
+        return abs(a[0] * b[1] - a[1] * b[0]) / m if m > 0 else 0.0
+    pairs = ((0, 1, 2), (0, 2, 1), (1, 2, 0))
+    s = [sin(lines[i][1], lines[j][1]) for i, j, _ in pairs]
+    v = 0 if s[0] >= _SIN_1DEG else max(range(3), key=s.__getitem__)
+    i, j, k = pairs[v]
+    (oi, ui), (oj, uj) = lines[i], lines[j]
+    cr = ui[0] * uj[1] - ui[1] * uj[0]
     if cr == 0.0:
         return 0.0
-    t = ((dx - ax) * u2[1] - (dy - ay) * u2[0]) / cr
-    S = (ax + t * u1[0], ay + t * u1[1])
-    return min(sin(u1, u2), sin((X[0] - S[0], X[1] - S[1]), (-ey, ex)))
+    t = ((oj[0] - oi[0]) * uj[1] - (oj[1] - oi[1]) * uj[0]) / cr
+    S = (oi[0] + t * ui[0], oi[1] + t * ui[1])
+    P = corner[k]
+    return min(s[v], sin((P[0] - S[0], P[1] - S[1]), lines[k][1]))
 
 
 def _ref_poses(q, mirror, ref_b, ref_x):
