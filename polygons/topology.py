@@ -682,8 +682,8 @@ def why_unplaced(scene, x: str, placed) -> str:
                 f"their other ends are placed: unless a link or guide is missing, the links "
                 f"around {x} form a closed group (a class-III Assur group, a triad) that no "
                 f"single dyad places; a triad is solved when its plate's three corners each "
-                f"have one link to a placed point (a block on a guide at a corner, "
-                f"[sliders], is not supported yet)")
+                f"have one link to a placed point, or one corner is a block on a fixed guide "
+                f"([sliders]) with no link of its own and the other two one link each")
     if len(joints) == 1 and x not in scene.sliders and x not in scene.points:
         return (f"{x} hangs from one link ({joints[0][1]}) only: it needs a second link, a "
                 f"guide ([sliders.{x}]), a slot ([slots.{x}]) or [points.{x}] on a link")
