@@ -168,3 +168,14 @@ def test_the_force_polygon_refuses_naming_the_group_and_newton_euler_solves():
     an = analyse(scene)
     st = an.states[0]
     assert abs(st.ne.effort - st.vw_effort) < 1e-9 * max(1.0, abs(st.ne.effort))
+
+
+def test_a_second_point_on_the_plate_stated_first_does_not_change_the_plate():
+    """The plate's third corner is the block's point, not the first [points] entry on the
+    plate's link (a point P on BC stated before X once gave the plate the wrong shape)."""
+    data = tomllib.loads(CASE.read_text(encoding="utf-8"))
+    data["points"] = {"P": {"on": "BC", "along": "20 mm", "left": "-30 mm"},
+                      **data["points"]}
+    one, two = solve(load_scene(CASE)), solve(parse_scene(data, file="p.toml"))
+    for k in "BCX":
+        assert math.dist(one.points[k].position, two.points[k].position) < 1e-12

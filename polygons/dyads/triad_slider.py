@@ -157,7 +157,7 @@ class TriadSlider:
         """The plate in the roles' frame: C = (L, 0), X = (ξ, η) from B (arrays in a batch)."""
         if self.ternary:
             lk = scene.links[self.plate]
-            bp = next(p for p in scene.points.values() if p.link == self.plate)
+            bp = scene.points[({self.b, self.c, self.x} - {lk.a, lk.b}).pop()]
             along = bp.along if bp.along is not None else bp.fraction * lk.length
             own = {lk.a: (0.0, 0.0), lk.b: (lk.length, 0.0), bp.label: (along, bp.left)}
         else:
