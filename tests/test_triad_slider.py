@@ -179,3 +179,15 @@ def test_a_second_point_on_the_plate_stated_first_does_not_change_the_plate():
     one, two = solve(load_scene(CASE)), solve(parse_scene(data, file="p.toml"))
     for k in "BCX":
         assert math.dist(one.points[k].position, two.points[k].position) < 1e-12
+
+
+def test_blocks_at_two_corners_are_refused_saying_so():
+    """Not the bare "B is not placed before it": the sentence names the blocks and says
+    which class-III groups with a block are solved."""
+    data = tomllib.loads(CASE.read_text(encoding="utf-8"))
+    for k in ("answers", "source", "assembly"):
+        data.pop(k)
+    data["links"] = {"OA": "100 mm", "AC": "200 mm", "BC": "150 mm"}
+    data["sliders"]["B"] = {"through": ["0 mm", "250 mm"], "direction": "90 deg"}
+    with pytest.raises(PolygonsError, match="blocks at two corners are not supported"):
+        solve(parse_scene(data, file="two-blocks.toml"))
