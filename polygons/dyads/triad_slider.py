@@ -70,9 +70,10 @@ class TriadSlider:
     def _guide_e(self):
         return self.guide_e
 
-    #: the graphical force polygon of this group is not written: refused in one line by
-    #: :func:`polygons.forces.graphical.groups_of` (Newton–Euler and Zhukovsky's lever do it)
-    force_polygon = "triad with a block on a guide"
+    #: no ``force_polygon``: the graphical force polygon of this group is not written, so
+    #: :func:`polygons.forces.graphical.groups_of` refuses it in one line, in these words
+    #: (Newton–Euler and Zhukovsky's lever solve it)
+    kind_words = "TriadSlider (a triad with a block on a guide)"
 
     def auxiliary_points(self):
         """(S, (A, B), (D, C)): Assur's point S where AB and DC produced meet; none drawn when

@@ -155,9 +155,8 @@ def groups_of(scene):
         if kind is None:                 # no body of its own (a point on a placed link)
             continue
         if kind is _MISSING or kind not in POLYGONS:
-            what = (f"a group of kind {type(d).__name__}" if kind is _MISSING
-                    else f"the {kind} (group {type(d).__name__})")
-            raise _refuse(what, "placing " + ", ".join(d.placed), file)
+            raise _refuse(f"a group of kind {getattr(d, 'kind_words', type(d).__name__)}",
+                          "placing " + ", ".join(d.placed), file)
         out.append((kind, d, tuple(d.force_bodies())))
     return out
 
