@@ -115,9 +115,11 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     wheels = rolling_wheels(scene)
     pos = {k: tuple(v) for k, v in sol.placement.points.items()}
     from . import rolling           # a wheel on a moving surface (placed by no-slip)
+    from . import cam_profile       # a cam stated by its profile: the whole outline
     triads = _triads(sol)
     aux = {t.s for t in triads}
-    bb = bounds([p for lab, p in pos.items() if lab not in aux] + rolling.extent(sol))
+    bb = bounds([p for lab, p in pos.items() if lab not in aux] + rolling.extent(sol)
+                + cam_profile.extent(sol))
     far = set()
     for lab in aux:     # the Assur point S: drawn when near, else said (at infinity: AB ∥ DC)
         if lab in pos:
@@ -203,6 +205,10 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     # polygons.contacts)
     equivalent = {q.link: q for q in scene.equivalents if q.kind in ("cam", "curved slot")}
     eq_notes = []
+    b_, n_ = cam_profile.space_items(
+        sol, lambda p: (round((p[0] - bb.x0) * k, 3), round((p[1] - bb.y0) * k, 3)), k, placer)
+    back += b_
+    eq_notes += n_
     for q in scene.equivalents:
         if q.kind == "rolling" and (q.on or q.opposite):
             b_, l_, n_ = rolling.space_items(

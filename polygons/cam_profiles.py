@@ -1,6 +1,7 @@
 """Cams stated by their profile, as books state them: base circle, nose radius, lift and the
-flank radius (a circular-arc cam) or straight flanks (a tangent cam), a translating follower
-(knife-edge, roller or flat-faced) whose line of stroke passes through the cam's centre.
+flank radius (a circular-arc cam) or straight flanks tangent to both circles (a tangent cam),
+with a knife-edge, roller or flat-faced follower that translates (its line of stroke through
+the cam's centre or offset from it) or oscillates (an arm pivoted at a fixed point).
 
     [driver]
     crank = "OK"                 # O: the cam's centre; K: the centre of curvature of the
@@ -8,30 +9,40 @@ flank radius (a circular-arc cam) or straight flanks (a tangent cam), a translat
     omega = "10 rad/s"           #   O → nose centre, CCW from +x
     sense = "CCW"
     [cam_profiles.R]             # R: the follower's point (the roller's centre, the knife's
-    base_radius = "25 mm"        #   edge, the flat face's point on the line of stroke)
-    nose_radius = "8 mm"
-    lift = "20 mm"
+    base_radius = "25 mm"        #   edge, the flat face's point on the line of stroke; an
+    nose_radius = "8 mm"         #   oscillating follower's arm is QR, Q its pivot)
+    lift = "20 mm"               # or faces_angle = "90 deg" (a tangent cam)
     flank_radius = "60 mm"       # or kind = "tangent" (straight flanks)
     follower = "roller"          # "knife", "roller" (with roller = "10 mm") or "flat"
     roller = "10 mm"
-    stroke = "90 deg"            # the line of stroke, from O towards the follower
+    stroke = "90 deg"            # translating: the line of stroke's direction …
+    offset = "0 mm"              #   … and its distance from O (+: left of the stroke)
+    # pivot = "Q", arm = "80 mm", side = "left"   an oscillating follower instead of stroke
 
 Geometry (the cam's own frame, x along the nose axis): the nose centre Q at d = r₁ + L − r₂; a
 circular-arc flank of radius R has its centre P on the far side of the axis, |OP| = R − r₁,
-|QP| = R − r₂ (tangent to the base circle where the ray P→O meets it, to the nose where P→Q
-meets it); a tangent cam's flank is the common tangent of the two circles.  At the stated cam
-angle the part in contact is the one whose span of outward normals holds the contact normal —
-the stroke's direction for a flat face; the direction from the part's centre to the roller's
-centre, on the ray of the stroke, for a knife or a roller — and the scene is rewritten to its
-equivalent linkage: the crank O → K (K the part's centre, rigid with the cam) and a [cams.R]
-entry (radius of the part; a flat face's R is then the yoke's point under K, the face
-the part's radius beyond it along the stroke: v and a are the follower's, its displacement is
-y(R) + ρ).  On the base circle the follower dwells (at rest: refused in those
-words, there is no linkage); a tangent cam's straight flank is not served yet (refused).
+|QP| = R − r₂; a tangent cam's flank is the common tangent x·N = r₁ of the two circles, N at
+β = acos((r₁ − r₂)/d) from the axis.  At the cam angle the follower's point is found on each
+part's offset curve (the part's radius + the roller's): where the line of stroke (translating)
+or the arm's circle about its pivot (oscillating, on the stated side) meets it; the part in
+contact is the one whose span of outward normals holds the contact normal (a flat face: the
+part whose normal is the face's).  The scene is then rewritten to the equivalent linkage of
+that instant:
 
-:func:`contact` is the geometry alone (used by the tests and the report); :func:`rewrite`
-turns a scene's ``[cam_profiles]`` into ``[links]``, ``[sliders]``, ``[cams]`` and the
-driver's angle before :func:`polygons.contacts.rewrite` reads them.
+* a circular part (nose, arc flank, base circle while the follower moves on it — it dwells,
+  refused in words) → the crank O → K (K the part's centre) and [cams.R] (the link K R =
+  ρ + roller on the guide, or with the arm QR; a flat face: the Scotch yoke, or the slotted
+  arm of [cams] arm);
+* a straight flank with an oscillating knife or roller → R a pin in a slot of the cam (∥ the
+  flank, offset r₁ + roller from O) at the end of the arm QR;
+* a straight flank with a translating knife or roller (a pin in a slot of the cam and on a
+  fixed guide: not among the construction's groups) is refused at an instant; the
+  displacement diagram (:mod:`polygons.cam_diagram`) gives it by the closed form
+  s = (r₁ + r − b·N)/(e·N) and its derivatives.
+
+:func:`contact` is the geometry alone (the tests, the diagram, the drawing); :func:`rewrite`
+turns a scene's ``[cam_profiles]`` into ``[links]``, ``[sliders]``, ``[slots]``, ``[cams]``
+and the driver's angle before :func:`polygons.contacts.rewrite` reads them.
 """
 from __future__ import annotations
 
@@ -46,41 +57,88 @@ from .units import parse_quantity
 TABLE = "cam_profiles"
 FOLLOWERS = ("knife", "roller", "flat")
 KINDS = ("circular arc", "tangent")
+SIDES = ("left", "right")
+#: the stated cam angle kept in the table carried to Scene.extra (for the drawing)
+AXIS_KEY = "_axis"
 
 TABLES: tuple[Table, ...] = (
-    Table(TABLE, "[cam_profiles.R]: a cam stated by its profile (base circle, nose, flanks) with "
-                 "a translating follower whose line of stroke passes through the cam's centre "
-                 "(R: the follower's point); the part in contact at the driver's angle (the "
-                 "nose's axis) is found and the equivalent linkage built: the driver's crank "
-                 "O → K (K: the part's centre of curvature, rigid with the cam) and a [cams.R] "
-                 "entry.  The follower dwelling on the base circle and a tangent cam's "
-                 "straight flank are refused in words.", (
+    Table(TABLE, "[cam_profiles.R]: a cam stated by its profile (base circle, nose, flanks: "
+                 "circular-arc or tangent) with a knife-edge, roller or flat-faced follower, "
+                 "translating (its line of stroke through the cam's centre or offset) or "
+                 "oscillating (an arm pivoted in [ground]); R: the follower's point.  The "
+                 "part in contact at the driver's angle (the nose's axis) is found and the "
+                 "equivalent linkage built: the driver's crank O → K (K: the part's centre of "
+                 "curvature, rigid with the cam) and a [cams.R] entry, or a slot of the cam "
+                 "for a straight flank.  The follower dwelling on the base circle and a "
+                 "translating knife or roller on a straight flank are refused in words at an "
+                 "instant (`polygons sweep` gives the displacement diagram over a turn).", (
         Key("base_radius", "quantity", "the base circle's radius r₁", example='"25 mm"',
             dimension="length", required=True),
         Key("nose_radius", "quantity", "the nose's radius r₂", example='"8 mm"',
             dimension="length", required=True),
-        Key("lift", "quantity", "the follower's lift L (nose centre at r₁ + L − r₂ from O)",
-            example='"20 mm"', dimension="length", required=True),
+        Key("lift", "quantity", "the cam's lift L (nose centre at r₁ + L − r₂ from O); a "
+                                "tangent cam may give faces_angle instead",
+            example='"20 mm"', dimension="length"),
         Key("kind", "string", "'circular arc' (with flank_radius) or 'tangent'",
             example='"circular arc"', default="circular arc"),
         Key("flank_radius", "quantity", "a circular-arc cam's flank radius R",
             example='"60 mm"', dimension="length"),
+        Key("faces_angle", "quantity", "a tangent cam's angle between its tangential faces "
+                                       "(π − 2β): the lift found from it",
+            example='"90 deg"', dimension="angle"),
         Key("angle_of_action", "quantity", "the cam's turn while the follower moves (rise "
                                            "and return, 2 φ_b): with a circular-arc cam and "
                                            "no flank_radius, the flank radius is found from "
                                            "it; otherwise checked against the profile (to "
                                            "0.05°)", example='"150 deg"', dimension="angle"),
-        Key("follower", "string", "'knife', 'roller' or 'flat' (translating)",
+        Key("follower", "string", "'knife', 'roller' or 'flat'",
             example='"roller"', default="roller"),
         Key("roller", "quantity", "the roller's radius", example='"10 mm"',
             dimension="length"),
-        Key("stroke", "quantity", "the line of stroke's direction from the cam's centre "
-                                  "towards the follower, CCW from +x", example='"90 deg"',
-            dimension="angle", required=True),
+        Key("stroke", "quantity", "a translating follower: the line of stroke's direction "
+                                  "from the cam's centre towards the follower, CCW from +x",
+            example='"90 deg"', dimension="angle"),
+        Key("offset", "quantity", "a translating follower: the line of stroke's distance "
+                                  "from the cam's centre", example='"10 mm"',
+            dimension="length", default="0 mm", sign="positive to the left of the stroke"),
+        Key("pivot", "label", "an oscillating follower: its arm's fixed pivot (a [ground] "
+                              "point); the arm is the link pivot + R", example='"Q"'),
+        Key("arm", "quantity", "an oscillating follower: the arm's length from the pivot to "
+                               "the roller's centre or the knife's edge (a flat face: the "
+                               "face along the arm from the pivot, the contact on it)",
+            example='"80 mm"', dimension="length"),
+        Key("side", "string", "an oscillating follower: 'left' or 'right' — a knife or "
+                              "roller: the side of the line pivot → cam centre its point is "
+                              "on; a flat face: the side of the face, looking along the arm "
+                              "from its pivot, the cam is on", example='"left"'),
+        Key("face_offset", "quantity", "an oscillating flat face's distance from the line "
+                                       "of its arm", example='"0 mm"', dimension="length",
+            default="0 mm", sign="positive to the left of pivot → R"),
     ), many=True),
 )
 KEYS = tuple(k.name for k in TABLES[0].keys)
 _LINK = re.compile(r"^([A-Z][a-z0-9_']*)([A-Z][a-z0-9_']*)$")
+
+
+def _u(a: float) -> tuple[float, float]:
+    return (math.cos(a), math.sin(a))
+
+
+def _dot(p, q) -> float:
+    return p[0] * q[0] + p[1] * q[1]
+
+
+def _cross(p, q) -> float:
+    return p[0] * q[1] - p[1] * q[0]
+
+
+def _wrap(x: float) -> float:
+    return math.atan2(math.sin(x), math.cos(x))
+
+
+def _rot(p, a):
+    c, s = math.cos(a), math.sin(a)
+    return (c * p[0] - s * p[1], s * p[0] + c * p[1])
 
 
 @dataclass(frozen=True)
@@ -107,7 +165,8 @@ class Profile:
 
     def spans(self) -> tuple[float, float]:
         """(φ_n, φ_b): the outward normals of the nose run over |φ| ≤ φ_n from the axis,
-        those of the flanks over φ_n < |φ| ≤ φ_b, the base circle's beyond."""
+        those of the flanks over φ_n < |φ| ≤ φ_b, the base circle's beyond (a tangent cam:
+        φ_n = φ_b = β, its flank's normal)."""
         if self.flank is None:     # tangent: the common tangent's normal
             beta = math.acos((self.base - self.nose) / self.d)
             return beta, beta
@@ -116,62 +175,246 @@ class Profile:
         phi_b = math.atan2(-P[1], -P[0])              # the direction P → O
         return phi_n, phi_b
 
-    def parts(self, side: int):
-        """(name, centre, radius) of the parts on the side of the contact."""
-        out = [("nose", (self.d, 0.0), self.nose)]
-        if self.flank is not None:
-            out.append(("flank", self.flank_centre(side), self.flank))
-        out.append(("base circle", (0.0, 0.0), self.base))
-        return out
+    def parts(self, axis: float = 0.0) -> tuple["Part", ...]:
+        """Every part of the profile with the nose axis at ``axis`` (O at the origin)."""
+        phi_n, phi_b = self.spans()
+        out = [Part("nose", 0, _rot((self.d, 0.0), axis), self.nose, axis, -phi_n, phi_n)]
+        for side in (+1, -1):
+            lo, hi = sorted((side * phi_n, side * phi_b))
+            if self.flank is not None:
+                out.append(Part("flank", side, _rot(self.flank_centre(side), axis), self.flank,
+                                axis, lo, hi))
+            else:
+                out.append(Part("straight flank", side, (0.0, 0.0), math.inf, axis, lo, hi))
+        out.append(Part("base circle", 0, (0.0, 0.0), self.base, axis, phi_b, 2 * math.pi
+                        - phi_b))
+        return tuple(out)
+
+    def outline(self, axis: float = 0.0, n: int = 360) -> list[tuple[float, float]]:
+        """The profile's points (about ``n``), counter-clockwise, O at the origin."""
+        pts = []
+        for k in range(n):
+            phi = 2 * math.pi * k / n
+            pts.append(self.support_point(axis + phi, axis))
+        return pts
+
+    def support_point(self, direction: float, axis: float) -> tuple[float, float]:
+        """The profile's point whose outward normal is ``direction`` (a straight flank: its
+        end on the nose's side when the direction is its normal)."""
+        for part in self.parts(axis):
+            if part.holds(direction) and part.radius < math.inf:
+                e = _u(direction)
+                return (part.centre[0] + part.radius * e[0],
+                        part.centre[1] + part.radius * e[1])
+        raise AssertionError("no part holds the direction")  # pragma: no cover
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of the profile: a circular arc (``centre``, ``radius``) or a straight flank
+    (radius ∞, normal at ``lo`` = ``hi`` from the axis); its outward normals run from ``lo``
+    to ``hi`` (radians from the nose axis ``axis``, CCW)."""
+
+    name: str
+    side: int
+    centre: tuple[float, float]
+    radius: float
+    axis: float
+    lo: float
+    hi: float
+
+    def holds(self, direction: float, tol: float = 1e-12) -> bool:
+        rel = (direction - self.axis - self.lo) % (2 * math.pi)
+        return rel <= (self.hi - self.lo) + tol or rel >= 2 * math.pi - tol
+
+
+@dataclass(frozen=True)
+class Follower:
+    """The follower: ``kind`` knife, roller or flat; translating along ``stroke`` (angle) with
+    its line ``offset`` to the left of O, or oscillating about ``pivot`` (relative to O) on an
+    arm of ``arm`` on ``side`` (+1 left); ``face_offset`` an oscillating flat face's."""
+
+    kind: str
+    roller: float = 0.0
+    stroke: float | None = None
+    offset: float = 0.0
+    pivot: tuple[float, float] | None = None
+    arm: float = 0.0
+    side: int = 1
+    face_offset: float = 0.0
+
+    @property
+    def oscillating(self) -> bool:
+        return self.pivot is not None
+
+    @property
+    def foot(self) -> tuple[float, float]:
+        """b: the foot of O on the line of stroke."""
+        e = _u(self.stroke)
+        return (-self.offset * e[1], self.offset * e[0])
 
 
 @dataclass(frozen=True)
 class Contact:
-    """The part in contact: ``part`` ('nose', 'flank', 'base circle', 'tangent flank'),
-    ``side`` (+1: the flank after the nose in the cam's CCW order), its centre (cam frame)
-    and radius, and the follower's displacement ``s`` from O along the stroke."""
+    """The part in contact (``part``: 'nose', 'flank', 'straight flank', 'base circle'), its
+    ``side`` (+1: the flank after the nose in the cam's CCW order), centre (O at the origin,
+    the fixed frame) and radius, the outward ``normal`` at the contact (angle), the follower's
+    point ``point`` (the roller's centre, the knife's edge, a flat face's point of contact) and
+    ``s``: a translating follower's displacement from the foot of O along the stroke (the
+    roller's centre, the face), an oscillating one's arm angle ψ (pivot → R; a flat face:
+    the arm's direction)."""
 
     part: str
     side: int
     centre: tuple[float, float]
     radius: float
+    normal: float
+    point: tuple[float, float]
     s: float
 
 
-def _wrap(x: float) -> float:
-    return math.atan2(math.sin(x), math.cos(x))
+def _circle_meets(p, r, c, rho):
+    """The two points of the circles (p, r) and (c, rho), or ()."""
+    w = (c[0] - p[0], c[1] - p[1])
+    dd = math.hypot(*w)
+    if dd == 0:
+        return ()
+    a = (r * r - rho * rho + dd * dd) / (2 * dd)
+    h2 = r * r - a * a
+    if h2 < 0:
+        return ()
+    h = math.sqrt(h2)
+    ex, ey = w[0] / dd, w[1] / dd
+    m = (p[0] + a * ex, p[1] + a * ey)
+    return ((m[0] - h * ey, m[1] + h * ex), (m[0] + h * ey, m[1] - h * ex))
 
 
-def contact(profile: Profile, follower: str, roller: float, phi: float) -> Contact:
-    """The part in contact when the line of stroke is at ``phi`` from the nose axis (the
-    stroke's angle minus the axis's): a flat face touches where the outward normal is the
-    stroke; a knife or a roller where the ray of the stroke meets the part's offset arc with
-    its normal in the part's span."""
-    phi = _wrap(phi)
-    side = 1 if phi >= 0 else -1
-    phi_n, phi_b = profile.spans()
-    e = (math.cos(phi), math.sin(phi))
-    rr = roller if follower == "roller" else 0.0
-    for name, c, rho in profile.parts(side):
-        if follower == "flat":
-            normal = abs(phi)
-        else:
-            ce = c[0] * e[0] + c[1] * e[1]
-            disc = ce * ce - (c[0] ** 2 + c[1] ** 2) + (rho + rr) ** 2
-            if disc < 0:
+def _line_circle(N, p, q, r):
+    """The points x of the line x·N = p on the circle (q, r)."""
+    t = (-N[1], N[0])
+    dist = p - _dot(q, N)
+    h2 = r * r - dist * dist
+    if h2 < 0:
+        return ()
+    foot = (q[0] + dist * N[0], q[1] + dist * N[1])
+    h = math.sqrt(h2)
+    return ((foot[0] + h * t[0], foot[1] + h * t[1]), (foot[0] - h * t[0], foot[1] - h * t[1]))
+
+
+def _on_straight(profile: Profile, part: Part, x, rr) -> bool:
+    """Whether the roller centre ``x`` (its contact x − rr N) lies on the flank segment."""
+    N = _u(part.axis + part.lo)
+    T = (-N[1], N[0])
+    q = (x[0] - rr * N[0], x[1] - rr * N[1])
+    a = _dot((profile.base * N[0], profile.base * N[1]), T)
+    nose = _rot((profile.d, 0.0), part.axis)
+    b = _dot((nose[0] + profile.nose * N[0], nose[1] + profile.nose * N[1]), T)
+    lo, hi = sorted((a, b))
+    return lo - 1e-12 <= _dot(q, T) <= hi + 1e-12
+
+
+def contact(profile: Profile, f: Follower, axis: float) -> Contact:
+    """The part in contact with the nose axis at ``axis`` (the module docstring)."""
+    cands = []
+    rr = f.roller if f.kind == "roller" else 0.0
+    for part in profile.parts(axis):
+        straight = part.radius == math.inf
+        if f.kind == "flat" and not f.oscillating:
+            normal = f.stroke
+            if straight or not part.holds(normal):
                 continue
-            s = ce + math.sqrt(disc)
-            normal = abs(math.atan2(s * e[1] - c[1], s * e[0] - c[0]))
-        lo, hi = {"nose": (0.0, phi_n), "flank": (phi_n, phi_b),
-                  "base circle": (phi_b, math.pi)}[name]
-        if lo - 1e-12 <= normal <= hi + 1e-12:
-            if follower == "flat":
-                s = c[0] * e[0] + c[1] * e[1] + rho
-            return Contact(name, side, c, rho, s)
-    if profile.flank is None:
-        return Contact("tangent flank", side, (math.nan, math.nan), math.inf, math.nan)
-    raise SceneError("no part of the cam's profile meets the follower (the profile is not "
-                     "convex: check the radii)")  # pragma: no cover
+            e = _u(normal)
+            pt = (part.centre[0] + part.radius * e[0], part.centre[1] + part.radius * e[1])
+            return Contact(part.name, part.side, part.centre, part.radius, normal, pt,
+                           _dot(part.centre, e) + part.radius)
+        if f.kind == "flat":          # oscillating flat face: (c − Q)·n_l = f + side ρ
+            if straight:
+                continue
+            w = (part.centre[0] - f.pivot[0], part.centre[1] - f.pivot[1])
+            k = f.face_offset + f.side * part.radius
+            if abs(k) > math.hypot(*w):
+                continue
+            for sgn in (1, -1):
+                psi = math.atan2(w[1], w[0]) - math.pi / 2 + sgn * math.acos(k / math.hypot(*w))
+                nl = _u(psi + math.pi / 2)
+                pt = (part.centre[0] - f.side * part.radius * nl[0],
+                      part.centre[1] - f.side * part.radius * nl[1])
+                normal = math.atan2(-f.side * nl[1], -f.side * nl[0])
+                along = _dot((pt[0] - f.pivot[0], pt[1] - f.pivot[1]), _u(psi))
+                if 0 < along <= f.arm and part.holds(normal):       # on the face
+                    cands.append((math.hypot(*pt), Contact(part.name, part.side, part.centre,
+                                                          part.radius, normal, pt,
+                                                          _wrap(psi))))
+            continue
+        # a knife or a roller: its point on the part's offset curve
+        if f.oscillating:
+            if straight:
+                N = _u(axis + part.lo)
+                pts = _line_circle(N, profile.base + rr, f.pivot, f.arm)
+            else:
+                pts = _circle_meets(f.pivot, f.arm, part.centre, part.radius + rr)
+            pts = [x for x in pts
+                   if f.side * _cross((-f.pivot[0], -f.pivot[1]),
+                                      (x[0] - f.pivot[0], x[1] - f.pivot[1])) > 0]
+        else:
+            e, b = _u(f.stroke), f.foot
+            if straight:
+                N = _u(axis + part.lo)
+                if _dot(e, N) <= 1e-12:
+                    continue
+                s = (profile.base + rr - _dot(b, N)) / _dot(e, N)
+            else:
+                w = (part.centre[0] - b[0], part.centre[1] - b[1])
+                ce = _dot(w, e)
+                disc = ce * ce - _dot(w, w) + (part.radius + rr) ** 2
+                if disc < 0:
+                    continue
+                s = ce + math.sqrt(disc)
+            pts = [(b[0] + s * e[0], b[1] + s * e[1])]
+        for x in pts:
+            if straight:
+                if not _on_straight(profile, part, x, rr):
+                    continue
+                normal = axis + part.lo
+            else:
+                normal = math.atan2(x[1] - part.centre[1], x[0] - part.centre[0])
+                if not part.holds(normal):
+                    continue
+            if f.oscillating:
+                s = _wrap(math.atan2(x[1] - f.pivot[1], x[0] - f.pivot[0]))
+            else:
+                s = _dot((x[0] - f.foot[0], x[1] - f.foot[1]), _u(f.stroke))
+            cands.append((math.hypot(*x), Contact(part.name, part.side, part.centre,
+                                                  part.radius, normal, x, s)))
+    if not cands:
+        raise SceneError("no part of the cam's profile meets the follower (check the "
+                         "follower's place: the arm too short or too long for the cam, a flat "
+                         "face shorter than the reach of its contact)")
+    return max(cands, key=lambda c: c[0])[1]
+
+
+def straight_flank_motion(profile: Profile, f: Follower, axis: float, omega: float,
+                          alpha: float = 0.0) -> tuple[float, float, float]:
+    """(s, v, a) of a translating knife or roller on a straight flank, the closed form:
+    X = b + s e on x·N = r₁ + r, N turning with the cam (dN/dθ = T = N turned 90°):
+    s = (r₁ + r − b·N)/(e·N), s′ = −(X·T)/(e·N), s″ = −(g′ (e·N) − g (e·T))/(e·N)² with
+    g = X·T, g′ = s′ (e·T) − (r₁ + r); v = ω s′, a = ω² s″ + α s′."""
+    rr = f.roller if f.kind == "roller" else 0.0
+    got = contact(profile, f, axis)
+    if got.part != "straight flank":
+        raise ValueError("the follower is not on a straight flank")
+    N = _u(got.normal)
+    T = (-N[1], N[0])
+    e, b = _u(f.stroke), f.foot
+    p = profile.base + rr
+    h = _dot(e, N)
+    s = (p - _dot(b, N)) / h
+    X = (b[0] + s * e[0], b[1] + s * e[1])
+    g = _dot(X, T)
+    s1 = -g / h
+    g1 = s1 * _dot(e, T) - p
+    s2 = -(g1 * h - g * _dot(e, T)) / (h * h)
+    return s, omega * s1, omega * omega * s2 + alpha * s1
 
 
 def _q(value, dim, file, where) -> float:
@@ -181,27 +424,41 @@ def _q(value, dim, file, where) -> float:
 def profile_of(table: dict, file: str, where: str) -> Profile:
     """The profile a [cam_profiles] entry states, checked (one line naming the key)."""
     for key in table:
-        if key not in KEYS:
+        if key not in KEYS and key != AXIS_KEY:
             raise SceneError(f"unknown key {show(key)} (keys: {', '.join(KEYS)})", file=file,
                              where=f"{where}.{key}")
-    for key in ("base_radius", "nose_radius", "lift", "stroke"):
+    for key in ("base_radius", "nose_radius"):
         if key not in table:
             raise SceneError(f"missing key {key!r}", file=file, where=where)
-    r1, r2, lift = (_q(table[k], "length", file, f"{where}.{k}")
-                    for k in ("base_radius", "nose_radius", "lift"))
+    r1, r2 = (_q(table[k], "length", file, f"{where}.{k}")
+              for k in ("base_radius", "nose_radius"))
     kind = table.get("kind", "circular arc")
     if kind not in KINDS:
         raise SceneError(f"kind must be one of {', '.join(KINDS)}, got {show(kind)}",
                          file=file, where=f"{where}.kind")
-    if not (r1 > 0 and r2 > 0 and lift > 0):
-        raise SceneError("base_radius, nose_radius and lift must be positive", file=file,
+    if not (r1 > 0 and r2 > 0):
+        raise SceneError("base_radius and nose_radius must be positive", file=file,
                          where=where)
     if not r2 < r1:
         raise SceneError("the nose must be smaller than the base circle (nose_radius < "
                          "base_radius)", file=file, where=f"{where}.nose_radius")
-    if not r1 + lift - r2 > 0:
-        raise SceneError("the nose centre must lie beyond O (base_radius + lift > "
-                         "nose_radius)", file=file, where=f"{where}.lift")
+    if "faces_angle" in table:
+        if kind != "tangent" or "lift" in table:
+            raise SceneError("faces_angle states a tangent cam's lift: with kind = "
+                             "\"tangent\" and no lift", file=file, where=f"{where}.faces_angle")
+        faces = _q(table["faces_angle"], "angle", file, f"{where}.faces_angle")
+        if not 0 < faces < math.pi:
+            raise SceneError("faces_angle must be between 0 and 180 deg", file=file,
+                             where=f"{where}.faces_angle")
+        beta = (math.pi - faces) / 2
+        lift = (r1 - r2) / math.cos(beta) + r2 - r1
+    elif "lift" in table:
+        lift = _q(table["lift"], "length", file, f"{where}.lift")
+    else:
+        raise SceneError("missing key 'lift' (or faces_angle for a tangent cam)", file=file,
+                         where=where)
+    if not lift > 0:
+        raise SceneError("lift must be positive", file=file, where=f"{where}.lift")
     flank = None
     action = (_q(table["angle_of_action"], "angle", file, f"{where}.angle_of_action")
               if "angle_of_action" in table else None)
@@ -259,12 +516,75 @@ def flank_for_action(r1: float, r2: float, lift: float, action: float, file, whe
     return math.exp(0.5 * (lo + hi))
 
 
-def rewrite(data: dict, file: str) -> dict:
-    """``data`` with each [cam_profiles.R] replaced by its equivalent linkage at the driver's
-    angle (see the module docstring)."""
+def follower_of(table: dict, ground: dict, o, file: str, where: str) -> Follower:
+    """The follower a [cam_profiles] entry states (``o`` the cam centre's coordinates), checked."""
+    kind = table.get("follower", "roller")
+    if kind not in FOLLOWERS:
+        raise SceneError(f"follower must be one of {', '.join(FOLLOWERS)}, got "
+                         f"{show(kind)}", file=file, where=f"{where}.follower")
+    roller = 0.0
+    if kind == "roller":
+        if "roller" not in table:
+            raise SceneError("a roller follower needs roller = \"<radius>\"", file=file,
+                             where=where)
+        roller = _q(table["roller"], "length", file, f"{where}.roller")
+        if not roller > 0:
+            raise SceneError("roller must be positive", file=file, where=f"{where}.roller")
+    elif "roller" in table:
+        raise SceneError(f"roller is for a roller follower, not a {kind} one", file=file,
+                         where=f"{where}.roller")
+    if "pivot" in table:
+        if "stroke" in table or "offset" in table:
+            raise SceneError("an oscillating follower (pivot) has no line of stroke: leave "
+                             "stroke and offset out", file=file, where=f"{where}.pivot")
+        piv = table["pivot"]
+        if not isinstance(piv, str) or piv not in ground or not isinstance(ground[piv], list):
+            raise SceneError(f"pivot must be a point of [ground] given as [x, y], got "
+                             f"{show(piv)}", file=file, where=f"{where}.pivot")
+        q = [_q(x, "length", file, f"ground.{piv}") for x in ground[piv]]
+        if "arm" not in table:
+            raise SceneError("an oscillating follower needs arm = \"<length>\" (pivot to the "
+                             "roller's centre or the knife's edge)", file=file, where=where)
+        arm = _q(table["arm"], "length", file, f"{where}.arm")
+        side = table.get("side")
+        if side not in SIDES:
+            raise SceneError(f"side must be 'left' or 'right', got {show(side)}", file=file,
+                             where=f"{where}.side")
+        if not arm > 0:
+            raise SceneError("arm must be positive", file=file, where=f"{where}.arm")
+        if "face_offset" in table and kind != "flat":
+            raise SceneError("face_offset is for a flat face", file=file,
+                             where=f"{where}.face_offset")
+        fo = _q(table.get("face_offset", "0 mm"), "length", file, f"{where}.face_offset")
+        return Follower(kind, roller, pivot=(q[0] - o[0], q[1] - o[1]), arm=arm,
+                        side=1 if side == "left" else -1, face_offset=fo)
+    for key in ("arm", "side", "face_offset"):
+        if key in table:
+            raise SceneError(f"{key} is for an oscillating follower (with pivot)", file=file,
+                             where=f"{where}.{key}")
+    if "stroke" not in table:
+        raise SceneError("missing key 'stroke' (a translating follower's line of stroke) or "
+                         "'pivot' (an oscillating follower's)", file=file, where=where)
+    stroke = _q(table["stroke"], "angle", file, f"{where}.stroke")
+    off = _q(table.get("offset", "0 mm"), "length", file, f"{where}.offset")
+    return Follower(kind, roller, stroke=stroke, offset=off)
+
+
+def _fresh(base: str, data: dict) -> str:
+    used = set()
+    for t in ("ground", "points", "links", "sliders", "slots"):
+        if isinstance(data.get(t), dict):
+            used |= set(data[t])
+    for suffix in ("1", "2", "3", "'", "''"):
+        if base + suffix not in used:
+            return base + suffix
+    return base + "_c"      # pragma: no cover
+
+
+def stated(data: dict, file: str):
+    """(label, table, profile, follower, O's label, O's coordinates, the crank, K) of a
+    scene's [cam_profiles], checked."""
     raw = data.get(TABLE)
-    if raw is None:
-        return data
     if not isinstance(raw, dict) or len(raw) != 1:
         raise SceneError("[cam_profiles] holds one cam (its follower's label)", file=file,
                          where=TABLE)
@@ -272,6 +592,8 @@ def rewrite(data: dict, file: str) -> dict:
     where = f"{TABLE}.{label}"
     if not isinstance(table, dict):
         raise SceneError("expected a table", file=file, where=where)
+    if AXIS_KEY in table:
+        raise SceneError(f"unknown key {AXIS_KEY!r}", file=file, where=where)
     prof = profile_of(table, file, where)
     drv = data.get("driver")
     if not (isinstance(drv, dict) and isinstance(drv.get("crank"), str)
@@ -284,58 +606,163 @@ def rewrite(data: dict, file: str) -> dict:
         raise SceneError(f"{show(drv['crank'])} is not a link name (two labels: 'OK')",
                          file=file, where="driver.crank")
     centre_o, k = m.groups()
-    follower = table.get("follower", "roller")
-    if follower not in FOLLOWERS:
-        raise SceneError(f"follower must be one of {', '.join(FOLLOWERS)}, got "
-                         f"{show(follower)}", file=file, where=f"{where}.follower")
-    roller = 0.0
-    if follower == "roller":
-        if "roller" not in table:
-            raise SceneError("a roller follower needs roller = \"<radius>\"", file=file,
-                             where=where)
-        roller = _q(table["roller"], "length", file, f"{where}.roller")
-    elif "roller" in table:
-        raise SceneError(f"roller is for a roller follower, not a {follower} one", file=file,
-                         where=f"{where}.roller")
-    axis = _q(drv["angle"], "angle", file, "driver.angle")
-    stroke = _q(table["stroke"], "angle", file, f"{where}.stroke")
-    got = contact(prof, follower, roller, stroke - axis)
-    if got.part == "base circle":
-        raise SceneError(f"at this cam angle the follower {label} dwells on the base circle: it "
-                         f"is at rest (v = 0, a = 0) and there is no equivalent linkage",
-                         file=file, where=where)
-    if got.part == "tangent flank":
-        raise SceneError("the follower is on a straight flank of the tangent cam: its "
-                         "equivalent (a slot on the cam) is not served yet; the nose is",
-                         file=file, where=where)
     ground = data.get("ground", {})
     if not (isinstance(ground, dict) and centre_o in ground):
         raise SceneError(f"the cam's centre {centre_o} must be in [ground]", file=file,
                          where="driver.crank")
-    o = [_q(x, "length", file, f"ground.{centre_o}") for x in ground[centre_o]] \
-        if isinstance(ground[centre_o], list) else None
-    if o is None:
+    if not isinstance(ground[centre_o], list):
         raise SceneError(f"give the cam's centre {centre_o} as [x, y]", file=file,
                          where=f"ground.{centre_o}")
+    o = [_q(x, "length", file, f"ground.{centre_o}") for x in ground[centre_o]]
+    fol = follower_of(table, ground, o, file, where)
+    return label, table, prof, fol, centre_o, o, drv["crank"], k
+
+
+def rewrite(data: dict, file: str) -> dict:
+    """``data`` with its [cam_profiles.R] replaced by its equivalent linkage at the driver's
+    angle (see the module docstring)."""
+    if data.get(TABLE) is None:
+        return data
+    label, table, prof, fol, centre_o, o, crank, k = stated(data, file)
+    where = f"{TABLE}.{label}"
+    drv = data["driver"]
+    axis = _q(drv["angle"], "angle", file, "driver.angle")
+    try:
+        got = contact(prof, fol, axis)
+    except SceneError as exc:
+        raise SceneError(str(exc.args[0]) if exc.args else str(exc), file=file,
+                         where=where) from None
+    if got.part == "base circle":
+        raise SceneError(f"at this cam angle the follower {label} dwells on the base circle: it "
+                         f"is at rest (v = 0, a = 0) and there is no equivalent linkage",
+                         file=file, where=where)
+    straight = got.part == "straight flank"
+    if straight and not fol.oscillating:
+        raise SceneError("the follower is on a straight flank of the tangent cam: a pin in a "
+                         "slot of the cam and on a fixed guide, not among the construction's "
+                         "groups; `polygons sweep` gives its displacement, velocity and "
+                         "acceleration over the turn (the closed form); the nose is served",
+                         file=file, where=where)
+    out = dict(data)
+    out[TABLE] = {label: {**table, AXIS_KEY: f"{axis!r} rad"}}     # kept for the drawing
+    links = dict(data.get("links", {}))
+    pt = (o[0] + got.point[0], o[1] + got.point[1])
+    near = {"near": [f"{pt[0]!r} m", f"{pt[1]!r} m"]}
+    arm = None
+    if fol.oscillating:
+        arm = table["pivot"] + label
+        if arm in links:
+            raise SceneError(f"the follower's arm {arm} is built from pivot and arm: leave it "
+                             f"out of [links]", file=file, where=f"links.{arm}")
+        links[arm] = f"{fol.arm!r} m"
+    if straight:       # a pin in a slot of the cam ∥ the flank, r₁ + roller from O
+        t = _rot(_u(got.normal), -math.pi / 2)       # N is the slot's left normal …
+        sense = 1.0 if _dot(got.point, t) >= 0 else -1.0    # … K on the roller's side
+        t = (sense * t[0], sense * t[1])
+        links[crank] = f"{prof.d!r} m"
+        out["driver"] = {**drv, "angle": f"{math.degrees(math.atan2(t[1], t[0]))!r} deg"}
+        rr = fol.roller if fol.kind == "roller" else 0.0
+        out["slots"] = {**data.get("slots", {}),
+                        label: {"lever": crank, "coincident": _fresh(label, data),
+                                "offset": f"{sense * (prof.base + rr)!r} m"}}
+        out["links"] = links
+        out["assembly"] = {**data.get("assembly", {}), label: near}
+        return out
     c = got.centre
-    out = dict(data)            # the table stays: kept raw in Scene.extra for diagram()
-    out["links"] = {**data.get("links", {}),
-                    drv["crank"]: f"{math.hypot(*c)!r} m"}
-    out["driver"] = {**drv, "angle": f"{math.degrees(axis + math.atan2(c[1], c[0]))!r} deg"}
-    guide = {"through": [f"{o[0]!r} m", f"{o[1]!r} m"],
-             "direction": f"{math.degrees(stroke)!r} deg"}
-    out["sliders"] = {**data.get("sliders", {}), label: guide}
+    links[crank] = f"{math.hypot(*c)!r} m"
+    out["links"] = links
+    out["driver"] = {**drv, "angle": f"{math.degrees(math.atan2(c[1], c[0]))!r} deg"}
     cam = {"centre": k, "radius": f"{got.radius!r} m"}
-    if follower == "flat":
-        cam |= {"follower": "flat", "face": f"{math.degrees(stroke) + 90.0!r} deg"}
+    if fol.kind == "flat" and fol.oscillating:
+        cam |= {"follower": "flat", "arm": arm, "side": "left" if fol.side > 0 else "right",
+                "face_offset": f"{fol.face_offset!r} m"}
+    elif fol.kind == "flat":
+        b = (o[0] + fol.foot[0], o[1] + fol.foot[1])
+        out["sliders"] = {**data.get("sliders", {}),
+                          label: {"through": [f"{b[0]!r} m", f"{b[1]!r} m"],
+                                  "direction": f"{math.degrees(fol.stroke)!r} deg"}}
+        cam |= {"follower": "flat", "face": f"{math.degrees(fol.stroke) + 90.0!r} deg"}
     else:
-        cam |= {"roller": f"{roller!r} m"}
+        cam |= {"roller": f"{fol.roller!r} m"}
+        if not fol.oscillating:
+            b = (o[0] + fol.foot[0], o[1] + fol.foot[1])
+            out["sliders"] = {**data.get("sliders", {}),
+                              label: {"through": [f"{b[0]!r} m", f"{b[1]!r} m"],
+                                      "direction": f"{math.degrees(fol.stroke)!r} deg"}}
+        out["assembly"] = {**data.get("assembly", {}), label: near}
     out["cams"] = {**data.get("cams", {}), label: cam}
-    if follower != "flat":      # the roller's centre: the far end of the equivalent rod
-        far = (o[0] + got.s * math.cos(stroke), o[1] + got.s * math.sin(stroke))
-        out["assembly"] = {**data.get("assembly", {}),
-                           label: {"near": [f"{far[0]!r} m", f"{far[1]!r} m"]}}
     return out
 
 
-__all__ = ["Profile", "Contact", "contact", "profile_of", "rewrite", "TABLES"]
+__all__ = ["Profile", "Part", "Follower", "Contact", "contact", "profile_of", "follower_of",
+           "stated", "straight_flank_motion", "rewrite", "pose", "to_dict", "report_lines",
+           "TABLES", "AXIS_KEY"]
+
+
+def pose(scene):
+    """(profile, follower, nose axis angle, O's coordinates, the follower's label, contact) of
+    a solved scene's cam stated by its profile (None without one): the drawing's."""
+    raw = scene.extra.get(TABLE)
+    if not raw:
+        return None
+    (label, table), = raw.items()
+    m = _LINK.match(scene.driver.link)
+    o = scene.ground[m.group(1)]
+    ground = {g: [f"{p[0]!r} m", f"{p[1]!r} m"] for g, p in scene.ground.items()}
+    clean = {k: v for k, v in table.items() if k != AXIS_KEY}
+    prof = profile_of(clean, scene.file, f"{TABLE}.{label}")
+    fol = follower_of(clean, ground, o, scene.file, f"{TABLE}.{label}")
+    axis = _q(table[AXIS_KEY], "angle", scene.file, f"{TABLE}.{label}")
+    return prof, fol, axis, o, label, contact(prof, fol, axis)
+
+
+def to_dict(scene) -> dict | None:
+    """The cam's profile as found and the part in contact (SI, angles in degrees): the JSON's
+    ``cam_profile``; None without one."""
+    got = pose(scene)
+    if got is None:
+        return None
+    prof, fol, axis, o, label, c = got
+    phi_n, phi_b = prof.spans()
+    out = {"follower_point": label,
+           "kind": "circular arc" if prof.flank is not None else "tangent",
+           "base_radius": prof.base, "nose_radius": prof.nose, "lift": prof.lift,
+           "flank_radius": prof.flank, "nose_centre_distance": prof.d,
+           "angle_of_action_deg": math.degrees(2 * phi_b),
+           "nose_span_deg": math.degrees(2 * phi_n),
+           "nose_axis_deg": math.degrees(axis),
+           "follower": fol.kind, "motion": "oscillating" if fol.oscillating else "translating",
+           "part_in_contact": c.part,
+           "contact_normal_deg": math.degrees(c.normal) % 360.0,
+           "follower_position": [o[0] + c.point[0], o[1] + c.point[1]]}
+    if fol.oscillating:
+        out["arm_angle_deg"] = math.degrees(c.s)
+    else:
+        rr = fol.roller if fol.kind == "roller" else 0.0
+        dwell = math.sqrt(max((prof.base + rr) ** 2 - fol.offset ** 2, 0.0)) \
+            if fol.kind != "flat" else prof.base
+        out["displacement"] = c.s
+        out["lift_from_dwell"] = c.s - dwell
+    return out
+
+
+def report_lines(scene) -> list[str]:
+    """The cam's profile and its contact, in words (``polygons solve``)."""
+    d = to_dict(scene)
+    if d is None:
+        return []
+    mm = lambda x: f"{x * 1e3:.6g} mm"        # noqa: E731
+    head = (f"cam by its profile ({d['kind']}): base circle {mm(d['base_radius'])}, nose "
+            f"{mm(d['nose_radius'])}, lift {mm(d['lift'])}"
+            + (f", flanks {mm(d['flank_radius'])}" if d["flank_radius"] else "")
+            + f", angle of action {d['angle_of_action_deg']:.6g}°")
+    lines = [head, f"  nose axis at {d['nose_axis_deg']:.6g}°: the {d['part_in_contact']} "
+                   f"touches the {d['motion']} {d['follower']} follower "
+                   f"{d['follower_point']} (contact normal at "
+                   f"{d['contact_normal_deg']:.6g}°)"]
+    if d["motion"] == "oscillating":
+        lines.append(f"  the arm's angle: {d['arm_angle_deg']:.6g}°")
+    else:
+        lines.append(f"  the follower's displacement along the stroke: "
+                     f"{mm(d['displacement'])} ({mm(d['lift_from_dwell'])} above its dwell)")
+    return lines

@@ -45,7 +45,8 @@ from .errors import SceneError, UnsupportedError, show
 from .reader import LABEL
 from .schema import Key, Table
 from .units import parse_quantity
-from .higher import OUTPUTS, _bearing_lines, bearing, higher, on_arc  # noqa: F401
+from .higher import (OUTPUTS, LINK_NAME, _bar_to_contact, _bearing_lines,  # noqa: F401
+                     bearing, higher, on_arc)
 from .wheels import _moving_lines, _rim_lines, rolling, wheel_centres, wheel_point
 
 TABLES: tuple[Table, ...] = (
@@ -129,8 +130,11 @@ TABLES: tuple[Table, ...] = (
                      "the bar stays tangent, the contact slides along it. The table's label "
                      "is the circle's centre (a [ground] point); the equivalent: that centre "
                      "slides in a slot ∥ the bar at the radius from it.", (
-        Key("bar", "link", "the bar (a [links] entry) from its first label", example='"AQ"',
-            required=True),
+        Key("bar", "link", "the bar (a [links] entry) from its first label; its length may "
+                           "be left out when its first label is the slider driver (placed by "
+                           "this bar's angle or at a position) or a fixed pivot: its far end "
+                           "is then its point touching the circle at this instant",
+            example='"AQ"', required=True),
         Key("radius", "quantity", "the circle's radius", example='"100 mm"',
             dimension="length", required=True),
         Key("side", "string", "the side of the bar, looking from its first label to its "
@@ -502,9 +506,6 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
                                    where, driven=_driven(data) == label),
                           driven=_driven(data) == label)
     bar, side = table["bar"], table["side"]
-    if not isinstance(bar, str) or bar not in links:
-        raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
-                         where=f"{where}.bar")
     if side not in ("left", "right"):
         raise SceneError(f"side must be 'left' or 'right', got {side!r}", file=file,
                          where=f"{where}.side")
@@ -512,6 +513,11 @@ def _higher(name, label, table, file, sliders, slots, links, data) -> Equivalent
     if not isinstance(ground, dict) or label not in ground:
         raise SceneError(f"the circle's centre {label} must be a [ground] point (a fixed "
                          f"circle)", file=file, where=where)
+    if isinstance(bar, str) and bar not in links and LINK_NAME.match(bar):
+        links[bar] = f"{_bar_to_contact(bar, label, radius, side, data, file, where)!r} m"
+    if not isinstance(bar, str) or bar not in links:
+        raise SceneError(f"bar must be a link of [links], got {bar!r}", file=file,
+                         where=f"{where}.bar")
     if slots is None or label in slots:
         raise SceneError(f"{label} is already in [slots]", file=file, where=where)
     coincident = _fresh(label, data)

@@ -6,7 +6,11 @@ its own.  docs/contact-outputs.md is generated from :data:`OUTPUTS`."""
 from __future__ import annotations
 
 import math
+import re
 
+from .errors import SceneError
+from .reader import LABEL
+from .units import parse_quantity
 from .wheels import rolling
 
 #: Every output of a higher pair (``higher_pair`` in ``solve --json``, :func:`higher`), by the
@@ -204,6 +208,82 @@ def _bearing_lines(q, h, mm) -> list[str]:
         out.append(f"    instant centre of {q.link}: {mm(h['instant_centre'])} "
                    f"(on the normal to the bar at the contact, through {q.at})")
     return out
+
+
+def _q(value, dim, file, where) -> float:
+    return parse_quantity(value, dim, file=file, where=where)
+
+
+LINK_NAME = re.compile(r"^[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*$")
+
+
+def _bar_to_contact(bar, label, radius, side, data, file, where) -> float:
+    """A bearing bar stated without a length: its far end is its point touching the circle at
+    this instant, |PT| from its first label P — P a fixed pivot (|PT|² = |PK|² − R²) or the
+    slider driver at a stated position (as a fixed pivot) or placed by this bar's angle (T
+    the foot of K on the bar's line through the slider: |PT| = (K − P)·u, P where the line at
+    the stated angle is tangent to the circle).
+    Otherwise the bar's length is asked for (its first label is a moving pin)."""
+    ground, drv = data.get("ground", {}), data.get("driver")
+    if not (isinstance(ground[label], list) and len(ground[label]) == 2):
+        raise SceneError(f"give the circle's centre {label} as [x, y]", file=file,
+                         where=f"ground.{label}")
+    kx, ky = (_q(v, "length", file, f"ground.{label}") for v in ground[label])
+    splits = [(bar[:i], bar[i:]) for i in range(1, len(bar))
+              if LABEL.match(bar[:i]) and LABEL.match(bar[i:])]
+    for p, q in splits:
+        if p in ground and isinstance(ground[p], list):
+            px, py = (_q(v, "length", file, f"ground.{p}") for v in ground[p])
+            d2 = (kx - px) ** 2 + (ky - py) ** 2 - radius ** 2
+            if d2 <= 0:
+                raise SceneError(f"the bar's pivot {p} is inside the circle about {label}",
+                                 file=file, where=where)
+            return math.sqrt(d2)
+        sliders = data.get("sliders", {})
+        if isinstance(drv, dict) and drv.get("slider") == p and isinstance(
+                drv.get("position"), str) and isinstance(sliders, dict) \
+                and isinstance(sliders.get(p), dict) and "through" in sliders[p]:
+            g = sliders[p]                        # the slider driver at a stated position
+            tx, ty = (_q(v, "length", file, f"sliders.{p}.through") for v in g["through"])
+            e = _q(g.get("direction", "0 deg"), "angle", file, f"sliders.{p}.direction")
+            s = _q(drv["position"], "length", file, "driver.position")
+            d2 = (kx - tx - s * math.cos(e)) ** 2 + (ky - ty - s * math.sin(e)) ** 2 \
+                - radius ** 2
+            if d2 <= 0:
+                raise SceneError(f"the slider {p} is inside the circle about {label}",
+                                 file=file, where=where)
+            return math.sqrt(d2)
+        if isinstance(drv, dict) and drv.get("slider") == p and drv.get("rod") in (bar, q + p) \
+                and isinstance(drv.get("rod_angle"), str) and isinstance(sliders, dict) \
+                and isinstance(sliders.get(p), dict) and "through" in sliders[p]:
+            from .topology import _turn_of
+            text, turn = _turn_of(drv["rod_angle"])
+            phi = turn * _q(text, "angle", file, "driver.rod_angle")
+            if drv["rod"] != bar:
+                phi += math.pi                    # the angle stated far end → slider
+            ux, uy = math.cos(phi), math.sin(phi)
+            g = sliders[p]
+            tx, ty = (_q(v, "length", file, f"sliders.{p}.through") for v in g["through"])
+            e = _q(g.get("direction", "0 deg"), "angle", file, f"sliders.{p}.direction")
+            nx, ny = -uy, ux
+            den = math.cos(e) * nx + math.sin(e) * ny
+            if abs(den) < 1e-12:
+                raise SceneError(f"the bar {bar} is parallel to the guide of {p}: its angle "
+                                 f"does not place the slider", file, "driver.rod")
+            off = radius if side == "left" else -radius
+            s = ((kx - tx) * nx + (ky - ty) * ny - off) / den
+            bx, by = tx + s * math.cos(e), ty + s * math.sin(e)
+            t = (kx - bx) * ux + (ky - by) * uy
+            if t <= 0:
+                raise SceneError(f"the circle about {label} is behind the bar's end {p}",
+                                 file=file, where=where)
+            return t
+    raise SceneError(f"give the bar's length in [links] ({bar} = \"...\"): unstated, its far "
+                     f"end is its point at the contact, found only when its first label is a "
+                     f"fixed pivot or the slider driver (at a position or placed by this "
+                     f"bar's angle)", file=file,
+                     where=f"{where}.bar")
+
 
 
 __all__ = ["OUTPUTS", "higher", "bearing", "on_arc"]

@@ -1,20 +1,26 @@
-"""Memos kept beside frozen records without changing them.
+"""Memos kept beside frozen records without changing their fields.
 
-A frozen record (a scene, a plan, a program) is never changed through its ``__dict__``: what
-is worked out once per record (its plan and program, its size, its unused links) is kept
-here instead, keyed by the record's identity and dropped when the record is collected
-(:func:`weakref.finalize`), so a new record with the same ``id`` never sees an old memo.
+What is worked out once per record (a scene's plan and program, its size, its unused links)
+is kept in a memo dictionary that lives *on the record itself*, under one attribute that is
+not a field (so equality, hashing, ``repr`` and :func:`dataclasses.replace` never see it).
+A memo may refer back to its record (a scene's plan holds the scene): that is an ordinary
+reference cycle, collected with the record, so many short-lived records (``polygons exam``
+draws thousands of variants and rejects most) never pile up.
 
-A memo that refers back to its record (a scene's plan holds the scene) keeps the record
-alive through this module's table, so it is never collected: a caller that makes many
-short-lived records (``polygons exam`` draws thousands of variants and rejects most) records
-the memos made meanwhile (:func:`recording`) and drops them (:func:`forget`).
+The memo is tagged with its record's ``id``: a shallow copy of a record (which copies the
+attribute) starts its own, empty memo instead of sharing the original's.
+
+Records without a ``__dict__`` (slotted classes) keep their memo in a table keyed by
+``id`` and dropped when the record is collected (:func:`weakref.finalize`); such a memo
+must not refer back to its record, or the caller records the memos made meanwhile
+(:func:`recording`) and drops them (:func:`forget`).
 """
 from __future__ import annotations
 
 import weakref
 from contextlib import contextmanager
 
+_ATTRIBUTE = "_polygons_memo"
 _MEMOS: dict[int, dict] = {}
 _RECORDERS: list[set] = []
 
@@ -22,6 +28,14 @@ _RECORDERS: list[set] = []
 def memo_of(obj) -> dict:
     """The memo dictionary of ``obj`` (created empty on first use)."""
     key = id(obj)
+    own = getattr(obj, "__dict__", None)
+    if own is not None:
+        held = own.get(_ATTRIBUTE)
+        if held is not None and held[0] == key:
+            return held[1]
+        memo: dict = {}
+        own[_ATTRIBUTE] = (key, memo)          # not a field: frozen records stay frozen
+        return memo
     memo = _MEMOS.get(key)
     if memo is None:
         memo = _MEMOS[key] = {}
@@ -33,7 +47,7 @@ def memo_of(obj) -> dict:
 
 @contextmanager
 def recording():
-    """The keys of every memo made inside the ``with`` block (for :func:`forget`)."""
+    """The keys of every table memo made inside the ``with`` block (for :func:`forget`)."""
     made: set[int] = set()
     _RECORDERS.append(made)
     try:
@@ -43,7 +57,7 @@ def recording():
 
 
 def forget(keys) -> None:
-    """Drop the memos of ``keys`` (from :func:`recording`): their records may then be
+    """Drop the table memos of ``keys`` (from :func:`recording`): their records may then be
     collected; one used again starts an empty memo."""
     for key in keys:
         _MEMOS.pop(key, None)

@@ -501,7 +501,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                else None)                       # (name, link, far end, far end − slider)
         position = (r.quantity(drv["position"], "length", "driver.position")
                     if rod is None else topology.slider_by_rod(
-                        rod, r, point, sliders, links, ground, data.get("assembly", {})))
+                        rod, r, point, sliders, links, ground, data.get("assembly", {}),
+                        slots))
         if "rod_omega" in drv:          # the book gives the rod's ω and α
             v, a, stated, meet = topology.slider_rate_by_rod(drv, rod, r, point, position,
                                                              sliders, links, ground)

@@ -317,7 +317,7 @@ def show_text(x) -> str:
     return repr(x)[:60]
 
 
-def slider_by_rod(rod, r, point, sliders, links, ground, assembly) -> float:
+def slider_by_rod(rod, r, point, sliders, links, ground, assembly, slots=None) -> float:
     """The position of a slider driver placed by the angle of its rod, as books state it ("the
     connecting rod AB makes 30° with the line of stroke"): ``rod`` (a link at the slider,
     its angle measured first label → second label) at ``rod_angle`` (CCW from +x, or
@@ -341,11 +341,29 @@ def slider_by_rod(rod, r, point, sliders, links, ground, assembly) -> float:
             raise SceneError(f"the guides of {point} and {other} are parallel: the rod's angle "
                              f"does not place the slider", file=r.file, where=where)
         return cross(g2.through[0] - tx - ux, g2.through[1] - ty - uy, fx, fy) / den
+    bears = [sl for sl in (slots or {}).values()
+             if sl.lever in (link.name, link.b + link.a) and sl.pin in ground]
+    if bears:       # the rod leans on a fixed circle ([bearing]): the pin K in its offset slot
+        sl = bears[0]          # (K − P)·n = offset, P the lever's pivot, n ⟂ its direction
+        L = math.hypot(ux, uy)
+        lx, ly = ux / L, uy / L                       # slider → far end
+        if sl.pivot != point:                         # the lever runs far end → slider
+            lx, ly = -lx, -ly
+        nx, ny = -ly, lx
+        den = ex * nx + ey * ny
+        if abs(den) < 1e-12:
+            raise SceneError(f"the rod {name} is parallel to the guide of {point}: its angle "
+                             f"does not place the slider", file=r.file, where=where)
+        # the lever's pivot P = S (the slider) or S + L u (its far end)
+        px, py = (tx, ty) if sl.pivot == point else (tx + ux, ty + uy)
+        kx, ky = ground[sl.pin]
+        return ((kx - px) * nx + (ky - py) * ny - sl.offset) / den
     pivots = _pivots(other, link, links, ground)
     if len(pivots) != 1:
         raise SceneError(f"the rod's angle places the slider {point} when the rod's other end "
                          f"{other} slides on a fixed guide or is joined by one link to a fixed "
-                         f"pivot; give position = \"...\" instead", file=r.file, where=where)
+                         f"pivot, or the rod bears on a fixed circle ([bearing]); give "
+                         f"position = \"...\" instead", file=r.file, where=where)
     l2, D = pivots[0]
     wx, wy = tx + ux - ground[D][0], ty + uy - ground[D][1]
     b = ex * wx + ey * wy

@@ -210,3 +210,323 @@ def test_the_interactive_page_is_refused_in_one_line(tmp_path):
     from polygons.cli import main
     assert main(["handout", str(CASE), "--interactive", "-o", str(tmp_path / "p.html")]) == 1
     assert not (tmp_path / "p.html").exists()
+
+
+# ------------------------------------------------------------------ offset and oscillating
+# The follower's place at each cam angle checked by the test's own profile (the exact distance
+# from a point to each arc and segment: the roller touches the cam and nowhere cuts it; a
+# flat face is the cam's supporting line), and its velocity and acceleration by central
+# differences of the construction's own displacement (h = 1e-5 rad: truncation ~1e-9).
+def outline_parts(kind, axis):
+    """(centre, radius, from, to) arcs (angles CCW) or (a, b) segments of the test's profile
+    with the nose axis at ``axis``: nose, two flanks, base circle."""
+    d, P, phi_n, phi_b = geometry(kind)
+    rot = lambda p: (p[0] * math.cos(axis) - p[1] * math.sin(axis),
+                     p[0] * math.sin(axis) + p[1] * math.cos(axis))
+    parts = [("arc", rot((d, 0.0)), R2, axis - phi_n, axis + phi_n),
+             ("arc", (0.0, 0.0), R1, axis + phi_b, axis + 2 * math.pi - phi_b)]
+    for side in (1, -1):
+        if P is not None:
+            lo, hi = sorted((side * phi_n, side * phi_b))
+            parts.append(("arc", rot((P[0], side * P[1])), RF, axis + lo, axis + hi))
+        else:
+            n = (math.cos(side * phi_b), math.sin(side * phi_b))
+            parts.append(("seg", rot((R1 * n[0], R1 * n[1])),
+                          rot((d + R2 * n[0], R2 * n[1]))))
+    return parts
+
+
+def distance_to_cam(x, kind, axis):
+    best = math.inf
+    for part in outline_parts(kind, axis):
+        if part[0] == "arc":
+            _, c, rho, a0, a1 = part
+            ang = math.atan2(x[1] - c[1], x[0] - c[0])
+            if (ang - a0) % (2 * math.pi) <= (a1 - a0) + 1e-12:
+                best = min(best, abs(math.hypot(x[0] - c[0], x[1] - c[1]) - rho))
+            for a in (a0, a1):
+                best = min(best, math.hypot(x[0] - c[0] - rho * math.cos(a),
+                                            x[1] - c[1] - rho * math.sin(a)))
+        else:
+            _, a, b = part
+            ab = (b[0] - a[0], b[1] - a[1])
+            t = max(0.0, min(1.0, ((x[0] - a[0]) * ab[0] + (x[1] - a[1]) * ab[1])
+                             / (ab[0] ** 2 + ab[1] ** 2)))
+            best = min(best, math.hypot(x[0] - a[0] - t * ab[0], x[1] - a[1] - t * ab[1]))
+    return best
+
+
+def support(kind, axis, n):
+    """max over the cam of x·n (the test's profile)."""
+    best = -math.inf
+    for part in outline_parts(kind, axis):
+        if part[0] == "arc":
+            _, c, rho, a0, a1 = part
+            ang = math.atan2(n[1], n[0])
+            cands = [a0, a1] + ([ang] if (ang - a0) % (2 * math.pi) <= (a1 - a0) else [])
+            best = max(best, max((c[0] + rho * math.cos(a)) * n[0]
+                                 + (c[1] + rho * math.sin(a)) * n[1] for a in cands))
+        else:
+            best = max(best, *(p[0] * n[0] + p[1] * n[1] for p in part[1:]))
+    return best
+
+
+Q = (0.070, 0.050)
+MOVERS = {
+    "offset roller": ('roller = "10 mm"\nstroke = "90 deg"\noffset = "10 mm"\n', "", "y(R)"),
+    "oscillating roller": ('roller = "10 mm"\npivot = "Q"\narm = "60 mm"\nside = "left"\n',
+                           'Q = ["70 mm", "50 mm"]', "omega(QR)"),
+    "oscillating knife": ('pivot = "Q"\narm = "70 mm"\nside = "left"\n',
+                          'Q = ["70 mm", "50 mm"]', "omega(QR)"),
+    "oscillating flat": ('pivot = "Q"\narm = "150 mm"\nside = "right"\n',
+                         'Q = ["70 mm", "50 mm"]', "omega(QR)"),
+}
+
+
+def mover_scene(axis_deg, kind, mover):
+    body, ground, _ = MOVERS[mover]
+    follower = mover.split()[1]
+    flank = f'flank_radius = "{RF * 1e3!r} mm"' if kind == "circular arc" else ""
+    return parse_scene(parse_toml(f"""
+[ground]
+O = ["0 mm", "0 mm"]
+{ground}
+[driver]
+crank = "OK"
+angle = "{axis_deg!r} deg"
+omega = "{W!r} rad/s"
+sense = "CCW"
+[cam_profiles.R]
+base_radius = "25 mm"
+nose_radius = "8 mm"
+lift = "20 mm"
+kind = "{kind}"
+{flank}
+follower = "{follower}"
+{body}""", "c.toml"), file="c.toml")
+
+
+@pytest.mark.parametrize("kind,mover", [
+    ("circular arc", "offset roller"), ("circular arc", "oscillating roller"),
+    ("tangent", "oscillating roller"), ("circular arc", "oscillating knife"),
+    ("circular arc", "oscillating flat")])
+def test_offset_and_oscillating_followers_touch_the_cam_and_move_as_it_turns(kind, mover):
+    follower = mover.split()[1]
+    rr = RR if follower == "roller" else 0.0
+    h = 1e-5
+    parts = set()
+    for axis_deg in range(5, 360, 20):
+        axis = math.radians(axis_deg)
+        try:
+            sols = [solve(mover_scene(axis_deg + math.degrees(dx), kind, mover))
+                    for dx in (-h, 0.0, h)]
+        except SceneError as exc:
+            assert "dwells on the base circle" in str(exc)
+            parts.add("base circle")
+            continue
+        sol = sols[1]
+        parts.add(sol.scene.extra["cam_profiles"]["R"]["_axis"] and "moving")
+        R = sol.points["R"].position
+        if mover == "offset roller":       # on the line x = −10 mm, touching
+            assert R[0] == pytest.approx(-0.010, abs=1e-15)
+            assert distance_to_cam(R, kind, axis) == pytest.approx(rr, abs=1e-12)
+            s = [quantity(x, "y(R)") for x in sols]
+            v, a = quantity(sol, "vs(R)"), quantity(sol, "as(R)")
+        else:
+            assert math.hypot(R[0] - Q[0], R[1] - Q[1]) == pytest.approx(
+                {"roller": 0.060, "knife": 0.070, "flat": 0.150}[follower], rel=1e-12)
+            assert (R[0] - Q[0]) * (0 - Q[1]) - (R[1] - Q[1]) * (0 - Q[0]) < 0 \
+                if follower != "flat" else True       # left of Q → O (y up)
+            if follower == "flat":     # the face along QR, the cam on its right: supporting
+                t = ((R[0] - Q[0]) / 0.15, (R[1] - Q[1]) / 0.15)
+                n = (-t[1], t[0])       # the left normal: from the cam towards the face
+                assert support(kind, axis, n) == pytest.approx(Q[0] * n[0] + Q[1] * n[1],
+                                                               abs=1e-12)
+            else:
+                assert distance_to_cam(R, kind, axis) == pytest.approx(rr, abs=1e-12)
+            s = [math.atan2(x.points["R"].position[1] - Q[1],
+                            x.points["R"].position[0] - Q[0]) for x in sols]
+            v, a = quantity(sol, "omega(QR)"), quantity(sol, "alpha(QR)")
+        ws = [quantity(x, "vs(R)") if mover == "offset roller" else quantity(x, "omega(QR)")
+              for x in sols]
+        assert (s[2] - s[0]) / (2 * h) * W == pytest.approx(v, rel=1e-6, abs=1e-9)
+        assert (ws[2] - ws[0]) / (2 * h) * W == pytest.approx(a, rel=1e-5, abs=1e-6)
+    assert parts == {"base circle", "moving"}
+
+
+def test_a_translating_roller_on_a_straight_flank_is_the_books_closed_form():
+    """Tangent cam, roller follower in line: on the flank x = (r₁ + r)(1 − cos θ)/cos θ,
+    v = ω (r₁ + r) sin θ / cos² θ, a = ω² (r₁ + r)(2 − cos² θ)/cos³ θ, θ the cam's turn from
+    where the flank's normal lies along the stroke (the displacement diagram's rows)."""
+    from polygons import cam_diagram
+    # stated on the flank: refused at the instant, restated for the diagram
+    scene = cam_diagram.movable(parse_toml(scene_text(60.0, "roller", "tangent"), "c.toml"),
+                                "c.toml")
+    d, _, beta, _ = geometry("tangent")
+    rows = [r for r in cam_diagram.diagram(scene, 72) if r.part == "straight flank"]
+    assert rows and all(r.by == "closed form" for r in rows)
+    p = R1 + RR
+    for r in rows:
+        # the flank's normal at axis ± β; the stroke at 90°
+        theta = min(abs(math.remainder(r.angle + sgn * beta - math.pi / 2, 2 * math.pi))
+                    for sgn in (1, -1))
+        rising = r.v > 0
+        assert r.s - p == pytest.approx(p * (1 - math.cos(theta)) / math.cos(theta), rel=1e-12)
+        assert abs(r.v) == pytest.approx(W * p * math.sin(theta) / math.cos(theta) ** 2,
+                                         rel=1e-12)
+        assert r.a == pytest.approx(W * W * p * (2 - math.cos(theta) ** 2)
+                                    / math.cos(theta) ** 3, rel=1e-12)
+        assert rising == (r.angle < math.pi / 2)
+
+
+def arc_cam(r1, r2, lift, R):
+    """(d, P, φ_n, φ_b) of a circular-arc cam (the triangle O Q P, as geometry())."""
+    d = r1 + lift - r2
+    a, b = R - r1, R - r2
+    ang = math.acos((a * a + d * d - b * b) / (2 * a * d))
+    P = (a * math.cos(ang), -a * math.sin(ang))
+    return d, P, math.atan2(-P[1], d - P[0]), math.atan2(-P[1], -P[0])
+
+
+def oscillating_flat(c, Q, k, omega, sign):
+    """An arm pivoted at Q whose face, along the arm through Q, touches the circle of the
+    cam's part whose centre is c (turning about O at ω): (c − Q)·n = k, n the arm's left
+    normal (k = ∓ρ, the cam on the face's right/left).  ψ = ∠(c − Q) − 90° + sign·acos(k/|c − Q|);
+    differentiating F = (c − Q)·n − k with c′ = J c, c″ = −c, n′ = −t, t′ = n:
+    ψ′ = (J c·n)/((c − Q)·t), ψ″ = (N′ D − N D′)/D², N′ = −c·n − ψ′ (J c·t),
+    D′ = J c·t + ψ′ (c − Q)·n.  Returns (ψ, ω ψ′, ω² ψ″)."""
+    w = (c[0] - Q[0], c[1] - Q[1])
+    psi = math.atan2(w[1], w[0]) - math.pi / 2 + sign * math.acos(k / math.hypot(*w))
+    t = (math.cos(psi), math.sin(psi))
+    n = (-t[1], t[0])
+    Jc = (-c[1], c[0])
+    N = Jc[0] * n[0] + Jc[1] * n[1]
+    D = w[0] * t[0] + w[1] * t[1]
+    d1 = N / D
+    N1 = -(c[0] * n[0] + c[1] * n[1]) - d1 * (Jc[0] * t[0] + Jc[1] * t[1])
+    D1 = (Jc[0] * t[0] + Jc[1] * t[1]) + d1 * (w[0] * n[0] + w[1] * n[1])
+    return psi, omega * d1, omega ** 2 * (N1 * D - N * D1) / D ** 2
+
+
+def test_the_new_cases_exact_answers_are_the_closed_forms():
+    """cam-profile-tangent-roller (Khurmi's tangent cam): the lift from 90° between the faces
+    (β = 45°, d = (r₁ − r₂)/cos β), at the top of the nose y = d + r₂ + r and
+    a = −ω² d (1 + d/(r₂ + r)); cam-profile-arc-flat-oscillating (Khurmi's convex-flank cam):
+    R from the angle of action (φ_b = 60°) by the triangle O, nose centre, flank centre, and
+    the lever's ω, α by oscillating_flat — each against the case's exact and the solve."""
+    from polygons.scene import load_scene
+    w = 180 * 2 * math.pi / 60
+    d = (0.060 - 0.012) / math.cos(math.pi / 4)
+    want = {"y(R)": (d + 0.012 + 0.024) * 1e3, "as(R)": -w * w * d * (1 + d / 0.036)}
+    checks = [(ROOT / "cases" / "cam-profile-tangent-roller.toml", want)]
+    r1, r2, lift, w = 0.025, 0.012, 0.008, 500 * 2 * math.pi / 60
+    d = r1 + lift - r2
+    c60 = 0.5
+    R = (r2 ** 2 - r1 ** 2 - d ** 2 + 2 * d * r1 * c60) / (2 * (d * c60 - r1 + r2))
+    assert R == pytest.approx(0.0794, rel=1e-12)
+    _, P, phi_n, phi_b = arc_cam(r1, r2, lift, R)
+    assert phi_b == pytest.approx(math.radians(60), rel=1e-12)
+    found = []
+    for side in (1, -1):               # the flank's centre with the nose axis at 270°
+        c = (side * P[1], -P[0])       # (P_x, side P_y) turned by 270°
+        for sign in (1, -1):
+            try:
+                psi, om, al = oscillating_flat(c, (0.070, 0.050), -R, w, sign)
+            except ValueError:
+                continue
+            t = (math.cos(psi), math.sin(psi))
+            touch = (c[0] - R * t[1], c[1] + R * t[0])     # the cam on the face's right
+            normal = math.atan2(touch[1] - c[1], touch[0] - c[0]) - 3 * math.pi / 2
+            rel = math.remainder(normal, 2 * math.pi) * side   # from the nose axis
+            ahead = (touch[0] - 0.070) * t[0] + (touch[1] - 0.050) * t[1] > 0
+            if ahead and phi_n <= rel <= phi_b:            # on this flank's arc
+                found.append((om, al, math.hypot(*c)))
+    (om, al, ok), = found
+    checks.append((ROOT / "cases" / "cam-profile-arc-flat-oscillating.toml",
+                   {"dist(O,K)": ok * 1e3, "omega(QR)": om, "alpha(QR)": al}))
+    for case, want in checks:
+        scene = load_scene(case)
+        sol = solve(scene)
+        for ans in scene.answers:
+            assert ans.exact == pytest.approx(abs(want[ans.quantity]) if ans.sense
+                                              else want[ans.quantity], rel=1e-12), ans.quantity
+            factor = 1e3 if ans.unit == "mm" else 1.0
+            assert quantity(sol, ans.quantity) * factor == pytest.approx(want[ans.quantity],
+                                                                         rel=1e-9)
+
+
+def test_sweep_of_a_cam_by_its_profile_writes_its_displacement_diagram(tmp_path, capsys):
+    """`polygons sweep` on a [cam_profiles] scene: the displacement diagram as CSV (the lift
+    from the dwell, the part and how each row was found) and a summary — a tangent cam stated
+    on its straight flank (refused at the instant) included; the sweep's other flags refused."""
+    from polygons.cli import main
+    case = ROOT / "cases" / "cam-profile-tangent-roller.toml"
+    flank = tmp_path / "flank.toml"
+    flank.write_text(case.read_text().replace('\nangle = "90 deg"', '\nangle = "50 deg"'))
+    assert main(["solve", str(flank)]) == 1
+    assert "straight flank" in capsys.readouterr().err
+    assert main(["sweep", str(flank), "--steps", "36", "--no-plot", "-o", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "straight flank" in out and "(closed form)" in out and "lift: 19.882 mm" in out
+    rows = (tmp_path / "flank-cam.csv").read_text().splitlines()
+    assert rows[0].startswith("cam angle [deg],part,found by,s [mm],lift [mm]")
+    assert len(rows) == 37
+    top = next(r.split(",") for r in rows if r.startswith("90,"))
+    assert top[1] == "nose" and float(top[4]) == pytest.approx(19.882250993908557, rel=1e-12)
+    assert main(["sweep", str(flank), "--vary", "OK=1..2mm:3", "-o", str(tmp_path)]) == 1
+    assert "--vary is not for a cam" in capsys.readouterr().err
+    assert main(["sweep", str(case), "--steps", "20001", "-o", str(tmp_path)]) == 1
+    assert "20,000" in capsys.readouterr().err
+
+
+def test_the_space_diagram_draws_the_whole_profile_touching_the_roller():
+    """The profile's outline on the space diagram (diagrams/cam_profile.py): a closed shaded
+    polyline whose nearest point to the roller's centre is the roller's radius away."""
+    from diagrams.space import space_layout
+    from diagrams.model import Circle, Polyline
+    sol = solve(load_scene(CASE))
+    content, _, sc, _ = space_layout(sol)
+    items = [it for g in content for it in g.items]
+    outline, = [it for it in items if isinstance(it, Polyline) and it.cls == "cam-profile"]
+    roller, = [it for it in items if isinstance(it, Circle) and it.cls == "roller"]
+    assert outline.closed and len(outline.points) >= 360
+    gap = min(math.hypot(p[0] - roller.centre[0], p[1] - roller.centre[1])
+              for p in outline.points)
+    assert gap == pytest.approx(roller.r, abs=0.05)          # mm of paper (the outline's chords)
+    assert any(it.cls == "cam-contact-part" for it in items)
+
+
+def test_solve_reports_the_profile_found_and_the_part_in_contact(capsys):
+    """"Find the radius of the flanks": `solve` states the profile it found (R from the angle
+    of action) and the part in contact, in words and in JSON (`cam_profile`)."""
+    import json
+    from polygons.cli import main
+    case = ROOT / "cases" / "cam-profile-arc-flat-oscillating.toml"
+    assert main(["solve", str(case), "--no-steps"]) == 0
+    out = capsys.readouterr().out
+    assert "flanks 79.4 mm, angle of action 120°" in out
+    assert "the flank touches the oscillating flat follower R" in out
+    assert main(["solve", str(case), "--json"]) == 0
+    cam = json.loads(capsys.readouterr().out)["cam_profile"]
+    assert cam["flank_radius"] == pytest.approx(0.0794, rel=1e-12)
+    assert (cam["part_in_contact"], cam["motion"], cam["follower"]) == ("flank", "oscillating",
+                                                                        "flat")
+
+
+def test_the_oscillating_diagram_passes_through_the_case():
+    """The displacement diagram of the oscillating lever (cam_diagram.diagram, 72 angles): at
+    the case's 270° its row is the case's construction (the arm's angle, ω, α), the lever
+    rests on the base circle somewhere and moves on the flanks and the nose elsewhere."""
+    from polygons import cam_diagram
+    case = ROOT / "cases" / "cam-profile-arc-flat-oscillating.toml"
+    scene = load_scene(case)
+    sol = solve(scene)
+    rows = cam_diagram.diagram(scene, 72)
+    row = rows[54]
+    assert row.angle == pytest.approx(math.radians(270), rel=1e-15)
+    R, Qp = sol.points["R"].position, (0.070, 0.050)
+    assert row.s == pytest.approx(math.atan2(R[1] - Qp[1], R[0] - Qp[0]), rel=1e-12)
+    assert (row.v, row.a) == (pytest.approx(sol.links["QR"].omega, rel=1e-12),
+                              pytest.approx(sol.links["QR"].alpha, rel=1e-12))
+    assert {r.part for r in rows} == {"nose", "flank", "base circle"}
+    assert all(r.v == 0.0 and r.a == 0.0 for r in rows if r.part == "base circle")

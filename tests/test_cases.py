@@ -80,6 +80,12 @@ OWN_EXACT_CHECK = {
     **{name: ("test_conditions.py",
               "test_question_cases_exact_values_are_the_closed_form_and_ours")
        for name in ("question-engine-conditions", "question-offset-quick-return")},
+    "cam-profile-tangent-roller": ("test_cam_profiles.py",
+                                   "test_the_new_cases_exact_answers_are_the_closed_forms"),
+    "cam-profile-arc-flat-oscillating": ("test_cam_profiles.py",
+                                         "test_the_new_cases_exact_answers_are_the_closed_forms"),
+    "bar-on-cylinder-rod-angle": ("test_contacts.py",
+                                  "test_the_bar_on_a_cylinder_placed_by_its_angle"),
     "cam-profile-circular-arc": ("test_cam_profiles.py",
                                  "test_case_exact_answers_are_the_closed_form"),
     "ratio-four-bar": ("test_conditions.py",

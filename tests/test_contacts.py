@@ -201,7 +201,7 @@ def test_bar_on_a_half_cylinder():
 
 @pytest.mark.parametrize("table,words", [
     ('[bearing.K]\nbar = "AQ"\nradius = "100 mm"\n', "missing key 'side'"),
-    ('[bearing.K]\nbar = "AX"\nradius = "100 mm"\nside = "left"\n', "bar must be a link"),
+    ('[bearing.K]\nbar = "XQ"\nradius = "100 mm"\nside = "left"\n', "give the bar's length in [links]"),
     ('[bearing.Z]\nbar = "AQ"\nradius = "100 mm"\nside = "left"\n', "[ground] point"),
 ])
 def test_bearing_refusals(table, words):
@@ -342,3 +342,32 @@ def test_words_about_a_point_with_one_position_must_hold():
                       file="x.toml")
     with pytest.raises(PolygonsError, match="one position here.*not 'F above OQ'"):
         solve(bad)
+
+
+def test_the_bar_on_a_cylinder_placed_by_its_angle():
+    """"... its lower end B slides along the floor at 1 m/s ... when it makes 30° with the
+    floor": the slider driver placed by its rod's angle while the rod bears on a circle (B
+    where the line at 30° is tangent: (K − B)·n = −R), the bar's length left out (Q is its
+    point at the contact) — against _bar_general; and the floor fixture without AQ's length
+    gives what it gives with it."""
+    from polygons.scene import load_scene
+    case = Path(__file__).resolve().parent.parent / "cases" / "bar-on-cylinder-rod-angle.toml"
+    scene = load_scene(case)
+    sol = solve(scene)
+    phi = math.radians(30)
+    K, R = (0.3, 0.1), 0.1
+    s = (K[0] * -math.sin(phi) + K[1] * math.cos(phi) + R) / -math.sin(phi)
+    _, w, a = _bar_general((s, 0.0), (1.0, 0.0), (0.0, 0.0), K, R)
+    want = {"omega(BQ)": w, "alpha(BQ)": a, "x(B)": s * 1e3}
+    for ans in scene.answers:
+        assert ans.exact == pytest.approx(abs(want[ans.quantity]), rel=1e-12) or \
+            ans.exact == pytest.approx(want[ans.quantity], rel=1e-12)
+    assert sol.points["B"].position[0] == pytest.approx(s, rel=1e-12)
+    assert sol.links["BQ"].omega == pytest.approx(w, rel=1e-12)
+    assert sol.links["BQ"].alpha == pytest.approx(a, rel=1e-9)
+    Q = sol.points["Q"].position          # the bar's point touching the cylinder
+    assert math.hypot(Q[0] - K[0], Q[1] - K[1]) == pytest.approx(R, rel=1e-12)
+    with_length = solve(parse(FLOOR.read_text()))
+    without = solve(parse(FLOOR.read_text().replace('AQ = "600 mm"', "")))
+    assert without.links["AQ"].omega == pytest.approx(with_length.links["AQ"].omega, rel=1e-12)
+    assert without.links["AQ"].alpha == pytest.approx(with_length.links["AQ"].alpha, rel=1e-12)

@@ -39,14 +39,21 @@ def text_of(page: str) -> str:
 
 
 _CACHE = {}
+_FIGURES = {}
 
 
 def pages(path):
+    """(solution, key, worksheet) of a case, made once per test process."""
     if path not in _CACHE:
         sol = solve(load_scene(str(path)))
-        figs = figures(sol)
+        figs = _FIGURES[id(sol)] = figures(sol)
         _CACHE[path] = (sol, handout(sol, figs=figs), handout(sol, worksheet=True, figs=figs))
     return _CACHE[path]
+
+
+def figures_of(sol):
+    """The figures the pages of ``sol`` were made from (a solution from :func:`pages`)."""
+    return _FIGURES[id(sol)]
 
 
 IDS = [p.stem for p in case_files()]
@@ -186,7 +193,7 @@ def test_worksheet_contains_no_answers(path):
     # the drawing areas, at the key's scales
     for diagram in sol.scene.solve:
         assert f'id="area-{diagram}"' in ws
-        lay = figures(sol).drawing[diagram].meta["layout"]
+        lay = figures_of(sol).drawing[diagram].meta["layout"]
         area = re.search(rf'<svg[^>]*id="area-{diagram}".*?</svg>', ws, re.S).group(0)
         # the key's scale, or (a drawing wider than a portrait A4 page) the next round
         # scale that fits, with the note saying the key's needs a larger sheet

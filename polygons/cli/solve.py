@@ -88,6 +88,9 @@ def run(args) -> int:
         if scene.equivalents:
             from ..contacts import to_list
             data["equivalent_links"] = to_list(sol)
+        if "cam_profiles" in scene.extra:        # the profile found, the part in contact
+            from ..cam_profiles import to_dict as cam_dict
+            data["cam_profile"] = cam_dict(scene)
         text = json_text(data)
     else:
         text = table(sol, steps=not args.no_steps, units=args.units)
@@ -101,5 +104,8 @@ def run(args) -> int:
         if scene.equivalents:
             from ..contacts import report_lines as equivalent_lines
             text += "\n" + "\n".join(equivalent_lines(sol)) + "\n"
+        if "cam_profiles" in scene.extra:
+            from ..cam_profiles import report_lines as cam_lines
+            text += "\n" + "\n".join(cam_lines(scene)) + "\n"
     emit(text, args.out)
     return 0

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..errors import SceneError, UnknownLabelError, suggest
 from ..options import MAX_STEPS, labels
-from ..scene import Crank, Scene, load_scene
+from ..scene import Crank, Scene, parse_scene, parse_toml, read_scene_text
 from ..steps import number
 from ..dyads.base import size_of
 from ..sweep import Sweep, default_points, harmonic, sweep
@@ -69,7 +69,9 @@ def register(sub) -> None:
                        description="Solve a scene over a full input revolution (or its "
                                    "reachable range, reporting the limits), all positions at "
                                    "once; write CSV and plots of displacement, velocity and "
-                                   "acceleration of chosen points and ω/α of chosen links.")
+                                   "acceleration of chosen points and ω/α of chosen links. "
+                                   "A cam stated by its profile ([cam_profiles]): the "
+                                   "follower's displacement diagram over a turn of the cam.")
     p.add_argument("scene", help="scene file (TOML)")
     p.add_argument("--steps", type=int, default=None,
                    help=f"positions over the cycle, 2 .. {MAX_STEPS:,} (default: [sweep] steps "
@@ -141,7 +143,12 @@ def _default_links(sw: Sweep) -> list[str]:
 
 
 def run(args) -> int:
-    scene = load_scene(args.scene)
+    data = parse_toml(read_scene_text(args.scene), args.scene)
+    if isinstance(data, dict) and "cam_profiles" in data:   # the displacement diagram
+        from ..cam_diagram import movable
+        from ._cam import run_cam
+        return run_cam(args, movable(data, args.scene))
+    scene = parse_scene(data, file=args.scene)
     if args.steps is not None and not 2 <= args.steps <= MAX_STEPS:    # checked with --vary too
         raise SceneError(f"steps must be a whole number from 2 to {MAX_STEPS:,}, got "
                          f"{args.steps:,}", file=scene.file, where="--steps")
