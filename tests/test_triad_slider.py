@@ -162,7 +162,7 @@ def test_the_force_polygon_refuses_naming_the_group_and_newton_euler_solves():
                                "direction": "180 deg"}}
     scene = parse_scene(data, file="block.toml")
     from polygons.forces import graphical
-    with pytest.raises(PolygonsError, match="triad with a block on a guide"):
+    with pytest.raises(PolygonsError, match="a slider on a fixed guide at a corner"):
         graphical.groups_of(scene)
     from polygons.forces.analysis import analyse
     an = analyse(scene)

@@ -45,9 +45,9 @@ from .triad_slider_math import all_corners, triad_slider_cols, triad_slider_scal
 class TriadSlider:
     """Plate ``plate`` with corners ``b``, ``c`` joined by ``link_b``, ``link_c`` to the placed
     ``ob``, ``oc``, and corner ``x`` a block on its fixed guide ([sliders.x]); ``s`` the
-    Assur point (AB and DC produced); ``frame``: (label, (x, y)) of the plate's three corners
-    in its own frame; ``ternary``: the plate is a link with a [points] corner (else a
-    triangle of links, whose mirror image is a closure too)."""
+    Assur point (AB and DC produced, or where AB ∥ DC a link and the normal to the guide:
+    ``via``); ``ternary``: the plate is a link with a [points] corner (else a triangle of
+    links, whose mirror image is a closure too); ``guide_e`` the guide's direction."""
     b: str
     c: str
     x: str
@@ -73,7 +73,7 @@ class TriadSlider:
     #: no ``force_polygon``: the graphical force polygon of this group is not written, so
     #: :func:`polygons.forces.graphical.groups_of` refuses it in one line, in these words
     #: (Newton–Euler and Zhukovsky's lever solve it)
-    kind_words = "TriadSlider (a triad with a block on a guide)"
+    kind_words = "TriadSlider (a class-III group with a slider on a fixed guide at a corner)"
 
     def auxiliary_points(self):
         """(S, (A, B), (D, C)): Assur's point S where AB and DC produced meet; none drawn when
