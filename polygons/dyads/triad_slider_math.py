@@ -206,33 +206,53 @@ def margin_at(q, pose, size) -> float:
     return _margin(_jacobian(q, pose, size)[1])
 
 
+def _closures_from(qq, size) -> list[tuple[float, float, float]]:
+    """Every closure (bx, by, φ) of ``qq`` by the polynomial eliminated from its first corner:
+    each real root, each candidate B there polished by Newton (where Cramer's determinant
+    nearly vanishes two closures share nearly one φ and differ in B), checked."""
+    got = _phi0(qq)
+    if got is None:
+        return []
+    phi0, c = got
+    out = []
+    for t in real_roots(c):
+        phi = phi0 + 2.0 * math.atan(t)
+        for bx, by in _b_candidates(phi, qq):
+            if not (math.isfinite(bx) and math.isfinite(by)):
+                continue
+            pose = (bx, by, phi)
+            new, _ = _newton(qq, pose, size)
+            if new is not None and _residual(qq, new) <= _residual(qq, pose):
+                pose = new
+            if _residual(qq, pose) <= 1e-9 * size:
+                out.append(pose)
+    return out
+
+
 def closures(p, size=None) -> list[tuple[float, float, float, float]]:
     """Every closure (bx, by, φ, η) of the group with parameters ``p`` = (ax, ay, a, dx, dy, d,
-    gx, gy, ex, ey, L, ξ, η, mirror): each real root of the polynomial (and, with ``mirror``,
-    of the mirrored plate's), polished by Newton and checked against the loop equations."""
+    gx, gy, ex, ey, L, ξ, η, mirror): the real roots of the polynomial eliminated from P₁ and
+    of the one eliminated from P₂ (the first cannot tell apart two closures of nearly one φ
+    where DP₂ is normal to the guide, the second where AP₁ is), and, with ``mirror``, the
+    mirrored plate's; each polished by Newton, checked against the loop equations, once."""
     *q, mirror = p
     q = tuple(float(v) for v in q)
     if not all(math.isfinite(v) for v in q) or math.hypot(q[8], q[9]) == 0.0:
         return []
     size = size or max(abs(v) for v in q) or 1.0
-    out = []
+    out, seen = [], []
+    ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi = q[:12]
     for eta in ((q[12], -q[12]) if mirror and q[12] != 0.0 else (q[12],)):
         qq = q[:12] + (eta,)
-        got = _phi0(qq)
-        if got is None:
-            continue
-        phi0, c = got
-        for t in real_roots(c):
-            phi = phi0 + 2.0 * math.atan(t)
-            cands = [(bx, by, phi) for bx, by in _b_candidates(phi, qq)
-                     if math.isfinite(bx) and math.isfinite(by)]
-            if not cands:
-                continue
-            pose = min(cands, key=lambda ps: _residual(qq, ps))
-            new, _ = _newton(qq, pose, size)
-            if new is not None and _residual(qq, new) <= _residual(qq, pose):
-                pose = new
-            if _residual(qq, pose) <= 1e-9 * size:
+        qc = (dx, dy, d, ax, ay, a, gx, gy, ex, ey, L, L - xi, -eta)
+        poses = _closures_from(qq, size) + [
+            (cx + L * math.cos(ph), cy + L * math.sin(ph), ph - math.pi)
+            for cx, cy, ph in _closures_from(qc, size)]
+        for pose in poses:
+            pts = corners_of(qq, pose)
+            if _residual(qq, pose) <= 1e-9 * size and all(
+                    max(math.dist(pts[i], o[i]) for i in range(3)) > 1e-9 * size for o in seen):
+                seen.append(pts)
                 out.append(pose + (eta,))
     return out
 
