@@ -203,7 +203,7 @@ def drawings(an: Analysis):
                 arcs += list(zip(arc, arc[1:]))
                 head, shaft = arrow_head(arc[-2], arc[-1], length=2.2, half=0.8)
                 arrows.append(Arrow(arc[-2], arc[-1], "vector", head, shaft, name=cpl.name,
-                                    role="known", title=f"{cpl.name} {_fmt(abs(cpl.value))} N m"))
+                                    role="arc", title=f"{cpl.name} {_fmt(abs(cpl.value))} N m"))
                 texts.append((f"{cpl.name} {_fmt(abs(cpl.value))} N m "
                               f"{'CCW' if cpl.value > 0 else 'CW'}", c, 2.5, "label", "normal",
                               "arc"))
@@ -242,14 +242,22 @@ def drawings(an: Analysis):
             if not drawn:
                 continue
             big = max(float(np.hypot(*v.force)) for v in drawn)
-            fscale = Scale("force", round_up(big * 10.0 / 100.0), "N", 1.0)
+            small = min(float(np.hypot(*v.force)) for v in drawn)
+            from .inset import MIN_VECTOR_MM
+            from .scale import force_scale
+            fscale = Scale("force", force_scale(big, small), "N", 1.0)
             kf = fscale.mm_per_si
             cur = np.zeros(2)
-            parr, plab = [], []
+            parr, plab, said = [], [], []
             for v in drawn:
                 tail = (float(cur[0] * kf), float(cur[1] * kf))
                 cur = cur + v.force
                 tip = (float(cur[0] * kf), float(cur[1] * kf))
+                mm = math.dist(tail, tip)
+                if mm < MIN_VECTOR_MM:           # too short to draw: said in the legend
+                    said.append((f"{v.name} ≈ 0 ({mm:.2f} mm at this scale: "
+                                 f"{_fmt(float(np.hypot(*v.force)))} N, not drawn)", "normal"))
+                    continue
                 head, shaft = arrow_head(tail, tip)
                 style = "result" if v.kind == "inertia" else "vector"
                 parr.append(Arrow(tail, tip, style, head, shaft, name=v.name, role="known",
@@ -279,7 +287,7 @@ def drawings(an: Analysis):
                                tuple(pleaders))],
                 content_box=box2,
                 legend=[(f"{v.name}: {_fmt(float(np.hypot(*v.force)))} N ∠"
-                         f"{_dir(v.force):.2f}°", "normal") for v in drawn],
+                         f"{_dir(v.force):.2f}°", "normal") for v in drawn] + said,
                 scale=fscale,
                 caption=[f"The polygon closes (gap {gap:.2g} N): the body is in equilibrium "
                          f"with its inertia force (d'Alembert)."

@@ -22,6 +22,8 @@ from polygons.forces import effort as effort_mod
 from polygons.forces import graphical, zhukovsky
 
 from .components import LOOKS
+from . import scale as scales
+from .inset import MIN_VECTOR_MM
 
 KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load",
              "spring": "force-load", "torque": "force-load", "friction": "force-load",
@@ -73,7 +75,8 @@ def _known_item(k, stage):
 
 
 def _moments_item(t, stage):
-    return (t.name, t.force, "force-moments", stage, f"{t.name}: {_fmt(t.value)} N (by moments)")
+    return (t.name, t.force, "force-moments", stage,
+            f"{t.name}: {graphical.found_words(t)} (by moments)")
 
 
 def _closing_item(f, stage):
@@ -184,8 +187,12 @@ def _drawings(groups, fp, st):
         big = max(float(np.hypot(*s[1])) for s in seq)
         if big == 0.0:
             continue
-        fscale = Scale("force", round_up(big * 10.0 / 90.0), "N", 1.0)
+        small = min(float(np.hypot(*s[1])) for s in seq if float(np.hypot(*s[1])) > 0)
+        fscale = Scale("force", scales.force_scale(big, small), "N", 1.0)
         k = fscale.mm_per_si
+        # a force too short to draw at this scale: said in the legend, not drawn
+        ghosts = {i for i, s in enumerate(seq)
+                  if 0 < float(np.hypot(*s[1])) * k < MIN_VECTOR_MM}
         verts = [np.zeros(2)]
         for s in seq:
             verts.append(verts[-1] + s[1] * k)
@@ -193,8 +200,9 @@ def _drawings(groups, fp, st):
         nst = max(s[3] for s in seq) + (1 if diag else 0)
         for stage in list(range(1, nst + 1)) + [None]:
             if stage is not None and not (diag and stage == nst) and not any(
-                    s[3] == stage and float(np.hypot(*s[1])) > 0 for s in seq):
-                continue                      # nothing to draw at this stage (massless)
+                    s[3] == stage and float(np.hypot(*s[1])) > 0 and i not in ghosts
+                    for i, s in enumerate(seq)):
+                continue           # nothing to draw at this stage (massless, or too small)
             arrows, labels, extra = [], [], []
             placed = []
             lo = np.min(np.array(verts), axis=0) - 8.0
@@ -214,7 +222,7 @@ def _drawings(groups, fp, st):
                 if stage is not None and sst > stage:
                     continue
                 tail, tip = tuple(map(float, verts[i])), tuple(map(float, verts[i + 1]))
-                if math.dist(tail, tip) < 1e-6:
+                if math.dist(tail, tip) < 1e-6 or i in ghosts:
                     continue
                 new = stage is not None and sst == stage
                 head, shaft = arrow_head(tail, tip)
@@ -308,7 +316,11 @@ def _drawings(groups, fp, st):
             key = [(f"c-{lk}", LOOKS[lk].name, True) for lk in looks]
             if lines and (stage is None or stage == _closing_stage(g)):
                 key.append(("construction", "line of known direction", False))
-            legend = [(s[4], "normal") for s in seq if stage is None or s[3] <= stage]
+            legend = [(s[4], "normal") for i, s in enumerate(seq)
+                      if (stage is None or s[3] <= stage) and i not in ghosts]
+            legend += [(f"{seq[i][0]} ≈ 0 ({float(np.hypot(*seq[i][1])) * k:.2f} mm at this "
+                        f"scale: {_fmt(float(np.hypot(*seq[i][1])))} N, not drawn)", "normal")
+                       for i in sorted(ghosts) if stage is None or seq[i][3] <= stage]
             legend += [(m, "normal") for m in g.moments]
             if g.kind == "crank":
                 legend.append((f"input torque T = {abs(fp.effort):.5g} N m "

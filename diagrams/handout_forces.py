@@ -198,13 +198,13 @@ def _polygons(an) -> str:
                     out.append(f"<li>known: {sym(k.name)} = {_n(float(np.hypot(*k.force)))} "
                                f"N ∠{_deg(k.force)} on {esc(k.body)}{esc(h)}</li>\n")
                 if k.couple:
-                    out.append(f"<li>known: {sym(k.name)}, a couple of {_n(k.couple)} N m "
-                               f"(CCW +) on {esc(k.body)}</li>\n")
+                    out.append(f"<li>known: {sym(k.name)}, a couple of "
+                               f"{esc(graphical.moment_words(k.couple))} on {esc(k.body)}</li>\n")
             for m in g.moments:            # a number's minus sign typeset as such
                 out.append(f"<li>{sym(_MINUS.sub('−', m))}</li>\n")
             for f in g.normals:
-                out.append(f"<li>by moments: {sym(f.name)} = {_n(f.value)} N, normal to "
-                           f"the link</li>\n")
+                out.append(f"<li>by moments: {sym(f.name)} = "
+                           f"{esc(graphical.found_words(f))}, normal to the link</li>\n")
             for f in g.closing:
                 if f.how == "effort":
                     continue

@@ -119,6 +119,9 @@ section.plate { margin-top: 1.5mm; }
 section.plate div.sheet { float: left; width: 100%; break-inside: avoid;
                           page-break-inside: avoid; margin-bottom: 0.5mm; }
 section.plate + section, #results { clear: none; }
+/* a worksheet's space diagram does not float: every step is read off it, so the velocity steps
+   never come before it (Fig 7's worksheet set steps 1-4 first, the diagram after them) */
+body.worksheet section#space div.sheet { float: none; }
 section.plate h2, section.plate h3 { break-after: avoid; page-break-after: avoid; }
 section.plate figure { margin: 0; }
 figure.centres { float: left; margin: 0 4mm 2mm 0; }

@@ -16,14 +16,23 @@ from .crowd import clip_to_circle, clusters, mapped
 from .labels import Box, Placer, box_hits_segment, leader, text_box
 from .layout import arrow_head
 from .model import Circle, Polyline, Segment, Text
+from .scale import RULE_MM
 
 Pt = tuple[float, float]
 
 #: the enlargements offered (a round number, as a draughtsman picks)
-FACTORS = (2, 3, 4, 5, 6, 8, 10)
-#: the inset's radius is at most this (mm)
+FACTORS = (2, 3, 4, 5, 6, 8, 10, 15, 20)
+#: the inset's radius is at most this (mm) ...
 MAX_RADIUS = 26.0
+#: ... unless a larger one is what shows its shortest vector :data:`MIN_VECTOR_MM` long
+MAX_RADIUS_FOR_VECTORS = 30.0
 CAPTION_SIZE = 2.6
+#: the layout rule: no vector drawn shorter than this (mm), on the drawing or in its inset
+#: (diagrams.audit measures it on the SVG)
+MIN_VECTOR_MM = RULE_MM
+#: a vector shorter than this (mm) at the drawing's scale is not drawn at all: no inset can
+#: show it :data:`MIN_VECTOR_MM` long; the legend gives it as '≈ 0 (x mm at this scale)'
+ZERO_MM = MIN_VECTOR_MM / FACTORS[-1]
 RING_MARGIN = 1.6       # mm of ring around the cluster's outermost vertex
 
 
@@ -39,6 +48,7 @@ class Inset:
     #                            leader: a thin line to the vertex of a label set away from it
     caption: tuple             # (text, x, baseline, box)
     join: tuple | None = None  # the line from the ring to the inset, when it crosses nothing
+    caption_size: float = CAPTION_SIZE
 
     @property
     def box(self) -> Box:
@@ -54,15 +64,29 @@ class Inset:
         return mapped(p, self.c, self.k, self.C)
 
 
-def _factor(points: list[Pt], near: float) -> int:
+def _factor(points: list[Pt], near: float, vectors=()) -> int:
     """The least round enlargement that sets the cluster's nearest two vertices 1.6 label
-    heights apart."""
+    heights apart and draws each of its ``vectors`` (lengths, mm) :data:`MIN_VECTOR_MM`
+    long or longer."""
     d = min((math.dist(p, q) for i, p in enumerate(points) for q in points[i + 1:]
              if math.dist(p, q) >= 0.6), default=near)
     for k in FACTORS:
-        if d * k >= 1.6 * near:
+        if d * k >= 1.6 * near and all(L * k >= MIN_VECTOR_MM for L in vectors):
             return k
     return FACTORS[-1]
+
+
+def largest_factor(r: float) -> int:
+    """The largest enlargement a ring of radius ``r`` (mm) may have: its inset no wider than
+    :data:`MAX_RADIUS_FOR_VECTORS`."""
+    return max([k for k in FACTORS if k * r <= MAX_RADIUS_FOR_VECTORS] or [FACTORS[0]])
+
+
+def _vector_factor(vectors) -> int:
+    """The least round enlargement that draws every one of ``vectors`` (mm) at least
+    :data:`MIN_VECTOR_MM` long."""
+    return next((k for k in FACTORS if all(L * k >= MIN_VECTOR_MM for L in vectors)),
+                FACTORS[-1])
 
 
 def _free(box: Box, segments, boxes) -> bool:
@@ -91,20 +115,29 @@ def chords(c: Pt, r: float, n: int = 32) -> list[tuple[Pt, Pt]]:
 
 
 def plan(points: dict, segments: list, boxes: list, frame: Box, label_size: float,
-         near: float, names_of=lambda n: n) -> list[Inset]:
+         near: float, names_of=lambda n: n, vectors=(), caption_size: float = CAPTION_SIZE,
+         max_radius: float = MAX_RADIUS_FOR_VECTORS) -> list[Inset]:
     """The insets of a drawing: ``points`` {vertex: paper point}; ``segments`` every drawn
     stroke (a, b) and ``boxes`` every label box (mm) an inset must keep clear of; ``frame``
     the drawing's frame; ``near`` the distance under which vertices crowd; ``names_of`` the
-    label of a vertex (the pole's aliases)."""
+    label of a vertex (the pole's aliases); ``vectors`` the (tail, tip) vertex names of the
+    drawn vectors: one inside a ring is drawn :data:`MIN_VECTOR_MM` long in its inset, the
+    inset's radius allowed up to ``max_radius`` for it."""
     out: list[Inset] = []
     taken = list(boxes)
     for names, c, r in rings(points, near):
         pts = [points[n] for n in names]
-        k = _factor(pts, near)
-        while k > FACTORS[0] and k * r > MAX_RADIUS:
+        inside = set(names)
+        lens = [math.dist(points[a], points[b]) for a, b in vectors
+                if a in inside and b in inside and a in points and b in points]
+        lens = [L for L in lens if L >= ZERO_MM - 1e-9]
+        k = _factor(pts, near, lens)
+        need = _vector_factor(lens)
+        while k > FACTORS[0] and k * r > MAX_RADIUS and (
+                k > need or k * r > max_radius):
             k = FACTORS[FACTORS.index(k) - 1]
         R = round(k * r, 3)
-        cap_h = (CAPTION_SIZE + 1.0)
+        cap_h = (caption_size + 1.0) if caption_size > 0 else 0.0
         corners = [(frame.x1 - R - 1.0, frame.y1 - R - 1.0), (frame.x0 + R + 1.0, frame.y1 - R - 1.0),
                    (frame.x1 - R - 1.0, frame.y0 + R + cap_h + 1.0),
                    (frame.x0 + R + 1.0, frame.y0 + R + cap_h + 1.0)]
@@ -123,7 +156,8 @@ def plan(points: dict, segments: list, boxes: list, frame: Box, label_size: floa
             top = min([frame.y1] + [i.box.y0 - 3.0 for i in beside])
             C = (right + 4.0 + R, top - R)
         C = (round(C[0], 3), round(C[1], 3))
-        ins = Inset(tuple(names), c, r, k, C, R, (), ("", 0.0, 0.0, Box(*C, *C)))
+        ins = Inset(tuple(names), c, r, k, C, R, (), ("", 0.0, 0.0, Box(*C, *C)),
+                    caption_size=caption_size)
         ins = _labels(ins, points, segments, taken, label_size, names_of)
         d = math.dist(c, C)
         if d > r + R + 2.0:
@@ -165,9 +199,11 @@ def _labels(ins: Inset, points: dict, segments, boxes, size: float, names_of) ->
     for g in groups:
         p = ins.show(points[g[0]])
         placer.block(Box(p[0] - 0.8, p[1] - 0.8, p[0] + 0.8, p[1] + 0.8))
-    text = f"detail ×{ins.k}"           # the caption first: no vertex label on it
-    tb = text_box(C[0], C[1] - R - 1.0 - CAPTION_SIZE * 0.76, text, CAPTION_SIZE, "middle")
-    caption = (text, C[0], C[1] - R - 1.0 - CAPTION_SIZE * 0.76, tb)
+    # the caption first: no vertex label on it (none on a figure printed reduced: size 0)
+    text = f"detail ×{ins.k}" if ins.caption_size > 0 else ""
+    cs = ins.caption_size
+    tb = text_box(C[0], C[1] - R - 1.0 - cs * 0.76, text, cs, "middle")
+    caption = (text, C[0], C[1] - R - 1.0 - cs * 0.76, tb)
     placer.block(tb)
     labels = []
     for g in groups:
@@ -250,7 +286,9 @@ def labels(ins: Inset, visible, size: float, old=()):
             if lead is not None:
                 out.append(Segment(lead[0], lead[1], "leader", faded, cls="inset-leader"))
     text, x, base, _ = ins.caption
-    out.append(Text(x, base, text, CAPTION_SIZE, "middle", role="inset", cls="inset-caption"))
+    if text:
+        out.append(Text(x, base, text, ins.caption_size, "middle", role="inset",
+                        cls="inset-caption"))
     return out
 
 

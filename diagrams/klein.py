@@ -27,6 +27,10 @@ Pt = tuple[float, float]
 LABEL_SIZE = 3.6
 PIN_R = 1.1
 PAD_MM = 24.0
+#: the area (mm) Klein's construction is fitted to when no paper is asked for: an A4
+#: landscape page's width, its key and legend below it
+KLEIN_AREA = (265.0, 170.0)
+KLEIN_PAGE_WIDTH = 285.0
 #: the stages and their titles
 STAGES = ("the crank, the rod and the line of stroke",
           "velocity: the triangle {O} {A} {M} (turned 90°, × ω)",
@@ -59,8 +63,15 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
     """The construction up to ``stage`` (1..4; None: finished)."""
     last = len(STAGES) if stage is None else stage
     ext = bounds(_extent(f))
-    sc = scale or scales.choose("length", (ext.x1 - ext.x0, ext.y1 - ext.y0), paper=paper,
-                                pad_mm=PAD_MM)
+    # its own scale, on A4 unless asked otherwise: the circle on the rod sets the figure's
+    # size, and at the space diagram's A5 scale the crank was 12 mm, M A Q K L N on top of
+    # each other
+    if scale is None and paper is None:
+        w, h = ext.x1 - ext.x0, ext.y1 - ext.y0
+        scale = scales.make("length", scales.round_up(max(
+            w * 10.0 / (KLEIN_AREA[0] - PAD_MM), h * 10.0 / (KLEIN_AREA[1] - PAD_MM))))
+    sc = scale or scales.choose("length", (ext.x1 - ext.x0, ext.y1 - ext.y0),
+                                paper=paper, pad_mm=PAD_MM)
     k = sc.mm_per_si
 
     def P(role_or_pt) -> Pt:
@@ -236,13 +247,15 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
         f"The velocity triangle {o} {a_} {m_} is the velocity polygon turned 90° (each length "
         f"× ω); the quadrilateral {o} {a_} {q_} {n_} is the acceleration polygon turned 180° "
         f"(each length × ω²): a_{b_} = ω²·{n_}{o}, read off the space diagram."]
-    return compose(name=name, kind="space", stage=stage, title=title, subtitle=subtitle,
+    from .layout import restack
+    return restack(compose(name=name, kind="space", stage=stage, title=title, subtitle=subtitle,
                    desc=f"{TITLES[f.method]} for {scene.title}, space scale {sc.statement}.",
                    content=groups, content_box=Box(box.x0, box.y0, box.x1, box.y1),
                    legend=legend, scale=sc, caption=caption, scale_statement=sc.statement,
                    key=key, meta={"figure": f.method,
                                            "labels": tuple(sorted(set(scene.labels) | {
-                                               v for kk, v in nm.items() if kk != "inline"}))})
+                                               v for kk, v in nm.items() if kk != "inline"}))}),
+                   KLEIN_PAGE_WIDTH)
 
 
 def drawings(sol, f: Figure, scale=None, paper=None, stages: bool = True) -> list[Drawing]:

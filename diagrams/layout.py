@@ -256,6 +256,18 @@ def _legend_in_two(key: Group | None, legend: Group | None, top: float, max_widt
     return best
 
 
+def _rewrapped(g: Group, max_width: float) -> Group:
+    """A caption group's lines wrapped anew to ``max_width`` mm (one paragraph)."""
+    texts = [it for it in g.items if isinstance(it, Text)]
+    if not texts:
+        return g
+    first = texts[0]
+    lines = wrap(" ".join(t.text for t in texts), max_width, first.size)
+    return replace(g, items=tuple(replace(first, text=ln,
+                                          baseline=first.baseline - i * LINE * first.size)
+                                  for i, ln in enumerate(lines)))
+
+
 def restack(d: Drawing, max_width: float) -> Drawing:
     """``d`` (made by :func:`compose`) no wider than ``max_width`` mm if moving its key and
     legend from beside the drawing to below it achieves that (a portrait page's width); the
@@ -322,6 +334,9 @@ def restack(d: Drawing, max_width: float) -> Drawing:
             if g is None:
                 continue
             b = extent(g.items)
+            if name == "caption" and b.x1 - b.x0 > max_width - 2 * MARGIN:   # rewrapped
+                g = _rewrapped(g, max_width - 2 * MARGIN)
+                b = extent(g.items)
             moved[name] = g.moved(0.0, below - b.y1)
             below -= (b.y1 - b.y0) + 3.0
     content_iter = iter(content)

@@ -58,7 +58,8 @@ class Arrow:
     """A vector: shaft from ``tail`` to ``tip`` and an arrowhead whose first point is the tip.
 
     ``frm``/``to`` are the polygon vertices (lower case) it joins; ``role`` is 'known',
-    'resolved', 'result', 'coriolis', 'image', 'join' or 'input'.  ``tail``/``tip`` are
+    'resolved', 'result', 'coriolis', 'image', 'join', 'input' or 'arc' (the head of an
+    arc: an input ω, a couple; its length is no quantity's).  ``tail``/``tip`` are
     always the vertices; a vector lying on a longer collinear one is drawn moved sideways by
     ``shift`` (:mod:`diagrams.crowd`; the SVG writes it as a translation of the arrow).
     """

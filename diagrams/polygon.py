@@ -35,9 +35,9 @@ from .labels import (Box, Placer, StrokeCells, bounds, box_hits_segment, box_seg
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
-from .notation import (join_vectors, link_names, mark_drawing, name_bare_omegas, slot_names,
-                       vector)
-from .strokes import Construction, Stroke, construction, sliding_arrow
+from .notation import mark_drawing, vector
+from .polywords import along_words, measure_text, prose  # noqa: F401 (the polygon's words)
+from .strokes import Construction, Stroke, construction
 from .text import ASCENT, DESCENT, display, number, token
 
 Pt = tuple[float, float]
@@ -63,6 +63,7 @@ class Layout:
     shifts: dict = field(default_factory=dict)   # (step, frm, to) -> (dx, dy) mm: drawn beside
     insets: tuple = ()               # diagrams.inset.Inset: tight clusters drawn enlarged
     leaders: tuple = ()              # (step, (frm, to), (a, b)): a vector's name led to it
+    ghosts: frozenset = frozenset()  # (frm, to) of the vectors too short for any inset
 
     def size(self, base: float) -> float:
         return round(base * self.text_scale, 3)
@@ -106,6 +107,7 @@ def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
     w, h = extent[0] * k, extent[1] * k
     frame = Box(-FRAME_MARGIN, -FRAME_MARGIN, w + FRAME_MARGIN, h + FRAME_MARGIN)
     lay = Layout(con, scale, (bb.x0, bb.y0), frame, (), {}, {}, text_scale)
+    lay = replace(lay, ghosts=_ghosts(lay))
     vecs = [((st.step, st.frm, st.to), g[0], g[1]) for st, g in _geometry(lay)
             if st.kind == "arrow"]
     lay = replace(lay, shifts=crowd.shifts(vecs, frame.centre))
@@ -142,8 +144,19 @@ def _place_insets(lay: Layout) -> Layout:
     near = _crowded(lay)
     boxes = ([v[3] for v in lay.vertex_labels] + [v[3] for v in lay.line_labels.values()]
              + [v[3] for v in lay.vector_labels.values()])
+    vectors = [(st.frm, st.to) for st, _ in _geometry(lay) if st.kind == "arrow"]
     found = inset.plan(pts, _paper_segments(lay), boxes, lay.frame, _inset_size(lay), near,
-                       lambda n: con.pole_label if n == con.pole else n)
+                       lambda n: con.pole_label if n == con.pole else n, vectors,
+                       # a figure printed reduced (labels set larger: a handout's stage
+                       # thumbnail) has no caption: at its size it took a fifth of the
+                       # figure, 2.6 mm it printed 0.5 mm high; the finished plate has it
+                       inset.CAPTION_SIZE if lay.text_scale <= 1.0 else 0.0,
+                       # a stage figure printed reduced in a handout's column (labels set
+                       # larger): its inset no larger than usual -- the rule is the
+                       # finished drawing's (NOT DONE: thumbnails' insets may show a
+                       # vector under 3 mm, as before)
+                       inset.MAX_RADIUS_FOR_VECTORS if lay.text_scale <= 1.0
+                       else inset.MAX_RADIUS)
     return replace(lay, insets=tuple(found))
 
 
@@ -163,10 +176,14 @@ def _drawn(lay: Layout, st: Stroke, g):
     return ((g[0][0] + d[0], g[0][1] + d[1]), (g[1][0] + d[0], g[1][1] + d[1]))
 
 
-def _geometry(lay: Layout):
-    """Paper geometry of every stroke: arrows (tail, tip), line chords, offsets, sides."""
+def _geometry(lay: Layout, every: bool = False):
+    """Paper geometry of every drawn stroke: arrows (tail, tip), line chords, offsets, sides;
+    an arrow shorter than :data:`diagrams.inset.ZERO_MM` is not drawn (no inset can show it:
+    the legend says '≈ 0'), ``every`` includes it."""
     out = []
     for st in lay.con.strokes:
+        if not every and _ghost(lay, st):
+            continue
         if st.kind == "line":
             a = lay.P(st.a)
             chord = clip_line(a, st.b, lay.frame)
@@ -174,6 +191,36 @@ def _geometry(lay: Layout):
         else:
             out.append((st, (lay.P(st.a), lay.P(st.b))))
     return out
+
+
+def _ghost(lay: Layout, st: Stroke) -> bool:
+    """True for a vector too short to draw at the drawing's scale (:func:`_ghosts`)."""
+    return st.kind == "arrow" and (st.frm, st.to) in lay.ghosts
+
+
+def _ghosts(lay: Layout) -> frozenset:
+    """(frm, to) of every vector no inset can draw :data:`inset.MIN_VECTOR_MM` long: shorter
+    than :data:`inset.ZERO_MM`, or than the rule at the largest enlargement its cluster's
+    ring allows (:func:`inset.largest_factor`), or with its ends drawn as one point (nearer
+    than 0.6 mm: no ring).  They are not drawn; the legend gives each
+    as '≈ 0 (x mm at this scale)'."""
+    pts = _paper_points(lay)
+    out = set()
+    rings = inset.rings(pts, _crowded(lay))
+    for st in lay.con.strokes:
+        if st.kind != "arrow":
+            continue
+        L = math.dist(lay.P(st.a), lay.P(st.b))
+        if L < inset.ZERO_MM:
+            out.add((st.frm, st.to))
+            continue
+        if L >= inset.MIN_VECTOR_MM:
+            continue
+        ring = next((r for names, _, r in rings if st.frm in names and st.to in names), None)
+        # (no ring: its ends are drawn as one point, one label 'b₁ = s₁')
+        if ring is None or L * inset.largest_factor(ring) < inset.MIN_VECTOR_MM:
+            out.add((st.frm, st.to))
+    return frozenset(out)
 
 
 def _place_labels(lay: Layout) -> Layout:
@@ -632,7 +679,7 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     asked = asked_vectors(lay.con)
     asked_m = {a.measure for a in lay.con.asked if a.measure is not None}
     vectors: list[tuple[str, str]] = []
-    for st, g in _geometry(lay):
+    for st, g in _geometry(lay, every=True):
         if st.kind != "arrow":
             continue
         if (st.frm, st.to) in seen:
@@ -642,7 +689,16 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
         val = sc.si(mm) / sc.factor
         what = "Coriolis 2ωv" if st.component == "coriolis" else st.label
         mark = "\u2003← asked" if (st.frm, st.to) in asked else ""
-        vectors.append((f"{vector(st.frm, st.to)} = {number(val, 4)} {display(sc.unit)}  "
+        name = vector(_about(lay.con, st), st.to)
+        if _ghost(lay, st):        # too short for any inset: said, not drawn
+            if mm < 0.005:
+                text = f"{name} = 0 (a point: not drawn)"
+            else:
+                text = (f"{name} ≈ 0 ({mm:.2f} mm at this scale: "
+                        f"{number(val, 3)} {display(sc.unit)}, not drawn)")
+            vectors.append((f"{text}  {what}{mark}", "bold" if mark else "normal"))
+            continue
+        vectors.append((f"{name} = {number(val, 4)} {display(sc.unit)}  "
                         f"({mm:.1f} mm)  {what}{mark}", "bold" if mark else "normal"))
     for a in lay.con.asked:
         if a.zero:
@@ -666,74 +722,15 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
     return out
 
 
-def along_words(angle: float) -> str:
-    """Direction words for a direction ``angle`` (radians, CCW from +x): 'to the right',
-    'up and to the left (135°)'."""
-    deg = math.degrees(angle) % 360.0
-    names = ["to the right", "up and to the right", "up", "up and to the left", "to the left",
-             "down and to the left", "down", "down and to the right"]
-    k = int(((deg + 22.5) % 360.0) // 45.0)
-    exact = abs(deg - 45.0 * k) < 0.05 or abs(deg - 45.0 * k - 360.0) < 0.05
-    return names[k] + ("" if exact else f" ({number(deg, 4)}°)")
-
-
-def _slider_sense(m: Step, sol: Solution | None, con: Construction | None = None) -> str:
-    """' to the left': the sense of a signed slider measure (along its guide) or slide
-    measure (the way its sliding vector is drawn)."""
-    if sol is None or m.value in (None, 0):
-        return ""
-    guides = sol.scene.model.guide
-    guide = next((guides[a].line for a in m.args if a in guides), None)
-    if guide is not None:
-        return f" {along_words(guide.angle + (0.0 if m.value > 0 else math.pi))}"
-    if con is not None and m.theorem == "sliding":
-        x = sol.vertex_of(m.args[0]) if m.args and m.args[0] in sol.points else None
-        arrow = sliding_arrow(con.strokes, con.steps, x, m.args[1:])
-        if arrow is not None:
-            d = (arrow.b[0] - arrow.a[0], arrow.b[1] - arrow.a[1])
-            return f" {along_words(math.atan2(d[1], d[0]))}"
-    return ""
-
-
-def measure_text(m: Step, sol: Solution | None = None, con: Construction | None = None,
-                 scale: scales.Scale | None = None) -> str:
-    """'ω_BC = 45.62 rad/s CW  (bc / BC)': a measure step's value, its sense, its formula;
-    a signed slider result with its direction words ('1589 m/s² to the left').  A speed or
-    acceleration is given in the unit of the drawing's ``scale`` (mm/s on a mm/s scale)."""
-    unit = display(m.unit)
-    if m.value is None:
-        return display(m.draws)
-    if scale is not None and display(m.unit) in ("m/s", "m/s²") and scale.factor != 1.0 \
-            and scale.quantity in ("velocity", "acceleration"):
-        m = replace(m, value=m.value / scale.factor)
-        unit = display(scale.unit)
-    if m.unit.startswith("rad"):
-        sense = "" if m.value == 0 else (" CCW" if m.value > 0 else " CW")
-        val = f"{number(abs(m.value))} {unit}{sense}"
-    else:
-        words = _slider_sense(m, sol, con)
-        val = (f"{number(abs(m.value))} {unit}{words}" if words
-               else f"{number(m.value)} {unit}")
-    rhs = m.formula.split("=", 1)[1].strip() if "=" in m.formula else ""
-    return display(f"{m.draws} = {val}" + (f"  (= {rhs})" if rhs else ""))
-
-
-def prose(sol: Solution, con: Construction, text: str) -> str:
-    """A step's sentence in the drawings' notation: vector names split (b1b → b₁b), a bare ω
-    or α before '× XY' named after its link (ω² × AB → ω_AB² × AB)."""
-    return join_vectors(name_bare_omegas(slot_names(display(text), sol.scene),
-                                         _link_names(sol.scene)), con.vertices)
-
-
-_LINK_NAMES: list = [None, {}]
-
-
-def _link_names(scene) -> dict:
-    """:func:`notation.link_names` of ``scene``, made once per scene (a large mechanism's
-    legend and captions ask it for every line; read only)."""
-    if _LINK_NAMES[0] is not scene:
-        _LINK_NAMES[:] = [scene, link_names(scene)]
-    return _LINK_NAMES[1]
+def _about(con: Construction, st: Stroke) -> str:
+    """The tail's name of a vector from the pole as the book writes it: the fixed pivot its
+    intersection names (dc about D where the pole is a = d), else the vertex."""
+    if st.frm != con.pole:
+        return st.frm
+    step = next((s for s in con.steps if s.number == st.step), None)
+    if step is not None and step.kind == "intersection" and step.args:
+        return step.args[0].lower()
+    return st.frm
 
 
 def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:
@@ -742,7 +739,7 @@ def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:
     con = lay.con
     notes = []
     sc = lay.scale
-    for st, g in _geometry(lay):
+    for st, g in _geometry(lay, every=True):
         if st.step != s.number:
             continue
         if st.kind == "offset":

@@ -112,6 +112,39 @@ def choose(quantity: str, extent: tuple[float, float], vectors: list[float] = ()
     return large if large.mm(shortest) >= MIN_VECTOR_MM else small
 
 
+def round_down(x: float) -> float:
+    """The largest round scale value (1, 2, 2.5, 5 × 10ⁿ) ≤ ``x`` (0 for a value that is not
+    positive and finite)."""
+    if not (x > 0 and math.isfinite(x)):
+        return 0.0
+    n = math.floor(math.log10(x))
+    for k in (n + 1, n, n - 1):
+        for m in reversed(ROUND):
+            v = float(f"{m}e{k}")
+            if v <= x * (1 + 1e-12):
+                return v
+    return 0.0  # pragma: no cover
+
+
+#: the longest force of a force polygon is drawn this long (mm) ...
+FORCE_MM = 90.0
+#: ... or up to this long, so that its shortest force is drawn RULE_MM long
+MAX_FORCE_MM = 160.0
+#: the layout rule: no vector drawn shorter than this (mm) -- diagrams.inset.MIN_VECTOR_MM
+RULE_MM = 3.0
+
+
+def force_scale(big: float, small: float) -> float:
+    """The round force scale (N per cm) of a polygon whose longest force is ``big`` and
+    shortest ``small`` (N): the longest :data:`FORCE_MM` long, or longer, up to
+    :data:`MAX_FORCE_MM`, at the coarsest round scale drawing the shortest
+    :data:`RULE_MM` long (one still shorter is said in the legend, not drawn)."""
+    usual = round_up(big * 10.0 / FORCE_MM)
+    finest = round_up(big * 10.0 / MAX_FORCE_MM)
+    want = round_down(small * 10.0 / RULE_MM)
+    return min(usual, max(finest, want))
+
+
 def parse(text, quantity: str, *, file: str | None = None, where: str | None = None
           ) -> Scale:
     """Read a forced scale: '2 m/s', '1 cm = 2 m/s', '20 mm' (per cm of paper), with the
@@ -159,4 +192,4 @@ def parse_cli(items: list[str] | None) -> dict[str, Scale]:
 
 
 __all__ = ["Scale", "DiagramError", "ScaleError", "choose", "parse", "parse_cli", "make",
-           "round_up", "PAPER", "MIN_VECTOR_MM", "UNITS"]
+           "round_up", "round_down", "force_scale", "PAPER", "MIN_VECTOR_MM", "UNITS"]

@@ -453,7 +453,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             inputs.append(Polyline(tuple(_r(q) for q in pts[:-2]), style,
                                    cls=f"input-arc {sym}"))
             inputs.append(Arrow(_r(tail), _r(tip), style, tuple(_r(q) for q in head), _r(tail),
-                                role="input", title=f"{sym} {'CCW' if val > 0 else 'CW'}"))
+                                role="arc", title=f"{sym} {'CCW' if val > 0 else 'CW'}"))
             for q0, q1 in zip(pts, pts[1:]):
                 placer.hard(q0, q1, 0.5)
             placer.hard(tail, tip, 0.8)          # the arrow itself, head included

@@ -150,8 +150,8 @@ class _Writer:
             if it.shift != (0.0, 0.0):    # drawn beside a collinear vector (diagrams.crowd)
                 g = dwg.g(class_="arrow shifted",
                           transform=f"translate({_n(it.shift[0])},{_n(-it.shift[1])})")
-            else:
-                g = dwg.g(class_="arrow")
+            else:      # the head of an arc (an input ω, a couple): no vector's length
+                g = dwg.g(class_="arrow arc-head" if it.role == "arc" else "arrow")
             kw = _stroke_attrs(it.style, it.faded)
             kw.pop("fill")
             g.add(dwg.line(self.p(it.tail), self.p(it.shaft_end), class_="shaft", **kw))

@@ -20,13 +20,11 @@ This module imports neither shapely nor the diagrams.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
-
-import numpy as np
 
 from .contacts import wheel_of
 from .dyads.base import ARRAY_TWIN
+from .dyads.numeric import hypot_cols, namespace, where_scalar
 from .errors import UnsupportedError
 from .plan import Plan
 from .program import Expr, Line, Lit, Name, live
@@ -41,12 +39,7 @@ V, A = Diagram.VELOCITY, Diagram.ACCELERATION
 _FIELDS = ("at", "vector", "point", "direction")
 
 
-def _where(c, a, b):
-    return a if c else b
-
-
-def _hypot_cols(x, y):
-    return np.sqrt(x * x + y * y)
+_where, _hypot_cols = where_scalar, hypot_cols     # (the names jit reads)
 
 
 class _Fail(Exception):
@@ -63,10 +56,8 @@ class Source:
 
     x = Name("x")   # the driver's input (θ in rad or s in m)
 
-    # Names the generated code may call: cos, sin, atan2, degrees, sqrt, nan, where (math or
-    # numpy); ``hypot`` is the kernel's norm (√(x² + y²) over arrays), ``hypot_p`` a dyad
-    # locate's np.hypot (math.hypot over floats), so that positions over arrays are the
-    # kernel's to the last bit.
+    # Names the generated code may call: polygons.dyads.numeric.namespace (the same names a
+    # primitive's statement is evaluated in, so its locate is the program's to the last bit).
 
     def __init__(self, scene: Scene, sigma: dict, arrays: bool = False, meet=None,
                  instruments=None):
@@ -79,15 +70,7 @@ class Source:
         self.crossings: list = []      # (u × v, u · v, step) of every intersection
         self.lines: list[Line] = []     # the statements, typed (polygons.program)
         self.getters: list = []        # scene -> float, one per parameter k<i>
-        self.namespace: dict = ({"cos": np.cos, "sin": np.sin, "hypot": _hypot_cols,
-                                 "atan2": np.arctan2, "degrees": np.degrees, "where": np.where,
-                                 "sqrt": np.sqrt, "nan": np.nan, "hypot_p": np.hypot,
-                                 "_Fail": _Fail} if arrays else
-                                {"cos": math.cos, "sin": math.sin, "hypot": math.hypot,
-                                 "atan2": math.atan2, "degrees": math.degrees,
-                                 "where": _where, "sqrt": math.sqrt, "nan": math.nan,
-                                 "hypot_p": math.hypot,
-                                 "_Fail": _Fail})
+        self.namespace: dict = dict(namespace(arrays), _Fail=_Fail)
         self.fails: list = []          # ("dyad", dyad) | ("step", step, reason)
         self.placed: dict[str, tuple[str, str]] = {}
         self.sigma_of = sigma
@@ -445,7 +428,11 @@ class _Steps:
         self.vx[s.diagram][s.end] = pt
         unit = _unit_of(s.diagram)
         return dict(point=pt), None, angle, unit, (
-            ("angle", angle, "deg"), (f"{self.names.pole}{s.end}", ("hypot", pt), unit))
+            ("angle", angle, "deg"),
+            # from the fixed pivot the resultant is read about, as the book names it (dc
+            # about D where the pole is a = d), else from the pole
+            (f"{self.names.named(s.args[0]) if s.args else self.names.pole}{s.end}",
+             ("hypot", pt), unit))
 
     def omega_op(self, s):
         L, P, Q = s.args

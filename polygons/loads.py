@@ -25,7 +25,10 @@
 :func:`parse` reads them from ``Scene.extra`` (where :mod:`polygons.scene` keeps them raw) into
 frozen records; every problem is a :class:`~polygons.errors.SceneError` naming the key.  The
 bodies (links, slotted levers, slider blocks) and the joints between them come from the
-scene's topology.  ``TABLES`` declares every key this module accepts (:mod:`polygons.schema`).
+scene's topology.  ``TABLES`` declares every key this module accepts (:mod:`polygons.schema`;
+stated in :mod:`polygons.loadtables`), and :mod:`polygons.loadrun` reads how the analysis runs
+and what it is checked against ([dynamics], [flywheel], [efficiency], [[force_answers]]);
+this module reads the loads themselves.
 This module imports nothing above the scene layer (and not :mod:`polygons.scene` itself: the
 scene calls it), so the analysis in :mod:`polygons.forces` reads a finished model.
 """
@@ -36,173 +39,29 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Callable, Mapping
 
-from .errors import SceneError, UnitError, UnknownLabelError, UnsupportedError, show, suggest
-from .loadmodel import (EQUIVALENT_LINK, AppliedForce, AppliedTorque, Efficiency, Flywheel,
-                        ForceAnswer, Friction, Joint, Loads, MassItem, Spring, bodies_of,
-                        slot_contacts)
-from .loadeffort import EFFORT_KEY, parse_effort
+from .errors import SceneError, UnitError, UnknownLabelError, show, suggest
+from .loadeffort import parse_effort
+from .loadmodel import (EQUIVALENT_LINK, AppliedForce, AppliedTorque, Friction, Joint, Loads,
+                        MassItem, Spring, bodies_of, slot_contacts)
+# the tables' format and the analysis' settings, split out (re-exported: TABLES for the
+# reference, the defaults for the readers)
+from .loadrun import AnswerFields, answers as _answers, dynamics as _dynamics
+from .loadrun import efficiency as _efficiency, flywheel as _flywheel, is_crank as _is_crank
+from .loadtables import (DEFAULT_MODE, DEFAULT_STEPS, FORCE_TABLES, LOAD_TABLES,  # noqa: F401
+                         MAX_AFTER, MAX_RELEASE_STEPS, MODES, NO_GRAVITY, READS, TABLES)
+from .loadtables import keys_of as _keys
 from .model import BUILT, unhandled
 from .reader import Reader, record
-from .schema import Key, Table
 
 Vec = tuple[float, float]
-
-#: the scene tables this module reads
-FORCE_TABLES = ("masses", "forces", "torques", "springs", "gravity", "dynamics")
-#: a scene has a force analysis when it has one of these
-LOAD_TABLES = ("masses", "forces", "torques", "springs")
-MODES = ("kinetostatic", "torque-driven", "release")
-#: every table this module reads from ``Scene.extra``
-READS = FORCE_TABLES + ("flywheel", "efficiency", "force_answers")
-#: what an absent [gravity] and [dynamics] give
-NO_GRAVITY = (0.0, 0.0)
-DEFAULT_MODE = MODES[0]
-DEFAULT_STEPS = 200
-#: bounds of [dynamics]: RK4 steps per interval (each a solve, ~4 ms) and rotations reported
-MAX_RELEASE_STEPS, MAX_AFTER = 10_000, 20
-
-_Q = "quantity"
-TABLES: tuple[Table, ...] = (
-    Table("masses", "A mass: a link's own ([masses.BC]), a slider block's ([masses.P]) or a point "
-          "mass carried at a label (at = \"C\").", (
-              Key("mass", _Q, "the mass", "0.8 kg", "mass", required=True),
-              Key("at", "label", "a point mass at this label", "C"),
-              Key("on", "link", "the body carrying 'at' when the label joins two", "BC"),
-              Key("inertia", "string", "'rod' (m l²/12), 'disc' (+ radius), 'point' or a value "
-                  "about the centre of mass", "rod", default="rod"),
-              Key("radius", _Q, "radius of a disc (inertia = \"disc\")", "100 mm", "length"),
-              Key("radius_of_gyration", _Q, "I_G = m k²", "45 mm", "length"),
-              Key("centre", "string", "centre of mass: fraction of the link from its first "
-                  "label, or a distance", "0.5", default="0.5"),
-              Key("centre_left", _Q, "offset of the centre to the left of the link", "5 mm",
-                  "length", default="0 m"),
-              Key("free", "bool", "a disc turning freely on a frictionless pin", "true",
-                  default=False),
-              Key("spin", _Q, "the constant spin of a free disc", "40 rad/s",
-                  "angular_velocity", sign="CCW positive"),
-          ), many=True),
-    Table("gravity", "Gravity (absent: ignored, as most tutorials do).", (
-        Key("g", _Q, "gravitational acceleration", "9.81 m/s^2", "acceleration",
-            default="9.81 m/s^2"),
-        Key("direction", _Q, "direction of g", "-90 deg", "angle", default="-90 deg",
-            sign="CCW from +x"),
-        Key("enabled", "bool", "false switches gravity off", "true", default=True),
-    )),
-    Table("forces", "An applied force at a labelled point (keeps its direction).", (
-        Key("at", "label", "point of application", "P", required=True),
-        Key("on", "link", "the body carrying 'at' when the label joins two", "BC"),
-        Key("force", "array", "[Fx, Fy]", "[\"0 N\", \"20 N\"]", "force"),
-        Key("magnitude", _Q, "magnitude (with direction)", "20 N", "force"),
-        Key("direction", _Q, "direction of the force", "0 deg", "angle", sign="CCW from +x"),
-        Key("pressure", _Q, "pressure on a piston (× π bore²/4)", "1.2 MPa", "pressure"),
-        Key("bore", _Q, "piston diameter (with pressure)", "80 mm", "length"),
-        Key("diameter", _Q, "same as bore", "80 mm", "length"),
-        Key("back_pressure", _Q, "double-acting cylinder: the pressure on the other side of "
-            "the piston (it pushes back)", "70 kPa", "pressure"),
-        Key("rod", _Q, "diameter of the piston rod, on the back-pressure side unless "
-            "rod_side = 'front' (that side's area is the annulus π(D² − d²)/4)", "50 mm",
-            "length"),
-        Key("rod_side", "string", "'back' (default) or 'front': the side the piston rod is on",
-            "back", default="back"),
-        Key("resisting", "bool", "true: the force acts only while it opposes its point's motion "
-            "(a cutting force on the working stroke, none on the return)", "true",
-            default=False),
-    ), many=True),
-    Table("torques", "An applied couple on a link, or a constant friction torque at a pin.", (
-        Key("on", "link", "the link the couple acts on", "DB"),
-        Key("at", "label", "where the couple acts (a friction's pin)", "O"),
-        Key("torque", _Q, "applied couple (with sense)", "6 N m", "torque"),
-        Key("sense", "string", "'CW' or 'CCW'", "CW"),
-        Key("friction", _Q, "friction torque (a magnitude; opposes the relative rotation)",
-            "0.1 N m", "torque"),
-        Key("between", "array", "the links a friction acts between", "[\"AB\", \"BC\"]"),
-    ), many=True),
-    Table("springs", "A linear spring (between two points, or at a point along a direction) or a "
-          "torsional spring at a pin (the unit of stiffness says which).", (
-              Key("stiffness", _Q, "N/m (linear) or N m/rad (torsional)", "100 N/m",
-                  required=True),
-              Key("between", "array", "the two points a linear spring joins (or, torsional, "
-                  "the links)", "[\"S\", \"H\"]"),
-              Key("free_length", _Q, "free length of a spring between two points", "0.2 m",
-                  "length"),
-              Key("extension", _Q, "extension at this instant (negative: compressed)",
-                  "-40 mm", "length"),
-              Key("at", "label", "a spring at a point (or a torsional spring's pin)", "S"),
-              Key("on", "array", "the body carrying each end", "[\"BC\", \"\"]"),
-              Key("direction", _Q, "towards the far end, which keeps it parallel", "90 deg",
-                  "angle", sign="CCW from +x"),
-              Key("twist", _Q, "torsional: twist at this instant", "10 deg", "angle",
-                  default="0 deg", sign="CCW of the first link against the second"),
-          ), many=True),
-    Table("dynamics", "Which problem the force analysis solves.", (
-        Key("mode", "string", "'kinetostatic' (find the input torque), 'torque-driven' (find "
-            "the input's α) or 'release' (no motor)", "release", default="kinetostatic"),
-        Key("after", "array", f"release: rotations of the driver at which to report (at most "
-                              f"{MAX_AFTER})",
-            "[\"30 deg\"]", "angle"),
-        Key("steps", "integer", f"release: RK4 steps per interval, 4 .. {MAX_RELEASE_STEPS:,}",
-            "200", default=200),
-        EFFORT_KEY,
-    )),
-    Table("flywheel", "A flywheel on the crank shaft: its angular acceleration from the torque "
-          "surplus, α = (T − T_R)/I (kinetostatic: the crank's ω as given).", (
-              Key("mass", _Q, "mass of the flywheel (with radius_of_gyration)", "60 kg", "mass"),
-              Key("radius_of_gyration", _Q, "I = m k²", "600 mm", "length"),
-              Key("inertia", _Q, "or the moment of inertia itself", "21.6 kg m^2", "inertia"),
-              Key("power", _Q, "power taken off at the mean speed: T_R = P/ω", "20 kW",
-                  "power"),
-              Key("resisting_torque", _Q, "or the resisting torque T_R itself", "1590 N m",
-                  "torque"),
-          )),
-    Table("efficiency", "The mechanism's efficiency η: input torque T_in/η when the input "
-          "drives; output effort η × ideal; mechanical advantage η ω_in/ω_out.", (
-              Key("eta", _Q, "efficiency (a fraction or a percentage)", "80 %", "fraction",
-                  required=True),
-              Key("input_torque", _Q, "the torque applied to the crank driver (or "
-                  "input_force for a slider driver), for Tout_eta / Fout_eta", "20 N m",
-                  "torque"),
-              Key("input_force", _Q, "the force applied to a slider driver", "200 N", "force"),
-          )),
-    Table("force_answers", "Printed and exact answers of the force analysis (as [[answers]], "
-          "plus state and positive).", (
-              Key("quantity", "string", "e.g. 'Tin', 'Rx(O,OA)', 'Rx(B,AB) + Rx(A,OA)'", "Tin",
-                  required=True),
-              Key("unit", "string", "unit of the printed value", "N m", required=True),
-              Key("tutorial", "number", "the printed value", "6.03"),
-              Key("exact", "number", "the exact value", "6.029423"),
-              Key("mode", "string", "'abs' or 'signed'", "abs", default="abs"),
-              Key("sense", "string", "the printed sense word", "CW"),
-              Key("tolerance", _Q, "drawing tolerance", "3 %", "fraction"),
-              Key("slip", "bool", "the printed value is a known slip", "false", default=False),
-              Key("ref", "string", "key in the reference record", "T_in"),
-              Key("desc", "string", "what the answer is, in words", "input torque"),
-              Key("note", "string", "remark", ""),
-              Key("positive", "string", "'CCW' (default) or 'CW': the sense counted positive",
-                  "CW", default="CCW"),
-              Key("state", "string", "'release' or a rotation such as '30 deg'", "30 deg"),
-          ), array=True),
-)
-
 
 # ---------------------------------------------------------------- reading values
 _Values = Reader        # the scene tables' one reader (polygons.reader)
 
 
-def _keys(name: str) -> tuple[str, ...]:
-    return next(tuple(k.name for k in t.keys) for t in TABLES if t.name == name)
-
-
-def _is_crank(driver) -> bool:
-    return hasattr(driver, "pivot")
-
-
 def has_loads(extra: Mapping[str, Any]) -> bool:
     """True when the raw tables include masses, forces, torques or springs."""
     return any(k in extra for k in LOAD_TABLES)
-
-
-#: reads the fields every answer table shares (``scene.answer_fields`` bound to its reader)
-AnswerFields = Callable[..., dict]
 
 
 #: the kinds of body and pair the force analysis handles (polygons.model): not a collar
@@ -607,51 +466,6 @@ def _springs(ctx: _Context, raw) -> list[Spring]:
     return springs
 
 
-def _dynamics(r: _Values, scene, draw, active: bool) -> tuple[str, tuple[float, ...], int]:
-    file = r.file
-    r.table(draw, "dynamics", _keys("dynamics"))
-    mode = draw.get("mode", DEFAULT_MODE)
-    if mode not in MODES:
-        raise SceneError(f"mode must be one of {', '.join(MODES)}; got {mode!r}", file=file,
-                         where="dynamics.mode")
-    after_raw = draw.get("after", [])
-    if isinstance(after_raw, str):
-        after_raw = [after_raw]
-    if not isinstance(after_raw, list):
-        raise SceneError("after = [\"30 deg\"]: the rotations of the driver at which to report",
-                         file=file, where="dynamics.after")
-    if len(after_raw) > MAX_AFTER:
-        raise SceneError(f"{len(after_raw):,} rotations: at most {MAX_AFTER} are reported",
-                         file=file, where="dynamics.after")
-    after = tuple(abs(r.quantity(a, "angle", f"dynamics.after[{i}]"))
-                  for i, a in enumerate(after_raw))
-    if after and mode != "release":
-        raise SceneError("'after' is for mode = \"release\"", file=file, where="dynamics.after")
-    steps = draw.get("steps", DEFAULT_STEPS)
-    if (isinstance(steps, bool) or not isinstance(steps, int)
-            or not 4 <= steps <= MAX_RELEASE_STEPS):
-        raise SceneError(f"steps must be a whole number from 4 to {MAX_RELEASE_STEPS:,}, got "
-                         f"{show(steps)}", file=file, where="dynamics.steps")
-    if not active:
-        return mode, after, steps
-    drv = scene.driver
-    if mode in ("torque-driven", "release"):
-        if _is_crank(drv) and drv.alpha != 0.0:
-            raise SceneError(f"mode = {mode!r} finds the driver's angular acceleration from the "
-                             f"torques: remove driver.alpha", file=file, where="driver.alpha")
-        if not _is_crank(drv) and drv.acceleration != 0.0:
-            raise SceneError(f"mode = {mode!r} finds the driver's acceleration from the forces: "
-                             f"remove driver.acceleration", file=file,
-                             where="driver.acceleration")
-    if mode == "release" and not _is_crank(drv):
-        raise UnsupportedError("mode = \"release\" needs a crank as the driver (its angle is the "
-                               "coordinate)", file=file, where="dynamics.mode")
-    if "acceleration" not in scene.solve:
-        raise SceneError("forces need the acceleration polygon: remove 'solve' or write "
-                         "solve = [\"velocity\", \"acceleration\"]", file=file, where="solve")
-    return mode, after, steps
-
-
 def _pin_pair(ctx: _Context, spec, where) -> tuple[str, str | None]:
     """The two bodies a pin element (friction, torsional spring) acts between."""
     scene, members, file = ctx.scene, ctx.members, ctx.r.file
@@ -719,81 +533,3 @@ def _inertia(r: _Values, spec, mass, length, where, default) -> tuple[float, str
         return i, "given"
     raise SceneError(f"inertia must be 'rod', 'disc', 'point' or a value such as "
                      f"'0.002 kg m^2'; got {how!r}", file=r.file, where=where + ".inertia")
-
-
-def _flywheel(r: _Values, scene, raw, mode: str) -> Flywheel | None:
-    """I = m k² (or inertia); T_R = P/ω (or resisting_torque)."""
-    if raw is None:
-        return None
-    r.table(raw, "flywheel", _keys("flywheel"))
-    if not _is_crank(scene.driver):
-        raise SceneError("a flywheel turns with a crank driver", file=r.file, where="flywheel")
-    if mode != "kinetostatic":
-        raise SceneError("the flywheel's α = (T − T_R)/I is for mode = \"kinetostatic\" (the "
-                         "crank's ω as given)", file=r.file, where="flywheel")
-    if ("inertia" in raw) == ("mass" in raw or "radius_of_gyration" in raw):
-        raise SceneError("give mass + radius_of_gyration (I = m k²) or inertia", file=r.file,
-                         where="flywheel")
-    if "inertia" in raw:
-        inertia = r.quantity(raw["inertia"], "inertia", "flywheel.inertia")
-        how = "given"
-    else:
-        if "mass" not in raw or "radius_of_gyration" not in raw:
-            raise SceneError("I = m k² needs both mass and radius_of_gyration", file=r.file,
-                             where="flywheel")
-        m = r.quantity(raw["mass"], "mass", "flywheel.mass")
-        k = r.quantity(raw["radius_of_gyration"], "length", "flywheel.radius_of_gyration")
-        inertia, how = m * k * k, f"m k² = {m:.6g} × {k:.6g}²"
-    if inertia <= 0:
-        raise SceneError("the flywheel's moment of inertia must be positive", file=r.file,
-                         where="flywheel")
-    if ("power" in raw) == ("resisting_torque" in raw):
-        raise SceneError("give the power taken off (T_R = P/ω) or the resisting_torque",
-                         file=r.file, where="flywheel")
-    power = r.quantity(raw["power"], "power", "flywheel.power") if "power" in raw else None
-    tr = (r.quantity(raw["resisting_torque"], "torque", "flywheel.resisting_torque")
-          if "resisting_torque" in raw else None)
-    if power is not None and scene.driver.omega == 0.0:
-        raise SceneError("T_R = P/ω needs the crank turning (omega is 0)", file=r.file,
-                         where="flywheel.power")
-    return Flywheel(inertia, how, tr, power)
-
-
-def _efficiency(r: _Values, scene, raw) -> Efficiency | None:
-    if raw is None:
-        return None
-    r.table(raw, "efficiency", _keys("efficiency"), required=("eta",))
-    eta = r.quantity(raw["eta"], "fraction", "efficiency.eta")
-    if not 1e-6 <= eta <= 1.0:      # (an η of 1e-320 would make T_in/η infinite)
-        raise SceneError(f"an efficiency is a fraction from 1e-6 (0.0001 %) to 1 (100 %), got "
-                         f"{raw['eta']!r}", file=r.file, where="efficiency.eta")
-    crank = _is_crank(scene.driver)
-    key, dim = ("input_torque", "torque") if crank else ("input_force", "force")
-    wrong = "input_force" if crank else "input_torque"
-    if wrong in raw:
-        raise SceneError(f"the driver is a {'crank' if crank else 'slider'}: give {key}",
-                         file=r.file, where=f"efficiency.{wrong}")
-    effort = abs(r.quantity(raw[key], dim, f"efficiency.{key}")) if key in raw else None
-    return Efficiency(eta, effort)
-
-
-#: units a force answer may be stated in beyond polygons.units (answer_fields checks the rest)
-ANSWER_UNITS = ("-", "1")
-
-
-def _answers(r: _Values, raw, answer_fields: AnswerFields) -> tuple[ForceAnswer, ...]:
-    if not isinstance(raw, list):
-        raise SceneError("write force answers as [[force_answers]] tables", file=r.file,
-                         where="force_answers")
-    out = []
-    for i, spec in enumerate(raw):
-        where = f"force_answers[{i}]"
-        fields = answer_fields(spec, where, extra_keys=("positive", "state"),
-                               extra_units=ANSWER_UNITS)
-        positive = r.sense(spec.get("positive", "CCW"), where + ".positive")
-        state = spec.get("state")
-        if state is not None and not isinstance(state, str):
-            raise SceneError("state must be text ('release' or a rotation such as '30 deg')",
-                             file=r.file, where=where + ".state")
-        out.append(ForceAnswer(positive=positive, state=state, **fields))
-    return tuple(out)

@@ -52,7 +52,7 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
     if op in (Op.SLIDER_VELOCITY, Op.SLIDER_ACCELERATION):
         (X,) = s.args
         deg = math.degrees(scene.model.guide[X].line.angle)
-        return f"{f(t[0].value)} {t[0].unit} along the guide ({f(deg)}°)"
+        return f"{f(t[0].value)} {unit_text(t[0].unit)} along the guide ({f(deg)}°)"
     if op in (Op.SLIDE_VELOCITY, Op.SLIDE_ACCELERATION):
         A = s.args[0]
         val = t[0].value
@@ -60,11 +60,11 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
         pivot = slot.line.origin
         if slot.along_lever:                      # the sign is in the words, not the number
             ends = (pivot, slot.far) if val >= 0 else (slot.far, pivot)
-            return f"{f(abs(val))} {t[0].unit} (along {''.join(ends)})"
-        return (f"{f(abs(val))} {t[0].unit} ({'away from' if val >= 0 else 'towards'} "
-                f"{pivot})")
+            return f"{f(abs(val))} {unit_text(t[0].unit)} (along {''.join(ends)})"
+        return (f"{f(abs(val))} {unit_text(t[0].unit)} "
+                f"({'away from' if val >= 0 else 'towards'} {pivot})")
     if op is Op.IMAGE:
-        return f"{t[0].symbol} = {f(t[0].value)} {t[0].unit}"
+        return f"{t[0].symbol} = {f(t[0].value)} {unit_text(t[0].unit)}"
     return ""
 
 

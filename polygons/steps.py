@@ -97,7 +97,8 @@ class Step:
     number: int             # 1, 2, ... within its diagram (stage 1, 2, 3 ...)
     kind: Kind
     op: Op
-    args: tuple[str, ...]   # space labels / link names the operation uses
+    args: tuple[str, ...]   # space labels / link names the operation uses (an intersection:
+    #                         the fixed pivot its resultant is named from, if any: dc)
     draws: str              # what appears on paper: 'oa', 'c line', 'b', 'ω_BC'
     start: str | None       # polygon vertex the vector starts at / the line passes through
     end: str | None         # polygon vertex this step creates
@@ -139,6 +140,12 @@ class Vertices:
 
     def of(self, label: str) -> str:
         return self.pole if label in self.scene.ground else label.lower()
+
+    def named(self, label: str) -> str:
+        """The vertex of ``label`` as a book names it in words: a fixed point by its own
+        letter, one of the pole's names ('dc' for the velocity of C about the fixed D, where
+        the pole is 'a = d'), any other point as :meth:`of` does."""
+        return label.lower() if label in self.scene.ground else self.of(label)
 
     def fresh(self, label: str, diagram_taken: set[str], dash: bool = False) -> str:
         """A new vertex near ``label``'s, as the books name them: the end of a known component

@@ -93,6 +93,8 @@ OWN_EXACT_CHECK = {
     "khurmi-ex7.2": ("test_centres.py", "test_khurmi_exact_answers_are_the_closed_form_and_ours"),
     "new-crossing-slots": ("test_crossing.py",
                            "test_the_case_exact_answers_come_from_the_loop_solution"),
+    "new-slot-slider": ("test_slot_slider.py",
+                        "test_the_case_is_its_closed_form_and_its_answers_are_the_oracles"),
     "new-screw-slotted-arm": ("test_book_forms.py",
                               "test_the_screw_case_exact_answers_are_the_closed_form"),
     **{name: ("test_triad.py", "test_the_case_exact_answers_come_from_the_oracle")

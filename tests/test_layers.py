@@ -24,7 +24,7 @@ WHERE = {
     "polygons.cam_diagram": "interpreters", "polygons.conditions": "forces",
     "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
-    "polygons.loadeffort": "scene",
+    "polygons.loadeffort": "scene", "polygons.loadtables": "scene", "polygons.loadrun": "scene",
     # the mechanism model: the joint tables read once into bodies and pairs, the last step of
     # loading a scene (polygons.scene builds it; every layer above reads it)
     "polygons.model": "scene",
@@ -36,9 +36,11 @@ WHERE = {
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.harmonic": "interpreters",
     "polygons.sweep_store": "interpreters", "polygons.sweep_follow": "interpreters",
+    "polygons.sweep_range": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
+    "polygons.centres_links": "interpreters", "polygons.centres_velocity": "interpreters",
     "polygons.classic": "interpreters",
     "polygons.kennedy": "interpreters",
     "polygons.streams": "interpreters",
@@ -178,13 +180,11 @@ def test_each_group_names_a_force_polygon_the_construction_has():
 #: the scene's joint tables ([links], [sliders], [slots], [points], [crossing], [driver.slide])
 JOINT_TABLES = {"links", "sliders", "slots", "points", "crossing", "prescribed"}
 #: who still reads them outside the groups and the model, and why: the planner's topology
-#: (the groups' own helpers), mobility (a redundant link's stated length, varied by a batch),
-#: the batch (it writes varied tables) and the sweep's range of a slider driver; and — NOT
-#: DONE, to the model next — the exam's data table (exam.variants.data_rows, merged from the
-#: exams branch after the others were moved): the goal is at most four
-TABLE_READERS = {"polygons.topology", "polygons.mobility", "polygons.batch", "polygons.sweep",
-                 "polygons.exam.variants"}
-MAX_TABLE_READERS = 5          # the goal: 4 (issue 34), once exam.variants reads the model
+#: (the groups' own helpers), mobility (a redundant link's stated length, varied by a batch)
+#: and the batch (it writes varied tables); the exam's data table and the sweep's range of a
+#: slider driver read the model (issue 34's goal: at most four)
+TABLE_READERS = {"polygons.topology", "polygons.mobility", "polygons.batch"}
+MAX_TABLE_READERS = 3
 
 
 def _joint_table_readers() -> set[str]:

@@ -14,7 +14,9 @@ from polygons.codegen import Source
 from polygons.dyads.primitives import (PRIMITIVES, AlongLink, CircleCircle, CircleLine,
                                        Constructed, FixedLine, Guarded, LeverLine, Length,
                                        LineLine, LinesMeet, PinInSlot, Prescribed, RigidImage, RimPoint,
-                                       Rotation, SlotUnstated, Translation, WheelRim)
+                                       Rotation, SlotUnstated, Translation, WheelRim,
+                                       AssurPoint, PlateShape, Then, TriadClosure)
+from polygons.dyads.numeric import Stated
 
 class _Scene(NS):
     """A scene's tables, as the primitives read them (a weak reference allowed: memos)."""
@@ -28,7 +30,28 @@ SCENE = _Scene(links={"PX": NS(length=0.9), "QX": NS(length=0.7), "OA": NS(lengt
                   "A": NS(offset=0.0, length=None, far_length=0.8)}, prescribed={"X": NS(position=0.3)},
            equivalents=[NS(kind="rolling", driven=True, radius=0.2, rim=[("X", 0.5, 0.15)])],
            ground={"P": (0.0, 0.0)})
-POS = {"P": np.array([0.0, 0.0]), "Q": np.array([1.0, 0.2]), "A": np.array([0.3, 0.5])}
+POS = {"P": np.array([0.0, 0.0]), "Q": np.array([1.0, 0.2]), "A": np.array([0.3, 0.5]),
+       "D": np.array([1.2, 1.1])}
+
+
+def _triad_links():
+    """A class-III group on the outer points P, Q, A: corners X, C, Y, the plate XC carrying
+    Y ([points.Y]), its links' lengths read off one pose of it (X, C chosen, Y the plate's
+    point)."""
+    B, C = np.array([0.2, 0.6]), np.array([0.9, 0.7])
+    L = float(np.hypot(*(C - B)))
+    u = (C - B) / L
+    X = B + 0.4 * L * u + 0.15 * np.array([-u[1], u[0]])
+    SCENE.links.update(XC=NS(length=L), PX_=NS(length=float(np.hypot(*(B - POS["P"])))),
+                       QC=NS(length=float(np.hypot(*(C - POS["Q"])))),
+                       AY=NS(length=float(np.hypot(*(X - POS["A"])))))
+    SCENE.points["Y"] = NS(along=None, fraction=0.4, left=0.15)
+
+
+_triad_links()
+TRIAD = TriadClosure(("X", "C", "Y"), ("P", "Q", "A"),
+                     (Length("PX_"), Length("QC"), Length("AY")), PlateShape("Y", ("XC",)),
+                     ("X#bx", "X#by", "X#xx", "X#xy"))
 
 
 def generated(prim, sigma=1.0, x=0.7, label=None):
@@ -59,6 +82,10 @@ CASES = [
     Guarded(CircleLine("X", "A", Length("PX"), LeverLine("X", "P", "Q"), also=("X1",)),
             SlotUnstated("X")),
     PinInSlot("X", "A", "P", "F"),
+    TRIAD,
+    AssurPoint("X", "P", "A", "Q", "D"),
+    Then((CircleCircle("X", "P", Length("PX"), "Q", Length("QX")),
+          AssurPoint("X1", "P", "X", "Q", "A"))),
 ]
 
 
@@ -150,3 +177,48 @@ def test_the_groups_stated_in_primitives():
                  dyads.RPR):
         assert issubclass(kind, Constructed)
         assert "locate" not in vars(kind) and "source" not in vars(kind)
+
+
+def test_the_stated_primitives_have_no_second_statement():
+    """The class-III group's primitives are written once, as ``source``: ``locate`` is that
+    statement evaluated (polygons.dyads.numeric), not a second formula."""
+    for kind in (TriadClosure, AssurPoint, Then):
+        assert issubclass(kind, Stated) and "locate" not in vars(kind)
+    assert "source" in vars(dyads.Triad) and isinstance(
+        dyads.Triad("B", "C", "X", "P", "Q", "A", "PB", "QC", "AX", "BC", ("BC",), "S",
+                    True).construction, Then)
+
+
+def test_the_triads_closure_and_assur_point_meet_their_equations():
+    """TriadClosure: |PX|, |QC|, |AY| their links' lengths and Y the plate's point (each
+    closure of every()); AssurPoint: S on both lines produced."""
+    P, Q, A = POS["P"], POS["Q"], POS["A"]
+    closures = TRIAD.every(SCENE, POS)
+    assert len(closures) >= 2
+    for c in closures:
+        B, C, X = c["X"], c["C"], c["Y"]
+        for a, b, link in ((P, B, "PX_"), (Q, C, "QC"), (A, X, "AY"), (B, C, "XC")):
+            assert math.isclose(np.hypot(*(b - a)), SCENE.links[link].length, abs_tol=1e-12)
+        u = (C - B) / np.hypot(*(C - B))
+        assert math.isclose((X - B) @ u, 0.4 * SCENE.links["XC"].length, abs_tol=1e-12)
+        assert math.isclose(_cross(u, X - B), 0.15, abs_tol=1e-12)
+        ref = dict(zip(TRIAD.keys, (B[0], B[1], X[0], X[1])))
+        pts, m = TRIAD.locate(SCENE, POS, ref, 0.0)      # the closure nearest its own corners
+        assert m > 0 and max(np.max(np.abs(pts[k] - c[k])) for k in "XCY") <= 1e-12
+        S = AssurPoint("S", "P", "X", "Q", "C").locate(SCENE, {**POS, **c}, None, 0.0)[0]["S"]
+        assert abs(_cross(B - P, S - P)) <= 1e-12 and abs(_cross(C - Q, S - Q)) <= 1e-12
+
+
+def test_a_stated_primitive_over_a_sweep_is_itself_at_each_position():
+    """Over (2, N) positions the same statement runs on arrays (numpy's names, the closure
+    followed by triad_cols): each column its one-position value."""
+    xs = np.linspace(-0.02, 0.02, 5)
+    pos = {k: v.reshape(2, 1) + np.array([xs, 0.5 * xs]) for k, v in POS.items()}
+    for prim in CASES[-3:]:
+        sig = 1.0
+        pts, _ = prim.locate(SCENE, pos, sig, 0.3)
+        for i in range(len(xs)):
+            one = {k: v[:, i] for k, v in pos.items()}
+            got, _ = prim.locate(SCENE, one, sig, 0.3)
+            for k, v in got.items():
+                assert np.max(np.abs(pts[k][:, i] - v)) <= 1e-12, (type(prim).__name__, k, i)

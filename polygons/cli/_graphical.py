@@ -96,12 +96,13 @@ def polygons_lines(an, st) -> list[str]:
                 out.append(f"      known: {k.name} {_f(float(np.hypot(*k.force)))} N ∠"
                            f"{_deg(k.force):.2f}° on {k.body}{extra}")
             if k.couple:
-                out.append(f"      known: {k.name} couple {_f(k.couple)} N m (CCW) on "
-                           f"{k.body}")
+                out.append(f"      known: {k.name} couple {graphical.moment_words(k.couple)} "
+                           f"on {k.body}")
         for m in g.moments:
             out.append(f"      {m}")
         for f in g.normals:
-            out.append(f"      by moments: {f.name} = {_f(f.value)} N ({f.along})")
+            out.append(f"      by moments: {f.name} = {graphical.found_words(f)} "
+                       f"({f.along})")
         for f in g.closing:
             if f.how == "effort":
                 continue

@@ -13,6 +13,11 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
     """Steps for X from P (link ``LP``) and ``other`` = (Q, LQ) or None (X on a guide)."""
     V = b.names.of
     p, x, pole = V(P), V(X), b.names.pole
+    # the resultant named from the second link's fixed pivot when it has one ('dc' about the
+    # fixed D, as the book writes it; the pole is 'a = d')
+    # (the intersection's args: that pivot, read by the resultant's symbol)
+    fixed = (other[0],) if other is not None and other[0] in b.scene.ground else ()
+    about = b.names.named(fixed[0]) if fixed else pole
     C = Component
     if b.velocity:
         n1 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", p, None,
@@ -33,9 +38,9 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
                        "slider_line", f"v_{X}", f"v_{X} ∥ guide of {X}",
                        f"Through {pole} draw a line along the guide of {X}: the slider "
                        f"can only move along it.", component=C.RESULTANT)
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
+        b.add(Kind.INTERSECTION, Op.INTERSECT, fixed, x, None, x, "intersection", f"v_{X}",
               f"{x} = intersection of the two lines",
-              f"The two lines meet at {x}: {pole}{x} is the velocity of {X}.", (n1, n2),
+              f"The two lines meet at {x}: {about}{x} is the velocity of {X}.", (n1, n2),
               component=C.RESULTANT)
         b.add(Kind.MEASURE, Op.OMEGA, (LP, P, X), f"ω_{LP}", None, None, "angular_velocity",
               f"ω_{LP}", f"ω_{LP} = {p}{x} / {P}{X}",
@@ -44,9 +49,10 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
         if other is not None:
             Q, LQ = other
             b.add(Kind.MEASURE, Op.OMEGA, (LQ, Q, X), f"ω_{LQ}", None, None,
-                  "angular_velocity", f"ω_{LQ}", f"ω_{LQ} = {V(Q)}{x} / {Q}{X}",
+                  "angular_velocity", f"ω_{LQ}", f"ω_{LQ} = {b.names.named(Q)}{x} / {Q}{X}",
                   f"The angular velocity of {LQ} is its relative velocity divided "
-                  f"by its length.", component=C.RELATIVE, link=LQ, reads=f"{V(Q)}{x}")
+                  f"by its length.", component=C.RELATIVE, link=LQ,
+                  reads=f"{b.names.named(Q)}{x}")
         else:
             b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (X,), f"v_{X}", None, None, "slider",
                   f"v_{X} along guide", f"v_{X} = {pole}{x}",
@@ -84,9 +90,9 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
                    f"a_{X}", f"a_{X} ∥ guide of {X}",
                    f"Through {pole} draw a line along the guide of {X}: the slider's "
                    f"acceleration lies along it.", component=C.RESULTANT)
-    b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
+    b.add(Kind.INTERSECTION, Op.INTERSECT, fixed, x, None, x, "intersection", f"a_{X}",
           f"{x} = intersection of the two lines",
-          f"The lines meet at {x}: {pole}{x} is the acceleration of {X}.", (n1, n2),
+          f"The lines meet at {x}: {about}{x} is the acceleration of {X}.", (n1, n2),
           component=C.RESULTANT)
     b.add(Kind.MEASURE, Op.ALPHA, (LP, P, X), f"α_{LP}", None, None, "angular_acceleration",
           f"α_{LP}", f"α_{LP} = {x1}{x} / {P}{X}",

@@ -26,7 +26,15 @@ primitives:
 * :class:`PinInSlot` — a slotted lever's point under its placed pin, and its far end along
   the slot (RPR; a slot offset from the pivot too);
 * :class:`Guarded` — a primitive refused where a stated condition fails (a case not
-  modelled, which the group's ``why_not`` names).
+  modelled, which the group's ``why_not`` names);
+* :class:`TriadClosure` — the corners of a class-III group's plate (:class:`PlateShape`),
+  each on a link to a placed point, the closure nearest a reference
+  (:mod:`~polygons.dyads.triad_math`);
+* :class:`AssurPoint` — where two links' lines produced meet (NaN where parallel);
+* :class:`Then` — primitives in order (the triad: its closure, then S).
+
+The last three are written once, as ``source``: their ``locate`` is that statement evaluated
+(:mod:`polygons.dyads.numeric`), the same formulas term for term.
 
 A line operand is fixed (:class:`FixedLine`) or a lever's slot (:class:`LeverLine`).
 """
@@ -40,6 +48,8 @@ import numpy as np
 from ..theorems import perp
 from .base import (as_col, circle_circle, circle_circle_scalar, circle_line, circle_line_scalar,
                    end_margin_cols, end_margin_scalar, size_of)
+from .numeric import Numeric, Stated
+from .triad_math import all_corners, triad_scalar
 
 
 # ---------------------------------------------------------------- operands
@@ -536,9 +546,123 @@ class Guarded:
         return _check(g, g.let("where({} > 0.0, {}, -1.0)", ok, m), check)
 
 
+# ---------------------------------------------------------------- stated once: the class-III group
+# These are written once, as ``source``; their ``locate`` is that statement evaluated
+# (:class:`~polygons.dyads.numeric.Stated`): numpy and the generated program run the same
+# formulas term for term.
+@dataclass(frozen=True)
+class PlateShape:
+    """A triad's plate in its own frame, B = (0, 0): C = (L, 0), X = (ξ, η) — a link BC
+    carrying the point X ([points.X]: ξ = along or fraction · L, η = left), or a triangle of
+    links BC, BX, CX (ξ = (L² + |BX|² − |CX|²)/2L, η = √(|BX|² − ξ²), its mirror image a
+    closure too: ``mirror``)."""
+    x: str
+    links: tuple[str, ...]        # (the plate link) or (BC, BX, CX)
+
+    @property
+    def mirror(self) -> bool:
+        return len(self.links) == 3
+
+    def value(self, scene) -> tuple:
+        """(L, ξ, η)."""
+        if not self.mirror:
+            L = scene.links[self.links[0]].length
+            bp = scene.points[self.x]
+            along = bp.along if bp.along is not None else bp.fraction * L
+            return L, along, bp.left
+        lbc, lbx, lcx = (scene.links[n].length for n in self.links)
+        xi = (lbc * lbc + lbx * lbx - lcx * lcx) / (2.0 * lbc)
+        return lbc, xi, np.sqrt(np.maximum(lbx * lbx - xi * xi, 0.0))   # (batch: arrays)
+
+    def params(self, g) -> tuple:
+        return tuple(g.param(lambda s, i=i: self.value(s)[i]) for i in range(3))
+
+
+@dataclass(frozen=True)
+class TriadClosure(Stated):
+    """The corners B, C, X of a rigid plate (:class:`PlateShape`) each on a link of stated
+    length to a placed point: |AB| = a, |DC| = d, |EX| = e — the closure nearest the
+    reference corners kept under ``keys`` (B's and X's coordinates), by
+    :func:`~polygons.dyads.triad_math.triad_scalar` (the real roots of a polynomial of
+    degree ≤ 6, polished by Newton; over a sweep its array twin follows the closure by
+    continuation); the margin the construction's conditioning (−1: it cannot close)."""
+    corners: tuple[str, str, str]              # B, C, X
+    outer: tuple[str, str, str]                # A, D, E
+    lengths: tuple[Length, Length, Length]     # AB, DC, EX
+    plate: PlateShape
+    keys: tuple[str, str, str, str]            # where the reference corners are kept
+
+    @property
+    def x(self) -> str:
+        return self.corners[0]
+
+    def operands(self, g) -> tuple:
+        """(ax, ay, a, dx, dy, d, ex, ey, e, L, ξ, η, mirror): the group's numbers, in the
+        order :mod:`~polygons.dyads.triad_math` takes them."""
+        out = []
+        for o, ln in zip(self.outer, self.lengths):
+            out += [*g.pos(o), ln.param(g)]
+        return (*out, *self.plate.params(g), "1.0" if self.plate.mirror else "0.0")
+
+    def every(self, scene, pos) -> list[dict]:
+        """Every closure at the positions ``pos`` (one position): {B, C, X} each."""
+        g = Numeric(scene, pos, None, 0.0, False)
+        p = tuple(float(v) for v in self.operands(g))
+        return [dict(zip(self.corners, map(np.array, c))) for c in all_corners(p, size_of(scene))]
+
+    def source(self, g, check=True):
+        refs = [g.sigma(k) for k in self.keys]
+        size = g.param(lambda s: size_of(s))
+        *xy, m = g.call(triad_scalar, *self.operands(g), *refs, size, n=7)
+        _check(g, m, check)
+        for k, label in enumerate(self.corners):
+            g.place(label, xy[2 * k], xy[2 * k + 1])
+        return m
+
+
+@dataclass(frozen=True)
+class AssurPoint(Stated):
+    """S where the lines O₁P₁ and O₂P₂ produced meet (Assur's auxiliary point of a triad):
+    S = O₁ + t u, u = P₁ − O₁, w = P₂ − O₂, t = ((O₂ − O₁) × w) / (u × w); NaN where they
+    are parallel (S at infinity: a point of the construction, not a failure of the group —
+    no margin)."""
+    x: str
+    o1: str
+    p1: str
+    o2: str
+    p2: str
+
+    def source(self, g, check=True):
+        (ax, ay), (bx, by) = g.pos(self.o1), g.pos(self.p1)
+        (dx, dy), (cx, cy) = g.pos(self.o2), g.pos(self.p2)
+        ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
+        wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
+        den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
+        safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
+                     g.e("({} if {} != 0.0 else nan)", den, den))
+        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", dx, ax, wy, dy, ay, wx, safe)
+        g.place(self.x, g.let("{} + {} * {}", ax, t, ux), g.let("{} + {} * {}", ay, t, uy))
+        return None
+
+
+@dataclass(frozen=True)
+class Then(Stated):
+    """``steps`` in order, each placing its points from those before; the margin the first
+    step's (the ones after it place construction points that cannot fail)."""
+    steps: tuple
+
+    @property
+    def x(self) -> str:
+        return self.steps[0].x
+
+    def source(self, g, check=True):
+        margins = [s.source(g, check) for s in self.steps]
+        return margins[0]
+
+
 #: every primitive (a group's ``construction`` is one of these)
 PRIMITIVES = (CircleCircle, CircleLine, Rotation, Translation, LineLine, RigidImage,
-              LinesMeet, AlongLink, RimPoint, PinInSlot, Guarded)
+              LinesMeet, AlongLink, RimPoint, PinInSlot, Guarded, TriadClosure, AssurPoint, Then)
 
 
 class Constructed:
@@ -556,4 +680,5 @@ class Constructed:
 
 __all__ = ["Length", "FixedLine", "LeverLine", "SlotUnstated", "Prescribed", "WheelRim",
            "CircleCircle", "CircleLine", "Rotation", "Translation", "LineLine", "RigidImage",
-           "LinesMeet", "AlongLink", "RimPoint", "PinInSlot", "Guarded", "PRIMITIVES", "Constructed"]
+           "LinesMeet", "AlongLink", "RimPoint", "PinInSlot", "Guarded", "PlateShape",
+           "TriadClosure", "AssurPoint", "Then", "PRIMITIVES", "Constructed"]

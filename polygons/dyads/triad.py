@@ -28,13 +28,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
 from . import image
-from .base import size_of
-from .triad_math import triad_cols, triad_scalar
+from .primitives import AssurPoint, Length, PlateShape, Then, TriadClosure
 
 
 @dataclass(frozen=True)
@@ -131,104 +131,52 @@ class Triad:
         return (f"{self.b}#bx", f"{self.b}#by", f"{self.b}#xx", f"{self.b}#xy")
 
     # ------------------------------------------------------------ geometry
+    @cached_property
+    def construction(self) -> Then:
+        """Its position, stated once (:mod:`polygons.dyads.primitives`): the corners B, C, X
+        by the closure nearest the one kept (:class:`TriadClosure`), then Assur's point S
+        where the pair of links :attr:`roles` names meet (:class:`AssurPoint`).  ``source``
+        is this statement and ``locate`` its evaluation: the staged solve, the sweeps and
+        the generated program run the same formulas."""
+        (p1, o1, _), (p2, o2, _), _ = self.roles
+        plate = PlateShape(self.x, (self.plate,) if self.ternary else self.plate_links)
+        closure = TriadClosure((self.b, self.c, self.x), (self.ob, self.oc, self.ox),
+                               (Length(self.link_b), Length(self.link_c), Length(self.link_x)),
+                               plate, self.sigma_keys)
+        return Then((closure, AssurPoint(self.s, o1, p1, o2, p2)))
+
     def shape(self, scene) -> tuple[float, float, float]:
         """The plate in its own frame: C = (L, 0), X = (ξ, η) from B."""
-        if self.ternary:
-            L = scene.links[self.plate].length
-            bp = scene.points[self.x]
-            along = bp.along if bp.along is not None else bp.fraction * L
-            return L, along, bp.left
-        lbc, lbx, lcx = (scene.links[n].length for n in self.plate_links)
-        xi = (lbc * lbc + lbx * lbx - lcx * lcx) / (2.0 * lbc)
-        return lbc, xi, np.sqrt(np.maximum(lbx * lbx - xi * xi, 0.0))   # (batch: arrays)
-
-    def _params(self, scene, pos):
-        L, xi, eta = self.shape(scene)
-        (ax, ay), (dx, dy), (ex, ey) = (pos[k] for k in (self.ob, self.oc, self.ox))
-        lk = scene.links
-        return (ax, ay, lk[self.link_b].length, dx, dy, lk[self.link_c].length, ex, ey,
-                lk[self.link_x].length, L, xi, eta, 0.0 if self.ternary else 1.0)
+        return self.construction.steps[0].plate.value(scene)
 
     def closures(self, scene, pos) -> list[dict]:
         """Every closure at the positions ``pos``: {B, C, X, S} each."""
-        from .triad_math import all_corners
-        p = tuple(float(v) for v in self._params(scene, pos))
+        closure, assur = self.construction.steps
         out = []
-        for B, C, X in all_corners(p, size_of(scene)):
-            pts = {self.b: np.array(B), self.c: np.array(C), self.x: np.array(X)}
-            pts[self.s] = self._assur(pos, pts)
+        for pts in closure.every(scene, pos):
+            pts.update(assur.locate(scene, {**pos, **pts}, None, 0.0)[0])
             out.append(pts)
         return out
-
-    def _assur(self, pos, pts):
-        """S = A + t (B − A) on CD produced: t = ((D − A) × (C − D)) / ((B − A) × (C − D))
-        (with the pair of links :attr:`roles` names)."""
-        (p1, o1, _), (p2, o2, _), _ = self.roles
-        a, d = pos[o1], pos[o2]
-        u, w = pts[p1] - a, pts[p2] - d
-        den = u[0] * w[1] - u[1] * w[0]
-        q = d - a
-        with np.errstate(all="ignore"):
-            t = (q[0] * w[1] - q[1] * w[0]) / np.where(den != 0.0, den, np.nan)
-        return a + t * u
 
     def locate(self, scene, pos, sigma, x):
         """The closure nearest the reference ``sigma`` ({key: value} of :attr:`sigma_keys`;
         None: the first closure), over one position or (2, N) arrays (continuation)."""
-        p = self._params(scene, pos)
-        ref = [sigma[k] for k in self.sigma_keys] if sigma else None
-        size = size_of(scene)
-        if np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1 \
-                and np.ndim(pos[self.ox]) == 1:
-            if ref is None:
-                cands = self.closures(scene, pos)
-                if not cands:
-                    return self._nan(pos), -1.0
-                B, X = cands[0][self.b], cands[0][self.x]
-                ref = [B[0], B[1], X[0], X[1]]
-            r = triad_scalar(*(float(v) for v in p), *ref, size)
-        else:
-            r = triad_cols(*p, *(ref or [0.0] * 4), size)
-        pts = {self.b: np.array([r[0], r[1]]), self.c: np.array([r[2], r[3]]),
-               self.x: np.array([r[4], r[5]])}
-        pts[self.s] = self._assur(pos, pts)
-        return pts, r[6]
+        if not sigma:
+            one = all(np.ndim(pos[k]) == 1 for k in self.needs)
+            cands = self.closures(scene, pos) if one else None
+            if one and not cands:
+                return self._nan(pos), -1.0
+            B, X = (cands[0][self.b], cands[0][self.x]) if one else ((0.0, 0.0), (0.0, 0.0))
+            sigma = dict(zip(self.sigma_keys, (B[0], B[1], X[0], X[1])))
+        return self.construction.locate(scene, pos, sigma, x)
 
     def _nan(self, pos):
         return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
                 for k in self.placed}
 
     def source(self, g) -> None:
-        """:meth:`locate` as generated code: every closure by triad_math (its array twin
-        follows the closure through a sweep), the one nearest the assembly's; then S."""
-        (ax, ay), (dx, dy), (ex, ey) = (g.pos(k) for k in (self.ob, self.oc, self.ox))
-        lb = g.param(lambda s: s.links[self.link_b].length)
-        lc = g.param(lambda s: s.links[self.link_c].length)
-        lx = g.param(lambda s: s.links[self.link_x].length)
-        L = g.param(lambda s: self.shape(s)[0])
-        xi = g.param(lambda s: self.shape(s)[1])
-        eta = g.param(lambda s: self.shape(s)[2])
-        refs = [g.sigma(k) for k in self.sigma_keys]
-        size = g.param(lambda s: size_of(s))
-        bx, by, cx, cy, xx, xy, m = g.call(
-            triad_scalar, ax, ay, lb, dx, dy, lc, ex, ey, lx, L, xi, eta,
-            "0.0" if self.ternary else "1.0", *refs, size, n=7)
-        g.margin(m)
-        g.place(self.b, bx, by)
-        g.place(self.c, cx, cy)
-        g.place(self.x, xx, xy)
-        corner = {self.b: (bx, by), self.c: (cx, cy), self.x: (xx, xy)}
-        outer = {self.b: (ax, ay), self.c: (dx, dy), self.x: (ex, ey)}
-        (p1, _, _), (p2, _, _), _ = self.roles
-        (bx, by), (ax, ay) = corner[p1], outer[p1]
-        (cx, cy), (dx, dy) = corner[p2], outer[p2]
-        ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
-        wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
-        den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
-        safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
-                     g.e("({} if {} != 0.0 else nan)", den, den))
-        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", dx, ax, wy, dy, ay, wx, safe)
-        g.place(self.s, g.let("{} + {} * {}", ax, t, ux), g.let("{} + {} * {}", ay, t, uy))
+        """:meth:`locate`'s statement in the generated program: the same primitives."""
+        self.construction.source(g)
 
     def why_not(self, scene, pos) -> str:
         return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c}, "

@@ -40,6 +40,10 @@ from .base import size_of
 from .triad import Triad, _aux_label, _plates
 from .triad_slider_math import all_corners, triad_slider_cols, triad_slider_scalar
 
+#: the module registers itself (:mod:`polygons.dyads`): a group of a higher class, tried when
+#: no dyad can be placed, after the three-link triad
+ROLE = "group"
+
 
 @dataclass(frozen=True)
 class TriadSlider:
@@ -73,7 +77,8 @@ class TriadSlider:
     #: no ``force_polygon``: the graphical force polygon of this group is not written, so
     #: :func:`polygons.forces.graphical.groups_of` refuses it in one line, in these words
     #: (Newton–Euler and Zhukovsky's lever solve it)
-    kind_words = "TriadSlider (a class-III group with a slider on a fixed guide at a corner)"
+    words = ("a class-III group with a slider on a fixed guide at a corner (two links and "
+             "a block)")
 
     def auxiliary_points(self):
         """(S, (A, B), (D, C)): Assur's point S where AB and DC produced meet; none drawn when

@@ -184,26 +184,29 @@ def data_rows(scene: Scene) -> tuple[tuple[str, str], ...]:
     links, the closure chosen and the driver — so that a question can be answered without
     its picture (x to the right, y up; angles counter-clockwise from +x)."""
     rows: list[tuple[str, str]] = []
+    model = scene.model                 # the joint tables as read once (polygons.model)
     for label, (x, y) in scene.ground.items():
         rows.append((f"fixed point {label}", f"at x = {_mm(x)}, y = {_mm(y)}"))
-    for name, link in scene.links.items():
+    for link in model.links():
         if link.length is not None:
-            rows.append((f"link {name}", f"{link.a}{link.b} = {_mm(link.length)}"))
-    for label, g in scene.sliders.items():
-        words_ = (f"slides on a straight fixed guide through x = {_mm(g.through[0])}, "
-                  f"y = {_mm(g.through[1])} at {_deg(g.angle)} from +x")
-        if g.pin is not None and g.slot_angle is not None:
-            words_ += f"; {g.pin} slides in its straight slot at {_deg(g.slot_angle)} from +x"
+            rows.append((f"link {link.name}", f"{link.a}{link.b} = {_mm(link.length)}"))
+    yoke_pins = {s.carrier: s for s in model.yoke_slots()}
+    for label, g in model.guide.items():
+        words_ = (f"slides on a straight fixed guide through x = {_mm(g.line.through[0])}, "
+                  f"y = {_mm(g.line.through[1])} at {_deg(g.line.angle)} from +x")
+        pin = yoke_pins.get(label)
+        if pin is not None and pin.line.angle is not None:
+            words_ += f"; {pin.at} slides in its straight slot at {_deg(pin.line.angle)} from +x"
         rows.append((f"slider {label}", words_))
-    for pin, slot in scene.slots.items():
-        where = f"the slot of link {slot.lever}, which turns about {slot.pivot}"
-        if slot.offset:
-            where += f" (the slot line {_mm(abs(slot.offset))} to the " \
-                     f"{'left' if slot.offset > 0 else 'right'} of the lever's line)"
+    for pin, slot in model.slot.items():
+        where = f"the slot of link {slot.carrier}, which turns about {slot.line.origin}"
+        if slot.line.offset:
+            where += f" (the slot line {_mm(abs(slot.line.offset))} to the " \
+                     f"{'left' if slot.line.offset > 0 else 'right'} of the lever's line)"
         rows.append((f"pin {pin}", f"slides in {where}; {slot.coincident} is the point of "
                                    f"the lever under {pin}"))
-    for label, bp in scene.points.items():
-        link = scene.links.get(bp.link)
+    for label, bp in model.points.items():
+        link = model.link(bp.link)
         ends = (link.a, link.b) if link is not None else ("its first end", "its second end")
         along = (_mm(bp.along) if bp.along is not None
                  else f"{_g(bp.fraction or 0.0)} of the way")
@@ -223,8 +226,9 @@ def data_rows(scene: Scene) -> tuple[tuple[str, str], ...]:
                      f"{_g(abs(alpha))} rad/s² {'CCW' if alpha > 0 else 'CW' if alpha else ''}"
                      .rstrip()))
     else:
-        g = scene.sliders.get(drv.point)
-        way = f"+ towards {_deg(g.angle)} from +x" if g is not None else "+ along its guide"
+        g = model.guide.get(drv.point)
+        way = (f"+ towards {_deg(g.line.angle)} from +x" if g is not None
+               else "+ along its guide")
         if drv.rod_rate is not None:
             rod, w, al = drv.rod_rate
             rows.append((f"driving slider {drv.point}", f"at {_mm(drv.position)} along its "
@@ -239,8 +243,8 @@ def data_rows(scene: Scene) -> tuple[tuple[str, str], ...]:
                          f"at {_mm(drv.position)} along its guide ({way}) from its through "
                          f"point; velocity {_g(drv.velocity)} m/s, acceleration "
                          f"{_g(drv.acceleration)} m/s² (signed the same way)"))
-    other = [k for k, v in (("crossing slots", scene.crossing), ("prescribed slides",
-                                                                  scene.prescribed),
+    other = [k for k, v in (("crossing slots", model.crossings()),
+                            ("prescribed slides", model.prescribed),
                             ("cams or curved slots", scene.equivalents)) if v]
     if other:
         rows.append(("also", "; ".join(other) + " (see the scene file)"))
@@ -294,7 +298,7 @@ def pose_check(scene: Scene, sp: ExamSpec, asked: tuple[str, ...]) -> tuple[floa
     x0 = float(driver_input(scene))
     turn = math.radians(sp.pose_margin_deg)
     if not hasattr(scene.driver, "pivot"):
-        turn *= max((ln.length or 0.0 for ln in scene.links.values()), default=0.0)
+        turn *= max((ln.length or 0.0 for ln in scene.model.links()), default=0.0)
     with np.errstate(all="ignore"):         # the pose first: positions only (cheap)
         m0 = float(evaluate(prog, np.array([x0]), rates=False)["margin"][0])
     closure = 0.0 if not math.isfinite(m0) or m0 < 0 else math.degrees(math.asin(min(m0, 1.0)))
@@ -440,7 +444,7 @@ def _order(sp: ExamSpec, rng: random.Random, limit: int):
 
 def estimate_seconds(scene: Scene, draws: int) -> float:
     """The worst-case time of ``draws`` draws of ``scene`` by the cost model above."""
-    size = len(scene.labels) + len(scene.links)
+    size = len(scene.labels) + len(scene.model.links())
     return draws * (DRAW_S_BASE + DRAW_S_PER_POINT * size)
 
 

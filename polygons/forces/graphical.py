@@ -46,6 +46,7 @@ naming the kind (:data:`HANDLES`; a group whose kind names no :data:`POLYGONS` e
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from types import MappingProxyType
 
@@ -155,7 +156,8 @@ def groups_of(scene):
         if kind is None:                 # no body of its own (a point on a placed link)
             continue
         if kind is _MISSING or kind not in POLYGONS:
-            raise _refuse(f"a group of kind {getattr(d, 'kind_words', type(d).__name__)}",
+            # named in the group's own words (``words``) where it gives them
+            raise _refuse(getattr(d, "words", None) or f"a group of kind {type(d).__name__}",
                           "placing " + ", ".join(d.placed), file)
         out.append((kind, d, tuple(d.force_bodies())))
     return out
@@ -269,8 +271,39 @@ def _M(ks, about) -> float:
                 for k in ks), 0.0)
 
 
+def moment_words(m: float) -> str:
+    """A moment as a book writes it: its magnitude and its sense ('157.76 N m CW'), never a
+    signed number with '(CCW)' after it."""
+    if abs(m) < 1e-12:
+        return "0 N m"
+    return f"{abs(m):.6g} N m {'CCW' if m > 0 else 'CW'}"
+
+
+def sense_words(force) -> str:
+    """The sense of a force in words, with its angle: 'down and to the left (∠213.4°)'."""
+    deg = math.degrees(math.atan2(float(force[1]), float(force[0]))) % 360.0
+    names = ("to the right", "up and to the right", "up", "up and to the left",
+             "to the left", "down and to the left", "down", "down and to the right")
+    return f"{names[int(((deg + 22.5) % 360.0) // 45.0)]} (∠{deg:.1f}°)"
+
+
+def found_words(f) -> str:
+    """A force found by moments: its magnitude and its sense in words ('27.46 N, down and to
+    the left (∠213.4°)'), not the signed value along the normal chosen."""
+    if abs(f.value) < 1e-12:
+        return "0 N"
+    return f"{abs(f.value):.6g} N, {sense_words(f.force)}"
+
+
+def balance_words(known: float, effort: float) -> str:
+    """The input torque's moment equation written as a book would: 'T − 157.76 N m = 0,
+    T = 157.76 N m CCW' (``known``: the known forces' moment about the pivot, CCW +)."""
+    sign = "−" if known < 0 else "+"
+    return f"T {sign} {abs(known):.6g} N m = 0, T = {moment_words(effort)}"
+
+
 def _words(body, about, m):
-    return f"moments about {about} of {body}'s known forces: {m + 0.0:.6g} N m (CCW)"
+    return f"moments about {about} of {body}'s known forces: {moment_words(m)}"
 
 
 def _unit(r) -> tuple[np.ndarray, float]:
@@ -363,7 +396,7 @@ def _rrp(b: _Board, gi, d, bodies, ks, allk) -> Group:
     reac = (Found(f"R_{d.x} on slider {blk}", blk, d.x, *_unit(r), "reaction"),)
     return Group(gi + 1, "RRP", f"group {gi + 1}: dyad {link}, slider {blk} (RRP, "
                  f"pins {d.p}, {d.x}, guide)", bodies, allk, (t1,), (nn, n1), reac,
-                 (_words(link, d.x, m1), f"the guide couple on {blk}: {couple:.6g} N m"))
+                 (_words(link, d.x, m1), f"the guide couple on {blk}: {moment_words(couple)}"))
 
 
 def _rpr(b: _Board, gi, d, bodies, ks, allk) -> Group:
@@ -393,8 +426,8 @@ def _rpr(b: _Board, gi, d, bodies, ks, allk) -> Group:
                  f"block {d.pin} in its slot (RPR, pins {d.pin}, {d.pivot})",
                  bodies, allk, (nn,), (fo,), (ra,),
                  (f"moments about {d.pivot} of {lever}'s known forces: "
-                  f"{m + 0.0:.6g} N m (CCW); the slot's force at {d.pin} has arm "
-                  f"{arm * 1e3 + 0.0:.6g} mm: N = {nval + 0.0:.6g} N",))
+                  f"{moment_words(m)}; the slot's force at {d.pin} has arm "
+                  f"{arm * 1e3 + 0.0:.6g} mm: N = {abs(nval):.6g} N",))
 
 
 def _moving_guide(b: _Board, gi, d, bodies, ks, allk) -> Group:
@@ -443,7 +476,7 @@ def _rpp(b: _Board, gi, d, bodies, ks, allk) -> Group:
     return Group(gi + 1, "RPP", f"group {gi + 1}: the yoke {yoke} and the block "
                  f"{d.pin} in its slot (RPP, Scotch yoke)", bodies, allk, (),
                  (nsl, nn), (ra,),
-                 (f"the guide couple on {yoke}: {couple:.6g} N m (moments about "
+                 (f"the guide couple on {yoke}: {moment_words(couple)} (moments about "
                   f"{yoke})",))
 
 
@@ -459,8 +492,7 @@ def _crank(b: _Board, gi, d, bodies, ks, allk) -> Group:
     te = Found(f"T on {body}", body, d.pivot, np.zeros(2), effort, "effort")
     return Group(gi + 1, "crank", f"group {gi + 1}: the crank {body} (driver)",
                  bodies, allk, (), (fo,), (te,),
-                 (f"moments about {d.pivot}: T + ({_M(ks[body], o) + 0.0:.6g} N m) "
-                  f"= 0, T = {effort + 0.0:.6g} N m (CCW)",))
+                 (f"moments about {d.pivot}: {balance_words(_M(ks[body], o), effort)}",))
 
 
 def _slider_driver(b: _Board, gi, d, bodies, ks, allk) -> Group:
@@ -477,7 +509,7 @@ def _slider_driver(b: _Board, gi, d, bodies, ks, allk) -> Group:
     nn = Found(f"N_{blk} (guide)", blk, blk, ng, nval, "polygon")
     return Group(gi + 1, "slider driver", f"group {gi + 1}: the slider {blk} (driver)",
                  bodies, allk, (), (fin, nn), (),
-                 (f"the guide couple on {blk}: {couple:.6g} N m",))
+                 (f"the guide couple on {blk}: {moment_words(couple)}",))
 
 
 def _triad_group(b: _Board, gi, d, bodies, ks, allk) -> Group:
@@ -536,9 +568,9 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints) -> Group:
         reac += members
         joints += js
     sname = f"S ({legs[i][0]} × {legs[j][0]})"
-    moments = tuple(f"moments about {c} of {link}'s known forces: {ms[q] + 0.0:.6g} N m (CCW)"
+    moments = tuple(f"moments about {c} of {link}'s known forces: {moment_words(ms[q])}"
                     for q, (link, o, c) in enumerate(legs)) + (
-        f"moments about the Assur point {sname}: known {mtot + 0.0:.6g} N m, "
+        f"moments about the Assur point {sname}: known {moment_words(mtot)}, "
         f"{fn[k].name} arm {arm * 1e3 + 0.0:.6g} mm: {ak + 0.0:.6g} N",) + moments_truss
     plate = d.plate if d.ternary else "the triangle " + ", ".join(d.plate_links)
     return Group(gi + 1, "triad", f"group {gi + 1}: the triad (class III) plate {plate}, "
