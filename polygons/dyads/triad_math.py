@@ -496,27 +496,40 @@ def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rx
     times the last step's motion.  Where the followed closure is lost (it met another and both vanished) the
     positions beyond are NaN and the margin −1: the limit of travel."""
     arrs = [np.asarray(v, dtype=float) for v in (ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta)]
+
+    def misfit(P):
+        """How far the reference corners are from closing the group at each position."""
+        return (np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
+                + np.abs(np.hypot(rxx - P[6], rxy - P[7]) - P[8]))
+
+    return follow_closure(arrs, misfit, _from_reference, _follow, construction_sine, mirror,
+                          (rbx, rby), (rxx, rxy), size)
+
+
+def follow_closure(arrs, misfit, from_reference, follow, sine, mirror, ref_b, ref_x, size):
+    """A class-III group's closure over N positions by continuation (:func:`triad_cols`, and
+    the triad with a block's): ``arrs`` the group's data columns, ``misfit(P)`` how far the
+    reference corners are from closing it at each position, ``from_reference``/``follow``
+    the group's Newton starts, ``sine`` its smallest construction sine.  Returns the seven
+    columns (B, C, X, margin), NaN and margin −1 beyond the followed closure's end."""
     shape = np.broadcast_shapes(*(v.shape for v in arrs))
     n = int(np.prod(shape)) if shape else 1
     cols = [np.broadcast_to(v, shape).reshape(n).tolist() for v in arrs]
     out = np.full((7, n), np.nan)
     out[6] = -1.0
     qs = [tuple(c[k] for c in cols) for k in range(n)]
-    ref_b, ref_x = (rbx, rby), (rxx, rxy)
     start, best, first = None, math.inf, None
     # first the position where the reference closes the group best (the reference is a
     # closure at one of the inputs: the scene's own, or the one a sweep was anchored at),
     # then probes through the rest
     with np.errstate(all="ignore"):
-        P = np.array(cols)
-        r = (np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
-             + np.abs(np.hypot(rxx - P[6], rxy - P[7]) - P[8]))
+        r = misfit(np.array(cols))
     order = ([int(np.nanargmin(r))] if np.isfinite(r).any() else []) \
         + list(range(0, n, max(1, n // 8)))
     for k in order:
         if not all(math.isfinite(v) for v in qs[k]):
             continue
-        res = _from_reference(qs[k], mirror, ref_b, ref_x, size)
+        res = from_reference(qs[k], mirror, ref_b, ref_x, size)
         if res is None:
             continue
         dist = max(math.dist(res[0][0], ref_b), math.dist(res[0][2], ref_x))
@@ -537,14 +550,14 @@ def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rx
                         break
                     (B, _, X), pose, _ = res
                     reach = 0.25 * size if moved is None else max(4.0 * moved, 1e-3 * size)
-                    new = _follow(qs[k], mirror, B, X, size, pose, reach=reach)
+                    new = follow(qs[k], mirror, B, X, size, pose, reach=reach)
                     if new is None:
                         break
                     moved = max(math.dist(new[0][0], B), math.dist(new[0][2], X))
                     res = new
                 (B, C, X), _, m = res
                 out[:, k] = (*B, *C, *X,
-                             construction_sine(qs[k], B, C, X) if m > 0 else m)
+                             sine(qs[k], B, C, X) if m > 0 else m)
                 done[k] = True
     return tuple(o.reshape(shape) if shape else o[0] for o in out)
 

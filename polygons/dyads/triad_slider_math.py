@@ -370,53 +370,13 @@ def triad_slider_cols(ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta, mirror, 
     :func:`polygons.dyads.triad_math.triad_cols`): the position whose closure is nearest the
     reference first, then outwards, each by Newton from its neighbour's closure; where the
     followed closure is lost the positions beyond are NaN and the margin −1."""
-    from .triad_math import _adjacent
+    from .triad_math import follow_closure
     arrs = [np.asarray(v, dtype=float) for v in (ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi,
                                                  eta)]
-    shape = np.broadcast_shapes(*(v.shape for v in arrs))
-    n = int(np.prod(shape)) if shape else 1
-    cols = [np.broadcast_to(v, shape).reshape(n).tolist() for v in arrs]
-    out = np.full((7, n), np.nan)
-    out[6] = -1.0
-    qs = [tuple(c[k] for c in cols) for k in range(n)]
-    ref_b, ref_x = (rbx, rby), (rxx, rxy)
-    start, best, first = None, math.inf, None
-    with np.errstate(all="ignore"):
-        P = np.array(cols)
-        r = np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
-    order = ([int(np.nanargmin(r))] if np.isfinite(r).any() else []) \
-        + list(range(0, n, max(1, n // 8)))
-    for k in order:
-        if not all(math.isfinite(v) for v in qs[k]):
-            continue
-        res = _from_reference(qs[k], mirror, ref_b, ref_x, size)
-        if res is None:
-            continue
-        dist = max(math.dist(res[0][0], ref_b), math.dist(res[0][2], ref_x))
-        if dist < best:
-            start, best, first = k, dist, res
-        if dist <= 1e-9 * size:
-            break
-    if start is not None:
-        done = np.zeros(n, dtype=bool)
-        # _adjacent reads the outer points' coordinates at 0, 1, 3, 4, 6, 7: A, D, G here
-        wrap = n > 2 and _adjacent(qs, 0, n - 1)
-        back = list(range(start, -1, -1)) + (list(range(n - 1, start, -1)) if wrap else [])
-        for rng in (range(start, n), back):
-            res, moved = first, None
-            for k in rng:
-                if k != start:
-                    if done[k] or not all(math.isfinite(v) for v in qs[k]):
-                        break
-                    (B, _, X), pose, _ = res
-                    reach = 0.25 * size if moved is None else max(4.0 * moved, 1e-3 * size)
-                    new = _follow(qs[k], mirror, B, X, size, pose, reach=reach)
-                    if new is None:
-                        break
-                    moved = max(math.dist(new[0][0], B), math.dist(new[0][2], X))
-                    res = new
-                (B, C, X), _, m = res
-                out[:, k] = (*B, *C, *X,
-                             construction_sine(qs[k], B, C, X) if m > 0 else m)
-                done[k] = True
-    return tuple(o.reshape(shape) if shape else o[0] for o in out)
+
+    def misfit(P):
+        """How far the reference corner P₁ is from its link's circle at each position."""
+        return np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
+
+    return follow_closure(arrs, misfit, _from_reference, _follow, construction_sine, mirror,
+                          (rbx, rby), (rxx, rxy), size)
