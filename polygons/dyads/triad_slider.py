@@ -306,24 +306,7 @@ class TriadSlider:
         a, d, s, x, pole = V(A), V(D), V(S), V(X), b.names.pole
         Cm = Component
         if b.velocity:
-            n1 = b.add(Kind.LINE, Op.LINE_PERP, (A, B), f"line ⟂ {A}{B}", a, None,
-                       "relative_velocity", f"(v_{S})_{A}", f"(v_{S})_{A} ⟂ {A}{B}",
-                       f"The auxiliary point {S}, where {A}{B} and {D}{C} produced meet, is a "
-                       f"point of the plate {P} on {A}{B} produced: its velocity relative to "
-                       f"{A} is perpendicular to {A}{B}. Through {a} draw a line ⟂ {A}{B}.",
-                       component=Cm.CONSTRUCTION, link=LB)
-            n2 = b.add(Kind.LINE, Op.LINE_PERP, (D, C), f"line ⟂ {D}{C}", d, None,
-                       "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
-                       f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
-                       component=Cm.CONSTRUCTION, link=LC)
-            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
-                  f"{s} = intersection of the two lines",
-                  f"The lines meet at {s}: {pole}{s} is the velocity of the auxiliary "
-                  f"point {S}.", (n1, n2), component=Cm.RESULTANT)
-            n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
-                       "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
-                       f"{X} and {S} are points of the plate: through {s} draw a line "
-                       f"⟂ {S}{X}.", component=Cm.CONSTRUCTION, link=P)
+            n3 = Triad.assur_velocity(b, A, B, LB, D, C, LC, S, X, P)
             n4 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None,
                        "slider_line", f"v_{X}", f"v_{X} ∥ guide of {X}",
                        f"The block at {X} slides on a fixed guide: through {pole} draw a line "
