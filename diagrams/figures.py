@@ -312,7 +312,7 @@ def uncrowded(d):
                     continue
             out.append(it)
         return tuple(out)
-    return replace(d, groups=keep(d.groups))
+    return replace(d, groups=keep(d.groups), meta={**d.meta, "dropped": len(drop)})
 
 
 #: the roles of a stage figure's labels that must print :data:`PRINTED_LABEL` mm high
