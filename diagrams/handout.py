@@ -327,7 +327,7 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                         f"{sym(words(step.reason))}</p>\n")
                 f = formula_with_numbers(step, sol.scene)
                 if f:
-                    doc.add(f'<p class="formula answer">{sym(words(f))}</p>\n')
+                    doc.add(f'<p class="formula answer">{_meet_kept(sym(words(f)))}</p>\n')
             if not narrow:
                 doc.add(fig)
             doc.add("</li>\n")
@@ -619,3 +619,13 @@ def _footer(doc: _Doc, sol: Solution, worksheet: bool, file: str) -> None:
 
 __all__ = ["handout", "figures", "Figures", "redact_answers", "worksheet_questions",
            "textbook_name", "formula_with_numbers", "stage_of"]
+
+
+_MEET = re.compile(r" \((lines meet at [^()]*?°)\)$")
+
+
+def _meet_kept(html: str) -> str:
+    """A worked line's closing '(lines meet at 90°)' kept in one piece and on the line of
+    the value it qualifies (a no-break space before it, the words set unbroken): never a
+    line of its own, opening a column (issue 33)."""
+    return _MEET.sub(lambda m: f'\u00a0<span class="meet">({m.group(1)})</span>', html)
