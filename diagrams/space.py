@@ -155,19 +155,43 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     slotted = set()
     # a bar bearing on a fixed circle is drawn as the bar (its slot is only the equivalent)
     bearing = {q.at for q in scene.equivalents if q.kind == "bearing"}
+    # a cam stated by its profile: its slot (a straight flank's equivalent) is cut in the
+    # cam's plate, drawn by cam_profile: no lever bar; its crank end K a point of the plate
+    cam_lever = (scene.driver.link if scene.extra.get("cam_profiles")
+                 and isinstance(scene.driver, Crank) else None)
+    face_arms = {q.arm for q in scene.equivalents if q.kind == "flat-faced cam" and q.arm}
     for slot in scene.model.slots() + scene.model.crossings():
         pivot, lever = slot.line.origin, slot.carrier
         if slot.at not in P or pivot not in P or slot.at in bearing:
             continue
         piv, pin = P[pivot], P[slot.at]
         e = _unit((pin[0] - piv[0], pin[1] - piv[1]))
+        off = 0.0
+        if slot.line.offset and slot.along_lever and slot.far in P and P[slot.far] != piv:
+            # an offset slot: along its own line, ∥ pivot → far end
+            e = _unit((P[slot.far][0] - piv[0], P[slot.far][1] - piv[1]))
+            off = slot.line.offset * k          # its offset to the left of pivot → far
         n = (-e[1], e[0])
         end = P[slot.far] if slot.far and slot.far in P else _add(pin, e, 12.0)
         s0, s1 = _add(pin, e, -9.0), _add(pin, e, 9.0)
-        link(piv, s0, cls=f"link {lever}")
-        if math.hypot(end[0] - s1[0], end[1] - s1[1]) > 0.5 and \
-                (end[0] - pin[0]) * e[0] + (end[1] - pin[1]) * e[1] > 9.0:
-            link(s1, end, cls=f"link {lever}")
+        foot = _add(piv, n, off)                # the slot line's foot of the pivot
+        far_off = _add(end, n, off)             # … and of the far end
+        if lever == cam_lever:
+            pass
+        elif lever in face_arms:    # a flat face's equivalent slot: the face is the arm
+            link(piv, end, cls=f"link {lever}")
+        elif abs(off) > 0.05:       # an offset slot: the lever bent to carry it
+            link(piv, foot, cls=f"link {lever}")
+            if (s0[0] - foot[0]) * e[0] + (s0[1] - foot[1]) * e[1] > 0.0:
+                link(foot, s0, cls=f"link {lever}")
+            if (far_off[0] - s1[0]) * e[0] + (far_off[1] - s1[1]) * e[1] > 0.0:
+                link(s1, far_off, cls=f"link {lever}")
+            link(far_off, end, cls=f"link {lever}")
+        else:
+            link(piv, s0, cls=f"link {lever}")
+            if math.hypot(end[0] - s1[0], end[1] - s1[1]) > 0.5 and \
+                    (end[0] - pin[0]) * e[0] + (end[1] - pin[1]) * e[1] > 9.0:
+                link(s1, end, cls=f"link {lever}")
         w = 1.9
         outline = (_add(s0, n, w), _add(s1, n, w), _add(s1, n, -w), _add(s0, n, -w))
         links.append(Polyline(tuple(_r(p) for p in outline), "slot", closed=True,
@@ -427,7 +451,8 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
     for gr in groups:
         p = P[gr[0]]
         at = " ".join(f"at-{token(lab)}" for lab in gr)
-        if all(lab in body for lab in gr):
+        if all(lab in body for lab in gr) or (cam_lever is not None and gr == [
+                scene.model.named[cam_lever].b] and cam_lever in slotted):
             pins.append(Circle(p, 0.7, "vertex", cls=f"point {at}",
                                ident=f"space-point-{token(gr[0])}"))
         else:

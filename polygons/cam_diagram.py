@@ -1,24 +1,25 @@
 """The displacement diagram of a cam stated by its profile ([cam_profiles]): at each cam angle
 the part in contact found and its equivalent linkage built (:mod:`polygons.cam_profiles`) and
 solved by the staged construction — a sweep cannot follow it, the linkage changing with the
-part.  Where there is no linkage the row says how it was found: the dwell on the base circle
-(at rest), a translating knife or roller on a tangent cam's straight flank (the closed form,
-:func:`polygons.cam_profiles.straight_flank_motion`)."""
+part (a translating knife or roller on a tangent cam's straight flank: the tangent mechanism,
+its closed form :func:`polygons.cam_profiles.straight_flank_motion` the tests' oracle).  Where
+there is no linkage the row says so: the dwell on the base circle (at rest)."""
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
-from .cam_profiles import TABLE, AXIS_KEY, contact, stated, straight_flank_motion
+from .cam_profiles import TABLE, AXIS_KEY, contact, stated
 from .errors import SceneError, UnsupportedError
 from .evaluate import solve
 from .scene import parse_scene
+from .units import parse_quantity
 
 
 @dataclass(frozen=True)
 class Row:
     """One cam angle of the displacement diagram: the nose axis's angle (rad), the part in
-    contact, how the row was found (``by``: 'linkage', 'dwell', 'closed form'); a translating
+    contact, how the row was found (``by``: 'linkage', 'dwell'); a translating
     follower's displacement from the foot of O along the stroke (m; the roller's centre, the
     knife's edge, a flat face), its velocity and acceleration along the stroke; an oscillating
     follower's arm angle (rad, pivot → R), ω and α (CCW positive)."""
@@ -31,12 +32,15 @@ class Row:
     by: str = "linkage"
 
 
+#: the force tables restated with the cam at each angle (they name the follower, O, ground)
+LOAD_TABLES = ("masses", "forces", "torques", "springs", "gravity")
 #: most cam angles of a displacement diagram (each a construction: ~1 ms)
 MAX_DIAGRAM_STEPS = 20_000
 
 
-def _base(scene):
-    """The scene's data restated for one cam angle (ground, cam table, driver's rates)."""
+def _base(scene, omega: float | None = None):
+    """The scene's data restated for one cam angle (ground, cam table, driver's rates; the
+    cam's speed ``omega`` in rad/s, CCW positive, for the scene's own)."""
     raw = scene.extra.get(TABLE)
     if not raw:
         raise UnsupportedError("the scene states no cam by its profile ([cam_profiles])",
@@ -44,30 +48,68 @@ def _base(scene):
     (label, table), = raw.items()
     table = {k: v for k, v in table.items() if k != AXIS_KEY}
     drv = scene.driver
+    w = drv.omega if omega is None else omega
     ground = {g: [f"{p[0]!r} m", f"{p[1]!r} m"] for g, p in scene.ground.items()}
-    data = {"ground": ground, TABLE: {label: table},
+    loads = {t: scene.extra[t] for t in LOAD_TABLES if t in scene.extra}
+    data = {**loads, "ground": ground, TABLE: {label: table},
             "driver": {"crank": drv.link, "angle": "0 deg",
-                       "omega": f"{abs(drv.omega)!r} rad/s",
-                       "sense": "CW" if drv.omega < 0 else "CCW",
+                       "omega": f"{abs(w)!r} rad/s",
+                       "sense": "CW" if w < 0 else "CCW",
                        "alpha": f"{abs(drv.alpha)!r} rad/s^2",
                        "alpha_sense": "CW" if drv.alpha < 0 else "CCW"}}
     return data
 
 
+def has_profile(scene) -> bool:
+    """Whether ``scene`` states a cam by its profile ([cam_profiles])."""
+    return bool(scene.extra.get(TABLE))
+
+
+def nose_axis(scene) -> float:
+    """The stated cam angle (the nose axis's, rad) of a scene with [cam_profiles]."""
+    (table,) = scene.extra[TABLE].values()
+    return parse_quantity(table[AXIS_KEY], "angle", file=scene.file, where=TABLE)
+
+
+def scene_at(scene, axis: float, omega: float | None = None):
+    """The scene of a cam stated by its profile restated at the nose axis ``axis`` (rad; the
+    cam's speed ``omega``, rad/s CCW +, for the scene's): the part in contact found and its
+    equivalent linkage built; None where the follower dwells on the base circle or no part
+    meets it (no linkage: the scene loaded at its own angle, the geometry's refusal here).
+    Only the cam, its follower, the driver and the force tables are restated."""
+    data = _base(scene, None if omega is None else float(omega))
+    data["driver"]["angle"] = f"{float(axis)!r} rad"
+    try:
+        return parse_scene(data, file=scene.file)
+    except SceneError:
+        return None
+
+
+def part_at(scene, axis: float) -> tuple[str, int]:
+    """The part of the profile in contact (its name and side) with the nose axis at ``axis``
+    ('none' where no part meets the follower)."""
+    label, table, prof, fol, *_ = stated(_base(scene), scene.file)
+    try:
+        got = contact(prof, fol, float(axis))
+    except SceneError:          # no part meets the follower at this angle
+        return "none", 0
+    return got.part, got.side
+
+
 def movable(data: dict, file: str):
     """The scene of ``data`` (parsed TOML with [cam_profiles]) restated at a cam angle where
     the follower moves on a part with a linkage (the stated angle, else the first of each
-    degree): a scene stated on the base circle or a translating follower's straight flank
-    refuses an instant, yet has a displacement diagram."""
+    degree): a scene stated on the base circle refuses an instant, yet has a displacement
+    diagram."""
     label, table, prof, fol, *_ = stated(data, file)
     try:
         return parse_scene(data, file=file)
     except SceneError as exc:
-        if "dwells" not in str(exc) and "straight flank" not in str(exc):
+        if "dwells" not in str(exc):
             raise
     for i in range(360):
         got = contact(prof, fol, math.radians(i))
-        if got.part in ("nose", "flank") or (got.part == "straight flank" and fol.oscillating):
+        if got.part != "base circle":
             return parse_scene({**data, "driver": {**data["driver"], "angle": f"{i} deg"}},
                                file=file)
     raise SceneError("the follower never leaves the base circle", file=file,
@@ -78,7 +120,7 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
     """The follower's displacement diagram over a turn of the cam of ``scene`` (a scene with
     [cam_profiles]) at ``steps`` nose-axis angles 0, 2π/steps, …: the part in contact found and
     its equivalent linkage built and solved; on the base circle the follower dwells (v = a =
-    0); a translating knife or roller on a straight flank by the closed form."""
+    0)."""
     if isinstance(steps, bool) or not isinstance(steps, int) or not \
             2 <= steps <= MAX_DIAGRAM_STEPS:
         raise UnsupportedError(f"steps must be a whole number 2 … {MAX_DIAGRAM_STEPS:,}",
@@ -94,10 +136,6 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
         if got.part == "base circle":
             rows.append(Row(axis, got.part, got.s, 0.0, 0.0, "dwell"))
             continue
-        if got.part == "straight flank" and not fol.oscillating:
-            s, v, a = straight_flank_motion(prof, fol, axis, drv.omega, drv.alpha)
-            rows.append(Row(axis, got.part, s, v, a, "closed form"))
-            continue
         here = {**data, "driver": {**data["driver"], "angle": f"{axis!r} rad"}}
         sol = solve(parse_scene(here, file=scene.file))
         if fol.oscillating:         # the arm's angle, ω and α from the construction
@@ -107,13 +145,14 @@ def diagram(scene, steps: int = 360) -> tuple[Row, ...]:
             rows.append(Row(axis, got.part, math.atan2(p[1] - q[1], p[0] - q[0]), lk.omega,
                             lk.alpha))
             continue
-        sr = sol.slides[label]
         e = (math.cos(fol.stroke), math.sin(fol.stroke))
-        p = sol.points[label].position
+        pr = sol.points[label]       # the follower's block on its line of stroke
+        p, v, a = pr.position, pr.velocity, pr.acceleration
         s_along = (p[0] - o[0] - fol.foot[0]) * e[0] + (p[1] - o[1] - fol.foot[1]) * e[1]
         rows.append(Row(axis, got.part, s_along + (got.radius if fol.kind == "flat" else 0.0),
-                        sr.velocity, sr.acceleration))
+                        v[0] * e[0] + v[1] * e[1], a[0] * e[0] + a[1] * e[1]))
     return tuple(rows)
 
 
-__all__ = ["Row", "diagram", "movable", "MAX_DIAGRAM_STEPS"]
+__all__ = ["Row", "diagram", "movable", "has_profile", "nose_axis", "scene_at", "part_at",
+           "MAX_DIAGRAM_STEPS"]

@@ -35,10 +35,10 @@ that instant:
   arm of [cams] arm);
 * a straight flank with an oscillating knife or roller → R a pin in a slot of the cam (∥ the
   flank, offset r₁ + roller from O) at the end of the arm QR;
-* a straight flank with a translating knife or roller (a pin in a slot of the cam and on a
-  fixed guide: not among the construction's groups) is refused at an instant; the
-  displacement diagram (:mod:`polygons.cam_diagram`) gives it by the closed form
-  s = (r₁ + r − b·N)/(e·N) and its derivatives.
+* a straight flank with a translating knife or roller → R a pin in that slot of the cam and a
+  block on the fixed line of stroke: the tangent mechanism (:mod:`polygons.dyads.slot_slider`);
+  :func:`straight_flank_motion` is its closed form s = (r₁ + r − b·N)/(e·N) and derivatives,
+  kept as the tests' oracle.
 
 :func:`contact` is the geometry alone (the tests, the diagram, the drawing); :func:`rewrite`
 turns a scene's ``[cam_profiles]`` into ``[links]``, ``[sliders]``, ``[slots]``, ``[cams]``
@@ -69,9 +69,10 @@ TABLES: tuple[Table, ...] = (
                  "part in contact at the driver's angle (the nose's axis) is found and the "
                  "equivalent linkage built: the driver's crank O → K (K: the part's centre of "
                  "curvature, rigid with the cam) and a [cams.R] entry, or a slot of the cam "
-                 "for a straight flank.  The follower dwelling on the base circle and a "
-                 "translating knife or roller on a straight flank are refused in words at an "
-                 "instant (`polygons sweep` gives the displacement diagram over a turn).", (
+                 "for a straight flank (a translating knife or roller: the tangent "
+                 "mechanism, a pin in the slot on the fixed line of stroke).  The follower "
+                 "dwelling on the base circle is refused in words at an instant (`polygons "
+                 "sweep` gives the displacement diagram over a turn).", (
         Key("base_radius", "quantity", "the base circle's radius r₁", example='"25 mm"',
             dimension="length", required=True),
         Key("nose_radius", "quantity", "the nose's radius r₂", example='"8 mm"',
@@ -618,6 +619,36 @@ def stated(data: dict, file: str):
     return label, table, prof, fol, centre_o, o, drv["crank"], k
 
 
+def _loads_on_the_cam(data: dict, crank: str, k: str, file: str) -> None:
+    """The force tables on a cam by its profile, checked: the crank O → K is the equivalent
+    linkage's (K the part's centre of curvature, found at each angle), not the cam — its
+    mass only at O with an inertia of its own (not a rod's of OK), and nothing at K."""
+    masses = data.get("masses")
+    spec = masses.get(crank) if isinstance(masses, dict) else None
+    if isinstance(spec, dict):
+        c = spec.get("centre", "0.5")
+        try:
+            at_o = float(c) == 0.0
+        except (TypeError, ValueError):
+            at_o = isinstance(c, str) and _q(c, "length", file, f"masses.{crank}.centre") == 0
+        own = "radius_of_gyration" in spec or spec.get("inertia", "rod") != "rod"
+        if not (at_o and own) or "centre_left" in spec:
+            raise SceneError(f"[masses.{crank}] on a cam stated by its profile: {crank} is the "
+                             f"equivalent linkage's crank (O to the centre of curvature {k} "
+                             f"found at each angle), not the cam: give the cam's mass at its "
+                             f"centre (centre = \"0 mm\") with its own inertia "
+                             f"(radius_of_gyration, inertia = \"disc\" or a value)",
+                             file=file, where=f"masses.{crank}")
+    for tab in ("masses", "forces", "springs"):
+        for name, entry in (data.get(tab) or {}).items() if isinstance(data.get(tab),
+                                                                        dict) else ():
+            if isinstance(entry, dict) and k in (entry.get("at"), entry.get("a"),
+                                                 entry.get("b")):
+                raise SceneError(f"{k} is the centre of curvature of the part in contact, "
+                                 f"found at each cam angle, no point of the cam's own: nothing "
+                                 f"can act at it", file=file, where=f"{tab}.{name}")
+
+
 def rewrite(data: dict, file: str) -> dict:
     """``data`` with its [cam_profiles.R] replaced by its equivalent linkage at the driver's
     angle (see the module docstring)."""
@@ -625,6 +656,7 @@ def rewrite(data: dict, file: str) -> dict:
         return data
     label, table, prof, fol, centre_o, o, crank, k = stated(data, file)
     where = f"{TABLE}.{label}"
+    _loads_on_the_cam(data, crank, k, file)
     drv = data["driver"]
     axis = _q(drv["angle"], "angle", file, "driver.angle")
     try:
@@ -637,12 +669,6 @@ def rewrite(data: dict, file: str) -> dict:
                          f"is at rest (v = 0, a = 0) and there is no equivalent linkage",
                          file=file, where=where)
     straight = got.part == "straight flank"
-    if straight and not fol.oscillating:
-        raise SceneError("the follower is on a straight flank of the tangent cam: a pin in a "
-                         "slot of the cam and on a fixed guide, not among the construction's "
-                         "groups; `polygons sweep` gives its displacement, velocity and "
-                         "acceleration over the turn (the closed form); the nose is served",
-                         file=file, where=where)
     out = dict(data)
     out[TABLE] = {label: {**table, AXIS_KEY: f"{axis!r} rad"}}     # kept for the drawing
     links = dict(data.get("links", {}))
@@ -665,6 +691,11 @@ def rewrite(data: dict, file: str) -> dict:
         out["slots"] = {**data.get("slots", {}),
                         label: {"lever": crank, "coincident": _fresh(label, data),
                                 "offset": f"{sense * (prof.base + rr)!r} m"}}
+        if not fol.oscillating:      # the pin also on the fixed guide: the tangent mechanism
+            b = (o[0] + fol.foot[0], o[1] + fol.foot[1])
+            out["sliders"] = {**data.get("sliders", {}),
+                              label: {"through": [f"{b[0]!r} m", f"{b[1]!r} m"],
+                                      "direction": f"{math.degrees(fol.stroke)!r} deg"}}
         out["links"] = links
         out["assembly"] = {**data.get("assembly", {}), label: near}
         return out

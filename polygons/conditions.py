@@ -21,6 +21,7 @@ from typing import Callable
 
 import numpy as np
 
+from . import cam_diagram
 from . import quantities as kq
 from .errors import PolygonsError, SceneError, show
 from .question_table import CYCLE, Question, questions
@@ -172,6 +173,11 @@ def _measure(scene: Scene, q: Question):
 
 def _restated(scene: Scene, q: Question, x: float, near: Scene | None = None) -> Scene:
     """The scene with its input set to ``x`` (closures pinned as in ``near``)."""
+    if cam_diagram.has_profile(scene):      # a cam by its profile: x the nose axis's angle
+        if q.find == "angle":
+            return cam_diagram.scene_at(scene, x)
+        sense = -1.0 if scene.driver.omega < 0 else 1.0
+        return cam_diagram.scene_at(scene, cam_diagram.nose_axis(scene), sense * x)
     base = near if near is not None else scene
     drv = base.driver
     if q.find == "angle":
@@ -186,7 +192,8 @@ def _samples(scene: Scene, q: Question) -> tuple[np.ndarray, list[Scene], bool]:
     """The sample inputs, the scene at each (closures followed from the scene's instant) and
     whether the range is a whole turn (periodic)."""
     if q.range is None:
-        x0 = scene.driver.angle
+        x0 = cam_diagram.nose_axis(scene) if cam_diagram.has_profile(scene) \
+            else scene.driver.angle
         xs = x0 + _TAU * np.arange(q.samples) / q.samples
         periodic = True
     else:
@@ -196,6 +203,8 @@ def _samples(scene: Scene, q: Question) -> tuple[np.ndarray, list[Scene], bool]:
             xs = xs[:-1]
     if q.find == "omega":                # the configuration does not change with the speed
         return xs, [_restated(scene, q, x) for x in xs], False
+    if cam_diagram.has_profile(scene):  # each cam angle its own part and linkage: no sweep
+        return xs, [_restated(scene, q, x) for x in xs], periodic
     try:
         from .sweep import sweep
         sw = sweep(scene, inputs=xs)
@@ -216,13 +225,94 @@ def _safe(f, s) -> float:
     return v if math.isfinite(v) else math.nan
 
 
+def _cam_question(scene: Scene, q: Question) -> None:
+    """A question on a cam stated by its profile ([cam_profiles]): the input is the nose
+    axis's angle (or the cam's speed), each instant its own part in contact and linkage
+    (:func:`polygons.cam_diagram.scene_at`; the base circle's dwell has none: no value
+    there; the force tables restated with it, :data:`polygons.cam_diagram.LOAD_TABLES`).
+    Refused in one line: a force quantity with a spring stated by its extension or twist
+    at this instant, or another [dynamics] mode than kinetostatic; the follower's slide vs /
+    as / cor on a tangent cam (the slide on the line of stroke at the nose, in the cam's slot
+    on a straight flank: not one quantity over the turn)."""
+    try:
+        fn, args = parse_quantity_expr(q.quantity)
+    except PolygonsError:
+        springs = scene.extra.get("springs") or {}
+        fixed = [n for n, sp in springs.items() if isinstance(sp, dict)
+                 and ("extension" in sp or "twist" in sp)]
+        mode = (scene.extra.get("dynamics") or {}).get("mode", "kinetostatic")
+        if fixed or mode != "kinetostatic":
+            raise SceneError(f"{show(q.quantity)} over the turn of a cam stated by its "
+                             f"profile: " + (f"the spring {fixed[0]} is stated by its "
+                                             f"extension at this instant only (state it "
+                                             f"between two points with a free length)"
+                                             if fixed else f"[dynamics] mode {show(mode)} is "
+                                             f"not served (kinetostatic only)"),
+                             file=scene.file, where=q.where + ".quantity") from None
+        return
+    (label, table), = scene.extra["cam_profiles"].items()
+    if fn in ("vs", "as", "cor") and label in args and table.get("kind") == "tangent":
+        raise SceneError(f"{show(q.quantity)} on a tangent cam is the slide along the line of "
+                         f"stroke on the nose but in the cam's slot on a straight flank: ask "
+                         f"for the follower's v({label}), a({label}) or y({label}) (x({label}))",
+                         file=scene.file, where=q.where + ".quantity")
+
+
+def _cam_edge(scene: Scene, q: Question, a: float, b: float) -> tuple[float, float] | None:
+    """Where a cam's part in contact changes in [a, b] (the acceleration jumps there with the
+    curvature, the velocity's slope too: a flank's end), as the two sides' last angles found
+    by bisection on the part to full precision; None when one part holds [a, b] (or the
+    input is the cam's speed)."""
+    if q.find != "angle":
+        return None
+    pa = cam_diagram.part_at(scene, a)
+    if pa == cam_diagram.part_at(scene, b):
+        return None
+    lo, hi = a, b
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            break
+        if cam_diagram.part_at(scene, mid) == pa:
+            lo = mid
+        else:
+            hi = mid
+    return lo, hi
+
+
 def answer(scene: Scene, q: Question) -> Finding:
-    """Answer one question of the scene (see module docstring)."""
+    """Answer one question of the scene (see module docstring); on a cam stated by its
+    profile, the turn where the follower dwells on the base circle said in words (it has no
+    linkage there, so no value: an extreme is over the rest)."""
+    found = _answer(scene, q)
+    if q.find != "angle" or not cam_diagram.has_profile(scene):
+        return found
+    xs = _samples_only(scene, q)
+    dwell = [x for x in xs if cam_diagram.part_at(scene, x)[0] == "base circle"]
+    if not dwell:
+        return found
+    words = (f"the follower dwells on the base circle (at rest, no linkage) at "
+             f"{len(dwell)} of the {len(xs)} sampled cam angles, "
+             f"{_fmt(input_in_unit(q, dwell[0]))} … {_fmt(input_in_unit(q, dwell[-1]))} "
+             f"{q.unit}: the quantity is not taken there")
+    return replace(found, words=f"{found.words}; {words}" if found.words else words)
+
+
+def _samples_only(scene: Scene, q: Question) -> np.ndarray:
+    if q.range is None:
+        return cam_diagram.nose_axis(scene) + _TAU * np.arange(q.samples) / q.samples
+    return np.linspace(q.range[0], q.range[1], q.samples)
+
+
+def _answer(scene: Scene, q: Question) -> Finding:
     if q.find != "position" and not isinstance(scene.driver, Crank):
         raise SceneError("find = 'angle' or 'omega' needs a crank driver", file=scene.file,
                          where=q.where + ".find")
     cams = [e.at for e in getattr(scene, "equivalents", ()) if "cam" in e.kind]
-    if cams:
+    profile = cam_diagram.has_profile(scene)
+    if profile:
+        _cam_question(scene, q)
+    elif cams:
         raise SceneError(f"the cam at {cams[0]} is replaced by its equivalent linkage at this "
                          f"instant only (the profile's part in contact changes as it turns): "
                          f"a question over a range of inputs is not served for it",
@@ -280,12 +370,24 @@ def answer(scene: Scene, q: Question) -> Finding:
             continue
         a = xs[lo] - (_TAU if lo > i else 0.0)
         b = xs[hi] + (_TAU if hi < i else 0.0)
-        sa, sb = slope(a, i), slope(b, i)
-        if math.isfinite(sa) and math.isfinite(sb) and sa * sb <= 0.0:
-            x = brent(lambda x, i=i: slope(x, i), a, b, sa, sb)
-        else:                      # a cusp or an unbracketed slope: golden section
-            x = golden_min(lambda x, i=i: (-1 if kind == "max" else 1) * at(x, i), a, b)[0]
-        v = at(x, i)
+        edge = _cam_edge(scene, q, a, b) if profile else None
+        if edge is not None:        # a cam's part changes in the bracket: its edge's limits
+            cands = [(xe, at(xe, i)) for xe in edge]      # and each side's own extreme
+            for u, t in ((a, edge[0] - 2 * h), (edge[1] + 2 * h, b)):
+                su, st = (slope(u, i), slope(t, i)) if u < t else (math.nan, math.nan)
+                if math.isfinite(su) and math.isfinite(st) and su * st <= 0.0:
+                    xb = brent(lambda x, i=i: slope(x, i), u, t, su, st)
+                    cands.append((xb, at(xb, i)))
+            cands = [c for c in cands if math.isfinite(c[1])] or [(xs[i], fi)]
+            x, v = (max if kind == "max" else min)(cands, key=lambda c: c[1])
+        else:
+            sa, sb = slope(a, i), slope(b, i)
+            if math.isfinite(sa) and math.isfinite(sb) and sa * sb <= 0.0:
+                x = brent(lambda x, i=i: slope(x, i), a, b, sa, sb)
+            else:                      # a cusp or an unbracketed slope: golden section
+                x = golden_min(lambda x, i=i: (-1 if kind == "max" else 1) * at(x, i), a,
+                               b)[0]
+            v = at(x, i)
         if kind == "max" and fi > v or kind == "min" and fi < v:   # never worse than a sample
             x, v = xs[i], fi
         extremes.append(Root(x, v, kind, _restated(scene, q, x, scenes[i])))

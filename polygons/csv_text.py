@@ -31,8 +31,7 @@ import numpy as np
 BLOCK = 32768
 #: fewer values than this are written by np.savetxt (importing numba costs ~0.3 s)
 COMPILED_FROM = 200_000
-_K_LO, _K_HI = -345, 300            # k = decimal exponent − 16 over the whole float64 range
-_E16, _E17 = 10000000000000000, 100000000000000000
+from .csv_format import _E16, _E17, _K_HI, _K_LO, _put  # noqa: F401  (the formatter)
 _SCALE_K = 150                      # beyond ±this k the power and |x| are scaled by 2^∓200
 
 
@@ -49,160 +48,15 @@ def _powers():
     return hi, lo, sc
 
 
-def _put(x, hi, lo, sc, out, pos, dig):
-    """Write ``'%.17g' % x`` into ``out`` from ``pos``; the position after it."""
-    if x != x:
-        out[pos] = 110
-        out[pos + 1] = 97
-        out[pos + 2] = 110                                   # nan
-        return pos + 3
-    if x < 0 or (x == 0 and math.copysign(1.0, x) < 0):
-        out[pos] = 45                                        # -
-        pos += 1
-        x = -x
-    if x == math.inf:
-        out[pos] = 105
-        out[pos + 1] = 110
-        out[pos + 2] = 102                                   # inf
-        return pos + 3
-    if x == 0:
-        out[pos] = 48
-        return pos + 1
-    k = int(math.floor(math.log10(x))) - 16
-    if k < _K_LO:
-        k = _K_LO
-    D = 0
-    down = False
-    for _ in range(4):                          # log10 may be one off next to a power of ten
-        i = k - _K_LO
-        ph = hi[i]
-        pl = lo[i]
-        a = x
-        if sc[i] != 0:
-            a = math.ldexp(x, -int(sc[i]))      # exact: |x|·2^-s
-        p = a * ph
-        t = 134217729.0 * a                     # Dekker: a·ph = p + e exactly
-        ah = t - (t - a)
-        al = a - ah
-        t = 134217729.0 * ph
-        qh = t - (t - ph)
-        ql = ph - qh
-        e = ((ah * qh - p) + ah * ql + al * qh) + al * ql
-        e = e + a * pl
-        below = math.floor(e)
-        f = e - below
-        D = int(p) + int(below)                 # p ≥ 2^53 here is a whole number
-        if D < _E16:                        # the digits start one place later
-            k -= 1
-            down = True
-            continue
-        if D >= _E17:
-            if down:                            # 10^16 just under it, 10^17 just over it:
-                D = _E17                    # the power of ten itself (made 10^16 below)
-                break
-            k += 1
-            continue
-        if f > 0.5:
-            D += 1
-        elif f == 0.5 or (k < 0 and abs(f - 0.5) < 1e-9):
-            # a half, or next to one: exact (m·5^-k·2^(q−53+tz−k), m odd, has q−53+tz−k = −1)
-            # only for k < 0; then to the even neighbour, as %g does
-            mant, q = math.frexp(x)
-            mi = int(mant * 9007199254740992.0)
-            tz = 0
-            while mi & 1 == 0:
-                mi >>= 1
-                tz += 1
-            if k < 0 and q - 53 + tz - k == -1:
-                D += D & 1
-            elif f > 0.5:
-                D += 1
-        break
-    if D == _E17:                           # rounded up to 10^17: one digit fewer
-        D = _E16
-        k += 1
-    E = k + 16
-    top = D // 100000000                        # 9 and 8 digits, each in unsigned 32 bits
-    low = np.uint32(D - top * 100000000)         # (3× quicker than 64-bit signed division)
-    top = np.uint32(top)
-    ten = np.uint32(10)
-    for j in range(8):
-        q = low // ten
-        dig[16 - j] = 48 + (low - q * ten)
-        low = q
-    for j in range(9):
-        q = top // ten
-        dig[8 - j] = 48 + (top - q * ten)
-        top = q
-    nsig = 17
-    while nsig > 1 and dig[nsig - 1] == 48:
-        nsig -= 1
-    if -4 <= E < 17:
-        if E >= 0:
-            for j in range(E + 1):
-                out[pos + j] = dig[j]
-            pos += E + 1
-            if nsig > E + 1:
-                out[pos] = 46
-                pos += 1
-                for j in range(E + 1, nsig):
-                    out[pos] = dig[j]
-                    pos += 1
-        else:
-            out[pos] = 48
-            out[pos + 1] = 46
-            pos += 2
-            for j in range(-E - 1):
-                out[pos] = 48
-                pos += 1
-            for j in range(nsig):
-                out[pos] = dig[j]
-                pos += 1
-        return pos
-    out[pos] = dig[0]
-    pos += 1
-    if nsig > 1:
-        out[pos] = 46
-        pos += 1
-        for j in range(1, nsig):
-            out[pos] = dig[j]
-            pos += 1
-    out[pos] = 101
-    out[pos + 1] = 45 if E < 0 else 43
-    pos += 2
-    ae = -E if E < 0 else E
-    if ae >= 100:
-        out[pos] = 48 + ae // 100
-        pos += 1
-    out[pos] = 48 + (ae // 10) % 10
-    out[pos + 1] = 48 + ae % 10
-    return pos + 2
-
-
-def _rows(data, hi, lo, sc, out, put):
-    """Every row of ``data`` (n, m) as CSV into ``out``; the bytes used."""
-    n, m = data.shape
-    dig = np.empty(17, np.int64)
-    pos = 0
-    for r in range(n):
-        for c in range(m):
-            pos = put(data[r, c], hi, lo, sc, out, pos, dig)
-            out[pos] = 44 if c < m - 1 else 10
-            pos += 1
-    return pos
-
-
 @lru_cache(maxsize=1)
 def _compiled():
-    """``_rows`` with ``_put`` compiled by numba (kept in numba's on-disk cache), or None
-    without numba."""
+    """The compiled row writer (:mod:`polygons.csv_jit`, kept in numba's on-disk cache), or
+    None without numba."""
     if importlib.util.find_spec("numba") is None:
         return None
     try:
-        import numba
-        put = numba.njit(cache=True, error_model="numpy")(_put)
-        rows = numba.njit(cache=True, error_model="numpy")(_rows)
-        return lambda data, hi, lo, sc, out: rows(data, hi, lo, sc, out, put)
+        from .csv_jit import rows
+        return rows
     except Exception:                            # noqa: BLE001 - any numba failure: np.savetxt
         return None
 
@@ -224,10 +78,13 @@ def csv_rows(columns, n: int, compiled: bool | None = None) -> bytes:
         buf = io.BytesIO()
         np.savetxt(buf, data, delimiter=",", fmt="%.17g")
         return buf.getvalue()
+    from .csv_jit import FIELD, PARTS
     hi, lo, sc = _powers()
-    out = np.empty(n * m * 25, np.uint8)
-    used = kernel(data, hi, lo, sc, out)
-    return out[:used].tobytes()
+    out = np.empty(n * m * FIELD, np.uint8)
+    used = np.zeros(PARTS, np.int64)
+    kernel(data, hi, lo, sc, out, used)
+    step = -(-n // PARTS) * m * FIELD
+    return b"".join(out[p * step:p * step + used[p]] for p in range(PARTS))
 
 
 def write_csv_rows(fh, columns, n: int, compiled: bool | None = None) -> None:

@@ -111,8 +111,15 @@ def _rows_from(res: dict, k: int) -> dict:
 
 
 def evaluate_compiled(st: Stream, xs: np.ndarray) -> dict:
-    """:func:`polygons.sweep.evaluate`'s results for the inputs ``xs``, from the stream's
-    construction compiled for arrays."""
+    """:func:`polygons.sweep.run`'s results for the inputs ``xs``: the fused kernel's loops
+    over numpy (:mod:`polygons.fused`) where it makes the construction, as the in-memory
+    sweep, else the stream's construction compiled for arrays."""
+    from . import sweep as _sweep
+    if _sweep.FUSED_NUMPY and len(xs):
+        from .fused import fused_of
+        fused = fused_of(st.prog, st.code.index, arrays=True)
+        if fused is not None:
+            return fused.run(st.prog, np.asarray(xs, dtype=float))
     return from_arrays(st.prog, st.code, st.params, xs)
 
 

@@ -539,6 +539,14 @@ def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
     ``None`` rates.  ``jit``: the numba kernel where there is one (:func:`kernel_of`)."""
     xs = np.asarray(xs, dtype=float)
     n = len(xs)
+    if n and (FUSED if jit else FUSED_NUMPY):
+        from .fused import fused_of
+        fused = fused_of(prog, arrays_program(prog)[0].index, arrays=not jit)
+        if fused is not None:           # one kernel for the whole chain, into the results
+            out = fused.run(prog, xs)
+            if progress:
+                progress(n)
+            return out
     jit = bool(jit) and kernel_of(prog) is not None
     rows = kernel_of(prog)[0].size if jit else 0
     if jit and not chunk and rows <= JIT_ONE_PASS_ROWS and 0 < n <= JIT_ONE_PASS // rows:
@@ -560,6 +568,12 @@ def run(prog: Program, xs: np.ndarray, *, chunk: int | None = None,
     return out
 
 
+#: numba sweeps by the fused kernel (:mod:`polygons.fused`) where it makes the construction
+#: (False: the compiled arrays program, :mod:`polygons.jit`; for comparison)
+FUSED = True
+#: numpy sweeps by the same kernel's loops over slices of positions (False: the arrays
+#: program, the staged construction on arrays; for comparison)
+FUSED_NUMPY = True
 #: positions × record rows up to which a numba sweep is one pass whose rows are the results,
 #: for records of at most JIT_ONE_PASS_ROWS rows (more rows, each a stream of stores to its
 #: own pages, and the stores miss the TLB: chunks that stay in the caches are faster)

@@ -63,6 +63,14 @@ def closed_form(axis, follower, kind):
     if P is not None:
         parts.append(("flank", (P[0], side * P[1]), RF, phi_n, phi_b))
     parts.append(("base circle", (0.0, 0.0), R1, phi_b, math.pi))
+    if P is None and follower != "flat" and abs(phi) < phi_b:
+        # the book's tangent cam: on the flank x = p / cos θ, θ = β − |φ| the flank normal from
+        # the stroke, the contact p tan θ along the flank from the base circle (while on it)
+        p, theta = R1 + (RR if follower == "roller" else 0.0), phi_b - abs(phi)
+        if p * math.tan(theta) <= math.sqrt(d * d - (R1 - R2) ** 2):
+            c = math.cos(theta)
+            return ("straight flank", p / c, side * W * p * math.sin(theta) / c ** 2,
+                    W * W * p * (2 - c * c) / c ** 3)
     for name, c, rho, lo, hi in parts:
         cr = math.hypot(*c)
         gamma = math.atan2(c[1], c[0]) - phi         # the crank |c| from the stroke
@@ -89,7 +97,8 @@ def closed_form(axis, follower, kind):
 
 @pytest.mark.parametrize("follower,kind", [("roller", "circular arc"),
                                            ("knife", "circular arc"),
-                                           ("flat", "circular arc"), ("roller", "tangent")])
+                                           ("flat", "circular arc"), ("roller", "tangent"),
+                                           ("knife", "tangent")])
 def test_follower_over_a_turn_is_each_parts_closed_form(follower, kind):
     seen = set()
     for k in range(36):
@@ -97,12 +106,17 @@ def test_follower_over_a_turn_is_each_parts_closed_form(follower, kind):
         part, s, v, a = closed_form(axis, follower, kind)
         seen.add(part)
         text = scene_text(math.degrees(axis), follower, kind)
-        if part in ("base circle", "tangent flank"):
-            with pytest.raises(SceneError, match="dwells" if part == "base circle"
-                               else "straight flank"):
+        if part == "base circle":
+            with pytest.raises(SceneError, match="dwells"):
                 parse_scene(parse_toml(text, "cam.toml"), file="cam.toml")
             continue
         sol = solve(parse_scene(parse_toml(text, "cam.toml"), file="cam.toml"))
+        if part == "straight flank":    # the tangent mechanism: the block R on the stroke
+            r = sol.points["R"]
+            assert r.position[1] == pytest.approx(s, rel=1e-12), (k, part)
+            assert r.velocity[1] == pytest.approx(v, rel=1e-9, abs=1e-12), (k, part)
+            assert r.acceleration[1] == pytest.approx(a, rel=1e-9, abs=1e-9), (k, part)
+            continue
         # a flat face: R is the yoke's point under the centre of curvature, the face ρ beyond
         rho = {"nose": R2, "flank": RF}[part] if follower == "flat" else 0.0
         assert quantity(sol, "y(R)") + rho == pytest.approx(s, rel=1e-12), (k, part)
@@ -110,6 +124,7 @@ def test_follower_over_a_turn_is_each_parts_closed_form(follower, kind):
         assert quantity(sol, "as(R)") == pytest.approx(a, rel=1e-9, abs=1e-9), (k, part)
     assert {"nose", "base circle"} <= seen
     assert ("flank" in seen) == (kind == "circular arc")
+    assert ("straight flank" in seen) == (kind == "tangent")
 
 
 def test_the_parts_meet_smoothly_where_the_profile_changes():
@@ -357,14 +372,15 @@ def test_offset_and_oscillating_followers_touch_the_cam_and_move_as_it_turns(kin
 def test_a_translating_roller_on_a_straight_flank_is_the_books_closed_form():
     """Tangent cam, roller follower in line: on the flank x = (r₁ + r)(1 − cos θ)/cos θ,
     v = ω (r₁ + r) sin θ / cos² θ, a = ω² (r₁ + r)(2 − cos² θ)/cos³ θ, θ the cam's turn from
-    where the flank's normal lies along the stroke (the displacement diagram's rows)."""
+    where the flank's normal lies along the stroke (the displacement diagram's rows, built as
+    the tangent mechanism); with α too, straight_flank_motion's a = ω² s″ + α s′."""
     from polygons import cam_diagram
-    # stated on the flank: refused at the instant, restated for the diagram
-    scene = cam_diagram.movable(parse_toml(scene_text(60.0, "roller", "tangent"), "c.toml"),
-                                "c.toml")
+    from polygons.cam_profiles import contact, follower_of, profile_of, straight_flank_motion
+    data = parse_toml(scene_text(60.0, "roller", "tangent"), "c.toml")
+    scene = parse_scene(data, file="c.toml")          # stated on the flank: solved there
     d, _, beta, _ = geometry("tangent")
     rows = [r for r in cam_diagram.diagram(scene, 72) if r.part == "straight flank"]
-    assert rows and all(r.by == "closed form" for r in rows)
+    assert len(rows) >= 8 and all(r.by == "linkage" for r in rows)
     p = R1 + RR
     for r in rows:
         # the flank's normal at axis ± β; the stroke at 90°
@@ -373,10 +389,22 @@ def test_a_translating_roller_on_a_straight_flank_is_the_books_closed_form():
         rising = r.v > 0
         assert r.s - p == pytest.approx(p * (1 - math.cos(theta)) / math.cos(theta), rel=1e-12)
         assert abs(r.v) == pytest.approx(W * p * math.sin(theta) / math.cos(theta) ** 2,
-                                         rel=1e-12)
+                                         rel=1e-9)
         assert r.a == pytest.approx(W * W * p * (2 - math.cos(theta) ** 2)
-                                    / math.cos(theta) ** 3, rel=1e-12)
+                                    / math.cos(theta) ** 3, rel=1e-9)
         assert rising == (r.angle < math.pi / 2)
+    # speeding up at 40 rad/s², offset 7 mm, a knife: the construction against the closed form
+    text = (scene_text(62.0, "knife", "tangent").replace('sense = "CCW"', 'sense = "CCW"\n'
+            'alpha = "40 rad/s^2"\nalpha_sense = "CCW"') + 'offset = "7 mm"\n')
+    data = parse_toml(text, "c.toml")
+    r = solve(parse_scene(data, file="c.toml")).points["R"]
+    table, o = data["cam_profiles"]["R"], (0.0, 0.0)
+    prof, fol = profile_of(table, "c", "t"), follower_of(table, data["ground"], o, "c", "t")
+    assert contact(prof, fol, math.radians(62.0)).part == "straight flank"
+    s, v, a = straight_flank_motion(prof, fol, math.radians(62.0), W, 40.0)
+    assert (r.position[0], r.position[1]) == pytest.approx((-0.007, s), rel=1e-12)
+    assert r.velocity[1] == pytest.approx(v, rel=1e-9)
+    assert r.acceleration[1] == pytest.approx(a, rel=1e-9)
 
 
 def arc_cam(r1, r2, lift, R):
@@ -458,16 +486,14 @@ def test_the_new_cases_exact_answers_are_the_closed_forms():
 def test_sweep_of_a_cam_by_its_profile_writes_its_displacement_diagram(tmp_path, capsys):
     """`polygons sweep` on a [cam_profiles] scene: the displacement diagram as CSV (the lift
     from the dwell, the part and how each row was found) and a summary — a tangent cam stated
-    on its straight flank (refused at the instant) included; the sweep's other flags refused."""
+    on its straight flank included; the sweep's other flags refused."""
     from polygons.cli import main
     case = ROOT / "cases" / "cam-profile-tangent-roller.toml"
     flank = tmp_path / "flank.toml"
     flank.write_text(case.read_text().replace('\nangle = "90 deg"', '\nangle = "50 deg"'))
-    assert main(["solve", str(flank)]) == 1
-    assert "straight flank" in capsys.readouterr().err
     assert main(["sweep", str(flank), "--steps", "36", "--no-plot", "-o", str(tmp_path)]) == 0
     out = capsys.readouterr().out
-    assert "straight flank" in out and "(closed form)" in out and "lift: 19.882 mm" in out
+    assert "straight flank" in out and "closed form" not in out and "lift: 19.882 mm" in out
     rows = (tmp_path / "flank-cam.csv").read_text().splitlines()
     assert rows[0].startswith("cam angle [deg],part,found by,s [mm],lift [mm]")
     assert len(rows) == 37
@@ -530,3 +556,68 @@ def test_the_oscillating_diagram_passes_through_the_case():
                               pytest.approx(sol.links["QR"].alpha, rel=1e-12))
     assert {r.part for r in rows} == {"nose", "flank", "base circle"}
     assert all(r.v == 0.0 and r.a == 0.0 for r in rows if r.part == "base circle")
+
+
+def test_the_tangent_flank_case_is_the_books_closed_form():
+    """cam-profile-tangent-flank (Khurmi's tangent cam, part (1)): on the flank, as the
+    tangent mechanism, y = p / cos θ, v = ω p sin θ / cos² θ, a = ω² p (2 − cos² θ)/cos³ θ
+    (p = r₁ + r, θ = the nose axis − 45°); its questions: the speed and the acceleration are
+    greatest where the flanks end (tan θ = l / p, l = (r₁ − r₂) tan β the flank's length),
+    the acceleration there the nose's slider-crank's (crank d, rod r₂ + r) — against the
+    case's exact and `ask`; the cam's torque greatest there too; the follower's slide, a
+    spring stated at this instant, the cam's mass on OK and a load at K refused in one line."""
+    from polygons import conditions
+    from polygons.scene import load_scene
+    case = ROOT / "cases" / "cam-profile-tangent-flank.toml"
+    w, p, beta = 180 * 2 * math.pi / 60, 0.084, math.pi / 4
+    d = (0.060 - 0.012) / math.cos(beta)
+    th = math.radians(74.74488) - beta
+    c = math.cos(th)
+    want = {"y(R)": p / c * 1e3, "v(R)": w * p * math.sin(th) / c ** 2,
+            "a(R)": w * w * p * (2 - c * c) / c ** 3}
+    scene = load_scene(case)
+    sol = solve(scene)
+    assert [e for e in scene.equivalents if "cam" in e.kind] == []     # no [cams]: the slot
+    for ans in scene.answers:
+        assert ans.exact == pytest.approx(want[ans.quantity], rel=1e-12), ans.quantity
+        factor = 1e3 if ans.unit == "mm" else 1.0
+        assert quantity(sol, ans.quantity) * factor == pytest.approx(want[ans.quantity],
+                                                                     rel=1e-9)
+    the = math.atan(d * math.sin(beta) / p)          # the flank's end
+    edges = [math.degrees(beta + the), 180 - math.degrees(beta + the)]
+    g, L = beta - the, 0.012 + 0.024                  # the nose's crank from the stroke
+    S = math.sqrt(L * L - (d * math.sin(g)) ** 2)
+    a_nose = w * w * (d * math.cos(g) + d * d * math.cos(2 * g) / S
+                      + d ** 4 * (math.sin(g) * math.cos(g)) ** 2 / S ** 3)
+    v_end = w * p * math.sin(the) / math.cos(the) ** 2
+    for fd, value in zip(conditions.answer_all(scene), (v_end, a_nose)):
+        q = fd.question
+        assert list(q.exact) == pytest.approx(edges, rel=1e-12)
+        assert list(q.value_exact) == pytest.approx([value] * 2, rel=1e-12)
+        assert list(fd.reported()) == pytest.approx(edges, rel=1e-10)
+        assert list(fd.values()) == pytest.approx([value] * 2, rel=1e-9)
+        c = conditions.check(fd)
+        assert c.exact_ok and c.value_ok
+        assert "dwells on the base circle" in fd.words      # no value there: said
+    import tomllib
+    data = tomllib.loads(case.read_text(encoding="utf-8"))
+    # the cam's torque over the turn against a 80 N spring load and a 1.5 kg follower: the
+    # greatest at the flank's end (rising), T ω = (F + m a) v there
+    data |= {"masses": {"R": {"mass": "1.5 kg"}},
+             "forces": {"Spring": {"at": "R", "force": ["0 N", "-80 N"]}},
+             "questions": [{"find": "angle", "quantity": "Tin", "condition": "max",
+                            "unit": "deg", "samples": 24}]}
+    a_end = w * w * p * (2 - math.cos(the) ** 2) / math.cos(the) ** 3
+    (fd,) = conditions.answer_all(parse_scene(data, file=str(case)))
+    assert list(fd.reported()) == pytest.approx(edges[:1], rel=1e-10)
+    assert list(fd.values()) == pytest.approx([(80 + 1.5 * a_end) * v_end / w], rel=1e-9)
+    for quantity_, change, words in (
+            ("as(R)", {}, "slot on a straight flank"),
+            ("Tin", {"springs": {"S": {"at": "R", "stiffness": "1 N/mm", "direction": "90 deg",
+                                       "extension": "-5 mm"}}}, "at this instant only"),
+            ("Tin", {"masses": {"OK": {"mass": "2 kg"}}}, r"masses.OK\] on a cam"),
+            ("Tin", {"forces": {"P": {"at": "K", "force": ["1 N", "0 N"]}}}, "no point of")):
+        bad = {**data, **change, "questions": [{"find": "angle", "quantity": quantity_,
+                                                "condition": "max", "unit": "deg"}]}
+        with pytest.raises(SceneError, match=words):
+            conditions.answer_all(parse_scene(bad, file=str(case)))

@@ -34,11 +34,13 @@ def _kinds_of(path: Path) -> set[str]:
 
 
 KINDS = {p: _kinds_of(p) for p in CASES}
+#: a cam stated by its profile last: its equivalent crank takes no mass of its own (_loaded)
+CAM_LAST = sorted(CASES, key=lambda p: "[cam_profiles" in p.read_text(encoding="utf-8"))
 
 
 def _representatives() -> dict[str, Path]:
     out: dict[str, Path] = {}
-    for p in CASES:
+    for p in CAM_LAST:
         for k in sorted(KINDS[p]):
             out.setdefault(k, p)
     return out
@@ -131,7 +133,7 @@ def test_each_method_handles_each_kind_or_refuses_it_in_words(kind, method):
     if method == "the force-polygon construction":
         # it runs after `polygons forces` (whose own refusals are the row above): a case of
         # this kind that the force analysis takes
-        path = next((p for p in CASES if kind in KINDS[p] and _analysed_ok(p)), None)
+        path = next((p for p in CAM_LAST if kind in KINDS[p] and _analysed_ok(p)), None)
         if path is None:
             return
     try:

@@ -86,6 +86,8 @@ OWN_EXACT_CHECK = {
                                          "test_the_new_cases_exact_answers_are_the_closed_forms"),
     "bar-on-cylinder-rod-angle": ("test_contacts.py",
                                   "test_the_bar_on_a_cylinder_placed_by_its_angle"),
+    "cam-profile-tangent-flank": ("test_cam_profiles.py",
+                                  "test_the_tangent_flank_case_is_the_books_closed_form"),
     "cam-profile-circular-arc": ("test_cam_profiles.py",
                                  "test_case_exact_answers_are_the_closed_form"),
     "ratio-four-bar": ("test_conditions.py",

@@ -256,10 +256,12 @@ def test_a_ratio_is_graded_like_any_other_answer(capsys):
 
 
 def test_a_question_on_a_cam_is_refused_in_words():
+    """A cam stated by its centre of curvature ([cams]) is that instant's linkage only (a cam
+    stated by its profile is answered: test_cam_profiles)."""
     import tomllib
     from polygons.errors import SceneError
     from polygons.scene import parse_scene
-    path = ROOT / "cases" / "cam-profile-circular-arc.toml"
+    path = ROOT / "cases" / "cam-roller-follower.toml"
     data = tomllib.loads(path.read_text(encoding="utf-8"))
     data["questions"] = [{"find": "angle", "quantity": "vs(R)", "condition": "max",
                           "unit": "deg"}]

@@ -39,11 +39,16 @@ def _awkward(n: int, seed: int = 0) -> np.ndarray:
 
 
 def test_the_writer_in_python_gives_savetxt_bytes():
-    """The loop numba compiles, run as plain Python (the logic, with or without numba)."""
+    """The formatter numba compiles, run as plain Python (the logic, with or without numba)."""
     x = _awkward(300)
     hi, lo, sc = csv_text._powers()
     out = np.empty(x.size * 25, np.uint8)
-    used = csv_text._rows(x[:, None], hi, lo, sc, out, csv_text._put)
+    dig = np.empty(17, np.int64)
+    used = 0
+    for v in x:
+        used = csv_text._put(float(v), hi, lo, sc, out, used, dig)
+        out[used] = 10
+        used += 1
     assert out[:used].tobytes() == _savetxt(x)
 
 

@@ -39,13 +39,15 @@ WHERE = {
     "polygons.sweep_range": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
+    "polygons.fused": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
     "polygons.centres_links": "interpreters", "polygons.centres_velocity": "interpreters",
     "polygons.classic": "interpreters",
     "polygons.kennedy": "interpreters",
     "polygons.streams": "interpreters",
     "polygons.forces": "forces",
-    "polygons.report": "render", "polygons.csv_text": "render", "diagrams": "render",
+    "polygons.report": "render", "polygons.csv_text": "render",
+    "polygons.csv_jit": "render", "polygons.csv_format": "render", "diagrams": "render",
     "polygons.cli": "commands", "polygons.api": "commands", "polygons": "commands",
 }
 

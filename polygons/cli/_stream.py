@@ -121,8 +121,9 @@ def _columns(st, xs, res, points, links):
     zero = (0.0, 0.0)
     for lab in points:
         P = res["pos"][lab]
-        V = res["vel"].get(lab) or zero
-        A = res["acc"].get(lab) or zero
+        V = res["vel"].get(lab)
+        A = res["acc"].get(lab)
+        V, A = zero if V is None else V, zero if A is None else A
         cols += [(f"{lab}.x", "m", P[0]), (f"{lab}.y", "m", P[1]),
                  (f"{lab}.vx", "m/s", V[0]), (f"{lab}.vy", "m/s", V[1]),
                  (f"{lab}.ax", "m/s^2", A[0]), (f"{lab}.ay", "m/s^2", A[1])]

@@ -146,10 +146,16 @@ def circle_line_cols(px, py, length, gx, gy, ex, ey, sigma):
     """:func:`circle_line_scalar`'s signature over arrays: :func:`circle_line` itself (the
     guide fixed, or moving: a lever's slot, its point and direction (N,) arrays too)."""
     shape = np.broadcast_shapes(*(np.shape(v) for v in (px, py, length, gx, gy, ex, ey)))
-    def col(a, b):
-        return np.array([np.broadcast_to(a, shape), np.broadcast_to(b, shape)])
-    X, m = circle_line(col(px, py), length, col(gx, gy), col(ex, ey), sigma)
-    return X[0], X[1], m
+    # coordinate by coordinate, as circle_line (no (2, N) copies of the operands)
+    wx, wy = gx - px, gy - py
+    bq = ex * wx + ey * wy
+    disc = bq * bq - (wx * wx + wy * wy - length * length)
+    ok = disc >= -CLOSE_TOL * length * length
+    root = np.sqrt(np.where(ok, np.maximum(disc, 0.0), np.nan))
+    t = -bq + sigma * root
+    m = np.where(ok, root, -np.sqrt(np.abs(disc))) / length
+    return (np.broadcast_to(gx + t * ex, shape), np.broadcast_to(gy + t * ey, shape),
+            np.broadcast_to(m, shape))
 
 
 def end_margin_scalar(m0, t, lo, hi, tol):

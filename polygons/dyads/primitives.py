@@ -309,6 +309,14 @@ class RigidImage:
     p: str
     q: str
 
+    def offsets(self, scene) -> tuple[float, float, float]:
+        """(along, fraction, left) of [points.X]: ``along`` stated (fraction 0), or the
+        fraction of |PQ| (along 0)."""
+        bp = scene.points[self.x]
+        if bp.along is not None:
+            return bp.along, 0.0, bp.left
+        return 0.0, bp.fraction, bp.left
+
     def locate(self, scene, pos, sigma, x):
         bp = scene.points[self.x]
         d = pos[self.q] - pos[self.p]
