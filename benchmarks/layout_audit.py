@@ -55,16 +55,14 @@ def drawings_of(path: Path, handout: bool = True, forces: bool = True, stages: b
         if has_forces(scene):
             an = analyse(scene)
             from diagrams import fbd, forcepoly
-            from diagrams.handout_forces import WIDTH_MM
-            from diagrams.layout import restack
+            from diagrams.handout_forces import printed
             for st in an.states:
                 for stem, d in (forcepoly.group_drawings(an, st) + forcepoly.joint_drawings(an, st)
                                 + forcepoly.lever_drawings(an, st)):
                     yield kind_of(stem, d), stem, to_svg(d), 1.0
                     if handout and d.stage is None:    # as the handout prints it
-                        r = restack(d, WIDTH_MM) if d.width > WIDTH_MM else d
-                        yield (f"handout-{kind_of(stem, d)}", f"handout:{stem}", to_svg(r),
-                               min(1.0, WIDTH_MM / r.width))
+                        r, _, k = printed(d)
+                        yield (f"handout-{kind_of(stem, d)}", f"handout:{stem}", to_svg(r), k)
             for stem, d in fbd.drawings(an):
                 yield "free-body", stem, to_svg(d), 1.0
     except PolygonsError:

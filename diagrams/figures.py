@@ -227,6 +227,7 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
                 if k2 >= k * 0.99:
                     break
                 k = k2
+            r = uncrowded(r)
             out.append(r)
             least = min([least] + [x.size * min(k2, 1.0) for x in _texts(r.groups)
                                    if x.role in LABEL_ROLES])
@@ -243,6 +244,75 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
             break                               # rounding)
         ts = round(ts * PRINTED_LABEL / printed * 1.03, 2)
     return out
+
+
+#: which of two overlapping labels of a stage figure is kept (higher first): the stage's own
+#: (not faded) before the earlier ones; among those the new vector's name, its vertex, its
+#: construction line; among the earlier ones the vertices, the lines, then the vectors
+_KEEP = {(False, "component"): 6, (False, "vertex"): 5, (False, "line"): 4,
+         (True, "vertex"): 3, (True, "line"): 2, (True, "component"): 1}
+
+
+def uncrowded(d):
+    """Stage figure ``d`` without the labels that would print on another one: its labels are
+    set larger than the finished drawing's so that they print legibly once the figure is
+    reduced to its column, and where the polygon is crowded (a triad's near-coincident
+    vertices) they no longer all find room.  The thumbnail keeps the stage's new labels and
+    drops the earlier ones that collide (an earlier vector's name first, then a line's, then
+    a vertex's), measured as the layout audit measures the SVG (:mod:`diagrams.audit`):
+    the finished drawing beside it names everything."""
+    import xml.etree.ElementTree as ET
+    from dataclasses import replace
+
+    from .audit import NS, OVERLAP_MM, _text_box
+    from .model import Group, Text
+    from .svg import to_svg
+    count, what = [0], {}
+
+    def tag(it):
+        if isinstance(it, Group):
+            return replace(it, items=tuple(tag(i) for i in it.items))
+        if isinstance(it, Text):
+            count[0] += 1
+            what[count[0]] = (it.faded, it.role)
+            return replace(it, ident=f"uncrowded-{count[0]}")
+        return it
+    tagged = replace(d, groups=tuple(tag(g) for g in d.groups))
+    texts = []                    # (priority, index, boxes)
+    for t in ET.fromstring(to_svg(tagged)).iter(f"{NS}text"):
+        ident = t.get("id") or ""
+        if not ident.startswith("uncrowded-"):
+            continue
+        _, _, boxes = _text_box(t)
+        i = int(ident.split("-")[1])
+        pri = _KEEP.get(what[i], 9)         # a bar's, an inset's text: always kept
+        texts.append((pri, i, boxes))
+    texts.sort(key=lambda r: (-r[0], r[1]))
+    kept, drop = [], set()
+    for pri, i, boxes in texts:
+        if pri < 9 and any(min(a[2], b[2]) - max(a[0], b[0]) > OVERLAP_MM
+                           and min(a[3], b[3]) - max(a[1], b[1]) > OVERLAP_MM
+                           for a in boxes for b in kept):
+            drop.add(i)
+            continue
+        kept += boxes
+    if not drop:
+        return d
+    count[0] = 0
+
+    def keep(items):
+        out = []
+        for it in items:
+            if isinstance(it, Group):
+                out.append(replace(it, items=keep(it.items)))
+                continue
+            if isinstance(it, Text):
+                count[0] += 1
+                if count[0] in drop:
+                    continue
+            out.append(it)
+        return tuple(out)
+    return replace(d, groups=keep(d.groups), meta={**d.meta, "dropped": len(drop)})
 
 
 #: the roles of a stage figure's labels that must print :data:`PRINTED_LABEL` mm high

@@ -122,11 +122,17 @@ def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = No
     _header(doc, sol, worksheet, kind)
     _problem(doc, sol, worksheet)
     _space(doc, sol, figs, worksheet)
-    for diagram in scene.solve:
-        if diagram in sol.vertices:
-            _construction(doc, sol, figs, diagram, worksheet)
+    drawn = [d for d in scene.solve if d in sol.vertices]
+    # a worksheet whose last drawing area takes a whole page has its answer table before
+    # it, under that diagram's steps: after it, the table alone would make a last page
+    early = bool(worksheet and drawn and _area_size(figs, drawn[-1]) == "portrait")
+    for diagram in drawn:
+        _construction(doc, sol, figs, diagram, worksheet,
+                      (lambda: _blanks(doc, sol, file)) if early and diagram == drawn[-1]
+                      else None)
     if worksheet:
-        _blanks(doc, sol, file)
+        if not early:
+            _blanks(doc, sol, file)
     else:
         _results(doc, sol)
         if centres:
@@ -242,7 +248,7 @@ def _explains_for(step: Step) -> list[str]:
 
 
 def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
-                  worksheet: bool) -> None:
+                  worksheet: bool, before_area=None) -> None:
     scene = sol.scene
     n_sec = doc.sec()
     what = WHAT[diagram]
@@ -327,7 +333,7 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                         f"{sym(words(step.reason))}</p>\n")
                 f = formula_with_numbers(step, sol.scene)
                 if f:
-                    doc.add(f'<p class="formula answer">{sym(words(f))}</p>\n')
+                    doc.add(f'<p class="formula answer">{_meet_kept(sym(words(f)))}</p>\n')
             if not narrow:
                 doc.add(fig)
             doc.add("</li>\n")
@@ -342,6 +348,8 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                        "the point a long way.") + "</p>\n")
     doc.add("</section>\n")
     if worksheet:
+        if before_area is not None:
+            before_area()
         _area(doc, sol, figs, diagram)
     else:
         title = figs.drawing[diagram].title if diagram in figs.drawing else what
@@ -358,6 +366,18 @@ def _example_pair(sol: Solution) -> tuple[str, str]:
         if a not in ground and b not in ground:
             return a, b
     return pairs[0] if pairs else ("A", "B")
+
+
+def _area_size(figs: Figures, diagram: str) -> str | None:
+    """The drawing area a worksheet gives ``diagram``: 'A5' when the key's drawing (its
+    frame) fits one, else a whole 'portrait' page (None: no finished drawing)."""
+    final = figs.drawing.get(diagram)
+    lay = final.meta.get("layout") if final is not None else None
+    if lay is None:
+        return None
+    fw, fh = lay.frame.x1 - lay.frame.x0, lay.frame.y1 - lay.frame.y0
+    aw, ah = AREAS["A5"]
+    return "A5" if fw <= aw and fh <= ah else "portrait"
 
 
 def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
@@ -378,11 +398,9 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     frame = lay.frame
     fw, fh = frame.x1 - frame.x0, frame.y1 - frame.y0
     k = 1.0
-    for name in ("A5", "portrait"):
-        aw, ah = AREAS[name]
-        if fw <= aw and fh <= ah:
-            break
-    else:
+    name = _area_size(figs, diagram)
+    aw, ah = AREAS[name]
+    if not (fw <= aw and fh <= ah):
         name = "portrait"
         aw, ah = AREAS[name]
         scale = make(scale.quantity, round_up(scale.per_cm * max(fw / aw, fh / ah)))
@@ -619,3 +637,13 @@ def _footer(doc: _Doc, sol: Solution, worksheet: bool, file: str) -> None:
 
 __all__ = ["handout", "figures", "Figures", "redact_answers", "worksheet_questions",
            "textbook_name", "formula_with_numbers", "stage_of"]
+
+
+_MEET = re.compile(r" \((lines meet at [^()]*?°)\)$")
+
+
+def _meet_kept(html: str) -> str:
+    """A worked line's closing '(lines meet at 90°)' kept in one piece and on the line of
+    the value it qualifies (a no-break space before it, the words set unbroken): never a
+    line of its own, opening a column (issue 33)."""
+    return _MEET.sub(lambda m: f'\u00a0<span class="meet">({m.group(1)})</span>', html)

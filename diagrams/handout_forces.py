@@ -23,6 +23,7 @@ import numpy as np
 from polygons.errors import SceneError, UnsupportedError
 from polygons.report import sense
 
+from .audit import MIN_TEXT_MM
 from .html import esc, inline_svg, svg_size, sym
 
 #: printed width available to a figure, mm (the portrait page's text width)
@@ -133,22 +134,57 @@ def effort_words(an, e: float) -> str:
     return f"{e:.8g} N".replace("-", "−")
 
 
-def _figure(stem: str, drawing, title: str) -> str:
-    """The finished drawing at its stated scale: its key and legend moved below it where
-    beside it they would be wider than the page and below it they are not
-    (:func:`diagrams.layout.restack`); a drawing wider than the page even so is reduced to
-    its width, and the note under it says so (its scale bar shrinks with it)."""
+#: the lowest a reduced figure's text may print (mm): the layout audit's rule
+MIN_PRINTED_TEXT = MIN_TEXT_MM
+
+
+def printed(drawing):
+    """(drawing, printed width mm, reduction) of a finished force drawing as the handout
+    prints it: its key and legend moved below it where beside it they would be wider than
+    the page and below it they are not (:func:`diagrams.layout.restack`); a drawing wider
+    than the page even so is reduced to its width, its text set larger first so that every
+    text still prints :data:`MIN_PRINTED_TEXT` mm high (size ≥ 2.0 / reduction: at the
+    ×0.71 of a triad's joint, 2.8 mm labels become 2.82 mm and the bar's 2.6 mm figures too)."""
     from .layout import restack
     from .svg import to_svg
-    svg = to_svg(drawing)
-    w, _ = svg_size(svg)
+    w, _ = svg_size(to_svg(drawing))
     if w > WIDTH_MM:
-        narrow = to_svg(restack(drawing, WIDTH_MM))
-        if svg_size(narrow)[0] <= WIDTH_MM:
-            svg, w = narrow, svg_size(narrow)[0]
-    note = ("" if w <= WIDTH_MM else
+        narrow = restack(drawing, WIDTH_MM)
+        nw = svg_size(to_svg(narrow))[0]
+        if nw <= WIDTH_MM:
+            return narrow, nw, 1.0
+        drawing, w = narrow, nw
+    if w <= WIDTH_MM:
+        return drawing, w, 1.0
+    k = WIDTH_MM / w
+    return _text_at_least(drawing, MIN_PRINTED_TEXT / k), WIDTH_MM, k
+
+
+def _text_at_least(d, size: float):
+    """``d`` with every text smaller than ``size`` (mm) set at ``size`` (rounded up to a
+    hundredth), in place: a text's anchor point stays where it was."""
+    from dataclasses import replace
+
+    from .model import Group, Text
+    size = math.ceil(size * 100.0) / 100.0
+
+    def fix(it):
+        if isinstance(it, Group):
+            return replace(it, items=tuple(fix(i) for i in it.items))
+        if isinstance(it, Text) and it.size < size:
+            return replace(it, size=size)
+        return it
+    return replace(d, groups=tuple(fix(g) for g in d.groups))
+
+
+def _figure(stem: str, drawing, title: str) -> str:
+    """The finished drawing at its stated scale, as :func:`printed` sets it; a drawing
+    reduced to the page width says so under it (its scale bar shrinks with it)."""
+    from .svg import to_svg
+    d, w, k = printed(drawing)
+    note = ("" if k >= 1.0 else
             '<p class="figure-note">Reduced to the page width (its scale bar with it).</p>')
-    fig = inline_svg(svg, stem, "figure", min(w, WIDTH_MM), title)
+    fig = inline_svg(to_svg(d), stem, "figure", min(w, WIDTH_MM), title)
     return f'<figure class="diagram full">{fig}</figure>{note}\n'
 
 

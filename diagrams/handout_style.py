@@ -105,6 +105,7 @@ li.step .say { margin: 0.5mm 0; }
 li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weight: bold;
                display: inline-block; min-width: 8mm; }
 .formula { font-size: 9.5pt; margin: 0.5mm 0 1mm 8mm; }
+.formula .meet { white-space: nowrap; }
 .formula.symbolic { color: #333; }
 .explain { border: 0.3mm solid #000; padding: 1mm 2.5mm; margin: 1mm 0 2mm 0;
            break-inside: avoid; page-break-inside: avoid; font-size: 8pt; line-height: 1.28; }

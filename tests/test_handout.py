@@ -603,3 +603,15 @@ def test_key_and_legend_beside_are_moved_up_to_the_drawing_before_going_below():
     assert abs(kb.x0 - (drawn.x1 + GAP)) < 1e-6 and abs(lb.x0 - kb.x0) < 1e-6
     assert lb.y0 > drawn.y0                                         # beside, not below
     assert d.width <= PAGE[0] + 2 * (MARGIN - PLATE_MARGIN) + 1e-9
+
+
+def test_worksheet_answer_table_never_alone_on_a_last_page():
+    """After a last drawing area that takes a whole page the answer table would print alone
+    on a page of its own: it comes before that area, under the diagram's steps (WE2's
+    acceleration area is a whole page); after an A5 area (WE4's) it stays last."""
+    from diagrams.handout import _area_size
+    for stem, early in (("s001-we2", True), ("s001-we4", False)):
+        sol, _, ws = pages(CASES / f"{stem}.toml")
+        assert (_area_size(figures_of(sol), "acceleration") == "portrait") is early
+        table, area = ws.find('id="your-answers"'), ws.find('id="plate-area-acceleration"')
+        assert 0 < area and 0 < table and (table < area) is early, stem

@@ -90,3 +90,27 @@ def test_a_vector_too_short_for_any_inset_is_said_not_drawn():
     assert any(r.startswith("c1\u2060s2 ≈ 0 (0.03 mm at this scale") for r in rows), rows
     ins = [i for i in lay.insets if "c1" in i.names]
     assert ins and ins[0].k >= 8
+
+
+def test_a_triads_handout_stage_thumbnails_keep_the_layout_rule(monkeypatch):
+    """The handout's stage thumbnails print 56 mm wide with labels set larger so they print
+    2.5 mm high: the triad's crowded acceleration polygon no longer has room for them all.
+    Each thumbnail keeps its stage's own labels and drops the earlier ones that would print
+    on another (diagrams.figures.uncrowded); measured after the column's reduction, none
+    overlaps, and some were dropped (kept, they would overlap)."""
+    import diagrams
+    from diagrams import figures
+    from diagrams.audit import measure, verdict
+    from diagrams.svg import to_svg
+    from polygons.api import solve
+    sol = solve(str(CASES / "forces-triad.toml")).solution
+    d = next(d for d in diagrams.drawings(sol, None, None, False) if d.name == "acceleration")
+    lay = d.meta["layout"]
+    stages = figures._stages(sol, "acceleration", lay.scale, None, lay)
+    breaches = []
+    for s in stages:
+        k = figures.stage_width(s.width, s.height) / s.width
+        breaches += verdict(measure(to_svg(s), f"forces-triad/handout:{s.name}", k))
+    assert len(stages) >= 10 and not breaches, breaches[:10]
+    # crowded: labels were dropped (kept, they would print on others)
+    assert sum(s.meta.get("dropped", 0) for s in stages) > 0

@@ -189,6 +189,33 @@ class Triad:
                 f"(the plate {self.plate} cannot turn further this way)")
 
     # ------------------------------------------------------------ construction
+    @staticmethod
+    def assur_velocity(b: Builder, A, B, LB, D, C, LC, S, X, P) -> int:
+        """v_S from the two lines ⟂ AB through a and ⟂ DC through d (S, where AB and DC
+        produced meet, is a point of the plate P on both), then the line ⟂ SX through s that
+        carries v_X: the number of that line (the group meets it with X's own line)."""
+        a, d, s = b.names.of(A), b.names.of(D), b.names.of(S)
+        Cm = Component
+        n1 = b.add(Kind.LINE, Op.LINE_PERP, (A, B), f"line ⟂ {A}{B}", a, None,
+                   "relative_velocity", f"(v_{S})_{A}", f"(v_{S})_{A} ⟂ {A}{B}",
+                   f"The auxiliary point {S}, where {A}{B} and {D}{C} produced meet, is a "
+                   f"point of the plate {P} on {A}{B} produced: its velocity relative to "
+                   f"{A} is perpendicular to {A}{B}. Through {a} draw a line ⟂ {A}{B}.",
+                   component=Cm.CONSTRUCTION, link=LB)
+        n2 = b.add(Kind.LINE, Op.LINE_PERP, (D, C), f"line ⟂ {D}{C}", d, None,
+                   "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
+                   f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
+                   component=Cm.CONSTRUCTION, link=LC)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
+              f"{s} = intersection of the two lines",
+              f"The lines meet at {s}: {b.names.pole}{s} is the velocity of the "
+              f"auxiliary point {S}.", (n1, n2), component=Cm.RESULTANT)
+        n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
+                   "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
+                   f"{X} and {S} are points of the plate: through {s} draw a line "
+                   f"⟂ {S}{X}.", component=Cm.CONSTRUCTION, link=P)
+        return n3
+
     def emit(self, b: Builder) -> None:
         # B, C: the corners whose links meet at S; X the third (the roles, not the labels)
         (B, A, LB), (C, D, LC), (X, E, LX) = self.roles
@@ -197,24 +224,7 @@ class Triad:
         a, d, e, s, x = V(A), V(D), V(E), V(S), V(X)
         Cm = Component
         if b.velocity:
-            n1 = b.add(Kind.LINE, Op.LINE_PERP, (A, B), f"line ⟂ {A}{B}", a, None,
-                       "relative_velocity", f"(v_{S})_{A}", f"(v_{S})_{A} ⟂ {A}{B}",
-                       f"The auxiliary point {S}, where {A}{B} and {D}{C} produced meet, is a "
-                       f"point of the plate {P} on {A}{B} produced: its velocity relative to "
-                       f"{A} is perpendicular to {A}{B}. Through {a} draw a line ⟂ {A}{B}.",
-                       component=Cm.CONSTRUCTION, link=LB)
-            n2 = b.add(Kind.LINE, Op.LINE_PERP, (D, C), f"line ⟂ {D}{C}", d, None,
-                       "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
-                       f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
-                       component=Cm.CONSTRUCTION, link=LC)
-            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
-                  f"{s} = intersection of the two lines",
-                  f"The lines meet at {s}: {b.names.pole}{s} is the velocity of the "
-                  f"auxiliary point {S}.", (n1, n2), component=Cm.RESULTANT)
-            n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
-                       "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
-                       f"{X} and {S} are points of the plate: through {s} draw a line "
-                       f"⟂ {S}{X}.", component=Cm.CONSTRUCTION, link=P)
+            n3 = self.assur_velocity(b, A, B, LB, D, C, LC, S, X, P)
             n4 = b.add(Kind.LINE, Op.LINE_PERP, (E, X), f"line ⟂ {E}{X}", e, None,
                        "relative_velocity", f"(v_{X})_{E}", f"(v_{X})_{E} ⟂ {E}{X}",
                        f"Through {e} draw a line ⟂ {E}{X}: the velocity of {X} relative to "

@@ -182,34 +182,82 @@ def _residual(q, pose) -> float:
                abs(math.dist(X, (ex, ey)) - e))
 
 
+def _closures_from(qq, size) -> list[tuple[float, float, float]]:
+    """Every closure (bx, by, φ) of the group ``qq`` (its plate's own η) by the polynomial
+    eliminated from its first corner: each real root polished by Newton, checked against the
+    three lengths."""
+    got = _phi0(qq)
+    if got is None:
+        return []
+    phi0, c = got
+    out = []
+    for t in real_roots(c):
+        phi = phi0 + 2.0 * math.atan(t)
+        cands = [(bx, by, phi) for bx, by in _b_candidates(phi, qq)
+                 if math.isfinite(bx) and math.isfinite(by)]
+        # each candidate polished: where Cramer's determinant nearly vanishes two closures
+        # share (nearly) one φ and differ in B — each candidate may reach another
+        for pose in cands:
+            new, _ = _newton(qq, pose, size)
+            if new is not None and _residual(qq, new) <= _residual(qq, pose):
+                pose = new
+            if _residual(qq, pose) <= 1e-9 * size:
+                out.append(pose)
+    return out
+
+
+def _routes(q):
+    """The group restated from each corner in turn (B, then C, then X first): (its
+    parameters, a function taking its closure (bx′, by′, φ′) back to the plate pose (bx, by,
+    φ)).  Eliminated from B the polynomial cannot tell apart two closures whose plate angles
+    nearly agree where DC ∥ EX (Cramer's determinant of B vanishes there: the plate translates
+    along a line at one φ), from C where AB ∥ EX, from X where AB ∥ DC; the union of the three
+    misses a closure only where all three links are parallel."""
+    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = q
+    yield q, (lambda pose: pose)
+    # from C: C at the origin, B at (L, 0), X at (L − ξ, −η); φ′ = φ + π
+    def from_c(pose):
+        cx, cy, ph = pose
+        return (cx + L * math.cos(ph), cy + L * math.sin(ph), ph - math.pi)
+    yield (dx, dy, d, ax, ay, a, ex, ey, e, L, L - xi, -eta), from_c
+    # from X: X at the origin, B at (|XB|, 0), C where the plate puts it
+    lxb = math.hypot(xi, eta)
+    if lxb > 0.0:
+        ux, uy = -xi / lxb, -eta / lxb            # X→B in the plate frame
+        wx, wy = L - xi, -eta                      # X→C
+        xi3, eta3 = wx * ux + wy * uy, wy * ux - wx * uy
+        beta = math.atan2(uy, ux)                  # the direction of X→B in the plate frame
+
+        def from_x(pose):
+            xx, xy, ph = pose                      # ph: the direction of X→B
+            bx, by = xx + lxb * math.cos(ph), xy + lxb * math.sin(ph)
+            return (bx, by, ph - beta)
+        # B on the circle (A, a) second, C on (D, d) third, in the frame X→B
+        yield (ex, ey, e, ax, ay, a, dx, dy, d, lxb, xi3, eta3), from_x
+
+
 def closures(p, size=None) -> list[tuple[float, float, float, float]]:
     """Every closure (bx, by, φ, η) of the group with parameters ``p`` = (ax, ay, a, dx, dy, d,
-    ex, ey, e, L, ξ, η, mirror): each real root of the polynomial (and, with ``mirror``, of
-    the mirrored plate's), polished by Newton and checked against the three lengths."""
+    ex, ey, e, L, ξ, η, mirror): each real root of the polynomial eliminated from each corner
+    in turn (:func:`_routes`; and, with ``mirror``, of the mirrored plate's), polished by
+    Newton and checked against the three lengths; each closure once."""
     *q, mirror = p
     q = tuple(float(v) for v in q)
     if not all(math.isfinite(v) for v in q):
         return []
     size = size or max(abs(v) for v in q) or 1.0
-    out = []
+    out, seen = [], []
     for eta in ((q[11], -q[11]) if mirror and q[11] != 0.0 else (q[11],)):
         qq = q[:11] + (eta,)
-        got = _phi0(qq)
-        if got is None:
-            continue
-        phi0, c = got
-        for t in real_roots(c):
-            phi = phi0 + 2.0 * math.atan(t)
-            cands = [(bx, by, phi) for bx, by in _b_candidates(phi, qq)
-                     if math.isfinite(bx) and math.isfinite(by)]
-            if not cands:
-                continue
-            pose = min(cands, key=lambda ps: _residual(qq, ps))
-            new, _ = _newton(qq, pose, size)
-            if new is not None and _residual(qq, new) <= _residual(qq, pose):
-                pose = new
-            if _residual(qq, pose) <= 1e-9 * size:
-                out.append(pose + (eta,))
+        for rq, back in _routes(qq):
+            for pose in _closures_from(rq, size):
+                pose = back(pose)
+                pts = _corners_of(qq, pose, eta)
+                if _residual(qq, pose) <= 1e-9 * size and all(
+                        max(math.dist(pts[i], o[i]) for i in range(3)) > 1e-9 * size
+                        for o in seen):
+                    seen.append(pts)
+                    out.append(pose + (eta,))
     return out
 
 
@@ -448,27 +496,40 @@ def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rx
     times the last step's motion.  Where the followed closure is lost (it met another and both vanished) the
     positions beyond are NaN and the margin −1: the limit of travel."""
     arrs = [np.asarray(v, dtype=float) for v in (ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta)]
+
+    def misfit(P):
+        """How far the reference corners are from closing the group at each position."""
+        return (np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
+                + np.abs(np.hypot(rxx - P[6], rxy - P[7]) - P[8]))
+
+    return follow_closure(arrs, misfit, _from_reference, _follow, construction_sine, mirror,
+                          (rbx, rby), (rxx, rxy), size)
+
+
+def follow_closure(arrs, misfit, from_reference, follow, sine, mirror, ref_b, ref_x, size):
+    """A class-III group's closure over N positions by continuation (:func:`triad_cols`, and
+    the triad with a block's): ``arrs`` the group's data columns, ``misfit(P)`` how far the
+    reference corners are from closing it at each position, ``from_reference``/``follow``
+    the group's Newton starts, ``sine`` its smallest construction sine.  Returns the seven
+    columns (B, C, X, margin), NaN and margin −1 beyond the followed closure's end."""
     shape = np.broadcast_shapes(*(v.shape for v in arrs))
     n = int(np.prod(shape)) if shape else 1
     cols = [np.broadcast_to(v, shape).reshape(n).tolist() for v in arrs]
     out = np.full((7, n), np.nan)
     out[6] = -1.0
     qs = [tuple(c[k] for c in cols) for k in range(n)]
-    ref_b, ref_x = (rbx, rby), (rxx, rxy)
     start, best, first = None, math.inf, None
     # first the position where the reference closes the group best (the reference is a
     # closure at one of the inputs: the scene's own, or the one a sweep was anchored at),
     # then probes through the rest
     with np.errstate(all="ignore"):
-        P = np.array(cols)
-        r = (np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
-             + np.abs(np.hypot(rxx - P[6], rxy - P[7]) - P[8]))
+        r = misfit(np.array(cols))
     order = ([int(np.nanargmin(r))] if np.isfinite(r).any() else []) \
         + list(range(0, n, max(1, n // 8)))
     for k in order:
         if not all(math.isfinite(v) for v in qs[k]):
             continue
-        res = _from_reference(qs[k], mirror, ref_b, ref_x, size)
+        res = from_reference(qs[k], mirror, ref_b, ref_x, size)
         if res is None:
             continue
         dist = max(math.dist(res[0][0], ref_b), math.dist(res[0][2], ref_x))
@@ -489,14 +550,14 @@ def triad_cols(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rx
                         break
                     (B, _, X), pose, _ = res
                     reach = 0.25 * size if moved is None else max(4.0 * moved, 1e-3 * size)
-                    new = _follow(qs[k], mirror, B, X, size, pose, reach=reach)
+                    new = follow(qs[k], mirror, B, X, size, pose, reach=reach)
                     if new is None:
                         break
                     moved = max(math.dist(new[0][0], B), math.dist(new[0][2], X))
                     res = new
                 (B, C, X), _, m = res
                 out[:, k] = (*B, *C, *X,
-                             construction_sine(qs[k], B, C, X) if m > 0 else m)
+                             sine(qs[k], B, C, X) if m > 0 else m)
                 done[k] = True
     return tuple(o.reshape(shape) if shape else o[0] for o in out)
 
