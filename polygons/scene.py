@@ -38,11 +38,9 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from . import cam_profiles, contacts, topology
+from . import contacts, topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
-from .exam_table import spec as exam_spec
-from .question_table import check as check_questions
 from .loads import parse as parse_loads
 from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record, refuse_control_characters
@@ -229,6 +227,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     if isinstance(data, dict) and "ground" not in data and _lone_wheel(data):
         data = {**data, "ground": _surface_point(data)}
     if isinstance(data, dict) and "cam_profiles" in data:     # a cam by its profile
+        from . import cam_profiles              # imported only here: a quicker start
         data = cam_profiles.rewrite(data, file)
     data, equivalents = contacts.rewrite(data, file) if isinstance(data, dict) else (data, ())
     r = _Reader(file)
@@ -580,8 +579,13 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
     scene = record(Scene, **{**vars(scene), "loads": loads})
-    exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
-    check_questions(scene, parse_quantity_expr, default_tol)   # [[questions]] (question_table)
+    # (the tables' modules imported only for a scene that has them: a quicker start)
+    if "exam" in scene.extra:
+        from .exam_table import spec as exam_spec
+        exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
+    if "questions" in scene.extra:
+        from .question_table import check as check_questions
+        check_questions(scene, parse_quantity_expr, default_tol)   # [[questions]]
     return scene
 
 
