@@ -17,7 +17,7 @@ print(code, " ".join(sorted(m for m in sys.modules
 LAZY = ("matplotlib", "svgwrite", "diagrams", "cairosvg", "numba", "tqdm", "tomllib", "json",
         "difflib",
         # the tables and triads this scene has none of: imported where they are used
-        "polygons.cam_profiles", "polygons.pins", "polygons.question_table", "polygons.forces",
+        "polygons.cam_profiles", "polygons.contacts", "polygons.pins", "polygons.question_table", "polygons.forces",
         "numpy.polynomial")
 
 
