@@ -136,11 +136,19 @@ def _assur_rows(prog, xs: np.ndarray, res: dict, run):
     pos = {k: np.asarray(v, dtype=float) for k, v in res["pos"].items()}
 
     def sine(d, via):
+        if hasattr(d, "pair_sine"):         # a group saying its own pairs (a block at a corner)
+            return d.pair_sine(pos, via)
         (p1, o1, _), (p2, o2, _), _ = replace(d, via=via).roles
         u = pos[p1] - pos[o1].reshape(2, -1)
         w = pos[p2] - pos[o2].reshape(2, -1)
         with np.errstate(all="ignore"):
             return np.abs(u[0] * w[1] - u[1] * w[0]) / (np.hypot(*u) * np.hypot(*w))
+
+    def words(d, via):
+        if hasattr(d, "pair_words"):
+            return d.pair_words(via)
+        (q1, r1, _), (q2, r2, _), _ = replace(d, via=via).roles
+        return f"{r1}{q1} and {r2}{q2}"
     notes = []
     for gi, d in enumerate(groups):
         s = np.array([sine(d, v) for v in range(3)])
@@ -164,10 +172,8 @@ def _assur_rows(prog, xs: np.ndarray, res: dict, run):
             S = np.asarray(res["pos"][d.s])          # S itself: where that pair meets
             if S.flags.writeable:
                 S[:, take] = np.asarray(other["pos"][d.s])[:, take - take[0]]
-            (q1, r1, _), (q2, r2, _), _ = replace(d, via=via).roles
-            pairs.append(f"{r1}{q1} and {r2}{q2} ({len(take)})")
-        (p1, o1, _), (p2, o2, _), _ = d.roles
-        notes.append(f"{int(rows.sum())} of {len(xs)} positions have {o1}{p1} and {o2}{p2} "
+            pairs.append(f"{words(d, via)} ({len(take)})")
+        notes.append(f"{int(rows.sum())} of {len(xs)} positions have {words(d, d.via)} "
                      f"parallel within 1° (the auxiliary point {d.s} at infinity, not a "
                      f"singularity of the group): their rates are constructed with {d.s} "
                      f"where {' or '.join(pairs) or 'they'} meet")

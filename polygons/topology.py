@@ -700,11 +700,22 @@ def why_unplaced(scene, x: str, placed) -> str:
                 f"their other ends are placed: unless a link or guide is missing, the links "
                 f"around {x} form a closed group (a class-III Assur group, a triad) that no "
                 f"single dyad places; a triad is solved when its plate's three corners each "
-                f"have one link to a placed point (a block on a guide at a corner, "
-                f"[sliders], is not supported yet)")
+                f"have one link to a placed point, or one corner is a block on a fixed guide "
+                f"([sliders]) with no link of its own and the other two one link each")
     if len(joints) == 1 and x not in scene.sliders and x not in scene.points:
         return (f"{x} hangs from one link ({joints[0][1]}) only: it needs a second link, a "
                 f"guide ([sliders.{x}]), a slot ([slots.{x}]) or [points.{x}] on a link")
+    blocks = sorted({o for o in others if o in scene.sliders}
+                    | {bp.label for bp in scene.points.values() if bp.label in scene.sliders
+                       and bp.link in {n for _, n in joints}})
+    if len(joints) == 2 and others and blocks:
+        return (f"{x} is joined by {joints[0][1]} and {joints[1][1]}, but "
+                f"{' and '.join(others)} {'is' if len(others) == 1 else 'are'} not placed "
+                f"before it: with the block{'s' if len(blocks) > 1 else ''} on a guide at "
+                f"{', '.join(blocks)} the links around {x} may form a closed group (a "
+                f"class-III Assur group); one is solved when one corner of its plate is a "
+                f"block on a fixed guide and each other corner has one link to a placed point "
+                f"(blocks at two corners are not supported)")
     if len(joints) == 2 and others:
         return (f"{x} is joined by {joints[0][1]} and {joints[1][1]}, but "
                 f"{' and '.join(others)} {'is' if len(others) == 1 else 'are'} not placed "

@@ -205,6 +205,47 @@ def triad(rng):
             "assembly": {"X": {"near": [_m(X[0]), _m(X[1])]}}}, ("A", "B", "C", "X")
 
 
+def triad_slider(rng):
+    """A random class-III group with a block on a guide at a corner (two links and a block),
+    driven by a crank: built assembled (the plate B, C, X placed first, D fixed where CD
+    lands, the guide through X at a random angle), X chosen near where it was built; a third
+    of them with the plate a triangle of three links and the block at a random corner."""
+    def at(p, length, ang):
+        return (p[0] + length * math.cos(ang), p[1] + length * math.sin(ang))
+    th = rng.uniform(0, 2 * math.pi)
+    r = rng.uniform(0.03, 0.15)
+    A = at((0.0, 0.0), r, th)
+    a, L, c = (rng.uniform(0.1, 0.5) for _ in range(3))
+    B = at(A, a, rng.uniform(0, 2 * math.pi))
+    psi = rng.uniform(0, 2 * math.pi)
+    C = at(B, L, psi)
+    xi, eta = rng.uniform(-0.2, 1.2) * L, rng.uniform(0.2, 0.8) * L * rng.choice((1, -1))
+    X = (B[0] + xi * math.cos(psi) - eta * math.sin(psi),
+         B[1] + xi * math.sin(psi) + eta * math.cos(psi))
+    D = at(C, c, rng.uniform(0, 2 * math.pi))
+    g = rng.uniform(0, math.pi)
+    data = {"ground": {"O": ["0 m", "0 m"], "D": [_m(D[0]), _m(D[1])]},
+            "links": {"OA": _m(r), "AB": _m(a), "BC": _m(L), "CD": _m(c)},
+            "driver": _crank("OA", rng, th)}
+    if rng.random() < 2 / 3:
+        data["points"] = {"X": {"on": "BC", "along": _m(xi), "left": _m(eta)}}
+        slid, P = "X", X
+    else:       # a triangle plate; the block at X, or at B with AB moved to X
+        data["links"].update({"BX": _m(math.dist(B, X)), "CX": _m(math.dist(C, X))})
+        slid, P = "X", X
+        if rng.random() < 0.5:
+            A2 = at(X, a, rng.uniform(0, 2 * math.pi))
+            r2 = math.hypot(*A2)
+            data["links"]["OA"] = _m(r2)
+            data["driver"] = _crank("OA", rng, math.atan2(A2[1], A2[0]))
+            data["links"].pop("AB")
+            data["links"]["AX"] = _m(a)
+            slid, P = "B", B
+    data["sliders"] = {slid: {"through": [_m(P[0]), _m(P[1])], "direction": f"{g!r} rad"}}
+    data["assembly"] = {slid: {"near": [_m(P[0]), _m(P[1])]}}
+    return data, ("A", "B", "C", "X")
+
+
 def _from_case(name, labels, drop=()):
     """A shipped case with every stated length (in [links]) scaled by 0.9 … 1.1."""
     text = (CASES / f"{name}.toml").read_text()
@@ -234,6 +275,8 @@ KINDS = {
     "triad": _from_case("triad-ternary-coupler", ("B", "C", "X")),
     "triad-plate": _from_case("triad-plate-point", ("B", "C", "X")),
     "triad-random": triad,
+    "triad-slider": _from_case("triad-slider-corner", ("B", "C", "X")),
+    "triad-slider-random": triad_slider,
     "bearing": bearing, "curved_slot": curved_slot, "cam": cam,
     "cam-flat": _from_case("cam-flat-follower", ("C", "F")),
     "cam-oscillating-flat": _from_case("cam-oscillating-flat-follower", ("C", "F")),

@@ -102,6 +102,8 @@ OWN_EXACT_CHECK = {
     **{name: ("test_triad.py", "test_the_case_exact_answers_come_from_the_oracle")
        for name in ("triad-eight-bar", "triad-plate-point", "triad-ternary-coupler",
                     "triad-plate-distances")},
+    "triad-slider-corner": ("test_triad_slider.py",
+                            "test_the_case_exact_answers_come_from_the_oracle"),
     "new-block-on-moving-link": ("test_book_forms.py",
                                  "test_a_block_pinned_to_one_moving_link_sliding_on_another"),
     "new-engine-rod-angle": ("test_book_forms.py",

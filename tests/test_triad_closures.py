@@ -250,3 +250,36 @@ def test_the_closures_counted_by_two_routes_agree():
     from triad_closures import main
     counts = main(40, 0, seed=7)
     assert counts["routes_disagree"] == 0 and counts["closures"] >= 40
+
+
+#: the four groups of benchmarks/triad_closures.py (100 000 poses, seed 28: poses 26135, 40113,
+#: 84911, 85601) where the two routes disagreed: two closures 1e-4 … 3e-7 m apart at nearly
+#: one plate angle (Cramer's determinant of B nearly zero: two of the links nearly parallel),
+#: which the polynomial from one corner lists as one double root or not at all
+MISSED = [
+    (-0.017412886666070132, -0.01281829527828586, 0.13244103347054467, 0.21468025148524406,
+     0.24175962012669236, 0.2832128261798816, 0.09888511924142435, 0.3171999481736973,
+     0.34695559051981945, 0.2586791918994977, 0.1592009929996703, 0.056429510364803426),
+    (0.07538725420801945, 0.08347161088473626, 0.1228856442794743, 0.2924935559824341,
+     -0.29031219985232987, 0.19429983589486677, 0.13060506661246585, 0.29196849602459596,
+     0.474020344188879, 0.24915710734644286, 0.059237195538757004, -0.13138619750747962),
+    (-0.09945244296367946, -0.037857182527731605, 0.09103087902709499, 0.2608297435600912,
+     -0.38848305032986724, 0.18187092957543233, -0.1685014902952061, 0.24669176633911194,
+     0.3872588360660323, 0.2534891929432484, 0.056010652611256456, 0.05653555167141336),
+    (-0.03612237314510745, 0.03418728008188296, 0.14723109171532328, 0.23386631641111044,
+     -0.3030917332027091, 0.09389672817036715, 0.17732550033644218, 0.03552864445645759,
+     4.3333345492282385e-06, 0.2666018109546941, -0.061096827475632345, 0.10258348356704736)]
+
+
+@pytest.mark.parametrize("g", MISSED)
+def test_two_closures_at_nearly_one_plate_angle_are_both_listed(g):
+    """Every closure the dense scan finds is listed, from either corner (the polynomial from
+    each corner in turn, each candidate B at a root polished)."""
+    A0, A1, a, D0, D1, d, E0, E1, e, L, xi, eta = g
+    ref = at.scan_closures((A0, A1), a, (D0, D1), d, (E0, E1), e, L, xi, eta, n=360)
+    one = all_corners((A0, A1, a, D0, D1, d, E0, E1, e, L, xi, eta, 0.0), 0.5)
+    two = all_corners((D0, D1, d, A0, A1, a, E0, E1, e, L, L - xi, -eta, 0.0), 0.5)
+    assert len(one) == len(two) == len(ref) >= 2
+    for B, C, X in ref:
+        assert min(max(math.dist(B, c[0]), math.dist(X, c[2])) for c in one) < 1e-9
+        assert min(max(math.dist(B, c[1]), math.dist(X, c[2])) for c in two) < 1e-9

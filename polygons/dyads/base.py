@@ -23,6 +23,7 @@ import numpy as np
 
 from ..memo import memo_of
 from .triad_math import triad_cols, triad_scalar
+from .triad_slider_math import triad_slider_cols, triad_slider_scalar
 
 #: a closure discriminant within this fraction of the squared size is a double closure
 CLOSE_TOL = 1e-12
@@ -184,7 +185,8 @@ def end_margin_cols(m0, t, lo, hi, tol):
 
 #: the array form of each scalar fast path (for the compiled program run on arrays)
 ARRAY_TWIN = {circle_circle_scalar: circle_circle_cols, circle_line_scalar: circle_line_cols,
-              end_margin_scalar: end_margin_cols, triad_scalar: triad_cols}
+              end_margin_scalar: end_margin_cols, triad_scalar: triad_cols,
+              triad_slider_scalar: triad_slider_cols}
 
 
 def as_col(v, like):

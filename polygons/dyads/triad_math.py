@@ -182,34 +182,82 @@ def _residual(q, pose) -> float:
                abs(math.dist(X, (ex, ey)) - e))
 
 
+def _closures_from(qq, size) -> list[tuple[float, float, float]]:
+    """Every closure (bx, by, φ) of the group ``qq`` (its plate's own η) by the polynomial
+    eliminated from its first corner: each real root polished by Newton, checked against the
+    three lengths."""
+    got = _phi0(qq)
+    if got is None:
+        return []
+    phi0, c = got
+    out = []
+    for t in real_roots(c):
+        phi = phi0 + 2.0 * math.atan(t)
+        cands = [(bx, by, phi) for bx, by in _b_candidates(phi, qq)
+                 if math.isfinite(bx) and math.isfinite(by)]
+        # each candidate polished: where Cramer's determinant nearly vanishes two closures
+        # share (nearly) one φ and differ in B — each candidate may reach another
+        for pose in cands:
+            new, _ = _newton(qq, pose, size)
+            if new is not None and _residual(qq, new) <= _residual(qq, pose):
+                pose = new
+            if _residual(qq, pose) <= 1e-9 * size:
+                out.append(pose)
+    return out
+
+
+def _routes(q):
+    """The group restated from each corner in turn (B, then C, then X first): (its
+    parameters, a function taking its closure (bx′, by′, φ′) back to the plate pose (bx, by,
+    φ)).  Eliminated from B the polynomial cannot tell apart two closures whose plate angles
+    nearly agree where DC ∥ EX (Cramer's determinant of B vanishes there: the plate translates
+    along a line at one φ), from C where AB ∥ EX, from X where AB ∥ DC; the union of the three
+    misses a closure only where all three links are parallel."""
+    ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta = q
+    yield q, (lambda pose: pose)
+    # from C: C at the origin, B at (L, 0), X at (L − ξ, −η); φ′ = φ + π
+    def from_c(pose):
+        cx, cy, ph = pose
+        return (cx + L * math.cos(ph), cy + L * math.sin(ph), ph - math.pi)
+    yield (dx, dy, d, ax, ay, a, ex, ey, e, L, L - xi, -eta), from_c
+    # from X: X at the origin, B at (|XB|, 0), C where the plate puts it
+    lxb = math.hypot(xi, eta)
+    if lxb > 0.0:
+        ux, uy = -xi / lxb, -eta / lxb            # X→B in the plate frame
+        wx, wy = L - xi, -eta                      # X→C
+        xi3, eta3 = wx * ux + wy * uy, wy * ux - wx * uy
+        beta = math.atan2(uy, ux)                  # the direction of X→B in the plate frame
+
+        def from_x(pose):
+            xx, xy, ph = pose                      # ph: the direction of X→B
+            bx, by = xx + lxb * math.cos(ph), xy + lxb * math.sin(ph)
+            return (bx, by, ph - beta)
+        # B on the circle (A, a) second, C on (D, d) third, in the frame X→B
+        yield (ex, ey, e, ax, ay, a, dx, dy, d, lxb, xi3, eta3), from_x
+
+
 def closures(p, size=None) -> list[tuple[float, float, float, float]]:
     """Every closure (bx, by, φ, η) of the group with parameters ``p`` = (ax, ay, a, dx, dy, d,
-    ex, ey, e, L, ξ, η, mirror): each real root of the polynomial (and, with ``mirror``, of
-    the mirrored plate's), polished by Newton and checked against the three lengths."""
+    ex, ey, e, L, ξ, η, mirror): each real root of the polynomial eliminated from each corner
+    in turn (:func:`_routes`; and, with ``mirror``, of the mirrored plate's), polished by
+    Newton and checked against the three lengths; each closure once."""
     *q, mirror = p
     q = tuple(float(v) for v in q)
     if not all(math.isfinite(v) for v in q):
         return []
     size = size or max(abs(v) for v in q) or 1.0
-    out = []
+    out, seen = [], []
     for eta in ((q[11], -q[11]) if mirror and q[11] != 0.0 else (q[11],)):
         qq = q[:11] + (eta,)
-        got = _phi0(qq)
-        if got is None:
-            continue
-        phi0, c = got
-        for t in real_roots(c):
-            phi = phi0 + 2.0 * math.atan(t)
-            cands = [(bx, by, phi) for bx, by in _b_candidates(phi, qq)
-                     if math.isfinite(bx) and math.isfinite(by)]
-            if not cands:
-                continue
-            pose = min(cands, key=lambda ps: _residual(qq, ps))
-            new, _ = _newton(qq, pose, size)
-            if new is not None and _residual(qq, new) <= _residual(qq, pose):
-                pose = new
-            if _residual(qq, pose) <= 1e-9 * size:
-                out.append(pose + (eta,))
+        for rq, back in _routes(qq):
+            for pose in _closures_from(rq, size):
+                pose = back(pose)
+                pts = _corners_of(qq, pose, eta)
+                if _residual(qq, pose) <= 1e-9 * size and all(
+                        max(math.dist(pts[i], o[i]) for i in range(3)) > 1e-9 * size
+                        for o in seen):
+                    seen.append(pts)
+                    out.append(pose + (eta,))
     return out
 
 

@@ -1,0 +1,509 @@
+"""The class-III Assur group with a block on a guide at a corner ("two links and a block"):
+a rigid plate whose corners B, C are joined by binary links to placed points (AB, DC) and
+whose third corner X is a pin in a block sliding on a fixed straight guide ([sliders.X]).
+No dyad places it: the three corners close together.
+
+The scene states it as the book draws it: the plate is a link carrying a point ([points.X]
+on = "BC", a ternary link) or a triangle of three links; the corner on the guide has
+[sliders.X] and no link of its own, each other corner one link to a placed point.  Any corner
+may be the one on the guide.  ``[assembly]`` (words or ``near``) on any corner chooses the
+closure.
+
+Position: every closure, algebraically (:mod:`polygons.dyads.triad_slider_math`: the real
+roots of a polynomial of degree ≤ 6, each polished by Newton); the one the scene's words or
+``near`` choose, followed by continuation through a sweep.
+
+Velocity, by the auxiliary (Assur) point S where AB and DC produced meet (a point of the
+plate): v_S − v_A ⟂ AB and v_S − v_D ⟂ DC give s; then v_X − v_S ⟂ SX and v_X ∥ the guide (a
+block on a fixed guide) give x; b, c are images on the plate (s, x); the slider's velocity is
+ox along the guide.
+
+Acceleration, the same with the normal parts known: a_S = a_A + ω_AB² (A − B) + ω_p² (B − S)
++ [⟂ AB] = a_D + ω_DC² (D − C) + ω_p² (C − S) + [⟂ DC] gives s′; a_X = a_S + ω_p² (S − X)
++ [⟂ SX] = [∥ guide] gives x′ (no Coriolis term: the guide is fixed); b′, c′ are images.
+
+Not done: where AB and DC are parallel (S at infinity) the three-link triad takes S on
+another pair of links; here the other pairs involve the block, whose line is the normal to the
+guide at X, and that construction is not written.  The construction is exact however near
+parallel the pair is, down to the drawing's parallel limit (1e-5°), where it refuses.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..steps import Builder, Component, Kind, Op
+from . import image
+from .base import size_of
+from .triad import Triad, _aux_label, _plates
+from .triad_slider_math import all_corners, triad_slider_cols, triad_slider_scalar
+
+#: the module registers itself (:mod:`polygons.dyads`): a group of a higher class, tried when
+#: no dyad can be placed, after the three-link triad
+ROLE = "group"
+
+
+@dataclass(frozen=True)
+class TriadSlider:
+    """Plate ``plate`` with corners ``b``, ``c`` joined by ``link_b``, ``link_c`` to the placed
+    ``ob``, ``oc``, and corner ``x`` a block on its fixed guide ([sliders.x]); ``s`` the
+    Assur point (AB and DC produced, or where AB ∥ DC a link and the normal to the guide:
+    ``via``); ``ternary``: the plate is a link with a [points] corner (else a triangle of
+    links, whose mirror image is a closure too); ``guide_e`` the guide's direction."""
+    b: str
+    c: str
+    x: str
+    ob: str
+    oc: str
+    link_b: str
+    link_c: str
+    plate: str
+    plate_links: tuple[str, ...]
+    s: str
+    ternary: bool
+    #: the guide's direction (kept for the construction's choice of S)
+    guide_e: tuple = field(default=(1.0, 0.0), compare=False)
+    #: the lines meeting at S: 0 AB, DC; 1 AB and the normal to the guide at X; 2 DC and it
+    via: int = 0
+    two_closures = False
+    many_closures = True
+
+    @property
+    def _guide_e(self):
+        return self.guide_e
+
+    #: no ``force_polygon``: the graphical force polygon of this group is not written, so
+    #: :func:`polygons.forces.graphical.groups_of` refuses it in one line, in these words
+    #: (Newton–Euler and Zhukovsky's lever solve it)
+    words = ("a class-III group with a slider on a fixed guide at a corner (two links and "
+             "a block)")
+
+    def auxiliary_points(self):
+        """(S, (A, B), (D, C)): Assur's point S where AB and DC produced meet; none drawn when
+        S is taken on a link and the normal to the guide (:attr:`via` 1, 2: no second named
+        point on that line; the steps say where S is)."""
+        if self.via:
+            return ()
+        return ((self.s, (self.ob, self.b), (self.oc, self.c)),)
+
+    def force_bodies(self) -> tuple[str, ...]:
+        return (((self.plate,) if self.ternary else tuple(self.plate_links))
+                + (self.link_b, self.link_c, self.x))
+
+    @property
+    def roles(self):
+        """((P₁, O₁, link₁), (P₂, O₂, link₂)): S on O₁P₁ produced and on O₂P₂ produced
+        (:attr:`via` 0: AB, DC), or on O₁P₁ produced and the normal to the guide at X (via 1:
+        AB; via 2: DC), the other link's corner P₂ found from S and O₂ then."""
+        rb, rc = (self.b, self.ob, self.link_b), (self.c, self.oc, self.link_c)
+        return (rc, rb) if self.via == 2 else (rb, rc)
+
+    def pair_words(self, via=None) -> str:
+        """The two lines meeting at S for ``via`` (default this group's), in words."""
+        via = self.via if via is None else via
+        if via == 0:
+            return f"{self.ob}{self.b} and {self.oc}{self.c}"
+        o, p = (self.ob, self.b) if via == 1 else (self.oc, self.c)
+        return f"{o}{p} and the normal to the guide of {self.x} at {self.x}"
+
+    def pair_sine(self, points, via=None):
+        """|sin| of the angle between the two lines meeting at S for ``via`` (0: AB, DC; 1:
+        AB and the guide's normal; 2: DC and the normal), over one position or arrays."""
+        via = self.via if via is None else via
+        P = {k: np.asarray(points[k], dtype=float) for k in (self.b, self.c, self.ob, self.oc)}
+        col = (lambda v: v.reshape(2, 1) if v.ndim == 1 and P[self.b].ndim > 1 else v)
+        u = P[self.b] - col(P[self.ob])
+        w = P[self.c] - col(P[self.oc])
+        e = self._guide_e
+        n = np.array([-e[1], e[0]]).reshape((2,) + (1,) * (u.ndim - 1))
+        first, second = {0: (u, w), 1: (u, n), 2: (w, n)}[via]
+        with np.errstate(all="ignore"):
+            return (np.abs(first[0] * second[1] - first[1] * second[0])
+                    / (np.hypot(*first) * np.hypot(*second)))
+
+    def assur_sine(self, points, via=None) -> float:
+        return float(self.pair_sine(points, via))
+
+    def for_instant(self, points):
+        """This group with S taken on the pair of lines that meet best at the instant
+        ``points`` when its own pair is parallel within 1° (S at infinity is a point of the
+        construction, not a singularity of the group): (group, note) — note '' if kept."""
+        from dataclasses import replace
+        if self.assur_sine(points) >= math.sin(math.radians(1.0)):
+            return self, ""
+        best = max(range(3), key=lambda v: self.assur_sine(points, v))
+        if best == self.via:
+            return self, ""
+        new = replace(self, via=best)
+        return new, (f"the lines {self.pair_words()} are parallel here (the auxiliary point "
+                     f"{self.s} at infinity, not a singularity of the group): {self.s} is "
+                     f"taken where {new.pair_words()} meet instead")
+
+    @property
+    def placed(self) -> tuple[str, ...]:
+        return (self.b, self.c, self.x, self.s)
+
+    @property
+    def needs(self) -> tuple[str, ...]:
+        return (self.ob, self.oc)
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        return (self.link_b, self.link_c) + self.plate_links
+
+    @property
+    def sigma_keys(self) -> tuple[str, ...]:
+        """Where the chosen closure is kept: B's and X's coordinates under B's label."""
+        return (f"{self.b}#bx", f"{self.b}#by", f"{self.b}#xx", f"{self.b}#xy")
+
+    # ------------------------------------------------------------ geometry
+    def frame(self, scene):
+        """The plate in the roles' frame: C = (L, 0), X = (ξ, η) from B (arrays in a batch)."""
+        if self.ternary:
+            lk = scene.links[self.plate]
+            bp = scene.points[({self.b, self.c, self.x} - {lk.a, lk.b}).pop()]
+            along = bp.along if bp.along is not None else bp.fraction * lk.length
+            own = {lk.a: (0.0, 0.0), lk.b: (lk.length, 0.0), bp.label: (along, bp.left)}
+        else:
+            lbc, lbx, lcx = (scene.links[n].length for n in self.plate_links)
+            first = scene.links[self.plate_links[0]]
+            third = ({self.b, self.c, self.x} - {first.a, first.b}).pop()
+            xi = (lbc * lbc + lbx * lbx - lcx * lcx) / (2.0 * lbc)
+            own = {first.a: (0.0, 0.0), first.b: (lbc, 0.0),
+                   third: (xi, np.sqrt(np.maximum(lbx * lbx - xi * xi, 0.0)))}
+        (bx, by), (cx, cy), (xx, xy) = (own[k] for k in (self.b, self.c, self.x))
+        ux, uy = np.subtract(cx, bx), np.subtract(cy, by)
+        L = np.hypot(ux, uy)
+        ux, uy = ux / L, uy / L
+        wx, wy = np.subtract(xx, bx), np.subtract(xy, by)
+        return L, wx * ux + wy * uy, wy * ux - wx * uy
+
+    def _params(self, scene, pos):
+        L, xi, eta = self.frame(scene)
+        g = scene.sliders[self.x]
+        (ax, ay), (dx, dy) = pos[self.ob], pos[self.oc]
+        lk = scene.links
+        return (ax, ay, lk[self.link_b].length, dx, dy, lk[self.link_c].length,
+                float(g.through[0]), float(g.through[1]), *g.direction, L, xi, eta,
+                0.0 if self.ternary else 1.0)
+
+    def closures(self, scene, pos) -> list[dict]:
+        """Every closure at the positions ``pos``: {B, C, X, S} each."""
+        p = tuple(float(v) for v in self._params(scene, pos))
+        out = []
+        for B, C, X in all_corners(p, size_of(scene)):
+            pts = {self.b: np.array(B), self.c: np.array(C), self.x: np.array(X)}
+            pts[self.s] = self._assur(pos, pts)
+            out.append(pts)
+        return out
+
+    def _assur(self, pos, pts):
+        """S = O₁ + t (P₁ − O₁) where the second line (O₂ + r (P₂ − O₂), or X + r n: the
+        normal to the guide) meets it: t = ((Q − O₁) × w) / ((P₁ − O₁) × w), Q and w that
+        line's point and direction (:attr:`roles`)."""
+        (p1, o1, _), (p2, o2, _) = self.roles
+        a = pos[o1]
+        u = pts[p1] - a
+        if self.via == 0:
+            q, w = pos[o2], pts[p2] - pos[o2]
+        else:
+            e = self.guide_e
+            q = pts[self.x]
+            w = np.array([-e[1], e[0]]).reshape((2,) + (1,) * (np.ndim(u) - 1)) + 0.0 * u
+        den = u[0] * w[1] - u[1] * w[0]
+        qa = q - a
+        with np.errstate(all="ignore"):
+            t = (qa[0] * w[1] - qa[1] * w[0]) / np.where(den != 0.0, den, np.nan)
+        return a + t * u
+
+    def locate(self, scene, pos, sigma, x):
+        """The closure nearest the reference ``sigma`` (None: the first closure), over one
+        position or (2, N) arrays (continuation)."""
+        p = self._params(scene, pos)
+        ref = [sigma[k] for k in self.sigma_keys] if sigma else None
+        size = size_of(scene)
+        if np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1:
+            if ref is None:
+                cands = self.closures(scene, pos)
+                if not cands:
+                    return self._nan(pos), -1.0
+                B, X = cands[0][self.b], cands[0][self.x]
+                ref = [B[0], B[1], X[0], X[1]]
+            r = triad_slider_scalar(*(float(v) for v in p), *ref, size)
+        else:
+            r = triad_slider_cols(*p, *(ref or [0.0] * 4), size)
+        pts = {self.b: np.array([r[0], r[1]]), self.c: np.array([r[2], r[3]]),
+               self.x: np.array([r[4], r[5]])}
+        pts[self.s] = self._assur(pos, pts)
+        return pts, r[6]
+
+    def _nan(self, pos):
+        return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
+                for k in self.placed}
+
+    def source(self, g) -> None:
+        """:meth:`locate` as generated code (triad_slider_math; its array twin follows the
+        closure through a sweep), then S."""
+        (ax, ay), (dx, dy) = (g.pos(k) for k in (self.ob, self.oc))
+        lb = g.param(lambda s: s.links[self.link_b].length)
+        lc = g.param(lambda s: s.links[self.link_c].length)
+        gx = g.param(lambda s: float(s.sliders[self.x].through[0]))
+        gy = g.param(lambda s: float(s.sliders[self.x].through[1]))
+        ex = g.param(lambda s: s.sliders[self.x].direction[0])
+        ey = g.param(lambda s: s.sliders[self.x].direction[1])
+        L = g.param(lambda s: self.frame(s)[0])
+        xi = g.param(lambda s: self.frame(s)[1])
+        eta = g.param(lambda s: self.frame(s)[2])
+        refs = [g.sigma(k) for k in self.sigma_keys]
+        size = g.param(lambda s: size_of(s))
+        bx, by, cx, cy, xx, xy, m = g.call(
+            triad_slider_scalar, ax, ay, lb, dx, dy, lc, gx, gy, ex, ey, L, xi, eta,
+            "0.0" if self.ternary else "1.0", *refs, size, n=7)
+        g.margin(m)
+        g.place(self.b, bx, by)
+        g.place(self.c, cx, cy)
+        g.place(self.x, xx, xy)
+        corner = {self.b: (bx, by), self.c: (cx, cy)}
+        outer = {self.b: (ax, ay), self.c: (dx, dy)}
+        (p1, _, _), (p2, _, _) = self.roles
+        (px, py), (ox, oy) = corner[p1], outer[p1]
+        ux, uy = g.let("{} - {}", px, ox), g.let("{} - {}", py, oy)
+        if self.via == 0:
+            (qx, qy), (rx, ry) = corner[p2], outer[p2]
+            wx, wy = g.let("{} - {}", qx, rx), g.let("{} - {}", qy, ry)
+        else:           # the normal to the guide at X: through X along (−e_y, e_x)
+            rx, ry = xx, xy
+            wx, wy = g.let("-{}", ey), g.let("{} + 0.0", ex)
+        den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
+        safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
+                     g.e("({} if {} != 0.0 else nan)", den, den))
+        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", rx, ox, wy, ry, oy, wx, safe)
+        g.place(self.s, g.let("{} + {} * {}", ox, t, ux), g.let("{} + {} * {}", oy, t, uy))
+
+    def why_not(self, scene, pos) -> str:
+        return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c} "
+                f"on the links {self.link_b}, {self.link_c} and {self.x} a block on its "
+                f"guide) cannot close at this input: no position of the plate gives both links "
+                f"their lengths with {self.x} on the guide")
+
+    def toggle_reason(self, scene, pos) -> str:
+        return (f"two closures of the class-III group {self.b}{self.c}{self.x} meet here (the "
+                f"lines of {self.link_b}, {self.link_c} and the normal to the guide of "
+                f"{self.x} through {self.x} are concurrent: the plate {self.plate} cannot turn "
+                f"further this way)")
+
+    # ------------------------------------------------------------ construction
+    def emit(self, b: Builder) -> None:
+        if self.via:
+            self._emit_on_normal(b)
+            return
+        B, A, LB, C, D, LC, X = (self.b, self.ob, self.link_b, self.c, self.oc, self.link_c,
+                                 self.x)
+        S, P = self.s, self.plate
+        V = b.names.of
+        a, d, s, x, pole = V(A), V(D), V(S), V(X), b.names.pole
+        Cm = Component
+        if b.velocity:
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (A, B), f"line ⟂ {A}{B}", a, None,
+                       "relative_velocity", f"(v_{S})_{A}", f"(v_{S})_{A} ⟂ {A}{B}",
+                       f"The auxiliary point {S}, where {A}{B} and {D}{C} produced meet, is a "
+                       f"point of the plate {P} on {A}{B} produced: its velocity relative to "
+                       f"{A} is perpendicular to {A}{B}. Through {a} draw a line ⟂ {A}{B}.",
+                       component=Cm.CONSTRUCTION, link=LB)
+            n2 = b.add(Kind.LINE, Op.LINE_PERP, (D, C), f"line ⟂ {D}{C}", d, None,
+                       "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
+                       f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
+                       component=Cm.CONSTRUCTION, link=LC)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
+                  f"{s} = intersection of the two lines",
+                  f"The lines meet at {s}: {pole}{s} is the velocity of the auxiliary "
+                  f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+            n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
+                       "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
+                       f"{X} and {S} are points of the plate: through {s} draw a line "
+                       f"⟂ {S}{X}.", component=Cm.CONSTRUCTION, link=P)
+            n4 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None,
+                       "slider_line", f"v_{X}", f"v_{X} ∥ guide of {X}",
+                       f"The block at {X} slides on a fixed guide: through {pole} draw a line "
+                       f"along the guide of {X}.", component=Cm.RESULTANT)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
+                  f"{x} = intersection of the two lines",
+                  f"The lines meet at {x}: {pole}{x} is the velocity of {X}, along its "
+                  f"guide.", (n3, n4), component=Cm.RESULTANT)
+            self._rates(b, Op.OMEGA)
+            return
+        k = [b.fresh(B), b.fresh(S), b.fresh(C), b.fresh(S), b.fresh(X)]
+        Triad._normal(b, LB, A, B, a, k[0], f"(a_{B})_{A}^n")
+        Triad._normal(b, P, B, S, k[0], k[1], f"(a_{S})_{B}^n")
+        n1 = Triad._tangent_line(b, A, B, k[1], None, (B, A, S, B))
+        Triad._normal(b, LC, D, C, d, k[2], f"(a_{C})_{D}^n")
+        Triad._normal(b, P, C, S, k[2], k[3], f"(a_{S})_{C}^n")
+        n2 = Triad._tangent_line(b, D, C, k[3], None, (C, D, S, C))
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
+              f"{s} = intersection of the two lines",
+              f"The lines meet at {s}: {pole}{s} is the acceleration of the auxiliary "
+              f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+        Triad._normal(b, P, S, X, s, k[4], f"(a_{X})_{S}^n")
+        n3 = Triad._tangent_line(b, S, X, k[4], P)
+        n4 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None, "slider_line",
+                   f"a_{X}", f"a_{X} ∥ guide of {X}",
+                   f"Through {pole} draw a line along the guide of {X}: the block's "
+                   f"acceleration lies along it (the guide is fixed: no Coriolis term).",
+                   component=Cm.RESULTANT)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
+              f"{x} = intersection of the two lines",
+              f"The lines meet at {x}: {pole}{x} is the acceleration of {X}, along its "
+              f"guide.", (n3, n4), component=Cm.RESULTANT)
+        self._rates(b, Op.ALPHA, {P: (k[4], X), LB: (k[0], B), LC: (k[2], C)})
+
+    def _emit_on_normal(self, b: Builder) -> None:
+        """S on the link O₁P₁ produced and on the normal to the guide at X (where AB ∥ DC):
+        v_S − v_X = ω_p × XS is along the guide, and so is v_X: s is where the line ⟂ O₁P₁
+        through o₁ meets the guide's direction through the pole; then v_P₂ − v_S ⟂ SP₂ and
+        v_P₂ − v_O₂ ⟂ O₂P₂ give p₂; x, p₁ are images.  Acceleration: a_S = a_O₁ + ω₁² (O₁ − P₁)
+        + ω_p² (P₁ − S) + [⟂ O₁P₁] = ω_p² (X − S) + [∥ guide] (a_X and (a_S)ᵗ_X both along
+        it), then p₂′ as v."""
+        (P1, O1, L1), (P2, O2, L2) = self.roles
+        X, S, P = self.x, self.s, self.plate
+        V = b.names.of
+        o1, o2, s, p2, pole = V(O1), V(O2), V(S), V(P2), b.names.pole
+        Cm = Component
+        where = (f"The auxiliary point {S}, where {O1}{P1} produced meets the normal to the "
+                 f"guide of {X} at {X} ({self.pair_words(0)} are parallel here), is a point "
+                 f"of the plate {P}")
+        if b.velocity:
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (O1, P1), f"line ⟂ {O1}{P1}", o1, None,
+                       "relative_velocity", f"(v_{S})_{O1}", f"(v_{S})_{O1} ⟂ {O1}{P1}",
+                       f"{where}: its velocity relative to {O1} is perpendicular to "
+                       f"{O1}{P1}. Through {o1} draw a line ⟂ {O1}{P1}.",
+                       component=Cm.CONSTRUCTION, link=L1)
+            n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None,
+                       "slider_line", f"v_{S}", f"v_{S} ∥ guide of {X}",
+                       f"{S} is on the normal to the guide at {X}: v_{S} − v_{X} = ω × "
+                       f"{X}{S} is along the guide, and so is v_{X}. Through {pole} draw a "
+                       f"line along the guide of {X}.", component=Cm.CONSTRUCTION)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
+                  f"{s} = intersection of the two lines",
+                  f"The lines meet at {s}: {pole}{s} is the velocity of the auxiliary "
+                  f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+            n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, P2), f"line ⟂ {S}{P2}", s, None,
+                       "relative_velocity", f"(v_{P2})_{S}", f"(v_{P2})_{S} ⟂ {S}{P2}",
+                       f"{P2} and {S} are points of the plate: through {s} draw a line "
+                       f"⟂ {S}{P2}.", component=Cm.CONSTRUCTION, link=P)
+            n4 = b.add(Kind.LINE, Op.LINE_PERP, (O2, P2), f"line ⟂ {O2}{P2}", o2, None,
+                       "relative_velocity", f"(v_{P2})_{O2}", f"(v_{P2})_{O2} ⟂ {O2}{P2}",
+                       f"Through {o2} draw a line ⟂ {O2}{P2}: the velocity of {P2} relative "
+                       f"to {O2}.", component=Cm.CONSTRUCTION, link=L2)
+            b.add(Kind.INTERSECTION, Op.INTERSECT, (), p2, None, p2, "intersection",
+                  f"v_{P2}", f"{p2} = intersection of the two lines",
+                  f"The lines meet at {p2}: {pole}{p2} is the velocity of {P2}.", (n3, n4),
+                  component=Cm.RESULTANT)
+            self._rates(b, Op.OMEGA)
+            return
+        k = [b.fresh(P1), b.fresh(S), b.fresh(S), b.fresh(P2), b.fresh(P2)]
+        Triad._normal(b, L1, O1, P1, o1, k[0], f"(a_{P1})_{O1}^n")
+        Triad._normal(b, P, P1, S, k[0], k[1], f"(a_{S})_{P1}^n")
+        n1 = Triad._tangent_line(b, O1, P1, k[1], None, (P1, O1, S, P1))
+        Triad._normal(b, P, X, S, pole, k[2], f"(a_{S})_{X}^n")
+        n2 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", k[2], None, "slider_line",
+                   f"a_{X} + (a_{S})_{X}^t", f"a_{X} + (a_{S})_{X}^t ∥ guide of {X}",
+                   f"Through {k[2]} draw a line along the guide of {X}: a_{X} (the block on "
+                   f"a fixed guide) and (a_{S})_{X}^t (⟂ {X}{S}) both lie along it.",
+                   component=Cm.CONSTRUCTION)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
+              f"{s} = intersection of the two lines",
+              f"The lines meet at {s}: {pole}{s} is the acceleration of the auxiliary "
+              f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+        Triad._normal(b, P, S, P2, s, k[3], f"(a_{P2})_{S}^n")
+        n3 = Triad._tangent_line(b, S, P2, k[3], P)
+        Triad._normal(b, L2, O2, P2, o2, k[4], f"(a_{P2})_{O2}^n")
+        n4 = Triad._tangent_line(b, O2, P2, k[4], L2)
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), p2, None, p2, "intersection", f"a_{P2}",
+              f"{p2} = intersection of the two lines",
+              f"The lines meet at {p2}: {pole}{p2} is the acceleration of {P2}.", (n3, n4),
+              component=Cm.RESULTANT)
+        self._rates(b, Op.ALPHA, {P: (k[3], P2), L1: (k[0], P1), L2: (k[4], P2)})
+
+    def _rates(self, b: Builder, op, tangential=None) -> None:
+        """The plate's ω (α) from s and x, the images b and c, each link's ω (α), the
+        block's velocity (acceleration) along its guide.  ω = relative velocity / length;
+        α = the tangential part (from the end of the centripetal vector to the point) /
+        length."""
+        B, A, LB, C, D, LC, X = (self.b, self.ob, self.link_b, self.c, self.oc, self.link_c,
+                                 self.x)
+        S, P = self.s, self.plate
+        V = b.names.of
+        vel = op is Op.OMEGA
+        sym, what, th = (("ω", "angular velocity", "angular_velocity") if vel
+                         else ("α", "angular acceleration", "angular_acceleration"))
+        comp = Component.RELATIVE if vel else Component.TANGENTIAL
+
+        def read(L, O, Q):
+            if tangential is None:
+                return f"{V(O)}{V(Q)}", f"{V(O)}{V(Q)}"
+            t = f"{tangential[L][0]}{V(tangential[L][1])}"
+            return t, f"{t} (the tangential part of {V(O)}{V(Q)})"
+        T = X if self.via == 0 else self.roles[1][0]      # the corner found with S
+        vec, words = read(P, S, T)
+        plate = f"{self.b}{self.c}{self.x}"
+        b.add(Kind.MEASURE, op, (P, S, T), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
+              f"{sym}_{plate} = {vec} / {S}{T}",
+              f"The {what} of the plate {plate} is {words} divided by {S}{T}.",
+              component=comp, link=P)
+        for Q in (B, C, X):
+            if Q != T:
+                image.emit_image(b, Q, P, S, T)
+        for L, O, Q in ((LB, A, B), (LC, D, C)):
+            vec, words = read(L, O, Q)
+            b.add(Kind.MEASURE, op, (L, O, Q), f"{sym}_{L}", None, None, th, f"{sym}_{L}",
+                  f"{sym}_{L} = {vec} / {O}{Q}",
+                  f"The {what} of {L} is {words} divided by {O}{Q}.", component=comp, link=L)
+        pole, x = b.names.pole, V(X)
+        if vel:
+            b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (X,), f"v_{X}", None, None, "slider",
+                  f"v_{X} along guide", f"v_{X} = {pole}{x}",
+                  f"The block's velocity is {pole}{x}, signed along the guide direction.",
+                  component=Component.RESULTANT)
+        else:
+            b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (X,), f"a_{X}", None, None, "slider",
+                  f"a_{X} along guide", f"a_{X} = {pole}{x}",
+                  f"The block's acceleration is {pole}{x}, signed along the guide direction.",
+                  component=Component.RESULTANT)
+
+
+# ---------------------------------------------------------------- finding the groups
+def matches(scene, placed):
+    """Every plate whose one corner is a block on a fixed guide ([sliders], no slot or pin on
+    it) with no link of its own, and whose two other corners each have one link to a placed
+    point, none of the corners placed."""
+    found = []
+    taken = set(placed)
+    for corners, plate, plate_links, ternary in _plates(scene):
+        if any(k in placed or k in scene.slots for k in corners):
+            continue
+        on_guide = [k for k in corners if k in scene.sliders]
+        if len(on_guide) != 1:
+            continue
+        x = on_guide[0]
+        g = scene.sliders[x]
+        if g.pin is not None or g.slot_angle is not None:
+            continue
+        outer = {}
+        for k in corners:
+            outer[k] = [(l.b if l.a == k else l.a, l.name) for l in scene.links.values()
+                        if k in (l.a, l.b) and l.length is not None
+                        and l.name not in plate_links and (l.b if l.a == k else l.a)
+                        not in corners]
+        if outer[x]:
+            continue
+        b, c = (k for k in corners if k != x)
+        if not all(len(outer[k]) == 1 and outer[k][0][0] in placed for k in (b, c)):
+            continue
+        (ob, lb), (oc, lc) = outer[b][0], outer[c][0]
+        s = _aux_label(scene, taken)
+        taken.add(s)
+        found.append(TriadSlider(b, c, x, ob, oc, lb, lc, plate, plate_links, s, ternary,
+                                 guide_e=tuple(float(v) for v in g.direction)))
+    return found

@@ -1,0 +1,422 @@
+"""Every closure of a class-III group whose third corner is a block on a fixed guide (two links
+and a block: :mod:`polygons.dyads.triad_slider`), found algebraically as
+:mod:`polygons.dyads.triad_math` finds the three-link triad's: the same plate, one circle
+constraint replaced by a line.
+
+The plate: corners P₁, P₂, P₃ (in its own frame P₁ = (0, 0), P₂ = (L, 0), P₃ = (ξ, η)); P₁
+joined by a link to A (|AP₁| = a), P₂ to D (|DP₂| = d), P₃ a pin in a block sliding on the
+fixed guide through G along e (normal n = perp e).  With φ the direction of P₁→P₂ and B = P₁
+(A at the origin) the loop equations are
+
+    |B|² = a²,   |B + L u(φ) − D|² = d²,   n·(B + R(φ)(ξ, η) − G) = 0.
+
+The second less the first, and the third, are *linear* in B (coefficients linear in cos φ,
+sin φ): B = (N_x, N_y) / Δ by Cramer's rule and the first becomes
+q(φ) = N_x² + N_y² − a² Δ² = 0, a quartic form in (cos φ, sin φ).  With φ = φ₀ + 2 atan t,
+(1 + t²)⁴ q is a polynomial of degree 8 in t with the factor 1 + t² (the coupler curve of the
+four-bar A P₁ P₂ D traced by P₃ is a tricircular sextic: a line meets it in at most 6 points),
+so what is left has degree ≤ 6 and every closure among its real roots.  Those are isolated by
+:func:`polygons.dyads.triad_math.real_roots` (the roots of the derivatives cut the line into
+monotone pieces: two closures however close are both found), each polished by Newton on the
+three loop equations (stopped at the rounding floor of the group's own conditioning) and
+checked against the two lengths and the guide.  With a triangle of three links for the plate
+its mirror image η → −η is a group too.
+
+Continuation through a sweep (:func:`triad_slider_cols`) is the three-link triad's: Newton
+from the neighbour's closure, checked against every closure where ill-conditioned, never
+jumping farther than four times the last step's motion.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .triad_math import _EPS, _PP, real_roots
+
+_NAN7 = (math.nan,) * 6 + (-1.0,)
+
+#: below this conditioning margin another closure may lie near the one Newton found: the
+#: followed closure is then checked against every closure (it must be the nearest)
+_SURE = 0.05
+
+
+def _unpack(q):
+    ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta = q
+    n = math.hypot(ex, ey)
+    return ax, ay, a, dx, dy, d, gx, gy, ex / n, ey / n, L, xi, eta
+
+
+def _poly(q, phi0):
+    """The coefficients (low → high, in t) of (1 + t²)³ q(φ₀ + 2 atan t) / s⁴ (s the group's
+    size), of degree ≤ 6 (degree 8 where the factor 1 + t² does not divide out to rounding)."""
+    ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta = _unpack(q)
+    dx, dy, gx, gy = dx - ax, dy - ay, gx - ax, gy - ay
+    # the guide's point nearest A (the size must not depend on where along it G was given)
+    along = gx * ex + gy * ey
+    gx, gy = gx - along * ex, gy - along * ey
+    s = max(a, d, L, math.hypot(dx, dy), math.hypot(gx, gy), math.hypot(xi, eta))
+    if not s > 0.0:
+        return None
+    a, d, L, xi, eta, dx, dy, gx, gy = (v / s for v in (a, d, L, xi, eta, dx, dy, gx, gy))
+    nx, ny = -ey, ex
+    c0, s0 = math.cos(phi0), math.sin(phi0)
+
+    def lin(k0, kc, ks):        # (k0 + kc cos φ + ks sin φ)(1 + t²), φ = φ₀ + 2 atan t
+        kc, ks = kc * c0 + ks * s0, ks * c0 - kc * s0
+        return np.array([k0 + kc, 2.0 * ks, k0 - kc])
+    m11, m12 = lin(-2 * dx, 2 * L, 0.0), lin(-2 * dy, 0.0, 2 * L)
+    r1 = lin(-(L * L + dx * dx + dy * dy - d * d + a * a), 2 * L * dx, 2 * L * dy)
+    # n·B = n·G − n·R(φ)(ξ, η) = n·G − cos φ (n_x ξ + n_y η) − sin φ (n_y ξ − n_x η)
+    m21, m22 = lin(nx, 0.0, 0.0), lin(ny, 0.0, 0.0)
+    r2 = lin(nx * gx + ny * gy, -(nx * xi + ny * eta), -(ny * xi - nx * eta))
+    mul, sub = _PP.polymul, _PP.polysub
+    dl = sub(mul(m11, m22), mul(m12, m21))
+    px = sub(mul(r1, m22), mul(m12, r2))
+    py = sub(mul(m11, r2), mul(r1, m21))
+    full = sub(_PP.polyadd(mul(px, px), mul(py, py)), a * a * mul(dl, dl))
+    q6, rem = _PP.polydiv(full, np.array([1.0, 0.0, 1.0]))
+    big = float(np.max(np.abs(full))) if len(full) else 0.0
+    if float(np.max(np.abs(rem), initial=0.0)) <= 1e-10 * max(big, 1e-300):
+        return q6
+    return full
+
+
+def _phi0(q):
+    """φ₀ and the polynomial: φ₀ chosen so that φ₀ + π is no closure (the leading
+    coefficient is not small), from a few trial values."""
+    best = None
+    for phi0 in (0.0, 1.0, 2.0, 3.0, 4.0, 5.0):
+        c = _poly(q, phi0)
+        if c is None:
+            return None
+        lead = abs(c[-1]) / max(float(np.max(np.abs(c))), 1e-300) if len(c) >= 7 else 0.0
+        if best is None or lead > best[0]:
+            best = (lead, phi0, c)
+        if lead >= 1e-3:
+            break
+    return best[1], best[2]
+
+
+def corners_of(q, pose):
+    """(P₁, P₂, P₃) at the plate pose (bx, by, φ)."""
+    L, xi, eta = q[10], q[11], q[12]
+    bx, by, phi = pose
+    c, s = math.cos(phi), math.sin(phi)
+    return ((bx, by), (bx + L * c, by + L * s),
+            (bx + xi * c - eta * s, by + xi * s + eta * c))
+
+
+def _residual(q, pose) -> float:
+    """The largest error of the two lengths and of P₃'s distance from the guide."""
+    ax, ay, a, dx, dy, d, gx, gy, ex, ey = _unpack(q)[:10]
+    B, C, X = corners_of(q, pose)
+    return max(abs(math.dist(B, (ax, ay)) - a), abs(math.dist(C, (dx, dy)) - d),
+               abs((X[0] - gx) * -ey + (X[1] - gy) * ex))
+
+
+def _b_candidates(phi, q):
+    """B at the plate angle φ: by Cramer's rule, and where its determinant vanishes B's two
+    points on the circle about A and the line the guide makes of it."""
+    ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta = _unpack(q)
+    nx, ny = -ey, ex
+    c, s = math.cos(phi), math.sin(phi)
+    m11, m12 = 2 * (L * c - dx + ax), 2 * (L * s - dy + ay)
+    r1 = -((L * c - dx + ax) ** 2 + (L * s - dy + ay) ** 2 - d * d + a * a)
+    px, py = xi * c - eta * s, xi * s + eta * c
+    r2 = nx * (gx - ax - px) + ny * (gy - ay - py)         # n·B′ = r2 (B′ = B − A)
+    out = []
+    det = m11 * ny - m12 * nx
+    if det != 0.0 and math.isfinite(det):
+        out.append((ax + (r1 * ny - m12 * r2) / det, ay + (m11 * r2 - r1 * nx) / det))
+    h2 = a * a - r2 * r2                                    # B′ = r2 n ± h e on |B′| = a
+    if h2 >= 0.0:
+        h = math.sqrt(h2)
+        for sg in (1.0, -1.0):
+            out.append((ax + r2 * nx + sg * h * ex, ay + r2 * ny + sg * h * ey))
+    return out
+
+
+def _jacobian(q, pose, size):
+    """The loop equations F (|B − A|² − a², |C − D|² − d², n·(X − G)·size) and their
+    Jacobian rows in (bx, by, φ·size), halved for the first two."""
+    ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta = _unpack(q)
+    nx, ny = -ey, ex
+    bx, by, phi = pose
+    c, s = math.cos(phi), math.sin(phi)
+    cx, cy = bx + L * c - dx, by + L * s - dy              # C − D
+    ux, uy = bx - ax, by - ay                               # B − A
+    px, py = xi * c - eta * s, xi * s + eta * c             # X − B
+    f1 = ux * ux + uy * uy - a * a
+    f2 = cx * cx + cy * cy - d * d
+    f3 = (nx * (bx + px - gx) + ny * (by + py - gy)) * size
+    j23 = (cx * -L * s + cy * L * c) / size
+    # rows: [ux, uy, 0], [cx, cy, j23], [nx·size/2, ny·size/2, (n·∂X/∂φ)/2]
+    h = 0.5 * size
+    j3 = (h * nx, h * ny, 0.5 * (nx * -py + ny * px))
+    return (f1, f2, f3), ((ux, uy, 0.0), (cx, cy, j23), j3)
+
+
+def _det3(r0, r1, r2):
+    return (r0[0] * (r1[1] * r2[2] - r1[2] * r2[1]) - r0[1] * (r1[0] * r2[2] - r1[2] * r2[0])
+            + r0[2] * (r1[0] * r2[1] - r1[1] * r2[0]))
+
+
+def _margin(rows) -> float:
+    det = _det3(*rows)
+    norms = math.prod(math.sqrt(sum(v * v for v in r)) for r in rows)
+    return abs(det) / norms if norms > 0 else 0.0
+
+
+def _newton(q, pose, size, iters=30):
+    """The closure near the plate pose (bx, by, φ), by Newton on the three loop equations;
+    returns (pose, margin) with margin = |det J| / (|J₁| |J₂| |J₃|) (0 where two closures
+    meet), or (None, −1) where it does not converge."""
+    bx, by, phi = pose
+    floor = 1e3 * _EPS * size * size
+    prev = math.inf
+    res = math.inf
+    for _ in range(iters):
+        (f1, f2, f3), rows = _jacobian(q, (bx, by, phi), size)
+        det = _det3(*rows)
+        if det == 0.0 or not math.isfinite(det):
+            return None, -1.0
+        rhs = (-0.5 * f1, -0.5 * f2, -0.5 * f3)
+        st = []
+        for k in range(3):          # Cramer's rule, column k replaced by the right side
+            cols = [list(r) for r in rows]
+            for i in range(3):
+                cols[i][k] = rhs[i]
+            st.append(_det3(*cols) / det)
+        bx, by, phi = bx + st[0], by + st[1], phi + st[2] / size
+        step = max(abs(v) for v in st)
+        res = max(abs(f1), abs(f2), abs(f3))
+        if step <= 4.0 * _EPS * size or (res <= floor and step >= 0.5 * prev):
+            break
+        prev = step
+    else:
+        if not res <= floor:
+            return None, -1.0
+    _, rows = _jacobian(q, (bx, by, phi), size)
+    return (bx, by, phi), _margin(rows)
+
+
+def margin_at(q, pose, size) -> float:
+    """The conditioning of the closure at the plate pose (0 where two closures meet)."""
+    return _margin(_jacobian(q, pose, size)[1])
+
+
+def _closures_from(qq, size) -> list[tuple[float, float, float]]:
+    """Every closure (bx, by, φ) of ``qq`` by the polynomial eliminated from its first corner:
+    each real root, each candidate B there polished by Newton (where Cramer's determinant
+    nearly vanishes two closures share nearly one φ and differ in B), checked."""
+    got = _phi0(qq)
+    if got is None:
+        return []
+    phi0, c = got
+    out = []
+    for t in real_roots(c):
+        phi = phi0 + 2.0 * math.atan(t)
+        for bx, by in _b_candidates(phi, qq):
+            if not (math.isfinite(bx) and math.isfinite(by)):
+                continue
+            pose = (bx, by, phi)
+            new, _ = _newton(qq, pose, size)
+            if new is not None and _residual(qq, new) <= _residual(qq, pose):
+                pose = new
+            if _residual(qq, pose) <= 1e-9 * size:
+                out.append(pose)
+    return out
+
+
+def closures(p, size=None) -> list[tuple[float, float, float, float]]:
+    """Every closure (bx, by, φ, η) of the group with parameters ``p`` = (ax, ay, a, dx, dy, d,
+    gx, gy, ex, ey, L, ξ, η, mirror): the real roots of the polynomial eliminated from P₁ and
+    of the one eliminated from P₂ (the first cannot tell apart two closures of nearly one φ
+    where DP₂ is normal to the guide, the second where AP₁ is), and, with ``mirror``, the
+    mirrored plate's; each polished by Newton, checked against the loop equations, once."""
+    *q, mirror = p
+    q = tuple(float(v) for v in q)
+    if not all(math.isfinite(v) for v in q) or math.hypot(q[8], q[9]) == 0.0:
+        return []
+    size = size or max(abs(v) for v in q) or 1.0
+    out, seen = [], []
+    ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi = q[:12]
+    for eta in ((q[12], -q[12]) if mirror and q[12] != 0.0 else (q[12],)):
+        qq = q[:12] + (eta,)
+        qc = (dx, dy, d, ax, ay, a, gx, gy, ex, ey, L, L - xi, -eta)
+        poses = _closures_from(qq, size) + [
+            (cx + L * math.cos(ph), cy + L * math.sin(ph), ph - math.pi)
+            for cx, cy, ph in _closures_from(qc, size)]
+        for pose in poses:
+            pts = corners_of(qq, pose)
+            if _residual(qq, pose) <= 1e-9 * size and all(
+                    max(math.dist(pts[i], o[i]) for i in range(3)) > 1e-9 * size for o in seen):
+                seen.append(pts)
+                out.append(pose + (eta,))
+    return out
+
+
+def _listed(q, mirror, size):
+    """Every closure as (corners, pose (bx, by, φ, η)), without repeats."""
+    out = []
+    for pose in closures(q + (mirror,), size):
+        pts = corners_of(q[:12] + (pose[3],), pose[:3])
+        if all(max(math.dist(pts[i], o[0][i]) for i in range(3)) > 1e-9 * size for o in out):
+            out.append((pts, pose))
+    return out
+
+
+def all_corners(p, size) -> list[tuple]:
+    """The corners (P₁, P₂, P₃) of every closure, without repeats."""
+    q = tuple(float(v) for v in p[:13])
+    return [c for c, _ in _listed(q, p[13], size)]
+
+
+_SIN_1DEG = math.sin(math.radians(1.0))
+
+
+def construction_sine(q, B, C, X) -> float:
+    """The sine of the smallest angle of the group's construction (one definition for a solve
+    and a sweep): the two lines that meet at S — AP₁ and DP₂ produced, unless they are parallel
+    within 1°, then the pair of the three (with the normal to the guide at P₃) that meets best
+    (:meth:`polygons.dyads.triad_slider.TriadSlider.for_instant`) — then the line from S to the
+    third corner against that corner's own line (its link, or the guide's normal).  Zero only
+    where the three lines are concurrent (two closures meet)."""
+    ax, ay, _, dx, dy, _, _, _, ex, ey = _unpack(q)[:10]
+    n = (-ey, ex)
+    lines = (((ax, ay), (B[0] - ax, B[1] - ay)), ((dx, dy), (C[0] - dx, C[1] - dy)), (X, n))
+    corner = (B, C, X)
+
+    def sin(a, b):
+        m = math.hypot(*a) * math.hypot(*b)
+        return abs(a[0] * b[1] - a[1] * b[0]) / m if m > 0 else 0.0
+    pairs = ((0, 1, 2), (0, 2, 1), (1, 2, 0))
+    s = [sin(lines[i][1], lines[j][1]) for i, j, _ in pairs]
+    v = 0 if s[0] >= _SIN_1DEG else max(range(3), key=s.__getitem__)
+    i, j, k = pairs[v]
+    (oi, ui), (oj, uj) = lines[i], lines[j]
+    cr = ui[0] * uj[1] - ui[1] * uj[0]
+    if cr == 0.0:
+        return 0.0
+    t = ((oj[0] - oi[0]) * uj[1] - (oj[1] - oi[1]) * uj[0]) / cr
+    S = (oi[0] + t * ui[0], oi[1] + t * ui[1])
+    P = corner[k]
+    return min(s[v], sin((P[0] - S[0], P[1] - S[1]), lines[k][1]))
+
+
+def _ref_poses(q, mirror, ref_b, ref_x):
+    """Plate poses (bx, by, φ, η) that put P₁ at ``ref_b`` and P₃ towards ``ref_x``."""
+    xi, eta = q[11], q[12]
+    out = []
+    for e in ((eta, -eta) if mirror and eta else (eta,)):
+        phi = math.atan2(ref_x[1] - ref_b[1], ref_x[0] - ref_b[0]) - math.atan2(e, xi)
+        out.append((ref_b[0], ref_b[1], phi, e))
+    return out
+
+
+def _follow(q, mirror, ref_b, ref_x, size, pose=None, fallback=True, reach=None):
+    """The closure nearest the reference corners (as :func:`polygons.dyads.triad_math._follow`):
+    Newton from ``pose``, checked against every closure where ill-conditioned; without a pose
+    or where Newton fails, the nearest of every closure; with a pose, none farther than
+    ``reach`` (the followed closure is gone).  Returns (corners, pose, margin) or None."""
+    reach = 0.25 * size if reach is None else reach
+    if pose is not None:
+        qq = q[:12] + (pose[3],)
+        new, m = _newton(qq, pose[:3], size)
+        if new is not None:
+            B, C, X = corners_of(qq, new)
+            if max(math.dist(B, ref_b), math.dist(X, ref_x)) <= reach and m >= _SURE:
+                return (B, C, X), new + (pose[3],), m
+        if not fallback:
+            return None
+    cands = _listed(q, mirror, size)
+    if not cands:
+        return None
+    dist = [max(math.dist(c[0][0], ref_b), math.dist(c[0][2], ref_x)) for c in cands]
+    i = int(np.argmin(dist))
+    if pose is not None and dist[i] > reach:
+        return None
+    (B, C, X), new = cands[i]
+    return (B, C, X), new, margin_at(q[:12] + (new[3],), new[:3], size)
+
+
+def _from_reference(q, mirror, ref_b, ref_x, size):
+    for pose in _ref_poses(q, mirror, ref_b, ref_x):
+        res = _follow(q, mirror, ref_b, ref_x, size, pose, fallback=False)
+        if res is not None:
+            return res
+    return _follow(q, mirror, ref_b, ref_x, size)
+
+
+def triad_slider_scalar(ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta, mirror, rbx, rby,
+                        rxx, rxy, size):
+    """The closure nearest the reference corners (P₁ at rb, P₃ at rx): (p1x, p1y, p2x, p2y,
+    p3x, p3y, margin), margin the smallest construction sine (0 where two closures meet; −1
+    and NaN where the group cannot close)."""
+    q = (ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta)
+    if not all(math.isfinite(v) for v in q + (rbx, rby, rxx, rxy)) or math.hypot(ex, ey) == 0:
+        return _NAN7
+    res = _from_reference(q, mirror, (rbx, rby), (rxx, rxy), size)
+    if res is None:
+        return _NAN7
+    (B, C, X), _, m = res
+    return (*B, *C, *X, construction_sine(q, B, C, X) if m > 0 else m)
+
+
+def triad_slider_cols(ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta, mirror, rbx, rby,
+                      rxx, rxy, size):
+    """:func:`triad_slider_scalar` over N positions, by continuation (as
+    :func:`polygons.dyads.triad_math.triad_cols`): the position whose closure is nearest the
+    reference first, then outwards, each by Newton from its neighbour's closure; where the
+    followed closure is lost the positions beyond are NaN and the margin −1."""
+    from .triad_math import _adjacent
+    arrs = [np.asarray(v, dtype=float) for v in (ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi,
+                                                 eta)]
+    shape = np.broadcast_shapes(*(v.shape for v in arrs))
+    n = int(np.prod(shape)) if shape else 1
+    cols = [np.broadcast_to(v, shape).reshape(n).tolist() for v in arrs]
+    out = np.full((7, n), np.nan)
+    out[6] = -1.0
+    qs = [tuple(c[k] for c in cols) for k in range(n)]
+    ref_b, ref_x = (rbx, rby), (rxx, rxy)
+    start, best, first = None, math.inf, None
+    with np.errstate(all="ignore"):
+        P = np.array(cols)
+        r = np.abs(np.hypot(rbx - P[0], rby - P[1]) - P[2])
+    order = ([int(np.nanargmin(r))] if np.isfinite(r).any() else []) \
+        + list(range(0, n, max(1, n // 8)))
+    for k in order:
+        if not all(math.isfinite(v) for v in qs[k]):
+            continue
+        res = _from_reference(qs[k], mirror, ref_b, ref_x, size)
+        if res is None:
+            continue
+        dist = max(math.dist(res[0][0], ref_b), math.dist(res[0][2], ref_x))
+        if dist < best:
+            start, best, first = k, dist, res
+        if dist <= 1e-9 * size:
+            break
+    if start is not None:
+        done = np.zeros(n, dtype=bool)
+        # _adjacent reads the outer points' coordinates at 0, 1, 3, 4, 6, 7: A, D, G here
+        wrap = n > 2 and _adjacent(qs, 0, n - 1)
+        back = list(range(start, -1, -1)) + (list(range(n - 1, start, -1)) if wrap else [])
+        for rng in (range(start, n), back):
+            res, moved = first, None
+            for k in rng:
+                if k != start:
+                    if done[k] or not all(math.isfinite(v) for v in qs[k]):
+                        break
+                    (B, _, X), pose, _ = res
+                    reach = 0.25 * size if moved is None else max(4.0 * moved, 1e-3 * size)
+                    new = _follow(qs[k], mirror, B, X, size, pose, reach=reach)
+                    if new is None:
+                        break
+                    moved = max(math.dist(new[0][0], B), math.dist(new[0][2], X))
+                    res = new
+                (B, C, X), _, m = res
+                out[:, k] = (*B, *C, *X,
+                             construction_sine(qs[k], B, C, X) if m > 0 else m)
+                done[k] = True
+    return tuple(o.reshape(shape) if shape else o[0] for o in out)
