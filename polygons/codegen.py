@@ -22,7 +22,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .contacts import wheel_of
 from .dyads.base import ARRAY_TWIN
 from .dyads.numeric import hypot_cols, namespace, where_scalar
 from .errors import UnsupportedError
@@ -495,6 +494,7 @@ class _Steps:
         centre W moves along the equivalent guide ∥ the surface, e; the contact at rest)."""
         L, W = s.args
         e = self.slider_e(W)
+        from .contacts import wheel_of          # (a rolling wheel only: a quicker start)
         r = self.g.param(lambda sc: wheel_of(sc, W).radius)
         along = self.dot(self.of(s.diagram, W), e)
         val = self.g.let("-{} / {}", along, r)

@@ -44,6 +44,7 @@ from dataclasses import dataclass
 from .errors import SceneError, UnsupportedError, show
 from .reader import LABEL
 from .schema import Key, Table
+from .scene_tables import CONTACT_TABLES
 from .units import parse_quantity
 from .higher import (OUTPUTS, LINK_NAME, _bar_to_contact, _bearing_lines,  # noqa: F401
                      bearing, higher, on_arc)
@@ -144,7 +145,7 @@ TABLES: tuple[Table, ...] = (
 )
 
 #: the scene tables this module rewrites
-NAMES = ("curved_slots", "cams", "rolling", "bearing")
+NAMES = CONTACT_TABLES
 #: the table each kind of :class:`Equivalent` is stated in
 TABLE_OF = {"curved slot": "curved_slots", "cam": "cams", "flat-faced cam": "cams",
             "rolling": "rolling", "bearing": "bearing"}

@@ -31,7 +31,6 @@ import re
 
 import numpy as np
 
-from . import contacts
 from .errors import PolygonsError, SceneError, UnknownLabelError, show, suggest
 from .evaluate import PointResult, Solution
 # FUNCTIONS is read by polygons.forces as quantities.FUNCTIONS
@@ -68,7 +67,11 @@ def drawn_on_polygon(sol: Solution, expr: str, value: float) -> tuple[str, float
         return dx, (1.0 / (1.0 / lx + 1.0 / ly) if lx > 0 and ly > 0 else 0.0)
     if fn in ("omega", "alpha"):
         lr = sol.links.get(args[0])
-        length = lr.length if lr is not None else contacts.wheel_of(sol.scene, args[0]).radius
+        if lr is None:                      # a rolling wheel's (polygons.contacts, imported here)
+            from .contacts import wheel_of
+            length = wheel_of(sol.scene, args[0]).radius
+        else:
+            length = lr.length
         return ("velocity" if fn == "omega" else "acceleration"), abs(value) * length
     return ("velocity" if fn in ("v", "vs") else "acceleration"), abs(value)
 
@@ -172,7 +175,8 @@ def _quantity(sol: Solution, expr: str) -> float | None:
     def point(label):
         if label not in sol.points:         # a wheel's centre between plates, a rim point
             for e in getattr(scene, "equivalents", ()):
-                got = contacts.wheel_point(sol, e, label) if e.kind == "rolling" else None
+                from .contacts import wheel_point
+                got = wheel_point(sol, e, label) if e.kind == "rolling" else None
                 if got is not None:
                     return PointResult(*got)
         targets = getattr(getattr(sol, "plan", None), "targets", None)
@@ -206,9 +210,10 @@ def _quantity(sol: Solution, expr: str) -> float | None:
         return np.array(value)
 
     def link(name):
-        if name not in sol.links and contacts.wheel_of(scene, name) is not None:
-            return None
         if name not in sol.links:
+            from .contacts import wheel_of  # (imported only here: a quicker start)
+            if wheel_of(scene, name) is not None:
+                return None
             raise UnknownLabelError(f"unknown link {name!r} in {expr!r}: "
                                     f"{suggest(name, sol.links)}", file=scene.file)
         return sol.links[name]
@@ -223,7 +228,8 @@ def _quantity(sol: Solution, expr: str) -> float | None:
     def wheel_value(label, what):
         """ω / α of the wheel (ω = (v₁ − v_W)/r; between plates (v₁ − v₂)/2r:
         :func:`contacts.rolling`)."""
-        h = contacts.rolling(sol, contacts.wheel_of(scene, label))
+        from .contacts import rolling, wheel_of
+        h = rolling(sol, wheel_of(scene, label))
         if h is None or what not in h:
             need = "velocity" if what == "omega" else "acceleration"
             raise SceneError(f"{expr!r} needs the {need} polygon, which this scene does not solve "

@@ -38,11 +38,9 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from . import cam_profiles, contacts, topology
+from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
-from .exam_table import spec as exam_spec
-from .question_table import check as check_questions
 from .loads import parse as parse_loads
 from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record, refuse_control_characters
@@ -52,7 +50,7 @@ from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  
 from .options import Options, parse_options
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import (ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS,  # noqa: F401
-                           EXTREMES as _EXTREMES, book_words)
+                           EXTREMES as _EXTREMES, CONTACT_TABLES, book_words)
 from .quantity_grammar import (QUANTITY_FUNCTIONS, parse_quantity_expr,  # noqa: F401
                                _parse_answers, unit_dimension)
 
@@ -229,8 +227,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     if isinstance(data, dict) and "ground" not in data and _lone_wheel(data):
         data = {**data, "ground": _surface_point(data)}
     if isinstance(data, dict) and "cam_profiles" in data:     # a cam by its profile
+        from . import cam_profiles              # imported only here: a quicker start
         data = cam_profiles.rewrite(data, file)
-    data, equivalents = contacts.rewrite(data, file) if isinstance(data, dict) else (data, ())
+    equivalents = ()
+    if isinstance(data, dict) and any(name in data for name in CONTACT_TABLES):
+        from . import contacts                  # imported only here: a quicker start
+        data, equivalents = contacts.rewrite(data, file)
     r = _Reader(file)
     r.table(data, "", TOP_KEYS + ("crossing",) + OPTION_KEYS + extra_keys,
             required=("ground", "driver"))
@@ -552,8 +554,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     answers = _parse_answers(answers_raw, r, default_tol)
 
     check_proportions(file, ground, drawn, links, sliders, points, assembly, driver,
-                      contacts={f"{contacts.TABLE_OF[q.kind]}.{q.at}.radius": q.radius
-                                for q in equivalents})
+                      contacts=_contact_radii(equivalents))
 
     # the joint tables read once into bodies and pairs: every method reads this model
     model = build_model(ground=ground, links=links, sliders=sliders, slots=slots,
@@ -580,9 +581,22 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(
         spec, r, where, default_tol, **kw))
     scene = record(Scene, **{**vars(scene), "loads": loads})
-    exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
-    check_questions(scene, parse_quantity_expr, default_tol)   # [[questions]] (question_table)
+    # (the tables' modules imported only for a scene that has them: a quicker start)
+    if "exam" in scene.extra:
+        from .exam_table import spec as exam_spec
+        exam_spec(scene, parse_quantity_expr)      # [exam], checked now (polygons.exam_table)
+    if "questions" in scene.extra:
+        from .question_table import check as check_questions
+        check_questions(scene, parse_quantity_expr, default_tol)   # [[questions]]
     return scene
+
+
+def _contact_radii(equivalents) -> dict:
+    """table.label.radius -> radius of each equivalent link's contact (for the proportions)."""
+    if not equivalents:
+        return {}
+    from .contacts import TABLE_OF
+    return {f"{TABLE_OF[q.kind]}.{q.at}.radius": q.radius for q in equivalents}
 
 
 def _lone_wheel(data) -> bool:

@@ -13,6 +13,10 @@ from __future__ import annotations
 
 from .schema import Key, Table
 
+#: the tables polygons.contacts rewrites into equivalent links (named here, so that a scene
+#: without them is read without importing that module)
+CONTACT_TABLES = ("curved_slots", "cams", "rolling", "bearing")
+
 #: the assembly words (``[assembly] C = "C above AD"``)
 RELATIONS = ("above", "below", "left of", "right of")
 #: a corner named the extreme one of its class-III group's corners

@@ -65,7 +65,7 @@ def run(args) -> int:
         from ..forces import analyse
         from .forces import forces_table, to_dict
         forces = analyse(scene)
-    if not method:              # an answer naming a point of Klein's figure (Klein's ON)
+    if not method and scene.answers:   # an answer naming a point of Klein's figure (ON)
         from ..classic.klein import asked
         method = "klein" if asked(sol) else None
     fig = None
@@ -75,10 +75,12 @@ def run(args) -> int:
     if args.svg:
         from .draw import write_diagrams
         write_diagrams(sol, args, args.svg, klein=method)
-    from .. import pins
+    has_pins = any(k in scene.extra for k in ("pins", "least_velocity"))   # pins.has_pins
+    if has_pins:                # (polygons.pins imported only for a scene with those tables)
+        from .. import pins
     if args.json:
         data = to_json(sol)
-        if pins.has_pins(scene):
+        if has_pins:
             data["pins"] = pins.to_dict(sol)
         if forces is not None:
             data["forces"] = to_dict(forces)
@@ -94,7 +96,7 @@ def run(args) -> int:
         text = json_text(data)
     else:
         text = table(sol, steps=not args.no_steps, units=args.units)
-        if pins.has_pins(scene):
+        if has_pins:
             text += "\n" + "\n".join(pins.report_lines(sol)) + "\n"
         if forces is not None:
             text += "\n" + forces_table(forces, header=False)

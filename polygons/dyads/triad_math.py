@@ -35,7 +35,6 @@ import numpy as np
 
 _TWO_PI = 2.0 * math.pi
 _EPS = 2.220446049250313e-16
-_PP = np.polynomial.polynomial            # coefficients low → high order
 
 
 def _quartic(p, phi0):
@@ -58,7 +57,8 @@ def _quartic(p, phi0):
     m21, m22 = lin(-2 * ex, 2 * xi, -2 * eta), lin(-2 * ey, 2 * eta, 2 * xi)
     r2 = lin(-(xi * xi + eta * eta + ex * ex + ey * ey - e * e + a * a),
              2 * (ex * xi + ey * eta), 2 * (ey * xi - ex * eta))
-    mul, sub = _PP.polymul, _PP.polysub
+    from numpy.polynomial import polynomial as _PP   # low → high order (imported here:
+    mul, sub = _PP.polymul, _PP.polysub              # a triad only; a quicker start)
     dl = sub(mul(m11, m22), mul(m12, m21))
     nx = sub(mul(r1, m22), mul(m12, r2))
     ny = sub(mul(m11, r2), mul(r1, m21))

@@ -32,7 +32,7 @@ import math
 
 import numpy as np
 
-from .triad_math import _EPS, _PP, real_roots
+from .triad_math import _EPS, real_roots
 
 _NAN7 = (math.nan,) * 6 + (-1.0,)
 
@@ -70,7 +70,8 @@ def _poly(q, phi0):
     # n·B = n·G − n·R(φ)(ξ, η) = n·G − cos φ (n_x ξ + n_y η) − sin φ (n_y ξ − n_x η)
     m21, m22 = lin(nx, 0.0, 0.0), lin(ny, 0.0, 0.0)
     r2 = lin(nx * gx + ny * gy, -(nx * xi + ny * eta), -(ny * xi - nx * eta))
-    mul, sub = _PP.polymul, _PP.polysub
+    from numpy.polynomial import polynomial as _PP   # low → high order (imported here:
+    mul, sub = _PP.polymul, _PP.polysub              # a triad only; a quicker start)
     dl = sub(mul(m11, m22), mul(m12, m21))
     px = sub(mul(r1, m22), mul(m12, r2))
     py = sub(mul(m11, r2), mul(r1, m21))
