@@ -249,3 +249,24 @@ def test_a_stated_primitive_over_a_sweep_is_itself_at_each_position():
             got, _ = prim.locate(SCENE, one, sig, 0.3)
             for k, v in got.items():
                 assert np.max(np.abs(pts[k][:, i] - v)) <= 1e-12, (type(prim).__name__, k, i)
+
+
+def test_the_triad_with_a_block_is_stated_once():
+    """The triad with a block writes its position once, as ``source``: its ``locate`` (after
+    choosing the reference closure) is that statement evaluated, to the last bit."""
+    from pathlib import Path
+    from polygons.dyads.numeric import interpret
+    from polygons.dyads.triad_slider import TriadSlider
+    from polygons.evaluate import solve
+    from polygons.scene import load_scene
+    case = Path(__file__).resolve().parents[1] / "cases" / "triad-slider-corner.toml"
+    sol = solve(load_scene(str(case)))
+    groups = [d for d in sol.plan.dyads if isinstance(d, TriadSlider)]
+    assert groups and "source" in vars(TriadSlider)
+    for grp in groups:
+        pos = {k: np.asarray(v, dtype=float) for k, v in sol.placement.points.items()}
+        sigma = dict(zip(grp.sigma_keys, (*pos[grp.b], *pos[grp.x])))
+        pts, m = grp.locate(sol.scene, pos, sigma, 0.0)
+        want, m2 = interpret(grp, sol.scene, pos, sigma, 0.0)
+        assert m == m2 and all(np.array_equal(pts[k], want[k]) for k in want)
+        assert all(np.allclose(pts[k], pos[k], atol=1e-12) for k in grp.placed)

@@ -37,8 +37,9 @@ import numpy as np
 from ..steps import Builder, Component, Kind, Op
 from . import image
 from .base import size_of
+from .numeric import interpret
 from .triad import Triad, _aux_label, _plates
-from .triad_slider_math import all_corners, triad_slider_cols, triad_slider_scalar
+from .triad_slider_math import all_corners, triad_slider_scalar
 
 #: the module registers itself (:mod:`polygons.dyads`): a group of a higher class, tried when
 #: no dyad can be placed, after the three-link triad
@@ -220,24 +221,20 @@ class TriadSlider:
 
     def locate(self, scene, pos, sigma, x):
         """The closure nearest the reference ``sigma`` (None: the first closure), over one
-        position or (2, N) arrays (continuation)."""
-        p = self._params(scene, pos)
-        ref = [sigma[k] for k in self.sigma_keys] if sigma else None
-        size = size_of(scene)
-        if np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1:
-            if ref is None:
-                cands = self.closures(scene, pos)
-                if not cands:
-                    return self._nan(pos), -1.0
-                B, X = cands[0][self.b], cands[0][self.x]
-                ref = [B[0], B[1], X[0], X[1]]
-            r = triad_slider_scalar(*(float(v) for v in p), *ref, size)
-        else:
-            r = triad_slider_cols(*p, *(ref or [0.0] * 4), size)
-        pts = {self.b: np.array([r[0], r[1]]), self.c: np.array([r[2], r[3]]),
-               self.x: np.array([r[4], r[5]])}
-        pts[self.s] = self._assur(pos, pts)
-        return pts, r[6]
+        position or (2, N) arrays (continuation): :meth:`source` evaluated
+        (:func:`~polygons.dyads.numeric.interpret`), the one statement of its geometry."""
+        if not sigma:
+            one = np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1
+            cands = self.closures(scene, pos) if one else None
+            if one and not cands:
+                return self._nan(pos), -1.0
+            B, X = (cands[0][self.b], cands[0][self.x]) if one else ((0.0, 0.0), (0.0, 0.0))
+            sigma = dict(zip(self.sigma_keys, (B[0], B[1], X[0], X[1])))
+        return interpret(self, scene, pos, sigma, x)
+
+    def variant(self, scene) -> tuple:
+        """The statement's shape does not change with the scene's numbers."""
+        return ()
 
     def _nan(self, pos):
         return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
