@@ -38,6 +38,22 @@ def random_group(rng, close: bool):
     return A, a, D, d, E, rng.uniform(0.05, 0.4), L, xi, eta
 
 
+def tally(counts: dict, one, two, scanned=None) -> float:
+    """One pose added to ``counts``: its closures by the first route (B's corner), whether
+    the second route (C's corner: C and B swapped) lists the same ones to 1e-9, and — given
+    ``scanned``, the dense scan's count — whether the scan agrees.  Returns the separation of
+    the pose's two closest closures."""
+    counts["poses"] += 1
+    counts["closures"] += len(one)
+    counts["routes_disagree"] += not (len(one) == len(two) and all(
+        min(max(math.dist(c[0], o[1]), math.dist(c[2], o[2])) for o in two) < 1e-9
+        for c in one))
+    if scanned is not None:
+        counts["scanned"] += 1
+        counts["scan_disagree"] += scanned != len(one)
+    return separation(one)
+
+
 def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:
     rng = np.random.default_rng(seed)
     counts = dict(poses=0, closures=0, routes_disagree=0, scanned=0, scan_disagree=0)
@@ -48,17 +64,9 @@ def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:
         one = all_corners((*A, a, *D, d, *E, e, L, xi, eta, 0.0), 0.5)
         # the same group from the corner C: C at the origin of the plate, B at (L, 0)
         two = all_corners((*D, d, *A, a, *E, e, L, L - xi, -eta, 0.0), 0.5)
-        counts["poses"] += 1
-        counts["closures"] += len(one)
-        same = len(one) == len(two) and all(
-            min(max(math.dist(c[0], o[1]), math.dist(c[2], o[2])) for o in two) < 1e-9
-            for c in one)
-        counts["routes_disagree"] += not same
-        closest = min(closest, separation(one))
-        if scan_every and i % scan_every == 0:
-            ref = at.scan_closures(A, a, D, d, E, e, L, xi, eta, n=360)
-            counts["scanned"] += 1
-            counts["scan_disagree"] += len(ref) != len(one)
+        scanned = (len(at.scan_closures(A, a, D, d, E, e, L, xi, eta, n=360))
+                   if scan_every and i % scan_every == 0 else None)
+        closest = min(closest, tally(counts, one, two, scanned))
     counts["closest_m"] = closest
     counts["us_per_pose"] = 1e6 * (time.perf_counter() - t0) / max(n, 1)
     return counts

@@ -24,7 +24,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 import analytic_triad_slider as ats                                # noqa: E402
-from polygons.dyads.triad_math import separation                   # noqa: E402
+from triad_closures import tally                                   # noqa: E402
 from polygons.dyads.triad_slider_math import all_corners           # noqa: E402
 
 
@@ -39,17 +39,9 @@ def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:
         one = all_corners((*A, a, *D, d, *G, *e, L, xi, eta, 0.0), 0.5)
         # the same group from the corner C: C at the origin of the plate, B at (L, 0)
         two = all_corners((*D, d, *A, a, *G, *e, L, L - xi, -eta, 0.0), 0.5)
-        counts["poses"] += 1
-        counts["closures"] += len(one)
-        same = len(one) == len(two) and all(
-            min(max(math.dist(c[0], o[1]), math.dist(c[2], o[2])) for o in two) < 1e-9
-            for c in one)
-        counts["routes_disagree"] += not same
-        closest = min(closest, separation(one))
-        if scan_every and i % scan_every == 0:
-            ref = ats.scan_closures(A, a, D, d, G, nn, L, xi, eta, samples=360)
-            counts["scanned"] += 1
-            counts["scan_disagree"] += len(ref) != len(one)
+        scanned = (len(ats.scan_closures(A, a, D, d, G, nn, L, xi, eta, samples=360))
+                   if scan_every and i % scan_every == 0 else None)
+        closest = min(closest, tally(counts, one, two, scanned))
     counts["closest_m"] = closest
     counts["us_per_pose"] = 1e6 * (time.perf_counter() - t0) / max(n, 1)
     return counts
