@@ -3,6 +3,8 @@ wrong name needs (issue 31: the cold start; the time itself is measured by bench
 import subprocess
 import sys
 
+import pytest
+
 from conftest import CASES
 
 PROBE = """
@@ -27,3 +29,42 @@ def test_solve_imports_no_drawing_library():
     assert out.returncode == 0, out.stderr
     code, *loaded = out.stdout.split()
     assert code == "0" and loaded == []
+
+
+BLAS_PROBE = """
+import io, os, sys, contextlib
+sys.argv = ["polygons", "solve", sys.argv[1]]
+from polygons.cli import main
+with contextlib.redirect_stdout(io.StringIO()):
+    code = main()                      # as the program runs it (argv None)
+print(code, os.environ.get("OPENBLAS_NUM_THREADS"), len(os.listdir("/proc/self/task")))
+"""
+
+
+def _blas_probe(**env):
+    import os
+    clean = {k: v for k, v in os.environ.items()
+             if k not in ("OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS")}
+    out = subprocess.run([sys.executable, "-c", BLAS_PROBE, str(CASES / "s003-fig7.toml")],
+                         capture_output=True, text=True, timeout=120, env={**clean, **env})
+    assert out.returncode == 0, out.stderr
+    return out.stdout.split()
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="threads read off /proc")
+def test_program_starts_openblas_with_one_thread():
+    """The program starts numpy's OpenBLAS with one thread (no worker per core set up at import:
+    ~55 ms of CPU of a cold solve) — and a number the user chose is kept."""
+    assert _blas_probe() == ["0", "1", "1"]                 # one thread in the whole process
+    code, blas, threads = _blas_probe(OMP_NUM_THREADS="2")
+    assert (code, blas) == ("0", "None") and int(threads) >= 1
+
+
+def test_one_blas_thread_keeps_a_number_the_user_chose():
+    from polygons.cli import one_blas_thread
+    env = {"OMP_NUM_THREADS": "4"}
+    one_blas_thread(env)
+    assert env == {"OMP_NUM_THREADS": "4"}
+    env = {}
+    one_blas_thread(env)
+    assert env == {"OPENBLAS_NUM_THREADS": "1"}

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 
 #: command -> (module, one-line help for the command list)
@@ -81,6 +82,22 @@ def _one_line(text: str, limit: int = 2000) -> str:
     return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
+#: the variables OpenBLAS reads for its number of threads
+BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS")
+
+
+def one_blas_thread(environ) -> None:
+    """numpy's OpenBLAS started with one thread when the user set none of
+    :data:`BLAS_THREADS`: at import it starts a worker thread per core and sets it up (~55 ms
+    of CPU on a 2-core machine, a quarter of a cold ``polygons solve``, and wall time too when
+    the other core is busy), while no command multiplies matrices large enough to gain from a
+    second thread (the force analysis solves 3 equations per body).  Only the program does
+    this (``polygons`` and ``python -m polygons``), before numpy is imported; a Python caller
+    of :func:`main` keeps its own environment."""
+    if not any(k in environ for k in BLAS_THREADS):
+        environ["OPENBLAS_NUM_THREADS"] = "1"
+
+
 def main(argv=None) -> int:
     """Run one command (:func:`run_command`); run as the program (``argv`` None: ``polygons``
     and ``python -m polygons``) the process exits as it returns, so the objects made are frozen
@@ -89,6 +106,7 @@ def main(argv=None) -> int:
     closed by then, standard output is flushed at exit all the same)."""
     if argv is not None:
         return run_command(argv)
+    one_blas_thread(os.environ)
     code = run_command(sys.argv[1:])
     import gc
     gc.freeze()
