@@ -127,20 +127,7 @@ class TriadSlider:
     def assur_sine(self, points, via=None) -> float:
         return float(self.pair_sine(points, via))
 
-    def for_instant(self, points):
-        """This group with S taken on the pair of lines that meet best at the instant
-        ``points`` when its own pair is parallel within 1° (S at infinity is a point of the
-        construction, not a singularity of the group): (group, note) — note '' if kept."""
-        from dataclasses import replace
-        if self.assur_sine(points) >= math.sin(math.radians(1.0)):
-            return self, ""
-        best = max(range(3), key=lambda v: self.assur_sine(points, v))
-        if best == self.via:
-            return self, ""
-        new = replace(self, via=best)
-        return new, (f"the lines {self.pair_words()} are parallel here (the auxiliary point "
-                     f"{self.s} at infinity, not a singularity of the group): {self.s} is "
-                     f"taken where {new.pair_words()} meet instead")
+    for_instant = Triad.for_instant
 
     @property
     def placed(self) -> tuple[str, ...]:
