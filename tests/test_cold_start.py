@@ -26,7 +26,9 @@ LAZY = ("matplotlib", "svgwrite", "diagrams", "cairosvg", "numba", "tqdm", "toml
         "polygons.dyads.slider_drive", "polygons.dyads.rrr", "polygons.dyads.rrp",
         "polygons.dyads.rpp", "polygons.dyads.guided", "polygons.dyads.crossing",
         "polygons.dyads.wheel_pin", "polygons.dyads.slot_slider", "polygons.dyads.triad",
-        "polygons.dyads.triad_slider")
+        "polygons.dyads.triad_slider",
+        # the force tables' readers and records: this scene has none (polygons.loadbodies)
+        "polygons.loads", "polygons.loadmodel", "polygons.loadrun")
 
 
 def test_solve_imports_no_drawing_library():

@@ -23,7 +23,8 @@ WHERE = {
     "polygons.question_table": "scene", "polygons.cam_profiles": "scene",
     "polygons.cam_diagram": "interpreters", "polygons.conditions": "forces",
     "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
-    "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
+    "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.loadbodies": "scene",
+    "polygons.reader": "scene",
     "polygons.loadeffort": "scene", "polygons.loadtables": "scene", "polygons.loadrun": "scene",
     # the mechanism model: the joint tables read once into bodies and pairs, the last step of
     # loading a scene (polygons.scene builds it; every layer above reads it)
