@@ -28,7 +28,9 @@ LAZY = ("matplotlib", "svgwrite", "diagrams", "cairosvg", "numba", "tqdm", "toml
         "polygons.dyads.wheel_pin", "polygons.dyads.slot_slider", "polygons.dyads.triad",
         "polygons.dyads.triad_slider",
         # the force tables' readers and records: this scene has none (polygons.loadbodies)
-        "polygons.loads", "polygons.loadmodel", "polygons.loadrun")
+        "polygons.loads", "polygons.loadmodel", "polygons.loadrun",
+        # argparse's terminal width found without shutil (polygons.cli.columns)
+        "shutil", "bz2", "lzma")
 
 
 def test_solve_imports_no_drawing_library():
@@ -89,3 +91,14 @@ def test_the_kinds_index_is_what_discovery_finds():
     for tup, role in dyads.TUPLES.items():     # the exported tuples follow the index
         assert [m.__name__.rsplit(".", 1)[1] for m in getattr(dyads, tup)] == \
             list(_index.ORDER[role])
+
+
+@pytest.mark.parametrize("env", [{}, {"COLUMNS": "60"}, {"COLUMNS": "0"}, {"COLUMNS": "x"}])
+def test_the_help_width_is_shutils(env, monkeypatch):
+    """argparse's width (polygons.cli.columns) is what shutil.get_terminal_size gives it."""
+    import shutil
+    from polygons.cli import columns
+    monkeypatch.delenv("COLUMNS", raising=False)
+    for k, v in env.items():
+        monkeypatch.setenv(k, v)
+    assert columns() == shutil.get_terminal_size().columns
