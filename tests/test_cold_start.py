@@ -102,3 +102,27 @@ def test_the_help_width_is_shutils(env, monkeypatch):
     for k, v in env.items():
         monkeypatch.setenv(k, v)
     assert columns() == shutil.get_terminal_size().columns
+
+
+GC_PROBE = """
+import gc, io, sys, contextlib
+seen = {}
+def hook(event, args):
+    if event == "import" and args[0] == "polygons.evaluate" and "evaluate" not in seen:
+        seen["evaluate"] = gc.isenabled()
+sys.addaudithook(hook)
+sys.argv = ["polygons", "solve", sys.argv[1]]
+from polygons.cli import main
+with contextlib.redirect_stdout(io.StringIO()):
+    code = main()
+print(code, seen["evaluate"], gc.isenabled(), gc.get_freeze_count() > 0)
+"""
+
+
+def test_the_program_starts_without_the_collector():
+    """The program's start-up (the solver's imports) runs without the cyclic collector, which
+    runs again for the command itself, what the start-up made frozen out of its way."""
+    out = subprocess.run([sys.executable, "-c", GC_PROBE, str(CASES / "s003-fig7.toml")],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["0", "False", "True", "True"]
