@@ -20,7 +20,7 @@ WHERE = {
     "polygons.scene": "scene", "polygons.quantity_grammar": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.higher": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
-    "polygons.question_table": "scene", "polygons.cam_profiles": "scene",
+    "polygons.question_table": "scene", "polygons.cam_profiles": "scene", "polygons.cam_events": "scene", "polygons.cam_profile_table": "scene",
     "polygons.cam_diagram": "interpreters", "polygons.conditions": "forces",
     "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
