@@ -237,13 +237,17 @@ def answer(scene: Scene, q: Question) -> Finding:
     if q.find != "angle" or not cam_diagram.has_profile(scene):
         return found
     xs = _samples_only(scene, q)
-    dwell = [x for x in xs if cam_diagram.part_at(scene, x)[0] == "base circle"]
-    if not dwell:
+    if not any(cam_diagram.part_at(scene, x)[0] == "base circle" for x in xs):
         return found
-    words = (f"the follower dwells on the base circle (at rest, no linkage) at "
-             f"{len(dwell)} of the {len(xs)} sampled cam angles, "
-             f"{_fmt(input_in_unit(q, dwell[0]))} … {_fmt(input_in_unit(q, dwell[-1]))} "
-             f"{q.unit}: the quantity is not taken there")
+    runs = [(a, b) for part, a, b, _ in cam_diagram.parts(scene) if part == "base circle"]
+    if len(runs) > 1 and runs[0][0] == 0.0 and runs[-1][1] == _TAU:    # one dwell round 0
+        runs = [(runs[-1][0], runs[0][1])] + runs[1:-1]
+    full = replace(q, range=None)       # an angle within the turn, in the question's unit
+    spans = " and ".join(f"{_fmt(input_in_unit(full, a))} … {_fmt(input_in_unit(full, b))}"
+                         for a, b in runs)
+    words = (f"the follower dwells on the base circle (at rest, no linkage) from {spans} "
+             f"{q.unit} (the nose axis's angle; its edges to the last bit): the quantity is "
+             f"not taken there")
     return replace(found, words=f"{found.words}; {words}" if found.words else words)
 
 

@@ -598,7 +598,8 @@ def test_the_tangent_flank_case_is_the_books_closed_form():
         assert list(fd.values()) == pytest.approx([value] * 2, rel=1e-9)
         c = conditions.check(fd)
         assert c.exact_ok and c.value_ok
-        assert "dwells on the base circle" in fd.words      # no value there: said
+        assert "dwells on the base circle" in fd.words      # no value there: said,
+        assert "from 135 … 45 deg" in fd.words              # its edges exact, not samples
     import tomllib
     data = tomllib.loads(case.read_text(encoding="utf-8"))
     # the cam's torque over the turn against a 80 N spring load and a 1.5 kg follower: the
