@@ -16,11 +16,11 @@ LAYERS = ("base", "scene", "plan", "interpreters", "forces", "render", "commands
 WHERE = {
     "polygons.errors": "base", "polygons.units": "base", "polygons.schema": "base",
     "polygons.theorems": "base", "polygons.steps": "base", "polygons.memo": "base", "polygons.notation": "base",
-    "polygons.program": "base",
+    "polygons.program": "base", "polygons.calculus": "base",
     "polygons.scene": "scene", "polygons.quantity_grammar": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.higher": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
-    "polygons.question_table": "scene", "polygons.cam_profiles": "scene",
+    "polygons.question_table": "scene", "polygons.cam_profiles": "scene", "polygons.cam_events": "scene", "polygons.cam_profile_table": "scene",
     "polygons.cam_diagram": "interpreters", "polygons.conditions": "forces",
     "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
     "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.loadbodies": "scene",
