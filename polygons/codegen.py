@@ -20,9 +20,14 @@ This module imports neither shapely nor the diagrams.
 """
 from __future__ import annotations
 
+import ast
+import copy
+import inspect
+import math
+import textwrap
 from dataclasses import dataclass, field
 
-from .dyads.base import ARRAY_TWIN
+from .dyads.base import ARRAY_TWIN, circle_circle_scalar, circle_line_scalar
 from .dyads.numeric import hypot_cols, namespace, where_scalar
 from .errors import UnsupportedError
 from .plan import Plan
@@ -34,11 +39,50 @@ from .steps import Diagram, Op, Step, Vertices
 PARALLEL_DEG = 1e-5
 WARN_DEG = 1.0
 
+#: the answers-only program's test of two lines u, v (of any length) meeting:
+#: (u × v)² > LEAN_TAN² (u · v)², i.e. an angle above PARALLEL_DEG by a relative 1e-9 — stricter
+#: than the full program's test by more than its rounding, so that where the lean program
+#: passes the full one does too; where it fails, the full program is run (its error, or its
+#: numbers: :meth:`polygons.compiled.Program.solve`).  A zero direction fails it too.
+LEAN_TAN = math.tan(math.radians(PARALLEL_DEG)) * (1.0 + 1e-9)
+
+#: what an answers-only program may compute (``compile_scene(scene, outputs=...)``): every
+#: placed point's position, velocity and acceleration, every link's ω and α, every slide's
+#: sliding velocity and acceleration
+ANSWERS = ("pos", "velocity", "acceleration", "omega", "alpha", "slide_v", "slide_a")
+
 V, A = Diagram.VELOCITY, Diagram.ACCELERATION
 _FIELDS = ("at", "vector", "point", "direction")
 
 
 _where, _hypot_cols = where_scalar, hypot_cols     # (the names jit reads)
+
+#: the placements the answers-only program writes out in place (:meth:`Source.inline`): each
+#: a straight-line body whose early returns (``if ...: return``) are all failures of its
+#: dyad's margin test, ending in one ``return`` of its results
+_INLINE = frozenset((circle_circle_scalar, circle_line_scalar))
+_TREES: dict = {}
+
+
+def _inline_tree(fn) -> ast.FunctionDef:
+    """``fn``'s definition parsed once (its docstring dropped), checked to be of the shape
+    :meth:`Source.inline` writes out: assignments to one name, ``if ...: return ...``, one
+    final ``return`` of a tuple."""
+    tree = _TREES.get(fn)
+    if tree is None:
+        tree = ast.parse(textwrap.dedent(inspect.getsource(fn))).body[0]
+        body = tree.body[1:] if isinstance(tree.body[0], ast.Expr) else tree.body
+        *head, last = body
+        ok = isinstance(last, ast.Return) and isinstance(last.value, ast.Tuple) and all(
+            isinstance(st, ast.Assign) and len(st.targets) == 1
+            and isinstance(st.targets[0], ast.Name)
+            or isinstance(st, ast.If) and not st.orelse and len(st.body) == 1
+            and isinstance(st.body[0], ast.Return) for st in head)
+        if not ok:
+            raise TypeError(f"{fn.__name__} is not straight-line code Source.inline can write")
+        tree.body = body
+        tree = _TREES[fn] = tree
+    return tree
 
 
 class _Fail(Exception):
@@ -59,8 +103,9 @@ class Source:
     # primitive's statement is evaluated in, so its locate is the program's to the last bit).
 
     def __init__(self, scene: Scene, sigma: dict, arrays: bool = False, meet=None,
-                 instruments=None):
+                 instruments=None, lean: bool = False):
         self.scene = scene
+        self.lean = lean               # answers only: raw directions, the 2×2 solve (LEAN)
         self.arrays = arrays           # the same code over (N,) arrays: no checks, margins kept
         self.meet = meet               # the intersection of two lines, or None: inline 2×2
         self.instruments = instruments  # the drawing board's noisy strokes, or None: exact
@@ -124,6 +169,8 @@ class Source:
     def call(self, fn, *args, n: int = 1) -> list[Name]:
         if self.arrays:
             fn = ARRAY_TWIN.get(fn, fn)
+        elif self.lean and fn in _INLINE:
+            return self.inline(fn, args, n)
         fname = f"_f_{fn.__name__}"
         self.namespace[fname] = fn
         names = [Name(f"v{self._n + i + 1}") for i in range(n)]
@@ -132,6 +179,63 @@ class Source:
         self.lines.append(Line(tuple(names), f"{', '.join(names)} = {fname}({args})",
                                args.reads))
         return names
+
+    def inline(self, fn, args, n: int) -> list[Name]:
+        """``fn(*args)`` written out in place (the answers-only program): ``fn``'s own body,
+        read from its source (:func:`inspect.getsource`), each of its locals a fresh local,
+        each global it reads bound as ``_g_<name>``, its last ``return`` the ``n`` results;
+        an early ``return`` (a placement that fails: every function of :data:`_INLINE`
+        returns early only where its margin fails the dyad's test) raises ``_Fail`` (the
+        full program is then run).  No second statement of the formula is written."""
+        tree = _inline_tree(fn)
+        names: dict[str, Name] = {}
+        for a, o in zip((a.arg for a in tree.args.args), args):
+            names[a] = self.let(o) if isinstance(o, Expr) else o
+        glob = fn.__globals__
+
+        def text(node) -> tuple[str, frozenset]:
+            reads = set()
+
+            class Rename(ast.NodeTransformer):
+                def visit_Name(self, nd):
+                    if nd.id in names:
+                        v = names[nd.id]
+                        if isinstance(v, Name):
+                            reads.add(v)
+                        return ast.copy_location(ast.Name(id=str(v), ctx=nd.ctx), nd)
+                    if nd.id in glob:
+                        bound = f"_g_{nd.id}"
+                        self_.namespace[bound] = glob[nd.id]
+                        return ast.copy_location(ast.Name(id=bound, ctx=nd.ctx), nd)
+                    return nd          # a builtin (abs)
+            self_ = self
+            return ast.unparse(Rename().visit(copy.deepcopy(node))), frozenset(reads)
+
+        for st in tree.body:
+            if isinstance(st, ast.Assign):
+                t, reads = text(st.value)
+                expr = Expr("{}", Lit(t))
+                expr.reads = reads
+                self._n += 1
+                name = names[st.targets[0].id] = Name(f"v{self._n}")
+                self.lines.append(Line((name,), f"{name} = {t}", reads))
+            elif isinstance(st, ast.If):
+                t, reads = text(st.test)
+                self.fails.append(("inline", fn.__name__))
+                self.lines.append(Line((), f"if {t}: raise _Fail({len(self.fails) - 1})",
+                                       reads))
+            else:                       # the final return (n results)
+                outs = []
+                for el in st.value.elts:
+                    t, reads = text(el)
+                    if t in names.values() or type(el) is ast.Name and el.id in names:
+                        outs.append(Name(t))
+                        continue
+                    self._n += 1
+                    name = Name(f"v{self._n}")
+                    self.lines.append(Line((name,), f"{name} = {t}", reads))
+                    outs.append(name)
+                return outs
 
     def margin(self, m: str) -> None:
         """Fail where the dyad cannot close (the staged assembly's test: a two-closure dyad
@@ -200,12 +304,18 @@ class _Steps:
     def of(self, d, label):
         return self.vx[d][self.names.of(label)]
 
+    def held(self, e):
+        """``e`` in a local (a name or a literal as it is)."""
+        return e if isinstance(e, (Name, Lit)) or type(e) is str else self.g.let(e)
+
     def norm(self, v):
         return self.g.let("hypot({}, {})", v[0], v[1])
 
     def sub(self, a, b):
         if b == ("0.0", "0.0"):
             return a
+        if self.g.lean and a == ("0.0", "0.0"):
+            return self.g.vec(E("-{}", b[0]), E("-{}", b[1]))
         return self.g.vec(E("{} - {}", a[0], b[0]), E("{} - {}", a[1], b[1]))
 
     def cross(self, a, b):
@@ -271,12 +381,19 @@ class _Steps:
     def vector(self, s, vec, unit, terms):
         vec = self.drawn(s, "vector", vec)
         start = self.vx[s.diagram][s.start]
-        end = self.g.vec(E("{} + {}", start[0], vec[0]), E("{} + {}", start[1], vec[1]))
+        if self.g.lean and start == ("0.0", "0.0"):
+            end = (self.held(vec[0]), self.held(vec[1]))
+        else:
+            end = self.g.vec(E("{} + {}", start[0], vec[0]), E("{} + {}", start[1], vec[1]))
         self.vx[s.diagram][s.end] = end
         return dict(at=start, vector=vec, point=end), None, None, unit, terms
 
     def line(self, s, d, anchor):
         g = self.g
+        if g.lean:      # the direction as it comes (LEAN): its length cancels in the 2×2 solve
+            d = (self.held(d[0]), self.held(d[1]))
+            self.lines[(s.diagram, s.number)] = (anchor, d)
+            return anchor, d
         d = self.drawn(s, "direction", d)
         n = self.norm(d)
         g.fail_unless(E("{} != 0.0 and {} == {}", n, n, n), ("step", s, "zero"))
@@ -413,6 +530,17 @@ class _Steps:
         (p, u), (q, v) = (self.lines[(s.diagram, n)] for n in s.lines)
         den = self.cross(u, v)
         dot = self.dot(u, v)
+        if g.lean:      # P + t u = Q + s v, u and v of any length: t = ((Q − P) × v)/(u × v)
+            g.fail_unless(E("{} * {} > {} * ({} * {})", den, den, Lit(repr(LEAN_TAN ** 2)),
+                            dot, dot), ("lean", s))
+            w = self.sub(q, p)
+            t = g.let("({} * {} - {} * {}) / {}", w[0], v[1], w[1], v[0], den)
+            if p == ("0.0", "0.0"):
+                pt = g.vec(E("{} * {}", t, u[0]), E("{} * {}", t, u[1]))
+            else:
+                pt = g.vec(E("{} + {} * {}", p[0], t, u[0]), E("{} + {} * {}", p[1], t, u[1]))
+            self.vx[s.diagram][s.end] = pt
+            return dict(point=pt), None, None, _unit_of(s.diagram), ()
         angle = g.let("degrees(atan2(abs({}), abs({})))", den, dot)
         g.crossings.append((den, dot, s))
         g.fail_unless(E("{} >= {}", angle, PARALLEL_DEG), ("step", s, "parallel"))
@@ -566,8 +694,8 @@ def _code_name(text: str) -> str:
 
 
 def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
-             arrays: bool = False, meet=None, instruments=None, positions: bool = False
-             ) -> _Code:
+             arrays: bool = False, meet=None, instruments=None, positions: bool = False,
+             outputs: tuple | None = None) -> _Code:
     """The source of ``_solve(x, params)`` for ``plan``'s construction ``steps``, compiled.
 
     With ``meet`` (the staged solver) the intersections call ``meet(px, py, ux, uy, qx, qy,
@@ -576,9 +704,17 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
 
     With ``instruments`` (the drawing board) every vector, line direction and marked point
     passes through its noisy stroke (:meth:`_Steps.drawn`); with ``positions`` every point is
-    a parameter ``("pos", label, 0 | 1)`` (the space diagram as drawn), not placed again."""
+    a parameter ``("pos", label, 0 | 1)`` (the space diagram as drawn), not placed again.
+
+    With ``outputs`` (kinds of :data:`ANSWERS`) the program is *answers only* (over floats):
+    its record holds those numbers and nothing of the steps; each line keeps its direction as
+    the op gives it (unnormalised) and an intersection is the 2×2 solve
+    P + t u = Q + s v, t = ((Q − P) × v)/(u × v), its test ``(u × v)² > LEAN_TAN² (u · v)²``;
+    the rest is dropped as dead code, and each local read once is written into its reader
+    (:func:`_fold`: the same operations in the same order, fewer statements)."""
     check_compilable(scene, plan, steps)
-    g = Source(scene, sigma, arrays, meet, instruments)
+    lean = outputs is not None
+    g = Source(scene, sigma, arrays, meet, instruments, lean=lean)
     if positions:
         for label in list(scene.ground) + [x for d in plan.dyads for x in d.placed]:
             g.place(label, g.param(("pos", label, 0)), g.param(("pos", label, 1)))
@@ -615,23 +751,27 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
                            None if value is None else put(value),
                            None if angle is None else put(angle), unit,
                            tuple((sym, _lazy(v, put), u) for sym, v, u in terms)))
-    if arrays:      # only the vertices, rates and margins: the step records' numbers are
-        out.clear()     # left out (and their code dropped as dead)
+    if arrays or lean:  # only the vertices, rates and margins: the step records' numbers
+        out.clear()     # are left out (and their code dropped as dead)
         slot.clear()
         layout = []
+    asked = set(ANSWERS + ("coriolis",) if outputs is None else outputs)
     index = {}
     for label, (x, y) in g.placed.items():
-        index[("pos", label)] = (put(x), put(y))
+        if "pos" in asked:
+            index[("pos", label)] = (put(x), put(y))
         for d in (V, A):
-            if names.of(label) in st.vx[d]:
+            if d.value in asked and names.of(label) in st.vx[d]:
                 vx = st.vx[d][names.of(label)]
                 index[(d.value, label)] = (put(vx[0]), put(vx[1]))
     for key, table in (("omega", st.omega), ("alpha", st.alpha), ("slide_v", st.slide_v),
                        ("slide_a", st.slide_a)):
         for name, v in table.items():
-            index[(key, name)] = put(v)
+            if key in asked:
+                index[(key, name)] = put(v)
     for pin, c in st.cor.items():
-        index[("coriolis", pin)] = (put(c[0]), put(c[1]))
+        if "coriolis" in asked:
+            index[("coriolis", pin)] = (put(c[0]), put(c[1]))
     if meet is not None:        # what the staged Solution reports besides the steps
         for d in (V, A):
             for vertex, (x, y) in st.vx[d].items():
@@ -660,10 +800,41 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
     src = (f"def _solve(x, _k):\n    ({params}{',' if len(g.getters) == 1 else ''}) = _k\n"
            f"    {body}\n    return ({', '.join(out)},)\n")
     ns = dict(g.namespace)
-    exec(compile(src, f"<polygons.compiled {_code_name(scene.title or scene.file)}>", "exec"),
+    run = _fold(src) if lean else src
+    if not arrays:      # over floats every name it calls a local (bound as a default)
+        bound = ", ".join(f"{k}={k}" for k in ns if k.isidentifier())
+        run = src.replace("def _solve(x, _k):", f"def _solve(x, _k, {bound}):", 1)
+    exec(compile(run, f"<polygons.compiled {_code_name(scene.title or scene.file)}>", "exec"),
          ns)
     return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src,
                  g.namespace)
+
+
+def _fold(src: str) -> str:
+    """``src`` with every local assigned once and read once written into the statement that
+    reads it (the expression in its place, parenthesised by :func:`ast.unparse`): the same
+    floating-point operations in the same order, without a store and a load each."""
+    fn = ast.parse(src).body[0]
+    loads: dict = {}
+    for nd in ast.walk(fn):
+        if isinstance(nd, ast.Name) and isinstance(nd.ctx, ast.Load):
+            loads[nd.id] = loads.get(nd.id, 0) + 1
+    held: dict = {}
+
+    class Put(ast.NodeTransformer):
+        def visit_Name(self, nd):
+            return held.pop(nd.id) if isinstance(nd.ctx, ast.Load) and nd.id in held else nd
+
+    body = []
+    for st in fn.body:
+        st = Put().visit(st)
+        if (isinstance(st, ast.Assign) and len(st.targets) == 1
+                and isinstance(st.targets[0], ast.Name) and loads.get(st.targets[0].id) == 1):
+            held[st.targets[0].id] = st.value
+        else:
+            body.append(st)
+    fn.body = body
+    return ast.unparse(fn) + "\n"
 
 
 def _lazy(v, put):
