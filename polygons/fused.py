@@ -395,7 +395,8 @@ class Fused:
     def run(self, prog, xs: np.ndarray) -> dict:
         """:func:`polygons.sweep.run`'s result at ``xs``: one block, its rows the results."""
         n = xs.shape[0]
-        O = np.empty((len(self.rows), n))
+        from .sweep_store import result_block
+        O = result_block(len(self.rows), n)
         self.fn(np.ascontiguousarray(xs, dtype=float), self.params, O)
         pos, vel, acc = {}, {}, {}
         for label, xy in prog.ground.items():
