@@ -445,6 +445,9 @@ class _Steps:
     def line_perp(self, s):
         P, X = s.args
         r = self.r(P, X)
+        if self.g.lean:     # kept as ⟂ r: the 2×2 solve reads r itself (intersect)
+            self.lines[(s.diagram, s.number)] = (self.vx[s.diagram][s.start], _Perp(r))
+            return {}, None, None, "", ()
         return self.line_result(s, self.line(s, (E("-{}", r[1]), r[0]),
                                              self.vx[s.diagram][s.start]))
 
@@ -528,6 +531,10 @@ class _Steps:
     def intersect(self, s):
         g = self.g
         (p, u), (q, v) = (self.lines[(s.diagram, n)] for n in s.lines)
+        if g.lean and type(u) is _Perp and type(v) is _Perp:
+            return self.intersect_perp(s, p, u.r, q, v.r)
+        if g.lean:
+            u, v = (self.unperp(d) for d in (u, v))
         den = self.cross(u, v)
         dot = self.dot(u, v)
         if g.lean:      # P + t u = Q + s v, u and v of any length: t = ((Q − P) × v)/(u × v)
@@ -560,6 +567,30 @@ class _Steps:
             # about D where the pole is a = d), else from the pole
             (f"{self.names.named(s.args[0]) if s.args else self.names.pole}{s.end}",
              ("hypot", pt), unit))
+
+    def unperp(self, d):
+        """A direction kept as ⟂ r (:class:`_Perp`) as its components (−r_y, r_x)."""
+        return (self.held(E("-{}", d.r[1])), d.r[0]) if type(d) is _Perp else d
+
+    def intersect_perp(self, s, p, a, q, b):
+        """The 2×2 solve of the lines P + t ⟂a and Q + s ⟂b (⟂r = (−r_y, r_x)), written on a
+        and b: ⟂a × ⟂b = a × b, (Q − P) × ⟂b = (Q − P)·b, so t = ((Q − P)·b)/(a × b) and the
+        point is P + t ⟂a; the same test as :meth:`intersect`'s ((⟂a · ⟂b) = a·b)."""
+        g = self.g
+        den, dot = self.cross(a, b), self.dot(a, b)
+        g.fail_unless(E("{} * {} > {} * ({} * {})", den, den, Lit(repr(LEAN_TAN ** 2)),
+                        dot, dot), ("lean", s))
+        if q == ("0.0", "0.0"):         # Q the pole: (Q − P)·b = −(P·b)
+            t = g.let("-({} * {} + {} * {}) / {}", p[0], b[0], p[1], b[1], den)
+        else:
+            w = self.sub(q, p)
+            t = g.let("({} * {} + {} * {}) / {}", w[0], b[0], w[1], b[1], den)
+        if p == ("0.0", "0.0"):
+            pt = g.vec(E("-({} * {})", t, a[1]), E("{} * {}", t, a[0]))
+        else:
+            pt = g.vec(E("{} - {} * {}", p[0], t, a[1]), E("{} + {} * {}", p[1], t, a[0]))
+        self.vx[s.diagram][s.end] = pt
+        return dict(point=pt), None, None, _unit_of(s.diagram), ()
 
     def omega_op(self, s):
         L, P, Q = s.args
@@ -647,6 +678,15 @@ class _Steps:
     }
 
 
+class _Perp:
+    """A line direction ⟂ r = (−r_y, r_x), held as r (the answers-only program's)."""
+
+    __slots__ = ("r",)
+
+    def __init__(self, r):
+        self.r = r
+
+
 def _unit_of(diagram) -> str:
     return "m/s" if diagram == Diagram.VELOCITY else "m/s^2"
 
@@ -662,6 +702,9 @@ class _Code:
     fails: tuple
     source: str
     namespace: dict = field(default=None, compare=False, repr=False)  # the names it calls
+    #: an answers-only program's: ``derive(params)`` → the parameters' own combinations its
+    #: function reads after the parameters (``c0``, ``c1`` …; :func:`_fold`), or None
+    derive: object = field(default=None, compare=False, repr=False)
 
 
 
@@ -800,41 +843,91 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
     src = (f"def _solve(x, _k):\n    ({params}{',' if len(g.getters) == 1 else ''}) = _k\n"
            f"    {body}\n    return ({', '.join(out)},)\n")
     ns = dict(g.namespace)
-    run = _fold(src) if lean else src
+    run, derive = src, None
+    if lean:
+        run, consts = _fold(src, len(g.getters))
+        if consts:      # the parameters' own combinations, computed once per scene
+            dsrc = (f"def _derive(_k):\n    ({params},) = _k\n"
+                    f"    return ({', '.join(consts)},)\n")
+            exec(compile(dsrc, "<polygons.compiled derive>", "exec"), ns)
+            derive = ns["_derive"]
     if not arrays:      # over floats every name it calls a local (bound as a default)
         bound = ", ".join(f"{k}={k}" for k in ns if k.isidentifier())
-        run = src.replace("def _solve(x, _k):", f"def _solve(x, _k, {bound}):", 1)
+        run = run.replace("def _solve(x, _k):", f"def _solve(x, _k, {bound}):", 1)
     exec(compile(run, f"<polygons.compiled {_code_name(scene.title or scene.file)}>", "exec"),
          ns)
     return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src,
-                 g.namespace)
+                 g.namespace, derive)
 
 
-def _fold(src: str) -> str:
+_PARAM = frozenset(("k",))
+_PURE = (ast.BinOp, ast.UnaryOp, ast.IfExp, ast.Compare, ast.BoolOp, ast.Name, ast.Constant,
+         ast.Add, ast.Sub, ast.Mult, ast.USub, ast.UAdd, ast.Gt, ast.GtE, ast.Lt, ast.LtE,
+         ast.Eq, ast.NotEq, ast.And, ast.Or, ast.Not, ast.Load)
+
+
+def _of_params(node, nparams: int) -> bool:
+    """Whether ``node`` is a formula over parameters only (``k<i>``, numbers) made of +, −, ×,
+    comparisons and choices — none of which can raise — and not a bare name or number."""
+    if isinstance(node, (ast.Name, ast.Constant)):
+        return False
+    for nd in ast.walk(node):
+        if not isinstance(nd, _PURE):
+            return False
+        if isinstance(nd, ast.Name) and not (nd.id[:1] == "k" and nd.id[1:].isdigit()
+                                             and int(nd.id[1:]) < nparams):
+            return False
+    return True
+
+
+def _fold(src: str, nparams: int) -> tuple[str, list[str]]:
     """``src`` with every local assigned once and read once written into the statement that
     reads it (the expression in its place, parenthesised by :func:`ast.unparse`): the same
-    floating-point operations in the same order, without a store and a load each."""
+    floating-point operations in the same order, without a store and a load each; and every
+    formula of parameters only (:func:`_of_params`: a link's r₁² − r₂², the larger of two
+    lengths) read as a name ``c<j>`` that follows the parameters — the formulas returned, to be
+    computed once per scene (the same operations on the same numbers: the same values)."""
     fn = ast.parse(src).body[0]
+    consts: dict[str, str] = {}
+
+    class Hoist(ast.NodeTransformer):
+        def generic_visit(self, nd):
+            if isinstance(nd, ast.expr) and _of_params(nd, nparams):
+                text = ast.unparse(nd)
+                name = consts.setdefault(text, f"c{len(consts)}")
+                return ast.copy_location(ast.Name(id=name, ctx=ast.Load()), nd)
+            return super().generic_visit(nd)
+
+    unpack = fn.body[0]
+    fn.body = [unpack] + [Hoist().visit(st) for st in fn.body[1:]]
+    if consts:
+        unpack.targets[0].elts += [ast.Name(id=c, ctx=ast.Store()) for c in consts.values()]
     loads: dict = {}
     for nd in ast.walk(fn):
         if isinstance(nd, ast.Name) and isinstance(nd.ctx, ast.Load):
             loads[nd.id] = loads.get(nd.id, 0) + 1
     held: dict = {}
+    alias: dict = {}
 
     class Put(ast.NodeTransformer):
         def visit_Name(self, nd):
+            if isinstance(nd.ctx, ast.Load) and nd.id in alias:
+                return ast.Name(id=alias[nd.id], ctx=ast.Load())
             return held.pop(nd.id) if isinstance(nd.ctx, ast.Load) and nd.id in held else nd
 
     body = []
     for st in fn.body:
         st = Put().visit(st)
-        if (isinstance(st, ast.Assign) and len(st.targets) == 1
-                and isinstance(st.targets[0], ast.Name) and loads.get(st.targets[0].id) == 1):
+        one = (isinstance(st, ast.Assign) and len(st.targets) == 1
+               and isinstance(st.targets[0], ast.Name))
+        if one and isinstance(st.value, ast.Name):      # a copy: its name read instead
+            alias[st.targets[0].id] = st.value.id
+        elif one and loads.get(st.targets[0].id) == 1:
             held[st.targets[0].id] = st.value
         else:
             body.append(st)
     fn.body = body
-    return ast.unparse(fn) + "\n"
+    return ast.unparse(fn) + "\n", list(consts)
 
 
 def _lazy(v, put):

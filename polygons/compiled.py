@@ -313,8 +313,9 @@ def _answers_only(scene: Scene, plan: Plan, jit: bool, outputs) -> Program:
 def _params(code: _Code, scene: Scene, sigma: dict) -> tuple:
     """The parameters of a program generated from ``scene``'s topology, read from ``scene``:
     its numbers, and the closures (``("sigma", label)``) from ``sigma``."""
-    return tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
-                 for get in code.getters)
+    params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
+                   for get in code.getters)
+    return params if code.derive is None else params + code.derive(params)
 
 
 def _copy(step: Step, vals: dict, **more) -> Step:
