@@ -200,7 +200,11 @@ class Program:
                     params = _params(prog.code, prog.scene, sigma)
                     if isinstance(prog.params, np.ndarray):     # the numba kernel's
                         params = np.array(params, dtype=float)
-                    prog = replace(prog, sigma=sigma, params=params)
+                    full = prog.full        # (an answers-only program's follows too)
+                    if full is not None:
+                        full = replace(full, sigma=sigma,
+                                       params=_params(full.code, full.scene, sigma))
+                    prog = replace(prog, sigma=sigma, params=params, full=full)
         return out
 
     def _error(self, why, x):
