@@ -34,7 +34,6 @@ from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled,  # noqa: F401 (read f
 from .errors import ConstructionError, ParallelLinesError
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input, dyad_failure
-from .reader import record, record_of
 from .scene import Scene
 from .steps import Diagram, Step, Term, noise_floor
 from .memo import memo_of
@@ -107,19 +106,6 @@ def _cached(key, make, scene: Scene | None = None) -> _Code:
             _CACHE.clear()
         code = _CACHE[key] = make()
     return code
-
-
-def _term(r, i):
-    """A term's value from the record (the same expression as the kernel's, over floats)."""
-    if type(i) is int:
-        return r[i]
-    if i[0] == "abs":
-        return abs(r[i[1]])
-    if i[0] == "hypot":
-        return math.hypot(r[i[1]], r[i[2]])
-    r0, r1, q0, q1 = (r[j] for j in i[1:])
-    n = math.hypot(r0, r1)
-    return abs(r0 / n * q1 - r1 / n * q0)
 
 
 def _sigmas(plan: Plan) -> dict:
@@ -250,12 +236,6 @@ def _params(code: _Code, scene: Scene, sigma: dict) -> tuple:
     its numbers, and the closures (``("sigma", label)``) from ``sigma``."""
     return tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
                  for get in code.getters)
-
-
-def _copy(step: Step, vals: dict, **more) -> Step:
-    """``dataclasses.replace(step, **vals, **more)`` without re-running ``__init__``
-    (:func:`polygons.reader.record`: 20× faster, the same value)."""
-    return record(Step, **{**step.__dict__, **vals, **more})
 
 
 def compile_staged(scene: Scene, plan: Plan, steps: tuple[Step, ...], meet) -> "Staged":
@@ -391,51 +371,108 @@ class CompiledSolution:
 def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
                       ) -> tuple[Step, ...]:
     """The planned ``steps`` with their numbers read from the record ``r`` (``layout`` says
-    where): what the staged and the compiled solutions show.  Each record is made once
-    (:func:`polygons.reader.record`, every field set at once); its formula with the numbers
-    is written from its terms when shown (:func:`polygons.narrate.substitute`)."""
-    numbers = [([(sym, r[i] if type(i) is int else _term(r, i), u) for sym, i, u in o.terms],
-                None if o.value is None else r[o.value]) for o in layout]
-    zero = _rounding_noise(numbers, layout)
-    done = []
-    for step, o, (terms, value) in zip(steps, layout, numbers):
+    where): what the staged and the compiled solutions show.  Each record is made once, every
+    field set at once (:func:`steps_builder`: the reading written out as straight-line code
+    once per layout); its formula with the numbers is written from its terms when shown
+    (:func:`polygons.narrate.substitute`)."""
+    return steps_builder(layout)(r, steps)
+
+
+#: the builders written so far, by the id of their layout (kept with it: the id stays its own)
+_BUILDERS: dict = {}
+
+
+def steps_builder(layout):
+    """``build(r, steps)``: the :class:`Step` records of ``steps`` with their numbers from the
+    record ``r``, written out for ``layout`` once (each term's value, the rounding-noise
+    floors, every record set in one go: equal to ``dataclasses.replace``)."""
+    hit = _BUILDERS.get(id(layout))
+    if hit is not None and hit[0] is layout:
+        return hit[1]
+    if len(_BUILDERS) >= 256:           # a bound, as the code cache's
+        _BUILDERS.clear()
+    fn = _write_builder(layout)
+    _BUILDERS[id(layout)] = (layout, fn)
+    return fn
+
+
+def _write_builder(layout):
+    """The source of :func:`steps_builder`'s function for ``layout``, compiled.  The same
+    reading as the loop it replaces: the terms' values (:func:`_term`'s expressions), each
+    unit's scale (the largest magnitude of its unit in the construction; an α's counts ω²
+    too) and noise floor (:func:`polygons.steps.noise_floor`), a rate at or below its floor
+    read as 0.0 — a translating link's ω, a body starting from rest, which the construction
+    leaves at ~1e-15 and a book prints as 0."""
+    lines = []
+    values: list[tuple[str, str]] = []          # (local, unit) of every number a floor sees
+
+    def term(i) -> str:
+        if type(i) is int:
+            return f"r[{i}]"
+        if i[0] == "abs":
+            return f"abs(r[{i[1]}])"
+        if i[0] == "hypot":
+            return f"hypot(r[{i[1]}], r[{i[2]}])"
+        r0, r1, q0, q1 = (f"r[{j}]" for j in i[1:])
+        n = f"n{len(lines)}"
+        lines.append(f"{n} = hypot({r0}, {r1})")
+        return f"abs({r0} / {n} * {q1} - {r1} / {n} * {q0})"
+
+    per_step = []
+    for k, o in enumerate(layout):
+        names = []
+        for t, (sym, i, u) in enumerate(o.terms):
+            name = f"v{k}_{t}"
+            lines.append(f"{name} = {term(i)}")
+            names.append((sym, name, u))
+            values.append((name, u))
+        value = None
+        if o.value is not None:
+            value = f"w{k}"
+            lines.append(f"{value} = r[{o.value}]")
+        per_step.append((names, value))
+        values.extend([] if value is None else [(value, o.unit)])
+    # the scales, in the loop's order (max keeps the first of equals; NaN never wins)
+    floor = {}
+    for u in _RATES:
+        mags = [f"abs({v})" for v, unit in values if unit == u]
+        lines.append(f"s{_RATES.index(u)} = max(0.0, {', '.join(mags)})" if mags
+                     else f"s{_RATES.index(u)} = 0.0")
+    lines.append("s1 = max(s1, s0 ** 2)")               # α's scale: ω² too
+    for u in _RATES:
+        k = _RATES.index(u)
+        floor[u] = f"f{k}"
+        lines.append(f"f{k} = noise_floor((s{k},))")
+
+    def zero(v, u) -> str:
+        return f"(0.0 if abs({v}) <= {floor[u]} else {v})" if u in floor else v
+
+    lines.append("out = []")
+    for k, (o, (names, value)) in enumerate(zip(layout, per_step)):
         f = o.fields
-        vals = step.__dict__.copy()
-        for k in _FIELDS:
-            ij = f.get(k)
-            vals[k] = None if ij is None else (r[ij[0]], r[ij[1]])
-        vals["value"] = None if value is None else zero(value, o.unit)
-        vals["unit"] = o.unit
-        vals["angle_deg"] = None if o.angle is None else r[o.angle]
-        vals["terms"] = tuple(record_of(Term, {"symbol": sym, "value": zero(v, u), "unit": u})
-                              for sym, v, u in terms)
-        done.append(record_of(Step, vals))
-    return tuple(done)
+        lines.append(f"o = new(Step); d = o.__dict__; d.update(steps[{k}].__dict__)")
+        for key in _FIELDS:
+            ij = f.get(key)
+            lines.append(f"d[{key!r}] = " + ("None" if ij is None else
+                                              f"(r[{ij[0]}], r[{ij[1]}])"))
+        lines.append("d['value'] = " + ("None" if value is None else zero(value, o.unit)))
+        lines.append(f"d['unit'] = {o.unit!r}")
+        lines.append("d['angle_deg'] = " + ("None" if o.angle is None else f"r[{o.angle}]"))
+        for t, (sym, name, u) in enumerate(names):
+            lines.append(f"t{t} = new(Term); e = t{t}.__dict__; e['symbol'] = {sym!r}; "
+                         f"e['value'] = {zero(name, u)}; e['unit'] = {u!r}")
+        lines.append(f"d['terms'] = ({''.join(f't{t}, ' for t in range(len(names)))})")
+        lines.append("out.append(o)")
+    lines.append("return tuple(out)")
+    src = "def _build(r, steps):\n" + "".join(f"    {ln}\n" for ln in lines)
+    ns = {"new": object.__new__, "Step": Step, "Term": Term, "hypot": math.hypot,
+          "noise_floor": noise_floor}
+    exec(compile(src, "<polygons.compiled steps>", "exec"), ns)
+    return ns["_build"]
 
 
 #: the units whose near-zero values are rounding noise of the construction
 _RATES = ("rad/s", "rad/s^2", "m/s", "m/s^2")
-
-
-def _rounding_noise(numbers, layout):
-    """``zero(value, unit)``: ``value``, or 0.0 where it is below 1e-12 of the largest of its
-    unit in the construction (an α's scale counts ω² too) — a translating link's ω, a body
-    starting from rest, which the construction leaves at ~1e-15 and a book prints as 0."""
-    scale = dict.fromkeys(_RATES, 0.0)
-    for (terms, value), o in zip(numbers, layout):
-        for _, v, u in terms:
-            if u in scale and abs(v) > scale[u]:
-                scale[u] = abs(v)
-        if value is not None and o.unit in scale and abs(value) > scale[o.unit]:
-            scale[o.unit] = abs(value)
-    scale["rad/s^2"] = max(scale["rad/s^2"], scale["rad/s"] ** 2)
-    floor = {u: noise_floor([v]) for u, v in scale.items()}
-    get = floor.get
-
-    def zero(v, u):
-        f = get(u)
-        return 0.0 if f is not None and abs(v) <= f else v
-    return zero
 
 
 def min_angle(layout, r: tuple) -> float | None:

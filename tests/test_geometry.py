@@ -1,15 +1,13 @@
 """The staged solver's intersection (geometry.meet: GEOS's arithmetic written out in floats,
 polygons/geos_crossing.py) against shapely's on the same drawn segments (geometry.meet_drawn):
-the same doubles, bit for bit (the design asks ≤ 1e-12), on random lines and on every
-intersection of every shipped case."""
+the same doubles, bit for bit (the design asks ≤ 1e-12), on random lines (and on every
+intersection of every shipped case: tests/test_step_records.py)."""
 import inspect
 import math
 import random
 
 from conftest import CASES
 from polygons import geometry, geos_crossing
-from polygons.evaluate import solve
-from polygons.scene import load_scene
 
 
 def _same(a, b) -> bool:
@@ -61,26 +59,6 @@ def test_where_geos_would_branch_otherwise_shapely_is_asked():
     # lines meeting under the angle the caller refuses: meet and shapely still agree
     args = (0.1, 0.2, 1.0, 0.0, 0.3, 0.4, 1.0, 1e-9)
     assert _same(geometry.meet(*args), geometry.meet_drawn(*args))
-
-
-def test_every_intersection_of_every_case_is_shapelys(monkeypatch):
-    """The staged solve of each shipped case, every meet it calls repeated with shapely."""
-    calls = []
-    meet = geometry.meet
-
-    def spy(*args):
-        calls.append(args)
-        return meet(*args)
-
-    monkeypatch.setattr(geometry, "meet", spy)
-    for path in sorted(CASES.glob("*.toml")):
-        try:
-            solve(load_scene(str(path)))
-        except Exception:         # a case that is refused is refused either way
-            continue
-    assert len(calls) > 100
-    for args in calls:
-        assert _same(meet(*args), geometry.meet_drawn(*args)), args
 
 
 def test_the_staged_solve_does_not_load_shapely():

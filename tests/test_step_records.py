@@ -1,0 +1,107 @@
+"""The Step records a solution shows (compiled.steps_from_record: their reading written out once
+per layout) against the reading as a loop over the layout (the reference below, the code it
+replaced): the same records, every number to the bit, on every shipped case, staged and
+compiled; and every intersection of those staged solves (geometry.meet) repeated by shapely
+(geometry.meet_drawn) to the bit."""
+import math
+
+from conftest import CASES
+from polygons import geometry
+from polygons.compiled import compile_scene, steps_from_record
+from polygons.evaluate import planned, solve
+from polygons.reader import record_of
+from polygons.scene import load_scene
+from polygons.steps import Step, Term, noise_floor
+
+_FIELDS = ("at", "vector", "point", "direction")
+_RATES = ("rad/s", "rad/s^2", "m/s", "m/s^2")
+
+
+def _term(r, i):
+    if type(i) is int:
+        return r[i]
+    if i[0] == "abs":
+        return abs(r[i[1]])
+    if i[0] == "hypot":
+        return math.hypot(r[i[1]], r[i[2]])
+    r0, r1, q0, q1 = (r[j] for j in i[1:])
+    n = math.hypot(r0, r1)
+    return abs(r0 / n * q1 - r1 / n * q0)
+
+
+def _zero(numbers, layout):
+    scale = dict.fromkeys(_RATES, 0.0)
+    for (terms, value), o in zip(numbers, layout):
+        for _, v, u in terms:
+            if u in scale and abs(v) > scale[u]:
+                scale[u] = abs(v)
+        if value is not None and o.unit in scale and abs(value) > scale[o.unit]:
+            scale[o.unit] = abs(value)
+    scale["rad/s^2"] = max(scale["rad/s^2"], scale["rad/s"] ** 2)
+    floor = {u: noise_floor([v]) for u, v in scale.items()}
+
+    def zero(v, u):
+        f = floor.get(u)
+        return 0.0 if f is not None and abs(v) <= f else v
+    return zero
+
+
+def reference(steps, layout, r):
+    """The records read by a loop over the layout (the code steps_from_record replaced)."""
+    numbers = [([(sym, _term(r, i), u) for sym, i, u in o.terms],
+                None if o.value is None else r[o.value]) for o in layout]
+    zero = _zero(numbers, layout)
+    done = []
+    for step, o, (terms, value) in zip(steps, layout, numbers):
+        vals = step.__dict__.copy()
+        for k in _FIELDS:
+            ij = o.fields.get(k)
+            vals[k] = None if ij is None else (r[ij[0]], r[ij[1]])
+        vals["value"] = None if value is None else zero(value, o.unit)
+        vals["unit"] = o.unit
+        vals["angle_deg"] = None if o.angle is None else r[o.angle]
+        vals["terms"] = tuple(Term(sym, zero(v, u), u) for sym, v, u in terms)
+        done.append(record_of(Step, vals))
+    return tuple(done)
+
+
+def test_the_step_records_are_the_loops_on_every_case(monkeypatch):
+    calls = []
+    meet = geometry.meet
+
+    def spy(*args):
+        calls.append(args)
+        return meet(*args)
+
+    monkeypatch.setattr(geometry, "meet", spy)
+    seen = 0
+    for path in sorted(CASES.glob("*.toml")):
+        scene = load_scene(str(path))
+        try:
+            sol = solve(scene)
+        except Exception:           # refused either way
+            continue
+        _, steps, staged = planned(scene, None)
+        got = sol.steps
+        want = reference(steps, staged.code.layout, sol.record)
+        assert got == want and repr(got) == repr(want), path.name
+        assert all(type(s) is Step and all(type(t) is Term for t in s.terms) for s in got)
+        assert [list(s.__dict__) for s in got] == [list(s.__dict__) for s in want]
+        seen += 1
+        if path.stem in ("s001-we6", "s003-fig7", "rest-slider-crank", "new-whitworth"):
+            prog = compile_scene(scene)
+            sol2 = prog.solve()
+            assert repr(sol2.steps) == repr(reference(prog.steps, prog.code.layout,
+                                                      sol2.record))
+    assert seen > 60 and len(calls) > 100
+    for args in calls:
+        assert repr(meet(*args)) == repr(geometry.meet_drawn(*args)), args
+
+
+def test_a_builder_is_written_once_per_layout():
+    scene = load_scene(str(CASES / "s001-we6.toml"))
+    sol = solve(scene)
+    _, steps, staged = planned(scene, None)
+    from polygons.compiled import steps_builder
+    assert steps_builder(staged.code.layout) is steps_builder(staged.code.layout)
+    assert steps_from_record(scene, steps, staged.code.layout, sol.record) == sol.steps
