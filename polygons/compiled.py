@@ -245,7 +245,9 @@ def compile_staged(scene: Scene, plan: Plan, steps: tuple[Step, ...], meet) -> "
     code = _cached(key, lambda: generate(scene, plan, steps, {}, meet=meet), scene)
     fixed = [None if isinstance(get, tuple) else float(get(scene)) for get in code.getters]
     closures = tuple((i, get[1]) for i, get in enumerate(code.getters) if isinstance(get, tuple))
-    return Staged(scene, plan, steps, code, fixed, closures)
+    positions = tuple((key[1], ij[0], ij[1]) for key, ij in code.index.items() if key[0] == "pos")
+    groups = any(getattr(d, "many_closures", False) for d in plan.dyads)
+    return Staged(scene, plan, steps, code, fixed, closures, positions, groups)
 
 
 @dataclass(frozen=True)
@@ -258,6 +260,8 @@ class Staged:
     code: _Code
     fixed: list            # the scene's parameters (None where a closure goes)
     closures: tuple        # (parameter index, label of a two-closure dyad)
+    positions: tuple = ()  # (label, index of x, index of y) of every point placed
+    groups: bool = False   # whether a group has many closures (a triad: its Assur point)
 
     def record(self, placement) -> tuple:
         """The record at the scene's input, each two-closure dyad on the closure the staged
@@ -276,8 +280,7 @@ class Staged:
 
     def placed(self, record: tuple) -> dict:
         """Every point's position in ``record``."""
-        return {key[1]: (record[ij[0]], record[ij[1]])
-                for key, ij in self.code.index.items() if key[0] == "pos"}
+        return {label: (record[i], record[j]) for label, i, j in self.positions}
 
 
 def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]:
@@ -450,7 +453,7 @@ def _write_builder(layout):
     lines.append("out = []")
     for k, (o, (names, value)) in enumerate(zip(layout, per_step)):
         f = o.fields
-        lines.append(f"o = new(Step); d = o.__dict__; d.update(steps[{k}].__dict__)")
+        lines.append(f"d = steps[{k}].__dict__.copy()")
         for key in _FIELDS:
             ij = f.get(key)
             lines.append(f"d[{key!r}] = " + ("None" if ij is None else
@@ -462,11 +465,11 @@ def _write_builder(layout):
             lines.append(f"t{t} = new(Term); e = t{t}.__dict__; e['symbol'] = {sym!r}; "
                          f"e['value'] = {zero(name, u)}; e['unit'] = {u!r}")
         lines.append(f"d['terms'] = ({''.join(f't{t}, ' for t in range(len(names)))})")
-        lines.append("out.append(o)")
+        lines.append("o = new(Step); set_dict(o, '__dict__', d); out.append(o)")
     lines.append("return tuple(out)")
     src = "def _build(r, steps):\n" + "".join(f"    {ln}\n" for ln in lines)
-    ns = {"new": object.__new__, "Step": Step, "Term": Term, "hypot": math.hypot,
-          "noise_floor": noise_floor}
+    ns = {"new": object.__new__, "set_dict": object.__setattr__, "Step": Step, "Term": Term,
+          "hypot": math.hypot, "noise_floor": noise_floor}
     exec(compile(src, "<polygons.compiled steps>", "exec"), ns)
     return ns["_build"]
 

@@ -193,10 +193,12 @@ def solve(scene: Scene, targets: Iterable[str] | None = None) -> Solution:
     targets = tuple(targets) if targets is not None else None
     plan, steps, staged = planned(scene, targets)
     placement = assemble(plan)
-    plan, notes = assur_pairs(plan, placement.points)
-    if notes:       # a triad's S at infinity: its construction through another pair of links
-        plan, steps, staged = planned(scene, targets, plan)
-        placement = Placement(placement.points, placement.branches + notes, placement.sigmas)
+    if staged.groups:
+        plan, notes = assur_pairs(plan, placement.points)
+        if notes:   # a triad's S at infinity: its construction through another pair of links
+            plan, steps, staged = planned(scene, targets, plan)
+            placement = Placement(placement.points, placement.branches + notes,
+                                  placement.sigmas)
     record = staged.record(placement)
     # the positions reported are the program's (the same dyad formulas over floats, on the
     # closures the assembly chose), so every number of a Solution comes from one record

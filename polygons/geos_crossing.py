@@ -34,16 +34,24 @@ def proper(ax, ay, bx, by, cx, cy, dx, dy) -> bool:
     ``computeIntersect`` takes the proper branch): each segment's ends strictly on either side
     of the other's line, every orientation decided by GEOS's floating-point filter (False
     where the filter cannot decide: GEOS then works in double-double, and so does shapely)."""
-    signs = []
-    for p1x, p1y, p2x, p2y, qx, qy in ((ax, ay, bx, by, cx, cy), (ax, ay, bx, by, dx, dy),
-                                       (cx, cy, dx, dy, ax, ay), (cx, cy, dx, dy, bx, by)):
-        left = (p1x - qx) * (p2y - qy)
-        right = (p1y - qy) * (p2x - qx)
-        det = left - right
-        if not (abs(det) >= abs(left + right) * _ORIENT_ERR and det != 0.0):
-            return False
-        signs.append(det > 0.0)
-    return signs[0] != signs[1] and signs[2] != signs[3]
+    c = _orientation(ax, ay, bx, by, cx, cy)
+    d = _orientation(ax, ay, bx, by, dx, dy)
+    if c == 0 or d == 0 or c == d:
+        return False
+    a = _orientation(cx, cy, dx, dy, ax, ay)
+    b = _orientation(cx, cy, dx, dy, bx, by)
+    return a != 0 and b != 0 and a != b
+
+
+def _orientation(p1x, p1y, p2x, p2y, qx, qy) -> int:
+    """Which side of P1 → P2 the point Q is on (1 left, −1 right) where GEOS's filter
+    (``CGAlgorithmsDD::orientationIndexFilter``) decides it; 0 on the line or undecided."""
+    left = (p1x - qx) * (p2y - qy)
+    right = (p1y - qy) * (p2x - qx)
+    det = left - right
+    if abs(det) >= abs(left + right) * _ORIENT_ERR:
+        return 1 if det > 0.0 else -1 if det < 0.0 else 0
+    return 0
 
 
 def crossing(ax, ay, bx, by, cx, cy, dx, dy):

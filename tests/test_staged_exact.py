@@ -1,12 +1,15 @@
-"""The Step records a solution shows (compiled.steps_from_record: their reading written out once
+"""The staged solve's quick paths against the code they replaced, to the bit, on every case.
+
+The Step records a solution shows (compiled.steps_from_record: their reading written out once
 per layout) against the reading as a loop over the layout (the reference below, the code it
 replaced): the same records, every number to the bit, on every shipped case, staged and
 compiled; and every intersection of those staged solves (geometry.meet) repeated by shapely
-(geometry.meet_drawn) to the bit."""
+(geometry.meet_drawn) to the bit; and the assembly over plain floats
+(position._assemble_floats) against the assembly over arrays (position._assemble_arrays)."""
 import math
 
 from conftest import CASES
-from polygons import geometry
+from polygons import geometry, position
 from polygons.compiled import compile_scene, steps_from_record
 from polygons.evaluate import planned, solve
 from polygons.reader import record_of
@@ -105,3 +108,19 @@ def test_a_builder_is_written_once_per_layout():
     from polygons.compiled import steps_builder
     assert steps_builder(staged.code.layout) is steps_builder(staged.code.layout)
     assert steps_from_record(scene, steps, staged.code.layout, sol.record) == sol.steps
+
+
+def test_the_assembly_over_floats_is_the_assembly_over_arrays():
+    """Every case the float path takes: the same points, closures and words as over arrays;
+    the cases it leaves to the arrays (a triad, a slot slider) are left whole."""
+    taken = 0
+    for path in sorted(CASES.glob("*.toml")):
+        plan = planned(load_scene(str(path)), None)[0]
+        fast = position._assemble_floats(plan)
+        if fast is None:
+            continue
+        slow = position._assemble_arrays(plan)
+        assert repr(fast.points) == repr(slow.points), path.name
+        assert fast.branches == slow.branches and dict(fast.sigmas) == dict(slow.sigmas)
+        taken += 1
+    assert taken > 60
