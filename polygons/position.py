@@ -82,7 +82,11 @@ def _assemble_floats(plan: Plan) -> Placement | None:
     if scene.drawn:
         return None
     x_in = driver_input(scene)
-    pos = {k: (float(v[0]), float(v[1])) for k, v in scene.ground.items()}
+    pos = {}
+    for k, (x, y) in scene.ground.items():
+        if type(x) is not float or type(y) is not float:     # (a batch's arrays)
+            return None
+        pos[k] = (x, y)
     chosen: list[tuple[str, str]] = []
     sigmas: dict[str, float] = {}
     size = size_of(scene)
