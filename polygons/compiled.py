@@ -56,32 +56,62 @@ _SHAPED_BY = ("ground", "links", "driver", "sliders", "slots", "points", "solve"
 def _shape(value):
     """``value`` with every float replaced by its type: the whole identity of a record tree
     but its measures (a record's kind and every field name, label, flag, count and None),
-    walked without recursion (the tree is the user's scene)."""
+    walked without recursion (the tree is the user's scene); how each type is read is worked
+    out once per type (:func:`_how`)."""
     out: list = []
     stack = [value]
+    append, push, how_of = out.append, stack.append, _HOW.get
     while stack:
         v = stack.pop()
-        if v is None or isinstance(v, (str, bool, int)) and not isinstance(v, np.integer):
-            out.append(v)
-        elif isinstance(v, (float, np.floating)):
-            out.append(float)
-        elif is_dataclass(v):
-            out.append(type(v).__qualname__)
-            for f in fields(v):
-                if f.compare:
-                    stack.append(getattr(v, f.name))
-                    out.append(f.name)
-        elif isinstance(v, Mapping):
-            out.append((type(v).__name__, len(v)))
+        how = how_of(type(v))
+        if how is None:
+            how = _how(v)
+        if how is _ATOM:
+            append(v)
+        elif how is _FLOAT:
+            append(float)
+        elif how is _MAP:
+            append((type(v).__name__, len(v)))
             for k, item in v.items():
-                stack.append(item)
-                stack.append(k)
-        elif isinstance(v, (tuple, list, np.ndarray)):
-            out.append(("seq", len(v)))
+                push(item)
+                push(k)
+        elif how is _SEQ:
+            append(("seq", len(v)))
             stack.extend(reversed(list(v)))
-        else:
-            out.append(type(v).__qualname__)
+        elif how[0] is _RECORD:
+            append(how[1])
+            for name in how[2]:
+                push(getattr(v, name))
+                append(name)
+        else:                                   # (_OTHER, its type's name)
+            append(how[1])
     return tuple(out)
+
+
+_ATOM, _FLOAT, _MAP, _SEQ, _RECORD, _OTHER = "atom", "float", "map", "seq", "record", "other"
+#: how :func:`_shape` reads a value of each type met so far
+_HOW: dict = {}
+
+
+def _how(v):
+    """How :func:`_shape` reads ``v``: as it is (None, text, a flag, an integer), as its type
+    (a float), a record's kind and compared fields, a mapping, a sequence, or by its type's
+    name; kept for ``type(v)`` unless ``v`` is itself a class."""
+    if v is None or isinstance(v, (str, bool, int)) and not isinstance(v, np.integer):
+        how = _ATOM
+    elif isinstance(v, (float, np.floating)):
+        how = _FLOAT
+    elif is_dataclass(v):
+        how = (_RECORD, type(v).__qualname__, tuple(f.name for f in fields(v) if f.compare))
+    elif isinstance(v, Mapping):
+        how = _MAP
+    elif isinstance(v, (tuple, list, np.ndarray)):
+        how = _SEQ
+    else:
+        how = (_OTHER, type(v).__qualname__)
+    if not isinstance(v, type):
+        _HOW[type(v)] = how
+    return how
 
 
 def topology_key(scene: Scene) -> tuple:
