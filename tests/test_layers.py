@@ -36,7 +36,7 @@ WHERE = {
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.harmonic": "interpreters",
     "polygons.sweep_store": "interpreters", "polygons.sweep_follow": "interpreters",
-    "polygons.sweep_range": "interpreters",
+    "polygons.sweep_range": "interpreters", "polygons.sweep_extremes": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
     "polygons.fused": "interpreters",
