@@ -290,6 +290,8 @@ def _answer(scene: Scene, q: Question) -> Finding:
     if q.condition in ("zero", "value"):
         target = q.value or 0.0
         g = fs - target
+        finite = np.abs(fs[np.isfinite(fs)])
+        noise = 1e-9 * max(float(finite.max()) if finite.size else 0.0, abs(target))
         for i, j in pairs:
             if not (math.isfinite(g[i]) and math.isfinite(g[j])):
                 continue
@@ -299,7 +301,10 @@ def _answer(scene: Scene, q: Question) -> Finding:
             if g[i] * g[j] < 0.0:
                 a, b = x_of(i, j)
                 x = brent(lambda x, i=i: at(x, i) - target, a, b, g[i], g[j])
-                roots.append(Root(x, at(x, i), "crossing", _restated(scene, q, x, scenes[i])))
+                v = at(x, i)
+                if abs(v - target) <= noise:     # the value asked, to rounding: say it
+                    v = target                   # (a jump across it keeps its own value)
+                roots.append(Root(x, v, "crossing", _restated(scene, q, x, scenes[i])))
         if not periodic and math.isfinite(g[-1]) and g[-1] == 0.0:
             roots.append(Root(xs[-1], fs[-1], "crossing", scenes[-1]))
         words = "" if roots else _never(q, xs, fs, periodic, span, scene)
