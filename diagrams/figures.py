@@ -27,6 +27,10 @@ MAX_SCALE_TEXT = 18.0
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
 STAGE_HEIGHT = 44.0
+#: a diagram whose stage figures, drawn whole at the finished diagram's scale, would print
+#: reduced below this (a triad's polygon, its insets far apart) is staged in details: each
+#: stage's own vectors at their own stated scale (:func:`diagrams.polygon.detail`)
+DETAIL_BELOW = 0.45
 #: the printable area (mm) of the handout's A4 portrait page, and the height a finished
 #: diagram's heading and note take on it: a finished diagram is printed at its stated scale,
 #: so it must fit this (else it is drawn at the round scale that does, and says so)
@@ -203,7 +207,10 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
     The labels' enlargement is estimated from the finished layout ``final`` (labels at their
     own size: the figure's reduction barely depends on them), with a tenth to spare, and
     checked on the figure drawn: one label placement per diagram, rarely two."""
+    from dataclasses import replace
+
     from . import polygon
+    from .strokes import construction
     drop = ("heading", "caption", "key", "legend")
 
     def reduction(lay):
@@ -218,7 +225,13 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
             if stage is None:
                 continue
             new = {s.number for s in cell if s.kind == "line"}
-            t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
+            if details:
+                part = polygon.detail(con, stage, new, lay)
+                t = polygon.drawing(sol, part, stage)
+                t = replace(t, meta={**t.meta, "detail": part.scale.statement})
+                t = trimmed(_as_new(t, new), drop)
+            else:
+                t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
             k = stage_width(t.width, t.height) / t.width
             for _ in range(3):      # the larger bar may enlarge the figure, reducing it more
                 # (a hundredth to spare for the printed width's rounding)
@@ -235,10 +248,17 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
 
     smallest = min(polygon.LABEL_SIZE, polygon.LINE_LABEL_SIZE, polygon.VECTOR_LABEL_SIZE)
     ts = STAGE_TEXT_SCALE
+    details = False
     if final is not None:
-        ts = max(ts, round(1.1 * PRINTED_LABEL / (smallest * min(reduction(final), 1.0)), 2))
+        r = reduction(final)
+        # drawn whole, the stage would print too small to read (a triad's polygon with its
+        # insets): each stage is drawn as a detail of its own vectors at its own scale
+        details = r < DETAIL_BELOW
+        if not details:
+            ts = max(ts, round(1.1 * PRINTED_LABEL / (smallest * min(r, 1.0)), 2))
+    con = construction(sol, diagram) if details else None
     for _ in range(3):      # checked on the figures drawn: a stage may be reduced more
-        lay = polygon.layout(sol, diagram, scale, paper, ts)     # than the last one, a
+        lay = ts if details else polygon.layout(sol, diagram, scale, paper, ts)  # than the last one, a
         out, printed = staged(lay)                              # crowded label set smaller
         if printed >= 1.01 * PRINTED_LABEL:     # (a hundredth for the printed width's
             break                               # rounding)

@@ -94,10 +94,11 @@ def test_a_vector_too_short_for_any_inset_is_said_not_drawn():
 
 def test_a_triads_handout_stage_thumbnails_keep_the_layout_rule(monkeypatch):
     """The handout's stage thumbnails print 56 mm wide with labels set larger so they print
-    2.5 mm high: the triad's crowded acceleration polygon no longer has room for them all.
-    Each thumbnail keeps its stage's own labels and drops the earlier ones that would print
-    on another (diagrams.figures.uncrowded); measured after the column's reduction, none
-    overlaps, and some were dropped (kept, they would overlap)."""
+    2.5 mm high.  Drawn whole, the triad's acceleration polygon (its insets far apart)
+    printed at ×0.13: each stage is a detail of its own vectors at its own stated scale
+    (diagrams.polygon.detail), printed at ×0.2 or more, most at ×0.35 or more (an own
+    vector far shorter than its step's lines keeps an inset); measured after the column's
+    reduction, none breaks the layout rule, and each draws its step's new vertex."""
     import diagrams
     from diagrams import figures
     from diagrams.audit import measure, verdict
@@ -112,5 +113,13 @@ def test_a_triads_handout_stage_thumbnails_keep_the_layout_rule(monkeypatch):
         k = figures.stage_width(s.width, s.height) / s.width
         breaches += verdict(measure(to_svg(s), f"forces-triad/handout:{s.name}", k))
     assert len(stages) >= 10 and not breaches, breaches[:10]
-    # crowded: labels were dropped (kept, they would print on others)
-    assert sum(s.meta.get("dropped", 0) for s in stages) > 0
+    assert all(s.meta.get("detail") for s in stages)
+    shrink = [figures.stage_width(s.width, s.height) / s.width for s in stages]
+    assert min(shrink) >= 0.2 and sorted(shrink)[len(shrink) // 2] >= 0.35, shrink
+    from diagrams.text import token
+    for s in stages:
+        step = lay.con.steps[int(s.name.rsplit("-", 1)[1]) - 1]
+        if step.end and lay.con.born.get(step.end) == step.number:
+            mine = f"acceleration-vertex-{token(step.end)}"
+            assert any(getattr(c, "ident", "") == mine and not c.faded
+                       for c in s.items()), (s.name, mine)
