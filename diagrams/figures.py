@@ -27,10 +27,11 @@ MAX_SCALE_TEXT = 18.0
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
 STAGE_HEIGHT = 44.0
-#: a diagram whose stage figures, drawn whole at the finished diagram's scale, would print
-#: reduced below this (a triad's polygon, its insets far apart) is staged in details: each
-#: stage's own vectors at their own stated scale (:func:`diagrams.polygon.detail`)
-DETAIL_BELOW = 0.45
+#: a diagram whose stage figures, drawn whole at the finished diagram's scale, print
+#: reduced below this (the median: a triad's polygon, its insets far apart, ×0.13) is
+#: staged in details: each stage's own vectors at their own stated scale
+#: (:func:`diagrams.polygon.detail`)
+DETAIL_BELOW = 0.2
 #: the printable area (mm) of the handout's A4 portrait page, and the height a finished
 #: diagram's heading and note take on it: a finished diagram is printed at its stated scale,
 #: so it must fit this (else it is drawn at the round scale that does, and says so)
@@ -247,22 +248,30 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
         return out, least
 
     smallest = min(polygon.LABEL_SIZE, polygon.LINE_LABEL_SIZE, polygon.VECTOR_LABEL_SIZE)
-    ts = STAGE_TEXT_SCALE
-    details = False
+    first = STAGE_TEXT_SCALE
     if final is not None:
-        r = reduction(final)
-        # drawn whole, the stage would print too small to read (a triad's polygon with its
-        # insets): each stage is drawn as a detail of its own vectors at its own scale
-        details = r < DETAIL_BELOW
-        if not details:
-            ts = max(ts, round(1.1 * PRINTED_LABEL / (smallest * min(r, 1.0)), 2))
-    con = construction(sol, diagram) if details else None
-    for _ in range(3):      # checked on the figures drawn: a stage may be reduced more
-        lay = ts if details else polygon.layout(sol, diagram, scale, paper, ts)  # than the last one, a
-        out, printed = staged(lay)                              # crowded label set smaller
-        if printed >= 1.01 * PRINTED_LABEL:     # (a hundredth for the printed width's
-            break                               # rounding)
-        ts = round(ts * PRINTED_LABEL / printed * 1.03, 2)
+        first = max(first, round(1.1 * PRINTED_LABEL / (smallest * min(reduction(final), 1.0)),
+                                 2))
+    con = None
+
+    def drawn(ts):
+        for _ in range(3):      # checked on the figures drawn: a stage may be reduced more
+            lay = ts if details else polygon.layout(sol, diagram, scale, paper, ts)  # than
+            out, printed = staged(lay)          # the last one, a crowded label set smaller
+            if printed >= 1.01 * PRINTED_LABEL:     # (a hundredth for the printed width's
+                break                               # rounding)
+            ts = round(ts * PRINTED_LABEL / printed * 1.03, 2)
+        return out
+
+    details = False
+    out = drawn(first)
+    shrink = sorted(stage_width(d.width, d.height) / d.width for d in out)
+    if shrink and shrink[len(shrink) // 2] < DETAIL_BELOW:
+        # drawn whole, the stages print too small to read (a triad's polygon, its labels
+        # set larger and its insets far apart): each is drawn as a detail of its own
+        # vectors at its own stated scale
+        details, con = True, construction(sol, diagram)
+        out = drawn(STAGE_TEXT_SCALE)
     return out
 
 
