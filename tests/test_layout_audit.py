@@ -123,3 +123,32 @@ def test_a_triads_handout_stage_thumbnails_keep_the_layout_rule(monkeypatch):
             mine = f"acceleration-vertex-{token(step.end)}"
             assert any(getattr(c, "ident", "") == mine and not c.faded
                        for c in s.items()), (s.name, mine)
+
+
+def test_force_legend_rows_are_wrapped_to_the_figures_width():
+    """A force drawing's legend row longer than FORCE_LEGEND_MM is wrapped (its further lines
+    indented), measured by the typeset width of each text the SVG holds: the oscillating
+    cylinder's group 2 has '−m a_G (O2P) ≈ 0 (1.13 mm at this scale: 2.824 N, not drawn)',
+    ~90 mm unwrapped.  A polygon that closes to rounding says 'gap 0 N', not 'gap 7.3e-15 N'."""
+    from diagrams import fbd, forcepoly
+    from diagrams.audit import measure
+    from diagrams.layout import FORCE_LEGEND_MM, LEGEND_INDENT
+    from diagrams.svg import to_svg
+    from polygons.forces import analyse
+    from polygons.scene import load_scene
+    an = analyse(load_scene(str(CASES / "forces-oscillating-cylinder.toml")))
+    st = an.states[0]
+    drawn = dict(forcepoly.group_drawings(an, st) + forcepoly.lever_drawings(an, st))
+    drawn |= dict(fbd.drawings(an))
+    rows = 0
+    for name, d in drawn.items():
+        legend = [t for t in d.items("legend") if getattr(t, "text", "")]
+        m = measure(to_svg(d), name)
+        for text, _, boxes in m.texts:
+            if any(t.text == text for t in legend):
+                w = max(b[2] for b in boxes) - min(b[0] for b in boxes)
+                assert w <= FORCE_LEGEND_MM + 0.5, (name, text, w)
+        rows += sum(1 for t in legend if t.x > min(u.x for u in legend) + LEGEND_INDENT / 2)
+        if name.startswith("forces-"):
+            assert "gap 0 N" in " ".join(t.text for t in d.items("caption")), name
+    assert rows >= 2
