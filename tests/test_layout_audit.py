@@ -152,3 +152,19 @@ def test_force_legend_rows_are_wrapped_to_the_figures_width():
         if name.startswith("forces-"):
             assert "gap 0 N" in " ".join(t.text for t in d.items("caption")), name
     assert rows >= 2
+
+
+def test_crossing_slots_sliding_results_are_named_apart():
+    """A pin in crossing slots has two sliding velocities and accelerations: each legend row
+    names its quantity ('a_slide = (a_P)_P2 = …'), not two bare 'a_slide' rows."""
+    from diagrams.polywords import measure_text
+    from diagrams.strokes import construction
+    from polygons.api import solve
+    sol = solve(str(CASES / "new-crossing-slots.toml")).solution
+    for diagram, sym in (("velocity", "v"), ("acceleration", "a")):
+        con = construction(sol, diagram)
+        rows = [r for r in (measure_text(m, sol, con) for m in con.measures)
+                if "slide" in r]
+        assert len(rows) == 2, rows
+        assert any(f"({sym}_P)_P2" in r for r in rows) and any(f"({sym}_P)_P4" in r
+                                                                for r in rows), rows
