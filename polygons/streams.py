@@ -136,11 +136,13 @@ def _undefine_chunk(res: dict, mask: np.ndarray) -> None:
 
 class Extremes:
     """Summaries computed on the stream: for every quantity ``key`` fed to :meth:`add`, the
-    largest magnitude and the input where it occurs (NaN positions skipped), plus the smallest
+    largest magnitude and the input where it occurs and the smallest magnitude (NaN positions
+    skipped), plus the smallest
     construction angle and the count of positions that could not be assembled."""
 
     def __init__(self):
         self.max: dict[str, tuple[float, float]] = {}     # key -> (|value|, input)
+        self.least: dict[str, float] = {}                # key -> the smallest |value|
         self.min_angle = (math.inf, math.nan)
         self.bad = 0
         self.n = 0
@@ -152,6 +154,7 @@ class Extremes:
         i = int(np.nanargmax(v))
         if key not in self.max or v[i] > self.max[key][0]:
             self.max[key] = (float(v[i]), float(xs[i]))
+        self.least[key] = min(self.least.get(key, math.inf), float(np.nanmin(v)))
 
     def add_chunk(self, xs, res) -> None:
         """Every point's |v|, |a|, every link's |ω|, |α|, every slide's rates and travel."""

@@ -621,3 +621,28 @@ def test_the_tangent_flank_case_is_the_books_closed_form():
                                                 "condition": "max", "unit": "deg"}]}
         with pytest.raises(SceneError, match=words):
             conditions.answer_all(parse_scene(bad, file=str(case)))
+
+
+def test_the_displacement_diagrams_summary_is_exact_not_the_nearest_sample():
+    """The summary's greatest |v| and |a| (and the lift) are the extremes themselves, refined
+    between samples (cam_diagram.extremes): on Khurmi's tangent cam the greatest speed is at
+    the flanks' ends, 74.744881…° and 105.255118…°, 1.0420798510656863 m/s (the case's
+    [[questions]] exact, the book's closed form) — the 1°-sampled diagram's best is 1.0222 m/s
+    at 105°; the greatest |a| 84.3168059297373 m/s² there; the lift the profile's.  The parts'
+    edges likewise, however coarse the diagram."""
+    from polygons import cam_diagram
+    scene = load_scene(str(ROOT / "cases" / "cam-profile-tangent-flank.toml"))
+    rows = cam_diagram.diagram(scene, 36)
+    v = cam_diagram.extremes(scene, rows, "v")
+    assert [math.degrees(r.angle) for r in v] == pytest.approx(
+        [74.74488129694221, 105.25511870305779], abs=1e-7)
+    assert all(abs(r.v) == pytest.approx(1.0420798510656863, rel=1e-9) for r in v)
+    a = cam_diagram.extremes(scene, rows, "a")
+    assert abs(a[0].a) == pytest.approx(84.3168059297373, rel=1e-9)
+    top, = cam_diagram.extremes(scene, rows, "s", +1)
+    low = cam_diagram.extremes(scene, rows, "s", -1)[0]
+    assert (top.s - low.s) == pytest.approx(0.019882250993908557, rel=1e-12)
+    edges = [math.degrees(e) for p in cam_diagram.parts(scene) for e in p[1:3]]
+    assert edges == pytest.approx([0, 45, 45, 74.74488129694221, 74.74488129694221,
+                                   105.25511870305779, 105.25511870305779, 135, 135, 360],
+                                  abs=1e-9)
