@@ -28,64 +28,13 @@ from .question_table import CYCLE, Question, questions
 from .records import Crank
 from .scene import Scene, drawing_tolerance, parse_quantity_expr
 from .sweep import golden_min
+from .calculus import brent
 from .reader import Reader
 from .units import UNITS
 
 _TAU = 2.0 * math.pi
 #: the relative step of the central difference whose zero is an extreme
 _H = 1e-6
-
-
-# ------------------------------------------------------------------ Brent's method
-def brent(g: Callable[[float], float], a: float, b: float, ga: float | None = None,
-          gb: float | None = None, xtol: float = 0.0, maxiter: int = 200) -> float:
-    """A zero of ``g`` in [a, b] where g(a)·g(b) ≤ 0, by Brent's method (inverse quadratic
-    interpolation, secant and bisection; Brent 1973, ch. 4, "zero"): the bracket shrinks to
-    4 ε |x| + xtol."""
-    fa = g(a) if ga is None else ga
-    fb = g(b) if gb is None else gb
-    if fa == 0.0:
-        return a
-    if fb == 0.0:
-        return b
-    if fa * fb > 0.0:
-        raise ValueError("brent: no sign change in the bracket")
-    c, fc = a, fa
-    d = e = b - a
-    eps = np.finfo(float).eps
-    for _ in range(maxiter):
-        if fb * fc > 0.0:
-            c, fc = a, fa
-            d = e = b - a
-        if abs(fc) < abs(fb):
-            a, b, c = b, c, b
-            fa, fb, fc = fb, fc, fb
-        tol = 2.0 * eps * abs(b) + 0.5 * xtol
-        m = 0.5 * (c - b)
-        if abs(m) <= tol or fb == 0.0:
-            return b
-        if abs(e) >= tol and abs(fa) > abs(fb):
-            s = fb / fa
-            if a == c:
-                p, q = 2.0 * m * s, 1.0 - s
-            else:
-                qq, r = fa / fc, fb / fc
-                p = s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0))
-                q = (qq - 1.0) * (r - 1.0) * (s - 1.0)
-            if p > 0.0:
-                q = -q
-            else:
-                p = -p
-            if 2.0 * p < min(3.0 * m * q - abs(tol * q), abs(e * q)):
-                e, d = d, p / q
-            else:
-                d = e = m
-        else:
-            d = e = m
-        a, fa = b, fb
-        b += d if abs(d) > tol else math.copysign(tol, m)
-        fb = g(b)
-    return b
 
 
 # ------------------------------------------------------------------ the records

@@ -143,6 +143,7 @@ class Extremes:
     def __init__(self):
         self.max: dict[str, tuple[float, float]] = {}     # key -> (|value|, input)
         self.least: dict[str, float] = {}                # key -> the smallest |value|
+        self.at_travel: dict[str, tuple[float, float]] = {}   # slider -> inputs of its ends
         self.min_angle = (math.inf, math.nan)
         self.bad = 0
         self.n = 0
@@ -177,6 +178,13 @@ class Extremes:
                 self.add(f"{tag}:{lab}", v, xs)
         for lab, s in res["travel"].items():
             lo, hi = self.max.get(f"travel:{lab}", (math.inf, -math.inf))
-            with np.errstate(invalid="ignore"):
-                self.max[f"travel:{lab}"] = (min(lo, float(np.nanmin(s))),
-                                             max(hi, float(np.nanmax(s))))
+            at_lo, at_hi = self.at_travel.get(lab, (math.nan, math.nan))
+            s = np.broadcast_to(s, xs.shape)
+            if np.isfinite(s).any():
+                i, j = int(np.nanargmin(s)), int(np.nanargmax(s))
+                if s[i] < lo:
+                    lo, at_lo = float(s[i]), float(xs[i])
+                if s[j] > hi:
+                    hi, at_hi = float(s[j]), float(xs[j])
+            self.max[f"travel:{lab}"] = (lo, hi)
+            self.at_travel[lab] = (at_lo, at_hi)

@@ -16,7 +16,7 @@ LAYERS = ("base", "scene", "plan", "interpreters", "forces", "render", "commands
 WHERE = {
     "polygons.errors": "base", "polygons.units": "base", "polygons.schema": "base",
     "polygons.theorems": "base", "polygons.steps": "base", "polygons.memo": "base", "polygons.notation": "base",
-    "polygons.program": "base",
+    "polygons.program": "base", "polygons.calculus": "base",
     "polygons.scene": "scene", "polygons.quantity_grammar": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
     "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.higher": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
@@ -36,7 +36,7 @@ WHERE = {
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.harmonic": "interpreters",
     "polygons.sweep_store": "interpreters", "polygons.sweep_follow": "interpreters",
-    "polygons.sweep_range": "interpreters",
+    "polygons.sweep_range": "interpreters", "polygons.sweep_extremes": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
     "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
     "polygons.fused": "interpreters",

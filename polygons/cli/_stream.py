@@ -158,7 +158,8 @@ def _length(vec) -> np.ndarray:
 _MEASURES = {"v": lambda s, k: _length(s.velocity(k)),
              "a": lambda s, k: _length(s.acceleration(k)),
              "v_s": lambda s, k: np.abs(s.slide_v[k]), "a_s": lambda s, k: np.abs(s.slide_a[k]),
-             "omega": lambda s, k: np.abs(s.omega[k]), "alpha": lambda s, k: np.abs(s.alpha[k])}
+             "omega": lambda s, k: np.abs(s.omega[k]), "alpha": lambda s, k: np.abs(s.alpha[k]),
+             "travel": lambda s, k: s.travel[k], "-travel": lambda s, k: -s.travel[k]}
 
 
 def _refined(st, key: str, start: tuple[float, float]) -> tuple[float, float]:
@@ -229,6 +230,8 @@ def _summary(st, ext: Extremes, points, links, unit, units, written, k_plot) -> 
     for lab in points:
         if f"travel:{lab}" in ext.max:
             s_lo, s_hi = ext.max[f"travel:{lab}"]
+            s_hi = _refined(st, f"travel:{lab}", (s_hi, ext.at_travel[lab][1]))[0]
+            s_lo = -_refined(st, f"-travel:{lab}", (-s_lo, ext.at_travel[lab][0]))[0]
             out.append(f"point {lab}: travel {number(s_lo * f)} … {number(s_hi * f)} {lu} "
                        f"(stroke {number((s_hi - s_lo) * f)} {lu})")
         else:

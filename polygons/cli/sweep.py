@@ -483,9 +483,13 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
         if lab in sw.travel and lab in sw.slide_v:
             s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
             e = scene.model.guide[lab].line.angle
-            travel = (f"{number(np.nanmin(s) * f)} … {number(np.nanmax(s) * f)} {lu} (stroke "
-                      f"{number((np.nanmax(s) - np.nanmin(s)) * f)} {lu})"
-                      if np.isfinite(s).any() else "— (no position of the sweep solves it)")
+            if np.isfinite(s).any():    # the ends of the travel, refined between samples
+                s_hi = greatest(sw, lambda w, k=lab: w.travel[k])[0]
+                s_lo = -greatest(sw, lambda w, k=lab: -w.travel[k])[0]
+                travel = (f"{number(s_lo * f)} … {number(s_hi * f)} {lu} (stroke "
+                          f"{number((s_hi - s_lo) * f)} {lu})")
+            else:
+                travel = "— (no position of the sweep solves it)"
             out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
                        f"{travel}")
             out.append(f"  max |v| = {_peak(sw, lambda s, k=lab: np.abs(s.slide_v[k]), f, vu)}")
