@@ -96,7 +96,7 @@ def test_a_triads_handout_stage_thumbnails_keep_the_layout_rule(monkeypatch):
     """The handout's stage thumbnails print 56 mm wide with labels set larger so they print
     2.5 mm high.  Drawn whole, the triad's acceleration polygon (its insets far apart)
     printed at ×0.13: each stage is a detail of its own vectors at its own stated scale
-    (diagrams.polygon.detail), printed at ×0.2 or more, most at ×0.35 or more (an own
+    (diagrams.figures.detail), printed at ×0.2 or more, most at ×0.35 or more (an own
     vector far shorter than its step's lines keeps an inset); measured after the column's
     reduction, none breaks the layout rule, and each draws its step's new vertex."""
     import diagrams
