@@ -46,7 +46,7 @@ def _base(scene, omega: float | None = None):
         raise UnsupportedError("the scene states no cam by its profile ([cam_profiles])",
                                file=scene.file)
     (label, table), = raw.items()
-    table = {k: v for k, v in table.items() if k != AXIS_KEY}
+    table = {k: v for k, v in table.items() if k not in (AXIS_KEY, "when")}
     drv = scene.driver
     w = drv.omega if omega is None else omega
     ground = {g: [f"{p[0]!r} m", f"{p[1]!r} m"] for g, p in scene.ground.items()}

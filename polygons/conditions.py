@@ -237,13 +237,17 @@ def answer(scene: Scene, q: Question) -> Finding:
     if q.find != "angle" or not cam_diagram.has_profile(scene):
         return found
     xs = _samples_only(scene, q)
-    dwell = [x for x in xs if cam_diagram.part_at(scene, x)[0] == "base circle"]
-    if not dwell:
+    if not any(cam_diagram.part_at(scene, x)[0] == "base circle" for x in xs):
         return found
-    words = (f"the follower dwells on the base circle (at rest, no linkage) at "
-             f"{len(dwell)} of the {len(xs)} sampled cam angles, "
-             f"{_fmt(input_in_unit(q, dwell[0]))} … {_fmt(input_in_unit(q, dwell[-1]))} "
-             f"{q.unit}: the quantity is not taken there")
+    runs = [(a, b) for part, a, b, _ in cam_diagram.parts(scene) if part == "base circle"]
+    if len(runs) > 1 and runs[0][0] == 0.0 and runs[-1][1] == _TAU:    # one dwell round 0
+        runs = [(runs[-1][0], runs[0][1])] + runs[1:-1]
+    full = replace(q, range=None)       # an angle within the turn, in the question's unit
+    spans = " and ".join(f"{_fmt(input_in_unit(full, a))} … {_fmt(input_in_unit(full, b))}"
+                         for a, b in runs)
+    words = (f"the follower dwells on the base circle (at rest, no linkage) from {spans} "
+             f"{q.unit} (the nose axis's angle; its edges to the last bit): the quantity is "
+             f"not taken there")
     return replace(found, words=f"{found.words}; {words}" if found.words else words)
 
 
@@ -286,6 +290,8 @@ def _answer(scene: Scene, q: Question) -> Finding:
     if q.condition in ("zero", "value"):
         target = q.value or 0.0
         g = fs - target
+        finite = np.abs(fs[np.isfinite(fs)])
+        noise = 1e-9 * max(float(finite.max()) if finite.size else 0.0, abs(target))
         for i, j in pairs:
             if not (math.isfinite(g[i]) and math.isfinite(g[j])):
                 continue
@@ -295,7 +301,10 @@ def _answer(scene: Scene, q: Question) -> Finding:
             if g[i] * g[j] < 0.0:
                 a, b = x_of(i, j)
                 x = brent(lambda x, i=i: at(x, i) - target, a, b, g[i], g[j])
-                roots.append(Root(x, at(x, i), "crossing", _restated(scene, q, x, scenes[i])))
+                v = at(x, i)
+                if abs(v - target) <= noise:     # the value asked, to rounding: say it
+                    v = target                   # (a jump across it keeps its own value)
+                roots.append(Root(x, v, "crossing", _restated(scene, q, x, scenes[i])))
         if not periodic and math.isfinite(g[-1]) and g[-1] == 0.0:
             roots.append(Root(xs[-1], fs[-1], "crossing", scenes[-1]))
         words = "" if roots else _never(q, xs, fs, periodic, span, scene)
