@@ -182,14 +182,26 @@ def turning_moment(model, scene: Scene, n: int, table: bool = True) -> Cycle:
                         tuple(sw.warnings) + tuple(notes), table)
 
 
+#: the poses a torque between the samples is pinned near: a sweep of at least this many angles
+#: (within 0.25° of any angle, where the followed closure is clearly the nearest)
+PIN_ANGLES = 720
+
+
 def _torque_at(model, sw, drv, sense: float, n: int):
     """T(u): the input torque with the crank turned u (rad, in its sense) from the scene's
-    angle, each closure pinned near the sweep's nearest sample."""
-    step = 2.0 * math.pi / n
+    angle, each closure pinned near the pose the sweep followed at the nearest of
+    ``max(n, PIN_ANGLES)`` angles."""
+    if n < PIN_ANGLES:
+        from ..sweep import sweep
+        m = PIN_ANGLES
+        pins = sweep(sw.scene, inputs=drv.angle + sense * 2.0 * math.pi * np.arange(m) / m)
+    else:
+        m, pins = n, sw
+    step = 2.0 * math.pi / m
 
     def T(u: float) -> float:
-        i = int(round(u / step)) % n
-        sc = sw.scene_at(i)
+        i = int(round(u / step)) % m
+        sc = pins.scene_at(i)
         sc = replace(sc, driver=replace(sc.driver, angle=drv.angle + sense * u))
         return kinetostatic(model, driver_state(sc, alpha=0.0),
                             name=f"{math.degrees(drv.angle + sense * u) % 360:.6g} deg").ne.effort
