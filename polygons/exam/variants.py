@@ -165,7 +165,7 @@ def symbol(expr: str) -> str:
 # ---------------------------------------------------------------- the data in words
 def _g(x: float) -> str:
     """A value as a student reads it: at most six significant figures, no e-notation."""
-    if x == 0 or not math.isfinite(x):
+    if abs(x) < 1e-9 or not math.isfinite(x):     # below 1e-9 of the unit: rounding noise
         return "0"
     text = f"{x:.{max(0, 5 - math.floor(math.log10(abs(x))))}f}"
     return text.rstrip("0").rstrip(".") if "." in text else text
@@ -243,12 +243,33 @@ def data_rows(scene: Scene) -> tuple[tuple[str, str], ...]:
                          f"at {_mm(drv.position)} along its guide ({way}) from its through "
                          f"point; velocity {_g(drv.velocity)} m/s, acceleration "
                          f"{_g(drv.acceleration)} m/s² (signed the same way)"))
-    other = [k for k, v in (("crossing slots", model.crossings()),
-                            ("prescribed slides", model.prescribed),
-                            ("cams or curved slots", scene.equivalents)) if v]
-    if other:
-        rows.append(("also", "; ".join(other) + " (see the scene file)"))
+    # the student gets no scene file: every other pair in words too
+    for pin, cr in scene.crossing.items():
+        (l1, l2), (c1, c2) = cr.levers, cr.coincident
+        rows.append((f"pin {pin}", f"slides in the slots of links {l1} and {l2} at once (each "
+                                   f"slot along its link, {_ends(model, l1)} and {_ends(model, l2)}"
+                                   f"); {c1} and {c2} are the points of {l1} and {l2} under "
+                                   f"{pin}"))
+    for point, sl in model.prescribed.items():
+        rows.append((f"collar {point}", f"slides along link {sl.link}: at {_mm(sl.position)} "
+                                        f"from {sl.p} towards {sl.q}, sliding velocity "
+                                        f"{_g(sl.velocity)} m/s and acceleration "
+                                        f"{_g(sl.acceleration)} m/s² (signed from {sl.p} "
+                                        f"towards {sl.q}); {sl.coincident} is the point of "
+                                        f"{sl.link} under {point}"))
+    for q in scene.equivalents:
+        text = q.words
+        if q.opposite_motion is not None:
+            text += (f"; the plate of {q.opposite} moves at {_g(q.opposite_motion[0])} m/s, "
+                     f"accelerating at {_g(q.opposite_motion[1])} m/s² (signed along "
+                     f"{_deg(q.face)})")
+        rows.append((f"contact at {q.at}", text))
     return tuple(rows)
+
+
+def _ends(model, lever: str) -> str:
+    link = model.link(lever)
+    return f"from {link.a} through {link.b}" if link is not None else lever
 
 
 # ---------------------------------------------------------------- scales
