@@ -48,6 +48,7 @@ def assemble(plan: Plan) -> Placement:
     x_in = driver_input(scene)
     with np.errstate(all="ignore"):   # a degenerate dyad gives NaN and says why below
         _place(plan, scene, pos, chosen, sigmas, size, x_in)
+    _check_rod_angle(scene, pos)
     for label, xy in scene.drawn.items():
         if label in pos:
             off = float(np.hypot(*(pos[label] - np.array(xy))))
@@ -106,6 +107,25 @@ def _check_words(pts, scene: Scene, pos) -> None:
                               f"'{branch.text}': the [assembly] words describe another "
                               f"configuration (check the data, or leave the words out)",
                               file=scene.file, where=f"assembly.{x}")
+
+
+def _check_rod_angle(scene: Scene, pos) -> None:
+    """A slider driver placed by its rod's angle with [assembly] words for the rod's far end:
+    the closure the words chose must put the rod at its stated angle (the mirror closure,
+    the rod at another angle, was answered silently before)."""
+    end = getattr(scene.driver, "rod_end", None)
+    if end is None or scene.driver.position != end[3]:
+        return                          # another position (a sweep, a question): no angle
+    name, other, angle = end[:3]
+    dx, dy = (float(c) for c in pos[other] - pos[scene.driver.point])
+    got = math.atan2(dy, dx)
+    if abs(math.remainder(got - angle, 2.0 * math.pi)) > 1e-7:
+        branch = scene.assembly[other]
+        raise BranchError(f"'{branch.text}' puts {other} at {_fmt(pos[other])}, where the rod "
+                          f"{name} is at {math.degrees(got) % 360.0:.6g}°, not at its stated "
+                          f"rod_angle {math.degrees(angle) % 360.0:.6g}°: the words choose the "
+                          f"other closure (leave them out: the rod's angle places {other})",
+                          file=scene.file, where=f"assembly.{other}")
 
 
 def dyad_failure(scene: Scene, d, pos) -> AssemblyError:

@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
@@ -532,6 +532,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                                    * math.cos(g.angle) + rx,
                                                    g.through[1] + driver.position
                                                    * math.sin(g.angle) + ry))
+        elif other in assembly:         # the words must agree with the angle (position.py)
+            driver = replace(driver, rod_end=(name, other, math.atan2(ry, rx),
+                                              driver.position))
 
     for label in drawn:
         need_label(label, f"drawn.{label}")
