@@ -48,5 +48,10 @@ def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:
 
 
 if __name__ == "__main__":
-    args = [int(a) for a in sys.argv[1:3]]
+    try:
+        args = [int(a) for a in sys.argv[1:3]]
+        if any(a < 0 or a > 10_000_000 for a in args):
+            raise ValueError
+    except ValueError:
+        sys.exit(f"usage: python {sys.argv[0]} [POSES [SCAN_EVERY]]  (whole numbers, 0 … 10^7)")
     print(main(*args))

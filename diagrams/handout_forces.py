@@ -326,8 +326,9 @@ def _lever(an) -> str:
     return "".join(out)
 
 
-#: angles of the handout's turning-moment diagram (as `polygons forces --cycle 360`)
-CYCLE_ANGLES = 360
+#: angles of the handout's turning-moment diagram (its drawn curve; the numbers do not depend on
+#: them: polygons.forces.cycle)
+CYCLE_ANGLES = 72
 
 
 def _cycle(sol):
@@ -338,7 +339,7 @@ def _cycle(sol):
         from polygons.forces.analysis import load_model
         from polygons.forces.cycle import turning_moment
         memo["turning_moment"] = turning_moment(load_model(sol.scene), sol.scene,
-                                                CYCLE_ANGLES)
+                                                CYCLE_ANGLES, table=False)
     return memo["turning_moment"]
 
 
@@ -354,12 +355,12 @@ def _turning_moment(sol) -> str:
                             formats=("svg",))
         svg = (Path(tmp) / "tm.svg").read_text(encoding="utf-8")
     svg = svg[svg.index("<svg"):]
-    hi, lo = int(np.argmax(cy.torque)), int(np.argmin(cy.torque))
+    (t_hi, th_hi), (t_lo, th_lo) = cy.max_torque, cy.min_torque
 
     def at(t):
         return f"{round(math.degrees(t) % 360.0, 9) % 360.0:.4g}°"
-    rows = [("maximum torque", f"{_n(cy.torque[hi])} N m at {at(cy.theta[hi])}"),
-            ("minimum torque", f"{_n(cy.torque[lo])} N m at {at(cy.theta[lo])}"),
+    rows = [("maximum torque", f"{_n(t_hi)} N m at {at(th_hi)}"),
+            ("minimum torque", f"{_n(t_lo)} N m at {at(th_lo)}"),
             ("mean torque T<sub>m</sub>", f"{_n(cy.mean)} N m"),
             ("maximum fluctuation of energy ΔE",
              f"{_n(cy.fluctuation)} J (E greatest at {at(cy.at_max)}, least at "

@@ -28,64 +28,13 @@ from .question_table import CYCLE, Question, questions
 from .records import Crank
 from .scene import Scene, drawing_tolerance, parse_quantity_expr
 from .sweep import golden_min
+from .calculus import brent
 from .reader import Reader
 from .units import UNITS
 
 _TAU = 2.0 * math.pi
 #: the relative step of the central difference whose zero is an extreme
 _H = 1e-6
-
-
-# ------------------------------------------------------------------ Brent's method
-def brent(g: Callable[[float], float], a: float, b: float, ga: float | None = None,
-          gb: float | None = None, xtol: float = 0.0, maxiter: int = 200) -> float:
-    """A zero of ``g`` in [a, b] where g(a)·g(b) ≤ 0, by Brent's method (inverse quadratic
-    interpolation, secant and bisection; Brent 1973, ch. 4, "zero"): the bracket shrinks to
-    4 ε |x| + xtol."""
-    fa = g(a) if ga is None else ga
-    fb = g(b) if gb is None else gb
-    if fa == 0.0:
-        return a
-    if fb == 0.0:
-        return b
-    if fa * fb > 0.0:
-        raise ValueError("brent: no sign change in the bracket")
-    c, fc = a, fa
-    d = e = b - a
-    eps = np.finfo(float).eps
-    for _ in range(maxiter):
-        if fb * fc > 0.0:
-            c, fc = a, fa
-            d = e = b - a
-        if abs(fc) < abs(fb):
-            a, b, c = b, c, b
-            fa, fb, fc = fb, fc, fb
-        tol = 2.0 * eps * abs(b) + 0.5 * xtol
-        m = 0.5 * (c - b)
-        if abs(m) <= tol or fb == 0.0:
-            return b
-        if abs(e) >= tol and abs(fa) > abs(fb):
-            s = fb / fa
-            if a == c:
-                p, q = 2.0 * m * s, 1.0 - s
-            else:
-                qq, r = fa / fc, fb / fc
-                p = s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0))
-                q = (qq - 1.0) * (r - 1.0) * (s - 1.0)
-            if p > 0.0:
-                q = -q
-            else:
-                p = -p
-            if 2.0 * p < min(3.0 * m * q - abs(tol * q), abs(e * q)):
-                e, d = d, p / q
-            else:
-                d = e = m
-        else:
-            d = e = m
-        a, fa = b, fb
-        b += d if abs(d) > tol else math.copysign(tol, m)
-        fb = g(b)
-    return b
 
 
 # ------------------------------------------------------------------ the records
@@ -288,13 +237,17 @@ def answer(scene: Scene, q: Question) -> Finding:
     if q.find != "angle" or not cam_diagram.has_profile(scene):
         return found
     xs = _samples_only(scene, q)
-    dwell = [x for x in xs if cam_diagram.part_at(scene, x)[0] == "base circle"]
-    if not dwell:
+    if not any(cam_diagram.part_at(scene, x)[0] == "base circle" for x in xs):
         return found
-    words = (f"the follower dwells on the base circle (at rest, no linkage) at "
-             f"{len(dwell)} of the {len(xs)} sampled cam angles, "
-             f"{_fmt(input_in_unit(q, dwell[0]))} … {_fmt(input_in_unit(q, dwell[-1]))} "
-             f"{q.unit}: the quantity is not taken there")
+    runs = [(a, b) for part, a, b, _ in cam_diagram.parts(scene) if part == "base circle"]
+    if len(runs) > 1 and runs[0][0] == 0.0 and runs[-1][1] == _TAU:    # one dwell round 0
+        runs = [(runs[-1][0], runs[0][1])] + runs[1:-1]
+    full = replace(q, range=None)       # an angle within the turn, in the question's unit
+    spans = " and ".join(f"{_fmt(input_in_unit(full, a))} … {_fmt(input_in_unit(full, b))}"
+                         for a, b in runs)
+    words = (f"the follower dwells on the base circle (at rest, no linkage) from {spans} "
+             f"{q.unit} (the nose axis's angle; its edges to the last bit): the quantity is "
+             f"not taken there")
     return replace(found, words=f"{found.words}; {words}" if found.words else words)
 
 
@@ -337,6 +290,8 @@ def _answer(scene: Scene, q: Question) -> Finding:
     if q.condition in ("zero", "value"):
         target = q.value or 0.0
         g = fs - target
+        finite = np.abs(fs[np.isfinite(fs)])
+        noise = 1e-9 * max(float(finite.max()) if finite.size else 0.0, abs(target))
         for i, j in pairs:
             if not (math.isfinite(g[i]) and math.isfinite(g[j])):
                 continue
@@ -346,7 +301,10 @@ def _answer(scene: Scene, q: Question) -> Finding:
             if g[i] * g[j] < 0.0:
                 a, b = x_of(i, j)
                 x = brent(lambda x, i=i: at(x, i) - target, a, b, g[i], g[j])
-                roots.append(Root(x, at(x, i), "crossing", _restated(scene, q, x, scenes[i])))
+                v = at(x, i)
+                if abs(v - target) <= noise:     # the value asked, to rounding: say it
+                    v = target                   # (a jump across it keeps its own value)
+                roots.append(Root(x, v, "crossing", _restated(scene, q, x, scenes[i])))
         if not periodic and math.isfinite(g[-1]) and g[-1] == 0.0:
             roots.append(Root(xs[-1], fs[-1], "crossing", scenes[-1]))
         words = "" if roots else _never(q, xs, fs, periodic, span, scene)

@@ -15,7 +15,7 @@ from .schema import Key, Table
 #: modules that declare scene tables (a module that does not exist yet is skipped)
 MODULES = ("polygons.scene", "polygons.topology", "polygons.options", "polygons.loads",
            "polygons.pins", "polygons.exam_table", "polygons.contacts",
-           "polygons.question_table", "polygons.cam_profiles")
+           "polygons.question_table", "polygons.cam_profile_table")
 REFERENCE = "docs/scene-reference.md"
 CONTACT_OUTPUTS = "docs/contact-outputs.md"
 JSON_SCHEMA = "polygons/scene.schema.json"

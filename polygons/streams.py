@@ -136,11 +136,14 @@ def _undefine_chunk(res: dict, mask: np.ndarray) -> None:
 
 class Extremes:
     """Summaries computed on the stream: for every quantity ``key`` fed to :meth:`add`, the
-    largest magnitude and the input where it occurs (NaN positions skipped), plus the smallest
+    largest magnitude and the input where it occurs and the smallest magnitude (NaN positions
+    skipped), plus the smallest
     construction angle and the count of positions that could not be assembled."""
 
     def __init__(self):
         self.max: dict[str, tuple[float, float]] = {}     # key -> (|value|, input)
+        self.least: dict[str, float] = {}                # key -> the smallest |value|
+        self.at_travel: dict[str, tuple[float, float]] = {}   # slider -> inputs of its ends
         self.min_angle = (math.inf, math.nan)
         self.bad = 0
         self.n = 0
@@ -152,6 +155,7 @@ class Extremes:
         i = int(np.nanargmax(v))
         if key not in self.max or v[i] > self.max[key][0]:
             self.max[key] = (float(v[i]), float(xs[i]))
+        self.least[key] = min(self.least.get(key, math.inf), float(np.nanmin(v)))
 
     def add_chunk(self, xs, res) -> None:
         """Every point's |v|, |a|, every link's |ω|, |α|, every slide's rates and travel."""
@@ -174,6 +178,13 @@ class Extremes:
                 self.add(f"{tag}:{lab}", v, xs)
         for lab, s in res["travel"].items():
             lo, hi = self.max.get(f"travel:{lab}", (math.inf, -math.inf))
-            with np.errstate(invalid="ignore"):
-                self.max[f"travel:{lab}"] = (min(lo, float(np.nanmin(s))),
-                                             max(hi, float(np.nanmax(s))))
+            at_lo, at_hi = self.at_travel.get(lab, (math.nan, math.nan))
+            s = np.broadcast_to(s, xs.shape)
+            if np.isfinite(s).any():
+                i, j = int(np.nanargmin(s)), int(np.nanargmax(s))
+                if s[i] < lo:
+                    lo, at_lo = float(s[i]), float(xs[i])
+                if s[j] > hi:
+                    hi, at_hi = float(s[j]), float(xs[j])
+            self.max[f"travel:{lab}"] = (lo, hi)
+            self.at_travel[lab] = (at_lo, at_hi)

@@ -571,7 +571,7 @@ def test_the_tangent_flank_case_is_the_books_closed_form():
     case = ROOT / "cases" / "cam-profile-tangent-flank.toml"
     w, p, beta = 180 * 2 * math.pi / 60, 0.084, math.pi / 4
     d = (0.060 - 0.012) / math.cos(beta)
-    th = math.radians(74.74488) - beta
+    th = math.atan(48 / 84)             # when = "leaves the straight flank": the edge itself
     c = math.cos(th)
     want = {"y(R)": p / c * 1e3, "v(R)": w * p * math.sin(th) / c ** 2,
             "a(R)": w * w * p * (2 - c * c) / c ** 3}
@@ -598,7 +598,8 @@ def test_the_tangent_flank_case_is_the_books_closed_form():
         assert list(fd.values()) == pytest.approx([value] * 2, rel=1e-9)
         c = conditions.check(fd)
         assert c.exact_ok and c.value_ok
-        assert "dwells on the base circle" in fd.words      # no value there: said
+        assert "dwells on the base circle" in fd.words      # no value there: said,
+        assert "from 135 … 45 deg" in fd.words              # its edges exact, not samples
     import tomllib
     data = tomllib.loads(case.read_text(encoding="utf-8"))
     # the cam's torque over the turn against a 80 N spring load and a 1.5 kg follower: the
@@ -621,3 +622,80 @@ def test_the_tangent_flank_case_is_the_books_closed_form():
                                                 "condition": "max", "unit": "deg"}]}
         with pytest.raises(SceneError, match=words):
             conditions.answer_all(parse_scene(bad, file=str(case)))
+
+
+def test_the_displacement_diagrams_summary_is_exact_not_the_nearest_sample():
+    """The summary's greatest |v| and |a| (and the lift) are the extremes themselves, refined
+    between samples (cam_diagram.extremes): on Khurmi's tangent cam the greatest speed is at
+    the flanks' ends, 74.744881…° and 105.255118…°, 1.0420798510656863 m/s (the case's
+    [[questions]] exact, the book's closed form) — the 1°-sampled diagram's best is 1.0222 m/s
+    at 105°; the greatest |a| 84.3168059297373 m/s² there; the lift the profile's.  The parts'
+    edges likewise, however coarse the diagram."""
+    from polygons import cam_diagram
+    scene = load_scene(str(ROOT / "cases" / "cam-profile-tangent-flank.toml"))
+    rows = cam_diagram.diagram(scene, 36)
+    v = cam_diagram.extremes(scene, rows, "v")
+    assert [math.degrees(r.angle) for r in v] == pytest.approx(
+        [74.74488129694221, 105.25511870305779], abs=1e-7)
+    assert all(abs(r.v) == pytest.approx(1.0420798510656863, rel=1e-9) for r in v)
+    a = cam_diagram.extremes(scene, rows, "a")
+    assert abs(a[0].a) == pytest.approx(84.3168059297373, rel=1e-9)
+    top, = cam_diagram.extremes(scene, rows, "s", +1)
+    low = cam_diagram.extremes(scene, rows, "s", -1)[0]
+    assert (top.s - low.s) == pytest.approx(0.019882250993908557, rel=1e-12)
+    edges = [math.degrees(e) for p in cam_diagram.parts(scene) for e in p[1:3]]
+    assert edges == pytest.approx([0, 45, 45, 74.74488129694221, 74.74488129694221,
+                                   105.25511870305779, 105.25511870305779, 135, 135, 360],
+                                  abs=1e-9)
+
+
+@pytest.mark.parametrize("when, sense, deg", [
+    ("leaves the base circle", "CCW", 45.0),
+    ("reaches the nose", "CCW", 74.74488129694221),
+    ("leaves the straight flank", "CCW", 74.74488129694221),
+    ("leaves the nose", "CCW", 105.25511870305779),
+    ("leaves the flank on the return", "CCW", 135.0),
+    ("reaches the base circle on the return", "CCW", 135.0),
+    ("leaves the straight flank", "CW", 105.25511870305779),   # turning the other way
+])
+def test_a_cams_instant_stated_by_its_event(when, sense, deg):
+    """[cam_profiles.R] when = "…": the nose axis at the event (module cam_events), the
+    edge to the last bit and the event's own part in contact (leaving a part: still on it;
+    reaching one: on it already; the base circle, where the follower rests: the moving
+    part's side)."""
+    from polygons.cam_profiles import contact, stated
+    text = (ROOT / "cases" / "cam-profile-tangent-flank.toml").read_text()
+    text = text.replace('when = "leaves the straight flank"', f'when = "{when}"')
+    text = text.replace('sense = "CCW"', f'sense = "{sense}"')
+    data = parse_toml(text, "t.toml")
+    scene = parse_scene(data, file="t.toml")
+    from polygons.cam_diagram import nose_axis
+    axis = nose_axis(scene)
+    assert math.degrees(axis) % 360 == pytest.approx(deg, abs=1e-9)
+    label, table, prof, fol, *_ = stated(data, "t.toml")
+    part = contact(prof, fol, axis).part
+    verb, _, rest = when.partition(" the ")
+    named = rest.replace(" on the return", "")
+    later = axis + (1e-9 if sense == "CCW" else -1e-9)
+    if named == "base circle":     # at rest there: the moving part's side of the edge
+        assert part != named and (contact(prof, fol, later).part == named) == (verb != "leaves")
+    elif verb == "leaves":
+        assert named in part and named not in contact(prof, fol, later).part
+    else:
+        assert named in part
+
+
+def test_a_cams_when_refused_in_one_line():
+    text = (ROOT / "cases" / "cam-profile-tangent-flank.toml").read_text()
+    data = parse_toml(text.replace('when = "leaves the straight flank"',
+                                   'when = "passes the nose"'), "t.toml")
+    with pytest.raises(SceneError, match="expected 'leaves' or 'reaches'"):
+        parse_scene(data, file="t.toml")
+    data = parse_toml(text.replace('[driver]', '[driver]\nangle = "70 deg"'), "t.toml")
+    with pytest.raises(SceneError, match="angle or the cam's when, not both"):
+        parse_scene(data, file="t.toml")
+    arc = parse_toml((ROOT / "cases" / "cam-profile-circular-arc.toml").read_text(), "t.toml")
+    arc["driver"].pop("angle")
+    arc["cam_profiles"]["R"]["when"] = "leaves the straight flank"
+    with pytest.raises(SceneError, match="never leaves the straight flank"):
+        parse_scene(arc, file="t.toml")

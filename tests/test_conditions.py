@@ -267,3 +267,15 @@ def test_a_question_on_a_cam_is_refused_in_words():
                           "unit": "deg"}]
     with pytest.raises(SceneError, match="at this instant only"):
         conditions.answer_all(parse_scene(data, file=str(path)))
+
+
+def test_a_crossing_says_the_value_asked_not_its_rounding_noise():
+    """The piston's acceleration changes sign where its speed is greatest: the root's value
+    is 0 (the residual left by Brent's method, ~1e-12 m/s², is the construction's rounding,
+    not a number to print), and the gudgeon pin's load reverses at 0 N."""
+    from polygons.conditions import answer_all, report_lines
+    scene = load_scene(str(ROOT / "cases" / "question-engine-conditions.toml"))
+    found = answer_all(scene)
+    crossings = [r for f in found for r in f.roots if r.kind == "crossing"]
+    assert crossings and all(r.value == 0.0 for r in crossings)
+    assert not any("e-1" in line for line in report_lines(found))

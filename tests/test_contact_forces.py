@@ -408,16 +408,20 @@ g = "9.81 m/s^2"
 def test_turning_moment_of_a_weight_on_a_crank_is_m_g_r_cos_theta():
     """A point mass at the crank's tip at constant ω: its inertia force is centripetal
     (through O), so T(θ) = m g r cos θ exactly, the mean is 0 and E(θ) = m g r sin θ + c:
-    ΔE = 2 m g r (to the trapezoids' O(1/n²))."""
+    ΔE = 2 m g r, greatest at 90°, least at 270°, T greatest m g r at 0° — exactly (the
+    quadrature's, not the samples': 20 of them)."""
     from polygons.forces.analysis import load_model
     from polygons.forces.cycle import turning_moment
     scene = _scene(_crank_under_gravity())
-    cy = turning_moment(load_model(scene), scene, 720)
+    cy = turning_moment(load_model(scene), scene, 20)
     mgr = 5 * 9.81 * 0.2
     assert np.allclose(cy.torque, mgr * np.cos(cy.theta), rtol=0, atol=1e-9 * mgr)
     assert cy.mean == 0.0
-    assert abs(cy.fluctuation - 2 * mgr) < 1e-4 * mgr
-    assert math.degrees(cy.at_max) % 360 == pytest.approx(90.0, abs=0.5)
+    assert cy.fluctuation == pytest.approx(2 * mgr, rel=1e-10)
+    assert math.degrees(cy.at_max) % 360 == pytest.approx(90.0, abs=1e-7)
+    assert math.degrees(cy.at_min) % 360 == pytest.approx(270.0, abs=1e-7)
+    assert cy.max_torque[0] == pytest.approx(mgr, rel=1e-12)
+    assert cy.min_torque[0] == pytest.approx(-mgr, rel=1e-12)
     assert cy.vw_error < 1e-9 * mgr
     assert cy.flywheel_inertia(0.02) == pytest.approx(cy.fluctuation / (100 * 0.02))
 
@@ -517,7 +521,7 @@ def test_a_resisting_cut_does_the_stroke_s_work_each_turn():
 
 def test_the_handout_s_turning_moment_section(tmp_path):
     """[handout] turning_moment = true: the plot (an inline SVG) and the numbers of the
-    diagram over 360 angles; refused in one line, naming the key, where it cannot be drawn."""
+    diagram (its ΔE the same from 12 samples as from the handout's 72); refused in one line, naming the key, where it cannot be drawn."""
     from polygons.cli.handout import build
     from polygons.forces.analysis import load_model
     from polygons.forces.cycle import turning_moment
@@ -529,7 +533,7 @@ def test_the_handout_s_turning_moment_section(tmp_path):
     sec = re.search(r'<section id="turning-moment".*?</section>', key, re.S).group(0)
     assert "<svg" in sec and "maximum fluctuation of energy ΔE" in sec
     scene = load_scene(str(path))
-    cy = turning_moment(load_model(scene), scene, 360)
+    cy = turning_moment(load_model(scene), scene, 12, table=False)   # the same numbers
     assert f"{cy.fluctuation:.6g} J".replace("-", "−") in sec
     osc = tmp_path / "o.toml"
     osc.write_text((CASES / "forces-oscillating-cylinder.toml").read_text()

@@ -15,7 +15,8 @@ from polygons.dyads.primitives import (PRIMITIVES, AlongLink, CircleCircle, Circ
                                        Constructed, FixedLine, Guarded, LeverLine, Length,
                                        LineLine, LinesMeet, PinInSlot, Prescribed, RigidImage, RimPoint,
                                        Rotation, SlotUnstated, Translation, WheelRim,
-                                       AssurPoint, PlateShape, Then, TriadClosure)
+                                       AssurPoint, CornerFrame, PlateShape, Then, TriadClosure,
+                                       TriadSliderClosure)
 from polygons.dyads.numeric import Stated
 
 class _Scene(NS):
@@ -45,13 +46,23 @@ def _triad_links():
     SCENE.links.update(XC=NS(length=L), PX_=NS(length=float(np.hypot(*(B - POS["P"])))),
                        QC=NS(length=float(np.hypot(*(C - POS["Q"])))),
                        AY=NS(length=float(np.hypot(*(X - POS["A"])))))
-    SCENE.points["Y"] = NS(along=None, fraction=0.4, left=0.15)
+    SCENE.points["Y"] = NS(along=None, fraction=0.4, left=0.15, label="Y")
+    SCENE.links["XC"].a, SCENE.links["XC"].b = "X", "C"
+    SCENE.sliders["Y"] = NS(through=(float(X[0]) - 0.3, float(X[1]) - 0.1),
+                            direction=(0.3 / math.hypot(0.3, 0.1), 0.1 / math.hypot(0.3, 0.1)))
 
 
 _triad_links()
 TRIAD = TriadClosure(("X", "C", "Y"), ("P", "Q", "A"),
                      (Length("PX_"), Length("QC"), Length("AY")), PlateShape("Y", ("XC",)),
                      ("X#bx", "X#by", "X#xx", "X#xy"))
+
+
+#: the triad with a block: corners X, C on links to P, Q; the plate's point Y a block on the
+#: guide through the pose's Y
+SLIDER_TRIAD = TriadSliderClosure(("X", "C", "Y"), ("P", "Q"), (Length("PX_"), Length("QC")),
+                                  FixedLine("Y"), CornerFrame("X", "C", "Y", ("XC",)),
+                                  ("X#bx", "X#by", "X#xx", "X#xy"))
 
 
 def generated(prim, sigma=1.0, x=0.7, label=None):
@@ -83,7 +94,9 @@ CASES = [
             SlotUnstated("X")),
     PinInSlot("X", "A", "P", "F"),
     TRIAD,
+    SLIDER_TRIAD,
     AssurPoint("X", "P", "A", "Q", "D"),
+    AssurPoint("X", "P", "A", "D", "D", normal=FixedLine("X")),
     Then((CircleCircle("X", "P", Length("PX"), "Q", Length("QX")),
           AssurPoint("X1", "P", "X", "Q", "A"))),
 ]
@@ -236,12 +249,36 @@ def test_the_triads_closure_and_assur_point_meet_their_equations():
         assert abs(_cross(B - P, S - P)) <= 1e-12 and abs(_cross(C - Q, S - Q)) <= 1e-12
 
 
+def test_the_triad_with_a_blocks_closure_and_assur_point_meet_their_equations():
+    """TriadSliderClosure: |PX|, |QC| their links' lengths, Y the plate's point and on its
+    guide (each closure of every()), the one nearest its own corners found again;
+    AssurPoint with ``normal``: S on PX produced and on the guide's normal at Y."""
+    P, Q = POS["P"], POS["Q"]
+    g = SCENE.sliders["Y"]
+    closures = SLIDER_TRIAD.every(SCENE, POS)
+    assert len(closures) >= 2
+    for c in closures:
+        B, C, X = c["X"], c["C"], c["Y"]
+        for a, b, link in ((P, B, "PX_"), (Q, C, "QC"), (B, C, "XC")):
+            assert math.isclose(np.hypot(*(b - a)), SCENE.links[link].length, abs_tol=1e-12)
+        u = (C - B) / np.hypot(*(C - B))
+        assert math.isclose((X - B) @ u, 0.4 * SCENE.links["XC"].length, abs_tol=1e-12)
+        assert math.isclose(_cross(u, X - B), 0.15, abs_tol=1e-12)
+        assert abs(_cross(g.direction, X - np.array(g.through))) <= 1e-12
+        ref = dict(zip(SLIDER_TRIAD.keys, (B[0], B[1], X[0], X[1])))
+        pts, m = SLIDER_TRIAD.locate(SCENE, POS, ref, 0.0)
+        assert m > 0 and max(np.max(np.abs(pts[k] - c[k])) for k in "XCY") <= 1e-12
+        S = AssurPoint("S", "P", "X", "Y", "Y", normal=FixedLine("Y")).locate(
+            SCENE, {**POS, **c}, None, 0.0)[0]["S"]
+        assert abs(_cross(B - P, S - P)) <= 1e-12 and abs((S - X) @ g.direction) <= 1e-12
+
+
 def test_a_stated_primitive_over_a_sweep_is_itself_at_each_position():
     """Over (2, N) positions the same statement runs on arrays (numpy's names, the closure
     followed by triad_cols): each column its one-position value."""
     xs = np.linspace(-0.02, 0.02, 5)
     pos = {k: v.reshape(2, 1) + np.array([xs, 0.5 * xs]) for k, v in POS.items()}
-    for prim in CASES[-3:]:
+    for prim in (TRIAD, SLIDER_TRIAD, *CASES[-3:]):
         sig = 1.0
         pts, _ = prim.locate(SCENE, pos, sig, 0.3)
         for i in range(len(xs)):

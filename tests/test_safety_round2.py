@@ -134,7 +134,7 @@ def test_a_sweep_whose_every_position_is_a_toggle_is_refused(tmp_path):
 
 def test_the_sweep_summary_takes_no_maximum_of_nothing():
     from polygons.cli.sweep import _peak
-    assert "no position" in _peak(None, np.full(5, np.nan), 1.0, "m/s")
+    assert "no position" in _peak(None, lambda sw: np.full(5, np.nan), 1.0, "m/s")
 
 
 # ---------------------------------------------------------------- I, item 5: solve --points

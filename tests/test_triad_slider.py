@@ -134,7 +134,7 @@ def test_at_a_parallel_pair_s_is_taken_on_a_link_and_the_guides_normal():
     sol = solve(mech.at(x))
     d = next(g for g in sol.plan.dyads if getattr(g, "many_closures", False))
     assert d.via == 2
-    assert any("S is taken where DC and the normal to the guide of X at X meet" in w
+    assert any("S is taken where the lines DC and the normal to the guide of X at X meet" in w
                for _, w in sol.placement.branches)
     assert d.assur_sine(sol.placement.points, 0) < 1e-6
     out = domain.check(mech, x, 1e-3, "at a parallel pair")

@@ -8,7 +8,7 @@ import math
 import sys
 from pathlib import Path
 
-from ..cam_diagram import MAX_DIAGRAM_STEPS, diagram
+from ..cam_diagram import MAX_DIAGRAM_STEPS, diagram, extremes, parts
 from ..cam_profiles import TABLE, stated
 from ..errors import SceneError
 from ..steps import number
@@ -39,7 +39,7 @@ def run_cam(args, scene) -> int:
                                                      for g, p in scene.ground.items()}},
                                          scene.file)
     osc = fol.oscillating
-    dwell = min(r.s for r in rows) if not osc else None
+    dwell = extremes(scene, rows, "s", -1)[0].s if not osc else None
     out = Path(args.out)
     stem = out / f"{Path(args.scene).stem}-cam"
     stem.parent.mkdir(parents=True, exist_ok=True)
@@ -99,27 +99,22 @@ def _plot(scene, rows, osc, dwell, stem, formats):
 def _summary(scene, rows, osc, dwell, label, table, written) -> str:
     lines = [f"{Path(scene.file).name}: displacement diagram of the follower {label} over a "
              f"turn ({len(rows)} cam angles; nose axis angle CCW from +x)"]
-    runs = []
-    for r in rows:
-        if runs and runs[-1][0] == r.part:
-            runs[-1][2] = r.angle
-        else:
-            runs.append([r.part, r.angle, r.angle, r.by])
-    for part, a0, a1, by in runs:
-        lines.append(f"  {part:15s} {number(math.degrees(a0), 4):>8s}° … "
-                     f"{number(math.degrees(a1), 4)}°  ({by})")
+    for part, a0, a1, by in parts(scene):
+        lines.append(f"  {part:15s} {math.degrees(a0):>9.6g}° … {math.degrees(a1):.6g}°  ({by})")
+    def at(found) -> str:
+        return " and ".join(f"{math.degrees(r.angle):.6g}° ({r.part})" for r in found)
+
     if osc:
-        lo, hi = min(r.s for r in rows), max(r.s for r in rows)
+        lo, hi = extremes(scene, rows, "s", -1)[0].s, extremes(scene, rows, "s", +1)[0].s
         lines.append(f"  arm swing: {number(math.degrees(hi - lo))}°")
         unit_v, unit_a, name_v, name_a = "rad/s", "rad/s²", "ω", "α"
     else:
-        top = max(rows, key=lambda r: r.s)
-        lines.append(f"  lift: {number((top.s - dwell) * 1e3)} mm (at "
-                     f"{number(math.degrees(top.angle), 4)}°)")
+        top = extremes(scene, rows, "s", +1)
+        lines.append(f"  lift: {number((top[0].s - dwell) * 1e3)} mm at {at(top)}")
         unit_v, unit_a, name_v, name_a = "m/s", "m/s²", "v", "a"
     for name, key, unit in ((name_v, "v", unit_v), (name_a, "a", unit_a)):
-        big = max(rows, key=lambda r: abs(getattr(r, key)))
-        lines.append(f"  greatest |{name}|: {number(abs(getattr(big, key)))} {unit} at "
-                     f"{number(math.degrees(big.angle), 4)}° ({big.part})")
+        big = extremes(scene, rows, key)
+        lines.append(f"  greatest |{name}|: {number(abs(getattr(big[0], key)))} {unit} at "
+                     f"{at(big)}")
     lines += [f"wrote {p}" for p in written]
     return "\n".join(lines) + "\n"

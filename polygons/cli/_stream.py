@@ -18,6 +18,7 @@ from ..errors import UnknownLabelError, suggest
 from ..scene import Crank, Scene
 from ..streams import Extremes, evaluate_compiled, plan_stream, stream
 from ..sweep import _segments, default_points, sweep
+from ..sweep_extremes import refine
 from ..steps import number
 
 PLOT_POINTS = 4000
@@ -145,8 +146,59 @@ def _columns(st, xs, res, points, links):
 def _at(st, x: float) -> str:
     if st.prog.input_kind == "crank":
         deg = math.degrees(x)
-        return f"θ = {deg % 360.0 if st.full_cycle else deg:.4g}°"
+        return f"θ = {deg % 360.0 if st.full_cycle else deg:.6g}°"
     return f"s = {x * 1e3:.6g} mm"
+
+
+def _length(vec) -> np.ndarray:
+    return np.hypot(vec[:, 0], vec[:, 1])
+
+
+#: what a key of :class:`~polygons.streams.Extremes` measures, over a sweep
+_MEASURES = {"v": lambda s, k: _length(s.velocity(k)),
+             "a": lambda s, k: _length(s.acceleration(k)),
+             "v_s": lambda s, k: np.abs(s.slide_v[k]), "a_s": lambda s, k: np.abs(s.slide_a[k]),
+             "omega": lambda s, k: np.abs(s.omega[k]), "alpha": lambda s, k: np.abs(s.alpha[k]),
+             "travel": lambda s, k: s.travel[k], "-travel": lambda s, k: -s.travel[k]}
+
+
+def _refined(st, key: str, start: tuple[float, float]) -> tuple[float, float]:
+    """The stream's greatest of ``key`` (|value|, input), refined between the positions either
+    side of it as the whole-sweep summary refines its samples
+    (:func:`polygons.sweep_extremes.refine`; no toggle crossed)."""
+    tag, _, lab = key.partition(":")
+    if key == "angle":
+        fn = (lambda s: -s.angle_deg)
+    else:
+        fn = (lambda s, m=_MEASURES[tag], k=lab: m(s, k))
+    value, x = start
+    lo, hi = st.range
+    if st.full_cycle:
+        step = 2.0 * math.pi / st.n
+        a, b = x - step, x + step
+    else:
+        step = (hi - lo) / st.n
+        a, b = max(x - step, lo + 0.5 * step), min(x + step, hi - 0.5 * step)
+    for lim in st.limits:
+        if lim.kind == "toggle" and a < lim.input < x:
+            a = x
+        if lim.kind == "toggle" and x < lim.input < b:
+            b = x
+    if st.full_cycle and any(lim.kind == "toggle" for lim in st.limits):
+        a, b = max(a, 0.0), min(b, 2.0 * math.pi - step)
+    return refine(st.prog.scene, a, b, fn, (value, x))
+
+
+def _peak(st, ext: Extremes, key: str, f: float, unit: str) -> str:
+    """As the whole sweep's: the greatest to full precision, or the same everywhere."""
+    if key not in ext.max:
+        return "— (no position of the sweep solves it)"
+    value, x = ext.max[key]
+    low = ext.least.get(key, -math.inf)
+    if value - low <= 1e-9 * abs(value):
+        return f"{number(value * f)} {unit} (the same at every position)"
+    value, x = _refined(st, key, (value, x))
+    return f"{number(value * f)} {unit} at {_at(st, x)}"
 
 
 def _summary(st, ext: Extremes, points, links, unit, units, written, k_plot) -> str:
@@ -171,12 +223,15 @@ def _summary(st, ext: Extremes, points, links, unit, units, written, k_plot) -> 
     if ext.bad:
         out.append(f"warning: {ext.bad} of {ext.n} positions cannot be assembled (NaN)")
     if math.isfinite(ext.min_angle[0]):
-        out.append(f"conditioning: smallest construction angle {ext.min_angle[0]:.4g}° at "
-                   f"{_at(st, ext.min_angle[1])}")
+        worst, x = _refined(st, "angle", (-ext.min_angle[0], ext.min_angle[1]))
+        out.append(f"conditioning: smallest construction angle {-worst:.4g}° at "
+                   f"{_at(st, x)}")
     out.append("")
     for lab in points:
         if f"travel:{lab}" in ext.max:
             s_lo, s_hi = ext.max[f"travel:{lab}"]
+            s_hi = _refined(st, f"travel:{lab}", (s_hi, ext.at_travel[lab][1]))[0]
+            s_lo = -_refined(st, f"-travel:{lab}", (-s_lo, ext.at_travel[lab][0]))[0]
             out.append(f"point {lab}: travel {number(s_lo * f)} … {number(s_hi * f)} {lu} "
                        f"(stroke {number((s_hi - s_lo) * f)} {lu})")
         else:
@@ -184,13 +239,10 @@ def _summary(st, ext: Extremes, points, links, unit, units, written, k_plot) -> 
         for tag, u in (("v", vu), ("a", au)):
             key = f"{tag}_s:{lab}" if f"{tag}_s:{lab}" in ext.max else f"{tag}:{lab}"
             if key in ext.max:
-                val, x = ext.max[key]
-                out.append(f"  max |{tag}| = {number(val * f)} {u} at {_at(st, x)}")
+                out.append(f"  max |{tag}| = {_peak(st, ext, key, f, u)}")
     for name in links:
-        w, xw = ext.max.get(f"omega:{name}", (math.nan, math.nan))
-        a, xa = ext.max.get(f"alpha:{name}", (math.nan, math.nan))
-        out.append(f"link {name}: max |ω| = {number(w)} rad/s at {_at(st, xw)}; max |α| = "
-                   f"{number(a)} rad/s² at {_at(st, xa)}")
+        out.append(f"link {name}: max |ω| = {_peak(st, ext, f'omega:{name}', 1.0, 'rad/s')}; "
+                   f"max |α| = {_peak(st, ext, f'alpha:{name}', 1.0, 'rad/s²')}")
     out.append("")
     if k_plot:
         out.append(f"plots drawn from every {k_plot}th position")

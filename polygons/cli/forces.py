@@ -552,7 +552,7 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
 
 def _run_cycle(args, scene) -> int:
     """``--cycle N``: the turning-moment diagram (polygons.forces.cycle)."""
-    from ..forces.cycle import (MAX_CYCLE, check_cycle_budget, check_fluctuation,
+    from ..forces.cycle import (MAX_CYCLE, check_cycle_budget, check_fluctuation, table_rows,
                                  turning_moment)
     from ..forces.analysis import load_model
     from ..units import parse_quantity
@@ -570,8 +570,19 @@ def _run_cycle(args, scene) -> int:
     cy = turning_moment(model, scene, args.cycle)
     inertia = None if cs is None else cy.flywheel_inertia(cs)   # refused before any output
     if args.json:
+        rows = list(table_rows(len(cy.theta)))
         text = json_text({"theta_deg": [math.degrees(t) for t in cy.theta],
-                          "torque": cy.torque.tolist(), "energy": cy.energy.tolist(),
+                          "torque": cy.torque.tolist(),
+                          "energy_sampled": cy.energy.tolist(),
+                          "rows": [{"theta_deg": math.degrees(cy.theta[i]) % 360.0,
+                                    "torque": float(cy.torque[i]), "energy": e}
+                                   for i, e in zip(rows, cy.row_energy)],
+                          "crossings": [{"theta_deg": math.degrees(t) % 360.0, "energy": e}
+                                        for t, e in cy.crossings],
+                          "max_torque": cy.max_torque[0],
+                          "max_torque_at_deg": math.degrees(cy.max_torque[1]) % 360.0,
+                          "min_torque": cy.min_torque[0],
+                          "min_torque_at_deg": math.degrees(cy.min_torque[1]) % 360.0,
                           "mean_torque": cy.mean, "max_fluctuation_of_energy": cy.fluctuation,
                           "energy_max_at_deg": math.degrees(cy.at_max) % 360.0,
                           "energy_min_at_deg": math.degrees(cy.at_min) % 360.0,
@@ -592,7 +603,8 @@ def _run_cycle(args, scene) -> int:
 
 def cycle_table(scene, cy, cs=None) -> str:
     """The turning-moment diagram in text: its summary, then T and E at (up to) 36 angles."""
-    hi, lo = int(np.argmax(cy.torque)), int(np.argmin(cy.torque))
+    from ..forces.cycle import table_rows
+    (t_hi, at_hi), (t_lo, at_lo) = cy.max_torque, cy.min_torque
 
     def deg(t):
         return f"{round(math.degrees(t) % 360.0, 9) % 360.0:.6g}°"
@@ -600,8 +612,8 @@ def cycle_table(scene, cy, cs=None) -> str:
              f"  input torque on {scene.driver.link} at {len(cy.theta)} angles round the "
              f"turn (kinetostatic, uniform ω = {abs(scene.driver.omega):.6g} rad/s "
              f"{_sense(scene.driver.omega)}, α = 0; CCW +)",
-             f"  maximum {cy.torque[hi]:.6g} N m at {deg(cy.theta[hi])}; minimum "
-             f"{cy.torque[lo]:.6g} N m at {deg(cy.theta[lo])}; mean {cy.mean:.6g} N m",
+             f"  maximum {t_hi:.6g} N m at {deg(at_hi)}; minimum {t_lo:.6g} N m at "
+             f"{deg(at_lo)}; mean {cy.mean:.6g} N m",
              f"  maximum fluctuation of energy ΔE = {cy.fluctuation:.6g} J (E greatest at "
              f"{deg(cy.at_max)}, least at {deg(cy.at_min)})",
              f"  virtual work equals Newton–Euler at every angle (largest difference "
@@ -610,8 +622,10 @@ def cycle_table(scene, cy, cs=None) -> str:
         lines.append(f"  flywheel for a coefficient of fluctuation of speed {cs:g}: "
                      f"I = ΔE / (ω² C_s) = {cy.flywheel_inertia(cs):.6g} kg m²")
     lines += [f"  warning: {w}" for w in cy.warnings]
+    if cy.crossings:
+        lines.append("  where T = T_m (the ends of the areas above and below the mean): "
+                     + "; ".join(f"{deg(t)} E = {e:.6g} J" for t, e in cy.crossings))
     lines.append(f"  {'θ':>10} {'T N m':>14} {'E J':>14}")
-    every = max(1, len(cy.theta) // 36)
-    for i in range(0, len(cy.theta), every):
-        lines.append(f"  {deg(cy.theta[i]):>10} {cy.torque[i]:>14.6g} {cy.energy[i]:>14.6g}")
+    for i, e in zip(table_rows(len(cy.theta)), cy.row_energy):
+        lines.append(f"  {deg(cy.theta[i]):>10} {cy.torque[i]:>14.6g} {e:>14.6g}")
     return "\n".join(lines) + "\n"

@@ -25,6 +25,7 @@ from ..scene import Crank, Scene, parse_scene, parse_toml, read_scene_text
 from ..steps import number
 from ..dyads.base import size_of
 from ..sweep import Sweep, default_points, harmonic, sweep
+from ..sweep_extremes import greatest
 
 #: above this many positions the summary draws a progress bar (on a terminal)
 PROGRESS_FROM = 100_000
@@ -472,9 +473,9 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
             f"{lab} ({_branch_words(scene, lab)})" for lab in sw.branches))
     good = np.isfinite(sw.angle_deg)
     if good.any():
-        i = int(np.nanargmin(sw.angle_deg))
-        out.append(f"conditioning: smallest construction angle {sw.angle_deg[i]:.4g}° at "
-                   f"{_at(sw, i)}")
+        worst, x = greatest(sw, lambda s: -s.angle_deg)
+        out.append(f"conditioning: smallest construction angle {-worst:.4g}° at "
+                   f"{_where(sw, x)}")
     for w in sw.warnings:
         out.append(f"warning: {w}")
     out.append("")
@@ -482,19 +483,22 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
         if lab in sw.travel and lab in sw.slide_v:
             s, v, a = sw.travel[lab], sw.slide_v[lab], sw.slide_a[lab]
             e = scene.model.guide[lab].line.angle
-            travel = (f"{number(np.nanmin(s) * f)} … {number(np.nanmax(s) * f)} {lu} (stroke "
-                      f"{number((np.nanmax(s) - np.nanmin(s)) * f)} {lu})"
-                      if np.isfinite(s).any() else "— (no position of the sweep solves it)")
+            if np.isfinite(s).any():    # the ends of the travel, refined between samples
+                s_hi = greatest(sw, lambda w, k=lab: w.travel[k])[0]
+                s_lo = -greatest(sw, lambda w, k=lab: -w.travel[k])[0]
+                travel = (f"{number(s_lo * f)} … {number(s_hi * f)} {lu} (stroke "
+                          f"{number((s_hi - s_lo) * f)} {lu})")
+            else:
+                travel = "— (no position of the sweep solves it)"
             out.append(f"point {lab} (along its guide at {math.degrees(e):.4g}°): travel "
                        f"{travel}")
-            out.append(f"  max |v| = {_peak(sw, np.abs(v), f, vu)}")
-            out.append(f"  max |a| = {_peak(sw, np.abs(a), f, au)}")
+            out.append(f"  max |v| = {_peak(sw, lambda s, k=lab: np.abs(s.slide_v[k]), f, vu)}")
+            out.append(f"  max |a| = {_peak(sw, lambda s, k=lab: np.abs(s.slide_a[k]), f, au)}")
         else:
-            V, A = sw.velocity(lab), sw.acceleration(lab)
-            vm, am = np.hypot(V[:, 0], V[:, 1]), np.hypot(A[:, 0], A[:, 1])
             out.append(f"point {lab}:")
-            out.append(f"  max |v| = {_peak(sw, vm, f, vu)}")
-            out.append(f"  max |a| = {_peak(sw, am, f, au)}")
+            out.append(f"  max |v| = {_peak(sw, lambda s, k=lab: _length(s.velocity(k)), f, vu)}")
+            out.append(f"  max |a| = "
+                       f"{_peak(sw, lambda s, k=lab: _length(s.acceleration(k)), f, au)}")
         if lab in shm and np.isfinite(sw.slide_a[lab]).any():
             h = shm[lab]
             a = sw.slide_a[lab]
@@ -511,21 +515,40 @@ def summary(sw: Sweep, points, links, shm, unit, written) -> str:
                        f"max |a|), max |Δv| = {number(dv * f)} {vu}, max |Δs| = "
                        f"{number(ds * f)} {lu} (travel offset {number(h.offset * f)} {lu})")
     for name in links:
-        w, al = sw.omega[name], sw.alpha[name]
-        out.append(f"link {name}: max |ω| = {_peak(sw, np.abs(w), 1.0, 'rad/s')}; "
-                   f"max |α| = {_peak(sw, np.abs(al), 1.0, 'rad/s²')}")
+        out.append(f"link {name}: max |ω| = "
+                   f"{_peak(sw, lambda s, k=name: np.abs(s.omega[k]), 1.0, 'rad/s')}; max |α| = "
+                   f"{_peak(sw, lambda s, k=name: np.abs(s.alpha[k]), 1.0, 'rad/s²')}")
     out.append("")
     out.append("written: " + ", ".join(str(p) for p in written))
     return "\n".join(out) + "\n"
 
 
+def _length(vec) -> np.ndarray:
+    """|v| of (N, 2) vectors."""
+    return np.hypot(vec[:, 0], vec[:, 1])
+
+
 def _peak(sw, values, f: float, unit: str) -> str:
-    """'V unit at POSITION' for the largest of ``values`` (NaN where a position is not solved),
-    or words saying no position has it (never an argmax of nothing)."""
-    if not np.isfinite(values).any():
+    """'V unit at POSITION' for the greatest of ``values(sweep)`` (NaN where a position is
+    not solved) to full precision, refined between the samples
+    (:func:`polygons.sweep_extremes.greatest`); 'the same at every position' where it does
+    not change; or words saying no position has it (never an argmax of nothing)."""
+    vals = values(sw)
+    if not np.isfinite(vals).any():
         return "— (no position of the sweep solves it)"
-    i = int(np.nanargmax(values))
-    return f"{number(values[i] * f)} {unit} at {_at(sw, i)}"
+    top, low = float(np.nanmax(vals)), float(np.nanmin(vals))
+    if top - low <= 1e-9 * abs(top):
+        return f"{number(top * f)} {unit} (the same at every position)"
+    value, x = greatest(sw, values)
+    return f"{number(value * f)} {unit} at {_where(sw, x)}"
+
+
+def _where(sw: Sweep, x: float) -> str:
+    """The input ``x`` in words (θ within the turn for a full revolution)."""
+    if sw.input_kind == "crank":
+        deg = math.degrees(x)
+        return f"θ = {deg % 360.0 if sw.full_cycle else deg:.6g}°"
+    return f"s = {x * 1e3:.6g} mm"
 
 
 def _branch_words(scene: Scene, lab: str) -> str:

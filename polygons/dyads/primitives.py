@@ -53,6 +53,7 @@ from .base import (as_col, circle_circle, circle_circle_scalar, circle_line, cir
                    end_margin_cols, end_margin_scalar, size_of)
 from .numeric import Numeric, Stated
 from .triad_math import all_corners, triad_scalar
+from .triad_slider_math import all_corners as all_slider_corners, triad_slider_scalar
 
 
 # ---------------------------------------------------------------- operands
@@ -540,26 +541,119 @@ class TriadClosure(Stated):
 @dataclass(frozen=True)
 class AssurPoint(Stated):
     """S where the lines O₁P₁ and O₂P₂ produced meet (Assur's auxiliary point of a triad):
-    S = O₁ + t u, u = P₁ − O₁, w = P₂ − O₂, t = ((O₂ − O₁) × w) / (u × w); NaN where they
-    are parallel (S at infinity: a point of the construction, not a failure of the group —
-    no margin)."""
+    S = O₁ + t u, u = P₁ − O₁, w = P₂ − O₂, t = ((O₂ − O₁) × w) / (u × w); with ``normal``
+    (a block's fixed guide) the second line is the normal to that guide at P₂ instead:
+    w = (−e_y, e_x), O₂ = P₂.  NaN where they are parallel (S at infinity: a point of the
+    construction, not a failure of the group — no margin)."""
     x: str
     o1: str
     p1: str
     o2: str
     p2: str
+    normal: FixedLine | None = None
 
     def source(self, g, check=True):
         (ax, ay), (bx, by) = g.pos(self.o1), g.pos(self.p1)
-        (dx, dy), (cx, cy) = g.pos(self.o2), g.pos(self.p2)
         ux, uy = g.let("{} - {}", bx, ax), g.let("{} - {}", by, ay)
-        wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
+        if self.normal is None:
+            (dx, dy), (cx, cy) = g.pos(self.o2), g.pos(self.p2)
+            wx, wy = g.let("{} - {}", cx, dx), g.let("{} - {}", cy, dy)
+        else:           # the normal to the guide at P₂: through P₂ along (−e_y, e_x)
+            (dx, dy), (ex, ey) = g.pos(self.p2), self.normal.params(g, "direction")
+            wx, wy = g.let("-{}", ey), g.let("{} + 0.0", ex)
         den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
         safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
                      g.e("({} if {} != 0.0 else nan)", den, den))
         t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", dx, ax, wy, dy, ay, wx, safe)
         g.place(self.x, g.let("{} + {} * {}", ax, t, ux), g.let("{} + {} * {}", ay, t, uy))
         return None
+
+
+@dataclass(frozen=True)
+class CornerFrame:
+    """The plate of a triad with a block in its corners' frame, B = (0, 0): C = (L, 0),
+    X = (ξ, η) — from a link carrying a point ([points]: along or fraction · length, left)
+    or a triangle of three links (ξ = (|BC|² + |BX|² − |CX|²)/2|BC|, η = √(|BX|² − ξ²)),
+    whichever corners the plate's own link joins; ``mirror``: the triangle's image η → −η
+    is a closure too."""
+    b: str
+    c: str
+    x: str
+    links: tuple[str, ...]        # (the plate link) or (BC, BX, CX) as the scene lists them
+
+    @property
+    def mirror(self) -> bool:
+        return len(self.links) == 3
+
+    def value(self, scene) -> tuple:
+        """(L, ξ, η) (arrays in a batch)."""
+        if not self.mirror:
+            lk = scene.links[self.links[0]]
+            bp = scene.points[({self.b, self.c, self.x} - {lk.a, lk.b}).pop()]
+            along = bp.along if bp.along is not None else bp.fraction * lk.length
+            own = {lk.a: (0.0, 0.0), lk.b: (lk.length, 0.0), bp.label: (along, bp.left)}
+        else:
+            lbc, lbx, lcx = (scene.links[n].length for n in self.links)
+            first = scene.links[self.links[0]]
+            third = ({self.b, self.c, self.x} - {first.a, first.b}).pop()
+            xi = (lbc * lbc + lbx * lbx - lcx * lcx) / (2.0 * lbc)
+            own = {first.a: (0.0, 0.0), first.b: (lbc, 0.0),
+                   third: (xi, np.sqrt(np.maximum(lbx * lbx - xi * xi, 0.0)))}
+        (bx, by), (cx, cy), (xx, xy) = (own[k] for k in (self.b, self.c, self.x))
+        ux, uy = np.subtract(cx, bx), np.subtract(cy, by)
+        L = np.hypot(ux, uy)
+        ux, uy = ux / L, uy / L
+        wx, wy = np.subtract(xx, bx), np.subtract(xy, by)
+        return L, wx * ux + wy * uy, wy * ux - wx * uy
+
+    def params(self, g) -> tuple:
+        return tuple(g.param(lambda s, i=i: self.value(s)[i]) for i in range(3))
+
+
+@dataclass(frozen=True)
+class TriadSliderClosure(Stated):
+    """The corners B, C of a rigid plate (:class:`CornerFrame`) each on a link of stated
+    length to a placed point (|AB| = a, |DC| = d) and its corner X on a fixed guide
+    (:class:`FixedLine`): the closure nearest the reference corners kept under ``keys``, by
+    :func:`~polygons.dyads.triad_slider_math.triad_slider_scalar` (the real roots of a
+    polynomial of degree ≤ 6, polished by Newton; over a sweep its array twin follows the
+    closure by continuation); the margin the construction's conditioning."""
+    corners: tuple[str, str, str]              # B, C, X
+    outer: tuple[str, str]                     # A, D
+    lengths: tuple[Length, Length]             # AB, DC
+    guide: FixedLine
+    plate: CornerFrame
+    keys: tuple[str, str, str, str]            # where the reference corners are kept
+
+    @property
+    def x(self) -> str:
+        return self.corners[0]
+
+    def operands(self, g) -> tuple:
+        """(ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, ξ, η, mirror): the group's numbers, in
+        the order :mod:`~polygons.dyads.triad_slider_math` takes them."""
+        out = []
+        for o, ln in zip(self.outer, self.lengths):
+            out += [*g.pos(o), ln.param(g)]
+        through, direction = self.guide.emit(g)
+        return (*out, *through, *direction, *self.plate.params(g),
+                "1.0" if self.plate.mirror else "0.0")
+
+    def every(self, scene, pos) -> list[dict]:
+        """Every closure at the positions ``pos`` (one position): {B, C, X} each."""
+        g = Numeric(scene, pos, None, 0.0, False)
+        p = tuple(float(v) for v in self.operands(g))
+        return [dict(zip(self.corners, map(np.array, c)))
+                for c in all_slider_corners(p, size_of(scene))]
+
+    def source(self, g, check=True):
+        refs = [g.sigma(k) for k in self.keys]
+        size = g.param(lambda s: size_of(s))
+        *xy, m = g.call(triad_slider_scalar, *self.operands(g), *refs, size, n=7)
+        _check(g, m, check)
+        for k, label in enumerate(self.corners):
+            g.place(label, xy[2 * k], xy[2 * k + 1])
+        return m
 
 
 @dataclass(frozen=True)
@@ -582,7 +676,8 @@ class Then(Stated):
 
 #: every primitive (a group's ``construction`` is one of these)
 PRIMITIVES = (CircleCircle, CircleLine, Rotation, Translation, LineLine, RigidImage,
-              LinesMeet, AlongLink, RimPoint, PinInSlot, Guarded, TriadClosure, AssurPoint, Then)
+              LinesMeet, AlongLink, RimPoint, PinInSlot, Guarded, TriadClosure, TriadSliderClosure,
+              AssurPoint, Then)
 
 
 class Constructed:
@@ -601,4 +696,5 @@ class Constructed:
 __all__ = ["Length", "FixedLine", "LeverLine", "SlotUnstated", "Prescribed", "WheelRim",
            "CircleCircle", "CircleLine", "Rotation", "Translation", "LineLine", "RigidImage",
            "LinesMeet", "AlongLink", "RimPoint", "PinInSlot", "Guarded", "PlateShape",
-           "TriadClosure", "AssurPoint", "Then", "PRIMITIVES", "Constructed"]
+           "TriadClosure", "CornerFrame", "TriadSliderClosure", "AssurPoint", "Then", "PRIMITIVES",
+           "Constructed"]

@@ -95,8 +95,15 @@ class Triad:
         n = float(np.hypot(*u) * np.hypot(*w))
         return abs(float(u[0] * w[1] - u[1] * w[0])) / n if n > 0 else 0.0
 
+    def pair_words(self, via=None) -> str:
+        """The two links whose lines meet at S for ``via`` (default this group's), in words."""
+        from dataclasses import replace
+        (p1, o1, _), (p2, o2, _), _ = replace(self, via=self.via if via is None
+                                              else via).roles
+        return f"{o1}{p1} and {o2}{p2}"
+
     def for_instant(self, points):
-        """This group with S taken on the pair of links that meet best at the instant
+        """This group with S taken on the pair of lines that meet best at the instant
         ``points`` when its own pair is parallel within 1° (S at infinity is a point of the
         construction, not a singularity of the group): (group, note) — note '' if kept."""
         from dataclasses import replace
@@ -105,12 +112,10 @@ class Triad:
         best = max(range(3), key=lambda v: self.assur_sine(points, v))
         if best == self.via:
             return self, ""
-        new = replace(self, via=best)
-        (p1, o1, _), (p2, o2, _), _ = self.roles
-        (q1, r1, _), (q2, r2, _), _ = new.roles
-        return new, (f"the lines {o1}{p1} and {o2}{p2} are parallel here (the auxiliary point "
-                     f"{self.s} at infinity, not a singularity of the group): {self.s} is "
-                     f"taken where {r1}{q1} and {r2}{q2} produced meet instead")
+        return replace(self, via=best), (
+            f"the lines {self.pair_words()} are parallel here (the auxiliary point {self.s} "
+            f"at infinity, not a singularity of the group): {self.s} is taken where "
+            f"the lines {self.pair_words(best)} meet instead")
 
     @property
     def placed(self) -> tuple[str, ...]:

@@ -30,6 +30,8 @@ its mirror image η → −η is a group too.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -137,20 +139,25 @@ def real_roots(c) -> list[float]:
     return sorted(out)
 
 
-def _phi0(p):
-    """φ₀ and the polynomial: φ₀ chosen so that φ₀ + π is no closure (the leading
-    coefficient is not small), from a few trial values."""
+def choose_phi0(p, poly):
+    """φ₀ and the polynomial ``poly(p, φ₀)`` of a class-III group's closures: φ₀ chosen so
+    that φ₀ + π is no closure (the leading coefficient of the degree-6 polynomial is not
+    small), from a few trial values; None where the polynomial cannot be formed."""
     best = None
     for phi0 in (0.0, 1.0, 2.0, 3.0, 4.0, 5.0):
-        c = _quartic(p, phi0)
+        c = poly(p, phi0)
         if c is None:
             return None
-        lead = abs(c[-1]) / max(float(np.max(np.abs(c))), 1e-300) if len(c) == 7 else 0.0
+        lead = abs(c[-1]) / max(float(np.max(np.abs(c))), 1e-300) if len(c) >= 7 else 0.0
         if best is None or lead > best[0]:
             best = (lead, phi0, c)
         if lead >= 1e-3:
             break
     return best[1], best[2]
+
+
+def _phi0(p):
+    return choose_phi0(p, _quartic)
 
 
 def _b_candidates(phi, p):
@@ -378,32 +385,53 @@ def _listed(q, mirror, size):
     return out
 
 
-def _follow(q, mirror, ref_b, ref_x, size, pose=None, fallback=True, reach=None):
-    """The closure nearest the reference corners: Newton from ``pose`` (the neighbour's),
-    checked against every closure where it is ill-conditioned (:data:`_SURE`: it must be the
-    nearest); without a pose, or where Newton fails, the nearest of every closure.  With a
-    pose, a closure farther than ``reach`` (default a quarter of the size) from the reference
-    is not its continuation: None (the followed closure is gone).  Returns (corners, pose,
-    margin) or None."""
-    reach = 0.25 * size if reach is None else reach
-    if pose is not None:
-        qq = q[:11] + (pose[3],)
-        new, m = _newton(qq, pose[:3], size)
-        if new is not None:
-            B, C, X = _corners_of(qq, new, pose[3])
-            if max(math.dist(B, ref_b), math.dist(X, ref_x)) <= reach and m >= _SURE:
-                return (B, C, X), new + (pose[3],), m
-        if not fallback:
+@dataclass(frozen=True)
+class ClosureFamily:
+    """What following a class-III group's closure needs of its own geometry: ``n`` numbers
+    of the group before the plate's mirror η, ``newton(qq, (bx, by, φ), size)`` → (pose,
+    margin), ``corners(qq, (bx, by, φ))`` → (P₁, P₂, P₃) with qq = q[:n] + (η,),
+    ``listed(q, mirror, size)`` → every closure as (corners, pose), ``margin(qq, pose, size)``."""
+    n: int
+    newton: Callable
+    corners: Callable
+    listed: Callable
+    margin: Callable
+
+    def follow(self, q, mirror, ref_b, ref_x, size, pose=None, fallback=True, reach=None):
+        """The closure nearest the reference corners: Newton from ``pose`` (the
+        neighbour's), checked against every closure where it is ill-conditioned
+        (:data:`_SURE`: it must be the nearest); without a pose, or where Newton fails, the
+        nearest of every closure.  With a pose, a closure farther than ``reach`` (default a
+        quarter of the size) from the reference is not its continuation: None (the followed
+        closure is gone).  Returns (corners, pose, margin) or None."""
+        reach = 0.25 * size if reach is None else reach
+        if pose is not None:
+            qq = q[:self.n] + (pose[3],)
+            new, m = self.newton(qq, pose[:3], size)
+            if new is not None:
+                B, C, X = self.corners(qq, new)
+                if max(math.dist(B, ref_b), math.dist(X, ref_x)) <= reach and m >= _SURE:
+                    return (B, C, X), new + (pose[3],), m
+            if not fallback:
+                return None
+        cands = self.listed(q, mirror, size)
+        if not cands:
             return None
-    cands = _listed(q, mirror, size)
-    if not cands:
-        return None
-    dist = [max(math.dist(c[0][0], ref_b), math.dist(c[0][2], ref_x)) for c in cands]
-    i = int(np.argmin(dist))
-    if pose is not None and dist[i] > reach:
-        return None                         # the followed closure is gone
-    (B, C, X), new = cands[i]
-    return (B, C, X), new, margin_at(q[:11] + (new[3],), new[:3], size)
+        dist = [max(math.dist(c[0][0], ref_b), math.dist(c[0][2], ref_x)) for c in cands]
+        i = int(np.argmin(dist))
+        if pose is not None and dist[i] > reach:
+            return None                         # the followed closure is gone
+        (B, C, X), new = cands[i]
+        return (B, C, X), new, self.margin(q[:self.n] + (new[3],), new[:3], size)
+
+    def from_reference(self, q, mirror, ref_b, ref_x, size, ref_poses):
+        """The closure at the reference corners: Newton from each pose ``ref_poses`` gives
+        (no fallback), else the nearest of every closure."""
+        for pose in ref_poses:
+            res = self.follow(q, mirror, ref_b, ref_x, size, pose, fallback=False)
+            if res is not None:
+                return res
+        return self.follow(q, mirror, ref_b, ref_x, size)
 
 
 _SIN_1DEG = math.sin(math.radians(1.0))
@@ -462,14 +490,16 @@ def _ref_poses(q, mirror, ref_b, ref_x):
     return out
 
 
+TRIAD = ClosureFamily(11, _newton, lambda qq, pose: _corners_of(qq, pose, qq[11]), _listed,
+                      margin_at)
+_follow = TRIAD.follow
+
+
 def _from_reference(q, mirror, ref_b, ref_x, size):
     """Newton from the reference's own pose (the fast path: at the reference's input it is
     the closure itself); else the nearest of every closure."""
-    for pose in _ref_poses(q, mirror, ref_b, ref_x):
-        res = _follow(q, mirror, ref_b, ref_x, size, pose, fallback=False)
-        if res is not None:
-            return res
-    return _follow(q, mirror, ref_b, ref_x, size)
+    return TRIAD.from_reference(q, mirror, ref_b, ref_x, size,
+                                _ref_poses(q, mirror, ref_b, ref_x))
 
 
 def triad_scalar(ax, ay, a, dx, dy, d, ex, ey, e, L, xi, eta, mirror, rbx, rby, rxx, rxy,

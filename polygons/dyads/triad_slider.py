@@ -22,24 +22,24 @@ Acceleration, the same with the normal parts known: a_S = a_A + ω_AB² (A − B
 + [⟂ AB] = a_D + ω_DC² (D − C) + ω_p² (C − S) + [⟂ DC] gives s′; a_X = a_S + ω_p² (S − X)
 + [⟂ SX] = [∥ guide] gives x′ (no Coriolis term: the guide is fixed); b′, c′ are images.
 
-Not done: where AB and DC are parallel (S at infinity) the three-link triad takes S on
-another pair of links; here the other pairs involve the block, whose line is the normal to the
-guide at X, and that construction is not written.  The construction is exact however near
-parallel the pair is, down to the drawing's parallel limit (1e-5°), where it refuses.
+Where AB and DC are parallel (S at infinity, a point of the construction, not a singularity
+of the group) S is taken where a link meets the normal to the guide at X (:meth:`for_instant`,
+said in the solution's notes); the position is stated once (:attr:`construction`: the closure,
+then Assur's point, both primitives of :mod:`polygons.dyads.primitives`).
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
 from ..steps import Builder, Component, Kind, Op
 from . import image
 from .base import size_of
-from .numeric import interpret
+from .primitives import AssurPoint, CornerFrame, FixedLine, Length, Then, TriadSliderClosure
 from .triad import Triad, _aux_label, _plates
-from .triad_slider_math import all_corners, triad_slider_scalar
 
 #: the module registers itself (:mod:`polygons.dyads`): a group of a higher class, tried when
 #: no dyad can be placed, after the three-link triad
@@ -127,20 +127,7 @@ class TriadSlider:
     def assur_sine(self, points, via=None) -> float:
         return float(self.pair_sine(points, via))
 
-    def for_instant(self, points):
-        """This group with S taken on the pair of lines that meet best at the instant
-        ``points`` when its own pair is parallel within 1° (S at infinity is a point of the
-        construction, not a singularity of the group): (group, note) — note '' if kept."""
-        from dataclasses import replace
-        if self.assur_sine(points) >= math.sin(math.radians(1.0)):
-            return self, ""
-        best = max(range(3), key=lambda v: self.assur_sine(points, v))
-        if best == self.via:
-            return self, ""
-        new = replace(self, via=best)
-        return new, (f"the lines {self.pair_words()} are parallel here (the auxiliary point "
-                     f"{self.s} at infinity, not a singularity of the group): {self.s} is "
-                     f"taken where {new.pair_words()} meet instead")
+    for_instant = Triad.for_instant
 
     @property
     def placed(self) -> tuple[str, ...]:
@@ -160,69 +147,42 @@ class TriadSlider:
         return (f"{self.b}#bx", f"{self.b}#by", f"{self.b}#xx", f"{self.b}#xy")
 
     # ------------------------------------------------------------ geometry
+    @cached_property
+    def construction(self) -> Then:
+        """Its position, stated once (:mod:`polygons.dyads.primitives`): the corners B, C, X
+        by the closure nearest the one kept (:class:`TriadSliderClosure`), then Assur's
+        point S where the pair of lines :attr:`via` names meet (:class:`AssurPoint`: AB and
+        DC, or a link and the normal to the guide at X).  ``source`` is this statement and
+        ``locate`` its evaluation: the staged solve, the sweeps and the generated program
+        run the same formulas."""
+        guide = FixedLine(self.x)
+        plate = CornerFrame(self.b, self.c, self.x,
+                            (self.plate,) if self.ternary else self.plate_links)
+        closure = TriadSliderClosure((self.b, self.c, self.x), (self.ob, self.oc),
+                                     (Length(self.link_b), Length(self.link_c)), guide, plate,
+                                     self.sigma_keys)
+        (p1, o1, _), (p2, o2, _) = self.roles
+        assur = (AssurPoint(self.s, o1, p1, o2, p2) if self.via == 0 else
+                 AssurPoint(self.s, o1, p1, self.x, self.x, normal=guide))
+        return Then((closure, assur))
+
     def frame(self, scene):
         """The plate in the roles' frame: C = (L, 0), X = (ξ, η) from B (arrays in a batch)."""
-        if self.ternary:
-            lk = scene.links[self.plate]
-            bp = scene.points[({self.b, self.c, self.x} - {lk.a, lk.b}).pop()]
-            along = bp.along if bp.along is not None else bp.fraction * lk.length
-            own = {lk.a: (0.0, 0.0), lk.b: (lk.length, 0.0), bp.label: (along, bp.left)}
-        else:
-            lbc, lbx, lcx = (scene.links[n].length for n in self.plate_links)
-            first = scene.links[self.plate_links[0]]
-            third = ({self.b, self.c, self.x} - {first.a, first.b}).pop()
-            xi = (lbc * lbc + lbx * lbx - lcx * lcx) / (2.0 * lbc)
-            own = {first.a: (0.0, 0.0), first.b: (lbc, 0.0),
-                   third: (xi, np.sqrt(np.maximum(lbx * lbx - xi * xi, 0.0)))}
-        (bx, by), (cx, cy), (xx, xy) = (own[k] for k in (self.b, self.c, self.x))
-        ux, uy = np.subtract(cx, bx), np.subtract(cy, by)
-        L = np.hypot(ux, uy)
-        ux, uy = ux / L, uy / L
-        wx, wy = np.subtract(xx, bx), np.subtract(xy, by)
-        return L, wx * ux + wy * uy, wy * ux - wx * uy
-
-    def _params(self, scene, pos):
-        L, xi, eta = self.frame(scene)
-        g = scene.sliders[self.x]
-        (ax, ay), (dx, dy) = pos[self.ob], pos[self.oc]
-        lk = scene.links
-        return (ax, ay, lk[self.link_b].length, dx, dy, lk[self.link_c].length,
-                float(g.through[0]), float(g.through[1]), *g.direction, L, xi, eta,
-                0.0 if self.ternary else 1.0)
+        return self.construction.steps[0].plate.value(scene)
 
     def closures(self, scene, pos) -> list[dict]:
         """Every closure at the positions ``pos``: {B, C, X, S} each."""
-        p = tuple(float(v) for v in self._params(scene, pos))
+        closure, assur = self.construction.steps
         out = []
-        for B, C, X in all_corners(p, size_of(scene)):
-            pts = {self.b: np.array(B), self.c: np.array(C), self.x: np.array(X)}
-            pts[self.s] = self._assur(pos, pts)
+        for pts in closure.every(scene, pos):
+            pts.update(assur.locate(scene, {**pos, **pts}, None, 0.0)[0])
             out.append(pts)
         return out
 
-    def _assur(self, pos, pts):
-        """S = O₁ + t (P₁ − O₁) where the second line (O₂ + r (P₂ − O₂), or X + r n: the
-        normal to the guide) meets it: t = ((Q − O₁) × w) / ((P₁ − O₁) × w), Q and w that
-        line's point and direction (:attr:`roles`)."""
-        (p1, o1, _), (p2, o2, _) = self.roles
-        a = pos[o1]
-        u = pts[p1] - a
-        if self.via == 0:
-            q, w = pos[o2], pts[p2] - pos[o2]
-        else:
-            e = self.guide_e
-            q = pts[self.x]
-            w = np.array([-e[1], e[0]]).reshape((2,) + (1,) * (np.ndim(u) - 1)) + 0.0 * u
-        den = u[0] * w[1] - u[1] * w[0]
-        qa = q - a
-        with np.errstate(all="ignore"):
-            t = (qa[0] * w[1] - qa[1] * w[0]) / np.where(den != 0.0, den, np.nan)
-        return a + t * u
-
     def locate(self, scene, pos, sigma, x):
         """The closure nearest the reference ``sigma`` (None: the first closure), over one
-        position or (2, N) arrays (continuation): :meth:`source` evaluated
-        (:func:`~polygons.dyads.numeric.interpret`), the one statement of its geometry."""
+        position or (2, N) arrays (continuation): :attr:`construction` evaluated, the one
+        statement of its geometry."""
         if not sigma:
             one = np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1
             cands = self.closures(scene, pos) if one else None
@@ -230,7 +190,7 @@ class TriadSlider:
                 return self._nan(pos), -1.0
             B, X = (cands[0][self.b], cands[0][self.x]) if one else ((0.0, 0.0), (0.0, 0.0))
             sigma = dict(zip(self.sigma_keys, (B[0], B[1], X[0], X[1])))
-        return interpret(self, scene, pos, sigma, x)
+        return self.construction.locate(scene, pos, sigma, x)
 
     def variant(self, scene) -> tuple:
         """The statement's shape does not change with the scene's numbers."""
@@ -240,44 +200,9 @@ class TriadSlider:
         return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
                 for k in self.placed}
 
-    def source(self, g) -> None:
-        """:meth:`locate` as generated code (triad_slider_math; its array twin follows the
-        closure through a sweep), then S."""
-        (ax, ay), (dx, dy) = (g.pos(k) for k in (self.ob, self.oc))
-        lb = g.param(lambda s: s.links[self.link_b].length)
-        lc = g.param(lambda s: s.links[self.link_c].length)
-        gx = g.param(lambda s: float(s.sliders[self.x].through[0]))
-        gy = g.param(lambda s: float(s.sliders[self.x].through[1]))
-        ex = g.param(lambda s: s.sliders[self.x].direction[0])
-        ey = g.param(lambda s: s.sliders[self.x].direction[1])
-        L = g.param(lambda s: self.frame(s)[0])
-        xi = g.param(lambda s: self.frame(s)[1])
-        eta = g.param(lambda s: self.frame(s)[2])
-        refs = [g.sigma(k) for k in self.sigma_keys]
-        size = g.param(lambda s: size_of(s))
-        bx, by, cx, cy, xx, xy, m = g.call(
-            triad_slider_scalar, ax, ay, lb, dx, dy, lc, gx, gy, ex, ey, L, xi, eta,
-            "0.0" if self.ternary else "1.0", *refs, size, n=7)
-        g.margin(m)
-        g.place(self.b, bx, by)
-        g.place(self.c, cx, cy)
-        g.place(self.x, xx, xy)
-        corner = {self.b: (bx, by), self.c: (cx, cy)}
-        outer = {self.b: (ax, ay), self.c: (dx, dy)}
-        (p1, _, _), (p2, _, _) = self.roles
-        (px, py), (ox, oy) = corner[p1], outer[p1]
-        ux, uy = g.let("{} - {}", px, ox), g.let("{} - {}", py, oy)
-        if self.via == 0:
-            (qx, qy), (rx, ry) = corner[p2], outer[p2]
-            wx, wy = g.let("{} - {}", qx, rx), g.let("{} - {}", qy, ry)
-        else:           # the normal to the guide at X: through X along (−e_y, e_x)
-            rx, ry = xx, xy
-            wx, wy = g.let("-{}", ey), g.let("{} + 0.0", ex)
-        den = g.let("{} * {} - {} * {}", ux, wy, uy, wx)
-        safe = g.let(g.e("where({} != 0.0, {}, nan)", den, den) if g.arrays else
-                     g.e("({} if {} != 0.0 else nan)", den, den))
-        t = g.let("(({} - {}) * {} - ({} - {}) * {}) / {}", rx, ox, wy, ry, oy, wx, safe)
-        g.place(self.s, g.let("{} + {} * {}", ox, t, ux), g.let("{} + {} * {}", oy, t, uy))
+    def source(self, g):
+        """:meth:`locate` as generated code: :attr:`construction`'s statement (its margin)."""
+        return self.construction.source(g)
 
     def why_not(self, scene, pos) -> str:
         return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c} "

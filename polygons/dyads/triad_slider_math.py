@@ -32,13 +32,9 @@ import math
 
 import numpy as np
 
-from .triad_math import _EPS, real_roots
+from .triad_math import _EPS, ClosureFamily, choose_phi0, real_roots
 
 _NAN7 = (math.nan,) * 6 + (-1.0,)
-
-#: below this conditioning margin another closure may lie near the one Newton found: the
-#: followed closure is then checked against every closure (it must be the nearest)
-_SURE = 0.05
 
 
 def _unpack(q):
@@ -84,19 +80,7 @@ def _poly(q, phi0):
 
 
 def _phi0(q):
-    """φ₀ and the polynomial: φ₀ chosen so that φ₀ + π is no closure (the leading
-    coefficient is not small), from a few trial values."""
-    best = None
-    for phi0 in (0.0, 1.0, 2.0, 3.0, 4.0, 5.0):
-        c = _poly(q, phi0)
-        if c is None:
-            return None
-        lead = abs(c[-1]) / max(float(np.max(np.abs(c))), 1e-300) if len(c) >= 7 else 0.0
-        if best is None or lead > best[0]:
-            best = (lead, phi0, c)
-        if lead >= 1e-3:
-            break
-    return best[1], best[2]
+    return choose_phi0(q, _poly)
 
 
 def corners_of(q, pose):
@@ -316,38 +300,14 @@ def _ref_poses(q, mirror, ref_b, ref_x):
     return out
 
 
-def _follow(q, mirror, ref_b, ref_x, size, pose=None, fallback=True, reach=None):
-    """The closure nearest the reference corners (as :func:`polygons.dyads.triad_math._follow`):
-    Newton from ``pose``, checked against every closure where ill-conditioned; without a pose
-    or where Newton fails, the nearest of every closure; with a pose, none farther than
-    ``reach`` (the followed closure is gone).  Returns (corners, pose, margin) or None."""
-    reach = 0.25 * size if reach is None else reach
-    if pose is not None:
-        qq = q[:12] + (pose[3],)
-        new, m = _newton(qq, pose[:3], size)
-        if new is not None:
-            B, C, X = corners_of(qq, new)
-            if max(math.dist(B, ref_b), math.dist(X, ref_x)) <= reach and m >= _SURE:
-                return (B, C, X), new + (pose[3],), m
-        if not fallback:
-            return None
-    cands = _listed(q, mirror, size)
-    if not cands:
-        return None
-    dist = [max(math.dist(c[0][0], ref_b), math.dist(c[0][2], ref_x)) for c in cands]
-    i = int(np.argmin(dist))
-    if pose is not None and dist[i] > reach:
-        return None
-    (B, C, X), new = cands[i]
-    return (B, C, X), new, margin_at(q[:12] + (new[3],), new[:3], size)
+#: following the closure: as the three-link triad's (:class:`triad_math.ClosureFamily`)
+FAMILY = ClosureFamily(12, _newton, corners_of, _listed, margin_at)
+_follow = FAMILY.follow
 
 
 def _from_reference(q, mirror, ref_b, ref_x, size):
-    for pose in _ref_poses(q, mirror, ref_b, ref_x):
-        res = _follow(q, mirror, ref_b, ref_x, size, pose, fallback=False)
-        if res is not None:
-            return res
-    return _follow(q, mirror, ref_b, ref_x, size)
+    return FAMILY.from_reference(q, mirror, ref_b, ref_x, size,
+                                 _ref_poses(q, mirror, ref_b, ref_x))
 
 
 def triad_slider_scalar(ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, xi, eta, mirror, rbx, rby,
