@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import math
 
+import pytest
+
 import polygons
 from polygons.exam.variants import data_rows
 from polygons.scene import load_scene
@@ -76,3 +78,25 @@ C = "C right of AD"
 def test_no_noise_in_a_cam_followers_closure():
     rows = _rows("cam-profile-tangent-flank")
     assert rows["assembly of R"] == "R near (0, 96.7471) mm"
+
+
+def test_a_cam_stated_by_its_event_varies_its_angle():
+    """cam-profile-tangent-flank states its instant as `when = "leaves the straight flank"`:
+    every variant of `polygons exam` set the angle too and was refused ("give the driver's
+    angle or the cam's when, not both"), so the exam said the ranges gave 0 well-posed
+    variants. The variant's angle now replaces the event."""
+    import copy
+    import tomllib
+
+    from polygons.exam.variants import _set
+    from polygons.scene import parse_scene
+
+    path = CASES / "cam-profile-tangent-flank.toml"
+    data = tomllib.loads(path.read_text())
+    base = load_scene(path)
+    d = copy.deepcopy(data)
+    _set(d, "driver.angle", "100 deg", base)
+    scene = parse_scene(d, file="variant")
+    assert "when" not in d["cam_profiles"]["R"]
+    assert "when" in data["cam_profiles"]["R"]            # the scene's own data untouched
+    assert math.degrees(scene.driver.angle) % 360 == pytest.approx(100.0)

@@ -412,6 +412,12 @@ def _set(data: dict, key: str, text: str, base: Scene) -> None:
                      "rod_alpha": "rod_alpha_sense"}[name]
         data["driver"][sense_key] = "CW" if rate < 0 else "CCW"
     data[table][name] = text
+    if table == "driver" and name == "angle":
+        # a variant's cam angle replaces the book's event ([cam_profiles] when = "leaves the
+        # straight flank"), which is the scene's way of stating its one angle
+        for prof in (data.get("cam_profiles") or {}).values():
+            if isinstance(prof, dict):
+                prof.pop("when", None)
 
 
 def _rejects(sol: Solution, sp: ExamSpec, scales, asked) -> str | None:
