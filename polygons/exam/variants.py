@@ -244,8 +244,11 @@ def data_rows(scene: Scene) -> tuple[tuple[str, str], ...]:
                          f"point; velocity {_g(drv.velocity)} m/s, acceleration "
                          f"{_g(drv.acceleration)} m/s² (signed the same way)"))
     # the student gets no scene file: every other pair in words too
-    for pin, cr in scene.crossing.items():
-        (l1, l2), (c1, c2) = cr.levers, cr.coincident
+    crossing: dict[str, list] = {}
+    for sl in model.crossings():                # two pairs per pin, one per lever
+        crossing.setdefault(sl.at, []).append(sl)
+    for pin, (s1, s2) in crossing.items():
+        (l1, l2), (c1, c2) = (s1.carrier, s2.carrier), (s1.coincident, s2.coincident)
         rows.append((f"pin {pin}", f"slides in the slots of links {l1} and {l2} at once (each "
                                    f"slot along its link, {_ends(model, l1)} and {_ends(model, l2)}"
                                    f"); {c1} and {c2} are the points of {l1} and {l2} under "
