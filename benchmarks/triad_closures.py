@@ -72,7 +72,8 @@ def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:
     return counts
 
 
-if __name__ == "__main__":
+def run(main) -> None:
+    """``main(POSES, SCAN_EVERY)`` from the command line, its usage said on a bad argument."""
     try:
         args = [int(a) for a in sys.argv[1:3]]
         if any(a < 0 or a > 10_000_000 for a in args):
@@ -80,3 +81,7 @@ if __name__ == "__main__":
     except ValueError:
         sys.exit(f"usage: python {sys.argv[0]} [POSES [SCAN_EVERY]]  (whole numbers, 0 … 10^7)")
     print(main(*args))
+
+
+if __name__ == "__main__":
+    run(main)

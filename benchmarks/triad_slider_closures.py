@@ -24,7 +24,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 import analytic_triad_slider as ats                                # noqa: E402
-from triad_closures import tally                                   # noqa: E402
+from triad_closures import run, tally                              # noqa: E402
 from polygons.dyads.triad_slider_math import all_corners           # noqa: E402
 
 
@@ -48,10 +48,4 @@ def main(n: int = 100_000, scan_every: int = 200, seed: int = 28) -> dict:
 
 
 if __name__ == "__main__":
-    try:
-        args = [int(a) for a in sys.argv[1:3]]
-        if any(a < 0 or a > 10_000_000 for a in args):
-            raise ValueError
-    except ValueError:
-        sys.exit(f"usage: python {sys.argv[0]} [POSES [SCAN_EVERY]]  (whole numbers, 0 … 10^7)")
-    print(main(*args))
+    run(main)

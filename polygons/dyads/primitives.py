@@ -496,8 +496,38 @@ class PlateShape:
         return tuple(g.param(lambda s, i=i: self.value(s)[i]) for i in range(3))
 
 
+class _ClosureOfThree(Stated):
+    """A class-III group's closure as one stated step (its subclasses say the numbers,
+    :meth:`operands`, and the two functions of their algebra): the corners placed from the
+    closure nearest the reference kept under ``keys``, the margin its conditioning."""
+    #: (operands…, references…, size) → (6 coordinates, margin); its array twin by name
+    scalar = None
+    #: (operands, size) → every closure's corners
+    listing = None
+
+    @property
+    def x(self) -> str:
+        return self.corners[0]
+
+    def every(self, scene, pos) -> list[dict]:
+        """Every closure at the positions ``pos`` (one position): {B, C, X} each."""
+        g = Numeric(scene, pos, None, 0.0, False)
+        p = tuple(float(v) for v in self.operands(g))
+        return [dict(zip(self.corners, map(np.array, c)))
+                for c in type(self).listing(p, size_of(scene))]
+
+    def source(self, g, check=True):
+        refs = [g.sigma(k) for k in self.keys]
+        size = g.param(lambda s: size_of(s))
+        *xy, m = g.call(type(self).scalar, *self.operands(g), *refs, size, n=7)
+        _check(g, m, check)
+        for k, label in enumerate(self.corners):
+            g.place(label, xy[2 * k], xy[2 * k + 1])
+        return m
+
+
 @dataclass(frozen=True)
-class TriadClosure(Stated):
+class TriadClosure(_ClosureOfThree):
     """The corners B, C, X of a rigid plate (:class:`PlateShape`) each on a link of stated
     length to a placed point: |AB| = a, |DC| = d, |EX| = e — the closure nearest the
     reference corners kept under ``keys`` (B's and X's coordinates), by
@@ -509,10 +539,8 @@ class TriadClosure(Stated):
     lengths: tuple[Length, Length, Length]     # AB, DC, EX
     plate: PlateShape
     keys: tuple[str, str, str, str]            # where the reference corners are kept
-
-    @property
-    def x(self) -> str:
-        return self.corners[0]
+    scalar = staticmethod(triad_scalar)
+    listing = staticmethod(all_corners)
 
     def operands(self, g) -> tuple:
         """(ax, ay, a, dx, dy, d, ex, ey, e, L, ξ, η, mirror): the group's numbers, in the
@@ -521,21 +549,6 @@ class TriadClosure(Stated):
         for o, ln in zip(self.outer, self.lengths):
             out += [*g.pos(o), ln.param(g)]
         return (*out, *self.plate.params(g), "1.0" if self.plate.mirror else "0.0")
-
-    def every(self, scene, pos) -> list[dict]:
-        """Every closure at the positions ``pos`` (one position): {B, C, X} each."""
-        g = Numeric(scene, pos, None, 0.0, False)
-        p = tuple(float(v) for v in self.operands(g))
-        return [dict(zip(self.corners, map(np.array, c))) for c in all_corners(p, size_of(scene))]
-
-    def source(self, g, check=True):
-        refs = [g.sigma(k) for k in self.keys]
-        size = g.param(lambda s: size_of(s))
-        *xy, m = g.call(triad_scalar, *self.operands(g), *refs, size, n=7)
-        _check(g, m, check)
-        for k, label in enumerate(self.corners):
-            g.place(label, xy[2 * k], xy[2 * k + 1])
-        return m
 
 
 @dataclass(frozen=True)
@@ -611,7 +624,7 @@ class CornerFrame:
 
 
 @dataclass(frozen=True)
-class TriadSliderClosure(Stated):
+class TriadSliderClosure(_ClosureOfThree):
     """The corners B, C of a rigid plate (:class:`CornerFrame`) each on a link of stated
     length to a placed point (|AB| = a, |DC| = d) and its corner X on a fixed guide
     (:class:`FixedLine`): the closure nearest the reference corners kept under ``keys``, by
@@ -624,10 +637,8 @@ class TriadSliderClosure(Stated):
     guide: FixedLine
     plate: CornerFrame
     keys: tuple[str, str, str, str]            # where the reference corners are kept
-
-    @property
-    def x(self) -> str:
-        return self.corners[0]
+    scalar = staticmethod(triad_slider_scalar)
+    listing = staticmethod(all_slider_corners)
 
     def operands(self, g) -> tuple:
         """(ax, ay, a, dx, dy, d, gx, gy, ex, ey, L, ξ, η, mirror): the group's numbers, in
@@ -638,22 +649,6 @@ class TriadSliderClosure(Stated):
         through, direction = self.guide.emit(g)
         return (*out, *through, *direction, *self.plate.params(g),
                 "1.0" if self.plate.mirror else "0.0")
-
-    def every(self, scene, pos) -> list[dict]:
-        """Every closure at the positions ``pos`` (one position): {B, C, X} each."""
-        g = Numeric(scene, pos, None, 0.0, False)
-        p = tuple(float(v) for v in self.operands(g))
-        return [dict(zip(self.corners, map(np.array, c)))
-                for c in all_slider_corners(p, size_of(scene))]
-
-    def source(self, g, check=True):
-        refs = [g.sigma(k) for k in self.keys]
-        size = g.param(lambda s: size_of(s))
-        *xy, m = g.call(triad_slider_scalar, *self.operands(g), *refs, size, n=7)
-        _check(g, m, check)
-        for k, label in enumerate(self.corners):
-            g.place(label, xy[2 * k], xy[2 * k + 1])
-        return m
 
 
 @dataclass(frozen=True)
