@@ -117,6 +117,8 @@ def _check_rod_angle(scene: Scene, pos) -> None:
     if end is None or scene.driver.position != end[3]:
         return                          # another position (a sweep, a question): no angle
     name, other, angle = end[:3]
+    if other not in pos or scene.driver.point not in pos:
+        return                          # a solve of some targets only: the rod not placed
     dx, dy = (float(c) for c in pos[other] - pos[scene.driver.point])
     got = math.atan2(dy, dx)
     if abs(math.remainder(got - angle, 2.0 * math.pi)) > 1e-7:

@@ -57,3 +57,8 @@ def test_the_shipped_case_and_its_sweep_still_solve():
     assert _rod_angle(res) == pytest.approx(170.0, abs=1e-9)
     batch = polygons.solve_many(scene, s=[0.2, 0.205, 0.21])   # other positions: no angle
     assert not batch.errors
+
+
+def test_a_solve_of_other_targets_only():
+    res = polygons.solve(_scene(170.0), targets=["O"])      # the rod's ends not placed
+    assert "A" not in res.points
