@@ -100,7 +100,8 @@ def single_position(root, path, avail, quick, others, cf, jit_rows=True):
                            "cached code) + solve, from a parsed Scene"),
         "staged": ("polygons staged (shapely), pre-built scene",
                    "timed: solve(scene): assembly, the step program with every intersection "
-                   "by shapely, the Solution (its Step records and text built on first "
+                   "as shapely finds it (GEOS's arithmetic in floats), the Solution (its Step "
+                   "records and text built on first "
                    "access; the plan kept with the scene)"),
         "staged+steps": ("polygons staged + Step records",
                          "timed: solve(scene) as above and its .steps: every Step record "

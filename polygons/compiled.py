@@ -34,7 +34,6 @@ from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled,  # noqa: F401 (read f
 from .errors import ConstructionError, ParallelLinesError
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input, dyad_failure
-from .reader import record, record_of
 from .scene import Scene
 from .steps import Diagram, Step, Term, noise_floor
 from .memo import memo_of
@@ -57,32 +56,62 @@ _SHAPED_BY = ("ground", "links", "driver", "sliders", "slots", "points", "solve"
 def _shape(value):
     """``value`` with every float replaced by its type: the whole identity of a record tree
     but its measures (a record's kind and every field name, label, flag, count and None),
-    walked without recursion (the tree is the user's scene)."""
+    walked without recursion (the tree is the user's scene); how each type is read is worked
+    out once per type (:func:`_how`)."""
     out: list = []
     stack = [value]
+    append, push, how_of = out.append, stack.append, _HOW.get
     while stack:
         v = stack.pop()
-        if v is None or isinstance(v, (str, bool, int)) and not isinstance(v, np.integer):
-            out.append(v)
-        elif isinstance(v, (float, np.floating)):
-            out.append(float)
-        elif is_dataclass(v):
-            out.append(type(v).__qualname__)
-            for f in fields(v):
-                if f.compare:
-                    stack.append(getattr(v, f.name))
-                    out.append(f.name)
-        elif isinstance(v, Mapping):
-            out.append((type(v).__name__, len(v)))
+        how = how_of(type(v))
+        if how is None:
+            how = _how(v)
+        if how is _ATOM:
+            append(v)
+        elif how is _FLOAT:
+            append(float)
+        elif how is _MAP:
+            append((type(v).__name__, len(v)))
             for k, item in v.items():
-                stack.append(item)
-                stack.append(k)
-        elif isinstance(v, (tuple, list, np.ndarray)):
-            out.append(("seq", len(v)))
+                push(item)
+                push(k)
+        elif how is _SEQ:
+            append(("seq", len(v)))
             stack.extend(reversed(list(v)))
-        else:
-            out.append(type(v).__qualname__)
+        elif how[0] is _RECORD:
+            append(how[1])
+            for name in how[2]:
+                push(getattr(v, name))
+                append(name)
+        else:                                   # (_OTHER, its type's name)
+            append(how[1])
     return tuple(out)
+
+
+_ATOM, _FLOAT, _MAP, _SEQ, _RECORD, _OTHER = "atom", "float", "map", "seq", "record", "other"
+#: how :func:`_shape` reads a value of each type met so far
+_HOW: dict = {}
+
+
+def _how(v):
+    """How :func:`_shape` reads ``v``: as it is (None, text, a flag, an integer), as its type
+    (a float), a record's kind and compared fields, a mapping, a sequence, or by its type's
+    name; kept for ``type(v)`` unless ``v`` is itself a class."""
+    if v is None or isinstance(v, (str, bool, int)) and not isinstance(v, np.integer):
+        how = _ATOM
+    elif isinstance(v, (float, np.floating)):
+        how = _FLOAT
+    elif is_dataclass(v):
+        how = (_RECORD, type(v).__qualname__, tuple(f.name for f in fields(v) if f.compare))
+    elif isinstance(v, Mapping):
+        how = _MAP
+    elif isinstance(v, (tuple, list, np.ndarray)):
+        how = _SEQ
+    else:
+        how = (_OTHER, type(v).__qualname__)
+    if not isinstance(v, type):
+        _HOW[type(v)] = how
+    return how
 
 
 def topology_key(scene: Scene) -> tuple:
@@ -107,19 +136,6 @@ def _cached(key, make, scene: Scene | None = None) -> _Code:
             _CACHE.clear()
         code = _CACHE[key] = make()
     return code
-
-
-def _term(r, i):
-    """A term's value from the record (the same expression as the kernel's, over floats)."""
-    if type(i) is int:
-        return r[i]
-    if i[0] == "abs":
-        return abs(r[i[1]])
-    if i[0] == "hypot":
-        return math.hypot(r[i[1]], r[i[2]])
-    r0, r1, q0, q1 = (r[j] for j in i[1:])
-    n = math.hypot(r0, r1)
-    return abs(r0 / n * q1 - r1 / n * q0)
 
 
 def _sigmas(plan: Plan) -> dict:
@@ -252,12 +268,6 @@ def _params(code: _Code, scene: Scene, sigma: dict) -> tuple:
                  for get in code.getters)
 
 
-def _copy(step: Step, vals: dict, **more) -> Step:
-    """``dataclasses.replace(step, **vals, **more)`` without re-running ``__init__``
-    (:func:`polygons.reader.record`: 20× faster, the same value)."""
-    return record(Step, **{**step.__dict__, **vals, **more})
-
-
 def compile_staged(scene: Scene, plan: Plan, steps: tuple[Step, ...], meet) -> "Staged":
     """The staged solver's program for ``plan`` (:func:`polygons.codegen.generate` with
     ``meet``, which draws and intersects the construction lines)."""
@@ -265,7 +275,9 @@ def compile_staged(scene: Scene, plan: Plan, steps: tuple[Step, ...], meet) -> "
     code = _cached(key, lambda: generate(scene, plan, steps, {}, meet=meet), scene)
     fixed = [None if isinstance(get, tuple) else float(get(scene)) for get in code.getters]
     closures = tuple((i, get[1]) for i, get in enumerate(code.getters) if isinstance(get, tuple))
-    return Staged(scene, plan, steps, code, fixed, closures)
+    positions = tuple((key[1], ij[0], ij[1]) for key, ij in code.index.items() if key[0] == "pos")
+    groups = any(getattr(d, "many_closures", False) for d in plan.dyads)
+    return Staged(scene, plan, steps, code, fixed, closures, positions, groups)
 
 
 @dataclass(frozen=True)
@@ -278,6 +290,8 @@ class Staged:
     code: _Code
     fixed: list            # the scene's parameters (None where a closure goes)
     closures: tuple        # (parameter index, label of a two-closure dyad)
+    positions: tuple = ()  # (label, index of x, index of y) of every point placed
+    groups: bool = False   # whether a group has many closures (a triad: its Assur point)
 
     def record(self, placement) -> tuple:
         """The record at the scene's input, each two-closure dyad on the closure the staged
@@ -296,8 +310,7 @@ class Staged:
 
     def placed(self, record: tuple) -> dict:
         """Every point's position in ``record``."""
-        return {key[1]: (record[ij[0]], record[ij[1]])
-                for key, ij in self.code.index.items() if key[0] == "pos"}
+        return {label: (record[i], record[j]) for label, i, j in self.positions}
 
 
 def compile_arrays(scene: Scene, plan: Plan, sigma: dict) -> tuple[_Code, tuple]:
@@ -391,51 +404,108 @@ class CompiledSolution:
 def steps_from_record(scene: Scene, steps: tuple[Step, ...], layout, r: tuple
                       ) -> tuple[Step, ...]:
     """The planned ``steps`` with their numbers read from the record ``r`` (``layout`` says
-    where): what the staged and the compiled solutions show.  Each record is made once
-    (:func:`polygons.reader.record`, every field set at once); its formula with the numbers
-    is written from its terms when shown (:func:`polygons.narrate.substitute`)."""
-    numbers = [([(sym, r[i] if type(i) is int else _term(r, i), u) for sym, i, u in o.terms],
-                None if o.value is None else r[o.value]) for o in layout]
-    zero = _rounding_noise(numbers, layout)
-    done = []
-    for step, o, (terms, value) in zip(steps, layout, numbers):
+    where): what the staged and the compiled solutions show.  Each record is made once, every
+    field set at once (:func:`steps_builder`: the reading written out as straight-line code
+    once per layout); its formula with the numbers is written from its terms when shown
+    (:func:`polygons.narrate.substitute`)."""
+    return steps_builder(layout)(r, steps)
+
+
+#: the builders written so far, by the id of their layout (kept with it: the id stays its own)
+_BUILDERS: dict = {}
+
+
+def steps_builder(layout):
+    """``build(r, steps)``: the :class:`Step` records of ``steps`` with their numbers from the
+    record ``r``, written out for ``layout`` once (each term's value, the rounding-noise
+    floors, every record set in one go: equal to ``dataclasses.replace``)."""
+    hit = _BUILDERS.get(id(layout))
+    if hit is not None and hit[0] is layout:
+        return hit[1]
+    if len(_BUILDERS) >= 256:           # a bound, as the code cache's
+        _BUILDERS.clear()
+    fn = _write_builder(layout)
+    _BUILDERS[id(layout)] = (layout, fn)
+    return fn
+
+
+def _write_builder(layout):
+    """The source of :func:`steps_builder`'s function for ``layout``, compiled.  The same
+    reading as the loop it replaces: the terms' values (:func:`_term`'s expressions), each
+    unit's scale (the largest magnitude of its unit in the construction; an α's counts ω²
+    too) and noise floor (:func:`polygons.steps.noise_floor`), a rate at or below its floor
+    read as 0.0 — a translating link's ω, a body starting from rest, which the construction
+    leaves at ~1e-15 and a book prints as 0."""
+    lines = []
+    values: list[tuple[str, str]] = []          # (local, unit) of every number a floor sees
+
+    def term(i) -> str:
+        if type(i) is int:
+            return f"r[{i}]"
+        if i[0] == "abs":
+            return f"abs(r[{i[1]}])"
+        if i[0] == "hypot":
+            return f"hypot(r[{i[1]}], r[{i[2]}])"
+        r0, r1, q0, q1 = (f"r[{j}]" for j in i[1:])
+        n = f"n{len(lines)}"
+        lines.append(f"{n} = hypot({r0}, {r1})")
+        return f"abs({r0} / {n} * {q1} - {r1} / {n} * {q0})"
+
+    per_step = []
+    for k, o in enumerate(layout):
+        names = []
+        for t, (sym, i, u) in enumerate(o.terms):
+            name = f"v{k}_{t}"
+            lines.append(f"{name} = {term(i)}")
+            names.append((sym, name, u))
+            values.append((name, u))
+        value = None
+        if o.value is not None:
+            value = f"w{k}"
+            lines.append(f"{value} = r[{o.value}]")
+        per_step.append((names, value))
+        values.extend([] if value is None else [(value, o.unit)])
+    # the scales, in the loop's order (max keeps the first of equals; NaN never wins)
+    floor = {}
+    for u in _RATES:
+        mags = [f"abs({v})" for v, unit in values if unit == u]
+        lines.append(f"s{_RATES.index(u)} = max(0.0, {', '.join(mags)})" if mags
+                     else f"s{_RATES.index(u)} = 0.0")
+    lines.append("s1 = max(s1, s0 ** 2)")               # α's scale: ω² too
+    for u in _RATES:
+        k = _RATES.index(u)
+        floor[u] = f"f{k}"
+        lines.append(f"f{k} = noise_floor((s{k},))")
+
+    def zero(v, u) -> str:
+        return f"(0.0 if abs({v}) <= {floor[u]} else {v})" if u in floor else v
+
+    lines.append("out = []")
+    for k, (o, (names, value)) in enumerate(zip(layout, per_step)):
         f = o.fields
-        vals = step.__dict__.copy()
-        for k in _FIELDS:
-            ij = f.get(k)
-            vals[k] = None if ij is None else (r[ij[0]], r[ij[1]])
-        vals["value"] = None if value is None else zero(value, o.unit)
-        vals["unit"] = o.unit
-        vals["angle_deg"] = None if o.angle is None else r[o.angle]
-        vals["terms"] = tuple(record_of(Term, {"symbol": sym, "value": zero(v, u), "unit": u})
-                              for sym, v, u in terms)
-        done.append(record_of(Step, vals))
-    return tuple(done)
+        lines.append(f"d = steps[{k}].__dict__.copy()")
+        for key in _FIELDS:
+            ij = f.get(key)
+            lines.append(f"d[{key!r}] = " + ("None" if ij is None else
+                                              f"(r[{ij[0]}], r[{ij[1]}])"))
+        lines.append("d['value'] = " + ("None" if value is None else zero(value, o.unit)))
+        lines.append(f"d['unit'] = {o.unit!r}")
+        lines.append("d['angle_deg'] = " + ("None" if o.angle is None else f"r[{o.angle}]"))
+        for t, (sym, name, u) in enumerate(names):
+            lines.append(f"t{t} = new(Term); e = t{t}.__dict__; e['symbol'] = {sym!r}; "
+                         f"e['value'] = {zero(name, u)}; e['unit'] = {u!r}")
+        lines.append(f"d['terms'] = ({''.join(f't{t}, ' for t in range(len(names)))})")
+        lines.append("o = new(Step); set_dict(o, '__dict__', d); out.append(o)")
+    lines.append("return tuple(out)")
+    src = "def _build(r, steps):\n" + "".join(f"    {ln}\n" for ln in lines)
+    ns = {"new": object.__new__, "set_dict": object.__setattr__, "Step": Step, "Term": Term,
+          "hypot": math.hypot, "noise_floor": noise_floor}
+    exec(compile(src, "<polygons.compiled steps>", "exec"), ns)
+    return ns["_build"]
 
 
 #: the units whose near-zero values are rounding noise of the construction
 _RATES = ("rad/s", "rad/s^2", "m/s", "m/s^2")
-
-
-def _rounding_noise(numbers, layout):
-    """``zero(value, unit)``: ``value``, or 0.0 where it is below 1e-12 of the largest of its
-    unit in the construction (an α's scale counts ω² too) — a translating link's ω, a body
-    starting from rest, which the construction leaves at ~1e-15 and a book prints as 0."""
-    scale = dict.fromkeys(_RATES, 0.0)
-    for (terms, value), o in zip(numbers, layout):
-        for _, v, u in terms:
-            if u in scale and abs(v) > scale[u]:
-                scale[u] = abs(v)
-        if value is not None and o.unit in scale and abs(value) > scale[o.unit]:
-            scale[o.unit] = abs(value)
-    scale["rad/s^2"] = max(scale["rad/s^2"], scale["rad/s"] ** 2)
-    floor = {u: noise_floor([v]) for u, v in scale.items()}
-    get = floor.get
-
-    def zero(v, u):
-        f = get(u)
-        return 0.0 if f is not None and abs(v) <= f else v
-    return zero
 
 
 def min_angle(layout, r: tuple) -> float | None:

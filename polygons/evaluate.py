@@ -3,8 +3,9 @@
 The staged solver: the mechanism is assembled dyad by dyad (:mod:`polygons.position`), then
 the construction's steps run as the program :mod:`polygons.codegen` writes from them (each
 op's theorem, :mod:`polygons.theorems`, over the placed points), with every intersection of
-two construction lines drawn and found by shapely (:func:`polygons.geometry.meet`).  Every
-number in a :class:`Solution` is read off that record; nothing is computed twice.
+two construction lines drawn and found as shapely finds it (:func:`polygons.geometry.meet`:
+GEOS's arithmetic written out in floats, the same doubles).  Every number in a
+:class:`Solution` is read off that record; nothing is computed twice.
 """
 from __future__ import annotations
 
@@ -188,15 +189,17 @@ def solve(scene: Scene, targets: Iterable[str] | None = None) -> Solution:
 
     The plan, its steps and their compiled program depend on the scene's topology only, so
     they are made once per scene (and ``targets``) and kept with it; each solve assembles the
-    mechanism (the dyad modules' ``locate``) and runs the program, whose intersections are
-    drawn and found by shapely (:func:`polygons.geometry.meet`)."""
+    mechanism (the dyad modules' statements) and runs the program, whose intersections are
+    drawn and found as shapely finds them (:func:`polygons.geometry.meet`)."""
     targets = tuple(targets) if targets is not None else None
     plan, steps, staged = planned(scene, targets)
     placement = assemble(plan)
-    plan, notes = assur_pairs(plan, placement.points)
-    if notes:       # a triad's S at infinity: its construction through another pair of links
-        plan, steps, staged = planned(scene, targets, plan)
-        placement = Placement(placement.points, placement.branches + notes, placement.sigmas)
+    if staged.groups:
+        plan, notes = assur_pairs(plan, placement.points)
+        if notes:   # a triad's S at infinity: its construction through another pair of links
+            plan, steps, staged = planned(scene, targets, plan)
+            placement = Placement(placement.points, placement.branches + notes,
+                                  placement.sigmas)
     record = staged.record(placement)
     # the positions reported are the program's (the same dyad formulas over floats, on the
     # closures the assembly chose), so every number of a Solution comes from one record

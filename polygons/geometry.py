@@ -6,16 +6,21 @@ with the lever's tangential line).  :func:`intersect` does that with shapely geo
 reports the angle between the two lines, which is the conditioning of the result: at 90° a
 pencil error moves the intersection by the same amount, at 1° by 57 times as much, at 0° (a
 toggle or change point) there is no intersection and we raise :class:`ParallelLinesError`.
+
+Both lines are drawn as segments (:func:`drawn_segments`) and intersected by shapely
+(:func:`meet_drawn`; :func:`intersect`, for Klein's and Kennedy's constructions).  The staged
+solver's :func:`meet` gives the same doubles without building geometries: GEOS's own
+arithmetic written out in floats (:mod:`polygons.geos_crossing`), shapely asked only where
+GEOS would take another branch.  shapely is imported on first use, so a solve that never
+needs it never loads it.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
-import numpy as np
-import shapely
-
 from .errors import ConstructionError, ParallelLinesError
+from .geos_crossing import crossing
 
 #: below this angle two construction lines are treated as parallel (the position is a toggle);
 #: an exact toggle computed in floating point leaves ~sqrt(eps) ≈ 1e-6° of angle, hence 1e-5°
@@ -41,12 +46,12 @@ class Intersection:
 
 def line(point, direction, name: str = "") -> Line:
     """A :class:`Line` through ``point`` along ``direction`` (normalised here)."""
-    d = np.asarray(direction, dtype=float)
-    n = math.hypot(d[0], d[1])
+    dx, dy = float(direction[0]), float(direction[1])
+    n = math.hypot(dx, dy)
     if n == 0.0 or not math.isfinite(n):
         raise ParallelLinesError(f"construction line {name or '?'} has no direction "
                                  f"(its defining vector is zero)")
-    return Line((float(point[0]), float(point[1])), (float(d[0] / n), float(d[1] / n)), name)
+    return Line((float(point[0]), float(point[1])), (dx / n, dy / n), name)
 
 
 def angle_between(l1: Line, l2: Line) -> float:
@@ -57,7 +62,8 @@ def angle_between(l1: Line, l2: Line) -> float:
 
 
 def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
-    """Intersection point of two construction lines, as shapely computes it (:func:`meet`).
+    """Intersection point of two construction lines, as shapely computes it
+    (:func:`meet_drawn`).
 
     Raises :class:`ParallelLinesError` below ``PARALLEL_DEG``."""
     angle = angle_between(l1, l2)
@@ -70,7 +76,7 @@ def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
         # both lines through one point (an instant at rest: every relative velocity is zero,
         # so the lines of unknown length all start at the pole): they meet there, exactly
         return Intersection(l1.point, angle)
-    x, y = meet(*l1.point, *l1.direction, *l2.point, *l2.direction)
+    x, y = meet_drawn(*l1.point, *l1.direction, *l2.point, *l2.direction)
     if x != x:
         raise ConstructionError(
             f"shapely found no single intersection of the {l1.name or 'first line'} and the "
@@ -80,18 +86,38 @@ def intersect(l1: Line, l2: Line, *, step: str | None = None) -> Intersection:
 
 def meet(px, py, ux, uy, qx, qy, vx, vy) -> tuple[float, float]:
     """X = P + t u = Q + s v: the intersection of two construction lines, as shapely finds it
-    where they are drawn (NaN, NaN where it finds no single point on both lines).
+    where they are drawn (NaN, NaN where it finds no single point on both lines) — the same
+    doubles as :func:`meet_drawn`, from GEOS's arithmetic written out in floats
+    (:func:`polygons.geos_crossing.crossing`); shapely itself where GEOS would branch
+    otherwise.  The lines must not be parallel (the caller has checked their angle); P = Q is
+    returned as it is (an instant at rest)."""
+    if px == qx and py == qy:
+        return px, py
+    ends, h = drawn_segments(px, py, ux, uy, qx, qy, vx, vy)
+    hit = crossing(*ends)
+    if hit is None:
+        return _shapely_meet(ends, px, py, ux, uy, qx, qy, vx, vy, h)
+    return _on_both(hit[0], hit[1], px, py, ux, uy, qx, qy, vx, vy, h)
 
-    Each line is drawn as a segment from before its anchor to past the crossing: with
-    t = ((Q − P) × v) / (u × v) and s = ((Q − P) × u) / (u × v) (the 2×2 solve) the first
+
+def meet_drawn(px, py, ux, uy, qx, qy, vx, vy) -> tuple[float, float]:
+    """:func:`meet` with the two segments made shapely geometries and intersected by shapely
+    (the drawing's own intersection, which :func:`meet` reproduces bit for bit)."""
+    if px == qx and py == qy:
+        return px, py
+    ends, h = drawn_segments(px, py, ux, uy, qx, qy, vx, vy)
+    return _shapely_meet(ends, px, py, ux, uy, qx, qy, vx, vy, h)
+
+
+def drawn_segments(px, py, ux, uy, qx, qy, vx, vy) -> tuple[list, float]:
+    """The two construction lines drawn as segments, ([x1, y1, x2, y2, x3, y3, x4, y4], h):
+    each from before its anchor to past the crossing.
+
+    With t = ((Q − P) × v) / (u × v) and s = ((Q − P) × u) / (u × v) (the 2×2 solve) the first
     runs from min(0, t) − h to max(0, t) + h along u, the second likewise along v, with
     h = max(|t|, |s|, |P|∞, |Q|∞) / 2: they always cross, are never shorter than the rounding
     of their coordinates, and their end points carry no more rounding than the anchors and the
-    crossing do.  The lines must not be parallel
-    (the caller has checked their angle); P = Q is returned as it is (an instant at rest).
-    """
-    if px == qx and py == qy:
-        return px, py
+    crossing do."""
     den = ux * vy - uy * vx
     wx, wy = qx - px, qy - py
     t = (wx * vy - wy * vx) / den
@@ -104,17 +130,26 @@ def meet(px, py, ux, uy, qx, qy, vx, vy) -> tuple[float, float]:
     # components below 1e-200 zeroed: GEOS mishandles subnormal coordinates (a vertical segment
     # at x = -5e-314 met a horizontal one at its end point), and nothing a scene can state is
     # that small (a 1 µm link at 1e-3 rad/s moves at 1e-9 m/s)
-    ends = np.array([0.0 if -1e-200 < c < 1e-200 else c for c in ends])
-    s1, s2 = shapely.linestrings(ends.reshape(2, 2, 2))
+    return [0.0 if -1e-200 < c < 1e-200 else c for c in ends], h
+
+
+def _shapely_meet(ends, px, py, ux, uy, qx, qy, vx, vy, h) -> tuple[float, float]:
+    """The drawn segments ``ends`` intersected by shapely, checked on both lines."""
+    import numpy as np
+    import shapely
+    s1, s2 = shapely.linestrings(np.array(ends).reshape(2, 2, 2))
     hit = shapely.intersection(s1, s2)
     xy = shapely.get_coordinates(hit)
     if len(xy) != 1 or shapely.get_type_id(hit) != 0:     # 0: a Point
         return math.nan, math.nan
     x, y = xy[0].tolist()
-    # the point must lie on both lines (to the rounding of the drawn segments)
+    return _on_both(x, y, px, py, ux, uy, qx, qy, vx, vy, h)
+
+
+def _on_both(x, y, px, py, ux, uy, qx, qy, vx, vy, h) -> tuple[float, float]:
+    """(x, y) if it lies on both lines (to the rounding of the drawn segments), else NaN."""
     scale = max(abs(px), abs(py), abs(qx), abs(qy), abs(x), abs(y), 2.0 * h)
     off = max(abs(ux * (y - py) - uy * (x - px)), abs(vx * (y - qy) - vy * (x - qx)))
     if not off <= 1e-9 * scale:
         return math.nan, math.nan
     return x, y
-

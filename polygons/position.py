@@ -15,7 +15,9 @@ from typing import Mapping
 import numpy as np
 
 from .dyads.base import size_of
-from .errors import AssemblyError, BranchError
+from .dyads.numeric import Stated, interpret_floats
+from .dyads.primitives import Constructed
+from .errors import AssemblyError, BranchError, PolygonsError
 from .mobility import check_redundant_lengths
 from .plan import Plan
 from .scene import Branch, Crank, Scene
@@ -39,7 +41,15 @@ class Placement:
 
 def assemble(plan: Plan) -> Placement:
     """Place every dyad of ``plan`` at the scene's input, in order; each two-closure dyad's
-    closure is chosen by the scene's words (:func:`_choose`)."""
+    closure is chosen by the scene's words (:func:`_choose`).  Over plain floats where every
+    group is one stated primitive and nothing fails (:func:`_assemble_floats`: the same
+    numbers), else over arrays — where every refusal is made."""
+    fast = _assemble_floats(plan)
+    return fast if fast is not None else _assemble_arrays(plan)
+
+
+def _assemble_arrays(plan: Plan) -> Placement:
+    """:func:`assemble` over numpy arrays (each group's ``locate``), every refusal made."""
     scene = plan.scene
     pos: dict[str, np.ndarray] = {k: np.array(v, dtype=float) for k, v in scene.ground.items()}
     chosen: list[tuple[str, str]] = []
@@ -57,6 +67,60 @@ def assemble(plan: Plan) -> Placement:
                     f"{label} is drawn at {_fmt(np.array(xy))} but the links put it at "
                     f"{_fmt(pos[label])} ({1e3 * off:.4g} mm away): the drawing and the lengths "
                     f"disagree", file=scene.file, where=f"drawn.{label}")
+    points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
+    check_redundant_lengths(scene, plan, points)
+    return Placement(points, tuple(chosen), MappingProxyType(sigmas))
+
+
+def _assemble_floats(plan: Plan) -> Placement | None:
+    """:func:`assemble` with every point a plain float pair, each group's statement run
+    through :func:`~polygons.dyads.numeric.interpret_floats` (the statement :func:`assemble`
+    runs, so the same numbers and the same closures): None — :func:`assemble` then does it
+    over arrays and makes the refusal — where a group is not one stated primitive (a group
+    of several closures), the scene has [drawn] positions, a number is an array, a closure
+    fails or the words refuse."""
+    scene = plan.scene
+    if scene.drawn:
+        return None
+    x_in = driver_input(scene)
+    pos = {}
+    for k, (x, y) in scene.ground.items():
+        if type(x) is not float or type(y) is not float:     # (a batch's arrays)
+            return None
+        pos[k] = (x, y)
+    chosen: list[tuple[str, str]] = []
+    sigmas: dict[str, float] = {}
+    size = size_of(scene)
+    try:
+        for dyad in plan.dyads:
+            prim = getattr(dyad, "construction", None)
+            if (type(dyad).locate is not Constructed.locate or not isinstance(prim, Stated)
+                    or type(prim).locate is not Stated.locate
+                    or getattr(dyad, "many_closures", False)):
+                return None
+            if dyad.two_closures:
+                x = dyad.placed[0]
+                got = interpret_floats(prim, scene, pos, 1.0, x_in)
+                if got is None or not got[1] >= 0:
+                    return None
+                c1 = got[0]
+                c2 = interpret_floats(prim, scene, pos, -1.0, x_in)[0]
+                pick, why = _choose(x, (c1[x], c2[x]), scene, pos, size,
+                                    default_ref=dyad.default_ref)
+                c = c1 if pick is c1[x] else c2
+                sigmas[x] = 1.0 if c is c1 else -1.0
+                for label in dyad.placed:
+                    pos[label] = c[label]
+                if why:
+                    chosen.append((x, why))
+                continue
+            got = interpret_floats(prim, scene, pos, None, x_in)
+            if got is None or got[1] is not None and not got[1] > 0:
+                return None
+            pos.update(got[0])
+            _check_words(got[0], scene, pos)
+    except PolygonsError:
+        return None
     points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
     check_redundant_lengths(scene, plan, points)
     return Placement(points, tuple(chosen), MappingProxyType(sigmas))

@@ -31,7 +31,7 @@ WHERE = {
     "polygons.reference": "commands", "polygons.__main__": "commands",
     "polygons.notation_doc": "commands",
     "polygons.plan": "plan", "polygons.dyads": "plan", "polygons.mobility": "plan",
-    "polygons.geometry": "interpreters",
+    "polygons.geometry": "interpreters", "polygons.geos_crossing": "interpreters",
     "polygons.narrate": "interpreters", "polygons.position": "interpreters",
     "polygons.evaluate": "interpreters", "polygons.sweep": "interpreters",
     "polygons.harmonic": "interpreters",

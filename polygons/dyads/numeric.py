@@ -278,6 +278,22 @@ def interpret(prim, scene, pos, sigma, x):
     return pts, m
 
 
+def interpret_floats(prim, scene, pos, sigma, x):
+    """:func:`interpret` at one position given as plain float pairs (``pos``: label → (x, y)),
+    returning the points it places as float pairs (no arrays made): (points, margin), or None
+    where :func:`interpret` would run over arrays (a scene number or the input an array, as in
+    a batch).  The same statement, so the same numbers to the last bit."""
+    if type(x) is not float:
+        return None
+    fn, getters, labels, sigmas = _statement(prim, scene, False)
+    k = [get(scene) for get in getters]
+    for v in k:
+        if type(v) is not float:
+            return None
+    s = [sigma[lab] for lab in sigmas] if isinstance(sigma, dict) else [sigma] * len(sigmas)
+    return fn(k, [pos[lab] for lab in labels], s, x)
+
+
 class Stated:
     """A primitive stated once, as its ``source``: its ``locate`` is that statement
     evaluated (:func:`interpret`)."""
@@ -292,4 +308,4 @@ class Stated:
 
 
 __all__ = ["namespace", "where_scalar", "hypot_cols", "Formula", "Numeric", "Traced", "interpret",
-           "Stated"]
+           "interpret_floats", "Stated"]
