@@ -119,6 +119,7 @@ def _assemble_floats(plan: Plan) -> Placement | None:
                 return None
             pos.update(got[0])
             _check_words(got[0], scene, pos)
+        _check_rod_angle(scene, pos)    # refused over arrays, below
     except PolygonsError:
         return None
     points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
@@ -183,7 +184,8 @@ def _check_rod_angle(scene: Scene, pos) -> None:
     name, other, angle = end[:3]
     if other not in pos or scene.driver.point not in pos:
         return                          # a solve of some targets only: the rod not placed
-    dx, dy = (float(c) for c in pos[other] - pos[scene.driver.point])
+    (ox, oy), (sx, sy) = pos[other], pos[scene.driver.point]
+    dx, dy = float(ox) - float(sx), float(oy) - float(sy)
     got = math.atan2(dy, dx)
     if abs(math.remainder(got - angle, 2.0 * math.pi)) > 1e-7:
         branch = scene.assembly[other]
