@@ -13,7 +13,8 @@ well-conditioned solve).
 Paths: the lean closed form in float64 (numpy), the numpy sweep (the staged construction on
 arrays: unit directions, then intersections), the numba sweep (``jit=True``: the fused kernel
 of ``polygons/fused.py``, the 2×2 Cartesian solve), the compiled program one position at a
-time (``compile_scene(...).solve(θ)``: the staged construction over floats).
+time (``compile_scene(...).solve(θ)``: the staged construction over floats), and its
+answers-only program (``compile_scene(..., outputs=(...))``: the lines as given, the 2×2 solve).
 """
 from __future__ import annotations
 
@@ -89,6 +90,11 @@ def measure(gamma_deg: float) -> dict:
     prog = compile_scene(scene)
     sols = [prog.solve(float(x)) for x in xs]
     out["compiled (Python)"] = _err(
+        {f"C.{q}{c}": [getattr(s, {"v": "velocity", "a": "acceleration"}[q])("C")[i]
+                       for s in sols] for q in "va" for i, c in enumerate("xy")}, ref)
+    lean = compile_scene(scene, outputs=("pos", "velocity", "acceleration"))
+    sols = [lean.solve(float(x)) for x in xs]
+    out["compiled answers only (Python)"] = _err(
         {f"C.{q}{c}": [getattr(s, {"v": "velocity", "a": "acceleration"}[q])("C")[i]
                        for s in sols] for q in "va" for i, c in enumerate("xy")}, ref)
     angle = float(np.min(sweep(scene, inputs=xs).angle_deg))

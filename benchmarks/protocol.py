@@ -13,8 +13,13 @@ The rules, the same for polygons, pylinkage and the numpy closed form:
 * "pre-built" times the solve of a model built beforehand (our compiled program or staged
   scene, pylinkage's Linkage); "build + solve" times building it from the parsed geometry
   and solving once, inside the region;
-* the cold start is the whole process (``python -m polygons ...``), median of N runs after
-  one that warms the OS caches and writes the bytecode, as on a user's machine.
+* the cold start is the whole process a user's shell starts: the ``polygons`` console script
+  installed beside this interpreter (``<venv>/bin/polygons``: site with its ``.pth`` files,
+  the editable install's finder among them), the code under test first on ``PYTHONPATH``,
+  bytecode caching on; the commands interleaved, one untimed round first (it warms the OS
+  caches and writes the bytecode); the median over N rounds of the wall time and of the
+  child's CPU time (user + system, ``RUSAGE_CHILDREN``), which a loaded machine inflates
+  less than the wall time.
 """
 from __future__ import annotations
 
@@ -221,15 +226,47 @@ def cli_sweep(root, case: str, steps: int, runs: int) -> float:
     return statistics.median(times)
 
 
-def cold(root, argv, runs: int) -> float:
-    """Median wall time (s) of ``python -m polygons ARGV`` as a whole process, as a user's
-    shell runs it: bytecode caching on (``PYTHONDONTWRITEBYTECODE`` removed from the child's
-    environment: with it set every module is compiled from source at every start, ~60 ms more)."""
+def polygons_command(root) -> tuple[list[str], dict]:
+    """The command a user runs and its environment: the console script installed beside this
+    interpreter (``pip install -e .`` writes ``<venv>/bin/polygons``; ``python -m polygons``
+    when there is none), with ``root`` first on ``PYTHONPATH`` so that the script imports the
+    code under test (an editable install maps ``polygons`` to the tree it was made from), and
+    ``PYTHONDONTWRITEBYTECODE`` removed (with it set every module is compiled from source at
+    every start, ~60 ms more)."""
+    script = Path(sys.executable).parent / ("polygons.exe" if os.name == "nt" else "polygons")
+    cmd = [str(script)] if script.is_file() else [sys.executable, "-m", "polygons"]
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
-    times = []
-    for _ in range(runs + 1):
-        t0 = time.perf_counter_ns()
-        subprocess.run([sys.executable, "-m", "polygons", *argv], cwd=root,
-                       capture_output=True, check=False, env=env)
-        times.append((time.perf_counter_ns() - t0) * 1e-9)
-    return statistics.median(times[1:])          # the first run warms the OS caches
+    env["PYTHONPATH"] = os.pathsep.join([str(root)] + [p for p in env.get("PYTHONPATH", "")
+                                                        .split(os.pathsep) if p])
+    return cmd, env
+
+
+def cold_times(root, commands: dict, runs: int) -> dict:
+    """For each ``commands[name]`` (argv after ``polygons``), run as a whole process by
+    :func:`polygons_command`: ``{"wall": s, "cpu": s, "command": text}``, the medians over
+    ``runs`` rounds (the commands interleaved in each round, one untimed round first).  The
+    CPU time is the child's user + system time (``RUSAGE_CHILDREN`` before and after)."""
+    import resource
+    cmd, env = polygons_command(root)
+    wall = {k: [] for k in commands}
+    cpu = {k: [] for k in commands}
+    clock = time.perf_counter_ns
+    for i in range(runs + 1):
+        for name, argv in commands.items():
+            r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+            t0 = clock()
+            subprocess.run(cmd + list(argv), cwd=root, capture_output=True, check=False,
+                           env=env)
+            t1 = clock()
+            r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+            if i:                                 # the first round warms the OS caches
+                wall[name].append((t1 - t0) * 1e-9)
+                cpu[name].append(r1.ru_utime - r0.ru_utime + r1.ru_stime - r0.ru_stime)
+    shown = " ".join(Path(c).name if j == 0 else c for j, c in enumerate(cmd))
+    return {k: {"wall": statistics.median(wall[k]), "cpu": statistics.median(cpu[k]),
+                "command": f"{shown} {' '.join(commands[k])}"} for k in commands}
+
+
+def cold(root, argv, runs: int) -> float:
+    """Median wall time (s) of ``polygons ARGV`` as a whole process (:func:`cold_times`)."""
+    return cold_times(root, {"cold": argv}, runs)["cold"]["wall"]

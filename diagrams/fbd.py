@@ -99,6 +99,15 @@ def _fmt(x: float) -> str:
     return f"{x:.4g}"
 
 
+def _gap_words(gap: float, drawn) -> str:
+    """The polygon's closing gap in words: 'gap 0 N' below 10⁻⁹ of its largest force (the
+    arithmetic's rounding: it printed 'gap 7.3e-15 N'), else 'gap 0.12 N'."""
+    big = max((float(np.hypot(*v.force)) for v in drawn), default=0.0)
+    if gap <= 1e-9 * max(big, 1e-300):
+        return "gap 0 N"
+    return f"gap {_fmt(gap)} N"
+
+
 def _dir(v) -> float:
     return math.degrees(math.atan2(v[1], v[0])) % 360.0
 
@@ -106,7 +115,7 @@ def _dir(v) -> float:
 def drawings(an: Analysis):
     """(file stem, Drawing) for every state and body that carries a force."""
     from .labels import bounds, text_box
-    from .layout import arrow_head, compose
+    from .layout import FORCE_LEGEND_MM, arrow_head, compose
     from .model import Arrow, Circle, Group, Polyline, Segment
     from .scale import Scale, round_up
 
@@ -288,8 +297,9 @@ def drawings(an: Analysis):
                 content_box=box2,
                 legend=[(f"{v.name}: {_fmt(float(np.hypot(*v.force)))} N ∠"
                          f"{_dir(v.force):.2f}°", "normal") for v in drawn] + said,
-                scale=fscale,
-                caption=[f"The polygon closes (gap {gap:.2g} N): the body is in equilibrium "
+                scale=fscale, legend_width=FORCE_LEGEND_MM,
+                caption=[f"The polygon closes ({_gap_words(gap, drawn)}): the body is in "
+                         f"equilibrium "
                          f"with its inertia force (d'Alembert)."
                          + (f" Couples (not in the polygon): {couple_words}."
                             if couples else "")],

@@ -27,6 +27,11 @@ MAX_SCALE_TEXT = 18.0
 STAGE_TEXT_SCALE = 1.5
 #: tallest printed stage figure (mm)
 STAGE_HEIGHT = 44.0
+#: a diagram whose stage figures, drawn whole at the finished diagram's scale, print
+#: reduced below this (the median: a triad's polygon, its insets far apart, ×0.13) is
+#: staged in details: each stage's own vectors at their own stated scale
+#: (:func:`detail`)
+DETAIL_BELOW = 0.2
 #: the printable area (mm) of the handout's A4 portrait page, and the height a finished
 #: diagram's heading and note take on it: a finished diagram is printed at its stated scale,
 #: so it must fit this (else it is drawn at the round scale that does, and says so)
@@ -203,7 +208,10 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
     The labels' enlargement is estimated from the finished layout ``final`` (labels at their
     own size: the figure's reduction barely depends on them), with a tenth to spare, and
     checked on the figure drawn: one label placement per diagram, rarely two."""
+    from dataclasses import replace
+
     from . import polygon
+    from .strokes import construction
     drop = ("heading", "caption", "key", "legend")
 
     def reduction(lay):
@@ -218,7 +226,13 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
             if stage is None:
                 continue
             new = {s.number for s in cell if s.kind == "line"}
-            t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
+            if details:
+                part = detail(con, stage, new, lay)
+                t = polygon.drawing(sol, part, stage)
+                t = replace(t, meta={**t.meta, "detail": part.scale.statement})
+                t = trimmed(_as_new(t, new), drop)
+            else:
+                t = trimmed(_as_new(polygon.drawing(sol, lay, stage), new), drop)
             k = stage_width(t.width, t.height) / t.width
             for _ in range(3):      # the larger bar may enlarge the figure, reducing it more
                 # (a hundredth to spare for the printed width's rounding)
@@ -234,16 +248,110 @@ def _stages(sol: Solution, diagram: str, scale, paper, final=None):
         return out, least
 
     smallest = min(polygon.LABEL_SIZE, polygon.LINE_LABEL_SIZE, polygon.VECTOR_LABEL_SIZE)
-    ts = STAGE_TEXT_SCALE
+    first = STAGE_TEXT_SCALE
     if final is not None:
-        ts = max(ts, round(1.1 * PRINTED_LABEL / (smallest * min(reduction(final), 1.0)), 2))
-    for _ in range(3):      # checked on the figures drawn: a stage may be reduced more
-        lay = polygon.layout(sol, diagram, scale, paper, ts)     # than the last one, a
-        out, printed = staged(lay)                              # crowded label set smaller
-        if printed >= 1.01 * PRINTED_LABEL:     # (a hundredth for the printed width's
-            break                               # rounding)
-        ts = round(ts * PRINTED_LABEL / printed * 1.03, 2)
+        first = max(first, round(1.1 * PRINTED_LABEL / (smallest * min(reduction(final), 1.0)),
+                                 2))
+    con = None
+
+    def drawn(ts):
+        """The stage figures with labels set ``ts`` larger, enlarged until they print
+        PRINTED_LABEL high: checked on the figures drawn, since a stage may be reduced more
+        than the last one and a crowded label set smaller (a hundredth to spare for the
+        printed width's rounding).  A detail (``details``) gets ``ts`` itself for its
+        layout, made per stage."""
+        for _ in range(3):
+            lay = ts if details else polygon.layout(sol, diagram, scale, paper, ts)
+            out, printed = staged(lay)
+            if printed >= 1.01 * PRINTED_LABEL:
+                break
+            ts = round(ts * PRINTED_LABEL / printed * 1.03, 2)
+        return out
+
+    details = False
+    out = drawn(first)
+    shrink = sorted(stage_width(d.width, d.height) / d.width for d in out)
+    if shrink and shrink[len(shrink) // 2] < DETAIL_BELOW:
+        # drawn whole, the stages print too small to read (a triad's polygon, its labels
+        # set larger and its insets far apart): each is drawn as a detail of its own
+        # vectors at its own stated scale
+        details, con = True, construction(sol, diagram)
+        out = drawn(STAGE_TEXT_SCALE)
     return out
+
+
+#: the drawing area (mm, before a handout's reduction) of a stage detail (:func:`detail`)
+DETAIL_MM = (76.0, 30.0)
+#: a stage detail enlarges its step at most this much over the stage drawn whole
+DETAIL_ZOOM = 50.0
+#: an earlier vector shorter than this (mm) is left out of a stage detail's context
+DETAIL_CONTEXT_MM = 6.0
+
+
+def _stroke_points(st) -> list:
+    """The SI points stroke ``st`` is drawn through (a line: its anchor)."""
+    return [st.a] if st.kind == "line" else [st.a, st.b]
+
+
+def detail(con, stage: int, also=(), text_scale: float = 1.0,
+           size: tuple[float, float] = DETAIL_MM):
+    """Stage ``stage`` of ``con`` cropped to its own strokes at its own round scale: the
+    scale k (SI per cm) is the finest at which the stage's new strokes (those of its step and
+    of the steps ``also`` -- the lines its intersection uses) fit ``size``,
+    k = roundup(max(w·10/W, h·10/H)); the window of ``size`` centred on them (on the whole
+    stage when that fits too) keeps the earlier strokes and vertices lying in it, drawn
+    faded as in any stage figure.  Used where the stage drawn whole at the finished
+    diagram's scale is too crowded to read once reduced to a handout's column (a triad)."""
+    from dataclasses import replace
+
+    from .labels import Box, bounds
+    from .polygon import LABEL_SIZE, layout_of
+    from .scale import QUANTITY_OF, make, round_up
+    from .text import ASCENT, DESCENT
+    upto = con.steps[stage - 1].number
+    own = {upto, *also}
+    # (an intersection's resultant from the pole, dotted, is drawn when it lies in the
+    # window: the detail is the lines and the vertex they fix)
+    new = [p for st in con.strokes if st.step in own and st.role != "result"
+           for p in _stroke_points(st)]
+    so_far = ([p for st in con.strokes if st.step <= upto for p in _stroke_points(st)]
+              + [v for n, v in con.vertices.items() if con.born.get(n, 0) <= upto])
+    W, H = size
+
+    def per_cm(b: Box) -> float:
+        return max((b.x1 - b.x0) * 10.0 / W, (b.y1 - b.y0) * 10.0 / H)
+    whole = bounds(so_far)
+    k_all = round_up(per_cm(whole)) or 1.0
+    nb = bounds(new or so_far)
+    k = max(round_up(per_cm(nb)), round_up(k_all / DETAIL_ZOOM)) or k_all
+    centre = (whole if k >= k_all else nb).centre
+    half = (W * k / 20.0, H * k / 20.0)
+    win = Box(centre[0] - half[0], centre[1] - half[1], centre[0] + half[0],
+              centre[1] + half[1])
+    inside = win.grown(1e-9 * k)
+    mm = 10.0 / k
+    # the context: an earlier stroke lying in the window and, an arrow, drawn
+    # DETAIL_CONTEXT_MM long at least; an earlier vertex not crowding one already kept (the
+    # step's own first): no inset for the context, whose vectors the figures before drew
+    mine = {st for st in con.strokes if st.step in own and st.role != "result"}
+    strokes = tuple(st for st in con.strokes if st.step <= upto and (
+        st in mine or all(inside.contains(p) for p in _stroke_points(st)) and (
+            st.kind != "arrow" or math.dist(st.a, st.b) * mm >= DETAIL_CONTEXT_MM)))
+    ends = {n for st in strokes if st in mine for n in (st.frm, st.to) if n}
+    near = (ASCENT + DESCENT) * LABEL_SIZE * text_scale
+    vertices = {n: v for n, v in con.vertices.items() if n in ends}
+    for st in strokes:
+        for n in (st.frm, st.to):
+            if not n or n in vertices:
+                continue
+            v = con.vertices[n]
+            if all(math.dist(v, u) * mm >= near for u in vertices.values()):
+                vertices[n] = v
+    strokes = tuple(st for st in strokes if st in mine
+                    or all(n in vertices for n in (st.frm, st.to) if n))
+    part = replace(con, strokes=strokes, vertices=vertices)
+    return layout_of(part, make(QUANTITY_OF.get(con.diagram, con.diagram), k), win,
+                     text_scale)
 
 
 #: which of two overlapping labels of a stage figure is kept (higher first): the stage's own

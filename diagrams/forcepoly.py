@@ -175,7 +175,7 @@ def joint_drawings(an, st):
 
 def _drawings(groups, fp, st):
     from .labels import bounds, box_hits_segment, text_box
-    from .layout import arrow_head, compose
+    from .layout import FORCE_LEGEND_MM, arrow_head, compose
     from .model import Arrow, Circle, Group, Segment
     from .scale import Scale, round_up
 
@@ -354,6 +354,7 @@ def _drawings(groups, fp, st):
                                tuple([start] + extra + arrows)),
                          Group("labels", "labels", "names", tuple(labels))],
                 content_box=box, legend=legend, scale=fscale, caption=[cap],
+                legend_width=FORCE_LEGEND_MM,
                 scale_statement=fscale.statement, meta={}, key=key)))
     return out
 
@@ -417,7 +418,7 @@ def _stage_caption(g, stage, nst) -> str:
 def lever_drawings(an, st):
     """(stem, Drawing) of Zhukovsky's lever at ``st`` and its stages."""
     from .labels import bounds, box_hits_segment, text_box
-    from .layout import arrow_head, compose
+    from .layout import FORCE_LEGEND_MM, arrow_head, compose
     from .model import Arrow, Circle, Group, Segment
     from .scale import Scale, round_up
 
@@ -529,7 +530,7 @@ def lever_drawings(an, st):
             content=[Group("lever", "lever", "the turned velocity polygon", tuple(items)),
                      Group("forces", "forces", "forces at their images", tuple(arrows)),
                      Group("labels", "labels", "names", tuple(labels))],
-            content_box=box, legend=legend, scale=vscale,
+            content_box=box, legend=legend, scale=vscale, legend_width=FORCE_LEGEND_MM,
             caption=[cap + f" Lever to the velocity scale; force arrows "
                      f"not to scale: 6 mm + 12 mm × √(F/F_max), F_max = {fbig:.4g} N (the "
                      f"moments come from their points and directions; values in the legend)."],

@@ -318,9 +318,14 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                 drawn = [s.number for s in cell if s.kind in DRAWABLE]
                 steps = (f"step {drawn[0]}" if len(drawn) == 1 else
                          f"steps {', '.join(map(str, drawn[:-1]))} and {drawn[-1]}")
+                part = figs.drawing[name].meta.get("detail") if name in figs.drawing \
+                    else None
+                # a detail (a crowded polygon's stage cropped to its own vectors) says so
+                # and states its own scale
+                about = (f": a detail at {sym(part)}" if part else "")
                 fig = (f'<figure class="diagram stage{" narrow" if narrow else ""}">'
                        f"{inline_svg(svg, name, 'figure', width, f'{what} diagram, {steps}')}"
-                       f"<figcaption>The {what} diagram after {steps}"
+                       f"<figcaption>The {what} diagram after {steps}{about}"
                        f"</figcaption></figure>\n")
             doc.add(f'<li class="step" id="{diagram}-step-{nums[0]}" data-step="'
                     f'{" ".join(map(str, nums))}">\n')

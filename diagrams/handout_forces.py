@@ -297,9 +297,12 @@ def _lever(an) -> str:
         if lv.unit_rate:
             out.append("<p>The input is at rest: the lever is drawn on the velocity polygon "
                        "of a unit input rate.</p>\n")
-        for stem, d in forcepoly.lever_drawings(an, st):
-            if getattr(d, "stage", None) is None:
-                out.append(_figure(stem, d, "Zhukovsky's lever"))
+        # the lever (~150 mm tall) after its table and sum: set before them it left half
+        # the page above empty when it did not fit there, and its table's tail on a page
+        # of its own (the toggle press's key: 7 pages -> 6)
+        lever = [_figure(stem, d, "Zhukovsky's lever")
+                 for stem, d in forcepoly.lever_drawings(an, st)
+                 if getattr(d, "stage", None) is None]
         out.append(f'<table class="answer forces" id="zhukovsky-moments-{_slug(st.name)}">'
                    '\n<tr><th>force</th>'
                    '<th class="n">|F| N</th><th class="n">direction</th><th class="n">image '
@@ -322,6 +325,7 @@ def _lever(an) -> str:
                    f"{_n(lv.moment_sum)}; the moment of a unit effort = {_n(lv.unit_moment)}: "
                    f"<strong>{esc(effort.words(an.model))}: "
                    f"{esc(effort_words(an, lv.effort))}</strong>{vw_text}.</p>\n")
+        out += lever
     out.append("</section>\n")
     return "".join(out)
 

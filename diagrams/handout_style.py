@@ -106,6 +106,9 @@ li.step .num { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; font-weig
                display: inline-block; min-width: 8mm; }
 .formula { font-size: 9.5pt; margin: 0.5mm 0 1mm 8mm; }
 .formula .meet { white-space: nowrap; }
+/* a worked line is not split between columns (li.step's orphans: 1 is inherited): "m/s²
+   (lines meet at 90°)" opened a column of Fig 7's key */
+.formula { orphans: 2; widows: 2; }
 .formula.symbolic { color: #333; }
 .explain { border: 0.3mm solid #000; padding: 1mm 2.5mm; margin: 1mm 0 2mm 0;
            break-inside: avoid; page-break-inside: avoid; font-size: 8pt; line-height: 1.28; }

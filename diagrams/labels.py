@@ -18,7 +18,7 @@ Pt = tuple[float, float]
 LABEL_GAP = 0.35
 #: clear space (mm) kept between two labels side by side on one line (their middles within half
 #: a height), so that they never read as one ("(a_P2)ⁿ_O2 (a_P4)ᵗ_O4"): close to a word space
-LABEL_GAP_X = 0.6
+LABEL_GAP_X = 1.6
 
 
 @dataclass(frozen=True)

@@ -17,6 +17,10 @@ GAP = 8.0
 TITLE_SIZE = 4.2
 SUBTITLE_SIZE = 3.0
 LEGEND_SIZE = 2.8
+#: a wrapped legend row's further lines start this much (mm) to the right
+LEGEND_INDENT = 3.0
+#: the force drawings' legend rows are wrapped to this width (mm, typeset)
+FORCE_LEGEND_MM = 70.0
 CAPTION_SIZE = 3.0
 SCALE_SIZE = 2.6
 LINE = 1.45           # line spacing, × font size
@@ -93,17 +97,29 @@ def _text_lines(lines, size, role, x, top, weight="normal", faded=False):
 def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: str,
             desc: str, content: list[Group], content_box: Box, legend: list[tuple[str, str]],
             scale: Scale, caption: list[str], scale_statement: str, meta: dict,
-            key: list[tuple[str, str, bool]] = ()) -> Drawing:
+            key: list[tuple[str, str, bool]] = (),
+            legend_width: float | None = None) -> Drawing:
     """Put the drawing (``content`` inside ``content_box``, content coordinates) on a page.
 
     ``legend`` is a list of (text, weight); ``caption`` a list of paragraphs; ``key`` the
     line styles drawn, as (style, words, arrow?), shown as samples above the legend.
+    ``legend_width`` (mm): a longer legend row is wrapped to it, measured by its typeset
+    width, its further lines indented (the force drawings' rows: '−m a_G (O2P) ≈ 0 (1.13 mm
+    at this scale: 2.824 N, not drawn)' widened the figure by half).
     """
+    indent: list[float] = [0.0] * len(legend)
+    if legend_width:
+        rows, indent = [], []
+        for text, weight in legend:
+            for i, ln in enumerate(wrap(text, legend_width, LEGEND_SIZE) if text else [text]):
+                rows.append((ln, weight))
+                indent.append(LEGEND_INDENT if i else 0.0)
+        legend = rows
     cw, ch = content_box.x1 - content_box.x0, content_box.y1 - content_box.y0
     key_rows = ([("Key:", "bold")] + [(w, "normal") for _, w, _ in key]) if key else []
     key_w = max([KEY_SAMPLE + 2.0 + width(t, LEGEND_SIZE) for t, _ in key_rows[1:]]
                 + [width(t, LEGEND_SIZE) for t, _ in key_rows[:1]], default=0.0)
-    leg_w = max((width(t, LEGEND_SIZE) for t, _ in legend), default=0.0)
+    leg_w = max((width(t, LEGEND_SIZE) + d for (t, _), d in zip(legend, indent)), default=0.0)
     row = LINE * LEGEND_SIZE
     # beside the drawing while the page stays within A4 landscape; else below it, key and
     # legend side by side
@@ -167,8 +183,8 @@ def compose(*, name: str, kind: str, stage: int | None, title: str, subtitle: st
     if legend:
         items = []
         y = ly - ASCENT * LEGEND_SIZE
-        for text, weight in legend:
-            items.append(Text(lx, y, text, LEGEND_SIZE, role="legend", weight=weight))
+        for (text, weight), d in zip(legend, indent):
+            items.append(Text(lx + d, y, text, LEGEND_SIZE, role="legend", weight=weight))
             y -= row
         groups.append(Group("legend", "legend", "Legend: values measured on the drawing",
                             tuple(items)))

@@ -146,7 +146,8 @@ _TEMPLATE = """<!DOCTYPE html>
 </section>
 <section id="live"><div class="bar"><label for="angle">Crank position</label>
 <input id="angle" type="range" min="0" step="1"> <output id="angle-out" for="angle"></output>
-<label for="zoom">Polygons</label> <select id="zoom"><option value="1">× 1</option>
+<label for="zoom">Polygons</label> <select id="zoom"><option value="auto">fit</option>
+<option value="1">× 1</option>
 <option value="2">× 2</option><option value="4">× 4</option><option value="8">× 8</option>
 </select></div>
 <svg id="mech" class="live" viewBox="0 0 400 280" role="img"
@@ -156,8 +157,9 @@ _TEMPLATE = """<!DOCTYPE html>
  role="img" aria-label="Acceleration polygon"></svg></div>
 {KEY}
 <p class="note">Hover a link to highlight its vectors in both polygons. The polygons are drawn
-in components as in the static drawings, each at one scale for the whole cycle (the bar;
-"× 2" … enlarges them about the pole, still one scale for every position); the velocity
+in components as in the static drawings, each at one scale for the whole cycle (the bar, at "× 1";
+"× 2" … enlarges them about the pole, still one scale for every position; "fit", the start,
+fits each polygon to its panel at the position shown, the bar giving that scale); the velocity
 vectors on the linkage share one scale too.</p>
 </section>
 </main>

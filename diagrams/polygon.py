@@ -102,6 +102,13 @@ def scale_of(sol: Solution, diagram: str, scale: scales.Scale | None = None,
 def layout(sol: Solution, diagram: str, scale: scales.Scale | None = None,
            paper: str | None = None, text_scale: float = 1.0) -> Layout:
     scale, con, bb = scale_of(sol, diagram, scale, paper)
+    return layout_of(con, scale, bb, text_scale)
+
+
+def layout_of(con: Construction, scale: scales.Scale, bb: Box,
+              text_scale: float = 1.0) -> Layout:
+    """The layout of construction ``con`` at ``scale``, its SI extent ``bb`` drawn inside
+    the frame (a stage's detail: :func:`detail`, the finished polygon: :func:`layout`)."""
     extent = (bb.x1 - bb.x0, bb.y1 - bb.y0)
     k = scale.mm_per_si
     w, h = extent[0] * k, extent[1] * k

@@ -64,7 +64,13 @@ def measure_text(m: Step, sol: Solution | None = None, con: Construction | None 
         val = (f"{number(abs(m.value))} {unit}{words}" if words
                else f"{number(m.value)} {unit}")
     rhs = m.formula.split("=", 1)[1].strip() if "=" in m.formula else ""
-    return display(f"{m.draws} = {val}" + (f"  (= {rhs})" if rhs else ""))
+    name = m.draws
+    if con is not None and m.quantity and m.quantity != m.draws and sum(
+            x.draws == m.draws for x in con.measures) > 1:
+        # two results of one name (a pin in crossing slots: two sliding accelerations)
+        # named apart by their quantity: 'a_slide = (a_P)_P2 = …'
+        name = f"{m.draws} = {m.quantity}"
+    return display(f"{name} = {val}" + (f"  (= {rhs})" if rhs else ""))
 
 
 def prose(sol: Solution, con: Construction, text: str) -> str:

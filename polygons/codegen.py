@@ -20,8 +20,10 @@ This module imports neither shapely nor the diagrams.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
+from .codegen_lean import _INLINE, Perp as _Perp, fold as _fold, inline
 from .dyads.base import ARRAY_TWIN
 from .dyads.numeric import hypot_cols, namespace, where_scalar
 from .errors import UnsupportedError
@@ -34,12 +36,23 @@ from .steps import Diagram, Op, Step, Vertices
 PARALLEL_DEG = 1e-5
 WARN_DEG = 1.0
 
+#: the answers-only program's test of two lines u, v (of any length) meeting:
+#: (u × v)² > LEAN_TAN² (u · v)², i.e. an angle above PARALLEL_DEG by a relative 1e-9 — stricter
+#: than the full program's test by more than its rounding, so that where the lean program
+#: passes the full one does too; where it fails, the full program is run (its error, or its
+#: numbers: :meth:`polygons.compiled.Program.solve`).  A zero direction fails it too.
+LEAN_TAN = math.tan(math.radians(PARALLEL_DEG)) * (1.0 + 1e-9)
+
+#: what an answers-only program may compute (``compile_scene(scene, outputs=...)``): every
+#: placed point's position, velocity and acceleration, every link's ω and α, every slide's
+#: sliding velocity and acceleration
+ANSWERS = ("pos", "velocity", "acceleration", "omega", "alpha", "slide_v", "slide_a")
+
 V, A = Diagram.VELOCITY, Diagram.ACCELERATION
 _FIELDS = ("at", "vector", "point", "direction")
 
 
 _where, _hypot_cols = where_scalar, hypot_cols     # (the names jit reads)
-
 
 class _Fail(Exception):
     """Raised by generated code: ``args[0]`` indexes the program's failure table."""
@@ -59,8 +72,9 @@ class Source:
     # primitive's statement is evaluated in, so its locate is the program's to the last bit).
 
     def __init__(self, scene: Scene, sigma: dict, arrays: bool = False, meet=None,
-                 instruments=None):
+                 instruments=None, lean: bool = False):
         self.scene = scene
+        self.lean = lean               # answers only: raw directions, the 2×2 solve (LEAN)
         self.arrays = arrays           # the same code over (N,) arrays: no checks, margins kept
         self.meet = meet               # the intersection of two lines, or None: inline 2×2
         self.instruments = instruments  # the drawing board's noisy strokes, or None: exact
@@ -124,6 +138,8 @@ class Source:
     def call(self, fn, *args, n: int = 1) -> list[Name]:
         if self.arrays:
             fn = ARRAY_TWIN.get(fn, fn)
+        elif self.lean and fn in _INLINE:
+            return self.inline(fn, args, n)
         fname = f"_f_{fn.__name__}"
         self.namespace[fname] = fn
         names = [Name(f"v{self._n + i + 1}") for i in range(n)]
@@ -132,6 +148,10 @@ class Source:
         self.lines.append(Line(tuple(names), f"{', '.join(names)} = {fname}({args})",
                                args.reads))
         return names
+
+    def inline(self, fn, args, n: int) -> list[Name]:
+        """``fn(*args)`` written out in place (:func:`polygons.codegen_lean.inline`)."""
+        return inline(self, fn, args, n)
 
     def margin(self, m: str) -> None:
         """Fail where the dyad cannot close (the staged assembly's test: a two-closure dyad
@@ -200,12 +220,18 @@ class _Steps:
     def of(self, d, label):
         return self.vx[d][self.names.of(label)]
 
+    def held(self, e):
+        """``e`` in a local (a name or a literal as it is)."""
+        return e if isinstance(e, (Name, Lit)) or type(e) is str else self.g.let(e)
+
     def norm(self, v):
         return self.g.let("hypot({}, {})", v[0], v[1])
 
     def sub(self, a, b):
         if b == ("0.0", "0.0"):
             return a
+        if self.g.lean and a == ("0.0", "0.0"):
+            return self.g.vec(E("-{}", b[0]), E("-{}", b[1]))
         return self.g.vec(E("{} - {}", a[0], b[0]), E("{} - {}", a[1], b[1]))
 
     def cross(self, a, b):
@@ -271,12 +297,19 @@ class _Steps:
     def vector(self, s, vec, unit, terms):
         vec = self.drawn(s, "vector", vec)
         start = self.vx[s.diagram][s.start]
-        end = self.g.vec(E("{} + {}", start[0], vec[0]), E("{} + {}", start[1], vec[1]))
+        if self.g.lean and start == ("0.0", "0.0"):
+            end = (self.held(vec[0]), self.held(vec[1]))
+        else:
+            end = self.g.vec(E("{} + {}", start[0], vec[0]), E("{} + {}", start[1], vec[1]))
         self.vx[s.diagram][s.end] = end
         return dict(at=start, vector=vec, point=end), None, None, unit, terms
 
     def line(self, s, d, anchor):
         g = self.g
+        if g.lean:      # the direction as it comes (LEAN): its length cancels in the 2×2 solve
+            d = (self.held(d[0]), self.held(d[1]))
+            self.lines[(s.diagram, s.number)] = (anchor, d)
+            return anchor, d
         d = self.drawn(s, "direction", d)
         n = self.norm(d)
         g.fail_unless(E("{} != 0.0 and {} == {}", n, n, n), ("step", s, "zero"))
@@ -328,6 +361,9 @@ class _Steps:
     def line_perp(self, s):
         P, X = s.args
         r = self.r(P, X)
+        if self.g.lean:     # kept as ⟂ r: the 2×2 solve reads r itself (intersect)
+            self.lines[(s.diagram, s.number)] = (self.vx[s.diagram][s.start], _Perp(r))
+            return {}, None, None, "", ()
         return self.line_result(s, self.line(s, (E("-{}", r[1]), r[0]),
                                              self.vx[s.diagram][s.start]))
 
@@ -411,8 +447,23 @@ class _Steps:
     def intersect(self, s):
         g = self.g
         (p, u), (q, v) = (self.lines[(s.diagram, n)] for n in s.lines)
+        if g.lean and type(u) is _Perp and type(v) is _Perp:
+            return self.intersect_perp(s, p, u.r, q, v.r)
+        if g.lean:
+            u, v = (self.unperp(d) for d in (u, v))
         den = self.cross(u, v)
         dot = self.dot(u, v)
+        if g.lean:      # P + t u = Q + s v, u and v of any length: t = ((Q − P) × v)/(u × v)
+            g.fail_unless(E("{} * {} > {} * ({} * {})", den, den, Lit(repr(LEAN_TAN ** 2)),
+                            dot, dot), ("lean", s))
+            w = self.sub(q, p)
+            t = g.let("({} * {} - {} * {}) / {}", w[0], v[1], w[1], v[0], den)
+            if p == ("0.0", "0.0"):
+                pt = g.vec(E("{} * {}", t, u[0]), E("{} * {}", t, u[1]))
+            else:
+                pt = g.vec(E("{} + {} * {}", p[0], t, u[0]), E("{} + {} * {}", p[1], t, u[1]))
+            self.vx[s.diagram][s.end] = pt
+            return dict(point=pt), None, None, _unit_of(s.diagram), ()
         angle = g.let("degrees(atan2(abs({}), abs({})))", den, dot)
         g.crossings.append((den, dot, s))
         g.fail_unless(E("{} >= {}", angle, PARALLEL_DEG), ("step", s, "parallel"))
@@ -432,6 +483,30 @@ class _Steps:
             # about D where the pole is a = d), else from the pole
             (f"{self.names.named(s.args[0]) if s.args else self.names.pole}{s.end}",
              ("hypot", pt), unit))
+
+    def unperp(self, d):
+        """A direction kept as ⟂ r (:class:`_Perp`) as its components (−r_y, r_x)."""
+        return (self.held(E("-{}", d.r[1])), d.r[0]) if type(d) is _Perp else d
+
+    def intersect_perp(self, s, p, a, q, b):
+        """The 2×2 solve of the lines P + t ⟂a and Q + s ⟂b (⟂r = (−r_y, r_x)), written on a
+        and b: ⟂a × ⟂b = a × b, (Q − P) × ⟂b = (Q − P)·b, so t = ((Q − P)·b)/(a × b) and the
+        point is P + t ⟂a; the same test as :meth:`intersect`'s ((⟂a · ⟂b) = a·b)."""
+        g = self.g
+        den, dot = self.cross(a, b), self.dot(a, b)
+        g.fail_unless(E("{} * {} > {} * ({} * {})", den, den, Lit(repr(LEAN_TAN ** 2)),
+                        dot, dot), ("lean", s))
+        if q == ("0.0", "0.0"):         # Q the pole: (Q − P)·b = −(P·b)
+            t = g.let("-({} * {} + {} * {}) / {}", p[0], b[0], p[1], b[1], den)
+        else:
+            w = self.sub(q, p)
+            t = g.let("({} * {} + {} * {}) / {}", w[0], b[0], w[1], b[1], den)
+        if p == ("0.0", "0.0"):
+            pt = g.vec(E("-({} * {})", t, a[1]), E("{} * {}", t, a[0]))
+        else:
+            pt = g.vec(E("{} - {} * {}", p[0], t, a[1]), E("{} + {} * {}", p[1], t, a[0]))
+        self.vx[s.diagram][s.end] = pt
+        return dict(point=pt), None, None, _unit_of(s.diagram), ()
 
     def omega_op(self, s):
         L, P, Q = s.args
@@ -534,6 +609,9 @@ class _Code:
     fails: tuple
     source: str
     namespace: dict = field(default=None, compare=False, repr=False)  # the names it calls
+    #: an answers-only program's: ``derive(params)`` → the parameters' own combinations its
+    #: function reads after the parameters (``c0``, ``c1`` …; :func:`_fold`), or None
+    derive: object = field(default=None, compare=False, repr=False)
 
 
 
@@ -566,8 +644,8 @@ def _code_name(text: str) -> str:
 
 
 def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
-             arrays: bool = False, meet=None, instruments=None, positions: bool = False
-             ) -> _Code:
+             arrays: bool = False, meet=None, instruments=None, positions: bool = False,
+             outputs: tuple | None = None) -> _Code:
     """The source of ``_solve(x, params)`` for ``plan``'s construction ``steps``, compiled.
 
     With ``meet`` (the staged solver) the intersections call ``meet(px, py, ux, uy, qx, qy,
@@ -576,9 +654,17 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
 
     With ``instruments`` (the drawing board) every vector, line direction and marked point
     passes through its noisy stroke (:meth:`_Steps.drawn`); with ``positions`` every point is
-    a parameter ``("pos", label, 0 | 1)`` (the space diagram as drawn), not placed again."""
+    a parameter ``("pos", label, 0 | 1)`` (the space diagram as drawn), not placed again.
+
+    With ``outputs`` (kinds of :data:`ANSWERS`) the program is *answers only* (over floats):
+    its record holds those numbers and nothing of the steps; each line keeps its direction as
+    the op gives it (unnormalised) and an intersection is the 2×2 solve
+    P + t u = Q + s v, t = ((Q − P) × v)/(u × v), its test ``(u × v)² > LEAN_TAN² (u · v)²``;
+    the rest is dropped as dead code, and each local read once is written into its reader
+    (:func:`_fold`: the same operations in the same order, fewer statements)."""
     check_compilable(scene, plan, steps)
-    g = Source(scene, sigma, arrays, meet, instruments)
+    lean = outputs is not None
+    g = Source(scene, sigma, arrays, meet, instruments, lean=lean)
     if positions:
         for label in list(scene.ground) + [x for d in plan.dyads for x in d.placed]:
             g.place(label, g.param(("pos", label, 0)), g.param(("pos", label, 1)))
@@ -615,23 +701,27 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
                            None if value is None else put(value),
                            None if angle is None else put(angle), unit,
                            tuple((sym, _lazy(v, put), u) for sym, v, u in terms)))
-    if arrays:      # only the vertices, rates and margins: the step records' numbers are
-        out.clear()     # left out (and their code dropped as dead)
+    if arrays or lean:  # only the vertices, rates and margins: the step records' numbers
+        out.clear()     # are left out (and their code dropped as dead)
         slot.clear()
         layout = []
+    asked = set(ANSWERS + ("coriolis",) if outputs is None else outputs)
     index = {}
     for label, (x, y) in g.placed.items():
-        index[("pos", label)] = (put(x), put(y))
+        if "pos" in asked:
+            index[("pos", label)] = (put(x), put(y))
         for d in (V, A):
-            if names.of(label) in st.vx[d]:
+            if d.value in asked and names.of(label) in st.vx[d]:
                 vx = st.vx[d][names.of(label)]
                 index[(d.value, label)] = (put(vx[0]), put(vx[1]))
     for key, table in (("omega", st.omega), ("alpha", st.alpha), ("slide_v", st.slide_v),
                        ("slide_a", st.slide_a)):
         for name, v in table.items():
-            index[(key, name)] = put(v)
+            if key in asked:
+                index[(key, name)] = put(v)
     for pin, c in st.cor.items():
-        index[("coriolis", pin)] = (put(c[0]), put(c[1]))
+        if "coriolis" in asked:
+            index[("coriolis", pin)] = (put(c[0]), put(c[1]))
     if meet is not None:        # what the staged Solution reports besides the steps
         for d in (V, A):
             for vertex, (x, y) in st.vx[d].items():
@@ -660,10 +750,21 @@ def generate(scene: Scene, plan: Plan, steps: tuple[Step, ...], sigma: dict,
     src = (f"def _solve(x, _k):\n    ({params}{',' if len(g.getters) == 1 else ''}) = _k\n"
            f"    {body}\n    return ({', '.join(out)},)\n")
     ns = dict(g.namespace)
-    exec(compile(src, f"<polygons.compiled {_code_name(scene.title or scene.file)}>", "exec"),
+    run, derive = src, None
+    if lean:
+        run, consts = _fold(src, len(g.getters))
+        if consts:      # the parameters' own combinations, computed once per scene
+            dsrc = (f"def _derive(_k):\n    ({params},) = _k\n"
+                    f"    return ({', '.join(consts)},)\n")
+            exec(compile(dsrc, "<polygons.compiled derive>", "exec"), ns)
+            derive = ns["_derive"]
+    if not arrays:      # over floats every name it calls a local (bound as a default)
+        bound = ", ".join(f"{k}={k}" for k in ns if k.isidentifier())
+        run = run.replace("def _solve(x, _k):", f"def _solve(x, _k, {bound}):", 1)
+    exec(compile(run, f"<polygons.compiled {_code_name(scene.title or scene.file)}>", "exec"),
          ns)
     return _Code(ns["_solve"], tuple(g.getters), tuple(layout), index, tuple(g.fails), src,
-                 g.namespace)
+                 g.namespace, derive)
 
 
 def _lazy(v, put):

@@ -29,9 +29,9 @@ from typing import Mapping
 
 import numpy as np
 
-from .codegen import (PARALLEL_DEG, WARN_DEG, NotCompiled,  # noqa: F401 (read from here)
-                      _Code, _Fail, _slot_kinds, generate)
-from .errors import ConstructionError, ParallelLinesError
+from .codegen import (ANSWERS, PARALLEL_DEG, WARN_DEG,  # noqa: F401 (read from here)
+                      NotCompiled, _Code, _Fail, _slot_kinds, generate)
+from .errors import ConstructionError, ParallelLinesError, UnsupportedError
 from .plan import Plan, construction, make_plan
 from .position import assemble, driver_input, dyad_failure
 from .scene import Scene
@@ -157,14 +157,39 @@ class Program:
     params: tuple
     x0: float
     fn: object = None         # code.fn, held here for the call's sake
+    outputs: tuple | None = None    # answers only: the kinds computed (None: every step's)
+    full: "Program | None" = None   # answers only: the full program, run where this fails
 
     def solve(self, x: float | None = None) -> "CompiledSolution":
-        """Every step's numbers at input ``x`` (θ in rad or s in m; default the scene's)."""
+        """Every step's numbers at input ``x`` (θ in rad or s in m; default the scene's); an
+        answers-only program's (``outputs``) answers only."""
         try:
             return CompiledSolution(self, self.fn(self.x0 if x is None else float(x),
                                                   self.params))
         except _Fail as f:
+            if self.full is not None:
+                return self._by_full(x)
             raise self._error(self.code.fails[f.args[0]], x) from None
+        except ArithmeticError:
+            if self.full is not None:
+                return self._by_full(x)
+            raise
+
+    def _by_full(self, x) -> "CompiledSolution":
+        """Where the answers-only test of a construction line fails (two lines within
+        PARALLEL_DEG × (1 + 1e-9) of parallel): the full program's error, or its answers."""
+        r = self.full.solve(x).record
+        r = r.tolist() if isinstance(r, np.ndarray) else r
+        full, mine = self.full.code.index, self.code.index
+        rec = [0.0] * (1 + max((max(i) if isinstance(i, tuple) else i)
+                               for i in mine.values()))
+        for key, i in mine.items():
+            if isinstance(i, tuple):
+                for a, b in zip(i, full[key]):
+                    rec[a] = r[b]
+            else:
+                rec[i] = r[full[key]]
+        return CompiledSolution(self, tuple(rec))
 
 
     def solve_along(self, xs, start: int = 0) -> list:
@@ -191,7 +216,11 @@ class Program:
                     params = _params(prog.code, prog.scene, sigma)
                     if isinstance(prog.params, np.ndarray):     # the numba kernel's
                         params = np.array(params, dtype=float)
-                    prog = replace(prog, sigma=sigma, params=params)
+                    full = prog.full        # (an answers-only program's follows too)
+                    if full is not None:
+                        full = replace(full, sigma=sigma,
+                                       params=_params(full.code, full.scene, sigma))
+                    prog = replace(prog, sigma=sigma, params=params, full=full)
         return out
 
     def _error(self, why, x):
@@ -241,13 +270,25 @@ def _kernel(code: _Code):
     return jit.cached(code, jit.record_kernel)
 
 
-def compile_scene(scene: Scene, plan: Plan | None = None, jit: bool = False) -> Program:
+def compile_scene(scene: Scene, plan: Plan | None = None, jit: bool = False,
+                  outputs=None) -> Program:
     """Plan ``scene``, take its closures from the staged assembly, and compile (or fetch from
     the cache, keyed on the plan's dyads and steps) the float function of its construction.
     With ``jit=True`` and numba installed the function is also compiled to machine code
-    (:mod:`polygons.jit`; a float64 array for the record, the same numbers to rounding)."""
+    (:mod:`polygons.jit`; a float64 array for the record, the same numbers to rounding).
+
+    ``outputs`` (some of :data:`ANSWERS`: "pos", "velocity", "acceleration", "omega",
+    "alpha", "slide_v", "slide_a") makes an *answers-only* program: the same construction
+    generated from the same statements (both diagrams), keeping only what those answers need —
+    no step records, no unit directions (each intersection the 2×2 solve of its lines as
+    given), the rest dropped as dead code.  Its solution answers ``position``, ``velocity``,
+    ``acceleration``, ``omega``, ``alpha`` for the kinds asked; ``steps`` it refuses.  Where
+    one of its line tests fails (near a toggle) the full program is run: its error, or its
+    numbers."""
     check_handles("the compiled evaluator", HANDLES, scene.model, scene.file)
     plan = plan or make_plan(scene)
+    if outputs is not None:
+        return _answers_only(scene, plan, jit, outputs)
     steps = construction(plan)
     sigma = _sigmas(plan)
     key = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)), _slot_kinds(scene))
@@ -261,11 +302,40 @@ def compile_scene(scene: Scene, plan: Plan | None = None, jit: bool = False) -> 
                    float(driver_input(scene)), code.fn)
 
 
+def _answers_only(scene: Scene, plan: Plan, jit: bool, outputs) -> Program:
+    """:func:`compile_scene` with ``outputs``: the answers-only program (and the full one of
+    both diagrams, run where its line tests fail)."""
+    kinds = (outputs,) if isinstance(outputs, str) else tuple(outputs)
+    bad = [k for k in kinds if k not in ANSWERS]
+    if bad or not kinds:
+        raise UnsupportedError(f"compile_scene outputs {', '.join(map(repr, bad)) or '()'}: "
+                               f"an answers-only program computes {', '.join(ANSWERS)}",
+                               file=scene.file)
+    kinds = tuple(k for k in ANSWERS if k in kinds)
+    steps = construction(plan, tuple(Diagram))
+    sigma = _sigmas(plan)
+    shape = (plan.dyads, steps, tuple(scene.ground), tuple(sorted(sigma)), _slot_kinds(scene))
+    code = _cached(("answers", kinds) + shape,
+                   lambda: generate(scene, plan, steps, sigma, outputs=kinds), scene)
+    fcode = _cached(shape, lambda: generate(scene, plan, steps, sigma), scene)
+    x0 = float(driver_input(scene))
+    full = Program(scene, plan, steps, sigma, fcode, _params(fcode, scene, sigma), x0,
+                   fcode.fn)
+    kernel = _kernel(code) if jit else None
+    if kernel is not None:
+        return Program(scene, plan, steps, sigma, code,
+                       np.array(_params(code, scene, sigma), dtype=float), x0, kernel,
+                       kinds, full)
+    return Program(scene, plan, steps, sigma, code, _params(code, scene, sigma), x0, code.fn,
+                   kinds, full)
+
+
 def _params(code: _Code, scene: Scene, sigma: dict) -> tuple:
     """The parameters of a program generated from ``scene``'s topology, read from ``scene``:
     its numbers, and the closures (``("sigma", label)``) from ``sigma``."""
-    return tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
-                 for get in code.getters)
+    params = tuple(float(sigma[get[1]] if isinstance(get, tuple) else get(scene))
+                   for get in code.getters)
+    return params if code.derive is None else params + code.derive(params)
 
 
 def compile_staged(scene: Scene, plan: Plan, steps: tuple[Step, ...], meet) -> "Staged":
@@ -356,8 +426,21 @@ class CompiledSolution:
         self.record = record
 
     def position(self, label: str) -> tuple[float, float]:
-        i, j = self.program.code.index[("pos", label)]
+        i, j = self._at("pos", label)
         return float(self.record[i]), float(self.record[j])
+
+    def _at(self, kind: str, key: str):
+        """Where ``kind`` of ``key`` is in the record; an answers-only program's refusal
+        naming what it computes where that kind was not asked."""
+        try:
+            return self.program.code.index[(kind, key)]
+        except KeyError:
+            outs = self.program.outputs
+            if outs is None or kind in outs:
+                raise
+            raise UnsupportedError(f"this program was compiled for {', '.join(outs)} only, "
+                                   f"not {kind}: compile_scene(scene, outputs=...) with "
+                                   f"{kind!r} among them") from None
 
     def velocity(self, label: str) -> tuple[float, float]:
         return self._pair("velocity", label)
@@ -368,17 +451,25 @@ class CompiledSolution:
     def _pair(self, d, label):
         if label in self.program.scene.ground:
             return 0.0, 0.0
-        i, j = self.program.code.index[(d, label)]
+        i, j = self._at(d, label)
         return float(self.record[i]), float(self.record[j])
 
     def omega(self, link: str) -> float:
-        return float(self.record[self.program.code.index[("omega", link)]])
+        return float(self.record[self._at("omega", link)])
 
     def alpha(self, link: str) -> float:
-        return float(self.record[self.program.code.index[("alpha", link)]])
+        return float(self.record[self._at("alpha", link)])
+
+    def _stepped(self) -> None:
+        """Refuse what only the full program's record holds (the steps, the angles)."""
+        outs = self.program.outputs
+        if outs is not None:
+            raise UnsupportedError(f"this program was compiled for {', '.join(outs)} only: "
+                                   f"compile_scene(scene) without outputs gives the steps")
 
     @property
     def min_intersection_angle_deg(self) -> float | None:
+        self._stepped()
         return min_angle(self.program.code.layout, self._floats())
 
     @property
@@ -392,6 +483,7 @@ class CompiledSolution:
             return self._steps
 
     def _build_steps(self) -> tuple[Step, ...]:
+        self._stepped()
         return steps_from_record(self.program.scene, self.program.steps,
                                  self.program.code.layout, self._floats())
 

@@ -88,6 +88,14 @@ def _dot(ax, ay, bx, by) -> str:
     return " + ".join(terms) if terms else "0.0"
 
 
+def _solve2(x, y, b1, b2, q) -> list:
+    """The 2×2 solve (X − P)·v = b1, (X − Q)·v = b2 by the shared 1/D: ``x``, ``y``; where Q
+    is fixed (``q`` its literal zero rates, so b2 = 0) the b2 terms left out."""
+    if tuple(q) == ("0.0", "0.0"):
+        return [f"{x} = dqy * {b1} * iD", f"{y} = -(dqx * {b1}) * iD"]
+    return [f"{x} = (dqy * {b1} - dpy * {b2}) * iD", f"{y} = (dpx * {b2} - dqx * {b1}) * iD"]
+
+
 def _sub(a, b) -> str:
     """a − b as source (b the literal 0.0: a)."""
     return a if b == "0.0" else f"{a} - {b}"
@@ -161,11 +169,12 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
                 "dpx = x - px", "dpy = y - py", "dqx = x - qx", "dqy = y - qy",
                 "iD = 1.0 / (dpx * dqy - dpy * dqx)",
                 f"b1 = {_dot('dpx', 'dpy', P[2], P[3])}", f"b2 = {_dot('dqx', 'dqy', Q[2], Q[3])}",
-                "vx = (dqy * b1 - dpy * b2) * iD", "vy = (dpx * b2 - dqx * b1) * iD",
+                ] + _solve2("vx", "vy", "b1", "b2", Q[2:4]) + [
                 f"rpx = {_sub('vx', P[2])}", f"rpy = {_sub('vy', P[3])}",
                 f"rqx = {_sub('vx', Q[2])}", f"rqy = {_sub('vy', Q[3])}",
                 f"c1 = {_dot('dpx', 'dpy', P[4], P[5])} - (rpx * rpx + rpy * rpy)",
-                f"c2 = {_dot('dqx', 'dqy', Q[4], Q[5])} - (rqx * rqx + rqy * rqy)",
+                f"c2 = {_dot('dqx', 'dqy', Q[4], Q[5])} - (rqx * rqx + rqy * rqy)"
+                if Q[4:6] != ("0.0", "0.0") else "c2 = -(rqx * rqx + rqy * rqy)",
                 "ax = (dqy * c1 - dpy * c2) * iD", "ay = (dpx * c2 - dqx * c1) * iD",
                 f"{X[0]} = x", f"{X[1]} = y", f"{X[2]} = vx", f"{X[3]} = vy",
                 f"{X[4]} = ax", f"{X[5]} = ay", "_mg(M, i, m)"]
@@ -395,7 +404,8 @@ class Fused:
     def run(self, prog, xs: np.ndarray) -> dict:
         """:func:`polygons.sweep.run`'s result at ``xs``: one block, its rows the results."""
         n = xs.shape[0]
-        O = np.empty((len(self.rows), n))
+        from .sweep_store import result_block
+        O = result_block(len(self.rows), n)
         self.fn(np.ascontiguousarray(xs, dtype=float), self.params, O)
         pos, vel, acc = {}, {}, {}
         for label, xy in prog.ground.items():

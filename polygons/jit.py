@@ -67,6 +67,8 @@ def _namespace(code, numba) -> dict:
     for name, fn in code.namespace.items():
         if name.startswith("_f_"):
             ns[name] = nj(_SCALAR_OF.get(fn, fn))
+        elif name.startswith("_g_"):    # a global of a placement written out in place
+            ns[name] = fn
     ns["where"] = nj(_where)
     ns["hypot"] = nj(_scalar_hypot) if code.namespace.get("hypot") is _hypot_cols \
         else math.hypot

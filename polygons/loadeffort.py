@@ -16,15 +16,8 @@ from __future__ import annotations
 
 from .errors import SceneError
 from .loadmodel import Effort
-from .schema import Key
 
-#: the [dynamics] key (polygons.loads declares it in its TABLES)
-EFFORT_KEY = Key("effort", "string", "kinetostatic: where the balancing effort is found, the "
-                 "driver staying the kinematic input: 'torque on LINK' (a couple, CCW "
-                 "positive), 'force at C' (on slider C along its guide) or 'force along E F' (a "
-                 "massless actuator between the points E and F, positive pushing them apart)",
-                 "force at C", default="torque on the driver (a force for a slider driver)")
-
+# (its key, EFFORT_KEY, is declared with the others in polygons.loadtables)
 WHERE = "dynamics.effort"
 FORMS = "'torque on LINK', 'force at C' (a slider) or 'force along E F' (an actuator)"
 

@@ -3,32 +3,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Mapping
 
 from .errors import UnsupportedError
-from .reader import record
+
+# (the records of a scene without force tables, split out so that such a scene's load does
+# not create the dozen records below: re-exported)
+from .loadbodies import Body, Joint, Loads, bodies_of  # noqa: F401
 
 Vec = tuple[float, float]
-
-
-@dataclass(frozen=True)
-class Body:
-    """A moving rigid body: a link (or slotted lever) with frame ``a`` → ``b``, or the block of a
-    slider point (``b`` None, translating along its guide)."""
-    name: str
-    kind: str                   # 'link' | 'block'
-    a: str
-    b: str | None
-    labels: tuple[str, ...]
-    length: float | None        # stated length of a link
-
-
-@dataclass(frozen=True)
-class Joint:
-    """A pin at ``label`` joining ``members`` (bodies), and the ground when ``ground``."""
-    label: str
-    members: tuple[str, ...]
-    ground: bool
 
 
 #: a cam's / curved slot's equivalent link stands for the contact: it carries no load
@@ -153,51 +135,6 @@ class Effort:
     text: str
     body: str | None = None
     ends: tuple = ()
-
-
-@dataclass(frozen=True)
-class Loads:
-    """Everything the force tables say, in SI, checked against the scene's topology."""
-    file: str
-    bodies: Mapping[str, Body]
-    members: Mapping[str, tuple[str, ...]]      # label -> bodies carrying it
-    joints: tuple[Joint, ...]
-    slots: tuple[SlotContact, ...]
-    guides: tuple[str, ...]
-    masses: tuple[MassItem, ...]
-    forces: tuple[AppliedForce, ...]
-    torques: tuple[AppliedTorque, ...]
-    frictions: tuple[Friction, ...]
-    springs: tuple[Spring, ...]
-    gravity: Vec
-    mode: str
-    after: tuple[float, ...]
-    steps: int
-    answers: tuple[ForceAnswer, ...]
-    driver_body: str
-    active: bool                # the scene has masses, forces, torques or springs
-    flywheel: Flywheel | None = None
-    efficiency: Efficiency | None = None
-    effort: "Effort | None" = None      # [dynamics] effort: the unknown effort's place
-
-    def items_of(self, body: str) -> list[MassItem]:
-        return [m for m in self.masses if m.body == body]
-
-
-def bodies_of(model) -> dict[str, Body]:
-    """The moving bodies that carry loads, read off the mechanism model
-    (:mod:`polygons.model`): its links and slotted levers (kind 'link'), its slider blocks and
-    yokes ('block').  The blocks of pins in slots and collars are massless: the force analysis
-    meets them as contacts (:func:`slot_contacts`)."""
-    bodies: dict[str, Body] = {}
-    for b in model.moving:
-        if b.kind in ("link", "lever"):
-            bodies[b.name] = record(Body, name=b.name, kind="link", a=b.a, b=b.b,
-                                    labels=b.labels, length=b.length)
-        elif b.kind in ("block", "yoke"):
-            bodies[b.name] = record(Body, name=b.name, kind="block", a=b.name, b=None,
-                                    labels=(b.name,), length=None)
-    return bodies
 
 
 def slot_contacts(model, members, file: str | None) -> list[SlotContact]:

@@ -40,6 +40,7 @@ from types import MappingProxyType
 from typing import Any, Callable, Mapping
 
 from .errors import SceneError, UnitError, UnknownLabelError, show, suggest
+from .loadbodies import guides, joints_of, without_tables
 from .loadeffort import parse_effort
 from .loadmodel import (EQUIVALENT_LINK, AppliedForce, AppliedTorque, Friction, Joint, Loads,
                         MassItem, Spring, bodies_of, slot_contacts)
@@ -70,9 +71,7 @@ def has_loads(extra: Mapping[str, Any]) -> bool:
 HANDLES = BUILT - {"collar", "cross-block"}
 
 
-def _guides(model) -> tuple[str, ...]:
-    """The blocks on fixed guides (sliders and yokes), by their labels."""
-    return tuple(s.at for s in model.sliding if s.carrier == "frame")
+_guides = guides
 
 
 def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads:
@@ -85,30 +84,12 @@ def parse(scene, answer_fields: AnswerFields, *, shortcut: bool = True) -> Loads
     (``shortcut=False`` reads them all the same; the tests compare the two)."""
     file = scene.file
     ex = scene.extra
+    if shortcut and not any(k in ex for k in READS):
+        return without_tables(scene)
     bodies = bodies_of(scene.model)
-    labels = scene.labels
-    members: dict[str, list[str]] = {lab: [] for lab in labels}
-    for b in bodies.values():
-        for lab in b.labels:
-            members.setdefault(lab, []).append(b.name)
-    ground = scene.ground
-    joints = []
-    for lab in labels:
-        mem = tuple(members.get(lab, ()))
-        if lab in ground and mem:
-            joints.append(record(Joint, label=lab, members=mem, ground=True))
-        elif len(mem) >= 2:
-            joints.append(record(Joint, label=lab, members=mem, ground=False))
+    members, joints = joints_of(scene, bodies)
     drv = scene.driver
     driver_body = drv.link if _is_crank(drv) else drv.point
-    if shortcut and not any(k in ex for k in READS):
-        return record(Loads, file=file, bodies=MappingProxyType(bodies),
-                      members=MappingProxyType({k: tuple(v) for k, v in members.items()}),
-                      joints=tuple(joints), slots=(), guides=_guides(scene.model), masses=(),
-                      forces=(), torques=(), frictions=(), springs=(), gravity=NO_GRAVITY,
-                      mode=DEFAULT_MODE, after=(), steps=DEFAULT_STEPS, answers=(),
-                      driver_body=driver_body, active=False, flywheel=None, efficiency=None,
-                      effort=None)
     r = _Values(file)
     active = has_loads(ex)
     # an unhandled kind is refused by the command asking for forces (forces.analysis)

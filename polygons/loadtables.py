@@ -8,8 +8,14 @@ scene may say, apart from how it is read.
 """
 from __future__ import annotations
 
-from .loadeffort import EFFORT_KEY
 from .schema import Key, Table
+
+#: the [dynamics] key (polygons.loadeffort reads it)
+EFFORT_KEY = Key("effort", "string", "kinetostatic: where the balancing effort is found, the "
+                 "driver staying the kinematic input: 'torque on LINK' (a couple, CCW "
+                 "positive), 'force at C' (on slider C along its guide) or 'force along E F' (a "
+                 "massless actuator between the points E and F, positive pushing them apart)",
+                 "force at C", default="torque on the driver (a force for a slider driver)")
 
 #: the scene tables polygons.loads reads
 FORCE_TABLES = ("masses", "forces", "torques", "springs", "gravity", "dynamics")

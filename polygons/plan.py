@@ -12,15 +12,17 @@ interpreter fills the numbers in.  Only the dyads needed for the requested point
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable
+from typing import TYPE_CHECKING, Iterable
 
 from . import dyads as kinds
-from .dyads import Dyad
 from .errors import UnknownLabelError, UnsupportedError, suggest
 from .mobility import MobilityError, check_mobility, used_links
 from .scene import Scene
 from .topology import why_unplaced
 from .steps import Builder, Diagram, Step, Vertices, pole_of  # noqa: F401  (re-exported)
+
+if TYPE_CHECKING:           # (the union imports every kind: the planner imports those it asks)
+    from .dyads import Dyad
 
 
 @dataclass(frozen=True)
@@ -52,7 +54,7 @@ def _order(scene: Scene) -> list[Dyad]:
     """The driver, then pass by pass every dyad that can be placed."""
     placed: set[str] = set(scene.ground)
     dyads: list[Dyad] = []
-    for module in kinds.DRIVERS:
+    for module in kinds.kinds("driver"):     # each imported when first asked
         d = module.driver(scene)
         if d is not None:
             dyads.append(d)
@@ -67,7 +69,7 @@ def _order(scene: Scene) -> list[Dyad]:
             at.setdefault(end, []).append(ln)
     while True:
         progress = False
-        for module in kinds.SLOT_KINDS:
+        for module in kinds.kinds("slot"):
             for d in module.matches(scene, placed):
                 dyads.append(d)
                 placed.update(d.placed)
@@ -81,7 +83,7 @@ def _order(scene: Scene) -> list[Dyad]:
                 placed.update(d.placed)
                 progress = True
         if not progress:        # no dyad fits: a group of a higher class (a triad) may
-            for module in kinds.GROUP_KINDS:
+            for module in kinds.kinds("group"):
                 for d in module.matches(scene, placed):
                     dyads.append(d)
                     placed.update(d.placed)
@@ -118,7 +120,7 @@ def _point_dyad(scene: Scene, x: str, placed: set[str], links) -> Dyad | None:
     joints = [(l.b if l.a == x else l.a, l.name) for l in links
               if x in (l.a, l.b) and l.length is not None]
     known = [(other, name) for other, name in joints if other in placed]
-    for module in kinds.POINT_KINDS:
+    for module in kinds.kinds("point"):
         if module.claims(scene, x):
             return module.match(scene, x, placed, known)
     return None

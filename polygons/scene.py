@@ -41,7 +41,7 @@ from typing import Any, Mapping
 from . import topology
 from .errors import (BranchError, PolygonsError, SceneError, SceneSyntaxError,
                      UnknownLabelError, show, suggest)
-from .loads import parse as parse_loads
+from .loadtables import READS as LOAD_READS
 from .model import build as build_model
 from .reader import LABEL as _LABEL, Reader, answer_fields, record, refuse_control_characters
 from .reader import MAX_SCENE_BYTES, read_scene_text  # noqa: F401  (the file is read there)
@@ -581,8 +581,14 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                    model=model, crossing=MappingProxyType(crossing), equivalents=equivalents)
     # the force tables ([masses], [forces], ...), parsed and checked now (polygons.loads)
     # (read off the scene without them, then a new record with them: never set afterwards)
-    loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(
-        spec, r, where, default_tol, **kw))
+    # (polygons.loads, the tables' readers, imported only for a scene that has one of them)
+    if any(k in scene.extra for k in LOAD_READS):
+        from .loads import parse as parse_loads
+        loads = parse_loads(scene, lambda spec, where, **kw: answer_fields(
+            spec, r, where, default_tol, **kw))
+    else:
+        from .loadbodies import without_tables
+        loads = without_tables(scene)
     scene = record(Scene, **{**vars(scene), "loads": loads})
     # (the tables' modules imported only for a scene that has them: a quicker start)
     if "exam" in scene.extra:

@@ -88,6 +88,7 @@ def test_compiled_matches_the_staged_construction_on_every_case(path):
         pytest.skip(f"{path.name}: not compiled yet (refused with NotCompiled, tested)")
     sol = compile_scene(scene).solve()
     assert_same_steps(staged.steps, sol.steps, scene)
+    _answers_only_equal(scene)
     if staged.min_intersection_angle_deg is None:
         assert sol.min_intersection_angle_deg is None
     else:
@@ -400,3 +401,105 @@ def test_the_staged_solver_finds_every_intersection_with_shapely(monkeypatch):
     crossings = [s for s in sol.steps if s.op == "intersect"]
     assert len(seen) == len(crossings) == 2
     assert [s.point for s in crossings] == seen
+
+
+# ---------------------------------------------------------------- answers-only programs
+ANSWER_KINDS = ("pos", "velocity", "acceleration", "omega", "alpha", "slide_v", "slide_a")
+
+
+def _same_answers(lean, full):
+    """Every number the answers-only record holds equal to the full program's, to 1e-12 of the
+    largest of its kind."""
+    a, b = lean.record, full.record
+    idx, fidx = lean.program.code.index, full.program.code.index
+    scale: dict = {}
+    for (kind, _), i in fidx.items():
+        for j in (i if isinstance(i, tuple) else (i,)):
+            if kind in ANSWER_KINDS:
+                scale[kind] = max(scale.get(kind, 1e-300), abs(b[j]))
+    # a slide's rate is read on its polygon's scale, an ω or α on |v| or |a| over the frame
+    scale["slide_v"] = max(scale.get("slide_v", 0.0), scale.get("velocity", 0.0))
+    scale["slide_a"] = max(scale.get("slide_a", 0.0), scale.get("acceleration", 0.0))
+    size = scale.get("pos", 1.0)
+    scale["omega"] = max(scale.get("omega", 0.0), scale.get("velocity", 0.0) / size)
+    scale["alpha"] = max(scale.get("alpha", 0.0), scale.get("acceleration", 0.0) / size,
+                         scale["omega"] ** 2)
+    assert set(idx) <= set(fidx) and idx
+    for key, i in idx.items():
+        for p, q in zip(i if isinstance(i, tuple) else (i,),
+                        fidx[key] if isinstance(i, tuple) else (fidx[key],)):
+            assert abs(a[p] - b[q]) <= REL * scale[key[0]], (key, a[p], b[q])
+
+
+def test_answers_only_writes_no_unit_direction_no_angle_and_no_call():
+    src = compile_scene(_four_bar(0.5, 0.1, 0.4, 0.3, 1.0, 10.0, 5.0),
+                        outputs=("pos", "velocity", "acceleration")).code.source
+    assert "degrees" not in src and "atan2" not in src and "_f_circle" not in src
+
+
+def _answers_only_equal(scene):
+    """An answers-only program of ``scene``: its full program is the construction of both
+    diagrams; the same errors, the same answers."""
+    from polygons.plan import construction, make_plan
+    from polygons.steps import Diagram
+    lean = compile_scene(scene, outputs=ANSWER_KINDS)
+    assert lean.full.steps == construction(make_plan(scene), tuple(Diagram))
+    try:
+        want = lean.full.solve()
+    except PolygonsError as exc:
+        with pytest.raises(type(exc)):
+            lean.solve()
+        return
+    _same_answers(lean.solve(), want)
+
+
+def test_answers_only_asks_what_it_computes_and_refuses_the_rest():
+    from polygons.errors import UnsupportedError
+    scene = _four_bar(0.5, 0.1, 0.4, 0.3, 1.0, 10.0, 5.0)
+    prog = compile_scene(scene, outputs=("pos", "velocity"))
+    sol = prog.solve(0.7)
+    full = compile_scene(scene).solve(0.7)
+    assert sol.velocity("C") == pytest.approx(full.velocity("C"), rel=1e-12)
+    assert sol.position("B") == pytest.approx(full.position("B"), rel=1e-12)
+    for ask in (lambda: sol.acceleration("C"), lambda: sol.omega("BC"), lambda: sol.steps,
+                lambda: sol.min_intersection_angle_deg):
+        with pytest.raises(UnsupportedError, match="compiled for pos, velocity only"):
+            ask()
+    with pytest.raises(UnsupportedError, match="'forces'"):
+        compile_scene(scene, outputs=("pos", "forces"))
+    # the acceleration polygon is dead code when no acceleration is asked
+    assert prog.code.source.count("\n") < compile_scene(
+        scene, outputs=("pos", "velocity", "acceleration")).code.source.count("\n")
+
+
+def test_answers_only_fails_where_the_full_program_does_and_nowhere_else():
+    # the stretched-out toggle: the same error as the full program
+    scene = _four_bar(0.5, 0.2, 0.1, 0.2, 0.0, 10.0, 0.0)
+    with pytest.raises(ParallelLinesError) as full:
+        compile_scene(scene).solve()
+    with pytest.raises(ParallelLinesError) as lean:
+        compile_scene(scene, outputs=("pos", "velocity")).solve()
+    assert full.value.step == lean.value.step
+    with pytest.raises(AssemblyError, match="cannot close"):
+        compile_scene(_four_bar(0.5, 0.2, 0.3, 0.25, 0.5, 10.0, 0.0),
+                      outputs=("pos",)).solve(math.pi)
+    # within a hair of the parallel threshold the lean test fails and the full program answers
+    # (BC + CD = BD at cos θ = 0.8375: C stretched out between B and D)
+    prog = compile_scene(_four_bar(0.5, 0.2, 0.15, 0.2, 0.3, 10.0, 0.0),
+                         outputs=ANSWER_KINDS)
+    lo, hi = 0.3, math.acos(0.8375) + 1e-9     # bisect θ to the full program's own threshold
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        try:
+            prog.full.solve(mid)
+            lo = mid
+        except PolygonsError:
+            hi = mid
+    for theta in (lo, lo - 1e-12, lo - 1e-9):     # answers (rounding grows as 1/angle)
+        a, b = prog.solve(theta).velocity("C"), prog.full.solve(theta).velocity("C")
+        assert math.dist(a, b) <= 1e-6 * math.hypot(*b)
+    _same_answers(prog.solve(0.5), prog.full.solve(0.5))
+    with pytest.raises(PolygonsError) as full:
+        prog.full.solve(hi)
+    with pytest.raises(type(full.value)):
+        prog.solve(hi)

@@ -741,10 +741,10 @@ def test_force_modules_import_downward_only():
             elif isinstance(node, ast.Import):
                 out.update(a.name for a in node.names)
         return out
-    for name in ("loads.py", "loadmodel.py", "loadtables.py", "loadrun.py"):
+    for name in ("loads.py", "loadmodel.py", "loadtables.py", "loadrun.py", "loadbodies.py"):
         inner = {m for m in imported(root / name) if m.startswith(".")}
         assert inner <= {".errors", ".schema", ".units", ".loadmodel", ".reader", ".model",
-                         ".loadeffort", ".loadtables", ".loadrun"}, \
+                         ".loadeffort", ".loadtables", ".loadrun", ".loadbodies"}, \
             (name, inner)
     graph = {}
     for path in sorted((root / "forces").glob("*.py")):

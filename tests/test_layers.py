@@ -23,7 +23,8 @@ WHERE = {
     "polygons.question_table": "scene", "polygons.cam_profiles": "scene", "polygons.cam_events": "scene", "polygons.cam_profile_table": "scene",
     "polygons.cam_diagram": "interpreters", "polygons.conditions": "forces",
     "polygons.grade_drawing": "interpreters", "polygons.exam": "commands",
-    "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.reader": "scene",
+    "polygons.scene_tables": "scene", "polygons.loadmodel": "scene", "polygons.loadbodies": "scene",
+    "polygons.reader": "scene",
     "polygons.loadeffort": "scene", "polygons.loadtables": "scene", "polygons.loadrun": "scene",
     # the mechanism model: the joint tables read once into bodies and pairs, the last step of
     # loading a scene (polygons.scene builds it; every layer above reads it)
@@ -38,7 +39,8 @@ WHERE = {
     "polygons.sweep_store": "interpreters", "polygons.sweep_follow": "interpreters",
     "polygons.sweep_range": "interpreters", "polygons.sweep_extremes": "interpreters",
     "polygons.drawing_board": "interpreters", "polygons.compiled": "interpreters",
-    "polygons.codegen": "interpreters", "polygons.jit": "interpreters",
+    "polygons.codegen": "interpreters", "polygons.codegen_lean": "interpreters",
+    "polygons.jit": "interpreters",
     "polygons.fused": "interpreters",
     "polygons.batch": "interpreters", "polygons.centres": "interpreters",
     "polygons.centres_links": "interpreters", "polygons.centres_velocity": "interpreters",

@@ -94,10 +94,11 @@ def test_a_vector_too_short_for_any_inset_is_said_not_drawn():
 
 def test_a_triads_handout_stage_thumbnails_keep_the_layout_rule(monkeypatch):
     """The handout's stage thumbnails print 56 mm wide with labels set larger so they print
-    2.5 mm high: the triad's crowded acceleration polygon no longer has room for them all.
-    Each thumbnail keeps its stage's own labels and drops the earlier ones that would print
-    on another (diagrams.figures.uncrowded); measured after the column's reduction, none
-    overlaps, and some were dropped (kept, they would overlap)."""
+    2.5 mm high.  Drawn whole, the triad's acceleration polygon (its insets far apart)
+    printed at ×0.13: each stage is a detail of its own vectors at its own stated scale
+    (diagrams.figures.detail), printed at ×0.2 or more, most at ×0.35 or more (an own
+    vector far shorter than its step's lines keeps an inset); measured after the column's
+    reduction, none breaks the layout rule, and each draws its step's new vertex."""
     import diagrams
     from diagrams import figures
     from diagrams.audit import measure, verdict
@@ -112,5 +113,58 @@ def test_a_triads_handout_stage_thumbnails_keep_the_layout_rule(monkeypatch):
         k = figures.stage_width(s.width, s.height) / s.width
         breaches += verdict(measure(to_svg(s), f"forces-triad/handout:{s.name}", k))
     assert len(stages) >= 10 and not breaches, breaches[:10]
-    # crowded: labels were dropped (kept, they would print on others)
-    assert sum(s.meta.get("dropped", 0) for s in stages) > 0
+    assert all(s.meta.get("detail") for s in stages)
+    shrink = [figures.stage_width(s.width, s.height) / s.width for s in stages]
+    assert min(shrink) >= 0.2 and sorted(shrink)[len(shrink) // 2] >= 0.35, shrink
+    from diagrams.text import token
+    for s in stages:
+        step = lay.con.steps[int(s.name.rsplit("-", 1)[1]) - 1]
+        if step.end and lay.con.born.get(step.end) == step.number:
+            mine = f"acceleration-vertex-{token(step.end)}"
+            assert any(getattr(c, "ident", "") == mine and not c.faded
+                       for c in s.items()), (s.name, mine)
+
+
+def test_force_legend_rows_are_wrapped_to_the_figures_width():
+    """A force drawing's legend row longer than FORCE_LEGEND_MM is wrapped (its further lines
+    indented), measured by the typeset width of each text the SVG holds: the oscillating
+    cylinder's group 2 has '−m a_G (O2P) ≈ 0 (1.13 mm at this scale: 2.824 N, not drawn)',
+    ~90 mm unwrapped.  A polygon that closes to rounding says 'gap 0 N', not 'gap 7.3e-15 N'."""
+    from diagrams import fbd, forcepoly
+    from diagrams.audit import measure
+    from diagrams.layout import FORCE_LEGEND_MM, LEGEND_INDENT
+    from diagrams.svg import to_svg
+    from polygons.forces import analyse
+    from polygons.scene import load_scene
+    an = analyse(load_scene(str(CASES / "forces-oscillating-cylinder.toml")))
+    st = an.states[0]
+    drawn = dict(forcepoly.group_drawings(an, st) + forcepoly.lever_drawings(an, st))
+    drawn |= dict(fbd.drawings(an))
+    rows = 0
+    for name, d in drawn.items():
+        legend = [t for t in d.items("legend") if getattr(t, "text", "")]
+        m = measure(to_svg(d), name)
+        for text, _, boxes in m.texts:
+            if any(t.text == text for t in legend):
+                w = max(b[2] for b in boxes) - min(b[0] for b in boxes)
+                assert w <= FORCE_LEGEND_MM + 0.5, (name, text, w)
+        rows += sum(1 for t in legend if t.x > min(u.x for u in legend) + LEGEND_INDENT / 2)
+        if name.startswith("forces-"):
+            assert "gap 0 N" in " ".join(t.text for t in d.items("caption")), name
+    assert rows >= 2
+
+
+def test_crossing_slots_sliding_results_are_named_apart():
+    """A pin in crossing slots has two sliding velocities and accelerations: each legend row
+    names its quantity ('a_slide = (a_P)_P2 = …'), not two bare 'a_slide' rows."""
+    from diagrams.polywords import measure_text
+    from diagrams.strokes import construction
+    from polygons.api import solve
+    sol = solve(str(CASES / "new-crossing-slots.toml")).solution
+    for diagram, sym in (("velocity", "v"), ("acceleration", "a")):
+        con = construction(sol, diagram)
+        rows = [r for r in (measure_text(m, sol, con) for m in con.measures)
+                if "slide" in r]
+        assert len(rows) == 2, rows
+        assert any(f"({sym}_P)_P2" in r for r in rows) and any(f"({sym}_P)_P4" in r
+                                                                for r in rows), rows

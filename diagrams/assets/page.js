@@ -203,7 +203,35 @@
   Object.keys(D.polys).forEach(function (d) {
     D.polys[d].key.forEach(function (k) { LOOK[k.kind] = k; });
   });
-  var zoom = 1;
+  // 'fill' (the start): each polygon fitted to its panel at the position shown, its bar
+  // stating that position's scale (a polygon over the cycle's largest one drew ~15 mm);
+  // × 1, 2, 4, 8: one scale for every position, the cycle's polygons in the panel at × 1
+  var zoom = 'auto';
+  function at(d, f) {
+    var P = D.polys[d];
+    return Object.keys(P.vx).map(function (v) { return P.vx[v][f]; })
+      .filter(function (p) { return p && p[0] !== null; });
+  }
+  function room(d) {
+    var svg = document.getElementById(d === 'velocity' ? 'vpoly' : 'apoly');
+    var W = svg.viewBox.baseVal.width, H = svg.viewBox.baseVal.height;
+    return [30, 34 + FONT, W - 30, H - 56];        // below the caption, above the bar
+  }
+  function fitted(d) {                // the enlargement over × 1 that fits this position
+    var pts = at(d, frame), F = T[d], r = room(d);
+    if (pts.length < 2) { return 1; }
+    var b = box(pts), w = (b[2] - b[0]) * F.k, h = (b[3] - b[1]) * F.k;
+    var z = Math.min((r[2] - r[0]) / Math.max(w, 1e-9), (r[3] - r[1]) / Math.max(h, 1e-9));
+    return isFinite(z) && z > 0 ? Math.min(z, 1e6) : 1;
+  }
+  function zoomOf(d) { return zoom === 'auto' ? fitted(d) : zoom; }
+  function frameOf(d) {
+    if (zoom !== 'auto') { return zoomed(T[d], zoom); }
+    var F = T[d], z = fitted(d), r = room(d), b = box(at(d, frame));
+    var c = F([(b[0] + b[2]) / 2, (b[1] + b[3]) / 2]), m = [(r[0] + r[2]) / 2, (r[1] + r[3]) / 2];
+    var g = function (p) { var q = F(p); return [m[0] + z * (q[0] - c[0]), m[1] + z * (q[1] - c[1])]; };
+    g.k = F.k * z; return g;
+  }
   function nice(x) {                  // a round bar length (1, 2, 2.5, 5 × 10ⁿ) not above x
     var k = Math.pow(10, Math.floor(Math.log10(x)));
     var m = [5, 2.5, 2, 1].filter(function (m) { return m * k <= x * (1 + 1e-12); })[0] || 1;
@@ -217,15 +245,15 @@
   }
   function polygon(d) {
     var P = D.polys[d], svg = document.getElementById(d === 'velocity' ? 'vpoly' : 'apoly');
-    var U = unitOf(svg), F = zoomed(T[d], zoom), W = svg.viewBox.baseVal.width, H = svg.viewBox.baseVal.height;
+    var z = zoomOf(d), U = unitOf(svg), F = frameOf(d), W = svg.viewBox.baseVal.width, H = svg.viewBox.baseVal.height;
     var segs = [], boxes = [], link = hover >= 0 ? D.edges[hover][2] : null;
     clear(svg);
     var cap = el(svg, 'text', {x: 4 * U, y: 4 * U + FONT * U, 'font-size': FONT * U, 'class': 'cap'});
-    cap.textContent = d + ' polygon' + (zoom > 1 ? ' (×' + zoom + ')' : '');
+    cap.textContent = d + ' polygon' + (zoom === 'auto' ? ' (fitted here)' : z > 1 ? ' (×' + z + ')' : '');
     boxes.push({x: 0, y: 0, w: cap.getBBox().width + 8 * U, h: (FONT + 8) * U});
     // the scale bar: one scale for the whole cycle
     if (P.bar) {
-      var bar = zoom === 1 ? P.bar : nice(P.bar / zoom);
+      var bar = z === 1 ? P.bar : nice(P.bar / z);
       var bl = bar * F.k, by = H - 10 * U;
       el(svg, 'path', {d: 'M' + 6 * U + ' ' + (by - 4 * U) + 'v' + 4 * U + 'h' + bl + 'v' + (-4 * U),
                        stroke: '#000', fill: 'none', 'stroke-width': U, 'class': 'bar'});
@@ -275,7 +303,7 @@
     var b = t.getBBox(); boxes.push({x: b.x - 2 * U, y: b.y - 2 * U, w: b.width + 4 * U, h: b.height + 4 * U});
   }
   function setHover(i) { hover = i; draw(); }
-  function setZoom(z) { zoom = [1, 2, 4, 8].indexOf(+z) >= 0 ? +z : 1;
+  function setZoom(z) { zoom = z === 'auto' ? 'auto' : [1, 2, 4, 8].indexOf(+z) >= 0 ? +z : 1;
                         document.getElementById('zoom').value = String(zoom); draw(); }
   document.getElementById('zoom').addEventListener('change', function (e) { setZoom(e.target.value); });
   function draw() {

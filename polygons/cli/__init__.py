@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 
 #: command -> (module, one-line help for the command list)
@@ -32,9 +33,28 @@ COMMANDS = {
 }
 
 
+def columns() -> int:
+    """The terminal's width as ``shutil.get_terminal_size()`` gives it to argparse: ``$COLUMNS``
+    when a positive number, else the width of standard output's terminal, else 80 — without
+    importing shutil (with bz2 and lzma: ~3 ms of every start, ``--help`` included)."""
+    try:
+        width = int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        width = 0
+    if width <= 0:
+        try:
+            width = os.get_terminal_size(sys.__stdout__.fileno()).columns or 80
+        except (AttributeError, ValueError, OSError):
+            width = 80
+    return width
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message):  # one line, exit 2, like every other error
         self.exit(2, f"polygons: error: {message}\n")
+
+    def _get_formatter(self):  # argparse's, the width found as shutil finds it (columns)
+        return self.formatter_class(prog=self.prog, width=columns() - 2)
 
 
 def build_parser(command: str | None = None) -> argparse.ArgumentParser:
@@ -81,21 +101,50 @@ def _one_line(text: str, limit: int = 2000) -> str:
     return text if len(text) <= limit else text[:limit - 1] + "…"
 
 
+#: the variables OpenBLAS reads for its number of threads
+BLAS_THREADS = ("OPENBLAS_NUM_THREADS", "GOTO_NUM_THREADS", "OMP_NUM_THREADS")
+
+
+def one_blas_thread(environ) -> None:
+    """numpy's OpenBLAS started with one thread when the user set none of
+    :data:`BLAS_THREADS`: at import it starts a worker thread per core and sets it up (~55 ms
+    of CPU on a 2-core machine, a quarter of a cold ``polygons solve``, and wall time too when
+    the other core is busy), while no command multiplies matrices large enough to gain from a
+    second thread (the force analysis solves 3 equations per body).  Only the program does
+    this (``polygons`` and ``python -m polygons``), before numpy is imported; a Python caller
+    of :func:`main` keeps its own environment."""
+    if not any(k in environ for k in BLAS_THREADS):
+        environ["OPENBLAS_NUM_THREADS"] = "1"
+
+
 def main(argv=None) -> int:
     """Run one command (:func:`run_command`); run as the program (``argv`` None: ``polygons``
-    and ``python -m polygons``) the process exits as it returns, so the objects made are frozen
-    out of the collector first: the interpreter's last full collection at exit then has nothing
-    to traverse (~15-40 ms of a cold ``polygons solve``; every file a command writes is
+    and ``python -m polygons``) its start-up (imports, parsing) runs without the cyclic
+    collector (:func:`_started`), and the process exits as it returns, so the objects made are
+    frozen out of the collector first: the interpreter's last full collection at exit then has
+    nothing to traverse (~15-40 ms of a cold ``polygons solve``; every file a command writes is
     closed by then, standard output is flushed at exit all the same)."""
     if argv is not None:
         return run_command(argv)
-    code = run_command(sys.argv[1:])
+    one_blas_thread(os.environ)
     import gc
+    gc.disable()                       # the start-up runs without the collector (_started)
+    code = run_command(sys.argv[1:], started=_started)
     gc.freeze()
     return code
 
 
-def run_command(argv) -> int:
+def _started() -> None:
+    """The command's modules imported and its arguments parsed: what the start-up made (the
+    modules, their functions and classes) lives as long as the process, so it is frozen out of
+    the collector, which runs from here on.  The start-up ran without it: the collector's ~56
+    passes over those objects, which never die, were ~5-10 % of a cold ``polygons solve``."""
+    import gc
+    gc.freeze()
+    gc.enable()
+
+
+def run_command(argv, started=None) -> int:
     """Run one command.  Exit codes: 0 done; 1 an error in the input or its solution (one
     line ``polygons: error: FILE [key] reason`` on stderr); 2 a usage error (argparse); 70 an
     internal error (a bug: ``polygons: internal error: ... (please report this)``).
@@ -106,6 +155,8 @@ def run_command(argv) -> int:
     argv = list(argv)
     parser = _parser(_command_of(argv))
     args = parser.parse_args(argv)
+    if started is not None:           # (the program: main)
+        started()
     from ..errors import PolygonsError
     import warnings
     try:

@@ -505,7 +505,7 @@ def _tutorial_note(sol: Solution, expr: str, value: float) -> str:
         if abs(off) > 0.005 and abs(abs(value) - printed) <= 0.005 * printed:
             what = "a slip the reference found" if ans.slip else "the tutorial's drawing"
             return (f"your value matches the tutorial's printed {ans.tutorial:g} {ans.unit}, "
-                    f"which is {off * 100:+.1f} % from the exact value ({what}"
+                    f"which is {_signed(off * 100)} % from the exact value ({what}"
                     + (f": {ans.note}" if ans.note else "") + ")")
     return ""
 
@@ -519,6 +519,12 @@ def _num(x: float) -> str:
         decimals = max(0, 4 - 1 - int(math.floor(math.log10(mag))))
         return f"{x:.{decimals}f}"
     return f"{x:.4g}"
+
+
+def _signed(x: float) -> str:
+    """A percentage ``x`` with its sign: '+12.3', and above 10⁵ in four figures, '+1.846e+13'
+    (an absurd measured value printed a run of 14 digits)."""
+    return f"{x:+.1f}" if abs(x) < 1e5 else f"{x:+.4g}"
 
 
 def _sense(v: float) -> str:
@@ -568,7 +574,7 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
             shown = f"{_num(abs(g.measured))} {g.unit}"
             exp = f"{_num(abs(g.expected))} {g.unit}"
         verdict = "ok " if g.ok else "OFF"
-        diff = f"{g.diff_pct:+.1f} %" if g.diff_pct is not None else "-"
+        diff = f"{_signed(g.diff_pct)} %" if g.diff_pct is not None else "-"
         lines.append(f"  {verdict}  {g.name:<{wn}}  measured {shown}, expected {exp} "
                      f"± {_num(g.tolerance)} (±{g.tolerance_pct:.2g} %, "
                      f"{SOURCE_WORDS[g.source]}): {diff}")

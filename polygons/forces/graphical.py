@@ -490,7 +490,10 @@ def _crank(b: _Board, gi, d, bodies, ks, allk) -> Group:
     b.pin[(d.pivot, body)] = f
     fo = Found(f"F_{d.pivot} on {body}", body, d.pivot, *_unit(f), "polygon")
     te = Found(f"T on {body}", body, d.pivot, np.zeros(2), effort, "effort")
-    return Group(gi + 1, "crank", f"group {gi + 1}: the crank {body} (driver)",
+    # a driven slotted lever (an oscillating cylinder) is no crank
+    what = ("slotted lever" if any(sl.carrier == body for sl in b.scene.model.slot.values())
+            else "crank")
+    return Group(gi + 1, "crank", f"group {gi + 1}: the {what} {body} (driver)",
                  bodies, allk, (), (fo,), (te,),
                  (f"moments about {d.pivot}: {balance_words(_M(ks[body], o), effort)}",))
 
