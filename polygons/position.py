@@ -58,6 +58,7 @@ def _assemble_arrays(plan: Plan) -> Placement:
     x_in = driver_input(scene)
     with np.errstate(all="ignore"):   # a degenerate dyad gives NaN and says why below
         _place(plan, scene, pos, chosen, sigmas, size, x_in)
+    _check_rod_angle(scene, pos)
     for label, xy in scene.drawn.items():
         if label in pos:
             off = float(np.hypot(*(pos[label] - np.array(xy))))
@@ -118,6 +119,7 @@ def _assemble_floats(plan: Plan) -> Placement | None:
                 return None
             pos.update(got[0])
             _check_words(got[0], scene, pos)
+        _check_rod_angle(scene, pos)    # refused over arrays, below
     except PolygonsError:
         return None
     points = {k: (float(v[0]), float(v[1])) for k, v in pos.items()}
@@ -170,6 +172,28 @@ def _check_words(pts, scene: Scene, pos) -> None:
                               f"'{branch.text}': the [assembly] words describe another "
                               f"configuration (check the data, or leave the words out)",
                               file=scene.file, where=f"assembly.{x}")
+
+
+def _check_rod_angle(scene: Scene, pos) -> None:
+    """A slider driver placed by its rod's angle with [assembly] words for the rod's far end:
+    the closure the words chose must put the rod at its stated angle (the mirror closure,
+    the rod at another angle, was answered silently before)."""
+    end = getattr(scene.driver, "rod_end", None)
+    if end is None or scene.driver.position != end[3]:
+        return                          # another position (a sweep, a question): no angle
+    name, other, angle = end[:3]
+    if other not in pos or scene.driver.point not in pos:
+        return                          # a solve of some targets only: the rod not placed
+    (ox, oy), (sx, sy) = pos[other], pos[scene.driver.point]
+    dx, dy = float(ox) - float(sx), float(oy) - float(sy)
+    got = math.atan2(dy, dx)
+    if abs(math.remainder(got - angle, 2.0 * math.pi)) > 1e-7:
+        branch = scene.assembly[other]
+        raise BranchError(f"'{branch.text}' puts {other} at {_fmt(pos[other])}, where the rod "
+                          f"{name} is at {math.degrees(got) % 360.0:.6g}°, not at its stated "
+                          f"rod_angle {math.degrees(angle) % 360.0:.6g}°: the words choose the "
+                          f"other closure (leave them out: the rod's angle places {other})",
+                          file=scene.file, where=f"assembly.{other}")
 
 
 def dyad_failure(scene: Scene, d, pos) -> AssemblyError:

@@ -70,6 +70,10 @@ class SliderDrive:
     #: with ``rod_rate``: the angle (degrees) between the two directions whose meeting gives
     #: the slider's speed from the rod's ω (near 0: the rod barely turns whatever the speed)
     rod_angle_deg: float | None = None
+    #: placed by its rod's angle with [assembly] words for the rod's far end: (the rod's name,
+    #: the far end, the stated angle slider → far end in rad, the position it gives), checked
+    #: when the mechanism is placed at that position (the words must not pick the mirror)
+    rod_end: tuple[str, str, float, float] | None = None
 
 
 @dataclass(frozen=True)

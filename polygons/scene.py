@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
@@ -532,6 +532,9 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                                    * math.cos(g.angle) + rx,
                                                    g.through[1] + driver.position
                                                    * math.sin(g.angle) + ry))
+        elif other in assembly:         # the words must agree with the angle (position.py)
+            driver = replace(driver, rod_end=(name, other, math.atan2(ry, rx),
+                                              driver.position))
 
     for label in drawn:
         need_label(label, f"drawn.{label}")
@@ -719,7 +722,11 @@ def _parse_branch(label, spec, r: _Reader, need_label, where) -> Branch:
     if isinstance(spec, dict):
         r.table(spec, where, ("near",), required=("near",))
         near = r.vec(spec["near"], where + ".near")      # stated as the book would: in mm
-        mm = ", ".join(f"{v * 1000:.6g}".replace("-", "−") for v in near)
+        # a coordinate below 1e-9 of the other is rounding noise (a point computed on a
+        # vertical line: x = 6e-18 m), written 0 as the book would
+        big = max(abs(v) for v in near)
+        mm = ", ".join(f"{(v if abs(v) > 1e-9 * big else 0.0) * 1000:.6g}".replace("-", "−")
+                       for v in near)
         return Branch(label, f"{label} near ({mm}) mm", "near", near=near)
     text = r.string(spec, where)
     words = " ".join(text.split())

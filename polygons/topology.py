@@ -156,7 +156,17 @@ def ground_from(spec, r, where, ground) -> tuple[float, float]:
         spec["angle"], 1.0)
     phi = turn * r.quantity(text, "angle", where + ".angle")
     x0, y0 = ground[frm]
-    return (x0 + d * math.cos(phi), y0 + d * math.sin(phi))
+    c, s = cos_sin(phi)
+    return (x0 + d * c, y0 + d * s)
+
+
+def cos_sin(phi: float) -> tuple[float, float]:
+    """(cos φ, sin φ), exact at the multiples of 90° a book states ('D is 200 mm from A at
+    90°': x = 0, not 1.2e-17 m, which printed as noise in an exam's data)."""
+    k = phi / (math.pi / 2)
+    if abs(k) < 1e6 and k == round(k):
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(round(k)) % 4]
+    return math.cos(phi), math.sin(phi)
 
 
 def plate_corner(spec, r, where, length) -> tuple[float, float]:
@@ -593,7 +603,8 @@ def guide_through(spec, r, where, ground) -> tuple[float, float] | None:
     d = r.quantity(spec["offset"], "length", where + ".offset")
     a = r.quantity(spec["direction"], "angle", where + ".direction")
     ox, oy = ground[frm]
-    return (ox - d * math.sin(a), oy + d * math.cos(a))
+    c, s = cos_sin(a)
+    return (ox - d * s, oy + d * c)
 
 
 def dead_centre_angle(theta: float, which: str, sense: int, *, pivot, r_crank, rod, guide,

@@ -590,6 +590,9 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
             lines.append(f"       magnitude only: no sense was written, so it is not graded "
                          f"(write {_num(abs(g.measured))}CW or CCW, or a negative value for "
                          f"CW, to have it graded)")
+        if fn not in ("omega", "alpha", "vs", "as") and g.measured < 0:
+            lines.append(f"       a magnitude has no sign: {_num(g.measured)} was graded as "
+                         f"{_num(abs(g.measured))} (the length of its vector in the polygon)")
         if fn in ("vs", "as") and g.sense_given is None and g.expected != 0:
             lines.append(f"       magnitude only: no sign was written, so its sense is not "
                          f"graded; {g.name} is signed, {_slide_words(sol, g.expr, g.expected)}"

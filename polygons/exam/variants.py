@@ -165,7 +165,7 @@ def symbol(expr: str) -> str:
 # ---------------------------------------------------------------- the data in words
 def _g(x: float) -> str:
     """A value as a student reads it: at most six significant figures, no e-notation."""
-    if x == 0 or not math.isfinite(x):
+    if abs(x) < 1e-9 or not math.isfinite(x):     # below 1e-9 of the unit: rounding noise
         return "0"
     text = f"{x:.{max(0, 5 - math.floor(math.log10(abs(x))))}f}"
     return text.rstrip("0").rstrip(".") if "." in text else text
@@ -243,12 +243,36 @@ def data_rows(scene: Scene) -> tuple[tuple[str, str], ...]:
                          f"at {_mm(drv.position)} along its guide ({way}) from its through "
                          f"point; velocity {_g(drv.velocity)} m/s, acceleration "
                          f"{_g(drv.acceleration)} m/s² (signed the same way)"))
-    other = [k for k, v in (("crossing slots", model.crossings()),
-                            ("prescribed slides", model.prescribed),
-                            ("cams or curved slots", scene.equivalents)) if v]
-    if other:
-        rows.append(("also", "; ".join(other) + " (see the scene file)"))
+    # the student gets no scene file: every other pair in words too
+    crossing: dict[str, list] = {}
+    for sl in model.crossings():                # two pairs per pin, one per lever
+        crossing.setdefault(sl.at, []).append(sl)
+    for pin, (s1, s2) in crossing.items():
+        (l1, l2), (c1, c2) = (s1.carrier, s2.carrier), (s1.coincident, s2.coincident)
+        rows.append((f"pin {pin}", f"slides in the slots of links {l1} and {l2} at once (each "
+                                   f"slot along its link, {_ends(model, l1)} and {_ends(model, l2)}"
+                                   f"); {c1} and {c2} are the points of {l1} and {l2} under "
+                                   f"{pin}"))
+    for point, sl in model.prescribed.items():
+        rows.append((f"collar {point}", f"slides along link {sl.link}: at {_mm(sl.position)} "
+                                        f"from {sl.p} towards {sl.q}, sliding velocity "
+                                        f"{_g(sl.velocity)} m/s and acceleration "
+                                        f"{_g(sl.acceleration)} m/s² (signed from {sl.p} "
+                                        f"towards {sl.q}); {sl.coincident} is the point of "
+                                        f"{sl.link} under {point}"))
+    for q in scene.equivalents:
+        text = q.words
+        if q.opposite_motion is not None:
+            text += (f"; the plate of {q.opposite} moves at {_g(q.opposite_motion[0])} m/s, "
+                     f"accelerating at {_g(q.opposite_motion[1])} m/s² (signed along "
+                     f"{_deg(q.face)})")
+        rows.append((f"contact at {q.at}", text))
     return tuple(rows)
+
+
+def _ends(model, lever: str) -> str:
+    link = model.link(lever)
+    return f"from {link.a} through {link.b}" if link is not None else lever
 
 
 # ---------------------------------------------------------------- scales
@@ -391,6 +415,12 @@ def _set(data: dict, key: str, text: str, base: Scene) -> None:
                      "rod_alpha": "rod_alpha_sense"}[name]
         data["driver"][sense_key] = "CW" if rate < 0 else "CCW"
     data[table][name] = text
+    if table == "driver" and name == "angle":
+        # a variant's cam angle replaces the book's event ([cam_profiles] when = "leaves the
+        # straight flank"), which is the scene's way of stating its one angle
+        for prof in (data.get("cam_profiles") or {}).values():
+            if isinstance(prof, dict):
+                prof.pop("when", None)
 
 
 def _rejects(sol: Solution, sp: ExamSpec, scales, asked) -> str | None:
