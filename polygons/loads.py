@@ -52,6 +52,7 @@ from .loadtables import (DEFAULT_MODE, DEFAULT_STEPS, FORCE_TABLES, LOAD_TABLES,
                          MAX_AFTER, MAX_RELEASE_STEPS, MODES, NO_GRAVITY, READS, TABLES)
 from .loadtables import keys_of as _keys
 from .model import BUILT, unhandled
+from .units import cos_sin
 from .reader import Reader, record
 
 Vec = tuple[float, float]
@@ -259,7 +260,8 @@ def _gravity(r: _Values, graw) -> Vec:
     d = r.quantity(graw.get("direction", "-90 deg"), "angle", "gravity.direction")
     if not enabled:
         return (0.0, 0.0)
-    return (g * math.cos(d), g * math.sin(d))
+    c, s = cos_sin(d)                       # exact at -90° (not 6e-16 m/s² sideways)
+    return (g * c, g * s)
 
 
 def _forces(ctx: _Context, raw) -> list[AppliedForce]:

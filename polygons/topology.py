@@ -36,6 +36,7 @@ from dataclasses import dataclass
 
 from .errors import SceneError, UnknownLabelError, show, suggest
 from .schema import Key, Table
+from .units import cos_sin
 
 
 @dataclass(frozen=True)
@@ -158,15 +159,6 @@ def ground_from(spec, r, where, ground) -> tuple[float, float]:
     x0, y0 = ground[frm]
     c, s = cos_sin(phi)
     return (x0 + d * c, y0 + d * s)
-
-
-def cos_sin(phi: float) -> tuple[float, float]:
-    """(cos φ, sin φ), exact at the multiples of 90° a book states ('D is 200 mm from A at
-    90°': x = 0, not 1.2e-17 m, which printed as noise in an exam's data)."""
-    k = phi / (math.pi / 2)
-    if abs(k) < 1e6 and k == round(k):
-        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(round(k)) % 4]
-    return math.cos(phi), math.sin(phi)
 
 
 def plate_corner(spec, r, where, length) -> tuple[float, float]:

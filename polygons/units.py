@@ -297,3 +297,14 @@ def round_up(x: float) -> float:
             if v >= x * (1 - 1e-12):
                 return v
     raise AssertionError(x)  # pragma: no cover
+
+
+def cos_sin(phi: float) -> tuple[float, float]:
+    """(cos φ, sin φ), exact at the multiples of 90° a book states ('D is 200 mm from A at
+    90°': x = 0, not 1.2e-17 m, which printed as noise in an exam's data)."""
+    k = phi / (math.pi / 2)
+    if abs(k) < 1e6 and k == round(k):
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[int(round(k)) % 4]
+    return math.cos(phi), math.sin(phi)
+
+

@@ -785,3 +785,11 @@ def test_the_turning_moment_numbers_do_not_depend_on_the_samples():
     sampled = float(np.max(b.energy) - np.min(b.energy))       # trapezoids of the samples
     assert abs(sampled - b.fluctuation) > 1e-3 * b.fluctuation
     assert max(b.torque) < b.max_torque[0]
+
+
+def test_gravity_straight_down_has_no_sideways_noise():
+    """[gravity] direction = "-90 deg" (the default) is (0, −g) exactly, not (6e-16, −9.81):
+    polygons.units.cos_sin, as the exam's data and the topology's placements use it."""
+    scene = load_scene(str(CASES / "forces-toggle-press.toml"))
+    model = load_model(scene)
+    assert model.parsed.gravity == (0.0, -9.81)

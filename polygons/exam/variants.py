@@ -579,12 +579,14 @@ def _short(variants, n, total, drawn, rejected, sp, exhausted: bool) -> str:
     why = "; ".join(f"{c} {r}" for r, c in sorted(rejected.items(), key=lambda x: -x[1]))
     top = max(rejected.items(), key=lambda x: x[1])[0] if rejected else "none"
     kept = len(variants)
+    ranges = "the [exam] ranges give" if sp.ranges else "the scene alone gives"
+    are = "is" if kept == 1 else "are"
     if exhausted:
-        can = f"the [exam] ranges give {total:,} combinations and only {kept} are well posed"
+        can = f"{ranges} {total:,} combinations and only {kept} {are} well posed"
     else:
         est = round(total * kept / drawn) if drawn else 0
         can = (f"only {kept} of {n} variants found well posed in {drawn:,} draws (about "
-               f"{est:,} of the ranges' {total:,} combinations would be)")
+               f"{est:,} of the {total:,} combinations would be)")
     return (f"{can}; {n} asked (rejected: {why}); the limiting criterion: {top} — widen the "
             f"[exam] ranges, relax that criterion"
             + ("" if exhausted else " or raise attempts"))
