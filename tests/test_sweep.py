@@ -418,21 +418,3 @@ def test_scene_at_restates_the_scene_where_the_sweep_was():
         for lab in sw.branches:
             assert np.allclose(sol.points[lab].position,
                                (sw.pos[lab][0][i], sw.pos[lab][1][i]), atol=1e-12)
-
-
-def test_a_populated_result_block_holds_the_same_sweep(monkeypatch):
-    """Large result blocks are mapped with their pages populated (sweep_store.result_block):
-    the same numbers as a block from numpy, writable, of its shape."""
-    from polygons import sweep_store
-    scene = load_scene(str(ROOT / "cases" / "s001-we6.toml"))
-    xs = np.linspace(0.0, 2 * np.pi, 300)
-    want = sweep(scene, inputs=xs)
-    monkeypatch.setattr(sweep_store, "POPULATE_BYTES", 0)
-    block = sweep_store.result_block(3, 5)
-    block[:] = 1.0
-    assert block.shape == (3, 5) and block.dtype == np.float64 and block.sum() == 15.0
-    got = sweep(scene, inputs=xs)
-    for label, v in want.vel.items():
-        if v is not None:
-            assert np.array_equal(np.asarray(got.vel[label]), np.asarray(v))
-    assert np.array_equal(got.margin, want.margin)
