@@ -80,3 +80,14 @@ def write_scene(tmp_path):
         path.write_text(text, encoding="utf-8")
         return path
     return write
+
+
+@pytest.fixture(scope="module")
+def session():
+    """One headless Chromium for a module's page tests (DevTools over a pipe; skipped where
+    Chromium is not installed): tests/test_browser.py, tests/test_page_audit.py."""
+    from diagrams import browser
+    if browser.find() is None:
+        pytest.skip("headless Chromium is not installed (Debian package 'chromium')")
+    with browser.Session(1400, 1000) as s:
+        yield s

@@ -258,15 +258,6 @@ def _page_data(text: str) -> dict:
     return json.loads(m.group(1))
 
 
-@pytest.fixture(scope="module")
-def session():
-    """One headless Chromium for the page tests of this module (DevTools over a pipe)."""
-    if CHROMIUM is None:
-        pytest.skip("headless Chromium is not installed (Debian package 'chromium')")
-    with browser.Session(1400, 1000) as s:
-        yield s
-
-
 def _load(s, path, pre_ids=("probe", "drive")) -> dict:
     """Open ``path`` in the session; the text of each <pre id=...> the page's probes write."""
     import time

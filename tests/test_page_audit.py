@@ -79,14 +79,6 @@ def _hits(seg, box, pad=0.0) -> bool:
     return True
 
 
-@pytest.fixture(scope="module")
-def session():
-    if CHROMIUM is None:
-        pytest.skip("headless Chromium is not installed (Debian package 'chromium')")
-    with browser.Session(1400, 1000) as s:
-        yield s
-
-
 def _measured(s, path) -> dict:
     import time
     s.open(path)
