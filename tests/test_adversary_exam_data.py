@@ -100,3 +100,19 @@ def test_a_cam_stated_by_its_event_varies_its_angle():
     assert "when" not in d["cam_profiles"]["R"]
     assert "when" in data["cam_profiles"]["R"]            # the scene's own data untouched
     assert math.degrees(scene.driver.angle) % 360 == pytest.approx(100.0)
+
+
+def test_an_exam_of_a_scene_drawn_at_one_instant_is_refused_in_words(tmp_path, capsys):
+    """[drawn] positions choose a scene's closures at one instant; varying the crank angle
+    moved the mechanism away from them and 35 of 36 variants failed to assemble, the message
+    blaming the [exam] ranges.  Now: one line naming [drawn] and what to state instead."""
+    from polygons.cli import main
+    text = (CASES / "s001-we6.toml").read_text().replace(
+        '[assembly]\nC = "C below AD"\n', '[drawn]\nC = ["149.25 mm", "-151.07 mm"]\n')
+    path = tmp_path / "drawn.toml"
+    path.write_text(text)
+    assert polygons.solve(str(path)) is not None          # the scene itself solves
+    assert main(["exam", str(path), "--variants", "3", "--out", str(tmp_path / "x"),
+                 "--html"]) == 1
+    err = capsys.readouterr().err
+    assert "[drawn]" in err and "[assembly]" in err and err.count("\n") == 1

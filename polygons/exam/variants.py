@@ -513,6 +513,12 @@ def make_exam(path: str, n: int, seed: int, budget_s: float = BUDGET_S) -> ExamS
             how = "its rod (vary rod_angle)" if placed_by_rod else "position (vary position)"
             raise SceneError(f"{rg.name} varies how the slider driver is placed; this scene "
                              f"places it by {how}", file=path, where=f"exam.{rg.name}")
+    if isinstance(data.get("drawn"), dict) and data["drawn"] and sp.ranges:
+        raise SceneError("the scene states its pose by [drawn] positions (one instant as drawn: "
+                         "they choose its closures and may give lengths), which a variant's "
+                         "other numbers move away from: for an exam state the lengths and "
+                         "the crank angle, and each closure in words ([assembly], e.g. C = \"C "
+                         "above AD\"), in place of [drawn]", file=path, where="drawn")
     if not sp.ask:
         raise SceneError("nothing to ask: give [exam] ask = [\"omega(BC)\", ...] (the scene's "
                          "[[answers]] name no velocity or acceleration)", file=path,
