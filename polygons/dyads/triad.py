@@ -179,9 +179,10 @@ class Triad:
         return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
                 for k in self.placed}
 
-    def source(self, g) -> None:
-        """:meth:`locate`'s statement in the generated program: the same primitives."""
-        self.construction.source(g)
+    def source(self, g):
+        """:meth:`locate`'s statement in the generated program: the same primitives (its
+        margin)."""
+        return self.construction.source(g)
 
     def why_not(self, scene, pos) -> str:
         return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c}, "
@@ -211,10 +212,7 @@ class Triad:
                    "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
                    f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
                    component=Cm.CONSTRUCTION, link=LC)
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
-              f"{s} = intersection of the two lines",
-              f"The lines meet at {s}: {b.names.pole}{s} is the velocity of the "
-              f"auxiliary point {S}.", (n1, n2), component=Cm.RESULTANT)
+        Triad._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}")
         n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
                    "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
                    f"{X} and {S} are points of the plate: through {s} draw a line "
@@ -234,10 +232,7 @@ class Triad:
                        "relative_velocity", f"(v_{X})_{E}", f"(v_{X})_{E} ⟂ {E}{X}",
                        f"Through {e} draw a line ⟂ {E}{X}: the velocity of {X} relative to "
                        f"{E}.", component=Cm.CONSTRUCTION, link=LX)
-            b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
-                  f"{x} = intersection of the two lines",
-                  f"The lines meet at {x}: {b.names.pole}{x} is the velocity of {X}.",
-                  (n3, n4), component=Cm.RESULTANT)
+            self._meet(b, x, X, (n3, n4))
             self._rates(b, Op.OMEGA)
             return
         k = [b.fresh(B), b.fresh(S), b.fresh(C), b.fresh(S), b.fresh(X), b.fresh(X)]
@@ -249,18 +244,12 @@ class Triad:
         self._normal(b, LC, D, C, d, k[2], f"(a_{C})_{D}^n")
         self._normal(b, P, C, S, k[2], k[3], f"(a_{S})_{C}^n")
         n2 = self._tangent_line(b, D, C, k[3], None, (C, D, S, C))
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
-              f"{s} = intersection of the two lines",
-              f"The lines meet at {s}: {b.names.pole}{s} is the acceleration of the "
-              f"auxiliary point {S}.", (n1, n2), component=Cm.RESULTANT)
+        self._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}")
         self._normal(b, P, S, X, s, k[4], f"(a_{X})_{S}^n")
         n3 = self._tangent_line(b, S, X, k[4], P)
         self._normal(b, LX, E, X, e, k[5], f"(a_{X})_{E}^n")
         n4 = self._tangent_line(b, E, X, k[5], LX)
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
-              f"{x} = intersection of the two lines",
-              f"The lines meet at {x}: {b.names.pole}{x} is the acceleration of {X}.",
-              (n3, n4), component=Cm.RESULTANT)
+        self._meet(b, x, X, (n3, n4))
         # each α from its own tangential part: x₁x (plate), b₁b, c₁c, x₂x (the links), the
         # end of each centripetal vector to the point — never the whole relative acceleration
         self._rates(b, Op.ALPHA, {P: (k[4], X), LB: (k[0], B), LC: (k[2], C), LX: (k[5], X)})
@@ -298,6 +287,15 @@ class Triad:
             b.add(Kind.MEASURE, op, (L, O, Q), f"{sym}_{L}", None, None, th, f"{sym}_{L}",
                   f"{sym}_{L} = {vec} / {O}{Q}",
                   f"The {what} of {L} is {words} divided by {O}{Q}.", component=comp, link=L)
+
+    @staticmethod
+    def _meet(b: Builder, p, P, lines, of=None, tail="") -> None:
+        """The step where two construction lines meet at the vertex ``p``: pole → p is the
+        velocity (acceleration) of ``P`` (in words ``of``, then ``tail``)."""
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (), p, None, p, "intersection", f"{b.q}_{P}",
+              f"{p} = intersection of the two lines",
+              f"The lines meet at {p}: {b.names.pole}{p} is the {b.what} of {of or P}{tail}.",
+              lines, component=Component.RESULTANT)
 
     @staticmethod
     def _normal(b: Builder, L, P, Q, frm, to, name) -> None:

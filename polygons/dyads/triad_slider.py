@@ -170,39 +170,16 @@ class TriadSlider:
         """The plate in the roles' frame: C = (L, 0), X = (ξ, η) from B (arrays in a batch)."""
         return self.construction.steps[0].plate.value(scene)
 
-    def closures(self, scene, pos) -> list[dict]:
-        """Every closure at the positions ``pos``: {B, C, X, S} each."""
-        closure, assur = self.construction.steps
-        out = []
-        for pts in closure.every(scene, pos):
-            pts.update(assur.locate(scene, {**pos, **pts}, None, 0.0)[0])
-            out.append(pts)
-        return out
-
-    def locate(self, scene, pos, sigma, x):
-        """The closure nearest the reference ``sigma`` (None: the first closure), over one
-        position or (2, N) arrays (continuation): :attr:`construction` evaluated, the one
-        statement of its geometry."""
-        if not sigma:
-            one = np.ndim(pos[self.ob]) == 1 and np.ndim(pos[self.oc]) == 1
-            cands = self.closures(scene, pos) if one else None
-            if one and not cands:
-                return self._nan(pos), -1.0
-            B, X = (cands[0][self.b], cands[0][self.x]) if one else ((0.0, 0.0), (0.0, 0.0))
-            sigma = dict(zip(self.sigma_keys, (B[0], B[1], X[0], X[1])))
-        return self.construction.locate(scene, pos, sigma, x)
+    # as the three-link triad's: its construction's every closure, the one nearest the
+    # reference, NaN where none, the statement itself
+    closures = Triad.closures
+    locate = Triad.locate
+    _nan = Triad._nan
+    source = Triad.source
 
     def variant(self, scene) -> tuple:
         """The statement's shape does not change with the scene's numbers."""
         return ()
-
-    def _nan(self, pos):
-        return {k: np.full_like(np.asarray(pos[self.ob], dtype=float), np.nan)
-                for k in self.placed}
-
-    def source(self, g):
-        """:meth:`locate` as generated code: :attr:`construction`'s statement (its margin)."""
-        return self.construction.source(g)
 
     def why_not(self, scene, pos) -> str:
         return (f"the class-III group (the plate {self.plate} with corners {self.b}, {self.c} "
@@ -233,10 +210,7 @@ class TriadSlider:
                        "slider_line", f"v_{X}", f"v_{X} ∥ guide of {X}",
                        f"The block at {X} slides on a fixed guide: through {pole} draw a line "
                        f"along the guide of {X}.", component=Cm.RESULTANT)
-            b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"v_{X}",
-                  f"{x} = intersection of the two lines",
-                  f"The lines meet at {x}: {pole}{x} is the velocity of {X}, along its "
-                  f"guide.", (n3, n4), component=Cm.RESULTANT)
+            Triad._meet(b, x, X, (n3, n4), tail=", along its guide")
             self._rates(b, Op.OMEGA)
             return
         k = [b.fresh(B), b.fresh(S), b.fresh(C), b.fresh(S), b.fresh(X)]
@@ -246,10 +220,7 @@ class TriadSlider:
         Triad._normal(b, LC, D, C, d, k[2], f"(a_{C})_{D}^n")
         Triad._normal(b, P, C, S, k[2], k[3], f"(a_{S})_{C}^n")
         n2 = Triad._tangent_line(b, D, C, k[3], None, (C, D, S, C))
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
-              f"{s} = intersection of the two lines",
-              f"The lines meet at {s}: {pole}{s} is the acceleration of the auxiliary "
-              f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+        Triad._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}")
         Triad._normal(b, P, S, X, s, k[4], f"(a_{X})_{S}^n")
         n3 = Triad._tangent_line(b, S, X, k[4], P)
         n4 = b.add(Kind.LINE, Op.LINE_GUIDE, (X,), "slider line", pole, None, "slider_line",
@@ -257,10 +228,7 @@ class TriadSlider:
                    f"Through {pole} draw a line along the guide of {X}: the block's "
                    f"acceleration lies along it (the guide is fixed: no Coriolis term).",
                    component=Cm.RESULTANT)
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), x, None, x, "intersection", f"a_{X}",
-              f"{x} = intersection of the two lines",
-              f"The lines meet at {x}: {pole}{x} is the acceleration of {X}, along its "
-              f"guide.", (n3, n4), component=Cm.RESULTANT)
+        Triad._meet(b, x, X, (n3, n4), tail=", along its guide")
         self._rates(b, Op.ALPHA, {P: (k[4], X), LB: (k[0], B), LC: (k[2], C)})
 
     def _emit_on_normal(self, b: Builder) -> None:
@@ -289,10 +257,7 @@ class TriadSlider:
                        f"{S} is on the normal to the guide at {X}: v_{S} − v_{X} = ω × "
                        f"{X}{S} is along the guide, and so is v_{X}. Through {pole} draw a "
                        f"line along the guide of {X}.", component=Cm.CONSTRUCTION)
-            b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"v_{S}",
-                  f"{s} = intersection of the two lines",
-                  f"The lines meet at {s}: {pole}{s} is the velocity of the auxiliary "
-                  f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+            Triad._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}")
             n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, P2), f"line ⟂ {S}{P2}", s, None,
                        "relative_velocity", f"(v_{P2})_{S}", f"(v_{P2})_{S} ⟂ {S}{P2}",
                        f"{P2} and {S} are points of the plate: through {s} draw a line "
@@ -301,10 +266,7 @@ class TriadSlider:
                        "relative_velocity", f"(v_{P2})_{O2}", f"(v_{P2})_{O2} ⟂ {O2}{P2}",
                        f"Through {o2} draw a line ⟂ {O2}{P2}: the velocity of {P2} relative "
                        f"to {O2}.", component=Cm.CONSTRUCTION, link=L2)
-            b.add(Kind.INTERSECTION, Op.INTERSECT, (), p2, None, p2, "intersection",
-                  f"v_{P2}", f"{p2} = intersection of the two lines",
-                  f"The lines meet at {p2}: {pole}{p2} is the velocity of {P2}.", (n3, n4),
-                  component=Cm.RESULTANT)
+            Triad._meet(b, p2, P2, (n3, n4))
             self._rates(b, Op.OMEGA)
             return
         k = [b.fresh(P1), b.fresh(S), b.fresh(S), b.fresh(P2), b.fresh(P2)]
@@ -317,18 +279,12 @@ class TriadSlider:
                    f"Through {k[2]} draw a line along the guide of {X}: a_{X} (the block on "
                    f"a fixed guide) and (a_{S})_{X}^t (⟂ {X}{S}) both lie along it.",
                    component=Cm.CONSTRUCTION)
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), s, None, s, "intersection", f"a_{S}",
-              f"{s} = intersection of the two lines",
-              f"The lines meet at {s}: {pole}{s} is the acceleration of the auxiliary "
-              f"point {S}.", (n1, n2), component=Cm.RESULTANT)
+        Triad._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}")
         Triad._normal(b, P, S, P2, s, k[3], f"(a_{P2})_{S}^n")
         n3 = Triad._tangent_line(b, S, P2, k[3], P)
         Triad._normal(b, L2, O2, P2, o2, k[4], f"(a_{P2})_{O2}^n")
         n4 = Triad._tangent_line(b, O2, P2, k[4], L2)
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), p2, None, p2, "intersection", f"a_{P2}",
-              f"{p2} = intersection of the two lines",
-              f"The lines meet at {p2}: {pole}{p2} is the acceleration of {P2}.", (n3, n4),
-              component=Cm.RESULTANT)
+        Triad._meet(b, p2, P2, (n3, n4))
         self._rates(b, Op.ALPHA, {P: (k[3], P2), L1: (k[0], P1), L2: (k[4], P2)})
 
     def _rates(self, b: Builder, op, tangential=None) -> None:
@@ -366,16 +322,11 @@ class TriadSlider:
                   f"{sym}_{L} = {vec} / {O}{Q}",
                   f"The {what} of {L} is {words} divided by {O}{Q}.", component=comp, link=L)
         pole, x = b.names.pole, V(X)
-        if vel:
-            b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (X,), f"v_{X}", None, None, "slider",
-                  f"v_{X} along guide", f"v_{X} = {pole}{x}",
-                  f"The block's velocity is {pole}{x}, signed along the guide direction.",
-                  component=Component.RESULTANT)
-        else:
-            b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (X,), f"a_{X}", None, None, "slider",
-                  f"a_{X} along guide", f"a_{X} = {pole}{x}",
-                  f"The block's acceleration is {pole}{x}, signed along the guide direction.",
-                  component=Component.RESULTANT)
+        b.add(Kind.MEASURE, Op.SLIDER_VELOCITY if vel else Op.SLIDER_ACCELERATION, (X,),
+              f"{b.q}_{X}", None, None, "slider", f"{b.q}_{X} along guide",
+              f"{b.q}_{X} = {pole}{x}",
+              f"The block's {b.what} is {pole}{x}, signed along the guide direction.",
+              component=Component.RESULTANT)
 
 
 # ---------------------------------------------------------------- finding the groups
