@@ -49,24 +49,38 @@ def _quartic(p, phi0):
         return None
     a, d, e, L, xi, eta, dx, dy, ex, ey = (v / s for v in (a, d, e, L, xi, eta, dx, dy,
                                                          ex, ey))
+    lin, m11, m12, r1 = first_corner(phi0, a, d, L, dx, dy)
+    m21, m22 = lin(-2 * ex, 2 * xi, -2 * eta), lin(-2 * ey, 2 * eta, 2 * xi)
+    r2 = lin(-(xi * xi + eta * eta + ex * ex + ey * ey - e * e + a * a),
+             2 * (ex * xi + ey * eta), 2 * (ey * xi - ex * eta))
+    return eliminated(a, m11, m12, r1, m21, m22, r2)[1]
+
+
+def first_corner(phi0, a, d, L, dx, dy):
+    """(lin, m₁₁, m₁₂, r₁): ``lin(k0, kc, ks)`` the coefficients in t of (k0 + kc cos φ +
+    ks sin φ)(1 + t²), φ = φ₀ + 2 atan t; and B's first linear equation relative to A,
+    2 B′·(L u(φ) − D′) = −(|L u − D′|² − d² + a²) (|DC| = d with C = B + L u), as such."""
     c0, s0 = math.cos(phi0), math.sin(phi0)
 
-    def lin(k0, kc, ks):        # (k0 + kc cos φ + ks sin φ)(1 + t²), φ = φ₀ + 2 atan t
+    def lin(k0, kc, ks):
         kc, ks = kc * c0 + ks * s0, ks * c0 - kc * s0
         return np.array([k0 + kc, 2.0 * ks, k0 - kc])
     m11, m12 = lin(-2 * dx, 2 * L, 0.0), lin(-2 * dy, 0.0, 2 * L)
     r1 = lin(-(L * L + dx * dx + dy * dy - d * d + a * a), 2 * L * dx, 2 * L * dy)
-    m21, m22 = lin(-2 * ex, 2 * xi, -2 * eta), lin(-2 * ey, 2 * eta, 2 * xi)
-    r2 = lin(-(xi * xi + eta * eta + ex * ex + ey * ey - e * e + a * a),
-             2 * (ex * xi + ey * eta), 2 * (ey * xi - ex * eta))
+    return lin, m11, m12, r1
+
+
+def eliminated(a, m11, m12, r1, m21, m22, r2):
+    """B eliminated from its two linear equations M B′ = r by Cramer's rule and put into
+    |B′| = a: (q = (r₁m₂₂ − m₁₂r₂)² + (m₁₁r₂ − r₁m₂₁)² − a² det², q / (1 + t²), remainder)."""
     from numpy.polynomial import polynomial as _PP   # low → high order (imported here:
     mul, sub = _PP.polymul, _PP.polysub              # a triad only; a quicker start)
     dl = sub(mul(m11, m22), mul(m12, m21))
     nx = sub(mul(r1, m22), mul(m12, r2))
     ny = sub(mul(m11, r2), mul(r1, m21))
     q = sub(_PP.polyadd(mul(nx, nx), mul(ny, ny)), a * a * mul(dl, dl))
-    q6, _ = _PP.polydiv(q, np.array([1.0, 0.0, 1.0]))
-    return q6
+    q6, rem = _PP.polydiv(q, np.array([1.0, 0.0, 1.0]))
+    return q, q6, rem
 
 
 def _val(c, t):
@@ -189,30 +203,6 @@ def _residual(q, pose) -> float:
                abs(math.dist(X, (ex, ey)) - e))
 
 
-def _closures_from(qq, size) -> list[tuple[float, float, float]]:
-    """Every closure (bx, by, φ) of the group ``qq`` (its plate's own η) by the polynomial
-    eliminated from its first corner: each real root polished by Newton, checked against the
-    three lengths."""
-    got = _phi0(qq)
-    if got is None:
-        return []
-    phi0, c = got
-    out = []
-    for t in real_roots(c):
-        phi = phi0 + 2.0 * math.atan(t)
-        cands = [(bx, by, phi) for bx, by in _b_candidates(phi, qq)
-                 if math.isfinite(bx) and math.isfinite(by)]
-        # each candidate polished: where Cramer's determinant nearly vanishes two closures
-        # share (nearly) one φ and differ in B — each candidate may reach another
-        for pose in cands:
-            new, _ = _newton(qq, pose, size)
-            if new is not None and _residual(qq, new) <= _residual(qq, pose):
-                pose = new
-            if _residual(qq, pose) <= 1e-9 * size:
-                out.append(pose)
-    return out
-
-
 def _routes(q):
     """The group restated from each corner in turn (B, then C, then X first): (its
     parameters, a function taking its closure (bx′, by′, φ′) back to the plate pose (bx, by,
@@ -257,7 +247,7 @@ def closures(p, size=None) -> list[tuple[float, float, float, float]]:
     for eta in ((q[11], -q[11]) if mirror and q[11] != 0.0 else (q[11],)):
         qq = q[:11] + (eta,)
         for rq, back in _routes(qq):
-            for pose in _closures_from(rq, size):
+            for pose in TRIAD.closures_from(rq, size):
                 pose = back(pose)
                 pts = _corners_of(qq, pose, eta)
                 if _residual(qq, pose) <= 1e-9 * size and all(
@@ -396,6 +386,34 @@ class ClosureFamily:
     corners: Callable
     listed: Callable
     margin: Callable
+    #: ``phi0(qq)`` → (φ₀, the polynomial) or None; ``b_candidates(φ, qq)`` → the corner
+    #: P₁ there; ``residual(qq, pose)`` → the loop equations' largest error
+    phi0: Callable
+    b_candidates: Callable
+    residual: Callable
+
+    def closures_from(self, qq, size) -> list[tuple[float, float, float]]:
+        """Every closure (bx, by, φ) of ``qq`` by the polynomial eliminated from its first
+        corner: each real root, each candidate P₁ there polished by Newton (where Cramer's
+        determinant nearly vanishes two closures share nearly one φ and differ in P₁),
+        checked against the loop equations."""
+        got = self.phi0(qq)
+        if got is None:
+            return []
+        phi0, c = got
+        out = []
+        for t in real_roots(c):
+            phi = phi0 + 2.0 * math.atan(t)
+            for bx, by in self.b_candidates(phi, qq):
+                if not (math.isfinite(bx) and math.isfinite(by)):
+                    continue
+                pose = (bx, by, phi)
+                new, _ = self.newton(qq, pose, size)
+                if new is not None and self.residual(qq, new) <= self.residual(qq, pose):
+                    pose = new
+                if self.residual(qq, pose) <= 1e-9 * size:
+                    out.append(pose)
+        return out
 
     def follow(self, q, mirror, ref_b, ref_x, size, pose=None, fallback=True, reach=None):
         """The closure nearest the reference corners: Newton from ``pose`` (the
@@ -491,7 +509,7 @@ def _ref_poses(q, mirror, ref_b, ref_x):
 
 
 TRIAD = ClosureFamily(11, _newton, lambda qq, pose: _corners_of(qq, pose, qq[11]), _listed,
-                      margin_at)
+                      margin_at, _phi0, _b_candidates, _residual)
 _follow = TRIAD.follow
 
 

@@ -32,7 +32,7 @@ import math
 
 import numpy as np
 
-from .triad_math import _EPS, ClosureFamily, choose_phi0, real_roots
+from .triad_math import _EPS, ClosureFamily, choose_phi0, eliminated, first_corner
 
 _NAN7 = (math.nan,) * 6 + (-1.0,)
 
@@ -56,23 +56,11 @@ def _poly(q, phi0):
         return None
     a, d, L, xi, eta, dx, dy, gx, gy = (v / s for v in (a, d, L, xi, eta, dx, dy, gx, gy))
     nx, ny = -ey, ex
-    c0, s0 = math.cos(phi0), math.sin(phi0)
-
-    def lin(k0, kc, ks):        # (k0 + kc cos φ + ks sin φ)(1 + t²), φ = φ₀ + 2 atan t
-        kc, ks = kc * c0 + ks * s0, ks * c0 - kc * s0
-        return np.array([k0 + kc, 2.0 * ks, k0 - kc])
-    m11, m12 = lin(-2 * dx, 2 * L, 0.0), lin(-2 * dy, 0.0, 2 * L)
-    r1 = lin(-(L * L + dx * dx + dy * dy - d * d + a * a), 2 * L * dx, 2 * L * dy)
+    lin, m11, m12, r1 = first_corner(phi0, a, d, L, dx, dy)
     # n·B = n·G − n·R(φ)(ξ, η) = n·G − cos φ (n_x ξ + n_y η) − sin φ (n_y ξ − n_x η)
     m21, m22 = lin(nx, 0.0, 0.0), lin(ny, 0.0, 0.0)
     r2 = lin(nx * gx + ny * gy, -(nx * xi + ny * eta), -(ny * xi - nx * eta))
-    from numpy.polynomial import polynomial as _PP   # low → high order (imported here:
-    mul, sub = _PP.polymul, _PP.polysub              # a triad only; a quicker start)
-    dl = sub(mul(m11, m22), mul(m12, m21))
-    px = sub(mul(r1, m22), mul(m12, r2))
-    py = sub(mul(m11, r2), mul(r1, m21))
-    full = sub(_PP.polyadd(mul(px, px), mul(py, py)), a * a * mul(dl, dl))
-    q6, rem = _PP.polydiv(full, np.array([1.0, 0.0, 1.0]))
+    full, q6, rem = eliminated(a, m11, m12, r1, m21, m22, r2)
     big = float(np.max(np.abs(full))) if len(full) else 0.0
     if float(np.max(np.abs(rem), initial=0.0)) <= 1e-10 * max(big, 1e-300):
         return q6
@@ -191,29 +179,6 @@ def margin_at(q, pose, size) -> float:
     return _margin(_jacobian(q, pose, size)[1])
 
 
-def _closures_from(qq, size) -> list[tuple[float, float, float]]:
-    """Every closure (bx, by, φ) of ``qq`` by the polynomial eliminated from its first corner:
-    each real root, each candidate B there polished by Newton (where Cramer's determinant
-    nearly vanishes two closures share nearly one φ and differ in B), checked."""
-    got = _phi0(qq)
-    if got is None:
-        return []
-    phi0, c = got
-    out = []
-    for t in real_roots(c):
-        phi = phi0 + 2.0 * math.atan(t)
-        for bx, by in _b_candidates(phi, qq):
-            if not (math.isfinite(bx) and math.isfinite(by)):
-                continue
-            pose = (bx, by, phi)
-            new, _ = _newton(qq, pose, size)
-            if new is not None and _residual(qq, new) <= _residual(qq, pose):
-                pose = new
-            if _residual(qq, pose) <= 1e-9 * size:
-                out.append(pose)
-    return out
-
-
 def closures(p, size=None) -> list[tuple[float, float, float, float]]:
     """Every closure (bx, by, φ, η) of the group with parameters ``p`` = (ax, ay, a, dx, dy, d,
     gx, gy, ex, ey, L, ξ, η, mirror): the real roots of the polynomial eliminated from P₁ and
@@ -230,9 +195,9 @@ def closures(p, size=None) -> list[tuple[float, float, float, float]]:
     for eta in ((q[12], -q[12]) if mirror and q[12] != 0.0 else (q[12],)):
         qq = q[:12] + (eta,)
         qc = (dx, dy, d, ax, ay, a, gx, gy, ex, ey, L, L - xi, -eta)
-        poses = _closures_from(qq, size) + [
+        poses = FAMILY.closures_from(qq, size) + [
             (cx + L * math.cos(ph), cy + L * math.sin(ph), ph - math.pi)
-            for cx, cy, ph in _closures_from(qc, size)]
+            for cx, cy, ph in FAMILY.closures_from(qc, size)]
         for pose in poses:
             pts = corners_of(qq, pose)
             if _residual(qq, pose) <= 1e-9 * size and all(
@@ -301,7 +266,8 @@ def _ref_poses(q, mirror, ref_b, ref_x):
 
 
 #: following the closure: as the three-link triad's (:class:`triad_math.ClosureFamily`)
-FAMILY = ClosureFamily(12, _newton, corners_of, _listed, margin_at)
+FAMILY = ClosureFamily(12, _newton, corners_of, _listed, margin_at, _phi0, _b_candidates,
+                       _residual)
 _follow = FAMILY.follow
 
 
