@@ -110,6 +110,20 @@ class Unsupported(Exception):
     """A construction the fused kernel does not make (the caller keeps the arrays program)."""
 
 
+def _link_rates(g, prog, done_links, O, X, L, Z, d) -> list[str]:
+    """The rows of ω and α of the link O X of length ``L`` (once a link): ω = (OX × v_X/O)
+    / L², α = (OX × a_X/O) / L² — the loop's names d{d}x, d{d}y for OX and r{d}x, r{d}y for
+    v_X − v_O, ``Z`` O's rows."""
+    name = _link_of(prog, O, X)
+    if name is None or name in done_links:
+        return []
+    kin = g.k(1.0 / (L * L))
+    wr, ar = g.row(("omega", name)), g.row(("alpha", name))
+    done_links[name] = (wr, ar)
+    return [f"r{wr}[i] = (d{d}x * r{d}y - d{d}y * r{d}x) * {kin}",
+            f"r{ar}[i] = (d{d}x * ({_sub('ay', Z[5])}) - d{d}y * ({_sub('ax', Z[4])})) * {kin}"]
+
+
 def _link_of(prog, p, x):
     """The reported link joining ``p`` and ``x`` (name), or None."""
     for name, a, b in prog.links:
@@ -178,16 +192,8 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
                 "ax = (dqy * c1 - dpy * c2) * iD", "ay = (dpx * c2 - dqx * c1) * iD",
                 f"{X[0]} = x", f"{X[1]} = y", f"{X[2]} = vx", f"{X[3]} = vy",
                 f"{X[4]} = ax", f"{X[5]} = ay", "_mg(M, i, m)"]
-        for (d, L, Z, rv) in (("p", r1, P, ("rpx", "rpy")), ("q", r2, Q, ("rqx", "rqy"))):
-            name = _link_of(prog, c.p if d == "p" else c.q, c.x)
-            if name is None or name in done_links:
-                continue
-            kin = g.k(1.0 / (L * L))
-            wr, ar = g.row(("omega", name)), g.row(("alpha", name))
-            done_links[name] = (wr, ar)
-            body += [f"r{wr}[i] = (d{d}x * {rv[1]} - d{d}y * {rv[0]}) * {kin}",
-                     f"r{ar}[i] = (d{d}x * ({_sub('ay', Z[5])}) - d{d}y * ({_sub('ax', Z[4])}))"
-                     f" * {kin}"]
+        for d, L, Z, O in (("p", r1, P, c.p), ("q", r2, Q, c.q)):
+            body += _link_rates(g, prog, done_links, O, c.x, L, Z, d)
         g.loop(body)
         return
     if isinstance(c, CircleLine):
@@ -221,14 +227,7 @@ def _emit(g: _Gen, prog, c, done_links: dict) -> None:
                 f"ax = tdd * {ex}", f"ay = tdd * {ey}",
                 f"{X[0]} = x", f"{X[1]} = y", f"{X[2]} = vx", f"{X[3]} = vy",
                 f"{X[4]} = ax", f"{X[5]} = ay", "_mg(M, i, m)"]
-        name = _link_of(prog, c.p, c.x)
-        if name is not None and name not in done_links:
-            kin = g.k(1.0 / (L * L))
-            wr, ar = g.row(("omega", name)), g.row(("alpha", name))
-            done_links[name] = (wr, ar)
-            body += [f"r{wr}[i] = (dpx * rpy - dpy * rpx) * {kin}",
-                     f"r{ar}[i] = (dpx * ({_sub('ay', P[5])}) - dpy * ({_sub('ax', P[4])}))"
-                     f" * {kin}"]
+        body += _link_rates(g, prog, done_links, c.p, c.x, L, P, "p")
         g.loop(body)
         return
     if isinstance(c, RigidImage):
