@@ -8,7 +8,7 @@ import math
 import sys
 from pathlib import Path
 
-from ..cam_diagram import MAX_DIAGRAM_STEPS, diagram, extremes, parts
+from ..cam_diagram import EXTREME_SAMPLES, MAX_DIAGRAM_STEPS, diagram, extremes, parts
 from ..cam_profiles import TABLE, stated
 from ..errors import SceneError
 from ..steps import number
@@ -39,7 +39,9 @@ def run_cam(args, scene) -> int:
                                                      for g, p in scene.ground.items()}},
                                          scene.file)
     osc = fol.oscillating
-    dwell = extremes(scene, rows, "s", -1)[0].s if not osc else None
+    # the extremes are looked for on one diagram of at least EXTREME_SAMPLES rows, made once
+    fine = rows if len(rows) >= EXTREME_SAMPLES else diagram(scene, EXTREME_SAMPLES)
+    dwell = extremes(scene, fine, "s", -1)[0].s if not osc else None
     out = Path(args.out)
     stem = out / f"{Path(args.scene).stem}-cam"
     stem.parent.mkdir(parents=True, exist_ok=True)
@@ -61,7 +63,7 @@ def run_cam(args, scene) -> int:
     written = [path]
     if not args.no_plot:
         written += _plot(scene, rows, osc, dwell, stem, list(args.formats))
-    sys.stdout.write(_summary(scene, rows, osc, dwell, label, table, written))
+    sys.stdout.write(_summary(scene, rows, fine, osc, dwell, label, table, written))
     return 0
 
 
@@ -96,24 +98,27 @@ def _plot(scene, rows, osc, dwell, stem, formats):
                        (0.0, 360.0), list(range(0, 361, 45)))
 
 
-def _summary(scene, rows, osc, dwell, label, table, written) -> str:
+def _summary(scene, rows, fine, osc, dwell, label, table, written) -> str:
+    """The diagram in words: its parts, and the lift (swing) and greatest rates found on
+    ``fine`` (the diagram, or a finer one where it is coarse)."""
     lines = [f"{Path(scene.file).name}: displacement diagram of the follower {label} over a "
              f"turn ({len(rows)} cam angles; nose axis angle CCW from +x)"]
     for part, a0, a1, by in parts(scene):
         lines.append(f"  {part:15s} {math.degrees(a0):>9.6g}° … {math.degrees(a1):.6g}°  ({by})")
+
     def at(found) -> str:
         return " and ".join(f"{math.degrees(r.angle):.6g}° ({r.part})" for r in found)
 
     if osc:
-        lo, hi = extremes(scene, rows, "s", -1)[0].s, extremes(scene, rows, "s", +1)[0].s
+        lo, hi = extremes(scene, fine, "s", -1)[0].s, extremes(scene, fine, "s", +1)[0].s
         lines.append(f"  arm swing: {number(math.degrees(hi - lo))}°")
         unit_v, unit_a, name_v, name_a = "rad/s", "rad/s²", "ω", "α"
     else:
-        top = extremes(scene, rows, "s", +1)
+        top = extremes(scene, fine, "s", +1)
         lines.append(f"  lift: {number((top[0].s - dwell) * 1e3)} mm at {at(top)}")
         unit_v, unit_a, name_v, name_a = "m/s", "m/s²", "v", "a"
     for name, key, unit in ((name_v, "v", unit_v), (name_a, "a", unit_a)):
-        big = extremes(scene, rows, key)
+        big = extremes(scene, fine, key)
         lines.append(f"  greatest |{name}|: {number(abs(getattr(big[0], key)))} {unit} at "
                      f"{at(big)}")
     lines += [f"wrote {p}" for p in written]
