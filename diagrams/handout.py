@@ -42,8 +42,20 @@ DRAWABLE = ("vector", "image", "line", "intersection")
 #: portrait: one orientation throughout)
 PORTRAIT = (180.0, 262.0)
 #: empty drawing areas of the worksheet (mm, inside their 4 mm side margins and above their
-#: 14 mm scale bar): A5 when the key's drawing fits it, else as large as a page allows
+#: 14 mm scale bar): A5 when the key's drawing fits it, else the page's width and as tall as
+#: the key's drawing needs (:func:`area_dims`), at most as tall as a page allows
 AREAS = {"A5": (150.0, 100.0), "portrait": (172.0, 222.0)}
+#: an area taller than A5 is the key's drawing's height (its frame: the polygon and 10 mm of
+#: construction lines round it) rounded up to whole centimetres, and this much more (mm)
+AREA_ROOM = 10.0
+
+#: the space diagram is set beside the data table (one datum a row) when, as drawn or with
+#: its key and legend moved below it, it leaves this much of the page's width (mm) for them:
+#: a tall, narrow mechanism (Fig 7's 150 mm lever) then shares the first page with its data
+#: instead of leaving half of it empty
+SIDE_TEXT = 50.0
+#: the space between the data column and the space diagram beside it (mm)
+SIDE_GAP = 5.0
 
 #: a stage figure printed this narrow (mm) or narrower sits beside its steps' text
 NARROW_STAGE = 30.0
@@ -120,12 +132,18 @@ def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = No
             f"<title>{esc(kind)} — {esc(title)}</title>\n<style>{CSS}</style>\n</head>\n",
             f"<body class=\"{kind.lower()}\">\n")
     _header(doc, sol, worksheet, kind)
-    _problem(doc, sol, worksheet)
-    _space(doc, sol, figs, worksheet)
+    side = _space_beside(figs)
+    if side is None:
+        _problem(doc, sol, worksheet)
+        _space(doc, sol, figs, worksheet)
+    else:
+        _problem(doc, sol, worksheet,
+                 beside=lambda d: _space(d, sol, figs, worksheet, side))
     drawn = [d for d in scene.solve if d in sol.vertices]
-    # a worksheet whose last drawing area takes a whole page has its answer table before
-    # it, under that diagram's steps: after it, the table alone would make a last page
-    early = bool(worksheet and drawn and _area_size(figs, drawn[-1]) == "portrait")
+    # a worksheet has its answer table (kept in one piece) before its last drawing area,
+    # under that diagram's steps: after it, the table (or its tail) could make a last page of
+    # its own, while an area alone on a last page is a page to draw on
+    early = bool(worksheet and drawn)
     for diagram in drawn:
         _construction(doc, sol, figs, diagram, worksheet,
                       (lambda: _blanks(doc, sol, file)) if early and diagram == drawn[-1]
@@ -169,12 +187,17 @@ def _header(doc: _Doc, sol: Solution, worksheet: bool, kind: str) -> None:
 
 
 def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
-           intro: str = "", ident: str | None = None, level: str = "h3") -> None:
+           intro: str = "", ident: str | None = None, level: str = "h3",
+           beside=None) -> None:
     """A finished diagram printed at its stated scale (full size: a key laid over a student's
     drawing matches it), below its heading and ``intro`` HTML; :func:`figures` has chosen a
     scale at which it fits the portrait page (stated here when it is not the first choice).
-    Only a drawing that no round scale makes fit is reduced, and then says so."""
-    d = figs.drawing.get(name)
+    Only a drawing that no round scale makes fit is reduced, and then says so.
+
+    ``beside``: the drawing as :func:`_space_beside` restacks it, set in the column beside
+    the data (:func:`diagrams.handout_problem.problem`): the heading and ``intro`` end the
+    data's column, the drawing is the other."""
+    d = figs.drawing.get(name) if beside is None else beside
     if d is None or name not in figs.svg:
         return
     from .figures import plate
@@ -187,12 +210,17 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
         k = min(PORTRAIT[0] / w, PORTRAIT[1] / h)
         width, reduced = w * k, k
     head = f"<{level}>{esc(heading) if level == 'h2' else sym(heading)}</{level}>\n"
-    # the drawing (with its heading unless that opens a section) floats: when it does not
-    # fit what is left of the page, it goes to the next page and the text after it fills
-    # this one, instead of leaving the rest of the page empty
-    doc.add(f'<section class="plate portrait" id="{esc(ident or "plate-" + name)}">\n'
-            + (head + intro if level == "h2" else intro)
-            + '<div class="sheet">' + ("" if level == "h2" else head))
+    if beside is not None:      # the heading and words end the data's column
+        doc.add(head + intro + "</div>\n"
+                f'<section class="plate beside" id="{esc(ident or "plate-" + name)}" '
+                f'style="width:{width:.1f}mm">\n<div class="sheet">')
+    else:
+        # the drawing (with its heading unless that opens a section) floats: when it does
+        # not fit what is left of the page, it goes to the next page and the text after it
+        # fills this one, instead of leaving the rest of the page empty
+        doc.add(f'<section class="plate portrait" id="{esc(ident or "plate-" + name)}">\n'
+                + (head + intro if level == "h2" else intro)
+                + '<div class="sheet">' + ("" if level == "h2" else head))
     doc.add(f'<figure class="diagram full">{inline_svg(svg, name, "figure", width, label)}'
             f"</figure>\n")
     scale_txt = figs.drawing[name].scale_statement if name in figs.drawing else ""
@@ -209,7 +237,23 @@ def _plate(doc: _Doc, figs: Figures, name: str, heading: str, label: str,
     doc.add(f'<p class="figure-note">{esc(msg)}</p>\n</div>\n</section>\n')
 
 
-def _space(doc: _Doc, sol: Solution, figs: Figures, worksheet: bool) -> None:
+def _space_beside(figs: Figures):
+    """The space diagram to set beside the data table, or None: the drawing as composed, or
+    with its key and legend below it (:func:`diagrams.layout.restack`), when its printed
+    width leaves :data:`SIDE_TEXT` mm of the page beside it (and it prints full size)."""
+    from .figures import PLATE_MARGIN, plate
+    from .layout import MARGIN, restack
+    from .svg import to_svg
+    d = figs.drawing.get("space")
+    if d is None or "space" not in figs.svg:
+        return None
+    room = PORTRAIT[0] - SIDE_TEXT - SIDE_GAP
+    narrow = restack(d, room + 2 * (MARGIN - PLATE_MARGIN))
+    w, h = svg_size(to_svg(plate(narrow)))
+    return narrow if w <= room + 0.05 and h <= PORTRAIT[1] + 0.05 else None
+
+
+def _space(doc: _Doc, sol: Solution, figs: Figures, worksheet: bool, beside=None) -> None:
     d = figs.drawing.get("space")
     sc = d.scale_statement if d is not None else ""
     intro = ("<p>The mechanism frozen at the instant asked about, drawn to scale"
@@ -220,7 +264,7 @@ def _space(doc: _Doc, sol: Solution, figs: Figures, worksheet: bool) -> None:
         intro = intro.replace("</p>\n", " If the tutorial asks you to, draw it yourself "
                               "first from the data and check it against this one.</p>\n")
     _plate(doc, figs, "space", f"{doc.sec()}. The space diagram", "Space diagram of the "
-           "mechanism", intro, ident="space", level="h2")
+           "mechanism", intro, ident="space", level="h2", beside=beside)
 
 
 def _explain(doc: _Doc, key: str) -> None:
@@ -373,25 +417,33 @@ def _example_pair(sol: Solution) -> tuple[str, str]:
     return pairs[0] if pairs else ("A", "B")
 
 
-def _area_size(figs: Figures, diagram: str) -> str | None:
-    """The drawing area a worksheet gives ``diagram``: 'A5' when the key's drawing (its
-    frame) fits one, else a whole 'portrait' page (None: no finished drawing)."""
+def area_dims(figs: Figures, diagram: str) -> tuple[float, float] | None:
+    """The drawing area (width, height in mm) a worksheet gives ``diagram``: A5 when the
+    key's drawing (its frame) fits one; else the page's width and the frame's height rounded
+    up to whole centimetres and :data:`AREA_ROOM` more, at most the whole page (which a
+    drawing larger than that fills at a coarser round scale: :func:`_area`).  None: no
+    finished drawing."""
     final = figs.drawing.get(diagram)
     lay = final.meta.get("layout") if final is not None else None
     if lay is None:
         return None
     fw, fh = lay.frame.x1 - lay.frame.x0, lay.frame.y1 - lay.frame.y0
     aw, ah = AREAS["A5"]
-    return "A5" if fw <= aw and fh <= ah else "portrait"
+    if fw <= aw and fh <= ah:
+        return aw, ah
+    pw, ph = AREAS["portrait"]
+    if fw > pw or fh > ph:
+        return pw, ph
+    return pw, min(ph, max(ah, 10.0 * math.ceil(fh / 10.0 - 1e-9) + AREA_ROOM))
 
 
 def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     """The worksheet's empty drawing area for ``diagram``: true size, at the key's scale.
 
     The area is A5 when the key's drawing (its frame: the polygon and its construction lines)
-    fits, else a whole landscape or portrait page; its size depends on the page, not on the
-    answer.  If the key's drawing is larger than any A4 page, the next round scale that fits
-    is used and the note says so.  A ring marks where the key's pole falls with its drawing
+    fits, else the page's width and as tall as the drawing needs (:func:`area_dims`).  If the
+    key's drawing is larger than an A4 page, the next round scale that fits is used and the
+    note says so.  A ring marks where the key's pole falls with its drawing
     centred in the area, so the student's diagram stays on the paper.
     """
     from .scale import make, round_up
@@ -403,11 +455,8 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     frame = lay.frame
     fw, fh = frame.x1 - frame.x0, frame.y1 - frame.y0
     k = 1.0
-    name = _area_size(figs, diagram)
-    aw, ah = AREAS[name]
+    aw, ah = area_dims(figs, diagram)
     if not (fw <= aw and fh <= ah):
-        name = "portrait"
-        aw, ah = AREAS[name]
         scale = make(scale.quantity, round_up(scale.per_cm * max(fw / aw, fh / ah)))
         k = lay.scale.per_cm / scale.per_cm
     px, py = lay.P(lay.con.vertices[sol.pole])
@@ -417,7 +466,7 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
     svg = grid_svg(aw, ah, scale.statement, scale.per_cm_display, plain_text(scale.unit),
                    f"area-{diagram}", f"Empty drawing area for the {what} diagram, "
                    f"scale {scale.statement}", pole, f"pole {sol.pole}: start here")
-    cls = "plate portrait"
+    cls = "plate portrait area"
     note = (f"True size at 100 % print scale: {scale.statement}; grid squares 5 mm. The ring "
             f"marks a pole position that leaves room for the whole diagram.")
     if k != 1.0:

@@ -85,9 +85,13 @@ def _data_rows(rows: list[tuple[str, str]]) -> list[list[tuple[str, str]]]:
     return out
 
 
-def problem(doc, sol: Solution, worksheet: bool) -> None:
+def problem(doc, sol: Solution, worksheet: bool, beside=None) -> None:
     """The problem section: its statement (the printed answers left out of a worksheet,
-    :func:`redact_answers`) and its data table, every datum read off the scene's model."""
+    :func:`redact_answers`) and its data table, every datum read off the scene's model.
+
+    ``beside`` (a function of ``doc``) sets the data in a column with what it writes (the
+    space diagram's heading and words, then its figure: :func:`diagrams.handout._space`)
+    beside them, one datum a row."""
     scene = sol.scene
     doc.add(f'<section id="problem">\n<h2>{doc.sec()}. The problem</h2>\n')
     statement = scene.source.get("statement", "")
@@ -98,6 +102,8 @@ def problem(doc, sol: Solution, worksheet: bool) -> None:
         for para in _paragraphs(statement):
             doc.add(f"<p>{esc(plain_text(para))}</p>\n")
         doc.add("</div>\n")
+    if beside is not None:
+        doc.add('<div class="beside">\n<div class="beside-text">\n')
     doc.add("<h3>Data</h3>\n<table class=\"data\">\n<tbody>\n")
     rows: list[tuple[str, str]] = []
     for lab, p in scene.ground.items():
@@ -172,13 +178,17 @@ def problem(doc, sol: Solution, worksheet: bool) -> None:
     for lab, br in scene.assembly.items():
         rows.append((f"assembly of {lab}", br.text))
     rows += load_rows(scene.loads, _g)
-    for pair in _data_rows(rows):
+    paired = beside is None and len(rows) > PAIRED_DATA
+    for pair in (_data_rows(rows) if beside is None else [[r] for r in rows]):
         cells = "".join(f"<th scope=\"row\">{esc(a)}</th><td>{esc(plain_text(b))}</td>"
                         for a, b in pair)
-        if len(pair) == 1 and len(rows) > PAIRED_DATA:      # across the table
+        if len(pair) == 1 and paired:      # across the table
             cells = cells.replace("<td>", '<td colspan="3">')
         doc.add(f"<tr>{cells}</tr>\n")
     doc.add("</tbody>\n</table>\n")
     doc.add('<p class="note">Coordinates: x to the right, y up; angles counter-clockwise (CCW) '
             'from +x; CW = clockwise.</p>\n')
+    if beside is not None:
+        beside(doc)
+        doc.add("</div>\n")
     doc.add("</section>\n")

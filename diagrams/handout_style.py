@@ -96,6 +96,11 @@ li.step { margin: 0 0 4mm 0; orphans: 1; }  /* a step may start at a column's fo
    continuation on that page starts below the float, and its columns with it. */
 section.construction { display: table; table-layout: fixed; width: 100%; }
 ol.steps.staged { column-count: 3; column-gap: 5mm; }
+/* a worksheet's steps (sentences and symbolic formulas, no figure) in two columns: the
+   drawing area after them then shares their page (Fig 7's velocity area was pushed on,
+   leaving half a page blank) */
+body.worksheet ol.steps { column-count: 2; column-gap: 6mm; }
+body.worksheet ol.steps > aside.explain { margin: 0 0 2mm 0; }
 ol.steps.staged li.step { margin: 0 0 1.5mm 0; font-size: 8.5pt; line-height: 1.28; }
 ol.steps.staged figure { margin: 0.5mm 0 0 0; }
 ol.steps.staged figure.narrow { float: right; margin: 0 0 1mm 2mm; }
@@ -127,6 +132,20 @@ section.plate + section, #results { clear: none; }
    never come before it (Fig 7's worksheet set steps 1-4 first, the diagram after them) */
 body.worksheet section#space div.sheet { float: none; }
 section.plate h2, section.plate h3 { break-after: avoid; page-break-after: avoid; }
+/* a drawing area with its heading and note, and the answer table, are never split */
+section.area, section#your-answers { break-inside: avoid; page-break-inside: avoid; }
+/* a narrow space diagram beside the data (one datum a row) and its own heading and words */
+div.beside { display: flex; gap: 5mm; align-items: flex-start; }
+div.beside > div.beside-text { flex: 1 1 0; min-width: 0; }
+div.beside > section.plate { flex: 0 0 auto; margin-top: 2mm; }
+div.beside > section.plate div.sheet { float: none; }
+div.beside table.data { width: 100%; }
+/* each datum in the narrow column: its name, and its value under it */
+div.beside table.data tr { display: block; border-bottom: 0.2mm solid #999;
+                           padding: 0.4mm 0 0.6mm 0; }
+div.beside table.data th, div.beside table.data td { display: block; border: none;
+                                                     padding: 0; }
+div.beside table.data td { padding-left: 3mm; }
 section.plate figure { margin: 0; }
 figure.centres { float: left; margin: 0 4mm 2mm 0; }
 section#centres { overflow: hidden; break-inside: avoid; }
