@@ -33,7 +33,7 @@ from .figures import Figures, cell_stage, cells, figures, stage_of, stage_width
 from .html import esc, grid_svg, inline_svg, num, plain_text, svg_size, sym, unit
 # the problem section (PAIRED_DATA, _data_rows: read by the tests from here)
 from .handout_problem import PAIRED_DATA, _data_rows  # noqa: F401
-from .handout_problem import _paragraphs, problem as _problem, redact_answers
+from .handout_problem import _paragraphs, data as _data, problem as _problem, redact_answers
 from .handout_style import CSS, EXPLAIN, SUBSUP_CSS  # noqa: F401 (SUBSUP_CSS: public)
 from .notation import join_vectors, link_names, name_bare_omegas, slot_names
 
@@ -49,10 +49,10 @@ AREAS = {"A5": (150.0, 100.0), "portrait": (172.0, 222.0)}
 #: construction lines round it) rounded up to whole centimetres, and this much more (mm)
 AREA_ROOM = 10.0
 
-#: the space diagram is set beside the data table (one datum a row) when, as drawn or with
-#: its key and legend moved below it, it leaves this much of the page's width (mm) for them:
-#: a tall, narrow mechanism (Fig 7's 150 mm lever) then shares the first page with its data
-#: instead of leaving half of it empty
+#: the space diagram is set beside a short data table (at most PAIRED_DATA data, one a
+#: row) when, as drawn or with its key and legend moved below it, it leaves this much of the
+#: page's width (mm) for them: a tall, narrow mechanism (Fig 7's 150 mm lever) then shares
+#: the first page with its data instead of leaving half of it empty
 SIDE_TEXT = 50.0
 #: the space between the data column and the space diagram beside it (mm)
 SIDE_GAP = 5.0
@@ -132,7 +132,9 @@ def handout(sol: Solution, *, worksheet: bool = False, figs: Figures | None = No
             f"<title>{esc(kind)} — {esc(title)}</title>\n<style>{CSS}</style>\n</head>\n",
             f"<body class=\"{kind.lower()}\">\n")
     _header(doc, sol, worksheet, kind)
-    side = _space_beside(figs)
+    # a long data table is set two data a row across the page, a short one beside a narrow
+    # space diagram
+    side = _space_beside(figs) if len(_data(sol)) <= PAIRED_DATA else None
     if side is None:
         _problem(doc, sol, worksheet)
         _space(doc, sol, figs, worksheet)

@@ -85,30 +85,13 @@ def _data_rows(rows: list[tuple[str, str]]) -> list[list[tuple[str, str]]]:
     return out
 
 
-def problem(doc, sol: Solution, worksheet: bool, beside=None) -> None:
-    """The problem section: its statement (the printed answers left out of a worksheet,
-    :func:`redact_answers`) and its data table, every datum read off the scene's model.
-
-    ``beside`` (a function of ``doc``) sets the data in a column with what it writes (the
-    space diagram's heading and words, then its figure: :func:`diagrams.handout._space`)
-    beside them, one datum a row."""
+def data(sol: Solution) -> list[tuple[str, str]]:
+    """The data table's rows (name, value), every datum read off the scene's model."""
     scene = sol.scene
-    doc.add(f'<section id="problem">\n<h2>{doc.sec()}. The problem</h2>\n')
-    statement = scene.source.get("statement", "")
-    if statement:
-        if worksheet:
-            statement = redact_answers(statement)
-        doc.add('<div class="statement">\n')
-        for para in _paragraphs(statement):
-            doc.add(f"<p>{esc(plain_text(para))}</p>\n")
-        doc.add("</div>\n")
-    if beside is not None:
-        doc.add('<div class="beside">\n<div class="beside-text">\n')
-    doc.add("<h3>Data</h3>\n<table class=\"data\">\n<tbody>\n")
+    drv = scene.driver
     rows: list[tuple[str, str]] = []
     for lab, p in scene.ground.items():
         rows.append((f"fixed point {lab}", f"({_g(p[0] * 1000)}, {_g(p[1] * 1000)}) mm"))
-    drv = scene.driver
     for ln in scene.model.links():
         if ln.length is not None:
             rows.append((f"link {ln.name}", _fmt_len(ln.length)))
@@ -178,6 +161,30 @@ def problem(doc, sol: Solution, worksheet: bool, beside=None) -> None:
     for lab, br in scene.assembly.items():
         rows.append((f"assembly of {lab}", br.text))
     rows += load_rows(scene.loads, _g)
+    return rows
+
+
+def problem(doc, sol: Solution, worksheet: bool, beside=None) -> None:
+    """The problem section: its statement (the printed answers left out of a worksheet,
+    :func:`redact_answers`) and its data table, every datum read off the scene's model.
+
+    ``beside`` (a function of ``doc``) sets the data in a column with what it writes (the
+    space diagram's heading and words, then its figure: :func:`diagrams.handout._space`)
+    beside them, one datum a row."""
+    scene = sol.scene
+    doc.add(f'<section id="problem">\n<h2>{doc.sec()}. The problem</h2>\n')
+    statement = scene.source.get("statement", "")
+    if statement:
+        if worksheet:
+            statement = redact_answers(statement)
+        doc.add('<div class="statement">\n')
+        for para in _paragraphs(statement):
+            doc.add(f"<p>{esc(plain_text(para))}</p>\n")
+        doc.add("</div>\n")
+    if beside is not None:
+        doc.add('<div class="beside">\n<div class="beside-text">\n')
+    doc.add("<h3>Data</h3>\n<table class=\"data\">\n<tbody>\n")
+    rows = data(sol)
     paired = beside is None and len(rows) > PAIRED_DATA
     for pair in (_data_rows(rows) if beside is None else [[r] for r in rows]):
         cells = "".join(f"<th scope=\"row\">{esc(a)}</th><td>{esc(plain_text(b))}</td>"

@@ -134,6 +134,9 @@ body.worksheet section#space div.sheet { float: none; }
 section.plate h2, section.plate h3 { break-after: avoid; page-break-after: avoid; }
 /* a drawing area with its heading and note, and the answer table, are never split */
 section.area, section#your-answers { break-inside: avoid; page-break-inside: avoid; }
+/* the words of Klein's construction and of an equivalent linkage are a few lines: in one
+   piece (their last two lines made a key's last page: rolling-wheel-forces) */
+section#klein pre, section#equivalent pre { break-inside: avoid; page-break-inside: avoid; }
 /* a narrow space diagram beside the data (one datum a row) and its own heading and words */
 div.beside { display: flex; gap: 5mm; align-items: flex-start; }
 div.beside > div.beside-text { flex: 1 1 0; min-width: 0; }
