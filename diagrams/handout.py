@@ -469,8 +469,9 @@ def _area(doc: _Doc, sol: Solution, figs: Figures, diagram: str) -> None:
                    f"area-{diagram}", f"Empty drawing area for the {what} diagram, "
                    f"scale {scale.statement}", pole, f"pole {sol.pole}: start here")
     cls = "plate portrait area"
-    note = (f"True size at 100 % print scale: {scale.statement}; grid squares 5 mm. The ring "
-            f"marks a pole position that leaves room for the whole diagram.")
+    # one line under the area (two pushed an A5 area and its page on by 1 mm in five cases)
+    note = (f"True size at 100 % print: {scale.statement}, 5 mm squares; the ring marks a "
+            f"pole that leaves room for the whole diagram.")
     if k != 1.0:
         note += (f" (The answer key is drawn at {lay.scale.statement}, which needs a sheet "
                  f"larger than A4.)")
