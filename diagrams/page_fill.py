@@ -20,7 +20,8 @@ reads its text boxes with ``pdftotext -bbox-layout``; for each page it returns
 A page under :data:`LOW_FILL` whose next block does not fit is reported (``low``), not
 flagged: a drawing at its stated scale that needs more than the rest of the page.
 The PDF measured is printed from :func:`outlined` HTML (every unbreakable block outlined,
-which moves nothing).  Needs poppler-utils (``pdftoppm``, ``pdftotext``); nothing else in the package does.
+which moves nothing).  Needs poppler-utils (``pdftoppm``, ``pdftotext``); nothing else in
+the package does.
 """
 from __future__ import annotations
 
@@ -130,6 +131,15 @@ def headings_of(page_html: str) -> list[str]:
     return out
 
 
+def _pgm(path: Path):
+    """A binary greymap (P5, 8 bits: what ``pdftoppm -gray`` writes) as a numpy array."""
+    import numpy as np
+    data = path.read_bytes()
+    m = re.match(rb"P5\s+(?:#[^\n]*\n\s*)*(\d+)\s+(\d+)\s+(\d+)\s", data)
+    w, h = int(m.group(1)), int(m.group(2))
+    return np.frombuffer(data, dtype=np.uint8, count=w * h, offset=m.end()).reshape(h, w)
+
+
 def _text_lines(pdf: Path) -> list[list[tuple[float, float, str]]]:
     """Per page, its lines of text: (top, bottom in points, text)."""
     out = subprocess.run(["pdftotext", "-bbox-layout", str(pdf), "-"], capture_output=True,
@@ -151,8 +161,6 @@ def measure(pdf, margins: tuple[float, float] = (10.0, 10.0),
             headings: list[str] = ()) -> list[Page]:
     """The pages of ``pdf`` measured (``margins``: the @page top and bottom margins, mm;
     ``headings``: the document's heading texts, found again on the pages)."""
-    import numpy as np
-    from PIL import Image
     pdf = Path(pdf)
     top, bottom = margins
     wanted = [_norm(h) for h in headings]
@@ -163,7 +171,7 @@ def measure(pdf, margins: tuple[float, float] = (10.0, 10.0),
                        check=True, timeout=300, capture_output=True)
         files = sorted(Path(tmp).glob("p-*.pgm"), key=lambda p: int(p.stem.split("-")[-1]))
         for n, f in enumerate(files, 1):
-            grey = np.asarray(Image.open(f).convert("L"))
+            grey = _pgm(f)
             mm_row = A4_HEIGHT / grey.shape[0]
             r0, r1 = round(top / mm_row), grey.shape[0] - round(bottom / mm_row)
             ink = (grey[r0:r1] < INK).any(axis=1)

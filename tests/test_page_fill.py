@@ -6,14 +6,13 @@ Always: the measure itself on made-up pages (no browser), and Fig 7's worksheet 
 (~2 s: its space diagram beside the data on page 1, which it left half empty; the drawing
 areas' notes whole; no command line on paper).  ``POLYGONS_PAGE_FILL=1`` prints every shipped
 case's key and worksheet and the exam worksheets of benchmarks/page_fill.py (~5 min):
-no defect, and no key over 6 pages (``triad-eight-bar``: 7).
+no defect, and no key over 6 pages.
 """
 import os
 import re
 import shutil
 import subprocess
 import sys
-from pathlib import Path
 
 import pytest
 
@@ -126,6 +125,6 @@ def test_every_printed_page_is_filled(tmp_path):
     for name, html in docs:
         _, pages, found = bench.measure_html(name, html, tmp_path)
         bad += [f"{name}: {f}" for f in found if f.defect]
-        if name.endswith(" key") and len(pages) > (7 if "triad-eight-bar" in name else 6):
+        if name.endswith(" key") and len(pages) > 6:
             long.append(f"{name}: {len(pages)} pages")
     assert not bad and not long, "\n".join(bad + long)
