@@ -146,6 +146,9 @@ SYSTEMS: dict[str, dict[str, str]] = {
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 #: the period of an orientation, in each angle unit (reduced exactly with math.fmod)
 _TURN = {"deg": 360.0, "°": 360.0, "rad": _TAU, "rev": 1.0}
+#: an angle in degrees, minutes (and seconds) as books print it: 42°18', 42° 18′ 30″, 42 deg 18 min
+_DMS = re.compile(r"^\s*([-+]?)(\d+(?:\.\d*)?)\s*(?:°|deg)\s*(\d+(?:\.\d*)?)\s*(?:'|′|min)"
+                  r"\s*(?:(\d+(?:\.\d*)?)\s*(?:\"|″|''|sec|s))?\s*$")
 
 
 def article(word: str) -> str:
@@ -235,6 +238,14 @@ def _parse_quantity(value, dimension: str, file, where, reduce) -> float:
         raise UnitError(f"missing unit: {show(value)} needs {article(words)} unit, "
                         f"e.g. '{value} {units_of(dimension)[0]}' (accepted: {accepted})",
                         file=file, where=where)
+    dms = _DMS.match(value) if dimension == "angle" else None
+    if dms:             # 42°18'30" = 42 + 18/60 + 30/3600 deg (minutes, seconds below 60)
+        sign, d, m, sec = dms.groups()
+        if float(m) >= 60 or float(sec or 0) >= 60:
+            raise UnitError(f"{show(value)}: minutes and seconds of arc are below 60",
+                            file=file, where=where)
+        deg = float(d) + float(m) / 60 + float(sec or 0) / 3600
+        value = f"{'-' if sign == '-' else ''}{deg!r} deg"
     match = _NUMBER.match(value)
     if not match:
         raise UnitError(f"cannot read {show(value)} as a number with a unit "
