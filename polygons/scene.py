@@ -456,6 +456,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                              "leave it out)", file=file, where="driver")
         alpha = 0.0
         if "alpha" in drv:
+            drv = topology.alpha_words(drv, omega, file)
             alpha, turn = topology.rate_with_sense(drv, "alpha", "alpha_sense",
                                                   "angular_acceleration", r)
             if alpha != 0.0:

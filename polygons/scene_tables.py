@@ -138,7 +138,10 @@ TABLES: tuple[Table, ...] = (
         Key("sense", "string", "sense of rotation: 'CW' or 'CCW' (also clockwise, "
                                "anticlockwise, counter-clockwise)", example='"CW"'),
         Key("alpha", "quantity", "crank angular acceleration (magnitude; its sense is "
-                                 "`alpha_sense`, or written after it: '80 rad/s^2 CCW')",
+                                 "`alpha_sense`, or written after it: '80 rad/s^2 CCW'; or "
+                                 "against the rotation, as books say it: '5 rad/s^2 "
+                                 "retarding' (or decelerating: opposite ω; accelerating: "
+                                 "with it))",
             example='"80000 rad/s^2"', dimension="angular_acceleration", default="0 rad/s^2"),
         Key("alpha_sense", "string", "sense of alpha, 'CW' or 'CCW' (needed when alpha ≠ 0; "
                                      "independent of `sense`)", example='"CCW"'),
@@ -163,9 +166,13 @@ TABLES: tuple[Table, ...] = (
                                    "or in rod_alpha_sense)", example='"5 rad/s^2 CCW"'),
         Key("rod_alpha_sense", "string", "the sense of rod_alpha, 'CW' or 'CCW'",
             example='"CCW"'),
-        Key("velocity", "quantity", "slider driver: velocity along the guide (or rod_omega)",
+        Key("velocity", "quantity", "slider driver: velocity along the guide (or rod_omega); "
+                                     "a wheel driver: its centre's velocity along the "
+                                     "surface's direction instead of omega ('the centre moves "
+                                     "at 2 m/s': ω = −v / r)",
             example='"2 m/s"', dimension="velocity", sign="positive along `direction`"),
-        Key("acceleration", "quantity", "slider driver: acceleration along the guide",
+        Key("acceleration", "quantity", "slider driver: acceleration along the guide; a wheel "
+                                         "driver with velocity: its centre's (α = −a / r)",
             example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2",
             sign="positive along `direction`"),
         Key("lever", "link", "a slotted lever driven like a crank (the oscillating cylinder, "
@@ -173,8 +180,9 @@ TABLES: tuple[Table, ...] = (
                              "lever = this lever", example='"O4Q"'),
         Key("wheel", "label", "a wheel rolling without slipping on a fixed surface as the "
                               "input ([rolling.W] with this label), turning at omega (sense), "
-                              "alpha (alpha_sense): links may be pinned to its named points "
-                              "([rolling.W] rim)", example='"W"'),
+                              "alpha (alpha_sense) — or its centre's velocity and "
+                              "acceleration along the surface: links may be pinned to its "
+                              "named points ([rolling.W] rim)", example='"W"'),
         Key("slide", "table", "a second input: a point moved along a link at a prescribed "
                               "sliding velocity and acceleration ([driver.slide])",
             example='{ point = "C", along = "OA", position = "300 mm", velocity = "1.5 m/s" }'),

@@ -107,6 +107,31 @@ def sense_in(text) -> tuple[object, int | None]:
     return (head.strip(), int(turn)) if head and turn is not None else (text, None)
 
 
+#: α stated against ω as books do ('retarding at 5 rad/s²'): −1 opposite ω's sense, +1 with it
+_ALPHA_WORDS = {"retarding": -1, "decelerating": -1, "accelerating": 1}
+
+
+def alpha_words(drv, omega: float, file, key: str = "alpha", sense_key: str = "alpha_sense"):
+    """``alpha = "5 rad/s^2 retarding"`` (or ``decelerating``; ``accelerating``): the sense of
+    α from ω's, opposite (slowing down) or the same (speeding up) → ``drv`` with that sense
+    written as CW / CCW; ``drv`` unchanged without such a word."""
+    text = drv.get(key)
+    if not isinstance(text, str):
+        return drv
+    head, _, last = text.strip().rpartition(" ")
+    rel = _ALPHA_WORDS.get(last.lower())
+    if rel is None or not head:
+        return drv
+    if sense_key in drv:
+        raise SceneError(f"{key} = {show(text)} already says its sense against the rotation: "
+                         f"leave out {sense_key}", file=file, where=f"driver.{sense_key}")
+    if omega == 0.0:
+        raise SceneError(f"{key} = {show(text)}: '{last}' is measured against the rotation, "
+                         f"but the driver is at rest (omega = 0): give alpha's sense, CW or CCW",
+                         file=file, where=f"driver.{key}")
+    return {**drv, key: f"{head.strip()} {'CCW' if rel * omega > 0 else 'CW'}"}
+
+
 def crank_rate(drv, r, length) -> tuple[float, int | None]:
     """|ω| of a crank and its sense: ``omega``, or the crank pin's ``speed`` as books give it
     (v = ω r, so ω = v / |OA|)."""

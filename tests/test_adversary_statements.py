@@ -1,0 +1,130 @@
+"""Statement forms books print that the trust campaign (helper 'adversary') found refused:
+an angle in degrees and minutes (42°18'), an angular acceleration stated against the rotation
+('retarding at 5 rad/s²'), and a rolling wheel driven by its centre's velocity and acceleration
+(Hibbeler: 'its centre moves at 2 m/s to the right').  Each is checked against the form the
+tool already took (the same numbers) and, for the wheel, v_W = −ω r, a_W = −α r."""
+import json
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+import polygons
+from polygons.errors import PolygonsError
+
+FOUR_BAR = """
+[ground]
+A = ["0 mm", "0 mm"]
+D = { from = "A", distance = "150 mm", angle = "0 deg" }
+[links]
+AB = "40 mm"
+BC = "150 mm"
+CD = "80 mm"
+[driver]
+crank = "AB"
+angle = "ANGLE"
+omega = "120 rpm CW"
+ALPHA
+[assembly]
+C = "C above AD"
+"""
+
+
+def _four_bar(angle="60 deg", alpha='alpha = "20 rad/s^2 CCW"'):
+    return polygons.solve(FOUR_BAR.replace("ANGLE", angle).replace("ALPHA", alpha))
+
+
+def _crank_angle(res):
+    x, y = res.points["B"].position
+    return math.degrees(math.atan2(y, x))
+
+
+@pytest.mark.parametrize("text, degrees", [("42°18'", 42.3), ("42° 18′ 30″", 42 + 18 / 60 + 30 / 3600),
+                                           ("42 deg 18 min", 42.3), ("-5°30'", -5.5)])
+def test_an_angle_in_degrees_and_minutes_is_read_as_books_print_it(text, degrees):
+    assert _crank_angle(_four_bar(text)) == pytest.approx(degrees, abs=1e-12)
+    # and everywhere an angle is read: "from" a line, a pivot placed from another
+    res = _four_bar(f"{text} CW from AD")
+    assert _crank_angle(res) == pytest.approx(-degrees, abs=1e-12)
+
+
+def test_minutes_of_arc_at_or_above_sixty_are_refused_in_one_line():
+    with pytest.raises(PolygonsError, match="minutes and seconds of arc are below 60"):
+        _four_bar("42°60'")
+
+
+def test_the_schema_accepts_degrees_and_minutes_and_alpha_against_the_rotation():
+    schema = json.loads((Path(polygons.__file__).parent / "scene.schema.json").read_text())
+    drv = schema["properties"]["driver"]["properties"]
+    alpha = drv["alpha"]["pattern"]
+    for ok in ("5 rad/s^2 retarding", "5 rad/s^2 decelerating", "5 rad/s^2 CW", "5 rad/s^2"):
+        assert re.search(alpha, ok), ok
+    assert not re.search(alpha, "5 rad/s^2 sideways")
+    guide = next(iter(schema["properties"]["sliders"]["patternProperties"].values()))
+    direction = guide["properties"]["direction"]["pattern"]
+    for ok in ("30°15'", "30 deg 15 min", "30 deg", "-5°30'"):
+        assert re.search(direction, ok), ok
+    assert not re.search(direction, "30°75")
+
+
+@pytest.mark.parametrize("word, sense", [("retarding", "CCW"), ("decelerating", "CCW"),
+                                         ("accelerating", "CW")])
+def test_alpha_against_the_rotation_takes_its_sense_from_omega(word, sense):
+    said = _four_bar(alpha=f'alpha = "5 rad/s^2 {word}"')     # ω is CW
+    plain = _four_bar(alpha=f'alpha = "5 rad/s^2 {sense}"')
+    assert said.links["AB"].alpha == plain.links["AB"].alpha == (5.0 if sense == "CCW" else -5.0)
+    assert said.points["C"].acceleration == plain.points["C"].acceleration
+
+
+def test_alpha_against_the_rotation_is_refused_with_a_sense_or_at_rest():
+    with pytest.raises(PolygonsError, match="leave out alpha_sense"):
+        _four_bar(alpha='alpha = "5 rad/s^2 retarding"\nalpha_sense = "CW"')
+    with pytest.raises(PolygonsError, match="at rest"):
+        polygons.solve(FOUR_BAR.replace("ANGLE", "60 deg").replace('omega = "120 rpm CW"',
+                                                                   'omega = "0 rpm"')
+                       .replace("ALPHA", 'alpha = "5 rad/s^2 retarding"'))
+
+
+WHEEL = """
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+AB = "1000 mm"
+[driver]
+wheel = "W"
+RATES
+[rolling.W]
+radius = "300 mm"
+through = ["0 mm", "0 mm"]
+direction = "20 deg"
+rim = { A = "60 deg" }
+[sliders.B]
+through = ["0 mm", "200 mm"]
+direction = "0 deg"
+[assembly]
+B = "B right of O"
+"""
+
+
+def test_a_wheel_driven_by_its_centres_velocity_is_the_wheel_driven_by_omega():
+    """Hibbeler's form: the centre's velocity and acceleration along the surface; the same
+    motion as ω = −v / r, α = −a / r (the wheel on the left of the surface's direction)."""
+    by_centre = polygons.solve(WHEEL.replace(
+        "RATES", 'velocity = "1.8 m/s"\nacceleration = "-0.9 m/s^2"'))
+    by_omega = polygons.solve(WHEEL.replace(
+        "RATES", 'omega = "6 rad/s CW"\nalpha = "3 rad/s^2 CCW"'))
+    e = (math.cos(math.radians(20)), math.sin(math.radians(20)))
+    vw = by_centre.points["W"].velocity
+    assert vw[0] * e[0] + vw[1] * e[1] == pytest.approx(1.8, rel=1e-12)
+    for p in ("W", "A", "B"):
+        for got, want in ((by_centre.points[p].velocity, by_omega.points[p].velocity),
+                          (by_centre.points[p].acceleration, by_omega.points[p].acceleration)):
+            assert got == pytest.approx(want, rel=1e-12, abs=1e-12)
+
+
+def test_a_wheel_given_omega_and_its_centres_velocity_is_refused_naming_both():
+    with pytest.raises(PolygonsError, match="not both: drop omega"):
+        polygons.solve(WHEEL.replace("RATES", 'velocity = "1.8 m/s"\nomega = "6 rad/s CW"'))
+    with pytest.raises(PolygonsError, match="not both"):
+        polygons.solve(WHEEL.replace("RATES", 'acceleration = "1 m/s^2"\nomega = "6 rad/s CW"'))
