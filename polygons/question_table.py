@@ -52,7 +52,8 @@ TABLES: tuple[Table, ...] = (
                        "ratio).  Every root in the range is found (bracketed on a sweep of "
                        "`samples` instants, then polished to full precision by Brent's method "
                        "on the construction) and answered by `polygons ask`.", (
-        Key("find", "string", "the input sought: 'angle' (the crank's, CCW from +x), 'omega' "
+        Key("find", "string", "the input sought: 'angle' (the crank's, CCW from +x; each root "
+                              "also as the scene states its angle: '283.5 deg from idc'), 'omega' "
                               "(the crank's speed, its sense the scene's) or 'position' (a "
                               "slider driver's)", example='"angle"', required=True),
         Key("quantity", "string", "the quantity the condition is on: any [[answers]] or "

@@ -477,7 +477,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise SceneError(f"give the crank angle (angle = \"30 deg\") or the drawn position "
                              f"of {tip} in [drawn]", file=file, where="driver.angle")
         driver = record(Crank, link=name, pivot=pivot, tip=tip, angle=angle, omega=omega,
-                        alpha=alpha)
+                        alpha=alpha, stated=topology.stated_from(drv.get("angle"), angle,
+                                                                 omega, r))
     else:
         r.table(drv, "driver", ("slider", "position", "velocity", "acceleration", "rod",
                                 "rod_angle") + ROD_RATE, required=("slider",))

@@ -258,6 +258,18 @@ def _turn_of(text: str) -> tuple[str, float]:
     return head.strip(), 1.0 if turn is None else float(turn)
 
 
+def stated_from(value, angle: float, omega: float, r):
+    """'θ from REF' → (REF, its angle = angle − turn θ, turn); None for a plain angle."""
+    m = _FROM.match(value) if isinstance(value, str) else None
+    if not m:
+        return None
+    amount, turn = _turn_of(m.group(1))
+    ref = " ".join(m.group(2).split())
+    if ref.lower() in _DEAD_WORDS:      # measured in the crank's sense of rotation
+        turn = 1.0 if omega >= 0 else -1.0
+    return ref, angle - turn * r.quantity(amount, "angle", "driver.angle", reduce=True), turn
+
+
 def default_coincident(point: str) -> str:
     """The conventional name of the point under ``point``: C → C1, P2 → P2'."""
     return f"{point}'" if point[-1].isdigit() else f"{point}1"

@@ -128,3 +128,47 @@ def test_a_wheel_given_omega_and_its_centres_velocity_is_refused_naming_both():
         polygons.solve(WHEEL.replace("RATES", 'velocity = "1.8 m/s"\nomega = "6 rad/s CW"'))
     with pytest.raises(PolygonsError, match="not both"):
         polygons.solve(WHEEL.replace("RATES", 'acceleration = "1 m/s^2"\nomega = "6 rad/s CW"'))
+
+
+ENGINE_QUESTION = """
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+OA = "150 mm"
+AP = "600 mm"
+[driver]
+crank = "OA"
+angle = "30 deg from idc"
+omega = "300 rpm CW"
+[sliders.P]
+from = "O"
+offset = "-50 mm"
+direction = "0 deg"
+[assembly]
+P = "P right of O"
+[[questions]]
+find = "angle"
+quantity = "x(P)"
+condition = "dead centres"
+unit = "deg"
+samples = 24
+"""
+
+
+def test_a_root_crank_angle_is_also_given_as_the_scene_states_its_angle():
+    """The scene says '30 deg from idc': `ask` gives each root crank angle CCW from +x and, as
+    the book would read it, from idc in the crank's sense — the dead centres of an offset engine
+    (crank and rod in line, |OP| = l ± r) are 0° and 180° + the offset's two angles from idc."""
+    from polygons.conditions import answer_all, report_lines, to_dict
+    scene = polygons.load(ENGINE_QUESTION)
+    findings = answer_all(scene)
+    roots = to_dict(findings)[0]["roots"]
+    r, l, e = 0.15, 0.6, -0.05
+    idc = math.atan2(e, math.sqrt((l + r) ** 2 - e ** 2))
+    odc = math.atan2(e, math.sqrt((l - r) ** 2 - e ** 2)) + math.pi
+    want = sorted((math.degrees(idc - x) % 360.0) for x in (idc, odc))   # turned CW from idc
+    got = sorted(x["as_stated"]["input"] % 360.0 for x in roots)
+    assert got[1] == pytest.approx(want[1], abs=1e-7)
+    assert min(got[0], 360 - got[0]) == pytest.approx(0.0, abs=1e-7)
+    assert all(x["as_stated"]["from"] == "idc" for x in roots)
+    assert "deg from idc" in "\n".join(report_lines(findings))
