@@ -163,8 +163,8 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
 
 
 #: a sense written after a rate ('300 rad/s CW'), as polygons.topology.sense_in reads it
-_SENSE_RE = (r"(?:\s+(?:[Cc][Cc][Ww]|[Cc][Ww]|[Cc]lockwise|[Aa]nti-?clockwise|"
-             r"[Cc]ounter-?clockwise))?")
+_SENSE_RE = (r"(?:\s+(?:[Cc][Cc][Ww]|[Cc][Ww]|[Aa][Cc][Ww]|[Cc]\.[Ww]\.|[Aa]\.[Cc]\.[Ww]\.|"
+             r"[Cc]\.[Cc]\.[Ww]\.|[Cc]lockwise|[Aa]nti[- ]?clockwise|[Cc]ounter[- ]?clockwise))?")
 
 
 #: 'retarding' / 'decelerating' / 'accelerating' after α: its sense against ω's

@@ -136,7 +136,8 @@ TABLES: tuple[Table, ...] = (
                                  "its sense as omega's", example='"5 m/s"',
             dimension="velocity"),
         Key("sense", "string", "sense of rotation: 'CW' or 'CCW' (also clockwise, "
-                               "anticlockwise, counter-clockwise)", example='"CW"'),
+                               "anticlockwise, anti clockwise, counter-clockwise, ACW, "
+                               "c.w., a.c.w., in any case)", example='"CW"'),
         Key("alpha", "quantity", "crank angular acceleration (magnitude; its sense is "
                                  "`alpha_sense`, or written after it: '80 rad/s^2 CCW'; or "
                                  "against the rotation, as books say it: '5 rad/s^2 "

@@ -93,18 +93,23 @@ _LINE = re.compile(r"[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*\Z")     # \Z: no "AB\n"
 #: the axes an angle may be measured from (the direction of each, CCW from +x)
 _AXES = {"+x": 0.0, "x": 0.0, "-x": math.pi, "+y": math.pi / 2, "y": math.pi / 2,
          "-y": -math.pi / 2}
-_TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "ccw": 1.0, "anticlockwise": 1.0,
-               "anti-clockwise": 1.0, "counterclockwise": 1.0, "counter-clockwise": 1.0}
+_TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "c.w.": -1.0, "ccw": 1.0, "anticlockwise": 1.0,
+               "anti-clockwise": 1.0, "anti clockwise": 1.0, "counterclockwise": 1.0,
+               "counter-clockwise": 1.0, "counter clockwise": 1.0, "acw": 1.0, "a.c.w.": 1.0,
+               "c.c.w.": 1.0}
 
 
 def sense_in(text) -> tuple[object, int | None]:
-    """'300 rad/s CW' → ('300 rad/s', −1); '120 rpm anticlockwise' → ('120 rpm', +1);
+    """'300 rad/s CW' → ('300 rad/s', −1); '120 rpm anti clockwise' → ('120 rpm', +1);
     '300 rad/s' → ('300 rad/s', None): a rate with its sense written after it, as books do."""
     if not isinstance(text, str):
         return text, None
-    head, _, last = text.strip().rpartition(" ")
-    turn = _TURN_WORDS.get(last.lower())
-    return (head.strip(), int(turn)) if head and turn is not None else (text, None)
+    words = text.split()
+    for n in (2, 1):            # 'anti clockwise' before 'clockwise'
+        turn = _TURN_WORDS.get(" ".join(words[-n:]).lower()) if len(words) > n else None
+        if turn is not None:
+            return " ".join(words[:-n]), int(turn)
+    return text, None
 
 
 #: α stated against ω as books do ('retarding at 5 rad/s²'): −1 opposite ω's sense, +1 with it

@@ -172,3 +172,18 @@ def test_a_root_crank_angle_is_also_given_as_the_scene_states_its_angle():
     assert min(got[0], 360 - got[0]) == pytest.approx(0.0, abs=1e-7)
     assert all(x["as_stated"]["from"] == "idc" for x in roots)
     assert "deg from idc" in "\n".join(report_lines(findings))
+
+
+@pytest.mark.parametrize("omega, sense, turn", [
+    ('"120 rpm anti clockwise"', None, 1), ('"120 rpm counter clockwise"', None, 1),
+    ('"120 rpm c.w."', None, -1), ('"120 rpm"', "anti clockwise", 1), ('"120 rpm"', "ACW", 1),
+    ('"120 rpm"', "Anticlockwise", 1), ('"120 rpm"', "counterclockwise", 1),
+    ('"120 rpm"', "Clockwise", -1)])
+def test_the_senses_books_print_are_read_alike_after_a_rate_and_as_the_sense_key(omega, sense,
+                                                                                turn):
+    """'anti clockwise' after a rate was read as 'clockwise' with 'rpm anti' an unknown unit;
+    the sense key took 'anticlockwise' but not 'Anticlockwise' or 'counterclockwise'."""
+    drive = f"omega = {omega}" + (f'\nsense = "{sense}"' if sense else "")
+    res = polygons.solve(FOUR_BAR.replace("ANGLE", "60 deg").replace(
+        'omega = "120 rpm CW"', drive).replace("ALPHA", ""))
+    assert res.links["AB"].omega == pytest.approx(turn * 4 * math.pi, rel=1e-15)
