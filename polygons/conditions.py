@@ -483,9 +483,10 @@ def report_lines(findings: list[Finding]) -> list[str]:
             out.append(f"    stroke = {_fmt(to_unit(fd.result, q.unit))} {q.unit}")
         if q.condition == "time ratio":
             out.append(f"    time ratio = {_fmt(fd.result)}")
-        vu = q.value_unit or _si(fd.dimension)
+        # unstated, a value in the units the solve's table prints: angles in deg, lengths in mm
+        vu = q.value_unit or _SHOWN.get(fd.dimension) or _si(fd.dimension)
         for j, r in enumerate(fd.roots):
-            val = to_unit(r.value, q.value_unit) if q.value_unit else r.value
+            val = to_unit(r.value, vu) if vu != "-" else r.value
             iu = "deg" if q.condition in ("stroke", "time ratio") else q.unit
             st = as_stated(q, r)
             said = f" = {_fmt(st[1])} {iu} from {st[0]}" if st else ""
@@ -516,6 +517,9 @@ def as_stated(q: Question, r: Root):
     theta = theta + _TAU if theta < 0 else theta
     unit = "deg" if q.condition in ("stroke", "time ratio") else q.unit
     return words, to_unit(0.0 if _TAU - theta <= 1e-9 * _TAU else theta, unit)
+
+
+_SHOWN = {"angle": "deg", "length": "mm"}
 
 
 def _si(dim: str) -> str:

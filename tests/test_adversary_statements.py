@@ -187,3 +187,40 @@ def test_the_senses_books_print_are_read_alike_after_a_rate_and_as_the_sense_key
     res = polygons.solve(FOUR_BAR.replace("ANGLE", "60 deg").replace(
         'omega = "120 rpm CW"', drive).replace("ALPHA", ""))
     assert res.links["AB"].omega == pytest.approx(turn * 4 * math.pi, rel=1e-15)
+
+
+def test_a_questions_angle_and_length_values_are_printed_as_the_table_prints_them():
+    """Khurmi & Gupta's crank and slotted lever (fixed centres 240 mm, crank 120 mm, slotted bar
+    450 mm): the bar's greatest inclination to the vertical is 30° (printed in rad before) and
+    the stroke of its end 2 · 450 sin 30° = 450 mm, its ends at ±225 mm (printed in m)."""
+    from polygons.conditions import answer_all, report_lines
+    scene = polygons.load("""
+[ground]
+O = ["0 mm", "0 mm"]
+C = { from = "O", distance = "240 mm", angle = "-90 deg" }
+[links]
+OA = "120 mm"
+CD = "450 mm"
+[driver]
+crank = "OA"
+angle = "60 deg"
+omega = "30 rpm CW"
+[slots.A]
+lever = "CD"
+coincident = "A1"
+[[questions]]
+find = "angle"
+quantity = "angle(D,C,O)"
+condition = "max"
+unit = "deg"
+samples = 24
+[[questions]]
+find = "angle"
+quantity = "x(D)"
+condition = "stroke"
+unit = "mm"
+samples = 24
+""")
+    text = "\n".join(report_lines(answer_all(scene)))
+    assert text.count("angle(D,C,O) = 30 deg") == 2
+    assert "stroke = 450 mm" in text and "x(D) = 225 mm" in text and "x(D) = -225 mm" in text
