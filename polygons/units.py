@@ -63,6 +63,7 @@ UNITS: dict[str, tuple[str, float]] = {
     "m/s": ("velocity", 1.0), "mm/s": ("velocity", 1e-3), "km/h": ("velocity", 1 / 3.6),
     "ft/s": ("velocity", _FT), "in/s": ("velocity", _IN), "ft/min": ("velocity", _FT / 60.0),
     "mph": ("velocity", 1609.344 / 3600.0),
+    "m/min": ("velocity", 1 / 60.0), "mm/min": ("velocity", 1e-3 / 60.0),
     "m/s^2": ("acceleration", 1.0), "m/s²": ("acceleration", 1.0),
     "mm/s^2": ("acceleration", 1e-3), "mm/s²": ("acceleration", 1e-3),
     "ft/s^2": ("acceleration", _FT), "ft/s²": ("acceleration", _FT),
@@ -70,6 +71,7 @@ UNITS: dict[str, tuple[str, float]] = {
     "kg": ("mass", 1.0), "g": ("mass", 1e-3), "t": ("mass", 1e3),
     "lb": ("mass", _LB), "slug": ("mass", _SLUG),
     "N": ("force", 1.0), "kN": ("force", 1e3), "MN": ("force", 1e6), "lbf": ("force", _LBF),
+    "kgf": ("force", _G0),
     "N m": ("torque", 1.0), "Nm": ("torque", 1.0), "N*m": ("torque", 1.0),
     "N·m": ("torque", 1.0), "kN m": ("torque", 1e3), "N mm": ("torque", 1e-3),
     "lbf ft": ("torque", _LBF * _FT), "lbf in": ("torque", _LBF * _IN),
@@ -78,6 +80,7 @@ UNITS: dict[str, tuple[str, float]] = {
     "N/mm^2": ("pressure", 1e6), "N/mm²": ("pressure", 1e6),
     "kN/m^2": ("pressure", 1e3), "kN/m²": ("pressure", 1e3),
     "N/m^2": ("pressure", 1.0), "N/m²": ("pressure", 1.0),
+    "N/cm^2": ("pressure", 1e4), "N/cm²": ("pressure", 1e4),
     "kg m^2": ("inertia", 1.0), "kg m²": ("inertia", 1.0), "kg mm^2": ("inertia", 1e-6),
     "kg mm²": ("inertia", 1e-6), "lb ft^2": ("inertia", _LB * _FT ** 2),
     "lb ft²": ("inertia", _LB * _FT ** 2), "lb in^2": ("inertia", _LB * _IN ** 2),
@@ -107,6 +110,13 @@ SPELLINGS: dict[str, str] = {
     "m/sec^2": "m/s^2", "m/sec²": "m/s^2", "mm/sec^2": "mm/s^2", "mm/sec²": "mm/s^2",
     "ft/sec^2": "ft/s^2", "ft/sec²": "ft/s^2", "in/sec^2": "in/s^2", "in/sec²": "in/s^2",
     "m/s/s": "m/s^2", "N-m": "N m", "N.m": "N m", "Nmm": "N mm", "N-mm": "N mm",
+    "kN-m": "kN m", "kN·m": "kN m", "kN.m": "kN m", "kNm": "kN m", "N·mm": "N mm",
+    "kg-m^2": "kg m^2", "kg-m²": "kg m^2", "kg·m^2": "kg m^2", "kg·m²": "kg m^2",
+    "kg.m^2": "kg m^2", "kg.m²": "kg m^2",
+    "km/hr": "km/h", "kmph": "km/h", "km/hour": "km/h",
+    "metre": "m", "metres": "m", "meter": "m", "meters": "m", "millimetre": "mm",
+    "millimetres": "mm", "millimeter": "mm", "millimeters": "mm", "mm.": "mm",
+    "m/minute": "m/min",
 }
 
 #: (smallest non-zero, largest) magnitude accepted, in SI, per dimension: inside this range

@@ -224,3 +224,15 @@ samples = 24
     text = "\n".join(report_lines(answer_all(scene)))
     assert text.count("angle(D,C,O) = 30 deg") == 2
     assert "stroke = 450 mm" in text and "x(D) = 225 mm" in text and "x(D) = -225 mm" in text
+
+
+@pytest.mark.parametrize("text, dimension, si", [
+    ("50 kN-m", "torque", 5e4), ("50 kN·m", "torque", 5e4), ("0.5 kg-m²", "inertia", 0.5),
+    ("0.5 kg·m^2", "inertia", 0.5), ("72 km/hr", "velocity", 20.0), ("72 kmph", "velocity", 20.0),
+    ("30 m/min", "velocity", 0.5), ("1.2 metres", "length", 1.2), ("300 millimetres", "length", 0.3),
+    ("10 kgf", "force", 98.0665), ("35 N/cm^2", "pressure", 3.5e5)])
+def test_the_unit_spellings_books_print(text, dimension, si):
+    """Khurmi & Gupta print kN-m and kg-m², Indian books km/hr and kmph, shaper problems a
+    cutting speed in m/min, older books kgf and N/cm²: each was 'unknown unit'."""
+    from polygons.units import parse_quantity
+    assert parse_quantity(text, dimension) == pytest.approx(si, rel=1e-15)
