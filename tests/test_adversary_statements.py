@@ -236,3 +236,40 @@ def test_the_unit_spellings_books_print(text, dimension, si):
     cutting speed in m/min, older books kgf and N/cm²: each was 'unknown unit'."""
     from polygons.units import parse_quantity
     assert parse_quantity(text, dimension) == pytest.approx(si, rel=1e-15)
+
+
+def test_a_questions_range_may_be_stated_as_the_scene_states_its_crank_angle():
+    """'between the inner and the outer dead centre' — range = ["0 deg from idc", "180 deg from
+    idc"] (the crank turning CW: the interval reversed in +x terms); the roots against the
+    offset engine's closed form x = r cos θ + √(l² − (e − r sin θ)²), v = ẋ, by bisection."""
+    from polygons.conditions import answer_all, to_dict
+    text = ENGINE_QUESTION.split("[[questions]]")[0] + """
+[[questions]]
+find = "angle"
+quantity = "vs(P)"
+condition = "value"
+value = "-3 m/s"
+range = ["0 deg from idc", "180 deg from idc"]
+unit = "deg"
+samples = 36
+"""
+    roots = to_dict(answer_all(polygons.load(text)))[0]["roots"]
+    r, l, e, w = 0.15, 0.6, -0.05, -10 * math.pi
+    idc = math.atan2(e, math.sqrt((l + r) ** 2 - e ** 2))
+
+    def v(psi):              # ψ past idc, turned CW
+        th = idc - math.radians(psi)
+        s = e - r * math.sin(th)
+        return w * (-r * math.sin(th) + s * r * math.cos(th) / math.sqrt(l * l - s * s)) + 3.0
+    want = []
+    for k in range(180):
+        lo, hi = float(k), k + 1.0
+        if (v(lo) > 0) != (v(hi) > 0):
+            for _ in range(100):
+                mid = (lo + hi) / 2
+                lo, hi = (mid, hi) if (v(mid) > 0) == (v(lo) > 0) else (lo, mid)
+            want.append(lo)
+    got = sorted(x["as_stated"]["input"] for x in roots)
+    assert got == pytest.approx(want, abs=1e-7) and len(want) == 2
+    with pytest.raises(PolygonsError, match="from odc too"):
+        polygons.load(text.replace('"180 deg from idc"]', '"180 deg from odc"]'))
