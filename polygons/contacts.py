@@ -577,8 +577,11 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
                              "(and acceleration) along the surface, not both"
                              + (f": drop {', '.join(mixed)}" if mixed else ""),
                              file=file, where="driver")
-        v = _q(drv["velocity"], "velocity", file, "driver.velocity")
-        a = _q(drv.get("acceleration", "0 m/s^2"), "acceleration", file, "driver.acceleration")
+        from .units import parse_along    # '2 m/s to the right' along the surface
+        e = (math.cos(q.face), math.sin(q.face))
+        v = parse_along(drv["velocity"], "velocity", e, file=file, where="driver.velocity")
+        a = parse_along(drv.get("acceleration", "0 m/s^2"), "acceleration", e, file=file,
+                        where="driver.acceleration")
         return {"slider": label, "position": "0 m", "velocity": f"{v!r} m/s",
                 "acceleration": f"{a!r} m/s^2"}
     from .topology import _TURN_WORDS, alpha_words, sense_in

@@ -175,7 +175,8 @@ _DMS_RE = (r"^\s*[-+]?\d+(?:\.\d*)?\s*(?:°|deg)\s*\d+(?:\.\d*)?\s*(?:'|′|min)
            r"\s*(?:\d+(?:\.\d*)?\s*(?:\"|″|''|sec|s))?\s*$")
 
 
-def _unit_pattern(dimension: str, sense: bool = False, alpha: bool = False) -> str:
+def _unit_pattern(dimension: str, sense: bool = False, alpha: bool = False,
+                  towards: bool = False) -> str:
     import re
     from .units import SPELLINGS, UNITS, units_of
     if dimension is None:          # the unit says which quantity it is (a spring's stiffness)
@@ -186,6 +187,8 @@ def _unit_pattern(dimension: str, sense: bool = False, alpha: bool = False) -> s
     opt = "?" if dimension == "fraction" else ""
     tail = f"(?:{_SENSE_RE[3:-2]}|{_ALPHA_WORDS_RE[3:-2]})?" if alpha else \
         (_SENSE_RE if sense else "")
+    if towards:         # '2 m/s to the left' (polygons.units.parse_along)
+        tail = r"(?:\s+(?:[Tt]o\s+the\s+)?(?:[Ll]eft|[Rr]ight)|\s+(?:[Uu]p|[Dd]own)(?:wards?)?)?"
     plain = rf"^\s*{_NUM_RE}\s*(?:{alts}){opt}{tail}\s*$"
     return f"(?:{plain})|(?:{_DMS_RE})" if dimension == "angle" else plain
 
@@ -196,7 +199,9 @@ def _key_schema(k: Key) -> dict:
         s = {"type": "string", "pattern": _unit_pattern(
             k.dimension, sense=k.name in ("omega", "alpha")
             and k.dimension in ("angular_velocity", "angular_acceleration"),
-            alpha=k.name == "alpha" and k.dimension == "angular_acceleration")}
+            alpha=k.name == "alpha" and k.dimension == "angular_acceleration",
+            towards=k.name in ("velocity", "acceleration") and "in words" in k.doc + k.sign
+            or (k.name == "acceleration" and "'5 m/s^2 to the right'" in k.doc))}
         d |= ({"anyOf": [{"type": "number"}, s]} if k.dimension == "fraction" else s)
     elif k.type == "length_or_drawn":
         d["anyOf"] = [{"const": "drawn"}, {"type": "string",

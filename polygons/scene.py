@@ -48,6 +48,7 @@ from .reader import MAX_SCENE_BYTES, read_scene_text  # noqa: F401  (the file is
 from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  # noqa: F401
                       SliderDrive, Slot, Vec)
 from .options import Options, parse_options
+from .units import parse_along
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import (ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS,  # noqa: F401
                            EXTREMES as _EXTREMES, CONTACT_TABLES, book_words)
@@ -512,10 +513,12 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                                              sliders, links, ground)
             driver = SliderDrive(point, position, v, a, rod_rate=stated, rod_angle_deg=meet)
         else:
+            e = sliders[point].direction        # '2 m/s to the left' along the guide
             driver = SliderDrive(point, position,
-                                 r.quantity(drv["velocity"], "velocity", "driver.velocity"),
-                                 r.quantity(drv.get("acceleration", "0 m/s^2"), "acceleration",
-                                            "driver.acceleration"))
+                                 parse_along(drv["velocity"], "velocity", e, file=file,
+                                             where="driver.velocity"),
+                                 parse_along(drv.get("acceleration", "0 m/s^2"), "acceleration",
+                                             e, file=file, where="driver.acceleration"))
 
     # assembly
     assembly: dict[str, Branch] = {}

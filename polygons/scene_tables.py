@@ -167,12 +167,16 @@ TABLES: tuple[Table, ...] = (
                                    "or in rod_alpha_sense)", example='"5 rad/s^2 CCW"'),
         Key("rod_alpha_sense", "string", "the sense of rod_alpha, 'CW' or 'CCW'",
             example='"CCW"'),
-        Key("velocity", "quantity", "slider driver: velocity along the guide (or rod_omega); "
+        Key("velocity", "quantity", "slider driver: velocity along the guide, signed, or its "
+                                     "size and direction in words as books give it ('2 m/s to "
+                                     "the left'; right, up, down: the guide along that axis) "
+                                     "(or rod_omega); "
                                      "a wheel driver: its centre's velocity along the "
                                      "surface's direction instead of omega ('the centre moves "
                                      "at 2 m/s': ω = −v / r)",
             example='"2 m/s"', dimension="velocity", sign="positive along `direction`"),
-        Key("acceleration", "quantity", "slider driver: acceleration along the guide; a wheel "
+        Key("acceleration", "quantity", "slider driver: acceleration along the guide (signed, or "
+                                         "'5 m/s^2 to the right'); a wheel "
                                          "driver with velocity: its centre's (α = −a / r)",
             example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2",
             sign="positive along `direction`"),

@@ -284,6 +284,37 @@ def _parse_quantity(value, dimension: str, file, where, reduce) -> float:
     return check_range(number * factor, dimension, value, file=file, where=where)
 
 
+#: a motion's direction in words, as books give it ('2 m/s to the left'): the axis it names
+_TOWARDS = {"to the right": (1.0, 0.0), "right": (1.0, 0.0), "to the left": (-1.0, 0.0),
+            "left": (-1.0, 0.0), "upwards": (0.0, 1.0), "upward": (0.0, 1.0), "up": (0.0, 1.0),
+            "downwards": (0.0, -1.0), "downward": (0.0, -1.0), "down": (0.0, -1.0)}
+_TOWARDS_RE = re.compile(r"^(.*?)\s+(" + "|".join(sorted(map(re.escape, _TOWARDS), key=len,
+                                                            reverse=True)) + r")\s*$",
+                         re.IGNORECASE)
+
+
+def parse_along(value, dimension: str, direction: tuple[float, float], *, file=None,
+                where=None) -> float:
+    """A velocity or acceleration signed along a guide's ``direction`` (unit vector): "2 m/s"
+    as signed, or its magnitude and a direction in words as books give it, "2 m/s to the
+    left" (right, up, down: +x, −x, +y, −y), which the guide must lie along."""
+    m = _TOWARDS_RE.match(value) if isinstance(value, str) else None
+    if not m:
+        return parse_quantity(value, dimension, file=file, where=where)
+    size = parse_quantity(m.group(1), dimension, file=file, where=where)
+    if size < 0:
+        raise UnitError(f"{show(value)}: a magnitude with its direction in words, or a signed "
+                        f"value without them", file=file, where=where)
+    ax = _TOWARDS[m.group(2).lower()]
+    along = direction[0] * ax[0] + direction[1] * ax[1]
+    if abs(abs(along) - 1.0) > 1e-9:
+        raise UnitError(f"{show(value)}: its line (guide, surface) runs at "
+                        f"{math.degrees(math.atan2(direction[1], direction[0])):.6g}°, not "
+                        f"{'horizontally' if ax[1] == 0 else 'vertically'}: give the value "
+                        f"signed along its direction", file=file, where=where)
+    return size if along > 0 else -size
+
+
 def to_unit(value_si: float, unit: str) -> float:
     """Express an SI value in ``unit`` (``to_unit(0.05, 'mm') == 50``)."""
     return value_si / UNITS[unit][1]

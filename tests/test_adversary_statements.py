@@ -273,3 +273,44 @@ samples = 36
     assert got == pytest.approx(want, abs=1e-7) and len(want) == 2
     with pytest.raises(PolygonsError, match="from odc too"):
         polygons.load(text.replace('"180 deg from idc"]', '"180 deg from odc"]'))
+
+
+TRAMMEL = """
+[ground]
+O = ["0 mm", "0 mm"]
+[links]
+AB = "400 mm"
+[sliders.A]
+through = ["0 mm", "0 mm"]
+direction = "DIR"
+[sliders.B]
+through = ["0 mm", "0 mm"]
+direction = "90 deg"
+[driver]
+slider = "A"
+position = "POS"
+velocity = "V"
+acceleration = "ACC"
+[assembly]
+B = "B above O"
+"""
+
+
+@pytest.mark.parametrize("direction, pos, words, signed", [
+    ("0 deg", "200 mm", ("2 m/s to the left", "5 m/s^2 to the right"), ("-2 m/s", "5 m/s^2")),
+    ("180 deg", "-200 mm", ("2 m/s to the left", "5 m/s^2 Right"), ("2 m/s", "-5 m/s^2"))])
+def test_a_slider_drivers_rates_in_words_as_hibbeler_gives_them(direction, pos, words, signed):
+    """'block A moves to the left at 2 m/s, slowing at 5 m/s²': the magnitude and the direction
+    in words are the signed value along the guide (either way the guide's direction is
+    written); a guide along neither axis refuses the words in one line."""
+    def solve(v, a):
+        return polygons.solve(TRAMMEL.replace("DIR", direction).replace("POS", pos)
+                              .replace('"V"', f'"{v}"').replace('"ACC"', f'"{a}"'))
+    by_words, by_sign = solve(*words), solve(*signed)
+    for p in ("A", "B"):
+        assert by_words.points[p].velocity == by_sign.points[p].velocity
+        assert by_words.points[p].acceleration == by_sign.points[p].acceleration
+    assert by_words.points["A"].velocity[0] == pytest.approx(-2.0, rel=1e-15)
+    with pytest.raises(PolygonsError, match="runs at 30°"):
+        polygons.solve(TRAMMEL.replace("DIR", "30 deg").replace("POS", "200 mm")
+                       .replace('"V"', '"2 m/s up"').replace('"ACC"', '"0 m/s^2"'))
