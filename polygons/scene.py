@@ -51,7 +51,7 @@ from .options import Options, parse_options
 from .units import parse_along
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import (ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS,  # noqa: F401
-                           EXTREMES as _EXTREMES, CONTACT_TABLES, book_words)
+                           EXTREMES as _EXTREMES, CONTACT_TABLES, book_words, circuit_refs)
 from .quantity_grammar import (QUANTITY_FUNCTIONS, parse_quantity_expr,  # noqa: F401
                                _parse_answers, unit_dimension)
 
@@ -525,7 +525,17 @@ def parse_scene(data: dict, *, file: str = "<scene>",
     for label, spec in r.named(data.get("assembly", {}), "assembly").items():
         where = f"assembly.{label}"
         need_label(r.label(label, where), where)
-        assembly[label] = _parse_branch(label, spec, r, need_label, where)
+        said = " ".join(spec.split()) if isinstance(spec, str) else ""
+        circuit = circuit_refs(label, said[len(label) + 1:] if said.startswith(label + " ")
+                               else said, links, ground)           # 'C open', 'C crossed'
+        if circuit and circuit[1] is None:
+            raise BranchError(f"'{said}' names a four-bar's circuit: {label} must join a fixed "
+                              f"pivot D and the end B of a link AB turning about another fixed "
+                              f"pivot A; say '{label} above ...' or near = [x, y]", file=file,
+                              where=where)
+        assembly[label] = record(Branch, label=label, text=spec, relation=circuit[0],
+                                 ref=circuit[1], near=None) if circuit else \
+            _parse_branch(label, spec, r, need_label, where)
 
     if isinstance(driver, SliderDrive) and rod is not None:
         # the rod's stated angle says where its other end is: that closure, unless stated

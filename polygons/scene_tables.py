@@ -38,6 +38,32 @@ def book_words(rest: str) -> str:
             return rel + rest[len(said):]
     return rest
 
+#: a four-bar's circuit as Norton, Uicker and Myszka name it ('C open', 'C crossed')
+CIRCUITS = {"open": "open", "crossed": "crossed", "open circuit": "open",
+            "crossed circuit": "crossed", "open configuration": "open",
+            "crossed configuration": "crossed"}
+
+
+def circuit_refs(label: str, rest: str, links, ground):
+    """'open' / 'crossed' for the pin ``label`` of a four-bar A–B–label–D (D and A fixed, AB
+    turning about A) → (relation, (B, D, A)): crossed when two of its links cross (AB and CD,
+    or BC and the frame DA), open when none do, as the books' figures show them (one of the
+    two closures is always open; where both are, the words are refused as not choosing);
+    (relation, None) when the pin is not such a joint; None for other words."""
+    rel = CIRCUITS.get(rest.lower())
+    if rel is None:
+        return None
+    ends = [ln.b if ln.a == label else ln.a for ln in links.values() if label in (ln.a, ln.b)]
+    for b, d in ((ends[0], ends[1]), (ends[1], ends[0])) if len(ends) == 2 else ():
+        if d in ground and b not in ground:
+            pivots = [ln.b if ln.a == b else ln.a for ln in links.values()
+                      if b in (ln.a, ln.b) and label not in (ln.a, ln.b)]
+            pivots = [p for p in pivots if p in ground and p != d]
+            if len(pivots) == 1:
+                return rel, (b, d, pivots[0])
+    return rel, None
+
+
 ANSWER_FIELDS = _ANSWER_KEYS = (
     Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
                               "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
@@ -262,8 +288,10 @@ TABLES: tuple[Table, ...] = (
                       "optional; the reference is a point or a line of two points; also "
                       "\"lower than\", \"higher than\", \"to the left of\"; a corner of a "
                       "class-III group may name another corner, or be \"uppermost\", "
-                      "\"lowest\", \"leftmost\", \"rightmost\" of its corners), or "
-                      "C = { near = [x, y] }.", (
+                      "\"lowest\", \"leftmost\", \"rightmost\" of its corners; a four-bar's "
+                      "coupler–rocker pin \"C open\" or \"C crossed\", as Norton, Uicker and "
+                      "Myszka name its circuits: crossed when two of its links cross in the "
+                      "figure), or C = { near = [x, y] }.", (
         Key("<LABEL>", "branch", "'above', 'below', 'left of' or 'right of' a point or a line "
                                  "of two labels ('lower than', 'higher than', 'to the left of', "
                                  "'to the right of' too; a triad's corner: 'uppermost', "

@@ -314,3 +314,35 @@ def test_a_slider_drivers_rates_in_words_as_hibbeler_gives_them(direction, pos, 
     with pytest.raises(PolygonsError, match="runs at 30°"):
         polygons.solve(TRAMMEL.replace("DIR", "30 deg").replace("POS", "200 mm")
                        .replace('"V"', '"2 m/s up"').replace('"ACC"', '"0 m/s^2"'))
+
+
+def _segments_cross(p, q, r, s):
+    def side(o, u, v):
+        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
+    return side(p, q, r) * side(p, q, s) < 0 and side(r, s, p) * side(r, s, q) < 0
+
+
+@pytest.mark.parametrize("angle", ["60 deg", "135 deg", "240 deg", "300 deg"])
+def test_a_four_bars_open_and_crossed_circuits_as_norton_names_them(angle):
+    """'C open' / 'C crossed' (Norton, Uicker, Myszka): the closure whose links do not cross /
+    do (AB with CD, or BC with the frame DA), here against the circle–circle closures."""
+    def solve(words):
+        return polygons.solve(FOUR_BAR.replace("ANGLE", angle).replace("ALPHA", "")
+                              .replace('C = "C above AD"', f'C = "{words}"'))
+    a, d = (0.0, 0.0), (0.15, 0.0)
+    for words, crossed in (("open", False), ("C crossed", True), ("C open circuit", False)):
+        res = solve(words)
+        b, c = res.points["B"].position, res.points["C"].position
+        assert (_segments_cross(a, b, c, d) or _segments_cross(b, c, d, a)) == crossed
+    # the other words give the other closure
+    assert solve("open").points["C"].position != solve("crossed").points["C"].position
+
+
+def test_open_and_crossed_are_refused_where_they_do_not_choose_or_name_no_four_bar():
+    with pytest.raises(PolygonsError, match="both of the closures"):      # B on AD: both open
+        polygons.solve(FOUR_BAR.replace("ANGLE", "0 deg").replace("ALPHA", "")
+                       .replace('C = "C above AD"', 'C = "C open"'))
+    with pytest.raises(PolygonsError, match="names a four-bar's circuit"):
+        polygons.load(ENGINE_QUESTION.split("[[questions]]")[0]
+                      .replace('"30 deg from idc"', '"30 deg"')
+                      .replace('P = "P right of O"', 'P = "P open"'))
