@@ -20,6 +20,7 @@ import numpy as np
 from polygons.errors import PolygonsError, UnsupportedError
 from polygons.forces import effort as effort_mod
 from polygons.forces import graphical, zhukovsky
+from polygons.forces import words as force_words
 
 from .components import LOOKS
 from . import scale as scales
@@ -160,7 +161,7 @@ def group_drawings(an, st):
         fp = graphical.construct(an, st)
     except UnsupportedError:
         return []
-    return _drawings(fp.groups, fp, st)
+    return _drawings(fp.groups, fp, st, an.model)
 
 
 def joint_drawings(an, st):
@@ -170,10 +171,10 @@ def joint_drawings(an, st):
         fp = graphical.construct(an, st)
     except UnsupportedError:
         return []
-    return _drawings(fp.joints, fp, st)
+    return _drawings(fp.joints, fp, st, an.model)
 
 
-def _drawings(groups, fp, st):
+def _drawings(groups, fp, st, model):
     from .labels import bounds, box_hits_segment, text_box
     from .layout import FORCE_LEGEND_MM, arrow_head, compose
     from .model import Arrow, Circle, Group, Segment
@@ -323,10 +324,13 @@ def _drawings(groups, fp, st):
                        for i in sorted(ghosts) if stage is None or seq[i][3] <= stage]
             legend += [(m, "normal") for m in g.moments]
             if g.kind == "crank":
-                legend.append((f"input torque T = {abs(fp.effort):.5g} N m "
-                               f"{'CCW' if fp.effort > 0 else 'CW'}", "bold"))
+                legend.append((f"input torque T = "
+                               f"{force_words.effort_words(model, fp.effort, st.sol, 5)}",
+                               "bold"))
             if g.kind == "slider driver":
-                legend.append((f"input force {fp.effort:.5g} N along the guide", "bold"))
+                legend.append((f"input force "
+                               f"{force_words.effort_words(model, fp.effort, st.sol, 5)}",
+                               "bold"))
             for f in g.reactions:
                 if f.how == "reaction" and (stage is None or stage == nst):
                     legend.append((f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°",
@@ -439,16 +443,27 @@ def lever_drawings(an, st):
     for stage in (1, 2, 3, None):
         items, arrows, labels, placed = [], [], [], []
 
+        lines = []                         # the lever's sides and rays: no name on them
+
         def label(x, y, text, size=2.8, anchor="start"):
-            segs = [(ar.tail, ar.tip) for ar in arrows]
-            for j in range(30):
-                dy = (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)
-                bx = text_box(x, y + dy, text, size, anchor)
-                if not any(bx.overlaps(o) for o in placed) and not any(
-                        box_hits_segment(bx, a, b, 0.3) for a, b in segs):
-                    break
+            """A name near (x, y) clear of the other names, the force arrows and the
+            lever's sides and rays; else clear of the names at least."""
+            segs = [(ar.tail, ar.tip) for ar in arrows] + lines
+            moves = [(0.0, (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)) for j in range(9)]
+            moves += [(dx, dy) for dx in (-6.0, 6.0, -12.0, 12.0)
+                      for dy in (0.0, -3.2, 3.2, -6.4, 6.4)]
+            moves += [(0.0, (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)) for j in range(9, 30)]
+            for clear in (True, False):
+                for dx, dy in moves:
+                    bx = text_box(x + dx, y + dy, text, size, anchor)
+                    if not any(bx.overlaps(o) for o in placed) and not (clear and any(
+                            box_hits_segment(bx, a, b, 0.3) for a, b in segs)):
+                        break
+                else:
+                    continue
+                break
             placed.append(bx)
-            labels.append(_text(x, y + dy, text, size, anchor))
+            labels.append(_text(x + dx, y + dy, text, size, anchor))
 
         faded1 = stage is not None and stage > 1
         for name, body in model.bodies.items():
@@ -460,6 +475,7 @@ def lever_drawings(an, st):
             items.append(Segment(tuple(map(float, a * kv)), tuple(map(float, b * kv)),
                                  "c-force-lever" + ("" if faded1 else "-new"), faded=faded1,
                                  cls="lever"))
+            lines.append((tuple(map(float, a * kv)), tuple(map(float, b * kv))))
         show = [] if stage == 1 else (lv.applied if stage == 2 else allf)
         show = [a for a in show if a.kind != "effort" or not nil]
         drawn = [a for a in show if float(np.hypot(*a.lever)) * kv > 0.05
@@ -484,6 +500,7 @@ def lever_drawings(an, st):
             if lab in model.scene.ground:
                 continue
             items.append(Segment((0.0, 0.0), q, "c-force-lever", faded=True, cls="ray"))
+            lines.append(((0.0, 0.0), q))
             items.append(Circle(q, 0.5, "vertex", cls="image"))
             images.append((lab, q))
         items.append(Circle((0.0, 0.0), 0.9, "pole", cls="pole"))
@@ -502,15 +519,12 @@ def lever_drawings(an, st):
         box = box.grown(6.0)
         unit = effort_mod.unit(model)
         legend = [(f"{a.name}: {_fmt(float(np.hypot(*a.force)))} N, moment about o "
-                   + (f"{_fmt(a.moment + 0.0)} N m/s" if a in drawn else "0 (applied at o)"),
-                   "normal") for a in (show or [])]
+                   + (force_words.lever_moment_words(a.moment, 4) if a in drawn
+                      else "0 (applied at o)"), "normal") for a in (show or [])]
         if stage in (3, None):
-            spec = model.parsed.effort
-            sign = (" (pulling)" if lv.effort < 0 else " (pushing)") \
-                if spec is not None and spec.kind == "actuator" else ""
             legend.append((f"effort {effort_mod.short(model)} = "
                            + (f"0 {unit} (the loads balance)" if nil else
-                              f"{lv.effort:.6g} {unit}{sign}"), "bold"))
+                              force_words.effort_words(model, lv.effort, st.sol, 6)), "bold"))
         looks = ["force-lever"] + list(dict.fromkeys(KIND_LOOK.get(a.kind, "force-load")
                                                      for a in show))
         key = [(f"c-{lk}", LOOKS[lk].name, lk != "force-lever") for lk in looks]
