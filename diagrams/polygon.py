@@ -731,12 +731,16 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
 
 def _about(con: Construction, st: Stroke) -> str:
     """The tail's name of a vector from the pole as the book writes it: the fixed pivot its
-    intersection names (dc about D where the pole is a = d), else the vertex."""
+    intersection names (dc about D where the pole is a = d), a centripetal vector's fixed
+    centre (dc₂), else the vertex."""
     if st.frm != con.pole:
         return st.frm
     step = next((s for s in con.steps if s.number == st.step), None)
     if step is not None and step.kind == "intersection" and step.args:
         return step.args[0].lower()
+    if step is not None and step.op == "centripetal" and len(step.args) > 1 and \
+            step.args[1].lower() in con.pole_label.split(" = "):
+        return step.args[1].lower()          # about its centre: dc₂ about D (pole a = d)
     return st.frm
 
 

@@ -301,6 +301,17 @@ def slips(sol: Solution, e: Expected, diagram: str) -> list[tuple[float, str]]:
     return [(r, w) for r, w in out if r > 0 and math.isfinite(r) and abs(r - 1) > 0.02]
 
 
+def _shown(sol: Solution, e, pole: str) -> str:
+    """A vector's printed name: its vertices as :func:`notation.vertex` spells them, the
+    pole named after a centripetal vector's fixed centre (dc₂ about D where the pole is
+    a = d, as the step's sentence and the drawing's legend write it)."""
+    tail = e.start
+    if e.start == pole and e.step.op == Op.CENTRIPETAL and len(e.step.args) > 1 and \
+            e.step.args[1] in sol.scene.ground:
+        tail = e.step.args[1].lower()
+    return vertex(tail) + vertex(e.end)
+
+
 def rules(sol: Solution, diagram: str, emulated: dict | None = None,
           stated: float = 0.02) -> dict:
     """Everything the grading rules need, as plain JSON data (SI; the interactive page carries
@@ -309,7 +320,7 @@ def rules(sol: Solution, diagram: str, emulated: dict | None = None,
     emulated = emulated or {}
     k_space = _space_mm(sol)
     verts = sol.vertices[diagram]
-    names = set(verts)
+    names = sol.printed_names(diagram)
     pole = sol.vertex_of(next(iter(sol.scene.ground)))
     steps = {s.number: s for s in sol.steps if s.diagram == diagram}
 
@@ -339,6 +350,9 @@ def rules(sol: Solution, diagram: str, emulated: dict | None = None,
             "centripetal": e.step.op == Op.CENTRIPETAL,
             "centre": (e.step.args[1] if e.step.op == Op.CENTRIPETAL and len(e.step.args) > 1
                        else None),
+            # the name printed, as the handout prints it: from the pole, a centripetal
+            # vector is named from its fixed centre's letter (dc₂ where the pole is a = d)
+            "shown": _shown(sol, e, pole),
             "rel": _rel(sol, e.quantity, e.factor, emulated, stated),
             "link_mm": _link_mm(sol, e.perp_to or e.along, k_space),
             "slips": [] if line else [[r, w] for r, w in slips(sol, e, diagram)],
@@ -466,7 +480,8 @@ def _fmt(x: float, d: int = 1) -> str:
 
 def _mark(R: dict, e: dict, drawn, P, k) -> VectorMark:
     N = R["names"]
-    name, shown = e["start"] + e["end"], N.get(e["start"], e["start"]) + N.get(e["end"], e["end"])
+    name = e["start"] + e["end"]
+    shown = e.get("shown") or N.get(e["start"], e["start"]) + N.get(e["end"], e["end"])
     im = e.get("image")
     if im and im["base"] in P and e["start"] in P:
         # carried forward: the image of the student's own start → base, by the link's ratio

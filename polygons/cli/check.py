@@ -385,7 +385,7 @@ def describe_step(sol: Solution, step: Step) -> str:
                 k = stage_number(sol, drawn)
                 text += (f" The line it is read from ends at {drawn.end}, fixed in step "
                          f"{drawn.number}" + (f" (stage {k})" if k else "") + ".")
-    return vertices_in(text, sol.vertices[step.diagram])     # p4_1 → p₄′, as printed
+    return vertices_in(text, sol.printed_names(step.diagram))     # p4_1 → p₄′, as printed
 
 
 # ---------------------------------------------------------------- grading

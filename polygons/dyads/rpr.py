@@ -128,9 +128,10 @@ class RPR(Constructed):
                   f"from {B}).", component=C.SLIDING)
         else:
             k1 = b.fresh(A1)
-            b.add(Kind.VECTOR, Op.CENTRIPETAL, (lev, B, A1), f"{b_}{k1}", b_, k1,
+            bn = b.names.named(B)          # o₄p₄′ about O4 where the pole is o₂ = o₄
+            b.add(Kind.VECTOR, Op.CENTRIPETAL, (lev, B, A1), f"{bn}{k1}", b_, k1,
                   "centripetal", f"(a_{A1})_{B}^n", f"(a_{A1})_{B}^n = ω_{lev}² × {B}{A}",
-                  f"From {b_} draw the centripetal acceleration of {A1} about {B}, ω² × "
+                  f"From {bn} draw the centripetal acceleration of {A1} about {B}, ω² × "
                   f"{B}{A}, pointing towards {B}; call its end {k1}.",
                   component=C.CENTRIPETAL, link=lev)
             n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"line ⟂ {B}{A}", k1, None,

@@ -299,9 +299,11 @@ class Triad:
 
     @staticmethod
     def _normal(b: Builder, L, P, Q, frm, to, name) -> None:
-        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, Q), f"{frm}{to}", frm, to, "centripetal",
+        # from the pole: named from its centre's own letter (dc₁ about the fixed D)
+        fn = b.names.named(P) if frm == b.names.pole else frm
+        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, Q), f"{fn}{to}", frm, to, "centripetal",
               name, f"{name} = ω_{L}² × {P}{Q}",
-              f"From {frm} draw the centripetal acceleration of {Q} relative to {P}, ω_{L}² × "
+              f"From {fn} draw the centripetal acceleration of {Q} relative to {P}, ω_{L}² × "
               f"{P}{Q}, pointing from {Q} towards {P}; call its end {to}.",
               component=Component.CENTRIPETAL, link=L)
 
