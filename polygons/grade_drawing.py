@@ -58,7 +58,7 @@ from .drawing_board import PENCIL_MM, PROTRACTOR_DEG, SPACE_MM
 from .drawing_format import StudentDrawing
 from .evaluate import Solution
 from .notation import vertex, vertices_in
-from .steps import Kind, Op, Step
+from .steps import Kind, Op, Step, points_back, tail_name
 
 #: the smallest length tolerance on paper: two pencil marks (±0.25 mm in x and y) and a rule
 #: reading (±0.25 mm)
@@ -301,15 +301,21 @@ def slips(sol: Solution, e: Expected, diagram: str) -> list[tuple[float, str]]:
     return [(r, w) for r, w in out if r > 0 and math.isfinite(r) and abs(r - 1) > 0.02]
 
 
-def _shown(sol: Solution, e, pole: str) -> str:
-    """A vector's printed name: its vertices as :func:`notation.vertex` spells them, the
-    pole named after a centripetal vector's fixed centre (dc₂ about D where the pole is
-    a = d, as the step's sentence and the drawing's legend write it)."""
-    tail = e.start
-    if e.start == pole and e.step.op == Op.CENTRIPETAL and len(e.step.args) > 1 and \
-            e.step.args[1] in sol.scene.ground:
-        tail = e.step.args[1].lower()
-    return vertex(tail) + vertex(e.end)
+def _shown(sol: Solution, e, pole: str, steps: dict) -> str:
+    """A vector's printed name, as the drawing's legend and the narration print it: the
+    way its arrow runs (a slot line's vector back to its anchor, :func:`points_back`) and
+    its tail named by :func:`tail_name` (o₄b about the fixed O4, dc₂ about D, where the
+    pole is another fixed point's vertex), each vertex as :func:`notation.vertex` spells
+    it."""
+    tail, head = e.start, e.end
+    meet = None
+    if e.step.kind == Kind.LINE:
+        meet = next((s for s in steps.values() if s.kind == Kind.INTERSECTION
+                     and e.step.number in s.lines), None)
+        if points_back(sol.vertex_of, e.step, e.end):
+            tail, head = e.end, e.start
+    fixed = {g.lower() for g in sol.scene.ground}
+    return vertex(tail_name(e.step, tail, pole, fixed, meet)) + vertex(head)
 
 
 def rules(sol: Solution, diagram: str, emulated: dict | None = None,
@@ -352,7 +358,7 @@ def rules(sol: Solution, diagram: str, emulated: dict | None = None,
                        else None),
             # the name printed, as the handout prints it: from the pole, a centripetal
             # vector is named from its fixed centre's letter (dc₂ where the pole is a = d)
-            "shown": _shown(sol, e, pole),
+            "shown": _shown(sol, e, pole, steps),
             "rel": _rel(sol, e.quantity, e.factor, emulated, stated),
             "link_mm": _link_mm(sol, e.perp_to or e.along, k_space),
             "slips": [] if line else [[r, w] for r, w in slips(sol, e, diagram)],

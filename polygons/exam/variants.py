@@ -42,6 +42,7 @@ import random
 from dataclasses import dataclass
 from typing import Mapping
 
+from .. import notation
 from ..errors import PolygonsError, SceneError
 from ..evaluate import Solution, solve
 from ..exam_table import ExamSpec, spec as exam_spec
@@ -163,9 +164,9 @@ def symbol(expr: str) -> str:
     labels run together (v_P2P4)."""
     fn, args = _args(expr)
     if fn in ("v", "a") and len(args) == 2:
-        return f"({fn}_{args[0]})_{args[1]}"
+        return notation.quantity(f"({fn}_{args[0]})_{args[1]}")
     if fn in ("an", "at") and len(args) == 2:
-        return f"(a_{args[0]}){'ⁿ' if fn == 'an' else 'ᵗ'}_{args[1]}"
+        return notation.quantity(f"(a_{args[0]})_{args[1]}^{fn[1]}")
     return f"{_SYMBOL[fn]}_{''.join(args)}"
 
 
