@@ -99,7 +99,7 @@ class Step:
     op: Op
     args: tuple[str, ...]   # space labels / link names the operation uses (an intersection:
     #                         the fixed pivot its resultant is named from, if any: dc)
-    draws: str              # what appears on paper: 'oa', 'c line', 'b', 'ω_BC'
+    draws: str              # what appears on paper: 'oa', 'line ⟂ BC', 'b', 'ω_BC'
     start: str | None       # polygon vertex the vector starts at / the line passes through
     end: str | None         # polygon vertex this step creates
     theorem: str            # 'relative_velocity', 'centripetal', 'coriolis', ...
