@@ -25,6 +25,7 @@ from polygons.forces import words as force_words
 from .components import LOOKS
 from . import scale as scales
 from .inset import MIN_VECTOR_MM
+from .labels import bounds, text_box
 
 KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load",
              "spring": "force-load", "torque": "force-load", "friction": "force-load",
@@ -177,7 +178,7 @@ def joint_drawings(an, st):
 def _drawings(groups, fp, st, model):
     from .labels import bounds, box_hits_segment, text_box
     from .layout import FORCE_LEGEND_MM, arrow_head, compose
-    from .model import Arrow, Circle, Group, Segment
+    from .model import Arrow, Circle, Group, Segment, Text
     from .scale import Scale, round_up
 
     out = []
@@ -309,6 +310,24 @@ def _drawings(groups, fp, st, model):
             box = bounds(pts)
             for t in labels:
                 box = box.union(text_box(t.x, t.baseline, t.text, t.size, t.anchor))
+            # the forces too short for the polygon's scale, drawn again head to tail in a
+            # detail below it at a round magnification (each ≥ 3 mm there), its vertex ringed
+            drawn_in_detail = {}
+            reach = bounds([p for e in extra for p in (e.a, e.b)] + pts)
+            for item in _details(seq, ghosts, stage, verts, k, box.union(reach), placed,
+                                 fscale):
+                if isinstance(item, tuple):              # (index, magnification)
+                    drawn_in_detail[item[0]] = item[1]
+                elif isinstance(item, Arrow):
+                    arrows.append(item)
+                elif isinstance(item, Text):
+                    labels.append(item)
+                    box = box.union(text_box(item.x, item.baseline, item.text, item.size,
+                                             item.anchor))
+                else:
+                    extra.append(item)
+            for ar in arrows:
+                box = box.union(bounds([ar.tail, ar.tip]))
             box = box.grown(6.0)
             looks = list(dict.fromkeys([s[2] for s in seq if stage is None or s[3] <= stage]
                                        + (["force-reaction"] if diag and (stage is None or
@@ -319,9 +338,13 @@ def _drawings(groups, fp, st, model):
                 key.append(("construction", "line of known direction", False))
             legend = [(s[4], "normal") for i, s in enumerate(seq)
                       if (stage is None or s[3] <= stage) and i not in ghosts]
+            legend += [(f"{seq[i][4]} (detail ×{_fmt(drawn_in_detail[i])})", "normal")
+                       for i in sorted(ghosts) if (stage is None or seq[i][3] <= stage)
+                       and i in drawn_in_detail]
             legend += [(f"{seq[i][0]} ≈ 0 ({float(np.hypot(*seq[i][1])) * k:.2f} mm at this "
                         f"scale: {_fmt(float(np.hypot(*seq[i][1])))} N, not drawn)", "normal")
-                       for i in sorted(ghosts) if stage is None or seq[i][3] <= stage]
+                       for i in sorted(ghosts) if (stage is None or seq[i][3] <= stage)
+                       and i not in drawn_in_detail]
             legend += [(m, "normal") for m in g.moments]
             if g.kind == "crank":
                 legend.append((f"input torque T = "
@@ -361,6 +384,124 @@ def _drawings(groups, fp, st, model):
                 legend_width=FORCE_LEGEND_MM,
                 scale_statement=fscale.statement, meta={}, key=key)))
     return out
+
+
+#: a detail's magnifications (round, as a draughtsman picks them)
+DETAIL_FACTORS = (2, 2.5, 4, 5, 10, 20, 25, 50, 100)
+#: the gap (mm) between the polygon and its details, and between two details
+DETAIL_GAP = 8.0
+
+
+def _ghost_runs(ghosts, seq, stage) -> list[list[int]]:
+    """The forces too short to draw (``ghosts``) shown at ``stage``, in runs of consecutive
+    ones (head to tail in the polygon: one detail each)."""
+    shown = sorted(i for i in ghosts if stage is None or seq[i][3] <= stage)
+    runs: list[list[int]] = []
+    for i in shown:
+        if runs and runs[-1][-1] == i - 1:
+            runs[-1].append(i)
+        else:
+            runs.append([i])
+    return runs
+
+
+def _details(seq, ghosts, stage, verts, k, box, placed, fscale):
+    """The details of a force polygon: each run of forces too short for its scale drawn
+    again, head to tail, magnified ×m (the least of :data:`DETAIL_FACTORS` that draws each
+    :data:`MIN_VECTOR_MM` long, else the largest: those still shorter stay said in the
+    legend), in a row below the polygon; the run's vertex on the polygon ringed (and
+    numbered when there are two or more); the caption states the factor and the detail's
+    scale.  Yields (index, m) for each force drawn, then Arrow, Text and Circle items."""
+    from .model import Circle
+    runs = _ghost_runs(ghosts, seq, stage)
+    x = box.x0
+    top = box.y0 - DETAIL_GAP
+    for r_i, run in enumerate(runs):
+        lens = [float(np.hypot(*seq[i][1])) * k for i in run]
+        need = MIN_VECTOR_MM / min(lens)
+        m = next((f for f in DETAIL_FACTORS if f >= need), DETAIL_FACTORS[-1])
+        run = [i for i, ln in zip(run, lens) if ln * m >= MIN_VECTOR_MM - 1e-9]
+        if not run:
+            continue
+        tag = f"({r_i + 1})" if len(runs) > 1 else ""
+        # set once to measure it, then where its left edge is x (a name set to the left of
+        # its arrow included)
+        _, first = _one_detail(seq, run, m, k, (x, top), tag, stage, list(placed))
+        items, dbox = _one_detail(seq, run, m, k, (2 * x - first.x0, top), tag, stage,
+                                  placed)
+        ring_at = tuple(map(float, verts[run[0]]))
+        yield Circle(ring_at, 2.5, "inset", cls="inset-ring force-detail-ring")
+        if tag:                            # the ring's number, clear of the other names
+            for dx, dy, anchor in ((3.0, 2.0, "start"), (3.0, -4.5, "start"),
+                                   (-3.0, 2.0, "end"), (-3.0, -4.5, "end"),
+                                   (0.0, 4.0, "middle"), (0.0, -6.5, "middle"),
+                                   (6.0, 5.0, "start"), (-6.0, 5.0, "end"),
+                                   (6.0, -8.0, "start"), (-6.0, -8.0, "end")):
+                bx = text_box(ring_at[0] + dx, ring_at[1] + dy, tag, 2.8, anchor)
+                if not any(bx.overlaps(o) for o in placed):
+                    break
+            placed.append(bx)
+            yield _text(ring_at[0] + dx, ring_at[1] + dy, tag, 2.8, anchor)
+        for i in run:
+            yield (i, m)
+        yield from items
+        x = dbox.x1 + DETAIL_GAP
+
+
+def _one_detail(seq, run, m, k, at, tag, stage, placed):
+    """One detail's items (arrows, names, caption) with its left end near ``at[0]`` and its
+    top at ``at[1]``, and its box; the boxes of its texts are added to ``placed``."""
+    from .labels import box_hits_segment
+    from .layout import arrow_head
+    from .model import Arrow, Text
+    chain = [np.zeros(2)]
+    for i in run:
+        chain.append(chain[-1] + seq[i][1] * k * m)
+    lo = np.min(np.array(chain), axis=0)
+    hi = np.max(np.array(chain), axis=0)
+    off = np.array([at[0] - lo[0] + 2.0, at[1] - hi[1] - 4.0])
+    pts = [tuple(map(float, q + off)) for q in chain]
+    segs = list(zip(pts, pts[1:]))
+    centre = np.mean(np.array(pts), axis=0)
+    items = []
+    dbox = bounds(pts)
+    for j, i in enumerate(run):
+        name, f, look, sst, _ = seq[i]
+        new = stage is not None and sst == stage
+        tail, tip = pts[j], pts[j + 1]
+        head, shaft = arrow_head(tail, tip)
+        items.append(Arrow(tail, tip, f"c-{look}" + ("-new" if new else ""), head, shaft,
+                           name=name, role="known", faded=stage is not None and not new,
+                           title=f"{name} = {_fmt(float(np.hypot(*f)))} N "
+                                 f"(detail ×{_fmt(m)})"))
+        u = np.subtract(tip, tail) / math.dist(tail, tip)
+        n = np.array([-u[1], u[0]])
+        mid = (np.array(tail) + np.array(tip)) / 2
+        if n @ (mid - centre) < 0:
+            n = -n
+        for clear in (True, False):
+            for off_mm, side in ((2.5, 1), (5.0, 1), (2.5, -1), (8.0, 1), (5.0, -1),
+                                 (11.0, 1), (8.0, -1), (14.0, 1), (11.0, -1)):
+                p = mid + side * off_mm * n
+                anchor = "start" if side * n[0] >= 0 else "end"
+                bx = text_box(float(p[0]), float(p[1]) - 1.0, name, 2.8, anchor)
+                if not any(bx.overlaps(o) for o in placed) and not (clear and any(
+                        box_hits_segment(bx, a, b, 0.3) for a, b in segs)):
+                    break
+            else:
+                continue
+            break
+        placed.append(bx)
+        dbox = dbox.union(bx)
+        items.append(_text(float(p[0]), float(p[1]) - 1.0, name, 2.8, anchor))
+    cap = (f"detail{' ' + tag if tag else ''} ×{_fmt(m)}: 1 cm = {_fmt(10.0 / (k * m))} N "
+           f"(the ringed vertex)")
+    cy = dbox.y0 - 4.0
+    bx = text_box(dbox.x0, cy, cap, 2.6, "start")
+    placed.append(bx)
+    items.append(Text(dbox.x0, cy, cap, 2.6, anchor="start", role="inset",
+                      cls="inset-caption"))
+    return items, dbox.union(bx)
 
 
 def _stage_caption(g, stage, nst) -> str:
