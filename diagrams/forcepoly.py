@@ -589,7 +589,8 @@ def lever_drawings(an, st):
         def label(x, y, text, size=2.8, anchor="start"):
             """A name near (x, y) clear of the other names, the force arrows and the
             lever's sides and rays; else clear of the names at least."""
-            segs = [(ar.tail, ar.tip) for ar in arrows] + lines
+            segs = [(tuple(np.add(ar.tail, ar.shift)), tuple(np.add(ar.tip, ar.shift)))
+                    for ar in arrows] + lines
             moves = [(0.0, (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)) for j in range(9)]
             moves += [(dx, dy) for dx in (-6.0, 6.0, -12.0, 12.0)
                       for dy in (0.0, -3.2, 3.2, -6.4, 6.4)]
@@ -631,10 +632,14 @@ def lever_drawings(an, st):
             new = stage is not None and (stage == 2 and a.kind != "effort"
                                          or stage == 3 and a.kind == "effort")
             head, shaft = arrow_head(tail, tip)
+            # two forces along one line at one image (the toggle press's Stone and −m a_G
+            # at d): the later drawn beside, moved 2.2 mm square to it
+            u = np.subtract(tip, tail) / math.dist(tail, tip)
+            shift = _beside(arrows, tail, tip, np.array([-u[1], u[0]]))
             arrows.append(Arrow(tail, tip, f"c-{look}" + ("-new" if new else ""), head, shaft,
                                 name=a.name, role="known", title=f"{a.name} {_fmt(mag)} N",
-                                faded=stage is not None and not new))
-            tips.append((a.name, tail, tip))
+                                faded=stage is not None and not new, shift=shift))
+            tips.append((a.name, tuple(np.add(tail, shift)), tuple(np.add(tip, shift))))
         images = []
         for lab, p in imgs.items():
             q = tuple(map(float, p * kv))
@@ -653,7 +658,7 @@ def lever_drawings(an, st):
             label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0, name, 2.6,
                   "start" if u[0] >= -0.2 else "end")
         pts = [(0.0, 0.0)] + [tuple(map(float, p * kv)) for p in imgs.values()]
-        pts += [q for ar in arrows for q in (ar.tail, ar.tip)]
+        pts += [tuple(np.add(q, ar.shift)) for ar in arrows for q in (ar.tail, ar.tip)]
         box = bounds(pts)
         for o in placed:
             box = box.union(o)
