@@ -56,7 +56,7 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
         else:
             b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (X,), f"v_{X}", None, None, "slider",
                   f"v_{X} along guide", f"v_{X} = {pole}{x}",
-                  f"The slider velocity is {pole}{x}, signed along the guide direction.",
+                  f"The slider velocity is {pole}{x}, along its guide.",
                   component=C.RESULTANT)
         return
     # acceleration
@@ -110,5 +110,5 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
     else:
         b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (X,), f"a_{X}", None, None, "slider",
               f"a_{X} along guide", f"a_{X} = {pole}{x}",
-              f"The slider acceleration is {pole}{x}, signed along the guide direction.",
+              f"The slider acceleration is {pole}{x}, along its guide.",
               component=C.RESULTANT)
