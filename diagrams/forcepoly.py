@@ -294,14 +294,26 @@ def _drawings(groups, fp, st, model):
                                             shift=shift))
                         mid = (np.array(tail) + np.array(tip)) / 2 + np.array(shift)
                         m2 = -1.0 if shift != (0.0, 0.0) else 1.0
-                        for off, sd in ((3.0, 1), (6.0, 1), (9.0, 1), (12.0, 1), (3.0, -1),
-                                        (6.0, -1), (9.0, -1), (15.0, 1), (12.0, -1),
-                                        (18.0, 1), (15.0, -1), (21.0, 1)):
-                            at = mid + sd * m2 * off * n
-                            anchor = "start" if sd * m2 * n[0] >= 0 else "end"
-                            bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
-                            if not any(bx.overlaps(o) for o in placed):
-                                break
+                        # clear of the other names and of every drawn vector (WE8's 'R_P on
+                        # slider P' was set across the gas force), else of the names at least
+                        drawn = [(tuple(np.add(ar.tail, ar.shift)),
+                                  tuple(np.add(ar.tip, ar.shift))) for ar in arrows]
+                        drawn += [(e.a, e.b) for e in extra]
+                        for clear in (True, False):
+                            for off, sd in ((3.0, 1), (6.0, 1), (9.0, 1), (12.0, 1),
+                                            (3.0, -1), (6.0, -1), (9.0, -1), (15.0, 1),
+                                            (12.0, -1), (18.0, 1), (15.0, -1), (21.0, 1)):
+                                at = mid + sd * m2 * off * n
+                                anchor = "start" if sd * m2 * n[0] >= 0 else "end"
+                                bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8,
+                                              anchor)
+                                if not any(bx.overlaps(o) for o in placed) and not (
+                                        clear and any(box_hits_segment(bx, a, b, 0.3)
+                                                      for a, b in drawn)):
+                                    break
+                            else:
+                                continue
+                            break
                         placed.append(bx)
                         labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8,
                                             anchor))
@@ -329,7 +341,8 @@ def _drawings(groups, fp, st, model):
             for ar in arrows:
                 box = box.union(bounds([ar.tail, ar.tip]))
             box = box.grown(6.0)
-            looks = list(dict.fromkeys([s[2] for s in seq if stage is None or s[3] <= stage]
+            looks = list(dict.fromkeys([s[2] for s in seq if (stage is None or s[3] <= stage)
+                                        and float(np.hypot(*s[1])) > 0]
                                        + (["force-reaction"] if diag and (stage is None or
                                                                           stage == nst)
                                           else [])))
