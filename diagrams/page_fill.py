@@ -88,9 +88,11 @@ class Finding:
 
 
 #: drawn round every block a page break may not split (a figure, a drawing with its heading
-#: and note, an explanation box): an outline takes no room, so the pages break where they did,
-#: and the block's ink is one run however much blank paper its drawing holds
-OUTLINE_CSS = ("<style>figure, section.plate div.sheet, .explain, section.area "
+#: and note, a drawing area with its own): an outline takes no room, so the pages break where
+#: they did, and the block's ink is one run however much blank paper its drawing holds (not
+#: round an explanation box in columns: Chromium leaves an empty fragment of one it pushes
+#: on, and its outline would be ink at the foot of the page)
+OUTLINE_CSS = ("<style>figure, section.plate div.sheet, section.area "
                "{ outline: 0.2mm solid #bbb; }</style>")
 
 
