@@ -99,7 +99,7 @@ def wheel_on_incline():
 
 
 ORACLES = {"book-khurmi-whitworth": whitworth, "book-offset-engine-retarding": offset_engine,
-           "wheel-on-incline-hibbeler": wheel_on_incline}
+           "book-hibbeler-wheel-incline": wheel_on_incline}
 
 
 def _path(stem):
