@@ -121,7 +121,7 @@ def page(sol, figs=None, n: int = FRAMES) -> str:
         "TITLE": esc(head), "CSS": asset("page.css") + HTML_CSS, "H1": typeset(title),
         "SID": esc(sid), "STAGES": "\n".join(stages), "KEY": _key(kinds),
         "OPTIONS": options, "DATA": script_json(data),
-        "JS": asset("page.js") + "\n" + asset("grade.js") + "\n" + asset("draw.js"),
+        "JS": asset("inset.js") + "\n" + asset("page.js") + "\n" + asset("grade.js") + "\n" + asset("draw.js"),
     })
 
 
