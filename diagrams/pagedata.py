@@ -15,7 +15,9 @@ Everything the page's script draws is computed here, in SI, and sent as one JSON
 * the **drawing mode** of each diagram: the vertices to place in construction order, the
   construction's vectors, the static drawing's stated scale and a paper size, and the
   grading rules of ``polygons check --drawing`` (:func:`polygons.grade_drawing.rules`: the
-  vectors to draw with their tolerances and slips) that the page's ``grade.js`` applies.
+  vectors to draw with their tolerances and slips) that the page's ``grade.js`` applies;
+* the **inset rule**'s constants (:func:`inset_rule`, from :mod:`diagrams.inset`), which the
+  page's ``inset.js`` applies to the live polygons at every frame.
 
 Nothing here computes kinematics of its own.
 """

@@ -132,9 +132,12 @@ def _check(case, frame, got) -> None:
         x0, y0, x1, y1 = m["panel"]
         main = [v for v in m["vecs"] if not v["inset"]]
         pts = [p for v in main for p in (v["a"], v["b"])]
-        w = max(p[0] for p in pts) - min(p[0] for p in pts)
-        h = max(p[1] for p in pts) - min(p[1] for p in pts)
-        assert max(w / (x1 - x0), h / (y1 - y0)) >= 0.4, (where, w, h, m["panel"])
+        if not pts:                       # a mechanism at rest: nothing to draw, said so
+            assert any("is zero here" in t["text"] for t in m["texts"]), where
+        else:
+            w = max(p[0] for p in pts) - min(p[0] for p in pts)
+            h = max(p[1] for p in pts) - min(p[1] for p in pts)
+            assert max(w / (x1 - x0), h / (y1 - y0)) >= 0.4, (where, w, h, m["panel"])
         boxes = [(t["text"], t["box"]) for t in m["texts"] if t["text"].strip()]
         for i, (ta, a) in enumerate(boxes):
             for tb, b in boxes[i + 1:]:

@@ -60,9 +60,9 @@
       bb = t.getBBox();
     }
     var w = bb.width, h = bb.height, pad = 1.5 * U, best = null;
-    [0.35, 0.8, 1.5, 2.4, 3.6, 5].forEach(function (k) {     // the far two with a leader
-      for (var j = 0; j < 16; j++) {
-        var ang = -Math.PI / 4 + j * Math.PI / 8, ux = Math.cos(ang), uy = Math.sin(ang);
+    [0.35, 0.8, 1.5, 2.4, 3.6, 5, 6.5, 8].forEach(function (k) {   // beyond 3: with a leader
+      for (var j = 0; j < 24; j++) {
+        var ang = -Math.PI / 4 + j * Math.PI / 12, ux = Math.cos(ang), uy = Math.sin(ang);
         var d = k * fs + 0.5 * Math.abs(ux) * w + 0.5 * Math.abs(uy) * h;
         var r = {x: at[0] + ux * d - w / 2, y: at[1] + uy * d - h / 2, w: w, h: h};
         var g = {x: r.x - pad, y: r.y - pad, w: r.w + 2 * pad, h: r.h + 2 * pad};
@@ -72,6 +72,13 @@
           return Math.hypot(p[0] - within.c[0], p[1] - within.c[1]) > within.r - U; })) { score += 50; }
         segs.forEach(function (s) { if (segHits(s, g)) { score += 100; } });
         boxes.forEach(function (b) { if (boxHits(b, g)) { score += 1000; } });
+        if (k > 3) {                  // its leader crosses no other text
+          var lx = Math.max(r.x, Math.min(at[0], r.x + w)), ly = Math.max(r.y, Math.min(at[1], r.y + h));
+          boxes.forEach(function (b) {  // (not the box of its own point)
+            var own = at[0] >= b.x && at[0] <= b.x + b.w && at[1] >= b.y && at[1] <= b.y + b.h;
+            if (!own && segHits([at[0], at[1], lx, ly], b)) { score += 200; }
+          });
+        }
         if (best === null || score < best.score) { best = {score: score, r: r, k: k}; }
       }
     });
@@ -230,7 +237,7 @@
   function room(d, reserve) {         // reserve: {side: 'right' | 'bottom', size} for insets
     var svg = document.getElementById(d === 'velocity' ? 'vpoly' : 'apoly');
     var W = svg.viewBox.baseVal.width, H = BASE[d];
-    var r = [30, 34 + FONT, W - 30, H - 56];       // below the caption, above the bar
+    var r = [30, 32 + FONT, W - 30, H - 50];       // below the caption, above the bar
     if (reserve) { r[reserve.side === 'right' ? 2 : 3] -= reserve.size; }
     return r;
   }
@@ -311,7 +318,7 @@
   }
   function captionWidth(k, U) { return (0.62 * FONT * ('detail ×' + k).length + 4) * U; }
   // place every inset of g (viewBox units): a free corner or edge of the panel, else the
-  // least crowded one (drawn opaque); returns how many found no free place
+  // least crowded one; returns those that found no free place (layout puts them in a strip)
   function placeInsets(g, W, H, U, fixed) {
     var segs = [], pts = [], taken = fixed.slice(), bad = [], capH = 1.5 * FONT * U;
     g.strokes.forEach(function (s) { segs.push(s); });
@@ -387,7 +394,7 @@
     return g;
   }
   // the items of one inset: ring, circle, caption, enlarged strokes, vertices (labels later)
-  function drawInset(svg, ins, g, d, U, look, segs, boxes) {
+  function drawInset(svg, ins, g, d, U, look, segs, boxes, link) {
     var P = D.polys[d], C = ins.C, R = ins.Rv, k = ins.k;
     var show = function (p) { return [C[0] + k * (p[0] - ins.cv[0]), C[1] + k * (p[1] - ins.cv[1])]; };
     var grp = el(svg, 'g', {'class': 'inset', 'data-k': k});
@@ -418,7 +425,12 @@
       if (!seg) { return; }
       var lk = look(st), tipIn = st.k === 'arrow' && Math.hypot(tb[0] - C[0], tb[1] - C[1]) <= R + 1e-9;
       if (!tipIn) { lk = {colour: lk.colour, width: lk.width, dash: lk.dash, open: lk.open, head: false}; }
-      segs.push(arrow(grp, seg[0], tipIn ? tb : seg[1], lk, U, 'inset-vector ' + st.c,
+      var on = link !== null && st.link === link, e = tipIn ? tb : seg[1];
+      if (on) {                       // the hovered link's vectors, as on the polygon
+        el(grp, 'line', {x1: seg[0][0], y1: seg[0][1], x2: e[0], y2: e[1], stroke: '#F0E442',
+                         'stroke-width': 9 * U, 'stroke-linecap': 'round', 'class': 'halo'});
+      }
+      segs.push(arrow(grp, seg[0], e, lk, U, 'inset-vector ' + st.c + (on ? ' hi' : ''),
                       {'data-from': st.f, 'data-to': st.t, 'data-kind': st.c, 'data-k': st.k}));
     });
     chords(C, R, 24).forEach(function (s) { segs.push(s); });
@@ -462,12 +474,17 @@
     var g = layout(d, svg, U, fixedBoxes), notes = [];
     var said = function (g) {         // the notes: off the scale; vectors too short for any inset
       var out = P.off.indexOf(frame) >= 0 ? ['beyond the scale here: near a toggle'] : [], small = [];
-      var nm = function (x) { return x === P.pole ? P.pole_label : P.names[x]; };
+      var nm = function (x) { return P.names[x]; };
       g.plan.ghosts.forEach(function (v) {
         var L = Math.hypot(g.mm[v[0]][0] - g.mm[v[1]][0], g.mm[v[0]][1] - g.mm[v[1]][1]);
         if (L >= 0.005 && small.indexOf(nm(v[0]) + nm(v[1])) < 0) { small.push(nm(v[0]) + nm(v[1])); }
       });
       if (small.length) { out.push(small.join(', ') + ' ≈ 0 here (not drawn)'); }
+      var o = g.mm[P.pole];
+      if (o && Object.keys(g.mm).every(function (v) {
+        return Math.hypot(g.mm[v][0] - o[0], g.mm[v][1] - o[1]) < D.inset.same; })) {
+        out.push('every vertex at the pole: every ' + d + ' is zero here');
+      }
       return out;
     };
     notes = said(g);
@@ -512,7 +529,7 @@
     var pole = V(P.pole);
     el(svg, 'circle', {cx: pole[0], cy: pole[1], r: 3 * U, fill: '#fff', stroke: '#000',
                        'stroke-width': 1.2 * U});
-    // the insets: drawn over the polygon (opaque where no free place was found)
+    // the insets: ring, circle (white), enlarged strokes and vertices; their labels last
     var inRing = {};
     g.insets.forEach(function (ins) {
       chords(ins.cv, ins.rv, 16).forEach(function (s) { segs.push(s); });
@@ -522,7 +539,7 @@
     });
     g.insets.forEach(function (ins) {
       boxes.push(insetBox(ins.C, ins.Rv, 0));
-      drawInset(svg, ins, g, d, U, lookOf, segs, boxes);
+      drawInset(svg, ins, g, d, U, lookOf, segs, boxes, link);
     });
     var groups = [];
     Object.keys(P.vx).forEach(function (v) {
