@@ -60,7 +60,7 @@
       bb = t.getBBox();
     }
     var w = bb.width, h = bb.height, pad = 1.5 * U, best = null;
-    [0.35, 0.8, 1.5, 2.4, 3.6, 5, 6.5, 8].forEach(function (k) {   // beyond 3: with a leader
+    function tryAt(k) {               // beyond 3 label heights: with a leader
       for (var j = 0; j < 24; j++) {
         var ang = -Math.PI / 4 + j * Math.PI / 12, ux = Math.cos(ang), uy = Math.sin(ang);
         var d = k * fs + 0.5 * Math.abs(ux) * w + 0.5 * Math.abs(uy) * h;
@@ -81,7 +81,9 @@
         }
         if (best === null || score < best.score) { best = {score: score, r: r, k: k}; }
       }
-    });
+    }
+    [0.35, 0.8, 1.5, 2.4, 3.6, 5, 6.5, 8].forEach(tryAt);
+    if (best.score >= 1000) { [10, 12.5, 15, 18].forEach(tryAt); }   // crowded: further off
     t.setAttribute('x', best.r.x - bb.x); t.setAttribute('y', best.r.y - bb.y);
     (lines || []).forEach(function (s) { s.setAttribute('x', best.r.x - bb.x); });
     boxes.push(best.r);
@@ -431,7 +433,8 @@
                          'stroke-width': 9 * U, 'stroke-linecap': 'round', 'class': 'halo'});
       }
       segs.push(arrow(grp, seg[0], e, lk, U, 'inset-vector ' + st.c + (on ? ' hi' : ''),
-                      {'data-from': st.f, 'data-to': st.t, 'data-kind': st.c, 'data-k': st.k}));
+                      {'data-from': st.f, 'data-to': st.t, 'data-kind': st.c, 'data-k': st.k,
+                       'data-whole': Math.hypot(seg[0][0] - ta[0], seg[0][1] - ta[1]) < 1e-6 * R && tipIn ? 1 : 0}));
     });
     chords(C, R, 24).forEach(function (s) { segs.push(s); });
     var groups = [];
@@ -483,7 +486,7 @@
       var o = g.mm[P.pole];
       if (o && Object.keys(g.mm).every(function (v) {
         return Math.hypot(g.mm[v][0] - o[0], g.mm[v][1] - o[1]) < D.inset.same; })) {
-        out.push('every vertex at the pole: every ' + d + ' is zero here');
+        out.push('every ' + d + ' is zero here');
       }
       return out;
     };
