@@ -107,23 +107,26 @@ def _rule_agrees(rule, where) -> None:
     for (n, c, r), i in zip(rings, got):
         assert math.dist(c, i["c"]) < 2e-3 and abs(r - i["r"]) < 2e-3, (where, n, c, r, i)
     from diagrams.labels import Box
-    old = inset.MAX_RADIUS
-    try:
-        inset.MAX_RADIUS = rule["max_radius"]
+    old = inset.MAX_RADIUS, inset._labels
+    try:                    # (the panel's largest radius; no labels: only k is compared)
+        inset.MAX_RADIUS, inset._labels = rule["max_radius"], lambda ins, *args: ins
         plan = inset.plan(pts, [], [], Box(0, 0, 1e4, 1e4), 3.0, near,
                           vectors=[tuple(v) for v in rule["drawn"]],
                           max_radius=rule["max_radius_vectors"])
     finally:
-        inset.MAX_RADIUS = old
+        inset.MAX_RADIUS, inset._labels = old
     assert [p.k for p in plan] == [i["k"] for i in got], (where, [p.k for p in plan], got)
-    for f, t in rule["ghosts"]:           # no inset could draw it 3 mm long
-        L = math.dist(pts[f], pts[t])
+    ghosts = {tuple(v) for v in rule["ghosts"]}
+    for f, t in rule["vectors"]:          # '≈ 0' (not drawn) exactly when no inset could
+        L = math.dist(pts[f], pts[t])     # draw it 3 mm long (diagrams.polygon._ghosts)
         ring = next((r for n, _, r in rings if f in n and t in n), None)
         best = max([k for k in inset.FACTORS if ring and k * ring <= rule["max_radius_vectors"]]
                    or [inset.FACTORS[0]])
-        assert L < inset.ZERO_MM or ring is None or L * best < inset.MIN_VECTOR_MM, (where, f, t, L)
+        short = L < inset.ZERO_MM or (L < inset.MIN_VECTOR_MM and (
+            ring is None or L * best < inset.MIN_VECTOR_MM))
+        assert short == ((f, t) in ghosts), (where, f, t, L, ring)
     drawn = {tuple(v) for v in rule["drawn"]}
-    assert drawn | {tuple(v) for v in rule["ghosts"]} == {tuple(v) for v in rule["vectors"]}
+    assert drawn | ghosts == {tuple(v) for v in rule["vectors"]} and not drawn & ghosts
 
 
 def _check(case, frame, got, fill: bool = True) -> None:
@@ -185,3 +188,46 @@ def test_cycle_panel_meets_the_layout_rule(case, tmp_path, session):
         frame = (start + round(turn * n)) % n
         session.evaluate(f"window.polygonsPage.setFrame({frame})")
         _check(case, frame, json.loads(session.evaluate("window.polygonsMeasure()")))
+
+
+def test_inset_port_agrees_with_diagrams_inset(tmp_path, session):
+    """assets/inset.js on random crowded drawings (clusters of vertices a fraction of a mm to
+    a few mm apart, vectors among them, the panel's largest radii varied) finds the same
+    rings, enlargements and '≈ 0' vectors as diagrams/inset.py: one page of the script alone."""
+    import random
+    from diagrams.page import asset, script_json
+    from diagrams.pagedata import inset_rule
+    rnd = random.Random(33)
+    drawings = []
+    for _ in range(60):
+        pts = {}
+        for c in range(rnd.randint(1, 3)):
+            cx, cy = rnd.uniform(0, 80), rnd.uniform(0, 60)
+            spread = rnd.choice([0.3, 1.0, 2.5, 4.0])
+            for i in range(rnd.randint(2, 6)):
+                pts[f"{'abcdefgh'[c]}{i}"] = [round(cx + rnd.uniform(-spread, spread), 4),
+                                              round(cy + rnd.uniform(-spread, spread), 4)]
+        a = rnd.choice(sorted(pts))           # a vertex a tenth of a mm or so from another
+        ang, L = rnd.uniform(0, 6.3), rnd.uniform(0.05, 0.3)
+        pts["z"] = [round(pts[a][0] + L * math.cos(ang), 4), round(pts[a][1] + L * math.sin(ang), 4)]
+        names = sorted(pts)
+        vectors = [[a, "z"]] + [[p, q] for p in names for q in names
+                                if p < q and q != "z" and rnd.random() < 0.3]
+        drawings.append({"mm": pts, "near": rnd.choice([3.175, 3.5]),
+                         "max_radius": rnd.choice([26.0, 18.0, 12.0]),
+                         "max_radius_vectors": rnd.choice([30.0, 24.0, 15.0]),
+                         "vectors": vectors})
+    page = tmp_path / "inset.html"
+    page.write_text("<!DOCTYPE html><html><head><meta charset='utf-8'><script>"
+                    + asset("inset.js") + "</script></head><body></body></html>",
+                    encoding="utf-8")
+    session.open(page)
+    got = json.loads(session.evaluate(
+        "(function (C, all) { var R = window.polygonsInset(C);"
+        " return JSON.stringify(all.map(function (d) {"
+        "  var p = R.plan(d.mm, d.near, d.vectors, d.max_radius, d.max_radius_vectors);"
+        "  return {insets: p.insets, ghosts: p.ghosts, drawn: p.drawn}; })); })("
+        + script_json(inset_rule()) + ", " + script_json(drawings) + ")"))
+    assert sum(len(g["insets"]) for g in got) > 40 and sum(len(g["ghosts"]) for g in got) > 5
+    for i, (d, g) in enumerate(zip(drawings, got)):
+        _rule_agrees({**d, **g}, ("random", i))

@@ -426,6 +426,9 @@
       var ta = show(a), tb = show(b), seg = clipCircle(ta, tb, C, R);
       if (!seg) { return; }
       var lk = look(st), tipIn = st.k === 'arrow' && Math.hypot(tb[0] - C[0], tb[1] - C[1]) <= R + 1e-9;
+      var whole = tipIn && Math.hypot(seg[0][0] - ta[0], seg[0][1] - ta[1]) < 1e-6 * R;
+      // a vector of another ring, whole here but under the rule: its own inset shows it
+      if (whole && Math.hypot(tb[0] - ta[0], tb[1] - ta[1]) < D.inset.min_mm * g.s) { return; }
       if (!tipIn) { lk = {colour: lk.colour, width: lk.width, dash: lk.dash, open: lk.open, head: false}; }
       var on = link !== null && st.link === link, e = tipIn ? tb : seg[1];
       if (on) {                       // the hovered link's vectors, as on the polygon
@@ -434,7 +437,7 @@
       }
       segs.push(arrow(grp, seg[0], e, lk, U, 'inset-vector ' + st.c + (on ? ' hi' : ''),
                       {'data-from': st.f, 'data-to': st.t, 'data-kind': st.c, 'data-k': st.k,
-                       'data-whole': Math.hypot(seg[0][0] - ta[0], seg[0][1] - ta[1]) < 1e-6 * R && tipIn ? 1 : 0}));
+                       'data-whole': whole ? 1 : 0}));
     });
     chords(C, R, 24).forEach(function (s) { segs.push(s); });
     var groups = [];
