@@ -8,7 +8,9 @@ Left, the construction as a teacher draws it on the board: the static SVG stages
 buttons (and the arrow keys).  Right, a crank-position slider that redraws the mechanism (its
 velocity vectors on the links) and both polygons *in components*, in the static drawings'
 colours, line styles and key, at one scale for the whole cycle; the slider starts exactly at
-the scene's own position.  Hovering a link highlights the polygon vectors that belong to it.
+the scene's own position; crowded vertices are drawn again in an inset ('detail ×k', the rule
+of :mod:`diagrams.inset` ported to ``assets/inset.js``, recomputed at every position).  Hovering
+a link highlights the polygon vectors that belong to it.
 Below, "draw it yourself": the student places a polygon's vertices with the mouse or the
 keyboard alone and saves the drawing as JSON (what ``polygons check SCENE --drawing FILE``
 grades) or SVG; "Check my drawing" grades it in the page, offline, by the same rules
@@ -121,7 +123,7 @@ def page(sol, figs=None, n: int = FRAMES) -> str:
         "TITLE": esc(head), "CSS": asset("page.css") + HTML_CSS, "H1": typeset(title),
         "SID": esc(sid), "STAGES": "\n".join(stages), "KEY": _key(kinds),
         "OPTIONS": options, "DATA": script_json(data),
-        "JS": asset("page.js") + "\n" + asset("grade.js") + "\n" + asset("draw.js"),
+        "JS": asset("inset.js") + "\n" + asset("page.js") + "\n" + asset("grade.js") + "\n" + asset("draw.js"),
     })
 
 
@@ -159,8 +161,9 @@ _TEMPLATE = """<!DOCTYPE html>
 <p class="note">Hover a link to highlight its vectors in both polygons. The polygons are drawn
 in components as in the static drawings, each at one scale for the whole cycle (the bar, at "× 1";
 "× 2" … enlarges them about the pole, still one scale for every position; "fit", the start,
-fits each polygon to its panel at the position shown, the bar giving that scale); the velocity
-vectors on the linkage share one scale too.</p>
+fits each polygon to its panel at the position shown, the bar giving that scale); vertices
+too near each other to read are drawn again enlarged in a ringed inset, 'detail ×k', every
+vector in it at least 3 mm long; the velocity vectors on the linkage share one scale too.</p>
 </section>
 </main>
 <section id="draw" aria-labelledby="draw-h">

@@ -15,7 +15,9 @@ Everything the page's script draws is computed here, in SI, and sent as one JSON
 * the **drawing mode** of each diagram: the vertices to place in construction order, the
   construction's vectors, the static drawing's stated scale and a paper size, and the
   grading rules of ``polygons check --drawing`` (:func:`polygons.grade_drawing.rules`: the
-  vectors to draw with their tolerances and slips) that the page's ``grade.js`` applies.
+  vectors to draw with their tolerances and slips) that the page's ``grade.js`` applies;
+* the **inset rule**'s constants (:func:`inset_rule`, from :mod:`diagrams.inset`), which the
+  page's ``inset.js`` applies to the live polygons at every frame.
 
 Nothing here computes kinematics of its own.
 """
@@ -299,7 +301,22 @@ def frames(sol, figs=(), n: int = FRAMES) -> dict:
         "colours": {k: LOOKS[k].colour for k in ("given", "relative", "resultant")},
         "polys": polys,
         "drawing": drawing,
+        "inset": inset_rule(),
     }
+
+
+def inset_rule() -> dict:
+    """The constants of the static drawings' inset rule (:mod:`diagrams.inset`), for the
+    live panel's port of it (``assets/inset.js``): the round enlargements, the rule's
+    shortest vector, the length under which a vector is not drawn, the ring's margin, the
+    inset's largest radii (mm) and the distance under which vertices are drawn as one."""
+    import inspect
+    from . import crowd, inset
+    same = inspect.signature(crowd.clusters).parameters["same"].default
+    return {"factors": list(inset.FACTORS), "min_mm": inset.MIN_VECTOR_MM,
+            "zero_mm": inset.ZERO_MM, "ring_margin": inset.RING_MARGIN,
+            "max_radius": inset.MAX_RADIUS, "max_radius_vectors": inset.MAX_RADIUS_FOR_VECTORS,
+            "same": same}
 
 
 # ---------------------------------------------------------------- the drawing mode
