@@ -140,6 +140,11 @@ def _paper_points(lay: Layout) -> dict:
     return {n: lay.P(v) for n, v in sorted(lay.con.vertices.items())}
 
 
+def _box_dist(b: Box, p: Pt) -> float:
+    """The distance (mm) from point ``p`` to the box ``b`` (0 inside it)."""
+    return math.hypot(max(b.x0 - p[0], 0.0, p[0] - b.x1), max(b.y0 - p[1], 0.0, p[1] - b.y1))
+
+
 def _crowded(lay: Layout) -> float:
     """Vertices nearer each other than this (mm: a vertex label's height) crowd."""
     return (ASCENT + DESCENT) * lay.size(LABEL_SIZE)
@@ -286,7 +291,13 @@ def _place_labels(lay: Layout) -> Layout:
         text = _vertex_text(con, gr, None)
         placer.boxes = [b for b in placer.boxes
                         if not (b.x1 - b.x0 < 1.7 and b.contains(at))]   # own dot
-        x, base, _, box = placer.place(text, at, lay.size(LABEL_SIZE), prefer=prefer)
+        # nearer its own vertex than any other, so a reader tells whose it is (the triad's
+        # 'o = d = e' was set beside c₁ = s₂, 4.6 mm from the pole)
+        rest = [lay.P(con.vertices[g2[0]]) for g2 in groups if g2 is not gr]
+        x, base, _, box = placer.place_any(
+            text, lay.size(LABEL_SIZE), [(at, [2 * math.pi * k / 24 for k in range(24)])],
+            prefer=prefer, extra_cost=lambda _ai, b, at=at, rest=rest: (
+                4.0 if any(_box_dist(b, q) < _box_dist(b, at) for q in rest) else 0.0))
         vlabels.append((tuple(gr), x, base, box))
         placer.block(Box(at[0] - 0.8, at[1] - 0.8, at[0] + 0.8, at[1] + 0.8))
     # every drawn stroke, so a label can be set nearer its own than any other (a reader
