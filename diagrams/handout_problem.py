@@ -132,13 +132,17 @@ def data(sol: Solution) -> list[tuple[str, str]]:
             where += f", {_fmt_len(bp.left)} to the left"
         rows.append((f"point {lab}", f"rigid with {bp.link}: {where}"))
     if isinstance(drv, Crank):
-        rows.append((f"input crank {drv.link}",
+        # a driven link carrying a slot (the oscillating cylinder O4Q) is no crank
+        what = ("driving link" if any(sl.lever == drv.link
+                                      for sl in getattr(scene, "slots", {}).values())
+                else "crank")
+        rows.append((f"input {what} {drv.link}",
                      f"turns about {drv.pivot}; at this instant {drv.link} is at "
                      f"{_g(math.degrees(drv.angle))}° (CCW from the +x axis)"))
         rpm = abs(drv.omega) * 60.0 / (2 * math.pi)
-        rows.append(("ω of the crank", f"{_g(abs(drv.omega))} rad/s {sense(drv.omega)} "
-                                       f"(= {_g(rpm)} rev/min)"))
-        rows.append(("α of the crank", "0 (constant speed)" if drv.alpha == 0 else
+        rows.append((f"ω of the {what}", f"{_g(abs(drv.omega))} rad/s {sense(drv.omega)} "
+                                         f"(= {_g(rpm)} rev/min)"))
+        rows.append((f"α of the {what}", "0 (constant speed)" if drv.alpha == 0 else
                      f"{_g(abs(drv.alpha))} rad/s² {sense(drv.alpha)}"))
     elif model.body(drv.point).kind == "wheel":
         r = wheel_of(scene, drv.point).radius

@@ -133,6 +133,11 @@ def point_segment_distance(p: Pt, a: Pt, b: Pt) -> float:
     return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
 
 
+def box_point_distance(b: Box, p: Pt) -> float:
+    """The distance (mm) from point ``p`` to the box ``b`` (0 inside it)."""
+    return math.hypot(max(b.x0 - p[0], 0.0, p[0] - b.x1), max(b.y0 - p[1], 0.0, p[1] - b.y1))
+
+
 def box_segment_distance(box: Box, a: Pt, b: Pt) -> float:
     if _meets(a, b, box.x0, box.y0, box.x1, box.y1):
         return 0.0
@@ -235,17 +240,19 @@ class Placer:
 
     def place(self, text: str, at: Pt, size: float, *, prefer: float | None = None,
               distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), directions: int = 24,
-              along: float | None = None) -> tuple[float, float, str, Box]:
+              along: float | None = None, extra_cost=None) -> tuple[float, float, str, Box]:
         """Place ``text`` near point ``at``: returns (x, baseline, anchor, box).
 
         ``prefer`` is the preferred direction (radians); ``along`` (radians) restricts the
-        candidates to the two sides of a line through ``at`` in that direction.
+        candidates to the two sides of a line through ``at`` in that direction;
+        ``extra_cost(0, box)`` adds to a place's cost (:meth:`place_any`).
         """
         if along is not None:
             dirs = [along + math.pi / 2, along - math.pi / 2]
         else:
             dirs = [2 * math.pi * k / directions for k in range(directions)]
-        return self.place_any(text, size, [(at, dirs)], prefer=prefer, distances=distances)
+        return self.place_any(text, size, [(at, dirs)], prefer=prefer, distances=distances,
+                              extra_cost=extra_cost)
 
     def place_any(self, text: str, size: float, anchors, *, prefer: float | None = None,
                   distances=(0.9, 1.6, 2.6, 4.0, 6.0, 8.5, 12.0), extra_cost=None,

@@ -32,7 +32,7 @@ from polygons.steps import tail_name
 
 from . import crowd, inset, scale as scales
 from .labels import (Box, Placer, StrokeCells, bounds, box_hits_segment, box_segment_distance,
-                     clip_line, largest_gap_direction, leader)
+                     box_point_distance as _box_dist, clip_line, largest_gap_direction, leader)
 from .layout import arrow_head, compose
 from .components import LOOKS, ORDER
 from .model import Arrow, Circle, Drawing, Group, Polyline, Segment, Text
@@ -286,7 +286,10 @@ def _place_labels(lay: Layout) -> Layout:
         text = _vertex_text(con, gr, None)
         placer.boxes = [b for b in placer.boxes
                         if not (b.x1 - b.x0 < 1.7 and b.contains(at))]   # own dot
-        x, base, _, box = placer.place(text, at, lay.size(LABEL_SIZE), prefer=prefer)
+        rest = [lay.P(con.vertices[g2[0]]) for g2 in groups if g2 is not gr]   # nearer its own
+        x, base, _, box = placer.place(text, at, lay.size(LABEL_SIZE), prefer=prefer,
+                                       extra_cost=lambda _ai, b, at=at, rest=rest: 4.0 * any(
+                                           _box_dist(b, q) < _box_dist(b, at) for q in rest))
         vlabels.append((tuple(gr), x, base, box))
         placer.block(Box(at[0] - 0.8, at[1] - 0.8, at[0] + 0.8, at[1] + 0.8))
     # every drawn stroke, so a label can be set nearer its own than any other (a reader
@@ -731,16 +734,11 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
 
 
 def _about(con: Construction, st: Stroke) -> str:
-    """The tail's name of a vector as the book writes it (:func:`polygons.steps.tail_name`:
-    from the pole, the fixed pivot its intersection names — dc about D where the pole is
-    a = d — or a centripetal vector's fixed centre, dc₂), else the vertex."""
-    if st.frm != con.pole:
-        return st.frm
+    """The tail's name of a vector as the book writes it (:func:`polygons.steps.tail_name`)."""
     step = next((s for s in con.steps if s.number == st.step), None)
-    if step is None:
-        return st.frm
-    return tail_name(step, st.frm, con.pole, set(con.pole_label.split(" = ")),
-                     step if step.kind == "intersection" else None)
+    return st.frm if step is None else tail_name(
+        step, st.frm, con.pole, set(con.pole_label.split(" = ")),
+        step if step.kind == "intersection" else None)
 
 
 def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:

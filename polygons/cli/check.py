@@ -583,9 +583,10 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
             exp = f"{_num(abs(g.expected))} {g.unit}"
         verdict = "ok " if g.ok else "OFF"
         diff = f"{_signed(g.diff_pct)} %" if g.diff_pct is not None else "-"
+        pct = (f"±{g.tolerance_pct:.2g} %, " if math.isfinite(g.tolerance_pct)
+               else "")                   # of an expected 0: no percentage ('±inf %')
         lines.append(f"  {verdict}  {g.name:<{wn}}  measured {shown}, expected {exp} "
-                     f"± {_num(g.tolerance)} (±{g.tolerance_pct:.2g} %, "
-                     f"{SOURCE_WORDS[g.source]}): {diff}")
+                     f"± {_num(g.tolerance)} ({pct}{SOURCE_WORDS[g.source]}): {diff}")
         if g.sense_ok is False and fn in ("vs", "as"):
             lines.append(f"       the sense is wrong: {_slide_words(sol, g.expr, g.expected)}")
         elif g.sense_ok is False:

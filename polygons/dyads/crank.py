@@ -53,11 +53,15 @@ class CrankDyad(Constructed):
     def emit(self, b: Builder) -> None:
         P, X, L = self.pivot, self.tip, self.link
         p, x = b.names.of(P), b.names.of(X)
+        # the driver named for what it is: a driven link that carries a slot (the oscillating
+        # cylinder O4Q) is no crank
+        slotted = any(sl.lever == L for sl in getattr(b.scene, "slots", {}).values())
+        what = f"the driving link {L}" if slotted else "the crank"
         if b.velocity:
             b.add(Kind.VECTOR, Op.CRANK_VELOCITY, (L, P, X), f"{p}{x}", p, x,
                   "relative_velocity", f"(v_{X})_{P}", f"(v_{X})_{P} = ω_{L} × {P}{X}",
                   f"Draw {p}{x} = ω × {P}{X} perpendicular to {P}{X}, in the sense of rotation "
-                  f"of the crank, starting at the pole {b.names.alias()} (fixed points have "
+                  f"of {what}, starting at the pole {b.names.alias()} (fixed points have "
                   f"no velocity).", component=Component.GIVEN, link=L)
             return
         has_t = self.tangential
@@ -66,8 +70,9 @@ class CrankDyad(Constructed):
               f"(a_{X})_{P}^n", f"(a_{X})_{P}^n = ω_{L}² × {P}{X}",
               f"Draw the centripetal acceleration of {X} about {P}, ω² × {P}{X}, from {p} "
               f"parallel to {X}{P}, pointing from {X} towards {P}."
-              + ("" if has_t else f" The crank has no angular acceleration, so this "
-                                  f"ends at {x}."), component=Component.CENTRIPETAL, link=L)
+              + ("" if has_t else f" {what[0].upper()}{what[1:]} has no angular "
+                                  f"acceleration, so this ends at {x}."),
+              component=Component.CENTRIPETAL, link=L)
         if has_t:
             b.add(Kind.VECTOR, Op.CRANK_TANGENTIAL, (L, P, X), f"{x1}{x}", x1, x,
                   "tangential", f"(a_{X})_{P}^t", f"(a_{X})_{P}^t = α_{L} × {P}{X}",

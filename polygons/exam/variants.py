@@ -226,7 +226,9 @@ def data_rows(scene: Scene) -> tuple[tuple[str, str], ...]:
         rows.append((f"assembly of {label}", br.text))
     drv = scene.driver
     if hasattr(drv, "pivot"):
-        rows.append((f"crank {drv.link}", f"at {_deg(drv.angle)} from +x"))
+        slotted = any(sl.lever == drv.link for sl in getattr(scene, "slots", {}).values())
+        rows.append((f"{'driving link' if slotted else 'crank'} {drv.link}",
+                     f"at {_deg(drv.angle)} from +x"))
         rows.append((f"angular velocity of {drv.link}",
                      f"{_g(abs(drv.omega))} rad/s {'CCW' if drv.omega >= 0 else 'CW'}"))
         alpha = getattr(drv, "alpha", 0.0) or 0.0
