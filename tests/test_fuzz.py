@@ -258,7 +258,9 @@ def run_in_process(args: list[str]) -> tuple[int, str, str]:
     return code, out.getvalue(), err.getvalue()
 
 
-_NONFINITE = re.compile(r"(?<![\w.])[-+]?(?:nan|inf|infinity)(?![\w])", re.IGNORECASE)
+# a number printed non-finite; the books' words "at infinity" / "to infinity" (an instant centre,
+# a pin that runs off along a parallel slot) are prose, not a number
+_NONFINITE = re.compile(r"(?<![\w.])(?<!at )(?<!to )[-+]?(?:nan|inf|infinity)(?![\w])", re.IGNORECASE)
 
 
 def judge(code: int, out: str, err: str, path: Path, args, json_out: bool, what: str,
