@@ -109,7 +109,10 @@ def _gap_words(gap: float, drawn) -> str:
 
 
 def _dir(v) -> float:
-    return math.degrees(math.atan2(v[1], v[0])) % 360.0
+    """A force's direction, degrees CCW from +x in [0, 360), printed with one decimal: a
+    direction a hair under 360° is 0 (never '∠360.0°')."""
+    d = math.degrees(math.atan2(v[1], v[0])) % 360.0
+    return 0.0 if d >= 359.95 else d
 
 
 def drawings(an: Analysis):

@@ -20,10 +20,12 @@ import numpy as np
 from polygons.errors import PolygonsError, UnsupportedError
 from polygons.forces import effort as effort_mod
 from polygons.forces import graphical, zhukovsky
+from polygons.forces import words as force_words
 
 from .components import LOOKS
 from . import scale as scales
 from .inset import MIN_VECTOR_MM
+from .labels import bounds, text_box
 
 KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load",
              "spring": "force-load", "torque": "force-load", "friction": "force-load",
@@ -160,7 +162,7 @@ def group_drawings(an, st):
         fp = graphical.construct(an, st)
     except UnsupportedError:
         return []
-    return _drawings(fp.groups, fp, st)
+    return _drawings(fp.groups, fp, st, an.model)
 
 
 def joint_drawings(an, st):
@@ -170,13 +172,13 @@ def joint_drawings(an, st):
         fp = graphical.construct(an, st)
     except UnsupportedError:
         return []
-    return _drawings(fp.joints, fp, st)
+    return _drawings(fp.joints, fp, st, an.model)
 
 
-def _drawings(groups, fp, st):
+def _drawings(groups, fp, st, model):
     from .labels import bounds, box_hits_segment, text_box
     from .layout import FORCE_LEGEND_MM, arrow_head, compose
-    from .model import Arrow, Circle, Group, Segment
+    from .model import Arrow, Circle, Group, Segment, Text
     from .scale import Scale, round_up
 
     out = []
@@ -292,14 +294,26 @@ def _drawings(groups, fp, st):
                                             shift=shift))
                         mid = (np.array(tail) + np.array(tip)) / 2 + np.array(shift)
                         m2 = -1.0 if shift != (0.0, 0.0) else 1.0
-                        for off, sd in ((3.0, 1), (6.0, 1), (9.0, 1), (12.0, 1), (3.0, -1),
-                                        (6.0, -1), (9.0, -1), (15.0, 1), (12.0, -1),
-                                        (18.0, 1), (15.0, -1), (21.0, 1)):
-                            at = mid + sd * m2 * off * n
-                            anchor = "start" if sd * m2 * n[0] >= 0 else "end"
-                            bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8, anchor)
-                            if not any(bx.overlaps(o) for o in placed):
-                                break
+                        # clear of the other names and of every drawn vector (WE8's 'R_P on
+                        # slider P' was set across the gas force), else of the names at least
+                        drawn = [(tuple(np.add(ar.tail, ar.shift)),
+                                  tuple(np.add(ar.tip, ar.shift))) for ar in arrows]
+                        drawn += [(e.a, e.b) for e in extra]
+                        for clear in (True, False):
+                            for off, sd in ((3.0, 1), (6.0, 1), (9.0, 1), (12.0, 1),
+                                            (3.0, -1), (6.0, -1), (9.0, -1), (15.0, 1),
+                                            (12.0, -1), (18.0, 1), (15.0, -1), (21.0, 1)):
+                                at = mid + sd * m2 * off * n
+                                anchor = "start" if sd * m2 * n[0] >= 0 else "end"
+                                bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8,
+                                              anchor)
+                                if not any(bx.overlaps(o) for o in placed) and not (
+                                        clear and any(box_hits_segment(bx, a, b, 0.3)
+                                                      for a, b in drawn)):
+                                    break
+                            else:
+                                continue
+                            break
                         placed.append(bx)
                         labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8,
                                             anchor))
@@ -308,8 +322,27 @@ def _drawings(groups, fp, st):
             box = bounds(pts)
             for t in labels:
                 box = box.union(text_box(t.x, t.baseline, t.text, t.size, t.anchor))
+            # the forces too short for the polygon's scale, drawn again head to tail in a
+            # detail below it at a round magnification (each ≥ 3 mm there), its vertex ringed
+            drawn_in_detail = {}
+            reach = bounds([p for e in extra for p in (e.a, e.b)] + pts)
+            for item in _details(seq, ghosts, stage, verts, k, box.union(reach), placed,
+                                 fscale):
+                if isinstance(item, tuple):              # (index, magnification)
+                    drawn_in_detail[item[0]] = item[1]
+                elif isinstance(item, Arrow):
+                    arrows.append(item)
+                elif isinstance(item, Text):
+                    labels.append(item)
+                    box = box.union(text_box(item.x, item.baseline, item.text, item.size,
+                                             item.anchor))
+                else:
+                    extra.append(item)
+            for ar in arrows:
+                box = box.union(bounds([ar.tail, ar.tip]))
             box = box.grown(6.0)
-            looks = list(dict.fromkeys([s[2] for s in seq if stage is None or s[3] <= stage]
+            looks = list(dict.fromkeys([s[2] for s in seq if (stage is None or s[3] <= stage)
+                                        and float(np.hypot(*s[1])) > 0]
                                        + (["force-reaction"] if diag and (stage is None or
                                                                           stage == nst)
                                           else [])))
@@ -318,15 +351,22 @@ def _drawings(groups, fp, st):
                 key.append(("construction", "line of known direction", False))
             legend = [(s[4], "normal") for i, s in enumerate(seq)
                       if (stage is None or s[3] <= stage) and i not in ghosts]
+            legend += [(f"{seq[i][4]} (detail ×{_fmt(drawn_in_detail[i])})", "normal")
+                       for i in sorted(ghosts) if (stage is None or seq[i][3] <= stage)
+                       and i in drawn_in_detail]
             legend += [(f"{seq[i][0]} ≈ 0 ({float(np.hypot(*seq[i][1])) * k:.2f} mm at this "
                         f"scale: {_fmt(float(np.hypot(*seq[i][1])))} N, not drawn)", "normal")
-                       for i in sorted(ghosts) if stage is None or seq[i][3] <= stage]
+                       for i in sorted(ghosts) if (stage is None or seq[i][3] <= stage)
+                       and i not in drawn_in_detail]
             legend += [(m, "normal") for m in g.moments]
             if g.kind == "crank":
-                legend.append((f"input torque T = {abs(fp.effort):.5g} N m "
-                               f"{'CCW' if fp.effort > 0 else 'CW'}", "bold"))
+                legend.append((f"input torque T = "
+                               f"{force_words.effort_words(model, fp.effort, st.sol, 5)}",
+                               "bold"))
             if g.kind == "slider driver":
-                legend.append((f"input force {fp.effort:.5g} N along the guide", "bold"))
+                legend.append((f"input force "
+                               f"{force_words.effort_words(model, fp.effort, st.sol, 5)}",
+                               "bold"))
             for f in g.reactions:
                 if f.how == "reaction" and (stage is None or stage == nst):
                     legend.append((f"{f.name}: {_fmt(f.value)} N ∠{_dir(f.direction):.1f}°",
@@ -357,6 +397,124 @@ def _drawings(groups, fp, st):
                 legend_width=FORCE_LEGEND_MM,
                 scale_statement=fscale.statement, meta={}, key=key)))
     return out
+
+
+#: a detail's magnifications (round, as a draughtsman picks them)
+DETAIL_FACTORS = (2, 2.5, 4, 5, 10, 20, 25, 50, 100)
+#: the gap (mm) between the polygon and its details, and between two details
+DETAIL_GAP = 8.0
+
+
+def _ghost_runs(ghosts, seq, stage) -> list[list[int]]:
+    """The forces too short to draw (``ghosts``) shown at ``stage``, in runs of consecutive
+    ones (head to tail in the polygon: one detail each)."""
+    shown = sorted(i for i in ghosts if stage is None or seq[i][3] <= stage)
+    runs: list[list[int]] = []
+    for i in shown:
+        if runs and runs[-1][-1] == i - 1:
+            runs[-1].append(i)
+        else:
+            runs.append([i])
+    return runs
+
+
+def _details(seq, ghosts, stage, verts, k, box, placed, fscale):
+    """The details of a force polygon: each run of forces too short for its scale drawn
+    again, head to tail, magnified ×m (the least of :data:`DETAIL_FACTORS` that draws each
+    :data:`MIN_VECTOR_MM` long, else the largest: those still shorter stay said in the
+    legend), in a row below the polygon; the run's vertex on the polygon ringed (and
+    numbered when there are two or more); the caption states the factor and the detail's
+    scale.  Yields (index, m) for each force drawn, then Arrow, Text and Circle items."""
+    from .model import Circle
+    runs = _ghost_runs(ghosts, seq, stage)
+    x = box.x0
+    top = box.y0 - DETAIL_GAP
+    for r_i, run in enumerate(runs):
+        lens = [float(np.hypot(*seq[i][1])) * k for i in run]
+        need = MIN_VECTOR_MM / min(lens)
+        m = next((f for f in DETAIL_FACTORS if f >= need), DETAIL_FACTORS[-1])
+        run = [i for i, ln in zip(run, lens) if ln * m >= MIN_VECTOR_MM - 1e-9]
+        if not run:
+            continue
+        tag = f"({r_i + 1})" if len(runs) > 1 else ""
+        # set once to measure it, then where its left edge is x (a name set to the left of
+        # its arrow included)
+        _, first = _one_detail(seq, run, m, k, (x, top), tag, stage, list(placed))
+        items, dbox = _one_detail(seq, run, m, k, (2 * x - first.x0, top), tag, stage,
+                                  placed)
+        ring_at = tuple(map(float, verts[run[0]]))
+        yield Circle(ring_at, 2.5, "inset", cls="inset-ring force-detail-ring")
+        if tag:                            # the ring's number, clear of the other names
+            for dx, dy, anchor in ((3.0, 2.0, "start"), (3.0, -4.5, "start"),
+                                   (-3.0, 2.0, "end"), (-3.0, -4.5, "end"),
+                                   (0.0, 4.0, "middle"), (0.0, -6.5, "middle"),
+                                   (6.0, 5.0, "start"), (-6.0, 5.0, "end"),
+                                   (6.0, -8.0, "start"), (-6.0, -8.0, "end")):
+                bx = text_box(ring_at[0] + dx, ring_at[1] + dy, tag, 2.8, anchor)
+                if not any(bx.overlaps(o) for o in placed):
+                    break
+            placed.append(bx)
+            yield _text(ring_at[0] + dx, ring_at[1] + dy, tag, 2.8, anchor)
+        for i in run:
+            yield (i, m)
+        yield from items
+        x = dbox.x1 + DETAIL_GAP
+
+
+def _one_detail(seq, run, m, k, at, tag, stage, placed):
+    """One detail's items (arrows, names, caption) with its left end near ``at[0]`` and its
+    top at ``at[1]``, and its box; the boxes of its texts are added to ``placed``."""
+    from .labels import box_hits_segment
+    from .layout import arrow_head
+    from .model import Arrow, Text
+    chain = [np.zeros(2)]
+    for i in run:
+        chain.append(chain[-1] + seq[i][1] * k * m)
+    lo = np.min(np.array(chain), axis=0)
+    hi = np.max(np.array(chain), axis=0)
+    off = np.array([at[0] - lo[0] + 2.0, at[1] - hi[1] - 4.0])
+    pts = [tuple(map(float, q + off)) for q in chain]
+    segs = list(zip(pts, pts[1:]))
+    centre = np.mean(np.array(pts), axis=0)
+    items = []
+    dbox = bounds(pts)
+    for j, i in enumerate(run):
+        name, f, look, sst, _ = seq[i]
+        new = stage is not None and sst == stage
+        tail, tip = pts[j], pts[j + 1]
+        head, shaft = arrow_head(tail, tip)
+        items.append(Arrow(tail, tip, f"c-{look}" + ("-new" if new else ""), head, shaft,
+                           name=name, role="known", faded=stage is not None and not new,
+                           title=f"{name} = {_fmt(float(np.hypot(*f)))} N "
+                                 f"(detail ×{_fmt(m)})"))
+        u = np.subtract(tip, tail) / math.dist(tail, tip)
+        n = np.array([-u[1], u[0]])
+        mid = (np.array(tail) + np.array(tip)) / 2
+        if n @ (mid - centre) < 0:
+            n = -n
+        for clear in (True, False):
+            for off_mm, side in ((2.5, 1), (5.0, 1), (2.5, -1), (8.0, 1), (5.0, -1),
+                                 (11.0, 1), (8.0, -1), (14.0, 1), (11.0, -1)):
+                p = mid + side * off_mm * n
+                anchor = "start" if side * n[0] >= 0 else "end"
+                bx = text_box(float(p[0]), float(p[1]) - 1.0, name, 2.8, anchor)
+                if not any(bx.overlaps(o) for o in placed) and not (clear and any(
+                        box_hits_segment(bx, a, b, 0.3) for a, b in segs)):
+                    break
+            else:
+                continue
+            break
+        placed.append(bx)
+        dbox = dbox.union(bx)
+        items.append(_text(float(p[0]), float(p[1]) - 1.0, name, 2.8, anchor))
+    cap = (f"detail{' ' + tag if tag else ''} ×{_fmt(m)}: 1 cm = {_fmt(10.0 / (k * m))} N "
+           f"(the ringed vertex)")
+    cy = dbox.y0 - 4.0
+    bx = text_box(dbox.x0, cy, cap, 2.6, "start")
+    placed.append(bx)
+    items.append(Text(dbox.x0, cy, cap, 2.6, anchor="start", role="inset",
+                      cls="inset-caption"))
+    return items, dbox.union(bx)
 
 
 def _stage_caption(g, stage, nst) -> str:
@@ -439,16 +597,28 @@ def lever_drawings(an, st):
     for stage in (1, 2, 3, None):
         items, arrows, labels, placed = [], [], [], []
 
+        lines = []                         # the lever's sides and rays: no name on them
+
         def label(x, y, text, size=2.8, anchor="start"):
-            segs = [(ar.tail, ar.tip) for ar in arrows]
-            for j in range(30):
-                dy = (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)
-                bx = text_box(x, y + dy, text, size, anchor)
-                if not any(bx.overlaps(o) for o in placed) and not any(
-                        box_hits_segment(bx, a, b, 0.3) for a, b in segs):
-                    break
+            """A name near (x, y) clear of the other names, the force arrows and the
+            lever's sides and rays; else clear of the names at least."""
+            segs = [(tuple(np.add(ar.tail, ar.shift)), tuple(np.add(ar.tip, ar.shift)))
+                    for ar in arrows] + lines
+            moves = [(0.0, (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)) for j in range(9)]
+            moves += [(dx, dy) for dx in (-6.0, 6.0, -12.0, 12.0)
+                      for dy in (0.0, -3.2, 3.2, -6.4, 6.4)]
+            moves += [(0.0, (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)) for j in range(9, 30)]
+            for clear in (True, False):
+                for dx, dy in moves:
+                    bx = text_box(x + dx, y + dy, text, size, anchor)
+                    if not any(bx.overlaps(o) for o in placed) and not (clear and any(
+                            box_hits_segment(bx, a, b, 0.3) for a, b in segs)):
+                        break
+                else:
+                    continue
+                break
             placed.append(bx)
-            labels.append(_text(x, y + dy, text, size, anchor))
+            labels.append(_text(x + dx, y + dy, text, size, anchor))
 
         faded1 = stage is not None and stage > 1
         for name, body in model.bodies.items():
@@ -460,6 +630,7 @@ def lever_drawings(an, st):
             items.append(Segment(tuple(map(float, a * kv)), tuple(map(float, b * kv)),
                                  "c-force-lever" + ("" if faded1 else "-new"), faded=faded1,
                                  cls="lever"))
+            lines.append((tuple(map(float, a * kv)), tuple(map(float, b * kv))))
         show = [] if stage == 1 else (lv.applied if stage == 2 else allf)
         show = [a for a in show if a.kind != "effort" or not nil]
         drawn = [a for a in show if float(np.hypot(*a.lever)) * kv > 0.05
@@ -474,16 +645,21 @@ def lever_drawings(an, st):
             new = stage is not None and (stage == 2 and a.kind != "effort"
                                          or stage == 3 and a.kind == "effort")
             head, shaft = arrow_head(tail, tip)
+            # two forces along one line at one image (the toggle press's Stone and −m a_G
+            # at d): the later drawn beside, moved 2.2 mm square to it
+            u = np.subtract(tip, tail) / math.dist(tail, tip)
+            shift = _beside(arrows, tail, tip, np.array([-u[1], u[0]]))
             arrows.append(Arrow(tail, tip, f"c-{look}" + ("-new" if new else ""), head, shaft,
                                 name=a.name, role="known", title=f"{a.name} {_fmt(mag)} N",
-                                faded=stage is not None and not new))
-            tips.append((a.name, tail, tip))
+                                faded=stage is not None and not new, shift=shift))
+            tips.append((a.name, tuple(np.add(tail, shift)), tuple(np.add(tip, shift))))
         images = []
         for lab, p in imgs.items():
             q = tuple(map(float, p * kv))
             if lab in model.scene.ground:
                 continue
             items.append(Segment((0.0, 0.0), q, "c-force-lever", faded=True, cls="ray"))
+            lines.append(((0.0, 0.0), q))
             items.append(Circle(q, 0.5, "vertex", cls="image"))
             images.append((lab, q))
         items.append(Circle((0.0, 0.0), 0.9, "pole", cls="pole"))
@@ -495,22 +671,19 @@ def lever_drawings(an, st):
             label(tip[0] + 1.5 * u[0], tip[1] + 1.5 * u[1] - 1.0, name, 2.6,
                   "start" if u[0] >= -0.2 else "end")
         pts = [(0.0, 0.0)] + [tuple(map(float, p * kv)) for p in imgs.values()]
-        pts += [q for ar in arrows for q in (ar.tail, ar.tip)]
+        pts += [tuple(np.add(q, ar.shift)) for ar in arrows for q in (ar.tail, ar.tip)]
         box = bounds(pts)
         for o in placed:
             box = box.union(o)
         box = box.grown(6.0)
         unit = effort_mod.unit(model)
         legend = [(f"{a.name}: {_fmt(float(np.hypot(*a.force)))} N, moment about o "
-                   + (f"{_fmt(a.moment + 0.0)} N m/s" if a in drawn else "0 (applied at o)"),
-                   "normal") for a in (show or [])]
+                   + (force_words.lever_moment_words(a.moment, 4) if a in drawn
+                      else "0 (applied at o)"), "normal") for a in (show or [])]
         if stage in (3, None):
-            spec = model.parsed.effort
-            sign = (" (pulling)" if lv.effort < 0 else " (pushing)") \
-                if spec is not None and spec.kind == "actuator" else ""
             legend.append((f"effort {effort_mod.short(model)} = "
                            + (f"0 {unit} (the loads balance)" if nil else
-                              f"{lv.effort:.6g} {unit}{sign}"), "bold"))
+                              force_words.effort_words(model, lv.effort, st.sol, 6)), "bold"))
         looks = ["force-lever"] + list(dict.fromkeys(KIND_LOOK.get(a.kind, "force-load")
                                                      for a in show))
         key = [(f"c-{lk}", LOOKS[lk].name, lk != "force-lever") for lk in looks]

@@ -276,7 +276,7 @@ def _construction(doc: _Doc, sol: Solution, figs: Figures, diagram: str,
                 f"to: measure on the finished {what} diagram that follows them, printed full "
                 f"size.</p>\n")
     links = link_names(scene)
-    vertices = list(sol.vertices.get(diagram, ()))
+    vertices = sorted(sol.printed_names(diagram))
 
     def words(text: str) -> str:
         """The drawings' notation: ω_AB for a bare ω of link AB, b₁b for a vector name."""

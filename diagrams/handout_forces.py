@@ -125,13 +125,11 @@ def _deg(v) -> str:
     return f"{math.degrees(math.atan2(v[1], v[0])) % 360.0:.2f}°"
 
 
-def effort_words(an, e: float) -> str:
-    """The balancing effort as ``polygons forces`` states it (8 significant figures)."""
-    from polygons.forces import effort
-    if effort.unit(an.model) == "N m":
-        sense = "CCW" if e > 0 else "CW" if e < 0 else ""
-        return f"{abs(e):.8g} N m {sense}".rstrip()
-    return f"{e:.8g} N".replace("-", "−")
+def effort_words(an, e: float, st=None) -> str:
+    """The balancing effort as ``polygons forces`` states it (8 significant figures), in the
+    one formatter's words (:func:`polygons.forces.words.effort_words`)."""
+    from polygons.forces import words
+    return words.effort_words(an.model, e, None if st is None else st.sol)
 
 
 #: the lowest a reduced figure's text may print (mm): the layout audit's rule
@@ -271,7 +269,7 @@ def _polygons(an) -> str:
                     if k in fp.pin], default=0.0)
         from polygons.forces import effort
         out.append(f'<p class="force-effort"><strong>{esc(effort.words(an.model))}: '
-                   f"{esc(effort_words(an, fp.effort))}</strong>; every reaction equals the "
+                   f"{esc(effort_words(an, fp.effort, st))}</strong>; every reaction equals the "
                    f"Newton–Euler solution's (largest difference {diff:.1e} N).</p>\n")
         from polygons.forces.cams import words as contact_words
         for c in st.contacts:           # a cam's contact force: the force in its equivalent
@@ -281,7 +279,7 @@ def _polygons(an) -> str:
 
 
 def _lever(an) -> str:
-    from polygons.forces import effort, zhukovsky
+    from polygons.forces import effort, words, zhukovsky
     from . import forcepoly
     out = ['<section id="zhukovsky" class="forces">\n<h2>Zhukovsky’s lever</h2>\n'
            "<p>The velocity polygon turned 90° counter-clockwise about its pole o is a rigid "
@@ -306,7 +304,7 @@ def _lever(an) -> str:
         out.append(f'<table class="answer forces" id="zhukovsky-moments-{_slug(st.name)}">'
                    '\n<tr><th>force</th>'
                    '<th class="n">|F| N</th><th class="n">direction</th><th class="n">image '
-                   '(turned) m/s</th><th class="n">moment about o</th></tr>\n')
+                   '(turned) m/s</th><th class="n">moment about o, N m/s</th></tr>\n')
         ext = max([float(np.hypot(*a.lever)) for a in lv.applied + lv.effort_forces]
                   + [1e-300])
         for a in lv.applied + lv.effort_forces:     # a rounding residue (1e-17) shown as 0
@@ -315,16 +313,15 @@ def _lever(an) -> str:
             out.append(f"<tr><td>{sym(a.name)}</td><td class=\"n\">"
                        f"{_n(float(np.hypot(*a.force)))}</td><td class=\"n\">"
                        f"{_deg(a.force) if a.force.any() else '–'}</td><td class=\"n\">"
-                       f"{img}</td><td class=\"n\">{_n(a.moment + 0.0)}</td></tr>\n")
+                       f"{img}</td><td class=\"n\">{words.table_moment(a.moment)}</td></tr>\n")
         out.append("</table>\n")
         vw = st.vw_effort
         vw_text = ("" if vw is None else
-                   f"; by virtual work {esc(effort_words(an, vw))} (difference "
+                   f"; by virtual work {esc(effort_words(an, vw, st))} (difference "
                    f"{abs(lv.effort - vw):.1e} {esc(unit)})")
-        out.append(f'<p class="force-effort">Σ moments of the known forces about o = '
-                   f"{_n(lv.moment_sum)}; the moment of a unit effort = {_n(lv.unit_moment)}: "
+        out.append(f'<p class="force-effort">{esc(words.lever_sum_words(an.model, lv))}: '
                    f"<strong>{esc(effort.words(an.model))}: "
-                   f"{esc(effort_words(an, lv.effort))}</strong>{vw_text}.</p>\n")
+                   f"{esc(effort_words(an, lv.effort, st))}</strong>{vw_text}.</p>\n")
         out += lever
     out.append("</section>\n")
     return "".join(out)

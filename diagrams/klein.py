@@ -144,7 +144,7 @@ def drawing(sol, f: Figure, stage: int | None = None, scale: scales.Scale | None
         legend += [("", "normal"), ("Velocity (each length × ω):", "bold"),
                    (f"{nm['O']}{nm['A']} → v_{nm['A']} = {number(w * math.dist(f.points['O'], f.points['A']))} m/s",
                     "normal"),
-                   (f"{nm['A']}{nm['M']} = {number(dAM * 1000)} mm → v_{nm['B']}{nm['A']} = "
+                   (f"{nm['A']}{nm['M']} = {number(dAM * 1000)} mm → (v_{nm['B']})_{nm['A']} = "
                     f"{number(w * dAM)} m/s", "normal"),
                    (f"{nm['O']}{nm['M']} = {number(dOM * 1000)} mm → v_{nm['B']} = "
                     f"{number(w * dOM)} m/s", "normal")]

@@ -158,6 +158,13 @@ class Placer:
     def hard(self, a: Pt, b: Pt, clearance: float = 0.8) -> None:
         self.hard_segments.append((a, b, clearance))
 
+    def rim(self, c: Pt, r: float, clearance: float = 0.3, n: int = 48) -> None:
+        """A circle (a wheel's rim) as ``n`` hard chords: no label is set across it."""
+        pts = [(c[0] + r * math.cos(2 * math.pi * i / n), c[1] + r * math.sin(2 * math.pi * i / n))
+               for i in range(n + 1)]
+        for p, q in zip(pts, pts[1:]):
+            self.hard(p, q, clearance)
+
     def soft(self, a: Pt, b: Pt) -> None:
         self.soft_segments.append((a, b))
 

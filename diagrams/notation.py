@@ -40,7 +40,9 @@ SHIFT = {"sub": 0.22, "sup": -0.36}
 _PRIMES = PRIMES
 
 _TOKEN = re.compile(
-    r"(?P<sym>(?<![A-Za-z])(?:omega|alpha|[vaωαRWNIGFT]))_(?P<symsub>[A-Za-z0-9]+)"
+    # (a vertex 'a_1' is a′, a Coriolis foot, not the quantity a with subscript 1)
+    r"(?P<sym>(?<![A-Za-z])(?:omega|alpha|[ωαRWNIGFT]|[va](?=_(?![123](?!\w)))))"
+    r"_(?P<symsub>[A-Za-z0-9]+)"
     r"|\)_(?P<psub>[A-Za-z0-9]+)"
     r"|\^(?P<sup>n|t|slide|r)\b"
     rf"|(?<![\w/′.\-]){VERTEX}(?![\w])"

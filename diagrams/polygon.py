@@ -28,6 +28,7 @@ from dataclasses import dataclass, field, replace
 from polygons.evaluate import Solution
 from polygons.narrate import substitute
 from polygons.plan import Step
+from polygons.steps import tail_name
 
 from . import crowd, inset, scale as scales
 from .labels import (Box, Placer, StrokeCells, bounds, box_hits_segment, box_segment_distance,
@@ -730,14 +731,16 @@ def legend(lay: Layout, sol: Solution | None = None) -> list[tuple[str, str]]:
 
 
 def _about(con: Construction, st: Stroke) -> str:
-    """The tail's name of a vector from the pole as the book writes it: the fixed pivot its
-    intersection names (dc about D where the pole is a = d), else the vertex."""
+    """The tail's name of a vector as the book writes it (:func:`polygons.steps.tail_name`:
+    from the pole, the fixed pivot its intersection names — dc about D where the pole is
+    a = d — or a centripetal vector's fixed centre, dc₂), else the vertex."""
     if st.frm != con.pole:
         return st.frm
     step = next((s for s in con.steps if s.number == st.step), None)
-    if step is not None and step.kind == "intersection" and step.args:
-        return step.args[0].lower()
-    return st.frm
+    if step is None:
+        return st.frm
+    return tail_name(step, st.frm, con.pole, set(con.pole_label.split(" = ")),
+                     step if step.kind == "intersection" else None)
 
 
 def _stage_notes(sol: Solution, lay: Layout, s: Step) -> list[str]:

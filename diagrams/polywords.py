@@ -77,7 +77,8 @@ def prose(sol: Solution, con: Construction, text: str) -> str:
     """A step's sentence in the drawings' notation: vector names split (b1b → b₁b), a bare ω
     or α before '× XY' named after its link (ω² × AB → ω_AB² × AB)."""
     return join_vectors(name_bare_omegas(slot_names(display(text), sol.scene),
-                                         _link_names(sol.scene)), con.vertices)
+                                         _link_names(sol.scene)),
+                        set(con.vertices) | set(con.pole_label.split(" = ")))
 
 
 _LINK_NAMES: list = [None, {}]

@@ -87,6 +87,7 @@ def space_items(sol, q, to_paper, k, placer):
     rad = q.radius * k
     body.append(Circle(W, round(rad, 3), "link-thin", cls="wheel"))
     body.append(Circle(W, 0.9, "pin", cls="wheel-centre"))
+    placer.rim(W, rad)                   # no note or label across the wheel's rim
     for name, sign in ((q.on, -1), (q.opposite, 1)):
         if name is None:          # the fixed surface
             C = to_paper(h["contacts"][0])

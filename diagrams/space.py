@@ -250,6 +250,7 @@ def space_layout(sol: Solution, scale: scales.Scale | None = None, paper: str | 
             rad = q.radius * k
             I = (c[0] + rad * e[1], c[1] - rad * e[0])
             back.append(Circle(_r(c), round(rad, 3), "link-thin", cls="wheel"))
+            placer.rim(c, rad)                   # no note or label across the wheel's rim
             s1, s2 = _add(I, e, -rad * 1.1), _add(I, e, rad * 1.1)
             back.append(Segment(_r(s1), _r(s2), "ground", cls="rolling-surface"))
             back += _hatch(s1, s2, _unit((I[0] - c[0], I[1] - c[1])))

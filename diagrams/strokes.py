@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from polygons.errors import PolygonsError
 from polygons.evaluate import Solution
 from polygons.plan import Step
+from polygons.steps import points_back
 
 from .components import carried_by, component_of
 from .notation import slot_names, vector
@@ -175,19 +176,8 @@ def _asked(sol: Solution, diagram: str, strokes, born, vx) -> list[Stroke]:
 
 
 def _points_back(sol: Solution, line: Step, end: str) -> bool:
-    """True when the vector on ``line`` runs from the new vertex back to the line's anchor.
-
-    A line of unknown length carries a relative vector '(v_X)_Y' (X relative to Y, drawn
-    y → x).  Usually the line goes through y and the intersection makes x; when it goes
-    through x (the slot line through the pin's vertex) the arrow points back at the anchor.
-    """
-    if line.relative:
-        x, ref = line.relative
-        if line.start == sol.vertex_of(x) and end == sol.vertex_of(ref):
-            return True
-        if line.start == sol.vertex_of(ref):
-            return False
-    return line.op == "line_along"
+    """:func:`polygons.steps.points_back` (the one rule, the grader's too)."""
+    return points_back(sol.vertex_of, line, end)
 
 
 @dataclass(frozen=True)

@@ -9,8 +9,9 @@ the cam's centre or offset from it) or oscillates (an arm pivoted at a fixed poi
     omega = "10 rad/s"           #   O → nose centre, CCW from +x
     sense = "CCW"
     [cam_profiles.R]             # R: the follower's point (the roller's centre, the knife's
-    base_radius = "25 mm"        #   edge, the flat face's point on the line of stroke; an
-    nose_radius = "8 mm"         #   oscillating follower's arm is QR, Q its pivot)
+    base_radius = "25 mm"        #   edge; a translating flat face: the equivalent yoke's point
+    nose_radius = "8 mm"         #   on the stroke at K's level, ρ short of the face; an
+                                 #   oscillating follower's arm is QR, Q its pivot)
     lift = "20 mm"               # or faces_angle = "90 deg" (a tangent cam)
     flank_radius = "60 mm"       # or kind = "tangent" (straight flanks)
     follower = "roller"          # "knife", "roller" (with roller = "10 mm") or "flat"
@@ -734,4 +735,9 @@ def report_lines(scene) -> list[str]:
     else:
         lines.append(f"  the follower's displacement along the stroke: "
                      f"{mm(d['displacement'])} ({mm(d['lift_from_dwell'])} above its dwell)")
+        if d["follower"] == "flat":     # R is the equivalent yoke's point, not the face's
+            got = pose(scene)[-1]
+            lines.append(f"  (the point {d['follower_point']} of the table is the equivalent "
+                         f"yoke's, on the stroke at the level of K: {mm(got.radius)} short of "
+                         f"the face; the face's displacement is the line above)")
     return lines

@@ -483,12 +483,15 @@ def report_lines(findings: list[Finding]) -> list[str]:
             out.append(f"    stroke = {_fmt(to_unit(fd.result, q.unit))} {q.unit}")
         if q.condition == "time ratio":
             out.append(f"    time ratio = {_fmt(fd.result)}")
-        vu = q.value_unit or _si(fd.dimension)
+        # unstated, a value in the units the solve's table prints: angles in deg, lengths in mm
+        vu = q.value_unit or _SHOWN.get(fd.dimension) or _si(fd.dimension)
         for j, r in enumerate(fd.roots):
-            val = to_unit(r.value, q.value_unit) if q.value_unit else r.value
+            val = to_unit(r.value, vu) if vu != "-" else r.value
             iu = "deg" if q.condition in ("stroke", "time ratio") else q.unit
+            st = as_stated(q, r)
+            said = f" = {_fmt(st[1])} {iu} from {st[0]}" if st else ""
             out.append(f"    {j + 1}) {q.find} = {_fmt(input_in_unit(q, r.input))} {iu}"
-                       f"   {q.quantity} = {_fmt(val)} {vu}   ({r.kind})")
+                       f"{said}   {q.quantity} = {_fmt(val)} {vu}   ({r.kind})")
         c = check(fd)
         for label, ok in (("exact", c.exact_ok), ("tutorial", c.tutorial_ok),
                           ("value exact", c.value_ok)):
@@ -498,6 +501,25 @@ def report_lines(findings: list[Finding]) -> list[str]:
                 out.append(f"    {label}: {', '.join(map(_fmt, theirs))} "
                            f"{'✓' if ok else '✗ differs'}")
     return out
+
+
+def as_stated(q: Question, r: Root):
+    """A root crank angle as the scene states its angle ('θ from idc', '60 deg CW from +y'):
+    (the reference's words, θ in the question's unit, in [0, 360°)); None otherwise."""
+    drv = r.scene.driver if r.scene is not None else None
+    stated = getattr(drv, "stated", None)
+    if q.find != "angle" or stated is None or cam_diagram.has_profile(r.scene):
+        return None
+    ref, base, turn = stated
+    words = ref if turn > 0 or ref.lower() in ("idc", "odc", "tdc", "bdc") or "dead" in \
+        ref.lower() else f"{ref} (CW)"
+    theta = math.fmod(turn * (r.input - base), _TAU)
+    theta = theta + _TAU if theta < 0 else theta
+    unit = "deg" if q.condition in ("stroke", "time ratio") else q.unit
+    return words, to_unit(0.0 if _TAU - theta <= 1e-9 * _TAU else theta, unit)
+
+
+_SHOWN = {"angle": "deg", "length": "mm"}
 
 
 def _si(dim: str) -> str:
@@ -525,7 +547,9 @@ def to_dict(findings: list[Finding]) -> list[dict]:
                     "result": (to_unit(fd.result, q.unit) if q.condition == "stroke"
                                else fd.result),
                     "roots": [{"input": input_in_unit(q, r.input), "input_si": r.input,
-                               "value": r.value, "kind": r.kind} for r in fd.roots],
+                               "value": r.value, "kind": r.kind,
+                               **({"as_stated": {"from": st[0], "input": st[1]}}
+                                  if (st := as_stated(q, r)) else {})} for r in fd.roots],
                     "exact": list(q.exact) if q.exact is not None else None,
                     "exact_ok": c.exact_ok, "tutorial_ok": c.tutorial_ok,
                     "value_ok": c.value_ok})

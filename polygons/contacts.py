@@ -552,7 +552,9 @@ def _driven(data) -> str | None:
 def _wheel_driver(drv: dict, eqs, file) -> dict:
     """[driver] wheel = "W", omega, sense (alpha, alpha_sense): the wheel rolling on a fixed
     surface turns at ω, α; its centre is then the input slider on the equivalent guide,
-    v_W = ω k × (W − C) = −ω r along the surface, a_W = −α r (C the contact)."""
+    v_W = ω k × (W − C) = −ω r along the surface, a_W = −α r (C the contact).  Or, as books
+    state it ('its centre moves at 2 m/s to the right, accelerating at 4 m/s²'), the centre's
+    ``velocity`` and ``acceleration`` along the surface's direction: ω = −v / r, α = −a / r."""
     label = drv["wheel"]
     q = next((e for e in eqs if e.kind == "rolling" and e.at == label), None)
     if q is None:
@@ -562,11 +564,27 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
         raise SceneError(f"the driven wheel {label} rolls on a fixed surface here: on and "
                          f"opposite (moving plates) are not handled with a wheel driver",
                          file=file, where="driver.wheel")
-    extra = set(drv) - {"wheel", "omega", "sense", "alpha", "alpha_sense"}
+    extra = set(drv) - {"wheel", "omega", "sense", "alpha", "alpha_sense", "velocity",
+                        "acceleration"}
     if extra:
-        raise SceneError(f"a wheel driver takes wheel, omega, sense, alpha, alpha_sense; not "
+        raise SceneError(f"a wheel driver takes wheel, omega, sense, alpha, alpha_sense (or its "
+                         f"centre's velocity and acceleration); not "
                          f"{', '.join(sorted(map(show, extra)))}", file=file, where="driver")
-    from .topology import _TURN_WORDS, sense_in
+    if "velocity" in drv or "acceleration" in drv:
+        mixed = sorted({"omega", "sense", "alpha", "alpha_sense"} & set(drv))
+        if mixed or "velocity" not in drv:
+            raise SceneError("give the wheel's omega (sense, alpha) or its centre's velocity "
+                             "(and acceleration) along the surface, not both"
+                             + (f": drop {', '.join(mixed)}" if mixed else ""),
+                             file=file, where="driver")
+        from .units import parse_along    # '2 m/s to the right' along the surface
+        e = (math.cos(q.face), math.sin(q.face))
+        v = parse_along(drv["velocity"], "velocity", e, file=file, where="driver.velocity")
+        a = parse_along(drv.get("acceleration", "0 m/s^2"), "acceleration", e, file=file,
+                        where="driver.acceleration")
+        return {"slider": label, "position": "0 m", "velocity": f"{v!r} m/s",
+                "acceleration": f"{a!r} m/s^2"}
+    from .topology import _TURN_WORDS, alpha_words, sense_in
 
     def rate(key, sense_key, dim):
         if key not in drv:
@@ -584,6 +602,7 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
                              file=file, where=f"driver.{key}")
         return value * int(turn or 0)
     w = rate("omega", "sense", "angular_velocity")
+    drv = alpha_words(drv, w, file)      # 'retarding': against ω
     al = rate("alpha", "alpha_sense", "angular_acceleration")
     r = q.radius
     return {"slider": label, "position": "0 m", "velocity": f"{-w * r!r} m/s",

@@ -71,6 +71,12 @@ class Solution:
     def vertex_of(self, label: str) -> str:
         return self.pole if label in self.scene.ground else label.lower()
 
+    def printed_names(self, diagram: str) -> set[str]:
+        """The names a diagram's words give its vertices: its vertex names and the pole's
+        other names, every fixed point's letter (dc₂ about D where the pole is a = d, o₄p₄′
+        about O4 where it is o₂ = o₄)."""
+        return set(self.vertices.get(diagram, ())) | {g.lower() for g in self.scene.ground}
+
     def _at(self, key):
         i = self._staged.code.index.get(key)
         return None if i is None else (self.record[i[0]], self.record[i[1]])

@@ -58,7 +58,7 @@ from .drawing_board import PENCIL_MM, PROTRACTOR_DEG, SPACE_MM
 from .drawing_format import StudentDrawing
 from .evaluate import Solution
 from .notation import vertex, vertices_in
-from .steps import Kind, Op, Step
+from .steps import Kind, Op, Step, points_back, tail_name
 
 #: the smallest length tolerance on paper: two pencil marks (±0.25 mm in x and y) and a rule
 #: reading (±0.25 mm)
@@ -301,6 +301,23 @@ def slips(sol: Solution, e: Expected, diagram: str) -> list[tuple[float, str]]:
     return [(r, w) for r, w in out if r > 0 and math.isfinite(r) and abs(r - 1) > 0.02]
 
 
+def _shown(sol: Solution, e, pole: str, steps: dict) -> str:
+    """A vector's printed name, as the drawing's legend and the narration print it: the
+    way its arrow runs (a slot line's vector back to its anchor, :func:`points_back`) and
+    its tail named by :func:`tail_name` (o₄b about the fixed O4, dc₂ about D, where the
+    pole is another fixed point's vertex), each vertex as :func:`notation.vertex` spells
+    it."""
+    tail, head = e.start, e.end
+    meet = None
+    if e.step.kind == Kind.LINE:
+        meet = next((s for s in steps.values() if s.kind == Kind.INTERSECTION
+                     and e.step.number in s.lines), None)
+        if points_back(sol.vertex_of, e.step, e.end):
+            tail, head = e.end, e.start
+    fixed = {g.lower() for g in sol.scene.ground}
+    return vertex(tail_name(e.step, tail, pole, fixed, meet)) + vertex(head)
+
+
 def rules(sol: Solution, diagram: str, emulated: dict | None = None,
           stated: float = 0.02) -> dict:
     """Everything the grading rules need, as plain JSON data (SI; the interactive page carries
@@ -309,7 +326,7 @@ def rules(sol: Solution, diagram: str, emulated: dict | None = None,
     emulated = emulated or {}
     k_space = _space_mm(sol)
     verts = sol.vertices[diagram]
-    names = set(verts)
+    names = sol.printed_names(diagram)
     pole = sol.vertex_of(next(iter(sol.scene.ground)))
     steps = {s.number: s for s in sol.steps if s.diagram == diagram}
 
@@ -339,6 +356,9 @@ def rules(sol: Solution, diagram: str, emulated: dict | None = None,
             "centripetal": e.step.op == Op.CENTRIPETAL,
             "centre": (e.step.args[1] if e.step.op == Op.CENTRIPETAL and len(e.step.args) > 1
                        else None),
+            # the name printed, as the handout prints it: from the pole, a centripetal
+            # vector is named from its fixed centre's letter (dc₂ where the pole is a = d)
+            "shown": _shown(sol, e, pole, steps),
             "rel": _rel(sol, e.quantity, e.factor, emulated, stated),
             "link_mm": _link_mm(sol, e.perp_to or e.along, k_space),
             "slips": [] if line else [[r, w] for r, w in slips(sol, e, diagram)],
@@ -466,7 +486,8 @@ def _fmt(x: float, d: int = 1) -> str:
 
 def _mark(R: dict, e: dict, drawn, P, k) -> VectorMark:
     N = R["names"]
-    name, shown = e["start"] + e["end"], N.get(e["start"], e["start"]) + N.get(e["end"], e["end"])
+    name = e["start"] + e["end"]
+    shown = e.get("shown") or N.get(e["start"], e["start"]) + N.get(e["end"], e["end"])
     im = e.get("image")
     if im and im["base"] in P and e["start"] in P:
         # carried forward: the image of the student's own start → base, by the link's ratio

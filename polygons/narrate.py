@@ -50,9 +50,14 @@ def substitute(s: Step, scene, printed: bool = False) -> str:
     if op in _RATES:
         return _rate(t, _RATES[op], f)
     if op in (Op.SLIDER_VELOCITY, Op.SLIDER_ACCELERATION):
+        # the sign is in the words, not the number: its size and the way it points along
+        # the guide ('11.191 m/s² along the guide, towards 270°'; was '-11.191 … (90°)')
         (X,) = s.args
-        deg = math.degrees(scene.model.guide[X].line.angle)
-        return f"{f(t[0].value)} {unit_text(t[0].unit)} along the guide ({f(deg)}°)"
+        val = t[0].value
+        deg = (math.degrees(scene.model.guide[X].line.angle) + (0.0 if val >= 0 else 180.0)) \
+            % 360.0
+        deg = 0.0 if round(deg, 6) >= 360.0 else deg
+        return f"{f(abs(val))} {unit_text(t[0].unit)} along the guide, towards {f(deg)}°"
     if op in (Op.SLIDE_VELOCITY, Op.SLIDE_ACCELERATION):
         A = s.args[0]
         val = t[0].value

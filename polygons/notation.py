@@ -30,6 +30,21 @@ def vertex(name: str) -> str:
     return m["vl"] + m["vd"].translate(_SUB) + (PRIMES[m["vp"]] if m["vp"] else "")
 
 
+#: a component's superscript as the table prints it (docs/notation.md)
+SUPERSCRIPTS = {"n": "ⁿ", "t": "ᵗ", "slide": "^slide"}
+
+
+def quantity(q: str) -> str:
+    """A step's quantity in the table's one-line spelling, the superscript after the
+    parenthesis: '(a_C)_B^t' → '(a_C)ᵗ_B', '(a_P2)_P4^slide' → '(a_P2)^slide_P4'; 'v_C',
+    '(v_C)_B', 'ω_BC' unchanged.  The exam's symbols are written by it."""
+    head, _, sup = q.partition("^")
+    if not sup or sup not in SUPERSCRIPTS or not head.startswith("(") or ")_" not in head:
+        return q
+    inner, _, ref = head.partition(")_")
+    return f"{inner}){SUPERSCRIPTS[sup]}_{ref}"
+
+
 def vertices_in(text: str, names) -> str:
     """Every vertex name of ``names`` in ``text`` spelled as printed, also two of them
     written together as a vector ('p2_1p2' → 'p₂′p₂'); other words are left alone."""

@@ -30,14 +30,17 @@ RULES = """\
 | a point's vertex | its space label in lower case | letters with subscript digits | B → b, O2 → o₂ |
 | the pole | the driving crank's pivot (else the first fixed point); every fixed point is the pole | all its names joined | o₂ = o₄, a = d |
 | the end of a known component drawn before the unknown one | the point's vertex with a number (`b1`, `b2`), or a dash for a label ending in a digit (`p2_1`) | b₁, b₂; p₂′, p₂″ | c₁ = end of (a_C)ⁿ_B |
+| the foot of a Coriolis vector | the point's vertex dashed (`p_1`, `p2_1`) | p′, p₂′ | p₄p₂′ = 2ωv |
 | a construction line of unknown length | what it is, never a letter: `line ⟂ XY`, `slider line`, `slot line ∥ XY`, `Coriolis offset line` | ⟂ as ⊥ | line ⊥ BC |
 | a vector | its two vertices, tail first | tail then tip | b₁c, p₄p₂′ |
-| a quantity | v or a, the point, relative to a point as a subscript, ⁿ/ᵗ for centripetal/tangential, `slide` for sliding | (a_C)ᵗ_B | (a_P2)^slide_P4 |
+| a vector from the pole read about a fixed point | tail named by that point's own letter (one of the pole's names) | dc, dc₂, o₄p₄′ | dc₂ = (a_C)ⁿ_D where the pole is a = d |
+| a quantity | v or a, the point, relative to a point as a subscript, ⁿ/ᵗ for centripetal/tangential, `slide` for sliding; never two labels run together (v_CB) | (a_C)ᵗ_B | (a_P2)^slide_P4, (v_P2)_P4 |
 | ω, α of a link | the link's name | ω_BC, α_BC | α_O4P4 |
 
 The tables below are the steps each kind of group emits, from one shipped case each: every
-name is the one the drawing labels, the narration writes, the handout prints and the grader's
-hints use.
+name is the one the drawing labels, the narration writes, the handout prints, the grader's
+rows and hints use and the exam's questions ask (`tests/test_notation_emitters.py` compares
+them for every kind).
 """
 
 

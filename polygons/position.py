@@ -223,6 +223,10 @@ def satisfies(branch: Branch, cand, pos, scene: Scene) -> bool:
         if r not in pos:
             raise BranchError(f"'{branch.text}' refers to {r}, which is not placed before "
                               f"{branch.label}", file=scene.file, where=f"assembly.{branch.label}")
+    if rel in ("open", "crossed"):     # a four-bar A–B–C–D: crossed when two links cross
+        (b, d, a), c = (tuple(map(float, pos[k])) for k in branch.ref), tuple(map(float, cand))
+        crossed = _cross(a, b, c, d) or _cross(b, c, d, a)      # AB × CD or BC × DA
+        return crossed if rel == "crossed" else not crossed
     if len(branch.ref) == 1:
         ref = pos[branch.ref[0]]
         return {"above": cand[1] > ref[1], "below": cand[1] < ref[1],
@@ -271,7 +275,8 @@ def _choose(x, cands, scene: Scene, pos, size, default_ref):
     ok = [c for c in (c1, c2) if satisfies(branch, c, pos, scene)]
     if len(ok) != 1:
         raise BranchError(f"{'both' if ok else 'neither'} of the closures {_fmt(c1)} and "
-                          f"{_fmt(c2)} satisfies '{branch.text}'; use another reference or "
+                          f"{_fmt(c2)} {'satisfy' if ok else 'satisfies'} '{branch.text}'; "
+                          f"use another reference or "
                           f"near = [...]", file=scene.file, where=where)
     return ok[0], f"{branch.text} → {_fmt(ok[0])}"
 
@@ -327,6 +332,13 @@ def _choose_group(dyad, scene: Scene, pos, size):
              else "; the only closure")
     return pick, (f"{' and '.join(b.text for _, b in stated)} → "
                   f"{', '.join(f'{k} {_fmt(pick[k])}' for k in labels)}{apart}")
+
+
+def _cross(p, q, r, s) -> bool:
+    """Whether the segments PQ and RS cross at a point inside both (a touch is no crossing)."""
+    def turn(o, u, v):
+        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
+    return turn(p, q, r) * turn(p, q, s) < 0 and turn(r, s, p) * turn(r, s, q) < 0
 
 
 def _extreme(rel: str, k: str, c, labels) -> bool:

@@ -26,6 +26,7 @@ other against the rest of the turn (the quick return's time ratio, larger over s
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 from .errors import SceneError, show
@@ -52,7 +53,8 @@ TABLES: tuple[Table, ...] = (
                        "ratio).  Every root in the range is found (bracketed on a sweep of "
                        "`samples` instants, then polished to full precision by Brent's method "
                        "on the construction) and answered by `polygons ask`.", (
-        Key("find", "string", "the input sought: 'angle' (the crank's, CCW from +x), 'omega' "
+        Key("find", "string", "the input sought: 'angle' (the crank's, CCW from +x; each root "
+                              "also as the scene states its angle: '283.5 deg from idc'), 'omega' "
                               "(the crank's speed, its sense the scene's) or 'position' (a "
                               "slider driver's)", example='"angle"', required=True),
         Key("quantity", "string", "the quantity the condition is on: any [[answers]] or "
@@ -63,7 +65,8 @@ TABLES: tuple[Table, ...] = (
             required=True),
         Key("value", "string", "with condition = 'value': the value the quantity must equal, "
                                "with its unit", example='"5 m/s"'),
-        Key("range", "array", "[low, high] of the input, with units (default: a full turn "
+        Key("range", "array", "[low, high] of the input, with units (a crank angle also as "
+                               "the scene states it: '180 deg from idc'; default: a full turn "
                               "for an angle; required for omega and position)",
             example='["0 deg", "180 deg"]'),
         Key("samples", "integer", f"instants of the bracketing sweep ({MIN_SAMPLES} to "
@@ -92,6 +95,25 @@ KEYS = tuple(k.name for k in TABLES[0].keys)
 #: analysis's, checked by polygons.conditions before it solves)
 KINEMATIC = ("v", "a", "an", "at", "omega", "alpha", "vs", "as", "cor", "dist", "x", "y",
              "dir_v", "dir_a", "angle", "arm")
+
+
+_FROM_WORD = re.compile(r"\s+from\s+", re.IGNORECASE)
+
+
+def _range_end(text, dim, scene, r, where) -> float:
+    """An end of a crank angle's range: '30 deg' (CCW from +x), or as the scene states its
+    angle, '180 deg from idc' (the same reference, measured the same way: Crank.stated)."""
+    parts = _FROM_WORD.split(text, maxsplit=1) if isinstance(text, str) else []
+    if len(parts) != 2:
+        return r.quantity(text, dim, where)
+    stated = getattr(scene.driver, "stated", None)
+    ref = " ".join(parts[1].split())
+    if stated is None or ref.lower() != stated[0].lower():
+        raise SceneError(f"range {show(text)}: an angle from {ref} is read as the scene states "
+                         f"its crank angle, which must then be from {ref} too "
+                         f"(angle = \"30 deg from {ref}\"); or write the range CCW from +x",
+                         file=r.file, where=where)
+    return stated[1] + stated[2] * r.quantity(parts[0], dim, where)
 
 
 @dataclass(frozen=True)
@@ -205,7 +227,11 @@ def questions(scene, parse, tolerance: float) -> tuple[Question, ...]:
             if not isinstance(lohi, list) or len(lohi) != 2:
                 raise SceneError(f"range must be [low, high] with units, got {show(lohi)}",
                                  file=r.file, where=where + ".range")
-            rng = tuple(r.quantity(x, dim, f"{where}.range[{j}]") for j, x in enumerate(lohi))
+            rng = tuple(_range_end(x, dim, scene, r, f"{where}.range[{j}]") if find == "angle"
+                        else r.quantity(x, dim, f"{where}.range[{j}]")
+                        for j, x in enumerate(lohi))
+            if find == "angle" and any(_FROM_WORD.search(str(x)) for x in lohi):
+                rng = tuple(sorted(rng))       # measured CW from the reference: reversed
             if not rng[1] > rng[0]:
                 raise SceneError(f"range: high must exceed low, got {show(lohi)}", file=r.file,
                                  where=where + ".range")

@@ -115,10 +115,11 @@ class Reader:
         return value
 
     def sense(self, value, where: str) -> int:
-        if value in ("CCW", "ccw", "anticlockwise", "anti-clockwise", "counter-clockwise"):
-            return 1
-        if value in ("CW", "cw", "clockwise"):
-            return -1
+        from .topology import _TURN_WORDS      # the one table of sense words, any case
+        turn = _TURN_WORDS.get(" ".join(value.split()).lower()) if isinstance(value, str) \
+            else None
+        if turn is not None:
+            return int(turn)
         raise SceneError(f"sense must be 'CW' or 'CCW', got {show(value)}", file=self.file,
                          where=where)
 

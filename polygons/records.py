@@ -53,6 +53,9 @@ class Crank:
     angle: float
     omega: float   # signed, CCW positive
     alpha: float   # signed, CCW positive
+    #: the angle as the book stated it, 'θ from REF' (idc, odc, AD, +y ...): (REF, the
+    #: reference's angle CCW from +x, +1 / −1 the sense θ is measured in); None for 'θ'
+    stated: tuple[str, float, float] | None = None
 
 
 @dataclass(frozen=True)

@@ -163,11 +163,20 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
 
 
 #: a sense written after a rate ('300 rad/s CW'), as polygons.topology.sense_in reads it
-_SENSE_RE = (r"(?:\s+(?:[Cc][Cc][Ww]|[Cc][Ww]|[Cc]lockwise|[Aa]nti-?clockwise|"
-             r"[Cc]ounter-?clockwise))?")
+_SENSE_RE = (r"(?:\s+(?:[Cc][Cc][Ww]|[Cc][Ww]|[Aa][Cc][Ww]|[Cc]\.[Ww]\.|[Aa]\.[Cc]\.[Ww]\.|"
+             r"[Cc]\.[Cc]\.[Ww]\.|[Cc]lockwise|[Aa]nti[- ]?clockwise|[Cc]ounter[- ]?clockwise))?")
 
 
-def _unit_pattern(dimension: str, sense: bool = False) -> str:
+#: 'retarding' / 'decelerating' / 'accelerating' after α: its sense against ω's
+#: (polygons.topology.alpha_words)
+_ALPHA_WORDS_RE = r"(?:\s+(?:[Rr]etarding|[Dd]ecelerating|[Aa]ccelerating))?"
+#: an angle in degrees and minutes (seconds) as books print it, as polygons.units._DMS reads it
+_DMS_RE = (r"^\s*[-+]?\d+(?:\.\d*)?\s*(?:°|deg)\s*\d+(?:\.\d*)?\s*(?:'|′|min)"
+           r"\s*(?:\d+(?:\.\d*)?\s*(?:\"|″|''|sec|s))?\s*$")
+
+
+def _unit_pattern(dimension: str, sense: bool = False, alpha: bool = False,
+                  towards: bool = False) -> str:
     import re
     from .units import SPELLINGS, UNITS, units_of
     if dimension is None:          # the unit says which quantity it is (a spring's stiffness)
@@ -176,7 +185,12 @@ def _unit_pattern(dimension: str, sense: bool = False) -> str:
     alts = "|".join(re.escape(u).replace("\\ ", "\\s+") for u in
                     sorted(units, key=len, reverse=True))
     opt = "?" if dimension == "fraction" else ""
-    return rf"^\s*{_NUM_RE}\s*(?:{alts}){opt}{_SENSE_RE if sense else ''}\s*$"
+    tail = f"(?:{_SENSE_RE[3:-2]}|{_ALPHA_WORDS_RE[3:-2]})?" if alpha else \
+        (_SENSE_RE if sense else "")
+    if towards:         # '2 m/s to the left' (polygons.units.parse_along)
+        tail = r"(?:\s+(?:[Tt]o\s+the\s+)?(?:[Ll]eft|[Rr]ight)|\s+(?:[Uu]p|[Dd]own)(?:wards?)?)?"
+    plain = rf"^\s*{_NUM_RE}\s*(?:{alts}){opt}{tail}\s*$"
+    return f"(?:{plain})|(?:{_DMS_RE})" if dimension == "angle" else plain
 
 
 def _key_schema(k: Key) -> dict:
@@ -184,7 +198,10 @@ def _key_schema(k: Key) -> dict:
     if k.type == "quantity":
         s = {"type": "string", "pattern": _unit_pattern(
             k.dimension, sense=k.name in ("omega", "alpha")
-            and k.dimension in ("angular_velocity", "angular_acceleration"))}
+            and k.dimension in ("angular_velocity", "angular_acceleration"),
+            alpha=k.name == "alpha" and k.dimension == "angular_acceleration",
+            towards=k.name in ("velocity", "acceleration") and "in words" in k.doc + k.sign
+            or (k.name == "acceleration" and "'5 m/s^2 to the right'" in k.doc))}
         d |= ({"anyOf": [{"type": "number"}, s]} if k.dimension == "fraction" else s)
     elif k.type == "length_or_drawn":
         d["anyOf"] = [{"const": "drawn"}, {"type": "string",

@@ -257,7 +257,7 @@ def table(sol: Solution, *, steps: bool = True, units: str = "mm") -> str:
                 formula = substitute(s, sol.scene)
                 if formula:
                     text += f"  [{formula}]"
-                text = vertices_in(text, sol.vertices[diagram])   # p4_1 → p₄′
+                text = vertices_in(text, sol.printed_names(diagram))   # p4_1 → p₄′
                 lines.append(text)
     lines.append("")
     if sol.min_intersection_angle_deg is not None:

@@ -48,9 +48,10 @@ from .reader import MAX_SCENE_BYTES, read_scene_text  # noqa: F401  (the file is
 from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  # noqa: F401
                       SliderDrive, Slot, Vec)
 from .options import Options, parse_options
+from .units import parse_along
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import (ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS,  # noqa: F401
-                           EXTREMES as _EXTREMES, CONTACT_TABLES, book_words)
+                           EXTREMES as _EXTREMES, CONTACT_TABLES, book_words, circuit_refs)
 from .quantity_grammar import (QUANTITY_FUNCTIONS, parse_quantity_expr,  # noqa: F401
                                _parse_answers, unit_dimension)
 
@@ -456,6 +457,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                              "leave it out)", file=file, where="driver")
         alpha = 0.0
         if "alpha" in drv:
+            drv = topology.alpha_words(drv, omega, file)
             alpha, turn = topology.rate_with_sense(drv, "alpha", "alpha_sense",
                                                   "angular_acceleration", r)
             if alpha != 0.0:
@@ -476,7 +478,8 @@ def parse_scene(data: dict, *, file: str = "<scene>",
             raise SceneError(f"give the crank angle (angle = \"30 deg\") or the drawn position "
                              f"of {tip} in [drawn]", file=file, where="driver.angle")
         driver = record(Crank, link=name, pivot=pivot, tip=tip, angle=angle, omega=omega,
-                        alpha=alpha)
+                        alpha=alpha, stated=topology.stated_from(drv.get("angle"), angle,
+                                                                 omega, r))
     else:
         r.table(drv, "driver", ("slider", "position", "velocity", "acceleration", "rod",
                                 "rod_angle") + ROD_RATE, required=("slider",))
@@ -510,17 +513,29 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                                                              sliders, links, ground)
             driver = SliderDrive(point, position, v, a, rod_rate=stated, rod_angle_deg=meet)
         else:
+            e = sliders[point].direction        # '2 m/s to the left' along the guide
             driver = SliderDrive(point, position,
-                                 r.quantity(drv["velocity"], "velocity", "driver.velocity"),
-                                 r.quantity(drv.get("acceleration", "0 m/s^2"), "acceleration",
-                                            "driver.acceleration"))
+                                 parse_along(drv["velocity"], "velocity", e, file=file,
+                                             where="driver.velocity"),
+                                 parse_along(drv.get("acceleration", "0 m/s^2"), "acceleration",
+                                             e, file=file, where="driver.acceleration"))
 
     # assembly
     assembly: dict[str, Branch] = {}
     for label, spec in r.named(data.get("assembly", {}), "assembly").items():
         where = f"assembly.{label}"
         need_label(r.label(label, where), where)
-        assembly[label] = _parse_branch(label, spec, r, need_label, where)
+        said = " ".join(spec.split()) if isinstance(spec, str) else ""
+        circuit = circuit_refs(label, said[len(label) + 1:] if said.startswith(label + " ")
+                               else said, links, ground)           # 'C open', 'C crossed'
+        if circuit and circuit[1] is None:
+            raise BranchError(f"'{said}' names a four-bar's circuit: {label} must join a fixed "
+                              f"pivot D and the end B of a link AB turning about another fixed "
+                              f"pivot A; say '{label} above ...' or near = [x, y]", file=file,
+                              where=where)
+        assembly[label] = record(Branch, label=label, text=spec, relation=circuit[0],
+                                 ref=circuit[1], near=None) if circuit else \
+            _parse_branch(label, spec, r, need_label, where)
 
     if isinstance(driver, SliderDrive) and rod is not None:
         # the rod's stated angle says where its other end is: that closure, unless stated

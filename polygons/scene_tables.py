@@ -38,6 +38,32 @@ def book_words(rest: str) -> str:
             return rel + rest[len(said):]
     return rest
 
+#: a four-bar's circuit as Norton, Uicker and Myszka name it ('C open', 'C crossed')
+CIRCUITS = {"open": "open", "crossed": "crossed", "open circuit": "open",
+            "crossed circuit": "crossed", "open configuration": "open",
+            "crossed configuration": "crossed"}
+
+
+def circuit_refs(label: str, rest: str, links, ground):
+    """'open' / 'crossed' for the pin ``label`` of a four-bar A–B–label–D (D and A fixed, AB
+    turning about A) → (relation, (B, D, A)): crossed when two of its links cross (AB and CD,
+    or BC and the frame DA), open when none do, as the books' figures show them (one of the
+    two closures is always open; where both are, the words are refused as not choosing);
+    (relation, None) when the pin is not such a joint; None for other words."""
+    rel = CIRCUITS.get(rest.lower())
+    if rel is None:
+        return None
+    ends = [ln.b if ln.a == label else ln.a for ln in links.values() if label in (ln.a, ln.b)]
+    for b, d in ((ends[0], ends[1]), (ends[1], ends[0])) if len(ends) == 2 else ():
+        if d in ground and b not in ground:
+            pivots = [ln.b if ln.a == b else ln.a for ln in links.values()
+                      if b in (ln.a, ln.b) and label not in (ln.a, ln.b)]
+            pivots = [p for p in pivots if p in ground and p != d]
+            if len(pivots) == 1:
+                return rel, (b, d, pivots[0])
+    return rel, None
+
+
 ANSWER_FIELDS = _ANSWER_KEYS = (
     Key("quantity", "string", "the result, in textbook notation: v(C), v(C,B), a(C), "
                               "a(C,B), an(C,B), at(C,B), omega(BC), alpha(BC), vs(P), as(P), "
@@ -136,9 +162,13 @@ TABLES: tuple[Table, ...] = (
                                  "its sense as omega's", example='"5 m/s"',
             dimension="velocity"),
         Key("sense", "string", "sense of rotation: 'CW' or 'CCW' (also clockwise, "
-                               "anticlockwise, counter-clockwise)", example='"CW"'),
+                               "anticlockwise, anti clockwise, counter-clockwise, ACW, "
+                               "c.w., a.c.w., in any case)", example='"CW"'),
         Key("alpha", "quantity", "crank angular acceleration (magnitude; its sense is "
-                                 "`alpha_sense`, or written after it: '80 rad/s^2 CCW')",
+                                 "`alpha_sense`, or written after it: '80 rad/s^2 CCW'; or "
+                                 "against the rotation, as books say it: '5 rad/s^2 "
+                                 "retarding' (or decelerating: opposite ω; accelerating: "
+                                 "with it))",
             example='"80000 rad/s^2"', dimension="angular_acceleration", default="0 rad/s^2"),
         Key("alpha_sense", "string", "sense of alpha, 'CW' or 'CCW' (needed when alpha ≠ 0; "
                                      "independent of `sense`)", example='"CCW"'),
@@ -163,9 +193,17 @@ TABLES: tuple[Table, ...] = (
                                    "or in rod_alpha_sense)", example='"5 rad/s^2 CCW"'),
         Key("rod_alpha_sense", "string", "the sense of rod_alpha, 'CW' or 'CCW'",
             example='"CCW"'),
-        Key("velocity", "quantity", "slider driver: velocity along the guide (or rod_omega)",
+        Key("velocity", "quantity", "slider driver: velocity along the guide, signed, or its "
+                                     "size and direction in words as books give it ('2 m/s to "
+                                     "the left'; right, up, down: the guide along that axis) "
+                                     "(or rod_omega); "
+                                     "a wheel driver: its centre's velocity along the "
+                                     "surface's direction instead of omega ('the centre moves "
+                                     "at 2 m/s': ω = −v / r)",
             example='"2 m/s"', dimension="velocity", sign="positive along `direction`"),
-        Key("acceleration", "quantity", "slider driver: acceleration along the guide",
+        Key("acceleration", "quantity", "slider driver: acceleration along the guide (signed, or "
+                                         "'5 m/s^2 to the right'); a wheel "
+                                         "driver with velocity: its centre's (α = −a / r)",
             example='"0 m/s^2"', dimension="acceleration", default="0 m/s^2",
             sign="positive along `direction`"),
         Key("lever", "link", "a slotted lever driven like a crank (the oscillating cylinder, "
@@ -173,8 +211,9 @@ TABLES: tuple[Table, ...] = (
                              "lever = this lever", example='"O4Q"'),
         Key("wheel", "label", "a wheel rolling without slipping on a fixed surface as the "
                               "input ([rolling.W] with this label), turning at omega (sense), "
-                              "alpha (alpha_sense): links may be pinned to its named points "
-                              "([rolling.W] rim)", example='"W"'),
+                              "alpha (alpha_sense) — or its centre's velocity and "
+                              "acceleration along the surface: links may be pinned to its "
+                              "named points ([rolling.W] rim)", example='"W"'),
         Key("slide", "table", "a second input: a point moved along a link at a prescribed "
                               "sliding velocity and acceleration ([driver.slide])",
             example='{ point = "C", along = "OA", position = "300 mm", velocity = "1.5 m/s" }'),
@@ -249,8 +288,10 @@ TABLES: tuple[Table, ...] = (
                       "optional; the reference is a point or a line of two points; also "
                       "\"lower than\", \"higher than\", \"to the left of\"; a corner of a "
                       "class-III group may name another corner, or be \"uppermost\", "
-                      "\"lowest\", \"leftmost\", \"rightmost\" of its corners), or "
-                      "C = { near = [x, y] }.", (
+                      "\"lowest\", \"leftmost\", \"rightmost\" of its corners; a four-bar's "
+                      "coupler–rocker pin \"C open\" or \"C crossed\", as Norton, Uicker and "
+                      "Myszka name its circuits: crossed when two of its links cross in the "
+                      "figure), or C = { near = [x, y] }.", (
         Key("<LABEL>", "branch", "'above', 'below', 'left of' or 'right of' a point or a line "
                                  "of two labels ('lower than', 'higher than', 'to the left of', "
                                  "'to the right of' too; a triad's corner: 'uppermost', "

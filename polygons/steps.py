@@ -99,7 +99,7 @@ class Step:
     op: Op
     args: tuple[str, ...]   # space labels / link names the operation uses (an intersection:
     #                         the fixed pivot its resultant is named from, if any: dc)
-    draws: str              # what appears on paper: 'oa', 'c line', 'b', 'ω_BC'
+    draws: str              # what appears on paper: 'oa', 'line ⟂ BC', 'b', 'ω_BC'
     start: str | None       # polygon vertex the vector starts at / the line passes through
     end: str | None         # polygon vertex this step creates
     theorem: str            # 'relative_velocity', 'centripetal', 'coriolis', ...
@@ -127,6 +127,41 @@ class Step:
     def gives(self) -> str | None:
         """The symbol this step determines ('ω_BC', 'α_BC', 'v_C', ...) or None."""
         return self.terms[-1].symbol if self.terms else None
+
+
+# ---------------------------------------------------------------- vector names
+def points_back(vertex_of, line: Step, end: str) -> bool:
+    """True when the vector on ``line`` runs from the new vertex ``end`` back to the line's
+    anchor.
+
+    A line of unknown length carries a relative vector '(v_X)_Y' (X relative to Y, drawn
+    y → x).  Usually the line goes through y and the intersection makes x; when it goes
+    through x (the slot line through the pin's vertex) the arrow points back at the anchor.
+    ``vertex_of``: a label's vertex (``Solution.vertex_of``).
+    """
+    if line.relative:
+        x, ref = line.relative
+        if line.start == vertex_of(x) and end == vertex_of(ref):
+            return True
+        if line.start == vertex_of(ref):
+            return False
+    return line.op == "line_along"
+
+
+def tail_name(step: Step, start: str, pole: str, fixed, meet: Step | None = None) -> str:
+    """The name a vector's tail is printed with, as the books write it: from the pole, the
+    fixed point the vector is read about — the pivot an intersection names (dc, the velocity
+    of C about the fixed D where the pole is a = d) or a centripetal vector's fixed centre
+    (dc₂) — else its vertex.  ``fixed``: the pole's names (every fixed point's letter);
+    ``meet``: the intersection that ends a line's vector.  The drawings' legend, the
+    narration and the grader's rows all name a vector by it."""
+    if start != pole:
+        return start
+    if meet is not None and meet.args and meet.args[0].lower() in fixed:
+        return meet.args[0].lower()
+    if step.op == "centripetal" and len(step.args) > 1 and step.args[1].lower() in fixed:
+        return step.args[1].lower()
+    return start
 
 
 # ---------------------------------------------------------------- vertex names

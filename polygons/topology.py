@@ -93,18 +93,48 @@ _LINE = re.compile(r"[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*\Z")     # \Z: no "AB\n"
 #: the axes an angle may be measured from (the direction of each, CCW from +x)
 _AXES = {"+x": 0.0, "x": 0.0, "-x": math.pi, "+y": math.pi / 2, "y": math.pi / 2,
          "-y": -math.pi / 2}
-_TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "ccw": 1.0, "anticlockwise": 1.0,
-               "anti-clockwise": 1.0, "counterclockwise": 1.0, "counter-clockwise": 1.0}
+_TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "c.w.": -1.0, "ccw": 1.0, "anticlockwise": 1.0,
+               "anti-clockwise": 1.0, "anti clockwise": 1.0, "counterclockwise": 1.0,
+               "counter-clockwise": 1.0, "counter clockwise": 1.0, "acw": 1.0, "a.c.w.": 1.0,
+               "c.c.w.": 1.0}
 
 
 def sense_in(text) -> tuple[object, int | None]:
-    """'300 rad/s CW' → ('300 rad/s', −1); '120 rpm anticlockwise' → ('120 rpm', +1);
+    """'300 rad/s CW' → ('300 rad/s', −1); '120 rpm anti clockwise' → ('120 rpm', +1);
     '300 rad/s' → ('300 rad/s', None): a rate with its sense written after it, as books do."""
     if not isinstance(text, str):
         return text, None
+    words = text.split()
+    for n in (2, 1):            # 'anti clockwise' before 'clockwise'
+        turn = _TURN_WORDS.get(" ".join(words[-n:]).lower()) if len(words) > n else None
+        if turn is not None:
+            return " ".join(words[:-n]), int(turn)
+    return text, None
+
+
+#: α stated against ω as books do ('retarding at 5 rad/s²'): −1 opposite ω's sense, +1 with it
+_ALPHA_WORDS = {"retarding": -1, "decelerating": -1, "accelerating": 1}
+
+
+def alpha_words(drv, omega: float, file, key: str = "alpha", sense_key: str = "alpha_sense"):
+    """``alpha = "5 rad/s^2 retarding"`` (or ``decelerating``; ``accelerating``): the sense of
+    α from ω's, opposite (slowing down) or the same (speeding up) → ``drv`` with that sense
+    written as CW / CCW; ``drv`` unchanged without such a word."""
+    text = drv.get(key)
+    if not isinstance(text, str):
+        return drv
     head, _, last = text.strip().rpartition(" ")
-    turn = _TURN_WORDS.get(last.lower())
-    return (head.strip(), int(turn)) if head and turn is not None else (text, None)
+    rel = _ALPHA_WORDS.get(last.lower())
+    if rel is None or not head:
+        return drv
+    if sense_key in drv:
+        raise SceneError(f"{key} = {show(text)} already says its sense against the rotation: "
+                         f"leave out {sense_key}", file=file, where=f"driver.{sense_key}")
+    if omega == 0.0:
+        raise SceneError(f"{key} = {show(text)}: '{last}' is measured against the rotation, "
+                         f"but the driver is at rest (omega = 0): give alpha's sense, CW or CCW",
+                         file=file, where=f"driver.{key}")
+    return {**drv, key: f"{head.strip()} {'CCW' if rel * omega > 0 else 'CW'}"}
 
 
 def crank_rate(drv, r, length) -> tuple[float, int | None]:
@@ -231,6 +261,18 @@ def _turn_of(text: str) -> tuple[str, float]:
     measured in, CCW unless the text ends in a clockwise word."""
     head, turn = sense_in(text)
     return head.strip(), 1.0 if turn is None else float(turn)
+
+
+def stated_from(value, angle: float, omega: float, r):
+    """'θ from REF' → (REF, its angle = angle − turn θ, turn); None for a plain angle."""
+    m = _FROM.match(value) if isinstance(value, str) else None
+    if not m:
+        return None
+    amount, turn = _turn_of(m.group(1))
+    ref = " ".join(m.group(2).split())
+    if ref.lower() in _DEAD_WORDS:      # measured in the crank's sense of rotation
+        turn = 1.0 if omega >= 0 else -1.0
+    return ref, angle - turn * r.quantity(amount, "angle", "driver.angle", reduce=True), turn
 
 
 def default_coincident(point: str) -> str:

@@ -63,6 +63,7 @@ UNITS: dict[str, tuple[str, float]] = {
     "m/s": ("velocity", 1.0), "mm/s": ("velocity", 1e-3), "km/h": ("velocity", 1 / 3.6),
     "ft/s": ("velocity", _FT), "in/s": ("velocity", _IN), "ft/min": ("velocity", _FT / 60.0),
     "mph": ("velocity", 1609.344 / 3600.0),
+    "m/min": ("velocity", 1 / 60.0), "mm/min": ("velocity", 1e-3 / 60.0),
     "m/s^2": ("acceleration", 1.0), "m/s²": ("acceleration", 1.0),
     "mm/s^2": ("acceleration", 1e-3), "mm/s²": ("acceleration", 1e-3),
     "ft/s^2": ("acceleration", _FT), "ft/s²": ("acceleration", _FT),
@@ -70,6 +71,7 @@ UNITS: dict[str, tuple[str, float]] = {
     "kg": ("mass", 1.0), "g": ("mass", 1e-3), "t": ("mass", 1e3),
     "lb": ("mass", _LB), "slug": ("mass", _SLUG),
     "N": ("force", 1.0), "kN": ("force", 1e3), "MN": ("force", 1e6), "lbf": ("force", _LBF),
+    "kgf": ("force", _G0),
     "N m": ("torque", 1.0), "Nm": ("torque", 1.0), "N*m": ("torque", 1.0),
     "N·m": ("torque", 1.0), "kN m": ("torque", 1e3), "N mm": ("torque", 1e-3),
     "lbf ft": ("torque", _LBF * _FT), "lbf in": ("torque", _LBF * _IN),
@@ -78,6 +80,7 @@ UNITS: dict[str, tuple[str, float]] = {
     "N/mm^2": ("pressure", 1e6), "N/mm²": ("pressure", 1e6),
     "kN/m^2": ("pressure", 1e3), "kN/m²": ("pressure", 1e3),
     "N/m^2": ("pressure", 1.0), "N/m²": ("pressure", 1.0),
+    "N/cm^2": ("pressure", 1e4), "N/cm²": ("pressure", 1e4),
     "kg m^2": ("inertia", 1.0), "kg m²": ("inertia", 1.0), "kg mm^2": ("inertia", 1e-6),
     "kg mm²": ("inertia", 1e-6), "lb ft^2": ("inertia", _LB * _FT ** 2),
     "lb ft²": ("inertia", _LB * _FT ** 2), "lb in^2": ("inertia", _LB * _IN ** 2),
@@ -107,6 +110,13 @@ SPELLINGS: dict[str, str] = {
     "m/sec^2": "m/s^2", "m/sec²": "m/s^2", "mm/sec^2": "mm/s^2", "mm/sec²": "mm/s^2",
     "ft/sec^2": "ft/s^2", "ft/sec²": "ft/s^2", "in/sec^2": "in/s^2", "in/sec²": "in/s^2",
     "m/s/s": "m/s^2", "N-m": "N m", "N.m": "N m", "Nmm": "N mm", "N-mm": "N mm",
+    "kN-m": "kN m", "kN·m": "kN m", "kN.m": "kN m", "kNm": "kN m", "N·mm": "N mm",
+    "kg-m^2": "kg m^2", "kg-m²": "kg m^2", "kg·m^2": "kg m^2", "kg·m²": "kg m^2",
+    "kg.m^2": "kg m^2", "kg.m²": "kg m^2",
+    "km/hr": "km/h", "kmph": "km/h", "km/hour": "km/h",
+    "metre": "m", "metres": "m", "meter": "m", "meters": "m", "millimetre": "mm",
+    "millimetres": "mm", "millimeter": "mm", "millimeters": "mm", "mm.": "mm",
+    "m/minute": "m/min",
 }
 
 #: (smallest non-zero, largest) magnitude accepted, in SI, per dimension: inside this range
@@ -146,6 +156,9 @@ SYSTEMS: dict[str, dict[str, str]] = {
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 #: the period of an orientation, in each angle unit (reduced exactly with math.fmod)
 _TURN = {"deg": 360.0, "°": 360.0, "rad": _TAU, "rev": 1.0}
+#: an angle in degrees, minutes (and seconds) as books print it: 42°18', 42° 18′ 30″, 42 deg 18 min
+_DMS = re.compile(r"^\s*([-+]?)(\d+(?:\.\d*)?)\s*(?:°|deg)\s*(\d+(?:\.\d*)?)\s*(?:'|′|min)"
+                  r"\s*(?:(\d+(?:\.\d*)?)\s*(?:\"|″|''|sec|s))?\s*$")
 
 
 def article(word: str) -> str:
@@ -235,6 +248,14 @@ def _parse_quantity(value, dimension: str, file, where, reduce) -> float:
         raise UnitError(f"missing unit: {show(value)} needs {article(words)} unit, "
                         f"e.g. '{value} {units_of(dimension)[0]}' (accepted: {accepted})",
                         file=file, where=where)
+    dms = _DMS.match(value) if dimension == "angle" else None
+    if dms:             # 42°18'30" = 42 + 18/60 + 30/3600 deg (minutes, seconds below 60)
+        sign, d, m, sec = dms.groups()
+        if float(m) >= 60 or float(sec or 0) >= 60:
+            raise UnitError(f"{show(value)}: minutes and seconds of arc are below 60",
+                            file=file, where=where)
+        deg = float(d) + float(m) / 60 + float(sec or 0) / 3600
+        value = f"{'-' if sign == '-' else ''}{deg!r} deg"
     match = _NUMBER.match(value)
     if not match:
         raise UnitError(f"cannot read {show(value)} as a number with a unit "
@@ -261,6 +282,37 @@ def _parse_quantity(value, dimension: str, file, where, reduce) -> float:
         if reduce:
             number = math.fmod(number, _TURN[unit])       # exact
     return check_range(number * factor, dimension, value, file=file, where=where)
+
+
+#: a motion's direction in words, as books give it ('2 m/s to the left'): the axis it names
+_TOWARDS = {"to the right": (1.0, 0.0), "right": (1.0, 0.0), "to the left": (-1.0, 0.0),
+            "left": (-1.0, 0.0), "upwards": (0.0, 1.0), "upward": (0.0, 1.0), "up": (0.0, 1.0),
+            "downwards": (0.0, -1.0), "downward": (0.0, -1.0), "down": (0.0, -1.0)}
+_TOWARDS_RE = re.compile(r"^(.*?)\s+(" + "|".join(sorted(map(re.escape, _TOWARDS), key=len,
+                                                            reverse=True)) + r")\s*$",
+                         re.IGNORECASE)
+
+
+def parse_along(value, dimension: str, direction: tuple[float, float], *, file=None,
+                where=None) -> float:
+    """A velocity or acceleration signed along a guide's ``direction`` (unit vector): "2 m/s"
+    as signed, or its magnitude and a direction in words as books give it, "2 m/s to the
+    left" (right, up, down: +x, −x, +y, −y), which the guide must lie along."""
+    m = _TOWARDS_RE.match(value) if isinstance(value, str) else None
+    if not m:
+        return parse_quantity(value, dimension, file=file, where=where)
+    size = parse_quantity(m.group(1), dimension, file=file, where=where)
+    if size < 0:
+        raise UnitError(f"{show(value)}: a magnitude with its direction in words, or a signed "
+                        f"value without them", file=file, where=where)
+    ax = _TOWARDS[m.group(2).lower()]
+    along = direction[0] * ax[0] + direction[1] * ax[1]
+    if abs(abs(along) - 1.0) > 1e-9:
+        raise UnitError(f"{show(value)}: its line (guide, surface) runs at "
+                        f"{math.degrees(math.atan2(direction[1], direction[0])):.6g}°, not "
+                        f"{'horizontally' if ax[1] == 0 else 'vertically'}: give the value "
+                        f"signed along its direction", file=file, where=where)
+    return size if along > 0 else -size
 
 
 def to_unit(value_si: float, unit: str) -> float:

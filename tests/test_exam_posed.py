@@ -104,7 +104,7 @@ def test_default_ask_drops_constant_and_duplicated_answers(tmp_path):
     dropped = dict(ex.dropped)
     assert set(dropped) == {"v(P2)", "an(P2,O2)", "at(P2,O2)", "vs(P2)"}
     assert "is 0 in every variant" in dropped["at(P2,O2)"]
-    assert "as large as v_P2P4" in dropped["vs(P2)"]
+    assert "as large as (v_P2)_P4" in dropped["vs(P2)"]
     asked = {a.expr for a in ex.variants[0].asked}
     assert not asked & set(dropped) and "v(P2,P4)" in asked
     assert well_posed_faults(ex) == []

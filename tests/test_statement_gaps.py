@@ -86,7 +86,8 @@ def test_piston_effort_and_turning_moment_are_named_without_a_flywheel(tmp_path)
     out = tmp_path / "f.txt"
     assert main(["forces", str(path), "-o", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
-    assert f"turning moment T on the crank, in the sense of rotation: {torque:.8g} N m" in text
+    # a signed moment written once, its size with its sense in words (torque > 0 here)
+    assert f"turning moment T on the crank: {torque:.8g} N m in the sense of rotation" in text
     assert f"piston effort F_P at P" in text and f"{fp:.8g} N" in text
 
 

@@ -60,7 +60,7 @@
 
   function mark(R, e, drawn, P, k) {
     var N = R.names;
-    var name = e.start + e.end, shown = (N[e.start] || e.start) + (N[e.end] || e.end);
+    var name = e.start + e.end, shown = e.shown || (N[e.start] || e.start) + (N[e.end] || e.end);
     var im = e.image, ev;
     if (im && P[im.base] && P[e.start]) {
       // carried forward: the image of the student's own start → base, by the link's ratio

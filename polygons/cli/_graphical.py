@@ -8,6 +8,7 @@ import numpy as np
 
 from ..errors import UnsupportedError
 from ..forces import effort, graphical, zhukovsky
+from ..forces import words as force_words
 
 
 def _deg(v) -> float:
@@ -117,11 +118,8 @@ def polygons_lines(an, st) -> list[str]:
             elif f.how == "joint":
                 out.append(f"      at the joint: {f.name} = {_f(f.value)} N ∠"
                            f"{_deg(f.direction):.2f}°")
-    unit = effort.unit(an.model)
     diff = _difference(fp, st)
-    e = fp.effort
-    words = (f"{abs(e):.8g} N m {'CCW' if e > 0 else 'CW' if e < 0 else ''}".rstrip()
-             if unit == "N m" else f"{e:.8g} N along the guide")
+    words = force_words.effort_words(an.model, fp.effort, st.sol)
     out.append(f"    {effort.words(an.model)}: {words}; every reaction equals Newton–Euler's "
                f"(largest difference {diff:.1e} N)")
     return out
@@ -136,15 +134,14 @@ def lever_lines(an, st) -> list[str]:
            + (", drawn for a unit input rate: the input is at rest)" if lv.unit_rate else ")")
            + ":",
            f"    {'force':<26} {'N':>11} {'∠°':>8} {'applied at image':>22} "
-           f"{'moment about o':>15}"]
+           f"{'moment about o, N m/s':>22}"]
     for a in lv.applied + lv.effort_forces:
         img = f"({a.lever[0] + 0.0:.4g}, {a.lever[1] + 0.0:.4g})"
         out.append(f"    {a.name[:26]:<26} {_f(float(np.hypot(*a.force))):>11} "
                    f"{_deg(a.force) if a.force.any() else 0:>8.2f} {img:>22} "
-                   f"{_f(a.moment):>15}")
-    unit = effort.unit(an.model)
-    out.append(f"    Σ moments of the known forces {_f(lv.moment_sum)}; the unit effort's "
-               f"moment {_f(lv.unit_moment)}: {effort.words(an.model)} = "
-               f"{lv.effort:.10g} {unit}; virtual work {st.vw_effort:.10g} {unit} "
+                   f"{force_words.table_moment(a.moment):>22}")
+    out.append(f"    {force_words.lever_sum_words(an.model, lv)}: {effort.words(an.model)} = "
+               f"{force_words.effort_words(an.model, lv.effort, st.sol, 10)}; virtual work "
+               f"{force_words.effort_words(an.model, st.vw_effort, st.sol, 10)} "
                f"(difference {abs(lv.effort - st.vw_effort):.1e})")
     return out

@@ -385,7 +385,7 @@ def describe_step(sol: Solution, step: Step) -> str:
                 k = stage_number(sol, drawn)
                 text += (f" The line it is read from ends at {drawn.end}, fixed in step "
                          f"{drawn.number}" + (f" (stage {k})" if k else "") + ".")
-    return vertices_in(text, sol.vertices[step.diagram])     # p4_1 → p₄′, as printed
+    return vertices_in(text, sol.printed_names(step.diagram))     # p4_1 → p₄′, as printed
 
 
 # ---------------------------------------------------------------- grading
@@ -560,6 +560,7 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
     wn = max(len(g.name) for g in grades)
     for g in grades:
         fn = g.expr.split("(")[0]
+        force = _force_fn(g.expr) is not None
         if fn in ("omega", "alpha"):
             shown = f"{_num(abs(g.measured))} {g.unit}" + (
                 _sense(g.measured) if g.sense_given or g.measured < 0 else "")
@@ -570,6 +571,13 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
         elif fn in ("vs", "as"):
             shown = f"{'+' if g.measured > 0 else ''}{_num(g.measured)} {g.unit}"
             exp = f"{'+' if g.expected > 0 else ''}{_num(g.expected)} {g.unit}"
+        elif force and g.measured < 0:        # a force answer given with its sign: graded so
+            if g.unit == "N m":               # a moment's sign is its sense (CCW +)
+                shown = f"{_num(abs(g.measured))} {g.unit}{_sense(g.measured)}"
+                exp = f"{_num(abs(g.expected))} {g.unit}{_sense(g.expected)}"
+            else:
+                shown = f"{_num(g.measured)} {g.unit} (signed)".replace("-", "−", 1)
+                exp = f"{_num(g.expected)} {g.unit}".replace("-", "−", 1)
         else:
             shown = f"{_num(abs(g.measured))} {g.unit}"
             exp = f"{_num(abs(g.expected))} {g.unit}"
@@ -590,7 +598,12 @@ def report(sol: Solution, grades: list[Grade], pct: float, scales: dict,
             lines.append(f"       magnitude only: no sense was written, so it is not graded "
                          f"(write {_num(abs(g.measured))}CW or CCW, or a negative value for "
                          f"CW, to have it graded)")
-        if fn not in ("omega", "alpha", "vs", "as") and g.measured < 0:
+        if force and g.measured < 0 and g.expected != 0 and (g.measured > 0) != (
+                g.expected > 0):
+            lines.append(f"       the sense is wrong: {g.name} is "
+                         + (f"{_num(abs(g.expected))} N m{_sense(g.expected)}"
+                            if g.unit == "N m" else f"{_num(g.expected)} N (signed)"))
+        if fn not in ("omega", "alpha", "vs", "as") and g.measured < 0 and not force:
             lines.append(f"       a magnitude has no sign: {_num(g.measured)} was graded as "
                          f"{_num(abs(g.measured))} (the length of its vector in the polygon)")
         if fn in ("vs", "as") and g.sense_given is None and g.expected != 0:

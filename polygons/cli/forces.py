@@ -13,6 +13,7 @@ from ..errors import PolygonsError, SceneError
 from ..forces import (Analysis, State, analyse, check_force_answers, has_forces, section,
                       spring_state)
 from ..forces import effort, machine
+from ..forces import words as force_words
 from ..forces.cams import mu_needed, rolling_words, words as cam_words
 from ..forces.model import position, unit_r
 from ..report import json_text, undefined_note
@@ -109,17 +110,28 @@ def _effort_unit(an: Analysis) -> str:
 
 
 def _effort_value(an: Analysis, st: State, e: float) -> str:
-    """An effort in words: a torque with its sense; a force with its direction (a force
-    has no rotation sense), an actuator's as pushing or pulling."""
-    model = an.model
-    if effort.is_torque(model):
-        return f"{abs(e):.8g} N m {_sense(e)}"
-    spec = model.parsed.effort
-    if spec is not None and spec.kind == "actuator":
-        return f"{abs(e):.8g} N {'pushing (compression)' if e >= 0 else 'pulling (tension)'}"
-    t = effort.terms(model, st.sol)[0]
-    d = _deg(t.direction * (1.0 if e >= 0 else -1.0))
-    return f"{abs(e):.8g} N towards {d:.6g}° (along the guide)"
+    """An effort in words (the one formatter, :func:`polygons.forces.words.effort_words`): a
+    torque with its sense; a force with its direction (a force has no rotation sense), an
+    actuator's as pushing or pulling."""
+    return force_words.effort_words(an.model, e, st.sol)
+
+
+def _machine_text(an: Analysis, st: State, m: dict) -> str:
+    """A machine result's value in words, each signed one once with its sense: the turning
+    moment in or against the sense of rotation, a piston effort towards its direction, the
+    flywheel speeding up or slowing down."""
+    v, key = m["value"], m["key"]
+    if key == "turning_moment":
+        drv = an.model.scene.driver
+        w = st.sol.links[drv.link].omega or 0.0
+        return force_words.rotation_words(v, w)
+    if key.startswith("piston_effort_") and v:
+        u = np.array(an.model.scene.model.guide[key.removeprefix("piston_effort_")]
+                     .line.direction)
+        return f"{abs(v):.8g} N towards {force_words.angle(u * v)}° (along the guide)"
+    if key == "flywheel_alpha" and v:
+        return f"{abs(v):.8g} rad/s² ({'speeding up' if v > 0 else 'slowing down'})"
+    return f"{v:.8g} {m['unit']}".replace("-", "−")
 
 
 # ---------------------------------------------------------------- JSON
@@ -494,7 +506,7 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
                    f"{abs(e - st.vw_effort):.1e}")
         if unit == "N m" and model.parsed.effort is None:
             out.append(f"  the mechanism's turning moment on {model.driver_body}: "
-                       f"{abs(e):.8g} N m {_sense(-e)}")
+                       f"{force_words.moment_words(-e, digits=8)}")
         out.append(f"  virtual-work breakdown ({unit} of the {what} per term):")
     else:
         a = ne.alpha
@@ -523,12 +535,14 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
     for pin, (v, n) in ne.slot.items():
         s = next(x for x in model.slots if x.pin == pin)
         out.append(f"  slot: the pin {pin} pushes {s.lever} with {abs(v):.6g} N normal to the "
-                   f"slot, towards {_deg(n * v) or 0:.6g}° (and {s.carrier} is pushed back)")
+                   f"slot, towards {force_words.angle(n * v)}° (and {s.carrier} is pushed "
+                   f"back)")
     for lab, (v, n, c) in ne.guide.items():
         if lab in ne.rolling:
             continue
         out.append(f"  guide: on {lab} {abs(v):.6g} N normal to the guide, towards "
-                   f"{_deg(n * v) or 0:.6g}°; couple {abs(c):.3g} N m {_sense(c)}")
+                   f"{force_words.angle(n * v)}°; couple "
+                   f"{force_words.moment_words(c, digits=3)}")
     for lab, (f, e, at) in ne.rolling.items():
         out.append(f"  {rolling_words(lab, ne)}")
     for c in st.contacts:
@@ -536,12 +550,15 @@ def _state_lines(an: Analysis, st: State) -> list[str]:
             out.append(f"  {cam_words(c)}")
     for lab, link, n, s, m in _sections(an, st):
         out.append(f"  section {lab} of {link} (on the part from {model.bodies[link].a}): "
-                   f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = {m:.6g} N m (CCW)")
+                   f"N = {n:.6g} N, S = {s:.6g} N (CCW normal), M = "
+                   f"{force_words.moment_words(m)}")
     for m in _machine(an, st):
         if m["value"] is None:
             out.append(f"  {m['words']}")
         else:
-            out.append(f"  {m['words']}: {m['value']:.8g} {m['unit']}")
+            words = ("turning moment T on the crank" if m["key"] == "turning_moment"
+                     else m["words"])        # its value says 'in the sense of rotation'
+            out.append(f"  {words}: {_machine_text(an, st, m)}")
     out.append(f"  equations: {ne.equations}, residual {ne.residual:.1e}")
     out += _graphical.polygons_lines(an, st)
     out += _graphical.lever_lines(an, st)

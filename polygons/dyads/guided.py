@@ -131,9 +131,10 @@ class Guided(Constructed):
                    f"Through {k1} draw a line parallel to the slot: the sliding acceleration "
                    f"of {X} lies on it.", component=C.SLIDING)
         x2 = b.fresh(X)
-        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, X), f"{p}{x2}", p, x2, "centripetal",
+        pn = b.names.named(P)              # o₂p₁ about O2 where the pole is o₄ = o₂
+        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, X), f"{pn}{x2}", p, x2, "centripetal",
               f"(a_{X})_{P}^n", f"(a_{X})_{P}^n = ω_{L}² × {P}{X} = v²/{P}{X}",
-              f"From {p} draw the centripetal acceleration of {X} relative to {P}, pointing "
+              f"From {pn} draw the centripetal acceleration of {X} relative to {P}, pointing "
               f"from {X} towards {P}; call its end {x2}.", component=C.CENTRIPETAL, link=L)
         n2 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", x2, None, "tangential",
                    f"(a_{X})_{P}^t", f"(a_{X})_{P}^t = α_{L} × {P}{X} ⟂ {P}{X}",

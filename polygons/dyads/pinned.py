@@ -56,14 +56,17 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
         else:
             b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (X,), f"v_{X}", None, None, "slider",
                   f"v_{X} along guide", f"v_{X} = {pole}{x}",
-                  f"The slider velocity is {pole}{x}, signed along the guide direction.",
+                  f"The slider velocity is {pole}{x}, along its guide.",
                   component=C.RESULTANT)
         return
     # acceleration
     x1 = b.fresh(X)
-    b.add(Kind.VECTOR, Op.CENTRIPETAL, (LP, P, X), f"{p}{x1}", p, x1, "centripetal",
+    # a vector from the pole named from its centre's own letter, as the book writes it (dc₂
+    # about the fixed D where the pole is a = d)
+    pn = b.names.named(P)
+    b.add(Kind.VECTOR, Op.CENTRIPETAL, (LP, P, X), f"{pn}{x1}", p, x1, "centripetal",
           f"(a_{X})_{P}^n", f"(a_{X})_{P}^n = ω_{LP}² × {P}{X} = v²/{P}{X}",
-          f"From {p} draw the centripetal acceleration of {X} relative to {P}, parallel to "
+          f"From {pn} draw the centripetal acceleration of {X} relative to {P}, parallel to "
           f"{P}{X} and pointing from {X} towards {P}; call its end {x1}.",
           component=C.CENTRIPETAL, link=LP)
     n1 = b.add(Kind.LINE, Op.LINE_PERP, (P, X), f"line ⟂ {P}{X}", x1, None,
@@ -73,11 +76,11 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
                link=LP, relative=(X, P))
     if other is not None:
         Q, LQ = other
-        q_ = V(Q)
+        q_, qn = V(Q), b.names.named(Q)
         x2 = b.fresh(X)
-        b.add(Kind.VECTOR, Op.CENTRIPETAL, (LQ, Q, X), f"{q_}{x2}", q_, x2, "centripetal",
+        b.add(Kind.VECTOR, Op.CENTRIPETAL, (LQ, Q, X), f"{qn}{x2}", q_, x2, "centripetal",
               f"(a_{X})_{Q}^n", f"(a_{X})_{Q}^n = ω_{LQ}² × {Q}{X} = v²/{Q}{X}",
-              f"From {q_} draw the centripetal acceleration of {X} relative to {Q}, "
+              f"From {qn} draw the centripetal acceleration of {X} relative to {Q}, "
               f"pointing from {X} towards {Q}; call its end {x2}.", component=C.CENTRIPETAL,
               link=LQ)
         n2 = b.add(Kind.LINE, Op.LINE_PERP, (Q, X), f"line ⟂ {Q}{X}", x2, None, "tangential",
@@ -107,5 +110,5 @@ def emit_two_lines(b: Builder, P: str, X: str, LP: str, other) -> None:
     else:
         b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (X,), f"a_{X}", None, None, "slider",
               f"a_{X} along guide", f"a_{X} = {pole}{x}",
-              f"The slider acceleration is {pole}{x}, signed along the guide direction.",
+              f"The slider acceleration is {pole}{x}, along its guide.",
               component=C.RESULTANT)

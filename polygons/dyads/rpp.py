@@ -70,12 +70,12 @@ class RPP(Constructed):
         if b.velocity:
             b.add(Kind.MEASURE, Op.SLIDER_VELOCITY, (Y,), f"v_{Y}", None, None, "slider",
                   f"v_{Y} along guide", f"v_{Y} = {pole}{y}",
-                  f"The yoke's velocity is {pole}{y}, signed along its guide.",
+                  f"The yoke's velocity is {pole}{y}, along its guide.",
                   component=C.RESULTANT)
         else:
             b.add(Kind.MEASURE, Op.SLIDER_ACCELERATION, (Y,), f"a_{Y}", None, None, "slider",
                   f"a_{Y} along guide", f"a_{Y} = {pole}{y}",
-                  f"The yoke's acceleration is {pole}{y}, signed along its guide.",
+                  f"The yoke's acceleration is {pole}{y}, along its guide.",
                   component=C.RESULTANT)
 
 

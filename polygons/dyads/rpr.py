@@ -97,8 +97,8 @@ class RPR(Constructed):
         C = Component
         if b.velocity:
             n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"line ⟂ {B}{A1}", b_, None,
-                       "relative_velocity", f"v_{A1}", f"v_{A1} = ω_{lev} × {B}{A1} ⟂ {B}{A}",
-                       f"Through {b_} draw a line perpendicular to the lever {B}{A}: the "
+                       "relative_velocity", f"v_{A1}", f"v_{A1} = ω_{lev} × {B}{A1} ⟂ {B}{A1}",
+                       f"Through {b_} draw a line perpendicular to the lever {B}{A1}: the "
                        f"velocity of {A1}, the point of the lever under the pin.",
                        component=C.RELATIVE, link=lev, relative=(A1, B))
             if self.offset:     # the slot runs parallel to the lever, off B
@@ -109,9 +109,9 @@ class RPR(Constructed):
                            f"{B}{F}, offset from {B}): the velocity of {A} sliding relative "
                            f"to {A1}.", component=C.SLIDING, relative=(A, A1))
             else:
-                n2 = b.add(Kind.LINE, Op.LINE_ALONG, (B, A1), f"slot line ∥ {B}{A}", a, None,
-                           "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{A}",
-                           f"Through {a} draw a line parallel to the slot {B}{A}: the "
+                n2 = b.add(Kind.LINE, Op.LINE_ALONG, (B, A1), f"slot line ∥ {B}{A1}", a, None,
+                           "sliding", f"(v_{A})_{A1}", f"(v_{A})_{A1} ∥ {B}{A1}",
+                           f"Through {a} draw a line parallel to the slot {B}{A1}: the "
                            f"velocity of {A} sliding relative to {A1}.",
                            component=C.SLIDING, relative=(A, A1))
             b.add(Kind.INTERSECTION, Op.INTERSECT, (), a1, None, a1, "intersection",
@@ -119,8 +119,8 @@ class RPR(Constructed):
                   f"They meet at {a1}: {b_}{a1} is the velocity of {A1} and {a1}{a} the "
                   f"sliding velocity.", (n1, n2), component=C.RESULTANT)
             b.add(Kind.MEASURE, Op.OMEGA, (lev, B, A1), f"ω_{lev}", None, None,
-                  "angular_velocity", f"ω_{lev}", f"ω_{lev} = {b_}{a1} / {B}{A}",
-                  f"The lever turns at the velocity of {A1} divided by {B}{A}.",
+                  "angular_velocity", f"ω_{lev}", f"ω_{lev} = {b_}{a1} / {B}{A1}",
+                  f"The lever turns at the velocity of {A1} divided by {B}{A1}.",
                   component=C.RELATIVE, link=lev, reads=f"{b_}{a1}")
             b.add(Kind.MEASURE, Op.SLIDE_VELOCITY, (A,), "v_slide", None, None, "sliding",
                   f"(v_{A})_{A1}", f"(v_{A})_{A1} = {a1}{a}",
@@ -128,15 +128,16 @@ class RPR(Constructed):
                   f"from {B}).", component=C.SLIDING)
         else:
             k1 = b.fresh(A1)
-            b.add(Kind.VECTOR, Op.CENTRIPETAL, (lev, B, A1), f"{b_}{k1}", b_, k1,
-                  "centripetal", f"(a_{A1})_{B}^n", f"(a_{A1})_{B}^n = ω_{lev}² × {B}{A}",
-                  f"From {b_} draw the centripetal acceleration of {A1} about {B}, ω² × "
-                  f"{B}{A}, pointing towards {B}; call its end {k1}.",
+            bn = b.names.named(B)          # o₄p₄′ about O4 where the pole is o₂ = o₄
+            b.add(Kind.VECTOR, Op.CENTRIPETAL, (lev, B, A1), f"{bn}{k1}", b_, k1,
+                  "centripetal", f"(a_{A1})_{B}^n", f"(a_{A1})_{B}^n = ω_{lev}² × {B}{A1}",
+                  f"From {bn} draw the centripetal acceleration of {A1} about {B}, ω² × "
+                  f"{B}{A1}, pointing towards {B}; call its end {k1}.",
                   component=C.CENTRIPETAL, link=lev)
-            n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"line ⟂ {B}{A}", k1, None,
+            n1 = b.add(Kind.LINE, Op.LINE_PERP, (B, A1), f"line ⟂ {B}{A1}", k1, None,
                        "tangential",
-                       f"(a_{A1})_{B}^t", f"(a_{A1})_{B}^t = α_{lev} × {B}{A} ⟂ {B}{A}",
-                       f"Through {k1} draw a line perpendicular to {B}{A} for the tangential "
+                       f"(a_{A1})_{B}^t", f"(a_{A1})_{B}^t = α_{lev} × {B}{A1} ⟂ {B}{A1}",
+                       f"Through {k1} draw a line perpendicular to {B}{A1} for the tangential "
                        f"acceleration of {A1}, of unknown length.", component=C.TANGENTIAL,
                        link=lev, relative=(A1, B))
             n2 = b.add(Kind.LINE, Op.CORIOLIS_OFFSET_LINE, (A,), "Coriolis offset line", a,
@@ -155,13 +156,13 @@ class RPR(Constructed):
                   f"From {a1} the Coriolis acceleration 2ωv, perpendicular to the slot, to "
                   f"{k2}.", component=C.CORIOLIS, link=lev)
             b.add(Kind.VECTOR, Op.JOIN, (A,), f"{k2}{a}", k2, a, "sliding",
-                  f"(a_{A})_{A1}^slide", f"(a_{A})_{A1} = {k2}{a} ∥ {B}{A}",
+                  f"(a_{A})_{A1}^slide", f"(a_{A})_{A1} = {k2}{a} ∥ {B}{A1}",
                   f"{k2}{a}, along the slot, is the sliding acceleration of {A} relative to "
                   f"the lever.", component=C.SLIDING)
             b.add(Kind.MEASURE, Op.ALPHA, (lev, B, A1), f"α_{lev}", None, None,
-                  "angular_acceleration", f"α_{lev}", f"α_{lev} = {k1}{a1} / {B}{A}",
+                  "angular_acceleration", f"α_{lev}", f"α_{lev} = {k1}{a1} / {B}{A1}",
                   f"The lever's angular acceleration is its tangential acceleration "
-                  f"{k1}{a1} divided by {B}{A}.", component=C.TANGENTIAL, link=lev,
+                  f"{k1}{a1} divided by {B}{A1}.", component=C.TANGENTIAL, link=lev,
                   reads=f"{k1}{a1}")
             b.add(Kind.MEASURE, Op.SLIDE_ACCELERATION, (A,), "a_slide", None, None, "sliding",
                   f"(a_{A})_{A1}", f"(a_{A})_{A1} = {k2}{a}",

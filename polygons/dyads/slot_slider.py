@@ -155,7 +155,7 @@ class SlotSlider:
         op = Op.SLIDER_VELOCITY if b.velocity else Op.SLIDER_ACCELERATION
         b.add(Kind.MEASURE, op, (X,), f"{b.q}_{X}", None, None, "slider",
               f"{b.q}_{X} along guide", f"{b.q}_{X} = {pole}{x}",
-              f"The block's {b.what} is {pole}{x}, signed along the guide direction.",
+              f"The block's {b.what} is {pole}{x}, along its guide.",
               component=C.RESULTANT)
         op = Op.SLIDE_VELOCITY if b.velocity else Op.SLIDE_ACCELERATION
         b.add(Kind.MEASURE, op, (X,), "v_slide" if b.velocity else "a_slide", None, None,

@@ -212,7 +212,7 @@ class Triad:
                    "relative_velocity", f"(v_{S})_{D}", f"(v_{S})_{D} ⟂ {D}{C}",
                    f"{S} is also on {D}{C} produced: through {d} draw a line ⟂ {D}{C}.",
                    component=Cm.CONSTRUCTION, link=LC)
-        Triad._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}")
+        Triad._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}", pivots=(A, D))
         n3 = b.add(Kind.LINE, Op.LINE_PERP, (S, X), f"line ⟂ {S}{X}", s, None,
                    "relative_velocity", f"(v_{X})_{S}", f"(v_{X})_{S} ⟂ {S}{X}",
                    f"{X} and {S} are points of the plate: through {s} draw a line "
@@ -232,7 +232,7 @@ class Triad:
                        "relative_velocity", f"(v_{X})_{E}", f"(v_{X})_{E} ⟂ {E}{X}",
                        f"Through {e} draw a line ⟂ {E}{X}: the velocity of {X} relative to "
                        f"{E}.", component=Cm.CONSTRUCTION, link=LX)
-            self._meet(b, x, X, (n3, n4))
+            self._meet(b, x, X, (n3, n4), pivots=(E,))
             self._rates(b, Op.OMEGA)
             return
         k = [b.fresh(B), b.fresh(S), b.fresh(C), b.fresh(S), b.fresh(X), b.fresh(X)]
@@ -244,12 +244,12 @@ class Triad:
         self._normal(b, LC, D, C, d, k[2], f"(a_{C})_{D}^n")
         self._normal(b, P, C, S, k[2], k[3], f"(a_{S})_{C}^n")
         n2 = self._tangent_line(b, D, C, k[3], None, (C, D, S, C))
-        self._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}")
+        self._meet(b, s, S, (n1, n2), of=f"the auxiliary point {S}", pivots=(A, D))
         self._normal(b, P, S, X, s, k[4], f"(a_{X})_{S}^n")
         n3 = self._tangent_line(b, S, X, k[4], P)
         self._normal(b, LX, E, X, e, k[5], f"(a_{X})_{E}^n")
         n4 = self._tangent_line(b, E, X, k[5], LX)
-        self._meet(b, x, X, (n3, n4))
+        self._meet(b, x, X, (n3, n4), pivots=(E,))
         # each α from its own tangential part: x₁x (plate), b₁b, c₁c, x₂x (the links), the
         # end of each centripetal vector to the point — never the whole relative acceleration
         self._rates(b, Op.ALPHA, {P: (k[4], X), LB: (k[0], B), LC: (k[2], C), LX: (k[5], X)})
@@ -270,10 +270,11 @@ class Triad:
 
         def read(L, O, Q):
             """(the vector the rate is read from, the words saying so)."""
+            o = b.names.named(O)        # dc about the fixed D (the pole o = d = e)
             if tangential is None:
-                return f"{V(O)}{V(Q)}", f"{V(O)}{V(Q)}"
+                return f"{o}{V(Q)}", f"{o}{V(Q)}"
             t = f"{tangential[L][0]}{V(tangential[L][1])}"
-            return t, f"{t} (the tangential part of {V(O)}{V(Q)})"
+            return t, f"{t} (the tangential part of {o}{V(Q)})"
         vec, words = read(P, S, X)
         plate = f"{self.b}{self.c}{self.x}"   # the plate named for its corners (link P carries it)
         b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
@@ -289,19 +290,27 @@ class Triad:
                   f"The {what} of {L} is {words} divided by {O}{Q}.", component=comp, link=L)
 
     @staticmethod
-    def _meet(b: Builder, p, P, lines, of=None, tail="") -> None:
+    def _meet(b: Builder, p, P, lines, of=None, tail="", pivots=()) -> None:
         """The step where two construction lines meet at the vertex ``p``: pole → p is the
         velocity (acceleration) of ``P`` (in words ``of``, then ``tail``)."""
-        b.add(Kind.INTERSECTION, Op.INTERSECT, (), p, None, p, "intersection", f"{b.q}_{P}",
-              f"{p} = intersection of the two lines",
-              f"The lines meet at {p}: {b.names.pole}{p} is the {b.what} of {of or P}{tail}.",
+        # the resultant named from the fixed pivot one of its lines turns about, as the book
+        # writes it (ds, ex where the pole is o = d = e; as the four-bar's dc)
+        # (``pivots``: the outer pins the point is read about, the first fixed one names it)
+        pole = b.names.pole
+        fixed = next((q for q in pivots if q in b.scene.ground), None)
+        about = b.names.named(fixed) if fixed else pole
+        b.add(Kind.INTERSECTION, Op.INTERSECT, (fixed,) if fixed else (), p, None, p,
+              "intersection", f"{b.q}_{P}", f"{p} = intersection of the two lines",
+              f"The lines meet at {p}: {about}{p} is the {b.what} of {of or P}{tail}.",
               lines, component=Component.RESULTANT)
 
     @staticmethod
     def _normal(b: Builder, L, P, Q, frm, to, name) -> None:
-        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, Q), f"{frm}{to}", frm, to, "centripetal",
+        # from the pole: named from its centre's own letter (dc₁ about the fixed D)
+        fn = b.names.named(P) if frm == b.names.pole else frm
+        b.add(Kind.VECTOR, Op.CENTRIPETAL, (L, P, Q), f"{fn}{to}", frm, to, "centripetal",
               name, f"{name} = ω_{L}² × {P}{Q}",
-              f"From {frm} draw the centripetal acceleration of {Q} relative to {P}, ω_{L}² × "
+              f"From {fn} draw the centripetal acceleration of {Q} relative to {P}, ω_{L}² × "
               f"{P}{Q}, pointing from {Q} towards {P}; call its end {to}.",
               component=Component.CENTRIPETAL, link=L)
 

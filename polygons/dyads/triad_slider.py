@@ -325,7 +325,7 @@ class TriadSlider:
         b.add(Kind.MEASURE, Op.SLIDER_VELOCITY if vel else Op.SLIDER_ACCELERATION, (X,),
               f"{b.q}_{X}", None, None, "slider", f"{b.q}_{X} along guide",
               f"{b.q}_{X} = {pole}{x}",
-              f"The block's {b.what} is {pole}{x}, signed along the guide direction.",
+              f"The block's {b.what} is {pole}{x}, along its guide.",
               component=Component.RESULTANT)
 
 

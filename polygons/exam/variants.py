@@ -42,6 +42,7 @@ import random
 from dataclasses import dataclass
 from typing import Mapping
 
+from .. import notation
 from ..errors import PolygonsError, SceneError
 from ..evaluate import Solution, solve
 from ..exam_table import ExamSpec, spec as exam_spec
@@ -158,7 +159,14 @@ def words(expr: str, sol: Solution | None = None) -> str:
 
 
 def symbol(expr: str) -> str:
+    """The asked quantity's symbol in the notation table's spelling (docs/notation.md), as
+    the drawings and the handout name it: v_P2, (v_P2)_P4, (a_P4)ⁿ_O4, ω_O4P4 — never the
+    labels run together (v_P2P4)."""
     fn, args = _args(expr)
+    if fn in ("v", "a") and len(args) == 2:
+        return notation.quantity(f"({fn}_{args[0]})_{args[1]}")
+    if fn in ("an", "at") and len(args) == 2:
+        return notation.quantity(f"(a_{args[0]})_{args[1]}^{fn[1]}")
     return f"{_SYMBOL[fn]}_{''.join(args)}"
 
 

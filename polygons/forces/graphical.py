@@ -55,6 +55,7 @@ import numpy as np
 from ..errors import UnsupportedError
 from ..model import FRAME, check_handles
 from ..plan import make_plan
+from . import words
 from .model import cross, perp, position
 from .states import Analysis, State
 
@@ -271,35 +272,9 @@ def _M(ks, about) -> float:
                 for k in ks), 0.0)
 
 
-def moment_words(m: float) -> str:
-    """A moment as a book writes it: its magnitude and its sense ('157.76 N m CW'), never a
-    signed number with '(CCW)' after it."""
-    if abs(m) < 1e-12:
-        return "0 N m"
-    return f"{abs(m):.6g} N m {'CCW' if m > 0 else 'CW'}"
-
-
-def sense_words(force) -> str:
-    """The sense of a force in words, with its angle: 'down and to the left (∠213.4°)'."""
-    deg = math.degrees(math.atan2(float(force[1]), float(force[0]))) % 360.0
-    names = ("to the right", "up and to the right", "up", "up and to the left",
-             "to the left", "down and to the left", "down", "down and to the right")
-    return f"{names[int(((deg + 22.5) % 360.0) // 45.0)]} (∠{deg:.1f}°)"
-
-
-def found_words(f) -> str:
-    """A force found by moments: its magnitude and its sense in words ('27.46 N, down and to
-    the left (∠213.4°)'), not the signed value along the normal chosen."""
-    if abs(f.value) < 1e-12:
-        return "0 N"
-    return f"{abs(f.value):.6g} N, {sense_words(f.force)}"
-
-
-def balance_words(known: float, effort: float) -> str:
-    """The input torque's moment equation written as a book would: 'T − 157.76 N m = 0,
-    T = 157.76 N m CCW' (``known``: the known forces' moment about the pivot, CCW +)."""
-    sign = "−" if known < 0 else "+"
-    return f"T {sign} {abs(known):.6g} N m = 0, T = {moment_words(effort)}"
+# the words of a force result: the one formatter (polygons.forces.words)
+moment_words, sense_words, found_words, balance_words = (
+    words.moment_words, words.sense_words, words.found_words, words.balance_words)
 
 
 def _words(body, about, m):
@@ -427,7 +402,7 @@ def _rpr(b: _Board, gi, d, bodies, ks, allk) -> Group:
                  bodies, allk, (nn,), (fo,), (ra,),
                  (f"moments about {d.pivot} of {lever}'s known forces: "
                   f"{moment_words(m)}; the slot's force at {d.pin} has arm "
-                  f"{arm * 1e3 + 0.0:.6g} mm: N = {abs(nval):.6g} N",))
+                  f"{abs(arm) * 1e3:.6g} mm: N = {abs(nval):.6g} N",))
 
 
 def _moving_guide(b: _Board, gi, d, bodies, ks, allk) -> Group:
@@ -574,7 +549,7 @@ def _triad(gi, d, bodies, ks, allk, P, K, M, pin, file, model, joints) -> Group:
     moments = tuple(f"moments about {c} of {link}'s known forces: {moment_words(ms[q])}"
                     for q, (link, o, c) in enumerate(legs)) + (
         f"moments about the Assur point {sname}: known {moment_words(mtot)}, "
-        f"{fn[k].name} arm {arm * 1e3 + 0.0:.6g} mm: {ak + 0.0:.6g} N",) + moments_truss
+        f"{fn[k].name} (its arm {abs(arm) * 1e3:.6g} mm) = {found_words(fn[k])}",) + moments_truss
     plate = d.plate if d.ternary else "the triangle " + ", ".join(d.plate_links)
     return Group(gi + 1, "triad", f"group {gi + 1}: the triad (class III) plate {plate}, "
                  f"links {d.link_b}, {d.link_c}, {d.link_x} (corners {d.b}, {d.c}, {d.x})",
