@@ -1,9 +1,9 @@
-"""The trust campaign's book cases (cases/book-*.toml, and tests/data/book-khurmi-whitworth.toml
-kept out of cases/ for the suite's time: every case joins ~40 parametrised tests): every `exact`
-of their [[answers]] is recomputed here from the mechanism's own loop closure
-(tests/adversary_oracle.py: Newton and implicit derivatives, never the solver's code) to 1e-9
-relative; tests/test_cases.py then holds the solver to those values (here for the one in
-tests/data)."""
+"""The trust campaign's book cases (cases/book-hibbeler-wheel-incline.toml, and
+tests/data/book-khurmi-whitworth.toml and book-offset-engine-retarding.toml, kept out of cases/
+for the suite's time: every case joins ~40 parametrised tests, ~3.5 s): every `exact` of their
+[[answers]] is recomputed here from the mechanism's own loop closure (tests/adversary_oracle.py:
+Newton and implicit derivatives, never the solver's code) to 1e-9 relative; tests/test_cases.py
+holds the solver to the values of the one in cases/, the test below to those in tests/data."""
 import math
 from pathlib import Path
 
@@ -114,6 +114,17 @@ def test_the_book_cases_exact_answers_come_from_their_loop_closure(stem):
     for a in scene.answers:
         want = closed[a.quantity] if a.mode == "signed" else abs(closed[a.quantity])
         assert a.exact == pytest.approx(want, rel=1e-9, abs=1e-12), (stem, a.quantity)
+
+
+@pytest.mark.parametrize("stem", ["book-offset-engine-retarding", "book-khurmi-whitworth"])
+def test_the_book_cases_in_tests_data_are_solved_to_their_exact_answers(stem):
+    """As tests/test_cases.py does for cases/: every answer of the case, solved, is its exact."""
+    from polygons.report import check_answers
+    checks = check_answers(polygons.solve(DATA / f"{stem}.toml").solution)
+    assert len(checks) >= 5
+    for c in checks:
+        assert c.compared == pytest.approx(c.answer.exact, rel=1e-9, abs=1e-12), (
+            stem, c.answer.quantity)
 
 
 def test_the_whitworth_in_the_books_words_is_solved_exactly():
