@@ -3,13 +3,21 @@ project modules it imports (at any depth of the file, lazy imports included)."""
 from __future__ import annotations
 
 import ast
+from functools import cache
 from pathlib import Path
+from types import MappingProxyType
+from typing import Mapping
 
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = ("polygons", "diagrams")
 
 
 def module_files() -> dict[str, Path]:
+    return dict(_module_files())
+
+
+@cache
+def _module_files() -> dict[str, Path]:
     out = {}
     for pkg in PACKAGES:
         for f in sorted((ROOT / pkg).rglob("*.py")):
@@ -36,22 +44,45 @@ def _resolve(mod: str, is_pkg: bool, node: ast.ImportFrom, known) -> list[str]:
     return names
 
 
+@cache
+def tree(path: Path) -> ast.Module:
+    """The parsed source of ``path``, read once per test process (the layer tests walk every
+    module's tree several times; nothing here changes a tree)."""
+    return ast.parse(path.read_text(encoding="utf-8"))
+
+
+@cache
+def nodes(path: Path) -> tuple[ast.AST, ...]:
+    """Every node of :func:`tree` (``ast.walk`` order), once per test process."""
+    return tuple(ast.walk(tree(path)))
+
+
 def imports(top_level_only: bool = False) -> dict[str, set[str]]:
     """module → every name it imports (project modules resolved, others as written).
-    ``top_level_only``: only the imports executed when the module is imported."""
-    files = module_files()
-    graph: dict[str, set[str]] = {}
+    ``top_level_only``: only the imports executed when the module is imported.
+    (A fresh copy each call of the graph read once per test process.)"""
+    return {m: set(n) for m, n in graph(top_level_only).items()}
+
+
+@cache
+def graph(top_level_only: bool = False) -> Mapping[str, frozenset[str]]:
+    """:func:`imports` read once per test process, read-only (no copy)."""
+    return MappingProxyType(_imports(top_level_only))
+
+
+def _imports(top_level_only: bool) -> dict[str, frozenset[str]]:
+    files = _module_files()
+    graph: dict[str, frozenset[str]] = {}
     for mod, f in files.items():
-        tree = ast.parse(f.read_text(encoding="utf-8"))
+        tree_ = tree(f)
         is_pkg = f.name == "__init__.py"
-        nodes = tree.body if top_level_only else list(ast.walk(tree))
         found: set[str] = set()
-        for node in nodes:
+        for node in (tree_.body if top_level_only else nodes(f)):
             if isinstance(node, ast.Import):
                 found.update(a.name for a in node.names)
             elif isinstance(node, ast.ImportFrom):
                 found.update(_resolve(mod, is_pkg, node, files))
-        graph[mod] = found
+        graph[mod] = frozenset(found)
     return graph
 
 

@@ -8,7 +8,7 @@ import xml.dom.minidom
 import pytest
 
 import polygons
-from conftest import ROOT
+from conftest import ROOT, cli
 from polygons.errors import SceneError, SceneSyntaxError
 from polygons.evaluate import solve as core_solve
 from polygons.report import table, to_json
@@ -71,8 +71,7 @@ def test_result_reports_are_the_commands_reports():
     core = core_solve(load_scene(CASE))
     assert json.loads(res.to_json()) == json.loads(json.dumps(to_json(core)))
     assert res.table() == table(core)
-    out = subprocess.run([sys.executable, "-m", "polygons", "solve", str(CASE), "--json"],
-                         capture_output=True, text=True, cwd=ROOT)
+    out = cli("solve", CASE, "--json", cwd=ROOT)
     assert json.loads(out.stdout)["links"] == json.loads(res.to_json())["links"]
 
 

@@ -1,14 +1,13 @@
 """solve_many: many variants of one scene in one vectorised pass, checked row by row against
 the independent closed forms (tests/analytic.py); failed rows are data, never a crash."""
 import math
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import analytic
+from conftest import cli
 from scenes import crank_driver, m
 from polygons.batch import solve_many
 from polygons.errors import UnknownLabelError
@@ -118,9 +117,8 @@ def test_bad_values_and_unknown_names():
 
 
 def test_cli_vary_writes_one_csv_row_per_value(tmp_path):
-    out = subprocess.run([sys.executable, "-m", "polygons", "sweep", "cases/s001-we6.toml",
-                          "--vary", "AB=60..100mm:5", "--out", str(tmp_path)],
-                         capture_output=True, text=True, cwd=ROOT)
+    out = cli("sweep", "cases/s001-we6.toml", "--vary", "AB=60..100mm:5", "--out", tmp_path,
+              cwd=ROOT)
     assert out.returncode == 0, out.stderr
     assert out.stderr == ""
     csv = next(tmp_path.glob("*.csv")).read_text().splitlines()
@@ -131,9 +129,7 @@ def test_cli_vary_writes_one_csv_row_per_value(tmp_path):
 
 
 def test_cli_vary_rejects_a_bad_range_in_one_line(tmp_path):
-    out = subprocess.run([sys.executable, "-m", "polygons", "sweep", "cases/s001-we6.toml",
-                          "--vary", "AB=60..", "--out", str(tmp_path)],
-                         capture_output=True, text=True, cwd=ROOT)
+    out = cli("sweep", "cases/s001-we6.toml", "--vary", "AB=60..", "--out", tmp_path, cwd=ROOT)
     assert out.returncode != 0
     assert out.stderr.startswith("polygons: error:") and out.stderr.count("\n") == 1
 

@@ -333,8 +333,9 @@ def test_report_lines_only_with_the_tables():
 
 # ---------------------------------------------------------------- command and drawing
 def _run(*args):
-    return subprocess.run([sys.executable, "-m", "polygons", *map(str, args)],
-                          capture_output=True, text=True, cwd=ROOT)
+    """``polygons ARGS`` in this process (conftest.cli: the entry point function)."""
+    from conftest import cli
+    return cli(*args, cwd=ROOT)
 
 
 def test_centres_command_table_json_and_svg(tmp_path):

@@ -1,4 +1,8 @@
-"""The CLI through its real entry point: output, JSON shape, and one-line errors."""
+"""The CLI through its entry point: output, JSON shape, and one-line errors.
+
+Most tests call the entry point function in this process (conftest.cli: ``main(argv)``); the
+console script runs as a real process where that is what is checked: byte-identical output
+across processes, exit codes and nothing but one line on a real stderr."""
 import json
 import subprocess
 import sys
@@ -6,12 +10,18 @@ from pathlib import Path
 
 import pytest
 
-from conftest import CASES
+from conftest import CASES, cli
 
 EXE = Path(sys.executable).with_name("polygons")
 
 
 def run(*args, cwd=None):
+    """``polygons ARGS`` in this process (the entry point function)."""
+    return cli(*args, cwd=cwd)
+
+
+def run_process(*args, cwd=None):
+    """``polygons ARGS`` as a separate process (the console script)."""
     cmd = [str(EXE)] if EXE.exists() else [sys.executable, "-m", "polygons"]
     return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
                           cwd=cwd, timeout=120)
@@ -41,8 +51,8 @@ def test_solve_json_has_the_documented_keys():
 
 
 def test_json_is_byte_identical_across_runs():
-    a = run("solve", CASES / "s003-fig7.toml", "--json").stdout
-    b = run("solve", CASES / "s003-fig7.toml", "--json").stdout
+    a = run_process("solve", CASES / "s003-fig7.toml", "--json").stdout
+    b = run_process("solve", CASES / "s003-fig7.toml", "--json").stdout
     assert a == b and a
 
 
@@ -108,9 +118,9 @@ def test_toggle_position_names_the_step_and_the_parallel_lines(write_scene):
 
 
 def test_missing_file_and_unknown_command():
-    out = run("solve", "no/such/file.toml")
+    out = run_process("solve", "no/such/file.toml")
     assert out.returncode != 0 and "no such scene file" in out.stderr
-    out = run("frobnicate")
+    out = run_process("frobnicate")
     assert out.returncode == 2 and "invalid choice" in out.stderr
     assert "Traceback" not in out.stderr
 
@@ -194,6 +204,6 @@ def test_dev_zero_and_a_directory_are_one_line_errors(tmp_path):
 
 
 def test_usage_error_is_exit_2_and_one_line():
-    out = run("solve", "--no-such-flag", CASES / "s001-we4.toml")
+    out = run_process("solve", "--no-such-flag", CASES / "s001-we4.toml")
     assert out.returncode == 2 and out.stderr.count("\n") == 1
     assert out.stderr.startswith("polygons: error: ")

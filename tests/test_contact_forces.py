@@ -566,12 +566,10 @@ def test_check_grades_a_student_s_force_answers():
     """`polygons check --measured Tin=1.75 "Fc(R)=100"`: force answers graded against the
     force analysis with the case's stated tolerance (3 %), a wrong one off with a hint; a case
     without loads refuses them in one line."""
-    import subprocess
-    import sys as _sys
+    from conftest import cli
 
     def run(*args):
-        p = subprocess.run([_sys.executable, "-m", "polygons", "check", *args],
-                           capture_output=True, text=True)
+        p = cli("check", *args)          # the entry point function, in this process
         return p.returncode, p.stdout, p.stderr
     case = str(CASES / "cam-roller-forces.toml")
     code, out, _ = run(case, "--measured", "Tin=1.75", "Fc(R)=100", "v(R)=0.36")

@@ -40,6 +40,27 @@ def solved(path):
     return _cache[path]
 
 
+_svg = {}
+_readings = {}
+
+
+def svg_of(d) -> str:
+    """``to_svg(d)`` of a drawing of :func:`solved`, written once per test process (several
+    tests read the same SVG back; the drawings it caches live as long, so ids stay theirs)."""
+    hit = _svg.get(id(d))
+    if hit is None or hit[0] is not d:
+        hit = _svg[id(d)] = (d, to_svg(d))
+    return hit[1]
+
+
+def readings(path) -> dict:
+    """``measure.readings_of`` of a case's drawings (:func:`solved`), once per test process
+    (read only: measure.compare reads them)."""
+    if path not in _readings:
+        _readings[path] = measure.readings_of(solved(path)[1])
+    return _readings[path]
+
+
 def finals(drawings):
     return {d.kind: d for d in drawings if d.stage is None}
 
@@ -67,7 +88,7 @@ def test_every_case_has_the_three_diagrams_and_every_stage(path):
 def test_every_svg_parses_with_title_desc_and_mm_page(path):
     sol, ds = solved(path)
     for d in ds:
-        data = to_svg(d)
+        data = svg_of(d)
         root = ET.fromstring(data)
         assert root.tag == SVG + "svg"
         assert root.get("width").endswith("mm") and root.get("height").endswith("mm")
@@ -153,7 +174,7 @@ def test_arrows_join_their_vertices_in_the_sense_of_the_step_vectors(path):
     for kind, d in finals(ds).items():
         if kind == "space":
             continue
-        r = measure.read_svg(to_svg(d))
+        r = measure.read_svg(svg_of(d))
         drawn = {(v.frm, v.to): v for v in r.vectors}
         for v in r.vectors:          # tail at `frm`, tip at `to`
             if v.mm < 0.05:          # shorter than a vertex mark: its ends share one mark
@@ -278,7 +299,7 @@ def test_no_two_vectors_overlap_on_one_line(path):
     for d in ds:
         if d.kind == "space":
             continue
-        r = measure.read_svg(to_svg(d))
+        r = measure.read_svg(svg_of(d))
         segs = [(f"{v.frm}{v.to}", v.drawn) for v in r.vectors]
         assert not _collinear_overlaps(segs), (d.name, _collinear_overlaps(segs))
         ticks = [it for it in d.items() if isinstance(it, Segment) and it.cls.startswith("leader")]
@@ -342,7 +363,7 @@ def test_vertices_closer_than_a_label_are_drawn_again_enlarged(path):
             continue
         lay = d.meta["layout"]
         h = _vertex_height(lay)
-        pts = measure.read_svg(to_svg(d)).vertices      # as written, page coordinates
+        pts = measure.read_svg(svg_of(d)).vertices      # as written, page coordinates
         off = d.meta["content_offset"]
         names = sorted(pts)
         for i, a in enumerate(names):
@@ -487,7 +508,7 @@ def test_scene_diagram_table_forces_scale_and_rejects_typos():
 @pytest.mark.parametrize("path", FILES, ids=IDS)
 def test_scaled_lengths_agree_with_the_tutorial_within_drawing_tolerance(path):
     sol, ds = solved(path)
-    rows = measure.compare(sol, measure.readings_of(ds))
+    rows = measure.compare(sol, readings(path))
     for row in rows:
         if row.scaled is None or row.tutorial is None:
             continue
@@ -502,13 +523,13 @@ def test_scaled_lengths_agree_with_the_tutorial_within_drawing_tolerance(path):
 @pytest.mark.parametrize("path", FILES, ids=IDS)
 def test_scaled_lengths_are_the_exact_values_to_a_ruler_division(path):
     sol, ds = solved(path)
-    for row in measure.compare(sol, measure.readings_of(ds)):
+    for row in measure.compare(sol, readings(path)):
         if row.scaled is None or row.exact is None:
             continue
         assert abs(row.scaled - row.exact) <= row.resolution + 1e-6 * abs(row.exact) + 1e-12, \
             (row.quantity, row.scaled, row.exact)
     # without the ruler's rounding the drawing gives the exact numbers to 0.01 %
-    for row in measure.compare(sol, measure.readings_of(ds), ruler=None):
+    for row in measure.compare(sol, readings(path), ruler=None):
         if row.scaled is None or row.exact is None or row.exact == 0:
             continue
         if not row.quantity.startswith(("dir_", "angle")):
@@ -518,7 +539,7 @@ def test_scaled_lengths_are_the_exact_values_to_a_ruler_division(path):
 @pytest.mark.parametrize("path", FILES, ids=IDS)
 def test_senses_read_off_the_drawings_agree_with_the_tutorial(path):
     sol, ds = solved(path)
-    rows = [r for r in measure.compare(sol, measure.readings_of(ds))
+    rows = [r for r in measure.compare(sol, readings(path))
             if r.signed is not None and r.sense in ("CW", "CCW") and not r.slip
             and r.quantity.startswith(("omega", "alpha"))]
     for r in rows:
@@ -528,7 +549,7 @@ def test_senses_read_off_the_drawings_agree_with_the_tutorial(path):
 def test_fig7_scaled_values():
     sol, ds = solved(CASES / "s003-fig7.toml")
     got = {(r.quantity, r.tutorial): r.scaled
-           for r in measure.compare(sol, measure.readings_of(ds))}
+           for r in measure.compare(sol, readings(CASES / "s003-fig7.toml"))}
     assert got[("v(P2)", 1.048)] == pytest.approx(1.045, abs=0.006)
     assert got[("cor(P2)", 1.96)] == pytest.approx(1.96, abs=0.015)
     assert got[("omega(O4P4)", 1.216)] == pytest.approx(1.216, rel=0.01)

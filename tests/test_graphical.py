@@ -11,14 +11,13 @@ from __future__ import annotations
 
 import cmath
 import math
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import analytic
+from conftest import cli
 from polygons.errors import PolygonsError, UnsupportedError
 from polygons.forces import analyse, has_forces
 from polygons.forces import graphical, zhukovsky
@@ -160,8 +159,7 @@ def test_a_slider_drivers_effort_is_a_force_without_a_sense(tmp_path):
     src = (ROOT / "cases" / "new-elliptic-trammel.toml").read_text()
     case = tmp_path / "t.toml"
     case.write_text(src + '\n[masses.AB]\nmass = "2 kg"\n')
-    out = subprocess.run([sys.executable, "-m", "polygons", "forces", str(case)],
-                         capture_output=True, text=True, cwd=ROOT)
+    out = cli("forces", case, cwd=ROOT)
     assert out.returncode == 0, out.stderr
     line = next(x for x in out.stdout.splitlines() if "(Newton–Euler)" in x)
     assert " N towards " in line and " CW" not in line and "CCW" not in line
@@ -271,9 +269,8 @@ def test_drawings_of_every_loaded_case(analysed):
 
 
 def test_forces_svg_writes_the_force_methods(tmp_path):
-    out = subprocess.run([sys.executable, "-m", "polygons", "forces",
-                          str(ROOT / "cases" / "forces-toggle-press.toml"), "--svg",
-                          str(tmp_path)], capture_output=True, text=True, cwd=ROOT)
+    out = cli("forces", ROOT / "cases" / "forces-toggle-press.toml", "--svg", tmp_path,
+              cwd=ROOT)
     assert out.returncode == 0, out.stderr
     names = {p.name for p in tmp_path.iterdir()}
     assert {"group-instant-1.svg", "group-instant-2.svg", "group-instant-3.svg",

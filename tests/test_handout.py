@@ -4,12 +4,11 @@ import json
 import re
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-from conftest import CASES, case_files
+from conftest import CASES, case_files, cli
 from polygons.narrate import substitute
 from polygons.cli.check import grade, offered, parse_measured, resolve
 from polygons.evaluate import solve
@@ -20,13 +19,9 @@ from polygons.scene import load_scene
 from diagrams.handout import (figures, formula_with_numbers, handout, redact_answers,
                               textbook_name, worksheet_questions)
 
-EXE = Path(sys.executable).with_name("polygons")
-
-
 def run(*args, cwd=None):
-    cmd = [str(EXE)] if EXE.exists() else [sys.executable, "-m", "polygons"]
-    return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
-                          cwd=cwd, timeout=120)
+    """``polygons ARGS`` in this process (conftest.cli: the entry point function)."""
+    return cli(*args, cwd=cwd)
 
 
 def text_of(page: str) -> str:

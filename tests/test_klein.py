@@ -156,8 +156,8 @@ def test_bennett_drawn_stage_by_stage(tmp_path):
 
 
 def test_not_a_slider_crank_is_refused_in_one_line():
-    r = subprocess.run([sys.executable, "-m", "polygons", "solve",
-                        str(ROOT / "cases" / "s001-we3.toml"), "--klein"], capture_output=True, text=True)
+    from conftest import cli
+    r = cli("solve", ROOT / "cases" / "s001-we3.toml", "--klein")
     assert r.returncode == 1
     assert r.stderr.count("\n") == 1 and "slider-crank" in r.stderr
 

@@ -8,7 +8,7 @@ matplotlib; no import cycle; no module over 800 lines.
 """
 import pytest
 
-from imports import imports, module_files
+from imports import graph, imports, module_files, nodes
 
 LAYERS = ("base", "scene", "plan", "interpreters", "forces", "render", "commands")
 
@@ -75,8 +75,9 @@ def layer_of(mod: str) -> str | None:
     return WHERE[best] if best else None
 
 
-GRAPH = imports()
-MODULES = sorted(GRAPH)
+#: the modules (the import graph's keys); the graph itself is read on first use, once per test
+#: process (tests/imports.py), not at collection in every worker
+MODULES = sorted(module_files())
 
 
 def test_every_module_has_a_layer():
@@ -86,6 +87,7 @@ def test_every_module_has_a_layer():
 @pytest.mark.parametrize("mod", MODULES)
 def test_imports_go_downward_only(mod):
     mine = LAYERS.index(layer_of(mod))
+    GRAPH = graph()
     up = sorted(n for n in GRAPH[mod] if n in GRAPH and n != "polygons"
                 and LAYERS.index(layer_of(n)) > mine)
     assert up == [], f"{mod} ({layer_of(mod)}) imports higher layers: {up}"
@@ -95,6 +97,7 @@ def test_only_the_entry_points_import_the_command_line():
     """polygons.cli is the top: a library module (the exam's variants, once) reaching up into
     a command for a helper is a back arrow.  polygons.api sits beside it (commands) and reads
     the forces' JSON of `polygons forces --json` from it."""
+    GRAPH = graph()
     users = sorted(m for m in MODULES if not m.startswith("polygons.cli")
                    and any(n == "polygons.cli" or n.startswith("polygons.cli.")
                            for n in GRAPH[m]))
@@ -102,6 +105,7 @@ def test_only_the_entry_points_import_the_command_line():
 
 
 def test_the_solver_core_never_imports_diagrams():
+    GRAPH = graph()
     bad = {m: sorted(n for n in GRAPH[m] if n.split(".")[0] == "diagrams")
            for m in MODULES if m.startswith("polygons") and not m.startswith("polygons.cli")
            and m not in ("polygons.api",)}
@@ -112,6 +116,7 @@ def test_the_solver_core_never_imports_diagrams():
                                        ("svgwrite", "diagrams.svg"),
                                        ("matplotlib", "diagrams.plots")])
 def test_one_module_imports_each_heavy_library(lib, owner):
+    GRAPH = graph()
     users = sorted(m for m in MODULES if any(n.split(".")[0] == lib for n in GRAPH[m]))
     assert users == [owner]
 
@@ -160,7 +165,7 @@ def test_no_isinstance_on_a_group_kind_outside_the_groups():
     for mod, path in module_files().items():
         if mod.startswith("polygons.dyads"):
             continue
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in nodes(path):
             if (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "isinstance"
                     and len(node.args) == 2):
                 names = {getattr(n, "id", None) or getattr(n, "attr", None)
@@ -197,7 +202,7 @@ def _joint_table_readers() -> set[str]:
     for mod, path in module_files().items():
         if mod.startswith("polygons.dyads") or mod == "polygons.model":
             continue
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in nodes(path):
             if isinstance(node, ast.Attribute) and node.attr in JOINT_TABLES:
                 v = node.value
                 if getattr(v, "id", None) == "scene" or getattr(v, "attr", None) == "scene":

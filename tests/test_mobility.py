@@ -1,13 +1,11 @@
 """Mobility before solving (Grübler–Kutzbach) and redundant links: a scene that does not move
 with its stated inputs is refused in the textbook's words, naming the links; tested through the
 real entry point (one line on stderr, exit 1)."""
-import subprocess
-import sys
 import tomllib
 
 import pytest
 
-from conftest import case_files
+from conftest import case_files, cli
 from polygons.errors import PolygonsError
 from polygons.mobility import MobilityError, check_redundant_lengths, mobility
 from polygons.plan import make_plan
@@ -62,8 +60,7 @@ def scene(text):
 def run_cli(tmp_path, text):
     f = tmp_path / "scene.toml"
     f.write_text(text)
-    return subprocess.run([sys.executable, "-m", "polygons", "solve", str(f)],
-                          capture_output=True, text=True)
+    return cli("solve", f)           # the entry point function, in this process
 
 
 @pytest.mark.parametrize("path", case_files(), ids=lambda p: p.stem)

@@ -747,13 +747,9 @@ def test_trammel_driven_by_a_crank_to_its_mid_point():
 
 # ---------------------------------------------------------------- the ends of rods and slots
 def _cli(*args):
-    import subprocess
-    import sys
-    from pathlib import Path
-    exe = Path(sys.executable).with_name("polygons")
-    cmd = [str(exe)] if exe.exists() else [sys.executable, "-m", "polygons"]
-    return subprocess.run(cmd + [str(a) for a in args], capture_output=True, text=True,
-                          timeout=120)
+    """``polygons ARGS`` in this process (conftest.cli: the entry point function)."""
+    from conftest import cli
+    return cli(*args)
 
 
 def _edited(tmp_path, case, old, new, name="edited.toml"):
