@@ -25,7 +25,7 @@ from polygons.forces import words as force_words
 from .components import LOOKS
 from . import scale as scales
 from .inset import MIN_VECTOR_MM
-from .labels import bounds, text_box
+from .labels import bounds, first_clear, text_box
 
 KIND_LOOK = {"load": "force-load", "force": "force-load", "weight": "force-load",
              "spring": "force-load", "torque": "force-load", "friction": "force-load",
@@ -299,21 +299,16 @@ def _drawings(groups, fp, st, model):
                         drawn = [(tuple(np.add(ar.tail, ar.shift)),
                                   tuple(np.add(ar.tip, ar.shift))) for ar in arrows]
                         drawn += [(e.a, e.b) for e in extra]
-                        for clear in (True, False):
-                            for off, sd in ((3.0, 1), (6.0, 1), (9.0, 1), (12.0, 1),
-                                            (3.0, -1), (6.0, -1), (9.0, -1), (15.0, 1),
-                                            (12.0, -1), (18.0, 1), (15.0, -1), (21.0, 1)):
-                                at = mid + sd * m2 * off * n
-                                anchor = "start" if sd * m2 * n[0] >= 0 else "end"
-                                bx = text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8,
-                                              anchor)
-                                if not any(bx.overlaps(o) for o in placed) and not (
-                                        clear and any(box_hits_segment(bx, a, b, 0.3)
-                                                      for a, b in drawn)):
-                                    break
-                            else:
-                                continue
-                            break
+                        def box_of(q, mid=mid, n=n, m2=m2, name=name):
+                            at = mid + q[1] * m2 * q[0] * n
+                            return text_box(float(at[0]), float(at[1]) - 1.0, name, 2.8,
+                                            "start" if q[1] * m2 * n[0] >= 0 else "end")
+                        (off, sd), bx = first_clear(
+                            ((3.0, 1), (6.0, 1), (9.0, 1), (12.0, 1), (3.0, -1), (6.0, -1),
+                             (9.0, -1), (15.0, 1), (12.0, -1), (18.0, 1), (15.0, -1),
+                             (21.0, 1)), box_of, placed, drawn)
+                        at = mid + sd * m2 * off * n
+                        anchor = "start" if sd * m2 * n[0] >= 0 else "end"
                         placed.append(bx)
                         labels.append(_text(float(at[0]), float(at[1]) - 1.0, name, 2.8,
                                             anchor))
@@ -464,7 +459,6 @@ def _details(seq, ghosts, stage, verts, k, box, placed, fscale):
 def _one_detail(seq, run, m, k, at, tag, stage, placed):
     """One detail's items (arrows, names, caption) with its left end near ``at[0]`` and its
     top at ``at[1]``, and its box; the boxes of its texts are added to ``placed``."""
-    from .labels import box_hits_segment
     from .layout import arrow_head
     from .model import Arrow, Text
     chain = [np.zeros(2)]
@@ -492,18 +486,15 @@ def _one_detail(seq, run, m, k, at, tag, stage, placed):
         mid = (np.array(tail) + np.array(tip)) / 2
         if n @ (mid - centre) < 0:
             n = -n
-        for clear in (True, False):
-            for off_mm, side in ((2.5, 1), (5.0, 1), (2.5, -1), (8.0, 1), (5.0, -1),
-                                 (11.0, 1), (8.0, -1), (14.0, 1), (11.0, -1)):
-                p = mid + side * off_mm * n
-                anchor = "start" if side * n[0] >= 0 else "end"
-                bx = text_box(float(p[0]), float(p[1]) - 1.0, name, 2.8, anchor)
-                if not any(bx.overlaps(o) for o in placed) and not (clear and any(
-                        box_hits_segment(bx, a, b, 0.3) for a, b in segs)):
-                    break
-            else:
-                continue
-            break
+        def box_of(q, mid=mid, n=n, name=name):
+            p = mid + q[1] * q[0] * n
+            return text_box(float(p[0]), float(p[1]) - 1.0, name, 2.8,
+                            "start" if q[1] * n[0] >= 0 else "end")
+        (off_mm, side), bx = first_clear(
+            ((2.5, 1), (5.0, 1), (2.5, -1), (8.0, 1), (5.0, -1), (11.0, 1), (8.0, -1),
+             (14.0, 1), (11.0, -1)), box_of, placed, segs)
+        p = mid + side * off_mm * n
+        anchor = "start" if side * n[0] >= 0 else "end"
         placed.append(bx)
         dbox = dbox.union(bx)
         items.append(_text(float(p[0]), float(p[1]) - 1.0, name, 2.8, anchor))
@@ -575,7 +566,7 @@ def _stage_caption(g, stage, nst) -> str:
 
 def lever_drawings(an, st):
     """(stem, Drawing) of Zhukovsky's lever at ``st`` and its stages."""
-    from .labels import bounds, box_hits_segment, text_box
+    from .labels import bounds, text_box
     from .layout import FORCE_LEGEND_MM, arrow_head, compose
     from .model import Arrow, Circle, Group, Segment
     from .scale import Scale, round_up
@@ -608,15 +599,8 @@ def lever_drawings(an, st):
             moves += [(dx, dy) for dx in (-6.0, 6.0, -12.0, 12.0)
                       for dy in (0.0, -3.2, 3.2, -6.4, 6.4)]
             moves += [(0.0, (j + 1) // 2 * 3.2 * (1 if j % 2 else -1)) for j in range(9, 30)]
-            for clear in (True, False):
-                for dx, dy in moves:
-                    bx = text_box(x + dx, y + dy, text, size, anchor)
-                    if not any(bx.overlaps(o) for o in placed) and not (clear and any(
-                            box_hits_segment(bx, a, b, 0.3) for a, b in segs)):
-                        break
-                else:
-                    continue
-                break
+            (dx, dy), bx = first_clear(
+                moves, lambda q: text_box(x + q[0], y + q[1], text, size, anchor), placed, segs)
             placed.append(bx)
             labels.append(_text(x + dx, y + dy, text, size, anchor))
 

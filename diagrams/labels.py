@@ -126,6 +126,20 @@ def box_hits_segment(box: Box, p0: Pt, p1: Pt, clearance: float = 0.0) -> bool:
                   box.y1 + clearance)
 
 
+def first_clear(keys, box_of, placed, segs, clearance: float = 0.3):
+    """The first place of ``keys`` whose name box (``box_of(key)``) overlaps no box of
+    ``placed`` and keeps ``clearance`` off every segment of ``segs``; failing that, the first
+    clear of the placed names only; failing both, the last.  Returns ``(key, box)``."""
+    keys = list(keys)
+    for clear in (True, False):
+        for key in keys:
+            bx = box_of(key)
+            if not any(bx.overlaps(o) for o in placed) and not (clear and any(
+                    box_hits_segment(bx, a, b, clearance) for a, b in segs)):
+                return key, bx
+    return key, bx
+
+
 def point_segment_distance(p: Pt, a: Pt, b: Pt) -> float:
     dx, dy = b[0] - a[0], b[1] - a[1]
     L2 = dx * dx + dy * dy
