@@ -277,9 +277,12 @@ class Triad:
             return t, f"{t} (the tangential part of {o}{V(Q)})"
         vec, words = read(P, S, X)
         plate = f"{self.b}{self.c}{self.x}"   # the plate named for its corners (link P carries it)
-        b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
-              f"{sym}_{plate} = {vec} / {S}{X}",
-              f"The {what} of the plate {plate} is {words} divided by {S}{X}.",
+        # one symbol for the plate's rate everywhere (legend, narration, table, grader):
+        # the link's, ω_BC; the words name the plate by its corners
+        called = plate if plate == P else f"{plate} (link {P})"
+        b.add(Kind.MEASURE, op, (P, S, X), f"{sym}_{P}", None, None, th, f"{sym}_{P}",
+              f"{sym}_{P} = {vec} / {S}{X}",
+              f"The {what} of the plate {called} is {words} divided by {S}{X}.",
               component=comp, link=P)
         image.emit_image(b, B, P, S, X)
         image.emit_image(b, C, P, S, X)

@@ -309,9 +309,12 @@ class TriadSlider:
         T = X if self.via == 0 else self.roles[1][0]      # the corner found with S
         vec, words = read(P, S, T)
         plate = f"{self.b}{self.c}{self.x}"
-        b.add(Kind.MEASURE, op, (P, S, T), f"{sym}_{plate}", None, None, th, f"{sym}_{P}",
-              f"{sym}_{plate} = {vec} / {S}{T}",
-              f"The {what} of the plate {plate} is {words} divided by {S}{T}.",
+        # one symbol for the plate's rate everywhere (legend, narration, table, grader):
+        # the link's, ω_BC; the words name the plate by its corners
+        called = plate if plate == P else f"{plate} (link {P})"
+        b.add(Kind.MEASURE, op, (P, S, T), f"{sym}_{P}", None, None, th, f"{sym}_{P}",
+              f"{sym}_{P} = {vec} / {S}{T}",
+              f"The {what} of the plate {called} is {words} divided by {S}{T}.",
               component=comp, link=P)
         for Q in (B, C, X):
             if Q != T:
