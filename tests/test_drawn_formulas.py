@@ -71,7 +71,10 @@ def test_a_triad_s_alpha_is_read_from_its_tangential_part():
     acc = {s.draws: s for s in sol.steps if s.diagram == "acceleration"}
     assert acc["α_CD"].formula == "α_CD = c1c / DC"
     assert acc["α_AB"].formula == "α_AB = b1b / AB"
-    assert acc["α_BCX"].formula == "α_BCX = x1x / SX"     # the plate named for its corners
+    # the plate's rate by its link's one symbol (legend, narration, table, grader alike),
+    # its words naming the plate by its corners
+    assert acc["α_BC"].formula == "α_BC = x1x / SX"
+    assert acc["α_BC"].quantity == "α_BC" and "the plate BCX (link BC)" in acc["α_BC"].reason
     names = {s.quantity for s in sol.steps if s.diagram == "acceleration" and s.kind == "line"}
     assert "(a_B)_A^t + (a_S)_B^t" in names and "(a_C)_D^t + (a_S)_C^t" in names
     vx = sol.vertices["acceleration"]
