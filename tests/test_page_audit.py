@@ -30,6 +30,11 @@ MIN_PX = inset.MIN_VECTOR_MM * PX_PER_MM
 CASES_ALL = ["s003-fig7", "s001-we3", "triad-eight-bar"]
 #: crank positions measured: the drawings' own, then these fractions of the cycle on
 TURNS = (0.0, 0.3, 0.55, 0.8)
+#: the fixed scales ("× 1" … "× 8": one scale over the cycle, the polygon run off its panel at
+#: some positions), on a triad whose vertices then lie at the panel's edge: (zoom, frame)s,
+#: frame 45 in × 2 the position a sweep found a label on a vector at (b₁ = s₁ on sb)
+FIXED_CASE = "triad-slider-corner"
+FIXED = (("2", 45), ("2", 135), ("8", 45), ("8", 100))
 
 MEASURE = """<script>
 window.polygonsMeasure = function () {
@@ -67,7 +72,8 @@ window.polygonsMeasure = function () {
       texts.push({text: t.textContent, cls: t.getAttribute('class') || '',
                   box: [b.left, b.top, b.right, b.bottom]});
     });
-    out[id] = {panel: [r.left, r.top, r.right, r.top + k * +svg.getAttribute('data-base')], vecs: vecs, texts: texts, insets: insets,
+    out[id] = {panel: [r.left, r.top, r.right, r.top + k * +svg.getAttribute('data-base')],
+               view: [r.left, r.top, r.right, r.bottom], vecs: vecs, texts: texts, insets: insets,
                rule: window.polygonsPage.insets(id === 'vpoly' ? 'velocity' : 'acceleration')};
   });
   return JSON.stringify(out);
@@ -188,6 +194,31 @@ def test_cycle_panel_meets_the_layout_rule(case, tmp_path, session):
         frame = (start + round(turn * n)) % n
         session.evaluate(f"window.polygonsPage.setFrame({frame})")
         _check(case, frame, json.loads(session.evaluate("window.polygonsMeasure()")))
+
+
+def test_cycle_panel_at_a_fixed_scale_meets_the_layout_rule(tmp_path, session):
+    """"× 2" and "× 8" (one scale over the cycle, the polygon run off its panel here): the
+    checks of "fit" but for filling the panel, and every text inside its panel (a vertex
+    beyond it unlabelled; one at its edge labelled off every vector)."""
+    from polygons.cli.handout import write_page
+    text = write_page(str(CASES / f"{FIXED_CASE}.toml"), tmp_path / "page.html").read_text(
+        encoding="utf-8")
+    page = tmp_path / "measured.html"
+    page.write_text(text.replace("<head>", "<head>\n" + MEASURE, 1), encoding="utf-8")
+    session.open(page)
+    for zoom, frame in FIXED:
+        session.evaluate(f"window.polygonsPage.zoom({json.dumps(zoom)})")
+        session.evaluate(f"window.polygonsPage.setFrame({frame})")
+        got = json.loads(session.evaluate("window.polygonsMeasure()"))
+        assert all(f"(×{zoom})" in t["text"] for m in got.values() for t in m["texts"]
+                   if "cap" in t["cls"].split()), (zoom, frame)
+        _check(f"{FIXED_CASE} ×{zoom}", frame, got, fill=False)
+        for pid, m in got.items():        # every label inside its panel (none for a vertex beyond)
+            x0, y0, x1, y1 = m["view"]
+            for t in m["texts"]:
+                b = t["box"]
+                assert b[0] >= x0 - 0.5 and b[1] >= y0 - 0.5 and b[2] <= x1 + 0.5 and b[3] <= y1 + 0.5, (
+                    zoom, frame, pid, t["text"], b, m["view"])
 
 
 def test_inset_port_agrees_with_diagrams_inset(tmp_path, session):

@@ -72,18 +72,22 @@
           return Math.hypot(p[0] - within.c[0], p[1] - within.c[1]) > within.r - U; })) { score += 50; }
         segs.forEach(function (s) { if (segHits(s, g)) { score += 100; } });
         boxes.forEach(function (b) { if (boxHits(b, g)) { score += 1000; } });
-        if (k > 3) {                  // its leader crosses no other text
+        if (k > 3) {                  // its leader (as drawn: from 2 U off the point) crosses no
           var lx = Math.max(r.x, Math.min(at[0], r.x + w)), ly = Math.max(r.y, Math.min(at[1], r.y + h));
-          boxes.forEach(function (b) {  // (not the box of its own point)
+          var ll = Math.hypot(lx - at[0], ly - at[1]), l0 = 2 * U / Math.max(ll, 1e-9);
+          var lseg = [at[0] + (lx - at[0]) * l0, at[1] + (ly - at[1]) * l0, lx, ly];
+          boxes.forEach(function (b) {  // other text (not the box of its own point), or costs less
             var own = at[0] >= b.x && at[0] <= b.x + b.w && at[1] >= b.y && at[1] <= b.y + b.h;
-            if (!own && segHits([at[0], at[1], lx, ly], b)) { score += 200; }
+            if (!own && segHits(lseg, b)) { score += 60; }   // than a label on a vector (100)
           });
         }
         if (best === null || score < best.score) { best = {score: score, r: r, k: k}; }
       }
     }
     [0.35, 0.8, 1.5, 2.4, 3.6, 5, 6.5, 8].forEach(tryAt);
-    if (best.score >= 1000) { [10, 12.5, 15, 18].forEach(tryAt); }   // crowded: further off
+    // crowded, or on a line (a vertex at the panel's edge, a fixed scale's polygon run off it):
+    // further off, with a leader
+    if (best.score >= 1000 || (!within && best.score >= 100)) { [10, 12.5, 15, 18].forEach(tryAt); }
     t.setAttribute('x', best.r.x - bb.x); t.setAttribute('y', best.r.y - bb.y);
     (lines || []).forEach(function (s) { s.setAttribute('x', best.r.x - bb.x); });
     boxes.push(best.r);
