@@ -35,6 +35,9 @@ TURNS = (0.0, 0.3, 0.55, 0.8)
 #: frame 45 in × 2 the position a sweep found a label on a vector at (b₁ = s₁ on sb)
 FIXED_CASE = "triad-slider-corner"
 FIXED = (("2", 45), ("2", 135), ("8", 45), ("8", 100))
+#: "fit" at a position a sweep found an inset's label outside its crowded ring, on the
+#: polygon's o→a₁ (its own inset's place then counted as another text's)
+CROWDED_RING = ("triad-plate-point", 75)
 
 MEASURE = """<script>
 window.polygonsMeasure = function () {
@@ -219,6 +222,20 @@ def test_cycle_panel_at_a_fixed_scale_meets_the_layout_rule(tmp_path, session):
                 b = t["box"]
                 assert b[0] >= x0 - 0.5 and b[1] >= y0 - 0.5 and b[2] <= x1 + 0.5 and b[3] <= y1 + 0.5, (
                     zoom, frame, pid, t["text"], b, m["view"])
+
+
+def test_crowded_inset_labels_its_vertices_in_its_ring(tmp_path, session):
+    """triad-plate-point at frame 75 in "fit": the ×6 inset's labels (o = d = e among them) inside
+    its ring, none on a vector of the polygon (the layout rule at that frame)."""
+    from polygons.cli.handout import write_page
+    case, frame = CROWDED_RING
+    text = write_page(str(CASES / f"{case}.toml"), tmp_path / "page.html").read_text(
+        encoding="utf-8")
+    page = tmp_path / "measured.html"
+    page.write_text(text.replace("<head>", "<head>\n" + MEASURE, 1), encoding="utf-8")
+    session.open(page)
+    session.evaluate(f"window.polygonsPage.setFrame({frame})")
+    _check(case, frame, json.loads(session.evaluate("window.polygonsMeasure()")))
 
 
 def test_inset_port_agrees_with_diagrams_inset(tmp_path, session):

@@ -34,8 +34,8 @@
     return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
   }
   // a label near `at`, inside the view, off every segment and every earlier label if it can be
-  // (within: {c, r, font}: an inset's label, its own size, kept inside the inset's circle
-  // where it can be)
+  // (within: {c, r, font, box}: an inset's label, its own size, kept inside the inset's
+  // circle where it can be, its place, box, no obstacle to it)
   function label(svg, text, at, segs, boxes, U, attrs, within) {
     var root = svg.ownerSVGElement || svg;
     var W = root.viewBox.baseVal.width, H = root.viewBox.baseVal.height;
@@ -61,8 +61,8 @@
     }
     var w = bb.width, h = bb.height, pad = 1.5 * U, best = null;
     function tryAt(k) {               // beyond 3 label heights: with a leader
-      for (var j = 0; j < 24; j++) {
-        var ang = -Math.PI / 4 + j * Math.PI / 12, ux = Math.cos(ang), uy = Math.sin(ang);
+      for (var j = 0; j < N; j++) {
+        var ang = -Math.PI / 4 + j * 2 * Math.PI / N, ux = Math.cos(ang), uy = Math.sin(ang);
         var d = k * fs + 0.5 * Math.abs(ux) * w + 0.5 * Math.abs(uy) * h;
         var r = {x: at[0] + ux * d - w / 2, y: at[1] + uy * d - h / 2, w: w, h: h};
         var g = {x: r.x - pad, y: r.y - pad, w: r.w + 2 * pad, h: r.h + 2 * pad};
@@ -71,7 +71,9 @@
         if (within && [[r.x, r.y], [r.x + w, r.y], [r.x, r.y + h], [r.x + w, r.y + h]].some(function (p) {
           return Math.hypot(p[0] - within.c[0], p[1] - within.c[1]) > within.r - U; })) { score += 50; }
         segs.forEach(function (s) { if (segHits(s, g)) { score += 100; } });
-        boxes.forEach(function (b) { if (boxHits(b, g)) { score += 1000; } });
+        boxes.forEach(function (b) {  // (an inset's label: not its own inset's place)
+          if (!(within && b === within.box) && boxHits(b, g)) { score += 1000; }
+        });
         if (k > 3) {                  // its leader (as drawn: from 2 U off the point) crosses no
           var lx = Math.max(r.x, Math.min(at[0], r.x + w)), ly = Math.max(r.y, Math.min(at[1], r.y + h));
           var ll = Math.hypot(lx - at[0], ly - at[1]), l0 = 2 * U / Math.max(ll, 1e-9);
@@ -84,7 +86,10 @@
         if (best === null || score < best.score) { best = {score: score, r: r, k: k}; }
       }
     }
-    [0.35, 0.8, 1.5, 2.4, 3.6, 5, 6.5, 8].forEach(tryAt);
+    // (an inset's label, in a crowded circle: twice the directions and distances)
+    var N = within ? 48 : 24;
+    (within ? [0.35, 0.6, 0.8, 1.1, 1.5, 1.9, 2.4, 3, 3.6, 4.3, 5, 5.7, 6.5, 8]
+            : [0.35, 0.8, 1.5, 2.4, 3.6, 5, 6.5, 8]).forEach(tryAt);
     // crowded, or on a line (a vertex at the panel's edge, a fixed scale's polygon run off it):
     // further off, with a leader
     if (best.score >= 1000 || (!within && best.score >= 100)) { [10, 12.5, 15, 18].forEach(tryAt); }
@@ -548,7 +553,8 @@
       });
     });
     g.insets.forEach(function (ins) {
-      boxes.push(insetBox(ins.C, ins.Rv, 0));
+      ins.box = insetBox(ins.C, ins.Rv, 0);           // kept clear by the polygon's labels
+      boxes.push(ins.box);
       drawInset(svg, ins, g, d, U, lookOf, segs, boxes, link);
     });
     var groups = [];
@@ -566,7 +572,7 @@
     g.insets.forEach(function (ins) {
       ins.groups.forEach(function (gr) {
         label(ins.grp, gr.names.join(' = '), gr.at, segs, boxes, U,
-              {'data-label': gr.first, 'class': 'vx inset-label'}, {c: ins.C, r: ins.Rv, font: INSET_FONT});
+              {'data-label': gr.first, 'class': 'vx inset-label'}, {c: ins.C, r: ins.Rv, font: INSET_FONT, box: ins.box});
       });
     });
     laid[d] = {mm: g.mm, near: g.near, max_radius: g.maxR, max_radius_vectors: g.maxRV,
