@@ -221,10 +221,15 @@ def test_the_displacement_diagram_over_a_turn_is_each_parts_closed_form():
         sweep(scene, 8)
 
 
-def test_the_interactive_page_is_refused_in_one_line(tmp_path):
+def test_the_interactive_page_is_refused_in_one_line(tmp_path, capsys):
+    """Refused in the command line's words (the commands that do draw it), not the Python
+    API's ('polygons.cam_diagram.diagram(scene, steps)')."""
     from polygons.cli import main
     assert main(["handout", str(CASE), "--interactive", "-o", str(tmp_path / "p.html")]) == 1
     assert not (tmp_path / "p.html").exists()
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "'polygons sweep'" in err[0] and str(CASE) in err[0]
+    assert "cam_diagram" not in err[0]
 
 
 # ------------------------------------------------------------------ offset and oscillating

@@ -107,7 +107,15 @@ def write_page(scene_path: str, out: str | Path, *, scale=None, paper=None) -> P
     import diagrams
     from diagrams.page import page
     from diagrams.scale import parse_cli
-    sol = solve(load_scene(scene_path))
+    scene = load_scene(scene_path)
+    if "cam_profiles" in scene.extra:      # the page's cycle follows one linkage
+        from ..errors import SceneError
+        raise SceneError("the interactive page follows one linkage round the cycle, and a cam "
+                         "stated by its profile changes its equivalent linkage as the part in "
+                         "contact changes: 'polygons sweep' gives its displacement diagram over "
+                         "a turn, 'polygons handout' its key at the stated instant",
+                         file=scene.file)
+    sol = solve(scene)
     drawings = diagrams.drawings(sol, parse_cli(scale), paper, True)
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
