@@ -95,11 +95,11 @@ def nose_axis_of(table: dict, drv: dict, part_of, file: str, where: str) -> floa
     if "angle" in drv:
         raise SceneError("give the driver's angle or the cam's when, not both", file=file,
                          where=f"{where}.when")
-    from .topology import _TURN_WORDS, sense_in
+    from .topology import sense_in, turn_word
     # the cam's sense as the driver states it: `sense`, or written after its rate ('180 rpm
     # CW': read as CCW before, which put "on the rise" on the return)
     if "sense" in drv:
-        turn = _TURN_WORDS.get(str(drv["sense"]).strip().lower(), 1.0)
+        turn = turn_word(drv["sense"]) or 1.0
     else:
         turn = sense_in(drv.get("omega", drv.get("speed")))[1] or 1.0
     sense = -1.0 if turn < 0 else 1.0

@@ -584,7 +584,7 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
                         where="driver.acceleration")
         return {"slider": label, "position": "0 m", "velocity": f"{v!r} m/s",
                 "acceleration": f"{a!r} m/s^2"}
-    from .topology import _TURN_WORDS, alpha_words, sense_in
+    from .topology import alpha_words, sense_in, turn_word
 
     def rate(key, sense_key, dim):
         if key not in drv:
@@ -592,7 +592,7 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
         text, turn = sense_in(drv[key])
         value = _q(text, dim, file, f"driver.{key}")
         if sense_key in drv:
-            said = _TURN_WORDS.get(str(drv[sense_key]).lower())
+            said = turn_word(drv[sense_key])
             if said is None or (turn is not None and turn != said):
                 raise SceneError(f"{sense_key} must be 'CW' or 'CCW' (once)", file=file,
                                  where=f"driver.{sense_key}")

@@ -115,11 +115,10 @@ class Reader:
         return value
 
     def sense(self, value, where: str) -> int:
-        from .topology import _TURN_WORDS      # the one table of sense words, any case
-        turn = _TURN_WORDS.get(" ".join(value.split()).lower()) if isinstance(value, str) \
-            else None
+        from .topology import turn_word      # the one table of sense words, any case
+        turn = turn_word(value)
         if turn is not None:
-            return int(turn)
+            return turn
         raise SceneError(f"sense must be 'CW' or 'CCW', got {show(value)}", file=self.file,
                          where=where)
 

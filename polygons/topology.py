@@ -99,6 +99,15 @@ _TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "c.w.": -1.0, "ccw": 1.0, "anticlo
                "c.c.w.": 1.0}
 
 
+def turn_word(text) -> int | None:
+    """'CW' → −1, 'Anti Clockwise' → +1 (any case, spaces as written): a sense word of the
+    one table; None for anything else (a number, an unknown word)."""
+    if not isinstance(text, str):
+        return None
+    turn = _TURN_WORDS.get(" ".join(text.split()).lower())
+    return None if turn is None else int(turn)
+
+
 def sense_in(text) -> tuple[object, int | None]:
     """'300 rad/s CW' → ('300 rad/s', −1); '120 rpm anti clockwise' → ('120 rpm', +1);
     '300 rad/s' → ('300 rad/s', None): a rate with its sense written after it, as books do."""
@@ -106,9 +115,9 @@ def sense_in(text) -> tuple[object, int | None]:
         return text, None
     words = text.split()
     for n in (2, 1):            # 'anti clockwise' before 'clockwise'
-        turn = _TURN_WORDS.get(" ".join(words[-n:]).lower()) if len(words) > n else None
+        turn = turn_word(" ".join(words[-n:])) if len(words) > n else None
         if turn is not None:
-            return " ".join(words[:-n]), int(turn)
+            return " ".join(words[:-n]), turn
     return text, None
 
 
