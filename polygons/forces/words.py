@@ -15,12 +15,18 @@ DIRECTIONS = ("to the right", "up and to the right", "up", "up and to the left",
               "to the left", "down and to the left", "down", "down and to the right")
 
 
+def _degrees(v, spec: str) -> tuple[float, str]:
+    """A direction's angle CCW from +x in [0, 360) and its text in the format ``spec``; a
+    direction a rounding short of +x (−1e-14 rad, printed '360') is 0."""
+    deg = math.degrees(math.atan2(float(v[1]), float(v[0]))) % 360.0
+    text = format(deg, spec)
+    return (0.0, format(0.0, spec)) if float(text) >= 360.0 else (deg, text)
+
+
 def angle(v, digits: int = 6) -> str:
     """A direction's angle CCW from +x in [0, 360) as printed ('0', never '360' for
     −1e-14 rad): ``digits`` significant figures."""
-    deg = math.degrees(math.atan2(float(v[1]), float(v[0]))) % 360.0
-    text = f"{deg:.{digits}g}"
-    return "0" if float(text) >= 360.0 else text
+    return _degrees(v, f".{digits}g")[1]
 
 
 def sense(m: float) -> str:
@@ -38,10 +44,7 @@ def moment_words(m: float, unit: str = "N m", digits: int = 6) -> str:
 
 def sense_words(force) -> str:
     """The sense of a force in words, with its angle: 'down and to the left (∠213.4°)'."""
-    deg = math.degrees(math.atan2(float(force[1]), float(force[0]))) % 360.0
-    shown = f"{deg:.1f}"
-    if float(shown) >= 360.0:
-        deg, shown = 0.0, "0.0"
+    deg, shown = _degrees(force, ".1f")
     return f"{DIRECTIONS[int(((deg + 22.5) % 360.0) // 45.0)]} (∠{shown}°)"
 
 
