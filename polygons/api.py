@@ -84,26 +84,14 @@ class Result:
 
     # ---------------------------------------------------------------- reports
     def to_dict(self) -> dict:
-        """What ``polygons solve --json`` prints for the kinematics (plus ``pins`` and
-        ``forces`` when the scene has those tables, and a contact's ``equivalent_links`` and a
-        cam stated by its profile's ``cam_profile``, as the command adds them)."""
-        from . import pins
-        from .report import to_json
-        data = to_json(self.solution)
-        extra = pins.to_dict(self.solution)
-        if extra:
-            data["pins"] = extra
+        """What ``polygons solve --json`` prints (:func:`polygons.cli.solve.report_data`): the
+        kinematics, plus ``pins`` and ``forces`` when the scene has those tables, a contact's
+        ``equivalent_links`` and a cam stated by its profile's ``cam_profile``."""
+        from .cli.solve import report_data
         from .forces import analyse, has_forces
-        if has_forces(self.scene):
-            from .cli.forces import to_dict as forces_dict
-            data["forces"] = forces_dict(analyse(self.scene, method="polygons.api (Result.to_dict)"))
-        if self.scene.equivalents:
-            from .contacts import to_list
-            data["equivalent_links"] = to_list(self.solution)
-        if "cam_profiles" in self.scene.extra:
-            from .cam_profiles import to_dict as cam_dict
-            data["cam_profile"] = cam_dict(self.scene)
-        return data
+        forces = (analyse(self.scene, method="polygons.api (Result.to_dict)")
+                  if has_forces(self.scene) else None)
+        return report_data(self.solution, forces)
 
     def to_json(self) -> str:
         """:meth:`to_dict` as deterministic JSON text."""
@@ -111,24 +99,13 @@ class Result:
         return json_text(self.to_dict())
 
     def table(self, steps: bool = True) -> str:
-        """The text report of ``polygons solve`` (and the rubbing / least velocities, the
-        forces, a contact's equivalent linkage and a cam's profile, as the command adds them)."""
-        from . import pins
-        from .report import table
-        text = table(self.solution, steps=steps)
-        lines = pins.report_lines(self.solution)
-        text += "\n" + "\n".join(lines) + "\n" if lines else ""
+        """The text report of ``polygons solve`` (:func:`polygons.cli.solve.report_text`): the
+        table, the rubbing / least velocities, the forces, a contact's equivalent linkage and
+        a cam's profile, as the command adds them."""
+        from .cli.solve import report_text
         from .forces import analyse, has_forces
-        if has_forces(self.scene):
-            from .cli.forces import forces_table
-            text += "\n" + forces_table(analyse(self.scene), header=False)
-        if self.scene.equivalents:
-            from .contacts import report_lines as equivalent_lines
-            text += "\n" + "\n".join(equivalent_lines(self.solution)) + "\n"
-        if "cam_profiles" in self.scene.extra:
-            from .cam_profiles import report_lines as cam_lines
-            text += "\n" + "\n".join(cam_lines(self.scene)) + "\n"
-        return text
+        forces = analyse(self.scene) if has_forces(self.scene) else None
+        return report_text(self.solution, forces, steps=steps)
 
     def centres(self, points: Iterable[str] | None = None):
         """The instantaneous centres (:func:`polygons.centres.instant_centres`)."""

@@ -63,7 +63,6 @@ def run(args) -> int:
     if scene.loads is not None and scene.loads.active:   # bad force tables fail first
         # (the forces package is imported only for a scene with loads: a quicker start)
         from ..forces import analyse
-        from .forces import forces_table, to_dict
         forces = analyse(scene)
     if not method and scene.answers:   # an answer naming a point of Klein's figure (ON)
         from ..classic.klein import asked
@@ -75,39 +74,56 @@ def run(args) -> int:
     if args.svg:
         from .draw import write_diagrams
         write_diagrams(sol, args, args.svg, klein=method)
-    has_pins = any(k in scene.extra for k in ("pins", "least_velocity"))   # pins.has_pins
-    if has_pins:                # (polygons.pins imported only for a scene with those tables)
-        from .. import pins
-    if args.json:
-        data = to_json(sol)
-        if has_pins:
-            data["pins"] = pins.to_dict(sol)
-        if forces is not None:
-            data["forces"] = to_dict(forces)
-        if fig is not None:
-            from ..classic.klein import to_dict as klein_dict
-            data["klein"] = klein_dict(fig)
-        if scene.equivalents:
-            from ..contacts import to_list
-            data["equivalent_links"] = to_list(sol)
-        if "cam_profiles" in scene.extra:        # the profile found, the part in contact
-            from ..cam_profiles import to_dict as cam_dict
-            data["cam_profile"] = cam_dict(scene)
-        text = json_text(data)
-    else:
-        text = table(sol, steps=not args.no_steps, units=args.units)
-        if has_pins:
-            text += "\n" + "\n".join(pins.report_lines(sol)) + "\n"
-        if forces is not None:
-            text += "\n" + forces_table(forces, header=False)
-        if fig is not None:
-            from ..classic.klein import report_lines
-            text += "\n" + "\n".join(report_lines(fig)) + "\n"
-        if scene.equivalents:
-            from ..contacts import report_lines as equivalent_lines
-            text += "\n" + "\n".join(equivalent_lines(sol)) + "\n"
-        if "cam_profiles" in scene.extra:
-            from ..cam_profiles import report_lines as cam_lines
-            text += "\n" + "\n".join(cam_lines(scene)) + "\n"
+    text = (json_text(report_data(sol, forces, fig)) if args.json else
+            report_text(sol, forces, fig, steps=not args.no_steps, units=args.units))
     emit(text, args.out)
     return 0
+
+
+def report_data(sol, forces=None, fig=None) -> dict:
+    """What ``polygons solve --json`` prints: the kinematics (:func:`polygons.report.to_json`)
+    and what the scene's tables add — the rubbing and least velocities, the forces
+    (``forces``: their analysis), Klein's figure (``fig``), a contact's equivalent links, a
+    cam stated by its profile's profile and part in contact.  The Python API's
+    ``Result.to_dict`` is this too."""
+    scene = sol.scene
+    data = to_json(sol)
+    if any(k in scene.extra for k in ("pins", "least_velocity")):    # pins.has_pins
+        from .. import pins        # (imported only for a scene with those tables)
+        data["pins"] = pins.to_dict(sol)
+    if forces is not None:
+        from .forces import to_dict
+        data["forces"] = to_dict(forces)
+    if fig is not None:
+        from ..classic.klein import to_dict as klein_dict
+        data["klein"] = klein_dict(fig)
+    if scene.equivalents:
+        from ..contacts import to_list
+        data["equivalent_links"] = to_list(sol)
+    if "cam_profiles" in scene.extra:        # the profile found, the part in contact
+        from ..cam_profiles import to_dict as cam_dict
+        data["cam_profile"] = cam_dict(scene)
+    return data
+
+
+def report_text(sol, forces=None, fig=None, *, steps: bool = True, units: str = "mm") -> str:
+    """What ``polygons solve`` prints: the results table (:func:`polygons.report.table`) and
+    the sections :func:`report_data` adds, in words.  The API's ``Result.table`` is this."""
+    scene = sol.scene
+    text = table(sol, steps=steps, units=units)
+    if any(k in scene.extra for k in ("pins", "least_velocity")):
+        from .. import pins
+        text += "\n" + "\n".join(pins.report_lines(sol)) + "\n"
+    if forces is not None:
+        from .forces import forces_table
+        text += "\n" + forces_table(forces, header=False)
+    if fig is not None:
+        from ..classic.klein import report_lines
+        text += "\n" + "\n".join(report_lines(fig)) + "\n"
+    if scene.equivalents:
+        from ..contacts import report_lines as equivalent_lines
+        text += "\n" + "\n".join(equivalent_lines(sol)) + "\n"
+    if "cam_profiles" in scene.extra:
+        from ..cam_profiles import report_lines as cam_lines
+        text += "\n" + "\n".join(cam_lines(scene)) + "\n"
+    return text
