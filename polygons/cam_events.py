@@ -95,7 +95,7 @@ def nose_axis_of(table: dict, drv: dict, part_of, file: str, where: str) -> floa
     if "angle" in drv:
         raise SceneError("give the driver's angle or the cam's when, not both", file=file,
                          where=f"{where}.when")
-    from .topology import sense_in, turn_word
+    from .senses import sense_in, turn_word
     # the cam's sense as the driver states it: `sense`, or written after its rate ('180 rpm
     # CW': read as CCW before, which put "on the rise" on the return)
     if "sense" in drv:

@@ -584,7 +584,7 @@ def _wheel_driver(drv: dict, eqs, file) -> dict:
                         where="driver.acceleration")
         return {"slider": label, "position": "0 m", "velocity": f"{v!r} m/s",
                 "acceleration": f"{a!r} m/s^2"}
-    from .topology import alpha_words, sense_in, turn_word
+    from .senses import alpha_words, sense_in, turn_word
 
     def rate(key, sense_key, dim):
         if key not in drv:

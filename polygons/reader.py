@@ -115,7 +115,7 @@ class Reader:
         return value
 
     def sense(self, value, where: str) -> int:
-        from .topology import turn_word      # the one table of sense words, any case
+        from .senses import turn_word      # the one table of sense words, any case
         turn = turn_word(value)
         if turn is not None:
             return turn

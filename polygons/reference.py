@@ -162,13 +162,13 @@ def markdown(entries: list[tuple[str, Table]]) -> str:
     return "\n".join(lines)
 
 
-#: a sense written after a rate ('300 rad/s CW'), as polygons.topology.sense_in reads it
+#: a sense written after a rate ('300 rad/s CW'), as polygons.senses.sense_in reads it
 _SENSE_RE = (r"(?:\s+(?:[Cc][Cc][Ww]|[Cc][Ww]|[Aa][Cc][Ww]|[Cc]\.[Ww]\.|[Aa]\.[Cc]\.[Ww]\.|"
              r"[Cc]\.[Cc]\.[Ww]\.|[Cc]lockwise|[Aa]nti[- ]?clockwise|[Cc]ounter[- ]?clockwise))?")
 
 
 #: 'retarding' / 'decelerating' / 'accelerating' after α: its sense against ω's
-#: (polygons.topology.alpha_words)
+#: (polygons.senses.alpha_words)
 _ALPHA_WORDS_RE = r"(?:\s+(?:[Rr]etarding|[Dd]ecelerating|[Aa]ccelerating))?"
 #: an angle in degrees and minutes (seconds) as books print it, as polygons.units._DMS reads it
 _DMS_RE = (r"^\s*[-+]?\d+(?:\.\d*)?\s*(?:°|deg)\s*\d+(?:\.\d*)?\s*(?:'|′|min)"

@@ -48,6 +48,7 @@ from .reader import MAX_SCENE_BYTES, read_scene_text  # noqa: F401  (the file is
 from .records import (Answer, BodyPoint, Branch, Crank, Guide, Link, Quantity,  # noqa: F401
                       SliderDrive, Slot, Vec)
 from .options import Options, parse_options
+from .senses import alpha_words
 from .units import parse_along
 # TABLES: this loader's declared tables, collected as polygons.scene.TABLES by the reference
 from .scene_tables import (ANSWER_KEYS, KEYS, RELATIONS, TABLES, TOP_KEYS,  # noqa: F401
@@ -457,7 +458,7 @@ def parse_scene(data: dict, *, file: str = "<scene>",
                              "leave it out)", file=file, where="driver")
         alpha = 0.0
         if "alpha" in drv:
-            drv = topology.alpha_words(drv, omega, file)
+            drv = alpha_words(drv, omega, file)
             alpha, turn = topology.rate_with_sense(drv, "alpha", "alpha_sense",
                                                   "angular_acceleration", r)
             if alpha != 0.0:

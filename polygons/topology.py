@@ -36,6 +36,7 @@ from dataclasses import dataclass
 
 from .errors import SceneError, UnknownLabelError, show, suggest
 from .schema import Key, Table
+from .senses import sense_in
 from .units import cos_sin
 
 
@@ -93,59 +94,6 @@ _LINE = re.compile(r"[A-Z][a-z0-9_']*[A-Z][a-z0-9_']*\Z")     # \Z: no "AB\n"
 #: the axes an angle may be measured from (the direction of each, CCW from +x)
 _AXES = {"+x": 0.0, "x": 0.0, "-x": math.pi, "+y": math.pi / 2, "y": math.pi / 2,
          "-y": -math.pi / 2}
-_TURN_WORDS = {"cw": -1.0, "clockwise": -1.0, "c.w.": -1.0, "ccw": 1.0, "anticlockwise": 1.0,
-               "anti-clockwise": 1.0, "anti clockwise": 1.0, "counterclockwise": 1.0,
-               "counter-clockwise": 1.0, "counter clockwise": 1.0, "acw": 1.0, "a.c.w.": 1.0,
-               "c.c.w.": 1.0}
-
-
-def turn_word(text) -> int | None:
-    """'CW' → −1, 'Anti Clockwise' → +1 (any case, spaces as written): a sense word of the
-    one table; None for anything else (a number, an unknown word)."""
-    if not isinstance(text, str):
-        return None
-    turn = _TURN_WORDS.get(" ".join(text.split()).lower())
-    return None if turn is None else int(turn)
-
-
-def sense_in(text) -> tuple[object, int | None]:
-    """'300 rad/s CW' → ('300 rad/s', −1); '120 rpm anti clockwise' → ('120 rpm', +1);
-    '300 rad/s' → ('300 rad/s', None): a rate with its sense written after it, as books do."""
-    if not isinstance(text, str):
-        return text, None
-    words = text.split()
-    for n in (2, 1):            # 'anti clockwise' before 'clockwise'
-        turn = turn_word(" ".join(words[-n:])) if len(words) > n else None
-        if turn is not None:
-            return " ".join(words[:-n]), turn
-    return text, None
-
-
-#: α stated against ω as books do ('retarding at 5 rad/s²'): −1 opposite ω's sense, +1 with it
-_ALPHA_WORDS = {"retarding": -1, "decelerating": -1, "accelerating": 1}
-
-
-def alpha_words(drv, omega: float, file, key: str = "alpha", sense_key: str = "alpha_sense"):
-    """``alpha = "5 rad/s^2 retarding"`` (or ``decelerating``; ``accelerating``): the sense of
-    α from ω's, opposite (slowing down) or the same (speeding up) → ``drv`` with that sense
-    written as CW / CCW; ``drv`` unchanged without such a word."""
-    text = drv.get(key)
-    if not isinstance(text, str):
-        return drv
-    head, _, last = text.strip().rpartition(" ")
-    rel = _ALPHA_WORDS.get(last.lower())
-    if rel is None or not head:
-        return drv
-    if sense_key in drv:
-        raise SceneError(f"{key} = {show(text)} already says its sense against the rotation: "
-                         f"leave out {sense_key}", file=file, where=f"driver.{sense_key}")
-    if omega == 0.0:
-        raise SceneError(f"{key} = {show(text)}: '{last}' is measured against the rotation, "
-                         f"but the driver is at rest (omega = 0): give alpha's sense, CW or CCW",
-                         file=file, where=f"driver.{key}")
-    return {**drv, key: f"{head.strip()} {'CCW' if rel * omega > 0 else 'CW'}"}
-
-
 def crank_rate(drv, r, length) -> tuple[float, int | None]:
     """|ω| of a crank and its sense: ``omega``, or the crank pin's ``speed`` as books give it
     (v = ω r, so ω = v / |OA|)."""

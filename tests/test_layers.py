@@ -18,7 +18,7 @@ WHERE = {
     "polygons.theorems": "base", "polygons.steps": "base", "polygons.memo": "base", "polygons.notation": "base",
     "polygons.program": "base", "polygons.calculus": "base",
     "polygons.scene": "scene", "polygons.quantity_grammar": "scene", "polygons.records": "scene", "polygons.loads": "scene", "polygons.quantities": "interpreters",
-    "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.higher": "scene", "polygons.pins": "scene", "polygons.topology": "scene",
+    "polygons.options": "scene", "polygons.contacts": "scene", "polygons.wheels": "scene", "polygons.higher": "scene", "polygons.pins": "scene", "polygons.topology": "scene", "polygons.senses": "scene",
     "polygons.exam_table": "scene", "polygons.drawing_format": "scene",
     "polygons.question_table": "scene", "polygons.cam_profiles": "scene", "polygons.cam_events": "scene", "polygons.cam_profile_table": "scene",
     "polygons.cam_diagram": "interpreters", "polygons.conditions": "forces",
